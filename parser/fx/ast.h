@@ -1,0 +1,225 @@
+// The effect syntax tree. Every node carries its source range. Shader code (function
+// bodies, structs, GLSL blocks, asm) is kept as token ranges for the shader compiler,
+// not interpreted here.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fx/source_location.h"
+#include "fx/token.h"
+
+namespace fx::ast {
+
+// Half-open range of indices into Effect::tokens.
+struct TokenSpan {
+  uint32_t first = 0, last = 0;
+  bool empty() const { return first == last; }
+};
+
+// Storage classes and modifiers in front of a declaration (bit set).
+enum StorageClass : uint32_t {
+  kShared = 1u << 0, kStatic = 1u << 1, kUniform = 1u << 2, kConst = 1u << 3,
+  kExtern = 1u << 4, kVolatile = 1u << 5, kRowMajor = 1u << 6, kColumnMajor = 1u << 7,
+  kGroupShared = 1u << 8, kIn = 1u << 9, kOut = 1u << 10, kInOut = 1u << 11,
+  kNoInterpolation = 1u << 12, kLinear = 1u << 13, kCentroid = 1u << 14, kPrecise = 1u << 15,
+  kNoPerspective = 1u << 16, kSample = 1u << 17,
+};
+
+// A type as written: `float4x4`, `texture2D`, `Texture2D<float4>`, `sampler_state`, a
+// struct or typedef name. Resolution to a semantic type is the compiler's job.
+struct TypeRef {
+  std::string name;
+  std::string template_arg;  // `Texture2D<float4>` -> "float4" (empty if none)
+  SourceRange range;
+};
+
+struct Expr;
+using ExprPtr = std::unique_ptr<Expr>;
+struct StateAssignment;
+
+enum class ExprKind : uint8_t {
+  int_literal,     // number, text
+  float_literal,   // number, text
+  bool_literal,    // number (0/1)
+  string_literal,  // text (unquoted)
+  identifier,      // text: a parameter, a state enum value (`Clamp`), a constant, a type
+  reference,       // `<name>`: text is the parameter name
+  null,            // NULL
+  unary,           // text: operator; args[0]
+  binary,          // text: operator; args[0], args[1]
+  ternary,         // args[0] ? args[1] : args[2]
+  call,            // text: callee or constructor type (`float4`, `CompileShader`); args
+  index,           // args[0][args[1]]
+  member,          // args[0].text
+  init_list,       // { args... }
+  compile,         // `compile profile Fn(args)`: text = profile, callee = Fn, args
+  asm_block,       // `asm { }`: code; decl in decl_code when `decl { } asm { }`
+  state_block,     // `sampler_state { states }` (or `stateblock_state`), text = keyword
+  glsl_list,       // `{ A, B }` naming GLSL blocks concatenated into one stage
+};
+
+struct Expr {
+  ExprKind kind{};
+  SourceRange range;
+  std::string text;
+  std::string callee;       // compile: the entry function
+  double number = 0;        // numeric literals
+  std::vector<ExprPtr> args;
+  std::vector<StateAssignment> states;  // state_block
+  TokenSpan code;           // asm_block: tokens between the braces
+  TokenSpan decl_code;      // asm_block: `decl { }` tokens (empty if absent)
+};
+
+struct Annotation {
+  TypeRef type;  // string, float, float2, int, bool, ... (may carry array dims below)
+  std::string name;
+  std::vector<ExprPtr> array_dims;
+  ExprPtr value;
+  SourceRange range;
+};
+
+struct StateAssignment {
+  std::string name;           // as written; the state table is case-insensitive
+  SourceRange name_range;
+  ExprPtr index;              // `Texture[3]` (null if not indexed)
+  ExprPtr value;
+  SourceRange range;
+};
+
+struct Variable {
+  uint32_t storage = 0;       // StorageClass bits
+  TypeRef type;
+  std::string name;
+  SourceRange name_range;
+  std::vector<ExprPtr> array_dims;  // `float4 a[4][2]`: {4, 2}; an empty dim is null
+  std::string semantic;       // `: POSITION` (empty if none)
+  std::string register_binding;  // `: register(c0)` (empty if none)
+  std::vector<Annotation> annotations;
+  ExprPtr initializer;
+  SourceRange range;
+  TokenSpan tokens;           // the whole declaration, for the shader compiler
+};
+
+struct Struct {
+  std::string name;
+  SourceRange name_range;
+  std::vector<Variable> members;
+  SourceRange range;
+  TokenSpan tokens;
+};
+
+struct Typedef {
+  TypeRef type;
+  std::string name;
+  std::vector<ExprPtr> array_dims;
+  SourceRange range;
+  TokenSpan tokens;
+};
+
+struct Function {
+  TypeRef return_type;
+  uint32_t storage = 0;       // `inline`, `static` etc. in front of it
+  std::string name;
+  SourceRange name_range;
+  std::vector<Variable> params;  // storage carries in/out/inout/uniform
+  std::string semantic;
+  std::vector<std::string> attributes;  // `[numthreads(8,8,1)]` as written
+  TokenSpan body;             // tokens between the braces (empty for a prototype)
+  SourceRange range;
+  TokenSpan tokens;           // the whole definition
+};
+
+struct Pass {
+  std::string name;           // may be empty
+  SourceRange name_range;
+  std::vector<Annotation> annotations;
+  std::vector<StateAssignment> states;
+  SourceRange range;
+};
+
+struct Technique {
+  int version = 9;            // 9: technique, 10: technique10, 11: technique11
+  std::string name;           // may be empty
+  SourceRange name_range;
+  std::vector<Annotation> annotations;
+  std::vector<Pass> passes;
+  SourceRange range;
+};
+
+// D3D10/11 state objects: `BlendState name { ... };`, also arrays `SamplerState s[2] {...}`.
+struct StateObject {
+  std::string kind;           // BlendState, DepthStencilState, RasterizerState, SamplerState,
+                              // SamplerComparisonState (as written)
+  std::string name;
+  SourceRange name_range;
+  std::vector<ExprPtr> array_dims;
+  std::vector<Annotation> annotations;
+  std::vector<StateAssignment> states;
+  std::string register_binding;
+  SourceRange range;
+};
+
+struct ConstantBuffer {
+  bool texture_buffer = false;  // tbuffer
+  std::string name;
+  SourceRange name_range;
+  std::string register_binding;
+  std::vector<Variable> members;
+  SourceRange range;
+  TokenSpan tokens;
+};
+
+struct FxGroup {
+  std::string name;
+  SourceRange name_range;
+  std::vector<Annotation> annotations;
+  std::vector<Technique> techniques;
+  SourceRange range;
+};
+
+// A named block of GLSL source: `GLSLShader Name { ...GLSL... }` (nvFX style). Passes
+// name one or a list of blocks per stage: `VertexShader = Name;` or `= { Common, Name };`.
+struct GlslBlock {
+  std::string name;
+  SourceRange name_range;
+  TokenSpan code;
+  SourceRange range;
+};
+
+// A kept preprocessor directive at file scope (#pragma ...), in order among declarations.
+struct Directive {
+  std::string text;
+  SourceRange range;
+  TokenSpan tokens;
+};
+
+enum class DeclKind : uint8_t {
+  variable, structure, type_alias, function, technique, state_object, constant_buffer,
+  group, glsl_block, directive,
+};
+
+// One top-level declaration; exactly the member matching `kind` is set.
+struct Decl {
+  DeclKind kind{};
+  std::unique_ptr<Variable> variable;
+  std::unique_ptr<Struct> structure;
+  std::unique_ptr<Typedef> type_alias;
+  std::unique_ptr<Function> function;
+  std::unique_ptr<Technique> technique;
+  std::unique_ptr<StateObject> state_object;
+  std::unique_ptr<ConstantBuffer> constant_buffer;
+  std::unique_ptr<FxGroup> group;
+  std::unique_ptr<GlslBlock> glsl_block;
+  std::unique_ptr<Directive> directive;
+};
+
+struct Effect {
+  std::string profile_header;  // from a leading `fx.2.0`-style line, if any
+  std::vector<Token> tokens;   // the preprocessed token stream the spans index
+  std::vector<Decl> decls;     // in source order
+};
+
+}  // namespace fx::ast

@@ -1,0 +1,368 @@
+#include "fx/lexer.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cstdlib>
+#include <string>
+
+namespace fx {
+namespace {
+
+bool is_ident_start(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_ident_char(char c) { return is_ident_start(c) || is_digit(c); }
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+}  // namespace
+
+const char* spelling(TokenKind k) {
+  switch (k) {
+    case TokenKind::eof: return "end of file";
+    case TokenKind::identifier: return "identifier";
+    case TokenKind::integer: return "integer";
+    case TokenKind::floating: return "number";
+    case TokenKind::string: return "string";
+    case TokenKind::character: return "character";
+    case TokenKind::directive: return "directive";
+    case TokenKind::l_paren: return "(";
+    case TokenKind::r_paren: return ")";
+    case TokenKind::l_square: return "[";
+    case TokenKind::r_square: return "]";
+    case TokenKind::l_brace: return "{";
+    case TokenKind::r_brace: return "}";
+    case TokenKind::semi: return ";";
+    case TokenKind::comma: return ",";
+    case TokenKind::period: return ".";
+    case TokenKind::colon: return ":";
+    case TokenKind::coloncolon: return "::";
+    case TokenKind::question: return "?";
+    case TokenKind::tilde: return "~";
+    case TokenKind::exclaim: return "!";
+    case TokenKind::plus: return "+";
+    case TokenKind::minus: return "-";
+    case TokenKind::star: return "*";
+    case TokenKind::slash: return "/";
+    case TokenKind::percent: return "%";
+    case TokenKind::caret: return "^";
+    case TokenKind::amp: return "&";
+    case TokenKind::pipe: return "|";
+    case TokenKind::equal: return "=";
+    case TokenKind::less: return "<";
+    case TokenKind::greater: return ">";
+    case TokenKind::plusplus: return "++";
+    case TokenKind::minusminus: return "--";
+    case TokenKind::arrow: return "->";
+    case TokenKind::plusequal: return "+=";
+    case TokenKind::minusequal: return "-=";
+    case TokenKind::starequal: return "*=";
+    case TokenKind::slashequal: return "/=";
+    case TokenKind::percentequal: return "%=";
+    case TokenKind::ampequal: return "&=";
+    case TokenKind::pipeequal: return "|=";
+    case TokenKind::caretequal: return "^=";
+    case TokenKind::lessless: return "<<";
+    case TokenKind::greatergreater: return ">>";
+    case TokenKind::lesslessequal: return "<<=";
+    case TokenKind::greatergreaterequal: return ">>=";
+    case TokenKind::equalequal: return "==";
+    case TokenKind::exclaimequal: return "!=";
+    case TokenKind::lessequal: return "<=";
+    case TokenKind::greaterequal: return ">=";
+    case TokenKind::ampamp: return "&&";
+    case TokenKind::pipepipe: return "||";
+    case TokenKind::hash: return "#";
+    case TokenKind::hashhash: return "##";
+    case TokenKind::unknown: return "unknown character";
+  }
+  return "?";
+}
+
+Lexer::Lexer(SourceManager& sm, BufferId buffer, DiagnosticSink& diags)
+    : sm_(sm), diags_(diags), buffer_(buffer), text_(sm.buffer_text(buffer)) {}
+
+char Lexer::peek(size_t ahead) const {
+  return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
+}
+
+// Removes backslash-newline pairs at the current position (translation phase 2).
+void Lexer::skip_splices() {
+  while (peek() == '\\') {
+    if (peek(1) == '\n') pos_ += 2;
+    else if (peek(1) == '\r' && peek(2) == '\n') pos_ += 3;
+    else break;
+  }
+}
+
+void Lexer::skip_whitespace_and_comments() {
+  for (;;) {
+    skip_splices();
+    char c = peek();
+    if (is_space(c)) {
+      ++pos_;
+      pending_flags_ |= kLeadingSpace;
+    } else if (c == '\n') {
+      ++pos_;
+      pending_flags_ |= kAtLineStart | kLeadingSpace;
+    } else if (c == '/' && peek(1) == '/') {
+      // A line comment ends at a newline not preceded by a continuation backslash.
+      while (pos_ < text_.size() && text_[pos_] != '\n') {
+        if (text_[pos_] == '\\') skip_splices();
+        if (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+      }
+      pending_flags_ |= kLeadingSpace;
+    } else if (c == '/' && peek(1) == '*') {
+      size_t begin = pos_;
+      size_t end = text_.find("*/", pos_ + 2);
+      if (end == std::string_view::npos) {
+        diags_.error("unterminated-comment", {sm_.location(buffer_, uint32_t(begin)), {}},
+                     "unterminated /* comment");
+        pos_ = text_.size();
+        return;
+      }
+      // A comment spanning lines still leaves the next token on a new line for directives
+      // only if a real newline follows; C treats the comment as one space.
+      pos_ = end + 2;
+      pending_flags_ |= kLeadingSpace;
+    } else {
+      return;
+    }
+  }
+}
+
+bool Lexer::at_line_end() {
+  skip_whitespace_and_comments();
+  return pos_ >= text_.size() || (pending_flags_ & kAtLineStart);
+}
+
+Token Lexer::make(TokenKind kind, size_t begin) {
+  Token t;
+  t.kind = kind;
+  t.flags = pending_flags_;
+  pending_flags_ = 0;
+  t.loc = sm_.location(buffer_, static_cast<uint32_t>(begin));
+  std::string_view raw = text_.substr(begin, pos_ - begin);
+  if (raw.find('\\') != std::string_view::npos && kind != TokenKind::string &&
+      kind != TokenKind::character) {
+    // The token was split by continuations: give it its clean spelling.
+    std::string clean;
+    for (size_t i = 0; i < raw.size(); ++i) {
+      if (raw[i] == '\\' && i + 1 < raw.size() && (raw[i + 1] == '\n' || raw[i + 1] == '\r')) {
+        i += raw[i + 1] == '\r' ? 2 : 1;
+        continue;
+      }
+      clean.push_back(raw[i]);
+    }
+    t.text = sm_.text_at(sm_.add_scratch(clean, t.loc)).substr(0, clean.size());
+  } else {
+    t.text = raw;
+  }
+  return t;
+}
+
+Token Lexer::next() {
+  skip_whitespace_and_comments();
+  size_t begin = pos_;
+  if (pos_ >= text_.size()) {
+    Token t = make(TokenKind::eof, begin);
+    pending_flags_ = kAtLineStart;
+    return t;
+  }
+  char c = text_[pos_];
+  if (is_ident_start(c)) {
+    for (;;) {
+      ++pos_;
+      skip_splices();
+      if (!is_ident_char(peek())) break;
+    }
+    return make(TokenKind::identifier, begin);
+  }
+  if (is_digit(c) || (c == '.' && is_digit(peek(1)))) return lex_number(begin);
+  if (c == '"' || c == '\'') return lex_quoted(begin, c);
+  return lex_punct(begin);
+}
+
+// A pp-number: digits, letters, '.', and signs after an exponent letter. It is classified
+// here and validated by parse_number when a value is needed.
+Token Lexer::lex_number(size_t begin) {
+  bool is_hex = peek() == '0' && (peek(1) == 'x' || peek(1) == 'X');
+  bool floating = false;
+  for (;;) {
+    char c = peek();
+    if (c == '.') {
+      floating = true;
+    } else if ((c == '+' || c == '-') && !is_hex) {
+      char prev = text_[pos_ - 1];
+      if (prev != 'e' && prev != 'E') break;
+      floating = true;
+    } else if (!is_ident_char(c)) {
+      break;
+    } else if (!is_hex && (c == 'e' || c == 'E' || c == 'f' || c == 'F' || c == 'h' ||
+                           c == 'H')) {
+      floating = true;
+    }
+    ++pos_;
+    skip_splices();
+  }
+  return make(floating ? TokenKind::floating : TokenKind::integer, begin);
+}
+
+Token Lexer::lex_quoted(size_t begin, char quote) {
+  ++pos_;
+  while (pos_ < text_.size() && text_[pos_] != quote && text_[pos_] != '\n') {
+    if (text_[pos_] == '\\' && pos_ + 1 < text_.size()) ++pos_;
+    ++pos_;
+  }
+  if (pos_ >= text_.size() || text_[pos_] != quote) {
+    diags_.error("unterminated-string", {sm_.location(buffer_, uint32_t(begin)), {}},
+                 quote == '"' ? "missing terminating '\"' character"
+                              : "missing terminating ' character");
+  } else {
+    ++pos_;
+  }
+  return make(quote == '"' ? TokenKind::string : TokenKind::character, begin);
+}
+
+Token Lexer::lex_punct(size_t begin) {
+  char c = text_[pos_++];
+  auto take = [&](char next) {
+    if (peek() == next) return ++pos_, true;
+    return false;
+  };
+  TokenKind k = TokenKind::unknown;
+  switch (c) {
+    case '(': k = TokenKind::l_paren; break;
+    case ')': k = TokenKind::r_paren; break;
+    case '[': k = TokenKind::l_square; break;
+    case ']': k = TokenKind::r_square; break;
+    case '{': k = TokenKind::l_brace; break;
+    case '}': k = TokenKind::r_brace; break;
+    case ';': k = TokenKind::semi; break;
+    case ',': k = TokenKind::comma; break;
+    case '.': k = TokenKind::period; break;
+    case '?': k = TokenKind::question; break;
+    case '~': k = TokenKind::tilde; break;
+    case ':': k = take(':') ? TokenKind::coloncolon : TokenKind::colon; break;
+    case '!': k = take('=') ? TokenKind::exclaimequal : TokenKind::exclaim; break;
+    case '=': k = take('=') ? TokenKind::equalequal : TokenKind::equal; break;
+    case '*': k = take('=') ? TokenKind::starequal : TokenKind::star; break;
+    case '/': k = take('=') ? TokenKind::slashequal : TokenKind::slash; break;
+    case '%': k = take('=') ? TokenKind::percentequal : TokenKind::percent; break;
+    case '^': k = take('=') ? TokenKind::caretequal : TokenKind::caret; break;
+    case '#': k = take('#') ? TokenKind::hashhash : TokenKind::hash; break;
+    case '+':
+      k = take('+') ? TokenKind::plusplus : take('=') ? TokenKind::plusequal : TokenKind::plus;
+      break;
+    case '-':
+      k = take('-')   ? TokenKind::minusminus
+          : take('=') ? TokenKind::minusequal
+          : take('>') ? TokenKind::arrow
+                      : TokenKind::minus;
+      break;
+    case '&':
+      k = take('&') ? TokenKind::ampamp : take('=') ? TokenKind::ampequal : TokenKind::amp;
+      break;
+    case '|':
+      k = take('|') ? TokenKind::pipepipe : take('=') ? TokenKind::pipeequal : TokenKind::pipe;
+      break;
+    case '<':
+      if (take('<')) k = take('=') ? TokenKind::lesslessequal : TokenKind::lessless;
+      else k = take('=') ? TokenKind::lessequal : TokenKind::less;
+      break;
+    case '>':
+      if (take('>')) k = take('=') ? TokenKind::greatergreaterequal : TokenKind::greatergreater;
+      else k = take('=') ? TokenKind::greaterequal : TokenKind::greater;
+      break;
+    default: {
+      // Swallow a whole UTF-8 sequence so one stray character gives one diagnostic.
+      while (pos_ < text_.size() && (static_cast<unsigned char>(text_[pos_]) & 0xC0) == 0x80) ++pos_;
+      Token t = make(TokenKind::unknown, begin);
+      diags_.error("unknown-character", t.range(), "unexpected character in source");
+      return t;
+    }
+  }
+  return make(k, begin);
+}
+
+std::optional<Token> Lexer::header_name() {
+  skip_whitespace_and_comments();
+  if (pending_flags_ & kAtLineStart || peek() != '<') return std::nullopt;
+  size_t begin = pos_;
+  size_t end = text_.find_first_of(">\n", pos_);
+  if (end == std::string_view::npos || text_[end] != '>') return std::nullopt;
+  pos_ = end + 1;
+  return make(TokenKind::string, begin);
+}
+
+std::string_view Lexer::rest_of_line() {
+  size_t begin = pos_;
+  while (pos_ < text_.size() && text_[pos_] != '\n') {
+    if (text_[pos_] == '\\' && (peek(1) == '\n' || (peek(1) == '\r' && peek(2) == '\n'))) {
+      skip_splices();
+      continue;
+    }
+    ++pos_;
+  }
+  pending_flags_ |= kAtLineStart;
+  return text_.substr(begin, pos_ - begin);
+}
+
+std::optional<NumberValue> parse_number(std::string_view s, std::string* error) {
+  auto fail = [&](const char* why) -> std::optional<NumberValue> {
+    if (error) *error = why;
+    return std::nullopt;
+  };
+  if (s.empty()) return fail("empty number");
+  bool hex = s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
+  bool floating = !hex && s.find_first_of(".eEfFhH") != std::string_view::npos;
+  if (floating) {
+    std::string_view body = s;
+    if (body.back() == 'f' || body.back() == 'F' || body.back() == 'h' || body.back() == 'H' ||
+        body.back() == 'l' || body.back() == 'L')
+      body.remove_suffix(1);
+    std::string copy(body);
+    if (copy.empty() || copy.back() == '.') copy.push_back('0');
+    char* end = nullptr;
+    errno = 0;
+    double v = std::strtod(copy.c_str(), &end);
+    if (end != copy.c_str() + copy.size()) return fail("invalid floating-point literal");
+    if (errno == ERANGE && v != 0.0) return fail("floating-point literal out of range");
+    return NumberValue{v};
+  }
+  std::string_view body = s;
+  while (!body.empty() && (body.back() == 'u' || body.back() == 'U' || body.back() == 'l' ||
+                           body.back() == 'L'))
+    body.remove_suffix(1);
+  int base = 10;
+  if (hex) body.remove_prefix(2), base = 16;
+  else if (body.size() > 1 && body[0] == '0') base = 8;
+  uint64_t v = 0;
+  auto [ptr, ec] = std::from_chars(body.data(), body.data() + body.size(), v, base);
+  if (body.empty() || ptr != body.data() + body.size()) return fail("invalid integer literal");
+  if (ec == std::errc::result_out_of_range) return fail("integer literal out of range");
+  return NumberValue{static_cast<int64_t>(v)};
+}
+
+std::string unquote(std::string_view s) {
+  if (s.size() >= 2 && (s.front() == '"' || s.front() == '\'' || s.front() == '<'))
+    s = s.substr(1, s.size() - 2);
+  std::string out;
+  out.reserve(s.size());
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (s[i] != '\\' || i + 1 == s.size()) {
+      out.push_back(s[i]);
+      continue;
+    }
+    switch (char c = s[++i]) {
+      case 'n': out.push_back('\n'); break;
+      case 't': out.push_back('\t'); break;
+      case 'r': out.push_back('\r'); break;
+      case '0': out.push_back('\0'); break;
+      default: out.push_back(c); break;
+    }
+  }
+  return out;
+}
+
+}  // namespace fx

@@ -1,0 +1,69 @@
+#include "fx/diagnostic.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "fx/diagnostic_render.h"
+
+namespace fx {
+namespace {
+
+TEST(Diagnostic, TextHasPositionIdSourceLineAndCaret) {
+  SourceManager sm;
+  BufferId f = sm.add_buffer("e.fx", "pass p0 {\n  CullMod = None;\n}\n");
+  DiagnosticSink sink;
+  SourceLocation at = sm.location(f, 12);
+  sink.error("unknown-state", {at, at.offset(7)}, "unknown state 'CullMod'")
+      .fixits.push_back({{at, at.offset(7)}, "CullMode"});
+  EXPECT_EQ(render_text(sink.diagnostics(), sm),
+            "e.fx:2:3: error: unknown state 'CullMod' [unknown-state]\n"
+            "  CullMod = None;\n"
+            "  ^~~~~~~\n"
+            "e.fx:2:3: note: fix-it: replace with 'CullMode'\n");
+}
+
+TEST(Diagnostic, IncludeAndMacroNotes) {
+  SourceManager sm;
+  BufferId main = sm.add_buffer("main.fx", "#define BAD oops\n#include \"a.fxh\"\n");
+  BufferId inc = sm.add_buffer("a.fxh", "BAD;\n", sm.location(main, 17));
+  SourceLocation use = sm.location(inc, 0);
+  SourceLocation exp = sm.add_expansion({"BAD", sm.location(main, 12), {use, use.offset(3)}}, 4);
+  DiagnosticSink sink;
+  sink.error("syntax", {exp, exp.offset(4)}, "expected declaration");
+  std::string text = render_text(sink.diagnostics(), sm);
+  EXPECT_NE(text.find("a.fxh:1:1: error: expected declaration [syntax]"), std::string::npos) << text;
+  EXPECT_NE(text.find("a.fxh:1:1: note: in expansion of macro 'BAD'"), std::string::npos) << text;
+  EXPECT_NE(text.find("main.fx:2:1: note: included from here"), std::string::npos) << text;
+
+  nlohmann::json j = render_json(sink.diagnostics(), sm);
+  ASSERT_EQ(j.size(), 1u);
+  EXPECT_EQ(j[0]["file"], "a.fxh");
+  EXPECT_EQ(j[0]["line"], 1);
+  EXPECT_EQ(j[0]["severity"], "error");
+  EXPECT_EQ(j[0]["id"], "syntax");
+  ASSERT_EQ(j[0]["notes"].size(), 2u);
+  EXPECT_EQ(j[0]["notes"][1]["file"], "main.fx");
+  EXPECT_EQ(j[0]["notes"][1]["line"], 2);
+}
+
+TEST(Diagnostic, WerrorAndErrorLimit) {
+  DiagnosticSink sink;
+  sink.set_warnings_as_errors(true);
+  sink.warning("w", {}, "a warning");
+  EXPECT_EQ(sink.error_count(), 1u);
+  EXPECT_EQ(sink.diagnostics()[0].severity, Severity::error);
+  sink.set_error_limit(2);
+  sink.error("e", {}, "1");
+  sink.error("e", {}, "2");
+  EXPECT_EQ(sink.diagnostics().size(), 2u);
+  EXPECT_EQ(sink.error_count(), 3u);
+}
+
+TEST(Diagnostic, ClosestMatchIsCaseInsensitive) {
+  EXPECT_EQ(closest_match("cullmod", {"CullMode", "FillMode", "ZEnable"}), "CullMode");
+  EXPECT_EQ(closest_match("Zzzzzzz", {"CullMode", "FillMode"}), "");
+}
+
+}  // namespace
+}  // namespace fx
