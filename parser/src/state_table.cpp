@@ -1,0 +1,275 @@
+// Lookup over the state table: one open-addressing hash on (lower-cased name, block), built
+// once on first use, so a lookup neither allocates nor scans.
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstring>
+
+#include "state_table_data.h"
+
+namespace fx {
+namespace {
+
+char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
+
+uint64_t name_hash(std::string_view name, StateBlock block) {
+  uint64_t h = 1469598103934665603ull;
+  for (char c : name) h = (h ^ static_cast<unsigned char>(lower(c))) * 1099511628211ull;
+  return (h ^ static_cast<uint64_t>(block)) * 1099511628211ull;
+}
+
+bool iequals(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (lower(a[i]) != lower(b[i])) return false;
+  return true;
+}
+
+class StateIndex {
+ public:
+  StateIndex() {
+    auto add = [&](std::span<const StateInfo> rows) { rows_.insert(rows_.end(), rows.begin(), rows.end()); };
+    add(state_data::d3d9_pass_states());
+    // A pass sets D3D9 sampler states per stage: `AddressU[1] = Clamp;`.
+    for (StateInfo s : state_data::d3d9_sampler_states()) {
+      bool in_pass = std::any_of(rows_.begin(), rows_.end(), [&](const StateInfo& r) {
+        return r.block == StateBlock::pass && iequals(r.name, s.name);
+      });
+      if (in_pass) continue;
+      s.block = StateBlock::pass;
+      s.index_count = state_data::kSamplerStages;
+      rows_.push_back(s);
+    }
+    add(state_data::d3d9_sampler_states());
+    add(state_data::d3d10_states());
+    std::stable_sort(rows_.begin(), rows_.end(), [](const StateInfo& a, const StateInfo& b) {
+      return a.block < b.block;
+    });
+    size_t capacity = 1;
+    while (capacity < rows_.size() * 2) capacity *= 2;
+    slots_.assign(capacity, -1);
+    mask_ = capacity - 1;
+    for (size_t i = 0; i < rows_.size(); ++i) {
+      size_t slot = name_hash(rows_[i].name, rows_[i].block) & mask_;
+      while (slots_[slot] >= 0) slot = (slot + 1) & mask_;
+      slots_[slot] = static_cast<int32_t>(i);
+    }
+  }
+
+  const StateInfo* find(std::string_view name, StateBlock block) const {
+    for (size_t slot = name_hash(name, block) & mask_; slots_[slot] >= 0; slot = (slot + 1) & mask_) {
+      const StateInfo& s = rows_[static_cast<size_t>(slots_[slot])];
+      if (s.block == block && iequals(s.name, name)) return &s;
+    }
+    return nullptr;
+  }
+
+  std::span<const StateInfo> rows() const { return rows_; }
+
+ private:
+  std::vector<StateInfo> rows_;
+  std::vector<int32_t> slots_;  // row index or -1; load factor <= 1/2
+  size_t mask_ = 0;
+};
+
+const StateIndex& state_index() {
+  static const StateIndex index;
+  return index;
+}
+
+// Lower-case without underscores: `D3D10_BLEND_SRC_ALPHA` -> `d3d10blendsrcalpha`.
+// Returns false when the name does not fit (no enum name is that long).
+bool normalize(std::string_view in, std::array<char, 96>& out, size_t& size) {
+  size = 0;
+  for (char c : in) {
+    if (c == '_') continue;
+    if (size == out.size()) return false;
+    out[size++] = lower(c);
+  }
+  return true;
+}
+
+bool matches_normalized(std::string_view normalized, std::string_view name) {
+  size_t i = 0;
+  for (char c : name) {
+    if (c == '_') continue;
+    if (i == normalized.size() || normalized[i] != lower(c)) return false;
+    ++i;
+  }
+  return i == normalized.size();
+}
+
+const EnumValue* find_value(const EnumSet& set, std::string_view normalized) {
+  for (const EnumValue& v : set.values)
+    if (matches_normalized(normalized, v.name)) return &v;
+  return nullptr;
+}
+
+}  // namespace
+
+std::string_view to_string(StateBlock block) {
+  switch (block) {
+    case StateBlock::pass: return "pass";
+    case StateBlock::sampler_state: return "sampler_state";
+    case StateBlock::blend_state: return "BlendState";
+    case StateBlock::depth_stencil_state: return "DepthStencilState";
+    case StateBlock::rasterizer_state: return "RasterizerState";
+    case StateBlock::sampler_object: return "SamplerState";
+  }
+  return "pass";
+}
+
+std::optional<StateBlock> state_object_block(std::string_view type_name) {
+  if (iequals(type_name, "BlendState")) return StateBlock::blend_state;
+  if (iequals(type_name, "DepthStencilState")) return StateBlock::depth_stencil_state;
+  if (iequals(type_name, "RasterizerState")) return StateBlock::rasterizer_state;
+  if (iequals(type_name, "SamplerState") || iequals(type_name, "SamplerComparisonState"))
+    return StateBlock::sampler_object;
+  return std::nullopt;
+}
+
+std::string_view to_string(StateValueType type) {
+  switch (type) {
+    case StateValueType::boolean: return "bool";
+    case StateValueType::integer: return "int";
+    case StateValueType::floating: return "float";
+    case StateValueType::enumeration: return "enum";
+    case StateValueType::flags: return "flags";
+    case StateValueType::color: return "color";
+    case StateValueType::float4: return "float4";
+    case StateValueType::matrix: return "matrix";
+    case StateValueType::texture: return "texture";
+    case StateValueType::sampler: return "sampler";
+    case StateValueType::shader: return "shader";
+    case StateValueType::shader_constant: return "constant";
+    case StateValueType::state_object: return "state object";
+  }
+  return "int";
+}
+
+std::string_view to_string(StateApi api) {
+  switch (api) {
+    case StateApi::d3d9: return "D3D9";
+    case StateApi::d3d10: return "D3D10";
+    case StateApi::d3d11: return "D3D11";
+  }
+  return "D3D9";
+}
+
+std::string_view to_string(VulkanMeaning meaning) {
+  switch (meaning) {
+    case VulkanMeaning::maps_to_vulkan: return "maps_to_vulkan";
+    case VulkanMeaning::emulated: return "emulated";
+    case VulkanMeaning::fixed_function: return "fixed_function";
+    case VulkanMeaning::ignored: return "ignored";
+  }
+  return "ignored";
+}
+
+std::string_view to_string(VulkanArea area) {
+  switch (area) {
+    case VulkanArea::none: return "none";
+    case VulkanArea::shader_stage: return "shader_stage";
+    case VulkanArea::shader_constants: return "shader_constants";
+    case VulkanArea::resource_binding: return "resource_binding";
+    case VulkanArea::input_assembly: return "input_assembly";
+    case VulkanArea::rasterization: return "rasterization";
+    case VulkanArea::depth_stencil: return "depth_stencil";
+    case VulkanArea::color_blend: return "color_blend";
+    case VulkanArea::multisample: return "multisample";
+    case VulkanArea::sampler: return "sampler";
+  }
+  return "none";
+}
+
+std::span<const StateInfo> all_states() { return state_index().rows(); }
+
+const StateInfo* find_state(std::string_view name, StateBlock block) {
+  return state_index().find(name, block);
+}
+
+std::optional<int64_t> find_enum(const StateInfo& state, std::string_view name) {
+  const EnumSet* set = state.enums;
+  if (!set && state.type == StateValueType::boolean) set = &state_data::kBoolean;
+  if (!set) return std::nullopt;
+  std::array<char, 96> buffer;
+  size_t size = 0;
+  if (!normalize(name, buffer, size)) return std::nullopt;
+  std::string_view normalized(buffer.data(), size);
+  if (const EnumValue* v = find_value(*set, normalized)) return v->value;
+  for (std::string_view prefix : set->prefixes) {
+    std::array<char, 96> p;
+    size_t psize = 0;
+    if (prefix.empty() || !normalize(prefix, p, psize)) continue;
+    if (normalized.size() > psize && normalized.substr(0, psize) == std::string_view(p.data(), psize))
+      if (const EnumValue* v = find_value(*set, normalized.substr(psize))) return v->value;
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string_view> state_names(StateBlock block) {
+  std::vector<std::string_view> names;
+  for (const StateInfo& s : all_states())
+    if (s.block == block) names.push_back(s.name);
+  return names;
+}
+
+std::vector<std::string_view> enum_names(const StateInfo& state) {
+  std::vector<std::string_view> names;
+  const EnumSet* set = state.enums;
+  if (!set && state.type == StateValueType::boolean) set = &state_data::kBoolean;
+  if (set)
+    for (const EnumValue& v : set->values) names.push_back(v.name);
+  return names;
+}
+
+std::string render_state_table_markdown() {
+  std::string out =
+      "# Effect states\n\n"
+      "Generated from the state table (`parser/fx/state_table.h`, rows in\n"
+      "`parser/src/state_table_*.cpp`) by `render_state_table_markdown()`; the test\n"
+      "`StateTable.DocIsCurrent` fails when this file is stale (rerun it with\n"
+      "`FXKIT_UPDATE_DOCS=1` to rewrite it).\n\n"
+      "State names match case-insensitively. Enumeration values match case-insensitively,\n"
+      "ignoring underscores and the set's prefixes, so `D3DBLEND_SRCALPHA`, `SrcAlpha` and\n"
+      "`SRC_ALPHA` are the same value; an integer equal to a value is accepted too. `flags`\n"
+      "values combine names and integers with `|`. An index range `[0..N-1]` marked\n"
+      "*required* must be written; otherwise it defaults to 0.\n\n"
+      "Vulkan meaning: `maps_to_vulkan` has a direct Vulkan equivalent; `emulated` has none\n"
+      "and fxkit reproduces it (alpha test as a discard, sRGB through image views, clip\n"
+      "planes through clip distances); `fixed_function` is D3D9 fixed-function state that\n"
+      "fxkit parses but cannot apply, so technique validation rejects passes that set it;\n"
+      "`ignored` states have nothing visible to reproduce.\n";
+  for (int b = 0; b < kStateBlockCount; ++b) {
+    StateBlock block = static_cast<StateBlock>(b);
+    out += "\n## `" + std::string(to_string(block)) + "`\n\n";
+    out += "| State | Index | Value | API | Vulkan | Area |\n|---|---|---|---|---|---|\n";
+    for (const StateInfo& s : all_states()) {
+      if (s.block != block) continue;
+      std::string index = "-";
+      if (s.index_count)
+        index = "[0.." + std::to_string(s.index_count - 1) + "]" + (s.index_required ? " required" : "");
+      std::string value(to_string(s.type));
+      if (s.enums) value += " (`" + std::string(s.enums->name) + "`)";
+      if (s.call_args) value = std::to_string(s.call_args) + "-argument call: " + value;
+      if (!s.object_kind.empty()) value += " `" + std::string(s.object_kind) + "`";
+      out += "| " + std::string(s.name) + " | " + index + " | " + value + " | " +
+             std::string(to_string(s.api)) + " | " + std::string(to_string(s.vulkan)) + " | " +
+             std::string(to_string(s.area)) + " |\n";
+    }
+  }
+  out += "\n## Enumerations\n\n| Set | Prefixes | Values |\n|---|---|---|\n";
+  std::vector<const EnumSet*> sets;
+  for (const StateInfo& s : all_states())
+    if (s.enums && std::find(sets.begin(), sets.end(), s.enums) == sets.end()) sets.push_back(s.enums);
+  for (const EnumSet* set : sets) {
+    std::string prefixes, values;
+    for (std::string_view p : set->prefixes) prefixes += (prefixes.empty() ? "`" : ", `") + std::string(p) + "`";
+    for (const EnumValue& v : set->values)
+      values += (values.empty() ? "" : ", ") + std::string(v.name) + "=" + std::to_string(v.value);
+    out += "| `" + std::string(set->name) + "` | " + prefixes + " | " + values + " |\n";
+  }
+  return out;
+}
+
+}  // namespace fx

@@ -1,0 +1,110 @@
+// The one table of effect states: Direct3D 9 pass and sampler states, the Direct3D 10/11
+// state-object fields and pass calls. Parsing checks, the runtime's Vulkan mapping and the
+// documentation (docs/states.md) all read these rows, so adding a state is one row.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fx {
+
+// The kind of block a state assignment appears in.
+enum class StateBlock : uint8_t {
+  pass,                 // technique passes (D3D9 states and D3D10/11 Set* calls)
+  sampler_state,        // D3D9 `sampler_state { }` initializers
+  blend_state,          // D3D10/11 `BlendState name { }`
+  depth_stencil_state,  // D3D10/11 `DepthStencilState name { }`
+  rasterizer_state,     // D3D10/11 `RasterizerState name { }`
+  sampler_object,       // D3D10/11 `SamplerState` / `SamplerComparisonState name { }`
+};
+inline constexpr int kStateBlockCount = 6;
+// Display name of a block: "pass", "sampler_state", "BlendState", ...
+std::string_view to_string(StateBlock block);
+// The block of a D3D10/11 state-object type name (case-insensitive), if it is one.
+std::optional<StateBlock> state_object_block(std::string_view type_name);
+
+// What a state's value must be.
+enum class StateValueType : uint8_t {
+  boolean,          // TRUE/FALSE, true/false, 0/1
+  integer,          // DWORD/UINT/INT
+  floating,         // float
+  enumeration,      // one name of StateInfo::enums (or its integer value)
+  flags,            // enum names and integers combined with `|`
+  color,            // D3DCOLOR: 0xAARRGGBB, or a float4
+  float4,           // float4(...) / { ... } / a vector parameter
+  matrix,           // a float4x4 parameter
+  texture,          // a texture parameter (`<tex>`) or NULL
+  sampler,          // a sampler parameter or NULL
+  shader,           // compile ..., asm { }, CompileShader(...), a shader variable, NULL
+  shader_constant,  // a parameter or literal uploaded to shader constant registers
+  state_object,     // a D3D10/11 state object of the matching kind (Set*State)
+};
+std::string_view to_string(StateValueType type);
+
+// Which API family defines a state.
+enum class StateApi : uint8_t { d3d9, d3d10, d3d11 };
+std::string_view to_string(StateApi api);
+
+// What the state means on Vulkan; the runtime's validation reads this.
+enum class VulkanMeaning : uint8_t {
+  maps_to_vulkan,  // a direct pipeline/sampler/descriptor equivalent exists
+  emulated,        // no Vulkan state; fxkit reproduces it (alpha test -> discard, sRGB views)
+  fixed_function,  // D3D9 fixed-function pipeline (texture stages, fog, lighting): unsupported
+  ignored,         // no visible effect to reproduce (dither, last pixel, FVF)
+};
+std::string_view to_string(VulkanMeaning meaning);
+
+// Where on Vulkan a state lands (for the runtime's pipeline key and validation).
+enum class VulkanArea : uint8_t {
+  none, shader_stage, shader_constants, resource_binding, input_assembly, rasterization,
+  depth_stencil, color_blend, multisample, sampler,
+};
+std::string_view to_string(VulkanArea area);
+
+// One named value of an enumeration; several names may share a value (D3D9 and D3D10
+// spellings).
+struct EnumValue {
+  std::string_view name;
+  int64_t value;
+};
+
+// A set of enumeration values. Names match case-insensitively, ignoring underscores and
+// any of the prefixes: `D3DBLEND_SRCALPHA`, `SrcAlpha`, `SRC_ALPHA` are one name.
+struct EnumSet {
+  std::string_view name;                     // "blend", "cmp", ...
+  std::span<const EnumValue> values;
+  std::span<const std::string_view> prefixes;  // "D3DBLEND_", "D3D10_BLEND_", ...
+};
+
+// One row of the state table.
+struct StateInfo {
+  std::string_view name;       // canonical spelling; lookup is case-insensitive
+  StateBlock block = StateBlock::pass;
+  StateValueType type = StateValueType::integer;
+  const EnumSet* enums = nullptr;  // for enumeration and flags
+  uint16_t index_count = 0;    // 0: not indexable; else valid indices are [0, index_count)
+  bool index_required = false; // `VertexShaderConstant[n]`; others default to index 0
+  uint8_t call_args = 0;       // D3D10/11 pass calls (`SetBlendState(b, f, m)`): arguments
+  StateApi api = StateApi::d3d9;
+  VulkanMeaning vulkan = VulkanMeaning::maps_to_vulkan;
+  VulkanArea area = VulkanArea::none;
+  std::string_view object_kind;  // state_object: the block the argument must be
+};
+
+// Every row, grouped by block.
+std::span<const StateInfo> all_states();
+// The row for `name` (case-insensitive) in `block`, or nullptr. O(1): hashed lookup.
+const StateInfo* find_state(std::string_view name, StateBlock block);
+// The value of an enumeration name for a state with enums (see EnumSet for spellings).
+std::optional<int64_t> find_enum(const StateInfo& state, std::string_view name);
+// The state names of a block (for did-you-mean).
+std::vector<std::string_view> state_names(StateBlock block);
+// The value names a state accepts (for did-you-mean), in the table's spelling.
+std::vector<std::string_view> enum_names(const StateInfo& state);
+// docs/states.md, generated from the rows.
+std::string render_state_table_markdown();
+
+}  // namespace fx
