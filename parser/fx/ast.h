@@ -26,6 +26,10 @@ enum StorageClass : uint32_t {
   kGroupShared = 1u << 8, kIn = 1u << 9, kOut = 1u << 10, kInOut = 1u << 11,
   kNoInterpolation = 1u << 12, kLinear = 1u << 13, kCentroid = 1u << 14, kPrecise = 1u << 15,
   kNoPerspective = 1u << 16, kSample = 1u << 17,
+  kInline = 1u << 18,
+  // Geometry shader input primitives in front of a parameter (`triangle VSOut v[3]`).
+  kPoint = 1u << 19, kLine = 1u << 20, kTriangle = 1u << 21, kLineAdj = 1u << 22,
+  kTriangleAdj = 1u << 23,
 };
 
 // A type as written: `float4x4`, `texture2D`, `Texture2D<float4>`, `sampler_state`, a
@@ -59,6 +63,7 @@ enum class ExprKind : uint8_t {
   asm_block,       // `asm { }`: code; decl in decl_code when `decl { } asm { }`
   state_block,     // `sampler_state { states }` (or `stateblock_state`), text = keyword
   glsl_list,       // `{ A, B }` naming GLSL blocks concatenated into one stage
+  cast,            // `(float3)x`: text = type as written; args[0]
 };
 
 struct Expr {
@@ -87,6 +92,9 @@ struct StateAssignment {
   ExprPtr index;              // `Texture[3]` (null if not indexed)
   ExprPtr value;
   SourceRange range;
+  // D3D10/11 call form `SetVertexShader(CompileShader(vs_4_0, VS()));`: name is the
+  // function, value is the ExprKind::call (text = name), index is null.
+  bool call_style = false;
 };
 
 struct Variable {
@@ -97,6 +105,7 @@ struct Variable {
   std::vector<ExprPtr> array_dims;  // `float4 a[4][2]`: {4, 2}; an empty dim is null
   std::string semantic;       // `: POSITION` (empty if none)
   std::string register_binding;  // `: register(c0)` (empty if none)
+  std::string packoffset;     // `: packoffset(c0.y)` -> "c0.y" (empty if none)
   std::vector<Annotation> annotations;
   ExprPtr initializer;
   SourceRange range;

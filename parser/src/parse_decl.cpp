@@ -1,0 +1,378 @@
+// Declarations: storage classes, types, declarators (parameters, state objects), functions,
+// structs, typedefs and constant buffers.
+#include <utility>
+
+#include "parse_internal.h"
+
+namespace fx::detail {
+
+uint32_t Parser::parse_storage() {
+  uint32_t bits = 0, bit = 0;
+  // A modifier is always followed by the type name; the look-ahead keeps a type or
+  // variable that happens to be called `line` or `sample` from being swallowed.
+  while (at(TokenKind::identifier) && peek().is(TokenKind::identifier) &&
+         is_storage_keyword(tok().text, bit)) {
+    bits |= bit;
+    advance();
+  }
+  return bits;
+}
+
+bool Parser::parse_type(ast::TypeRef& type) {
+  if (!at(TokenKind::identifier)) {
+    error_here("expected-type", "expected a type, found " + describe(tok()));
+    return false;
+  }
+  uint32_t first = pos_;
+  type.name = std::string(advance().text);
+  if ((type.name == "unsigned" || type.name == "signed") && at(TokenKind::identifier))
+    (type.name += ' ') += advance().text;
+  if (at(TokenKind::less) && !parse_template_args(type.template_arg)) return false;
+  type.range = range_from(first);
+  return true;
+}
+
+bool Parser::parse_template_args(std::string& out) {
+  Token open = tok();
+  advance();
+  size_t open_count = 1;
+  for (;;) {
+    switch (tok().kind) {
+      case TokenKind::greater:
+      case TokenKind::greatergreater:
+      case TokenKind::greaterequal:
+      case TokenKind::greatergreaterequal:
+        split_greater();  // `Texture2D<vector<float,4>>`: the `>>` closes two lists
+        advance();
+        if (--open_count == 0) return true;
+        out.push_back('>');
+        continue;
+      case TokenKind::less:
+        if (++open_count > options_.max_nesting) {
+          error_here("nesting-too-deep", "template arguments nested too deeply");
+          return false;
+        }
+        break;
+      case TokenKind::eof:
+      case TokenKind::semi:
+      case TokenKind::l_brace:
+      case TokenKind::r_brace:
+        if (Diagnostic* d = error_here("expected-token",
+                                       "expected '>' to close the template argument list, "
+                                       "found " + describe(tok())))
+          d->notes.push_back({open.loc, "to match this '<'"});
+        return false;
+      default: break;
+    }
+    append_spelling(out, tok());
+    advance();
+  }
+}
+
+bool Parser::parse_array_dims(std::vector<ast::ExprPtr>& dims) {
+  while (at(TokenKind::l_square)) {
+    advance();
+    if (accept(TokenKind::r_square)) {
+      dims.push_back(nullptr);  // `float a[] = {...}`: size from the initializer
+      continue;
+    }
+    ast::ExprPtr size = parse_expression();
+    if (failed_) return false;
+    dims.push_back(std::move(size));
+    if (!expect(TokenKind::r_square, "after array size")) return false;
+  }
+  return true;
+}
+
+bool Parser::parse_semantics(ast::Variable& v) {
+  while (accept(TokenKind::colon)) {
+    if (!at(TokenKind::identifier)) {
+      error_here("expected-semantic",
+                 "expected a semantic or register after ':', found " + describe(tok()));
+      return false;
+    }
+    std::string_view word = tok().text;
+    if ((word == "register" || word == "packoffset") && peek().is(TokenKind::l_paren)) {
+      std::string& target = word == "register" ? v.register_binding : v.packoffset;
+      Token open = advance();
+      advance();
+      target.clear();
+      while (!at(TokenKind::r_paren)) {
+        if (at_eof() || at(TokenKind::semi) || at(TokenKind::l_brace)) {
+          if (Diagnostic* d = error_here("expected-token",
+                                         "expected ')' after register binding, found " +
+                                             describe(tok())))
+            d->notes.push_back({open.loc, "in this binding"});
+          return false;
+        }
+        append_spelling(target, tok());
+        advance();
+      }
+      advance();
+    } else {
+      v.semantic = std::string(word);
+      advance();
+    }
+  }
+  return true;
+}
+
+bool Parser::parse_declarator_head(ast::Variable& v) {
+  if (!at(TokenKind::identifier)) {
+    error_here("expected-identifier",
+               "expected a name for the declaration, found " + describe(tok()));
+    return false;
+  }
+  v.name = std::string(tok().text);
+  v.name_range = tok().range();
+  advance();
+  if (!parse_array_dims(v.array_dims) || !parse_semantics(v)) return false;
+  if (at(TokenKind::less) && !parse_annotations(v.annotations)) return false;
+  return true;
+}
+
+bool Parser::parse_initializer(ast::Variable& v) {
+  if (!accept(TokenKind::equal)) return true;
+  v.initializer = parse_assignment();
+  return !failed_;
+}
+
+void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t first,
+                                        std::vector<std::string> attributes) {
+  uint32_t storage = parse_storage();
+  ast::TypeRef type;
+  if (!parse_type(type)) return;
+  if (at(TokenKind::identifier) && peek().is(TokenKind::l_paren)) {
+    auto f = std::make_unique<ast::Function>();
+    f->storage = storage;
+    f->return_type = std::move(type);
+    f->attributes = std::move(attributes);
+    f->name = std::string(tok().text);
+    f->name_range = tok().range();
+    advance();
+    if (!parse_function(*f)) return;
+    f->range = range_from(first);
+    f->tokens = span_from(first);
+    ast::Decl d;
+    d.kind = ast::DeclKind::function;
+    d.function = std::move(f);
+    out.push_back(std::move(d));
+    return;
+  }
+  if (!attributes.empty()) {
+    error("unexpected-attribute", tokens_[first].range(),
+          "attributes such as [" + attributes.front() + "] apply only to functions");
+    return;
+  }
+  size_t first_decl = out.size();
+  bool state_object_kind = is_state_object_kind(type.name);
+  for (;;) {
+    uint32_t start = out.size() == first_decl ? first : pos_;
+    auto v = std::make_unique<ast::Variable>();
+    v->storage = storage;
+    v->type = type;
+    if (!parse_declarator_head(*v)) return;
+    if (state_object_kind && at(TokenKind::l_brace) && out.size() == first_decl) {
+      finish_state_object(out, *v, first);
+      return;
+    }
+    if (!parse_initializer(*v)) return;
+    v->range = range_from(start);
+    ast::Decl d;
+    d.kind = ast::DeclKind::variable;
+    d.variable = std::move(v);
+    out.push_back(std::move(d));
+    if (!accept(TokenKind::comma)) break;
+  }
+  if (!expect_semi("after declaration")) return;
+  // Declarators of one declaration share its token span: the shader compiler emits a
+  // span once (see docs/effect-format.md).
+  for (size_t i = first_decl; i < out.size(); ++i) out[i].variable->tokens = span_from(first);
+}
+
+void Parser::finish_state_object(std::vector<ast::Decl>& out, ast::Variable& head,
+                                 uint32_t first) {
+  auto so = std::make_unique<ast::StateObject>();
+  so->kind = head.type.name;
+  so->name = std::move(head.name);
+  so->name_range = head.name_range;
+  so->array_dims = std::move(head.array_dims);
+  so->annotations = std::move(head.annotations);
+  so->register_binding = std::move(head.register_binding);
+  if (!parse_state_list(so->states, "state object")) return;
+  accept(TokenKind::semi);
+  so->range = range_from(first);
+  ast::Decl d;
+  d.kind = ast::DeclKind::state_object;
+  d.state_object = std::move(so);
+  out.push_back(std::move(d));
+}
+
+bool Parser::parse_function(ast::Function& f) {
+  Token open = tok();
+  advance();  // (
+  if (at_ident("void") && peek().is(TokenKind::r_paren)) advance();
+  if (!accept(TokenKind::r_paren)) {
+    for (;;) {
+      ast::Variable p;
+      if (!parse_parameter(p)) return false;
+      f.params.push_back(std::move(p));
+      if (accept(TokenKind::comma)) continue;
+      if (!at(TokenKind::r_paren)) {
+        if (Diagnostic* d = error_here("expected-token",
+                                       "expected ')' or ',' in parameter list, found " +
+                                           describe(tok())))
+          d->notes.push_back({open.loc, "to match this '('"});
+        return false;
+      }
+      advance();
+      break;
+    }
+  }
+  if (accept(TokenKind::colon)) {
+    if (!at(TokenKind::identifier)) {
+      error_here("expected-semantic", "expected a semantic after ':', found " + describe(tok()));
+      return false;
+    }
+    f.semantic = std::string(advance().text);
+  }
+  if (at(TokenKind::l_brace)) return skip_braced(f.body, "function body");
+  return expect_semi("after function declaration");
+}
+
+bool Parser::parse_parameter(ast::Variable& p) {
+  uint32_t first = pos_;
+  p.storage = parse_storage();
+  if (!parse_type(p.type)) return false;
+  if (!at(TokenKind::identifier)) {
+    error_here("expected-identifier", "expected a parameter name, found " + describe(tok()));
+    return false;
+  }
+  p.name = std::string(tok().text);
+  p.name_range = tok().range();
+  advance();
+  if (!parse_array_dims(p.array_dims) || !parse_semantics(p)) return false;
+  if (accept(TokenKind::equal)) {
+    p.initializer = parse_assignment();
+    if (failed_) return false;
+  }
+  p.range = range_from(first);
+  p.tokens = span_from(first);
+  return true;
+}
+
+bool Parser::parse_member_list(std::vector<ast::Variable>& members, std::string_view what) {
+  if (!at(TokenKind::l_brace)) {
+    std::string context = "to begin ";
+    context.append(what);
+    return expect(TokenKind::l_brace, context);
+  }
+  Token open = tok();
+  advance();
+  while (!at(TokenKind::r_brace)) {
+    if (at_eof()) {
+      unterminated(open, what);
+      return false;
+    }
+    if (accept(TokenKind::semi)) continue;
+    if (at(TokenKind::directive)) {
+      advance();
+      continue;
+    }
+    uint32_t depth = depth_, first = pos_;
+    size_t first_member = members.size();
+    uint32_t storage = parse_storage();
+    ast::TypeRef type;
+    if (parse_type(type)) {
+      for (;;) {
+        ast::Variable v;
+        v.storage = storage;
+        v.type = type;
+        if (!parse_declarator_head(v) || !parse_initializer(v)) break;
+        v.range = range_from(first);
+        members.push_back(std::move(v));
+        if (!accept(TokenKind::comma)) {
+          if (expect_semi("after member declaration"))
+            for (size_t i = first_member; i < members.size(); ++i)
+              members[i].tokens = span_from(first);
+          break;
+        }
+      }
+    }
+    if (failed_) recover(depth);
+  }
+  advance();
+  return true;
+}
+
+void Parser::parse_struct(std::vector<ast::Decl>& out) {
+  uint32_t first = pos_;
+  advance();  // struct
+  auto s = std::make_unique<ast::Struct>();
+  if (!at(TokenKind::identifier)) {
+    error_here("expected-identifier", "expected a struct name, found " + describe(tok()));
+    return;
+  }
+  s->name = std::string(tok().text);
+  s->name_range = tok().range();
+  advance();
+  if (!parse_member_list(s->members, "struct")) return;
+  if (!expect_semi("after struct")) return;
+  s->range = range_from(first);
+  s->tokens = span_from(first);
+  ast::Decl d;
+  d.kind = ast::DeclKind::structure;
+  d.structure = std::move(s);
+  out.push_back(std::move(d));
+}
+
+void Parser::parse_typedef(std::vector<ast::Decl>& out) {
+  uint32_t first = pos_;
+  advance();  // typedef
+  parse_storage();  // `typedef const float4 c4;`: the qualifier is not kept on aliases
+  ast::TypeRef type;
+  if (!parse_type(type)) return;
+  size_t first_decl = out.size();
+  for (;;) {
+    auto t = std::make_unique<ast::Typedef>();
+    t->type = type;
+    if (!at(TokenKind::identifier)) {
+      error_here("expected-identifier", "expected a typedef name, found " + describe(tok()));
+      return;
+    }
+    t->name = std::string(advance().text);
+    if (!parse_array_dims(t->array_dims)) return;
+    ast::Decl d;
+    d.kind = ast::DeclKind::type_alias;
+    d.type_alias = std::move(t);
+    out.push_back(std::move(d));
+    if (!accept(TokenKind::comma)) break;
+  }
+  if (!expect_semi("after typedef")) return;
+  for (size_t i = first_decl; i < out.size(); ++i) {
+    out[i].type_alias->range = range_from(first);
+    out[i].type_alias->tokens = span_from(first);
+  }
+}
+
+void Parser::parse_constant_buffer(std::vector<ast::Decl>& out) {
+  uint32_t first = pos_;
+  auto cb = std::make_unique<ast::ConstantBuffer>();
+  cb->texture_buffer = advance().text == "tbuffer";
+  cb->name = std::string(tok().text);
+  cb->name_range = tok().range();
+  advance();
+  ast::Variable binding;
+  if (!parse_semantics(binding)) return;
+  cb->register_binding = std::move(binding.register_binding);
+  if (!parse_member_list(cb->members, "constant buffer")) return;
+  accept(TokenKind::semi);
+  cb->range = range_from(first);
+  cb->tokens = span_from(first);
+  ast::Decl d;
+  d.kind = ast::DeclKind::constant_buffer;
+  d.constant_buffer = std::move(cb);
+  out.push_back(std::move(d));
+}
+
+}  // namespace fx::detail

@@ -1,0 +1,358 @@
+// Effect expressions: initializers, annotation values, state values, array sizes.
+// Precedence climbing for binary operators; recursion is bounded by max_nesting.
+#include <utility>
+
+#include "fx/lexer.h"
+#include "parse_internal.h"
+
+namespace fx::detail {
+namespace {
+
+// Binding strength of a binary operator token (0: not a binary operator).
+int binary_precedence(TokenKind k) {
+  switch (k) {
+    case TokenKind::pipepipe: return 1;
+    case TokenKind::ampamp: return 2;
+    case TokenKind::pipe: return 3;
+    case TokenKind::caret: return 4;
+    case TokenKind::amp: return 5;
+    case TokenKind::equalequal:
+    case TokenKind::exclaimequal: return 6;
+    case TokenKind::less:
+    case TokenKind::greater:
+    case TokenKind::lessequal:
+    case TokenKind::greaterequal: return 7;
+    case TokenKind::lessless:
+    case TokenKind::greatergreater: return 8;
+    case TokenKind::plus:
+    case TokenKind::minus: return 9;
+    case TokenKind::star:
+    case TokenKind::slash:
+    case TokenKind::percent: return 10;
+    default: return 0;
+  }
+}
+
+bool starts_operand(TokenKind k) {
+  return k == TokenKind::identifier || k == TokenKind::integer || k == TokenKind::floating ||
+         k == TokenKind::l_paren || k == TokenKind::string;
+}
+
+}  // namespace
+
+bool Parser::enter_nesting() {
+  if (++nesting_ <= options_.max_nesting) return true;
+  --nesting_;
+  error_here("nesting-too-deep", "expression nested too deeply (more than " +
+                                     std::to_string(options_.max_nesting) + " levels)");
+  return false;
+}
+
+ast::ExprPtr Parser::make(ast::ExprKind kind, uint32_t first) {
+  auto e = std::make_unique<ast::Expr>();
+  e->kind = kind;
+  e->range = tokens_[first].range();
+  return e;
+}
+
+ast::ExprPtr Parser::parse_expression() {
+  uint32_t first = pos_;
+  ast::ExprPtr e = parse_assignment();
+  while (!failed_ && at(TokenKind::comma)) {
+    advance();
+    ast::ExprPtr rhs = parse_assignment();
+    if (failed_) return nullptr;
+    auto comma = make(ast::ExprKind::binary, first);
+    comma->text = ",";
+    comma->args.push_back(std::move(e));
+    comma->args.push_back(std::move(rhs));
+    comma->range = range_from(first);
+    e = std::move(comma);
+  }
+  return failed_ ? nullptr : std::move(e);
+}
+
+ast::ExprPtr Parser::parse_assignment() {
+  uint32_t first = pos_;
+  ast::ExprPtr cond = parse_binary(1);
+  if (failed_ || !at(TokenKind::question)) return cond;
+  advance();
+  auto e = make(ast::ExprKind::ternary, first);
+  e->args.push_back(std::move(cond));
+  e->args.push_back(parse_assignment());
+  if (failed_ || !expect(TokenKind::colon, "in conditional expression")) return nullptr;
+  e->args.push_back(parse_assignment());
+  if (failed_) return nullptr;
+  e->range = range_from(first);
+  return e;
+}
+
+ast::ExprPtr Parser::parse_binary(int min_precedence) {
+  uint32_t first = pos_;
+  ast::ExprPtr lhs = parse_unary();
+  for (;;) {
+    if (failed_) return nullptr;
+    int precedence = binary_precedence(tok().kind);
+    if (precedence == 0 || precedence < min_precedence) return lhs;
+    auto e = make(ast::ExprKind::binary, first);
+    e->text = std::string(advance().text);
+    ast::ExprPtr rhs = parse_binary(precedence + 1);
+    if (failed_) return nullptr;
+    e->args.push_back(std::move(lhs));
+    e->args.push_back(std::move(rhs));
+    e->range = range_from(first);
+    lhs = std::move(e);
+  }
+}
+
+ast::ExprPtr Parser::parse_unary() {
+  if (!enter_nesting()) return nullptr;
+  uint32_t first = pos_;
+  ast::ExprPtr result;
+  switch (tok().kind) {
+    case TokenKind::minus:
+    case TokenKind::plus:
+    case TokenKind::exclaim:
+    case TokenKind::tilde:
+    case TokenKind::plusplus:
+    case TokenKind::minusminus: {
+      result = make(ast::ExprKind::unary, first);
+      result->text = std::string(advance().text);
+      ast::ExprPtr operand = parse_unary();
+      if (failed_) {
+        result.reset();
+        break;
+      }
+      result->args.push_back(std::move(operand));
+      result->range = range_from(first);
+      break;
+    }
+    case TokenKind::l_paren:
+      // `(float3)x` is a cast when a lone name in parentheses is followed by an operand.
+      if (peek(1).is(TokenKind::identifier) && peek(2).is(TokenKind::r_paren) &&
+          starts_operand(peek(3).kind)) {
+        result = make(ast::ExprKind::cast, first);
+        advance();
+        result->text = std::string(advance().text);
+        advance();
+        ast::ExprPtr operand = parse_unary();
+        if (failed_) {
+          result.reset();
+          break;
+        }
+        result->args.push_back(std::move(operand));
+        result->range = range_from(first);
+        break;
+      }
+      [[fallthrough]];
+    default:
+      result = parse_primary();
+      if (!failed_) result = parse_postfix(std::move(result), first);
+      break;
+  }
+  leave_nesting();
+  return failed_ ? nullptr : std::move(result);
+}
+
+ast::ExprPtr Parser::parse_postfix(ast::ExprPtr e, uint32_t first) {
+  for (;;) {
+    if (at(TokenKind::l_square)) {
+      advance();
+      auto index = make(ast::ExprKind::index, first);
+      index->args.push_back(std::move(e));
+      index->args.push_back(parse_expression());
+      if (failed_ || !expect(TokenKind::r_square, "after index")) return nullptr;
+      index->range = range_from(first);
+      e = std::move(index);
+    } else if (at(TokenKind::period) && peek().is(TokenKind::identifier)) {
+      advance();
+      auto member = make(ast::ExprKind::member, first);
+      member->text = std::string(advance().text);
+      member->args.push_back(std::move(e));
+      member->range = range_from(first);
+      e = std::move(member);
+    } else {
+      return e;
+    }
+  }
+}
+
+ast::ExprPtr Parser::parse_primary() {
+  uint32_t first = pos_;
+  const Token& t = tok();
+  switch (t.kind) {
+    case TokenKind::integer:
+    case TokenKind::floating: {
+      auto e = make(t.is(TokenKind::integer) ? ast::ExprKind::int_literal
+                                             : ast::ExprKind::float_literal,
+                    first);
+      e->text = std::string(t.text);
+      std::string why;
+      std::optional<NumberValue> value = parse_number(t.text, &why);
+      if (!value) {
+        error_here("invalid-number", why + " " + quote(t.text));
+        return nullptr;
+      }
+      e->number = value->as_double();
+      advance();
+      return e;
+    }
+    case TokenKind::string: {
+      auto e = make(ast::ExprKind::string_literal, first);
+      while (at(TokenKind::string)) e->text += unquote(advance().text);  // "a" "b" joins
+      e->range = range_from(first);
+      return e;
+    }
+    case TokenKind::identifier: return parse_identifier_expr();
+    case TokenKind::l_paren: {
+      Token open = advance();
+      ast::ExprPtr inner = parse_expression();
+      if (failed_) return nullptr;
+      if (!at(TokenKind::r_paren)) {
+        if (Diagnostic* d = error_here("expected-token",
+                                       "expected ')' after expression, found " +
+                                           describe(tok())))
+          d->notes.push_back({open.loc, "to match this '('"});
+        return nullptr;
+      }
+      advance();
+      return inner;
+    }
+    case TokenKind::l_brace: return parse_init_list();
+    case TokenKind::less: {
+      // `<name>` after '=' refers to a parameter (D3D9 state values).
+      advance();
+      if (!at(TokenKind::identifier)) {
+        error_here("expected-identifier",
+                   "expected a parameter name after '<', found " + describe(tok()));
+        return nullptr;
+      }
+      auto e = make(ast::ExprKind::reference, first);
+      e->text = std::string(advance().text);
+      split_greater();
+      if (!expect(TokenKind::greater, "to close the parameter reference")) return nullptr;
+      e->range = range_from(first);
+      return e;
+    }
+    default:
+      error_here("expected-expression", "expected an expression, found " + describe(t));
+      return nullptr;
+  }
+}
+
+ast::ExprPtr Parser::parse_identifier_expr() {
+  uint32_t first = pos_;
+  std::string_view word = tok().text;
+  bool braces_follow = peek().is(TokenKind::l_brace);
+  if (iequals(word, "true") || iequals(word, "false")) {
+    auto e = make(ast::ExprKind::bool_literal, first);
+    e->text = std::string(word);
+    e->number = iequals(word, "true") ? 1 : 0;
+    advance();
+    return e;
+  }
+  if (iequals(word, "NULL")) {
+    auto e = make(ast::ExprKind::null, first);
+    e->text = std::string(word);
+    advance();
+    return e;
+  }
+  if (word == "compile") return parse_compile();
+  if (braces_follow && (iequals(word, "asm") || iequals(word, "decl"))) return parse_asm();
+  if (braces_follow && (word == "sampler_state" || word == "stateblock_state")) {
+    auto e = make(ast::ExprKind::state_block, first);
+    e->text = std::string(advance().text);
+    if (!parse_state_list(e->states, e->text)) return nullptr;
+    e->range = range_from(first);
+    return e;
+  }
+  advance();
+  if (at(TokenKind::l_paren)) {
+    auto e = make(ast::ExprKind::call, first);
+    e->text = std::string(word);
+    if (!parse_call_args(e->args)) return nullptr;
+    e->range = range_from(first);
+    return e;
+  }
+  auto e = make(ast::ExprKind::identifier, first);
+  e->text = std::string(word);
+  return e;
+}
+
+ast::ExprPtr Parser::parse_compile() {
+  uint32_t first = pos_;
+  advance();  // compile
+  auto e = make(ast::ExprKind::compile, first);
+  if (!at(TokenKind::identifier)) {
+    error_here("expected-profile",
+               "expected a shader profile after 'compile', found " + describe(tok()));
+    return nullptr;
+  }
+  e->text = std::string(advance().text);
+  if (!at(TokenKind::identifier)) {
+    error_here("expected-identifier",
+               "expected a shader function after the profile, found " + describe(tok()));
+    return nullptr;
+  }
+  e->callee = std::string(advance().text);
+  if (at(TokenKind::l_paren) && !parse_call_args(e->args)) return nullptr;
+  e->range = range_from(first);
+  return e;
+}
+
+ast::ExprPtr Parser::parse_asm() {
+  uint32_t first = pos_;
+  auto e = make(ast::ExprKind::asm_block, first);
+  if (iequals(tok().text, "decl")) {
+    advance();
+    if (!skip_braced(e->decl_code, "decl block")) return nullptr;
+    if (!tok().is(TokenKind::identifier) || !iequals(tok().text, "asm") ||
+        !peek().is(TokenKind::l_brace)) {
+      error_here("expected-token", "expected 'asm { }' after 'decl { }', found " +
+                                       describe(tok()));
+      return nullptr;
+    }
+  }
+  advance();  // asm
+  if (!skip_braced(e->code, "asm block")) return nullptr;
+  e->range = range_from(first);
+  return e;
+}
+
+ast::ExprPtr Parser::parse_init_list() {
+  uint32_t first = pos_;
+  Token open = advance();
+  auto e = make(ast::ExprKind::init_list, first);
+  while (!accept(TokenKind::r_brace)) {
+    ast::ExprPtr element = parse_assignment();
+    if (failed_) return nullptr;
+    e->args.push_back(std::move(element));
+    if (accept(TokenKind::comma) || at(TokenKind::r_brace)) continue;
+    if (Diagnostic* d = error_here("expected-token",
+                                   "expected ',' or '}' in initializer list, found " +
+                                       describe(tok())))
+      d->notes.push_back({open.loc, "to match this '{'"});
+    return nullptr;
+  }
+  e->range = range_from(first);
+  return e;
+}
+
+bool Parser::parse_call_args(std::vector<ast::ExprPtr>& args) {
+  Token open = advance();  // (
+  if (accept(TokenKind::r_paren)) return true;
+  for (;;) {
+    ast::ExprPtr arg = parse_assignment();
+    if (failed_) return false;
+    args.push_back(std::move(arg));
+    if (accept(TokenKind::comma)) continue;
+    if (accept(TokenKind::r_paren)) return true;
+    if (Diagnostic* d = error_here("expected-token",
+                                   "expected ')' or ',' in argument list, found " +
+                                       describe(tok())))
+      d->notes.push_back({open.loc, "to match this '('"});
+    return false;
+  }
+}
+
+}  // namespace fx::detail

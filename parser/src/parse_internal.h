@@ -1,0 +1,129 @@
+// The recursive-descent effect parser shared by parser.cpp (cursor, errors, recovery,
+// file scope), parse_expr.cpp (expressions), parse_decl.cpp (types, variables, functions,
+// structs, buffers) and parse_technique.cpp (techniques, passes, states, annotations).
+// Private to fxkit_parser.
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fx/ast.h"
+#include "fx/diagnostic.h"
+#include "fx/parser.h"
+#include "fx/source_manager.h"
+
+namespace fx::detail {
+
+class Parser {
+ public:
+  Parser(std::vector<Token> tokens, const SourceManager& sm, DiagnosticSink& diags,
+         const ParseOptions& options);
+  ast::Effect run();
+
+ private:
+  // --- cursor (parser.cpp) ---
+  const Token& tok() const { return tokens_[pos_]; }
+  const Token& peek(size_t ahead = 1) const {
+    size_t i = pos_ + ahead;
+    return i < tokens_.size() ? tokens_[i] : tokens_.back();
+  }
+  bool at(TokenKind k) const { return tokens_[pos_].kind == k; }
+  bool at_ident(std::string_view name) const { return tokens_[pos_].is_identifier(name); }
+  bool at_eof() const { return at(TokenKind::eof); }
+  // Consumes the current token (never the final eof) and tracks brace depth.
+  const Token& advance();
+  bool accept(TokenKind k);
+  // Consumes `k` or reports `expected-token`: "expected 'k' <context>".
+  bool expect(TokenKind k, std::string_view context);
+  // A missing ';' before a token on a new line is reported without derailing the parse.
+  bool expect_semi(std::string_view context);
+  // Splits `>>`, `>=`, `>>=` so that the current token is a single `>`.
+  void split_greater();
+  SourceLocation end_of_previous() const;
+  SourceRange range_from(uint32_t first) const;
+  ast::TokenSpan span_from(uint32_t first) const { return {first, pos_}; }
+
+  // --- errors and recovery (parser.cpp) ---
+  // Reports unless an error is already being recovered from; marks the parse failed.
+  Diagnostic* error(std::string id, SourceRange range, std::string message);
+  Diagnostic* error_here(std::string id, std::string message);
+  void unterminated(const Token& open, std::string_view what);
+  // Skips to the end of the broken construct: past the next ';' at `depth`, before a '}'
+  // that closes the enclosing block (or a '>' ending annotations), or past a '}' that
+  // returns to `depth` (and one ';' after it). Clears the failed state.
+  void recover(uint32_t depth, bool stop_at_greater = false);
+  // Consumes `{ ... }` without parsing it; returns the span between the braces.
+  bool skip_braced(ast::TokenSpan& inner, std::string_view what);
+
+  // --- file scope (parser.cpp) ---
+  void parse_profile_header();
+  void parse_top_level(std::vector<ast::Decl>& out);
+  bool parse_attributes(std::vector<std::string>& out);
+  void parse_glsl_block(std::vector<ast::Decl>& out);
+
+  // --- declarations (parse_decl.cpp) ---
+  uint32_t parse_storage();
+  bool parse_type(ast::TypeRef& type);
+  bool parse_template_args(std::string& out);
+  bool parse_array_dims(std::vector<ast::ExprPtr>& dims);
+  bool parse_semantics(ast::Variable& v);
+  bool parse_declarator_head(ast::Variable& v);
+  bool parse_initializer(ast::Variable& v);
+  void parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t first,
+                                  std::vector<std::string> attributes);
+  bool parse_function(ast::Function& f);
+  bool parse_parameter(ast::Variable& p);
+  bool parse_member_list(std::vector<ast::Variable>& members, std::string_view what);
+  void parse_struct(std::vector<ast::Decl>& out);
+  void parse_typedef(std::vector<ast::Decl>& out);
+  void parse_constant_buffer(std::vector<ast::Decl>& out);
+  void finish_state_object(std::vector<ast::Decl>& out, ast::Variable& head, uint32_t first);
+
+  // --- effect blocks (parse_technique.cpp) ---
+  bool parse_annotations(std::vector<ast::Annotation>& out);
+  bool parse_annotation(ast::Annotation& a);
+  bool parse_technique(ast::Technique& t);
+  bool parse_pass(ast::Pass& p);
+  // `{ State = value; ... }` (pass bodies, state objects, sampler_state).
+  bool parse_state_list(std::vector<ast::StateAssignment>& out, std::string_view what);
+  bool parse_state(ast::StateAssignment& s);
+  void parse_group(std::vector<ast::Decl>& out);
+
+  // --- expressions (parse_expr.cpp) ---
+  ast::ExprPtr parse_expression();  // with the comma operator
+  ast::ExprPtr parse_assignment();  // one initializer / argument (no comma operator)
+  ast::ExprPtr parse_binary(int min_precedence);
+  ast::ExprPtr parse_unary();
+  ast::ExprPtr parse_postfix(ast::ExprPtr e, uint32_t first);
+  ast::ExprPtr parse_primary();
+  ast::ExprPtr parse_identifier_expr();
+  ast::ExprPtr parse_compile();
+  ast::ExprPtr parse_asm();
+  ast::ExprPtr parse_init_list();
+  bool parse_call_args(std::vector<ast::ExprPtr>& args);
+  ast::ExprPtr make(ast::ExprKind kind, uint32_t first);
+  bool enter_nesting();
+  void leave_nesting() { --nesting_; }
+
+  std::vector<Token> tokens_;
+  uint32_t pos_ = 0;
+  uint32_t depth_ = 0;    // unclosed '{' consumed so far
+  size_t nesting_ = 0;    // current recursion depth of expressions
+  bool failed_ = false;   // an error was reported and not yet recovered from
+  bool eof_error_ = false;  // recovery ran into eof: further errors would be echoes
+  std::string profile_header_;
+  const SourceManager& sm_;
+  DiagnosticSink& diags_;
+  ParseOptions options_;
+};
+
+// Keyword tests shared by the parts.
+bool is_storage_keyword(std::string_view word, uint32_t& bit);
+bool is_state_object_kind(std::string_view word);
+bool is_shader_state(std::string_view state_name);
+std::string quote(std::string_view text);  // 'text' for messages
+std::string describe(const Token& t);      // 'text', or "end of file"
+// Appends a token's spelling to text rebuilt from tokens, with a space between words.
+void append_spelling(std::string& out, const Token& t);
+
+}  // namespace fx::detail

@@ -1,0 +1,219 @@
+// Effect blocks: annotations, techniques, passes, state assignments and fxgroups.
+#include <utility>
+
+#include "parse_internal.h"
+
+namespace fx::detail {
+
+bool Parser::parse_annotations(std::vector<ast::Annotation>& out) {
+  Token open = tok();
+  advance();  // <
+  for (;;) {
+    switch (tok().kind) {
+      case TokenKind::greater:
+      case TokenKind::greatergreater:
+      case TokenKind::greaterequal:
+        split_greater();
+        advance();
+        return true;
+      case TokenKind::eof:
+      case TokenKind::l_brace:
+      case TokenKind::r_brace:
+        if (Diagnostic* d = error_here("expected-token",
+                                       "expected '>' to close the annotation list, found " +
+                                           describe(tok())))
+          d->notes.push_back({open.loc, "to match this '<'"});
+        return false;
+      case TokenKind::semi:
+        advance();
+        continue;
+      default: break;
+    }
+    uint32_t depth = depth_;
+    ast::Annotation a;
+    if (parse_annotation(a)) out.push_back(std::move(a));
+    if (failed_) recover(depth, /*stop_at_greater=*/true);
+  }
+}
+
+bool Parser::parse_annotation(ast::Annotation& a) {
+  uint32_t first = pos_;
+  parse_storage();
+  if (!parse_type(a.type)) return false;
+  if (!at(TokenKind::identifier)) {
+    error_here("expected-identifier", "expected an annotation name, found " + describe(tok()));
+    return false;
+  }
+  a.name = std::string(advance().text);
+  if (!parse_array_dims(a.array_dims)) return false;
+  if (!expect(TokenKind::equal, "after annotation name")) return false;
+  a.value = parse_assignment();
+  if (failed_) return false;
+  a.range = range_from(first);
+  return expect_semi("after annotation");
+}
+
+bool Parser::parse_technique(ast::Technique& t) {
+  uint32_t first = pos_;
+  std::string_view keyword = advance().text;
+  t.version = keyword == "technique11" ? 11 : keyword == "technique10" ? 10 : 9;
+  if (at(TokenKind::identifier)) {
+    t.name = std::string(tok().text);
+    t.name_range = tok().range();
+    advance();
+  }
+  if (at(TokenKind::less) && !parse_annotations(t.annotations)) return false;
+  if (!at(TokenKind::l_brace)) return expect(TokenKind::l_brace, "to begin the technique body");
+  Token open = tok();
+  advance();
+  while (!at(TokenKind::r_brace)) {
+    if (at_eof()) {
+      unterminated(open, "technique");
+      return false;
+    }
+    if (accept(TokenKind::semi)) continue;
+    if (at(TokenKind::directive)) {
+      advance();
+      continue;
+    }
+    uint32_t depth = depth_;
+    // `Pass` appears in the wild; only passes can start here, so case does not matter.
+    if (tok().is(TokenKind::identifier) && iequals(tok().text, "pass")) {
+      ast::Pass p;
+      if (parse_pass(p)) t.passes.push_back(std::move(p));
+    } else {
+      error_here("expected-pass",
+                 "expected 'pass' in technique body, found " + describe(tok()));
+    }
+    if (failed_) recover(depth);
+  }
+  advance();
+  accept(TokenKind::semi);
+  t.range = range_from(first);
+  return true;
+}
+
+bool Parser::parse_pass(ast::Pass& p) {
+  uint32_t first = pos_;
+  advance();  // pass
+  if (at(TokenKind::identifier)) {
+    p.name = std::string(tok().text);
+    p.name_range = tok().range();
+    advance();
+  }
+  if (at(TokenKind::less) && !parse_annotations(p.annotations)) return false;
+  if (!parse_state_list(p.states, "pass")) return false;
+  p.range = range_from(first);
+  return true;
+}
+
+bool Parser::parse_state_list(std::vector<ast::StateAssignment>& out, std::string_view what) {
+  if (!at(TokenKind::l_brace)) {
+    std::string context = "to begin the ";
+    context.append(what).append(" body");
+    return expect(TokenKind::l_brace, context);
+  }
+  Token open = tok();
+  advance();
+  while (!at(TokenKind::r_brace)) {
+    if (at_eof()) {
+      unterminated(open, what);
+      return false;
+    }
+    if (accept(TokenKind::semi)) continue;
+    if (at(TokenKind::directive)) {
+      advance();
+      continue;
+    }
+    uint32_t depth = depth_;
+    ast::StateAssignment s;
+    if (parse_state(s)) out.push_back(std::move(s));
+    if (failed_) recover(depth);
+  }
+  advance();
+  return true;
+}
+
+bool Parser::parse_state(ast::StateAssignment& s) {
+  uint32_t first = pos_;
+  if (!at(TokenKind::identifier)) {
+    error_here("expected-state", "expected a state assignment, found " + describe(tok()));
+    return false;
+  }
+  s.name = std::string(tok().text);
+  s.name_range = tok().range();
+  advance();
+  if (at(TokenKind::l_paren)) {
+    // D3D10/11: `SetVertexShader(CompileShader(vs_4_0, VS()));`
+    s.call_style = true;
+    s.value = make(ast::ExprKind::call, first);
+    s.value->text = s.name;
+    if (!parse_call_args(s.value->args)) return false;
+    s.value->range = range_from(first);
+    s.range = s.value->range;
+    return expect_semi("after state call");
+  }
+  if (accept(TokenKind::l_square)) {
+    s.index = parse_expression();
+    if (failed_ || !expect(TokenKind::r_square, "after state index")) return false;
+  }
+  if (!expect(TokenKind::equal, "after state name " + quote(s.name))) return false;
+  s.value = parse_assignment();
+  if (failed_) return false;
+  if (s.value->kind == ast::ExprKind::init_list && is_shader_state(s.name) &&
+      !s.value->args.empty()) {
+    // `VertexShader = { Common, Lighting };` names GLSL blocks joined into one stage.
+    bool names_only = true;
+    for (const ast::ExprPtr& a : s.value->args)
+      names_only = names_only && a && a->kind == ast::ExprKind::identifier;
+    if (names_only) s.value->kind = ast::ExprKind::glsl_list;
+  }
+  s.range = range_from(first);
+  return expect_semi("after state assignment");
+}
+
+void Parser::parse_group(std::vector<ast::Decl>& out) {
+  uint32_t first = pos_;
+  advance();  // fxgroup
+  auto g = std::make_unique<ast::FxGroup>();
+  if (!at(TokenKind::identifier)) {
+    error_here("expected-identifier", "expected a group name, found " + describe(tok()));
+    return;
+  }
+  g->name = std::string(tok().text);
+  g->name_range = tok().range();
+  advance();
+  if (at(TokenKind::less) && !parse_annotations(g->annotations)) return;
+  if (!at(TokenKind::l_brace)) {
+    expect(TokenKind::l_brace, "to begin the fxgroup body");
+    return;
+  }
+  Token open = tok();
+  advance();
+  while (!at(TokenKind::r_brace)) {
+    if (at_eof()) {
+      unterminated(open, "fxgroup");
+      return;
+    }
+    if (accept(TokenKind::semi)) continue;
+    uint32_t depth = depth_;
+    std::string_view word = tok().is(TokenKind::identifier) ? tok().text : std::string_view();
+    if (word == "technique" || word == "technique10" || word == "technique11") {
+      ast::Technique t;
+      if (parse_technique(t)) g->techniques.push_back(std::move(t));
+    } else {
+      error_here("expected-technique",
+                 "expected a technique in fxgroup body, found " + describe(tok()));
+    }
+    if (failed_) recover(depth);
+  }
+  advance();
+  accept(TokenKind::semi);
+  g->range = range_from(first);
+  ast::Decl d;
+  d.kind = ast::DeclKind::group;
+  d.group = std::move(g);
+  out.push_back(std::move(d));
+}
+
+}  // namespace fx::detail
