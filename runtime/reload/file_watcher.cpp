@@ -11,6 +11,7 @@
 
 #include "reload/file_snapshot.h"
 #include "reload/inotify_queue.h"
+#include "reload/network_filesystem.h"
 #include "reload/pending_changes.h"
 #include "reload/wake_source.h"
 
@@ -47,6 +48,7 @@ struct WatchedFile {
 struct WatchedDirectory {
   int refs = 0;  // watched files inside
   int wd = -1;   // inotify descriptor; -1 means the directory is polled
+  bool network_reported = false;
   std::unordered_map<std::string, std::string> names;  // entry name -> file key
 };
 
@@ -117,6 +119,15 @@ struct FileWatcher::Impl {
   // Gives `dir` a kernel watch if possible; otherwise it stays polled.
   void try_attach(const std::string& key, WatchedDirectory& dir) {
     if (!inotify || dir.wd >= 0) return;
+    if (options.backend == WatchBackend::automatic && detail::is_network_filesystem(key)) {
+      if (!dir.network_reported)
+        diagnostics.report(Severity::note, "watch-network-filesystem", {},
+                           "'" + key + "' is on a network file system where inotify misses "
+                           "remote edits; polling it every " +
+                               std::to_string(options.poll_interval.count()) + " ms");
+      dir.network_reported = true;
+      return;
+    }
     if (inotify_directories >= options.max_inotify_directories) {
       report_limit(key, "the watcher's limit of " +
                             std::to_string(options.max_inotify_directories) +

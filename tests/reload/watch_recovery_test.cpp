@@ -9,6 +9,7 @@
 
 #include "fx/reload/file_watcher.h"
 #include "reload/file_snapshot.h"
+#include "reload/network_filesystem.h"
 #include "watch_test_support.h"
 
 namespace fx {
@@ -159,6 +160,21 @@ TEST(WatchRecovery, MissingDirectoryIsWatchedOnceItAppears) {
   std::vector<FileEvent> events = wait_for_events(w);
   ASSERT_EQ(events.size(), 1u);
   EXPECT_EQ(events[0].kind, FileEventKind::changed);
+}
+
+TEST(WatchRecovery, AutomaticPollsNetworkFileSystemsAndWatchesLocalOnes) {
+  EXPECT_TRUE(detail::is_network_filesystem_type(0x6969));       // NFS
+  EXPECT_TRUE(detail::is_network_filesystem_type(0xFF534D42));   // CIFS
+  EXPECT_TRUE(detail::is_network_filesystem_type(0x01021997));   // 9p (WSL2 /mnt/c)
+  EXPECT_FALSE(detail::is_network_filesystem_type(0xEF53));      // ext4
+  EXPECT_FALSE(detail::is_network_filesystem_type(0x01021994));  // tmpfs
+  ScratchDir dir;
+  FileWatcher w(fast(WatchBackend::automatic));
+  ASSERT_EQ(w.backend(), WatchBackend::inotify);
+  ASSERT_TRUE(w.watch(dir / "a.fx"));
+  bool remote = detail::is_network_filesystem(dir.path().string());
+  EXPECT_EQ(w.stats().polled_directories, remote ? 1u : 0u);
+  EXPECT_EQ(has_diagnostic(w, "watch-network-filesystem"), remote);
 }
 
 TEST(FileSnapshot, StatVouchesForContentOnlyWhenNotRacy) {
