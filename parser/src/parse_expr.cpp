@@ -38,6 +38,18 @@ bool starts_operand(TokenKind k) {
          k == TokenKind::l_paren || k == TokenKind::string;
 }
 
+// Fast path for the common plain decimal integer (`0`, `16`): no copy, no strtod.
+bool decimal_value(std::string_view s, double& out) {
+  if (s.empty() || s.size() > 15 || (s.size() > 1 && s[0] == '0')) return false;
+  uint64_t v = 0;
+  for (char c : s) {
+    if (c < '0' || c > '9') return false;
+    v = v * 10 + uint64_t(c - '0');
+  }
+  out = double(v);
+  return true;
+}
+
 }  // namespace
 
 bool Parser::enter_nesting() {
@@ -187,13 +199,15 @@ ast::ExprPtr Parser::parse_primary() {
                                              : ast::ExprKind::float_literal,
                     first);
       e->text = std::string(t.text);
-      std::string why;
-      std::optional<NumberValue> value = parse_number(t.text, &why);
-      if (!value) {
-        error_here("invalid-number", why + " " + quote(t.text));
-        return nullptr;
+      if (!decimal_value(t.text, e->number)) {
+        std::string why;
+        std::optional<NumberValue> value = parse_number(t.text, &why);
+        if (!value) {
+          error_here("invalid-number", why + " " + quote(t.text));
+          return nullptr;
+        }
+        e->number = value->as_double();
       }
-      e->number = value->as_double();
       advance();
       return e;
     }

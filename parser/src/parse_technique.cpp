@@ -115,6 +115,7 @@ bool Parser::parse_state_list(std::vector<ast::StateAssignment>& out, std::strin
   }
   Token open = tok();
   advance();
+  out.reserve(4);
   while (!at(TokenKind::r_brace)) {
     if (at_eof()) {
       unterminated(open, what);
@@ -157,7 +158,9 @@ bool Parser::parse_state(ast::StateAssignment& s) {
     s.index = parse_expression();
     if (failed_ || !expect(TokenKind::r_square, "after state index")) return false;
   }
-  if (!expect(TokenKind::equal, "after state name " + quote(s.name))) return false;
+  if (!at(TokenKind::equal))  // the message names the state, so build it only when needed
+    return expect(TokenKind::equal, "after state name " + quote(s.name));
+  advance();
   s.value = parse_assignment();
   if (failed_) return false;
   if (s.value->kind == ast::ExprKind::init_list && is_shader_state(s.name) &&
