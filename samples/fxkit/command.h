@@ -1,0 +1,30 @@
+// Shared pieces of the fxkit subcommands: the front-end flags every command takes and the
+// exit-code convention (0: success, 1: errors in the input, 2: usage or I/O error).
+#pragma once
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "fx/frontend.h"
+
+namespace fxkit {
+
+enum ExitCode { kSuccess = 0, kInputErrors = 1, kUsageError = 2 };
+
+// -I, -D and --profile, as every command that reads effects takes them.
+struct FrontEndFlags {
+  std::vector<std::string> include_dirs;
+  std::vector<std::string> defines;
+  std::string profile = "auto";
+
+  void add_to(CLI::App& command);
+  // The options for the front end; false (and a message in `error`) for a bad --profile.
+  bool to_options(fx::FrontEndOptions& options, std::string& error) const;
+};
+
+// Each subcommand registers itself and sets *run to what to execute when it is chosen.
+using Runner = std::function<int()>;
+void register_check(CLI::App& app, Runner& run);
+
+}  // namespace fxkit

@@ -1,0 +1,41 @@
+// fxkit: validate, inspect, compile, render, select, watch and benchmark effect files.
+#include <cstdio>
+
+#include "command.h"
+
+namespace fxkit {
+
+void FrontEndFlags::add_to(CLI::App& command) {
+  command.add_option("-I", include_dirs, "Add a folder to the include search path");
+  command.add_option("-D", defines, "Define a macro: NAME or NAME=VALUE");
+  command.add_option("--profile", profile, "Effect profile: fx_2_0, fx_4_0, fx_5_0 or auto")
+      ->capture_default_str();
+}
+
+bool FrontEndFlags::to_options(fx::FrontEndOptions& options, std::string& error) const {
+  options.preprocessor.include_dirs = include_dirs;
+  for (const std::string& d : defines) options.preprocessor.defines.push_back(fx::parse_define(d));
+  auto parsed = fx::parse_effect_profile(profile);
+  if (profile != "auto" && !parsed) {
+    error = "unknown --profile '" + profile + "' (use fx_2_0, fx_4_0, fx_5_0 or auto)";
+    return false;
+  }
+  options.check.profile = parsed.value_or(fx::EffectProfile::automatic);
+  return true;
+}
+
+}  // namespace fxkit
+
+int main(int argc, char** argv) {
+  CLI::App app{"fxkit: effect files (.fx) for Vulkan"};
+  app.require_subcommand(1);
+  fxkit::Runner run;
+  fxkit::register_check(app, run);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);
+    return code == 0 ? fxkit::kSuccess : fxkit::kUsageError;
+  }
+  return run ? run() : fxkit::kUsageError;
+}
