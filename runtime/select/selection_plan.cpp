@@ -1,0 +1,264 @@
+// SelectionPlan: compiling candidates into packed entries, and the per-object choice.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "fx/select/selection.h"
+
+namespace fx {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr int kMaxSchemes = 63;  // bit 63 stands for "a scheme no technique declares"
+constexpr uint64_t kUnknownSchemeBit = uint64_t(1) << 63;
+
+std::vector<std::string> split_list(std::string_view list) {
+  std::vector<std::string> out;
+  size_t i = 0;
+  while (i < list.size()) {
+    size_t start = list.find_first_not_of(" \t,;|", i);
+    if (start == std::string_view::npos) break;
+    size_t end = list.find_first_of(" \t,;|", start);
+    if (end == std::string_view::npos) end = list.size();
+    out.emplace_back(list.substr(start, end - start));
+    i = end;
+  }
+  return out;
+}
+
+// Widens [lo, hi) by `fraction` of each edge's magnitude (an infinite edge stays put).
+void widen(float lo, float hi, float fraction, float& lo_out, float& hi_out) {
+  lo_out = std::isfinite(lo) ? lo - std::fabs(lo) * fraction : lo;
+  hi_out = std::isfinite(hi) ? hi + std::fabs(hi) * fraction : hi;
+}
+
+}  // namespace
+
+SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidates,
+                                   DiagnosticSink& sink, const SelectionPlanOptions& options) {
+  SelectionPlan plan;
+  const size_t n = candidates.size();
+  plan.entries_.reserve(n);
+  uint64_t key = 1469598103934665603ull;  // FNV-1a over the names: stale states are ignored
+  for (size_t i = 0; i < n; ++i) {
+    const TechniqueCandidate& c = candidates[i];
+    const AnnotationMap& a = c.annotations;
+    auto bad_type = [&](std::string_view ann, const char* want) {
+      sink.warning("selection-annotation", c.range,
+                   "annotation '" + std::string(ann) + "' of technique '" + c.name + "' must be " +
+                       want + "; ignored");
+    };
+    auto number = [&](std::initializer_list<std::string_view> names, float fallback) {
+      for (std::string_view ann : names) {
+        if (!a.find(ann)) continue;
+        if (auto v = a.number(ann)) return *v;
+        bad_type(ann, "a number");
+      }
+      return fallback;
+    };
+
+    Entry e{};
+    e.dist_min = number({"MinDistance", "LodMin"}, -kInf);
+    e.dist_max = number({"MaxDistance", "LodMax"}, kInf);
+    e.size_min = number({"MinScreenSize"}, -kInf);
+    e.size_max = number({"MaxScreenSize"}, kInf);
+    for (auto [lo, hi, what] : {std::tuple{e.dist_min, e.dist_max, "distance"},
+                                std::tuple{e.size_min, e.size_max, "screen-size"}}) {
+      if (lo >= hi)
+        sink.error("selection-annotation", c.range,
+                   std::string(what) + " band of technique '" + c.name +
+                       "' is empty (minimum not below maximum); it never matches");
+    }
+    float h = number({"Hysteresis"}, options.hysteresis);
+    if (!(h >= 0.f)) h = 0.f;
+    widen(e.dist_min, e.dist_max, h, e.dist_min_h, e.dist_max_h);
+    widen(e.size_min, e.size_max, h, e.size_min_h, e.size_max_h);
+    e.error = number({"MaxError"}, 0.f);
+    if (!a.find("MaxError")) e.error = number({"MaxErrorAbs"}, 0.f) * 255.f;  // absolute -> LSB
+    e.cost_ms = number({"CostMs"}, 0.f);
+    e.cost_ns_per_pixel = number({"CostNsPerPixel"}, 0.f);
+    e.priority = 0;
+    if (a.find("Priority")) {
+      if (auto p = a.integer("Priority")) e.priority = *p;
+      else bad_type("Priority", "an int");
+    }
+    e.valid = c.valid;
+    e.fallback = no_technique;
+
+    std::vector<std::string> schemes;
+    if (const AnnotationValue* s = a.find("Scheme")) {
+      if (const auto* text = std::get_if<std::string>(s)) schemes = split_list(*text);
+      else bad_type("Scheme", "a string");
+    }
+    e.scheme_mask = 0;
+    for (const auto& s : schemes) {
+      auto it = std::find(plan.scheme_names_.begin(), plan.scheme_names_.end(), s);
+      size_t bit = size_t(it - plan.scheme_names_.begin());
+      if (it == plan.scheme_names_.end()) {
+        if (plan.scheme_names_.size() == kMaxSchemes) {
+          sink.error("selection-annotation", c.range,
+                     "more than 63 distinct schemes; scheme '" + s + "' ignored");
+          continue;
+        }
+        plan.scheme_names_.push_back(s);
+      }
+      e.scheme_mask |= uint64_t(1) << bit;
+    }
+
+    std::string invalid;
+    for (const auto& r : c.rejection_reasons) invalid += (invalid.empty() ? "" : "; ") + r;
+    plan.entries_.push_back(e);
+    plan.names_.push_back(c.name);
+    plan.schemes_.push_back(std::move(schemes));
+    plan.invalid_reasons_.push_back(std::move(invalid));
+    for (char ch : c.name + '\n') key = (key ^ uint8_t(ch)) * 1099511628211ull;
+  }
+  plan.key_ = key ? key : 1;
+
+  // Fallback names resolve after every candidate is known (a fallback may come later).
+  std::vector<std::string_view> name_views(plan.names_.begin(), plan.names_.end());
+  auto resolve = [&](std::string_view target, const TechniqueCandidate* from) -> uint32_t {
+    if (auto idx = plan.index_of(target)) return *idx;
+    std::string message = "fallback technique '" + std::string(target) + "' does not exist";
+    if (from) message = "technique '" + from->name + "': " + message;
+    std::string guess = closest_match(target, name_views);
+    if (!guess.empty()) message += "; did you mean '" + guess + "'?";
+    sink.error("unknown-fallback", from ? from->range : SourceRange{}, message);
+    return no_technique;
+  };
+  for (size_t i = 0; i < n; ++i) {
+    const AnnotationValue* f = candidates[i].annotations.find("Fallback");
+    if (!f) continue;
+    if (const auto* target = std::get_if<std::string>(f))
+      plan.entries_[i].fallback = resolve(*target, &candidates[i]);
+    else
+      sink.warning("selection-annotation", candidates[i].range,
+                   "annotation 'Fallback' of technique '" + candidates[i].name + "' must be a string; ignored");
+  }
+  if (!options.effect_fallback.empty()) plan.effect_fallback_ = resolve(options.effect_fallback, nullptr);
+
+  // Cycle detection: walk each chain once, colouring nodes; a link into a node on the
+  // current walk closes a cycle and is cut.
+  std::vector<uint8_t> colour(n, 0);  // 0 new, 1 on the current walk, 2 finished
+  for (size_t start = 0; start < n; ++start) {
+    std::vector<uint32_t> walk;
+    uint32_t i = uint32_t(start);
+    while (i != no_technique && colour[i] == 0) {
+      colour[i] = 1;
+      walk.push_back(i);
+      uint32_t next = plan.entries_[i].fallback;
+      if (next != no_technique && colour[next] == 1) {
+        std::string path;
+        auto from = std::find(walk.begin(), walk.end(), next);
+        for (auto it = from; it != walk.end(); ++it) path += "'" + plan.names_[*it] + "' -> ";
+        path += "'" + plan.names_[next] + "'";
+        sink.error("fallback-cycle", candidates[i].range,
+                   "fallback cycle " + path + "; the link from '" + plan.names_[i] + "' is ignored");
+        plan.entries_[i].fallback = no_technique;
+        next = no_technique;
+      }
+      i = next;
+    }
+    for (uint32_t w : walk) colour[w] = 2;
+  }
+
+  plan.order_.resize(n);
+  for (size_t i = 0; i < n; ++i) plan.order_[i] = uint32_t(i);
+  std::stable_sort(plan.order_.begin(), plan.order_.end(), [&](uint32_t x, uint32_t y) {
+    const Entry &a = plan.entries_[x], &b = plan.entries_[y];
+    if (a.error != b.error) return a.error < b.error;
+    return a.priority > b.priority;
+  });
+  return plan;
+}
+
+SelectionQuery SelectionPlan::query(const SelectionCriteria& c) const {
+  SelectionQuery q;
+  q.distance = c.distance;
+  q.screen_size = c.screen_size;
+  q.pixels = c.pixels;
+  q.cost_budget_ms = c.cost_budget_ms;
+  q.max_error = c.max_error;
+  q.scheme = c.scheme;
+  if (!c.scheme.empty()) {
+    auto it = std::find(scheme_names_.begin(), scheme_names_.end(), c.scheme);
+    q.scheme_bit = it == scheme_names_.end() ? kUnknownSchemeBit
+                                             : uint64_t(1) << (it - scheme_names_.begin());
+  }
+  return q;
+}
+
+uint8_t SelectionPlan::failures(const Entry& e, const SelectionQuery& q, bool widened) const {
+  uint8_t f = 0;
+  if (!e.valid) f |= fail_invalid;
+  if (q.scheme_bit && e.scheme_mask && !(e.scheme_mask & q.scheme_bit)) f |= fail_scheme;
+  // Written as "outside" tests so an unknown (NaN) distance passes every band.
+  float dmin = widened ? e.dist_min_h : e.dist_min, dmax = widened ? e.dist_max_h : e.dist_max;
+  if (q.distance < dmin || q.distance >= dmax) f |= fail_distance;
+  if (q.screen_size >= 0.f) {
+    float smin = widened ? e.size_min_h : e.size_min, smax = widened ? e.size_max_h : e.size_max;
+    if (q.screen_size < smin || q.screen_size >= smax) f |= fail_screen;
+  }
+  if (e.error > q.max_error) f |= fail_error;
+  if (e.cost_ms + e.cost_ns_per_pixel * q.pixels * 1e-6f > q.cost_budget_ms) f |= fail_cost;
+  return f;
+}
+
+uint32_t SelectionPlan::choose(const SelectionQuery& q, uint32_t last, SelectionRoute* route,
+                               uint32_t* chain_start) const {
+  for (uint32_t i : order_) {
+    if (failures(entries_[i], q, i == last) == 0) {
+      *route = SelectionRoute::direct;
+      return i;
+    }
+  }
+  // Nothing survived: follow the explicit chain of the best technique the application
+  // asked for (right scheme and band) that the device or a budget ruled out.
+  constexpr uint8_t kIntent = fail_scheme | fail_distance | fail_screen;
+  for (uint32_t i : order_) {
+    if (failures(entries_[i], q, i == last) & kIntent) continue;
+    uint32_t t = entries_[i].fallback;
+    for (size_t steps = 0; t != no_technique && steps < entries_.size(); ++steps) {
+      if (entries_[t].valid) {
+        *route = SelectionRoute::fallback_chain;
+        *chain_start = i;
+        return t;
+      }
+      t = entries_[t].fallback;
+    }
+  }
+  if (effect_fallback_ != no_technique && entries_[effect_fallback_].valid) {
+    *route = SelectionRoute::effect_fallback;
+    return effect_fallback_;
+  }
+  *route = SelectionRoute::none;
+  return no_technique;
+}
+
+uint32_t SelectionPlan::select(const SelectionQuery& q, SelectionState& state) const {
+  uint32_t last = state.plan_key == key_ ? state.last : no_technique;
+  SelectionRoute route;
+  uint32_t start = no_technique;
+  uint32_t chosen = choose(q, last, &route, &start);
+  state.last = chosen;
+  state.plan_key = key_;
+  return chosen;
+}
+
+uint32_t SelectionPlan::select(const SelectionQuery& q) const {
+  SelectionRoute route;
+  uint32_t start = no_technique;
+  return choose(q, no_technique, &route, &start);
+}
+
+std::string_view SelectionPlan::name(uint32_t index) const {
+  return index < names_.size() ? std::string_view(names_[index]) : std::string_view();
+}
+
+std::optional<uint32_t> SelectionPlan::index_of(std::string_view name) const {
+  for (size_t i = 0; i < names_.size(); ++i)
+    if (names_[i] == name) return uint32_t(i);
+  return std::nullopt;
+}
+
+}  // namespace fx

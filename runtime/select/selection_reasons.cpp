@@ -1,0 +1,111 @@
+// SelectionPlan::explain: the same choice as select(), with a sentence per candidate.
+// Kept apart from selection_plan.cpp because it allocates and the hot path must not.
+#include <cmath>
+#include <cstdio>
+
+#include "fx/select/selection.h"
+
+namespace fx {
+namespace {
+
+// Band edges and positions: "20", "0.5", "inf".
+std::string number(float x) {
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", double(x));
+  return buf;
+}
+
+// Milliseconds keep one decimal when that is exact enough ("1.0 ms", "1.8 ms").
+std::string millis(float x) {
+  if (std::isinf(x)) return "inf";
+  char buf[32];
+  double tenths = double(x) * 10.0;
+  if (std::fabs(tenths - std::round(tenths)) < 1e-4)
+    std::snprintf(buf, sizeof buf, "%.1f", double(x));
+  else
+    std::snprintf(buf, sizeof buf, "%.3g", double(x));
+  return buf;
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+}  // namespace
+
+const char* to_string(SelectionRoute r) {
+  switch (r) {
+    case SelectionRoute::direct: return "direct";
+    case SelectionRoute::fallback_chain: return "fallback chain";
+    case SelectionRoute::effect_fallback: return "effect fallback";
+    case SelectionRoute::none: return "none";
+  }
+  return "none";
+}
+
+std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool widened,
+                                  uint32_t chosen) const {
+  const Entry& e = entries_[index];
+  uint8_t f = failures(e, q, widened);
+  std::string suffix = widened ? " (band widened by hysteresis)" : "";
+  if (f & fail_invalid)
+    return invalid_reasons_[index].empty() ? "invalid" : "invalid: " + invalid_reasons_[index];
+  if (f & fail_scheme)
+    return "scheme '" + join(schemes_[index]) + "' not in '" + std::string(q.scheme) + "'";
+  if (f & fail_distance) {
+    float lo = widened ? e.dist_min_h : e.dist_min, hi = widened ? e.dist_max_h : e.dist_max;
+    return "outside distance band [" + number(lo) + ", " + number(hi) + ") at " +
+           number(q.distance) + suffix;
+  }
+  if (f & fail_screen) {
+    float lo = widened ? e.size_min_h : e.size_min, hi = widened ? e.size_max_h : e.size_max;
+    return "outside screen-size band [" + number(lo) + ", " + number(hi) + ") at " +
+           number(q.screen_size) + suffix;
+  }
+  if (f & fail_error)
+    return "error " + number(e.error) + " LSB over limit " + number(q.max_error) + " LSB";
+  if (f & fail_cost) {
+    float cost = e.cost_ms + e.cost_ns_per_pixel * q.pixels * 1e-6f;
+    return "cost " + millis(cost) + " ms over budget " + millis(q.cost_budget_ms) + " ms";
+  }
+  if (chosen == no_technique) return "passed";
+  // It passed every filter: it lost on rank to the chosen technique.
+  const Entry& c = entries_[chosen];
+  std::string why;
+  if (c.error != e.error)
+    why = "lower error " + number(c.error) + " vs " + number(e.error) + " LSB";
+  else if (c.priority != e.priority)
+    why = "priority " + std::to_string(c.priority) + " vs " + std::to_string(e.priority);
+  else
+    why = "declared earlier";
+  return "ranks below '" + names_[chosen] + "' (" + why + ")";
+}
+
+SelectionResult SelectionPlan::explain(const SelectionQuery& q, const SelectionState* state) const {
+  SelectionResult result;
+  uint32_t last = state && state->plan_key == key_ ? state->last : no_technique;
+  uint32_t start = no_technique;
+  result.chosen = choose(q, last, &result.route, &start);
+  if (result.chosen != no_technique && result.chosen == last &&
+      failures(entries_[last], q, false) != 0)
+    result.kept_by_hysteresis = true;
+  if (result.route == SelectionRoute::fallback_chain) {
+    for (uint32_t t = start; t != no_technique && result.fallback_path.size() <= entries_.size();
+         t = entries_[t].fallback) {
+      result.fallback_path.push_back(t);
+      if (t == result.chosen) break;
+    }
+  }
+  result.reasons.resize(entries_.size());
+  for (uint32_t i = 0; i < entries_.size(); ++i) {
+    if (i == result.chosen) continue;
+    result.reasons[i] = reason(i, q, i == last, result.chosen);
+    if (i == start) result.reasons[i] += "; fell back to '" + names_[result.chosen] + "'";
+  }
+  return result;
+}
+
+}  // namespace fx
