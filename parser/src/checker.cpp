@@ -1,0 +1,401 @@
+// The checker's driver: global symbols and duplicate definitions, functions, annotations
+// and parameter initializers, techniques and passes, and the effect-profile rules.
+#include "fx/checker.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "checker_internal.h"
+
+namespace fx {
+namespace check {
+namespace {
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// Components of a numeric type name (`float3` 3, `float4x4` 16, `int` 1), or 0 when the
+// type is not numeric (string, texture, struct names).
+int numeric_components(std::string_view type) {
+  static constexpr std::string_view kScalars[] = {
+      "bool", "int", "uint", "dword", "half", "float", "double", "min16float", "min10float",
+      "min16int", "min12int", "min16uint"};
+  std::string t = lower(type);
+  for (std::string_view scalar : kScalars) {
+    if (t.compare(0, scalar.size(), scalar) != 0) continue;
+    std::string_view rest = std::string_view(t).substr(scalar.size());
+    if (rest.empty()) return 1;
+    if (rest.size() == 1 && rest[0] >= '1' && rest[0] <= '4') return rest[0] - '0';
+    if (rest.size() == 3 && rest[1] == 'x' && rest[0] >= '1' && rest[0] <= '4' &&
+        rest[2] >= '1' && rest[2] <= '4')
+      return (rest[0] - '0') * (rest[2] - '0');
+  }
+  return 0;
+}
+
+// Leaves of a (possibly nested) initializer list; nullopt if any is not a literal.
+std::optional<size_t> literal_leaves(const ast::Expr& e) {
+  if (e.kind != ast::ExprKind::init_list) {
+    bool literal = e.kind == ast::ExprKind::int_literal ||
+                   e.kind == ast::ExprKind::float_literal ||
+                   e.kind == ast::ExprKind::bool_literal ||
+                   (e.kind == ast::ExprKind::unary && e.args.size() == 1 && e.args[0] &&
+                    (e.args[0]->kind == ast::ExprKind::int_literal ||
+                     e.args[0]->kind == ast::ExprKind::float_literal));
+    return literal ? std::optional<size_t>(1) : std::nullopt;
+  }
+  size_t n = 0;
+  for (const ast::ExprPtr& a : e.args) {
+    if (!a) return std::nullopt;
+    std::optional<size_t> k = literal_leaves(*a);
+    if (!k) return std::nullopt;
+    n += *k;
+  }
+  return n;
+}
+
+bool contains_string(const ast::Expr& e) {
+  if (e.kind == ast::ExprKind::string_literal) return true;
+  if (e.kind != ast::ExprKind::init_list) return false;
+  return std::any_of(e.args.begin(), e.args.end(),
+                     [](const ast::ExprPtr& a) { return a && contains_string(*a); });
+}
+
+bool only_strings(const ast::Expr& e) {
+  if (e.kind == ast::ExprKind::string_literal) return true;
+  if (e.kind != ast::ExprKind::init_list) return false;
+  return std::all_of(e.args.begin(), e.args.end(),
+                     [](const ast::ExprPtr& a) { return a && only_strings(*a); });
+}
+
+// A function's parameter types as one string, to tell overloads from redefinitions.
+std::string signature(const ast::Function& f) {
+  std::string s;
+  for (const ast::Variable& p : f.params) {
+    s += p.type.name;
+    if (!p.type.template_arg.empty()) s += "<" + p.type.template_arg + ">";
+    s.append(p.array_dims.size(), '[');
+    s += ',';
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string quote(std::string_view text) { return "'" + std::string(text) + "'"; }
+
+bool iequals(std::string_view a, std::string_view b) {
+  return a.size() == b.size() &&
+         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) ==
+                  std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
+Checker::Checker(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& diags,
+                 const CheckOptions& options)
+    : effect_(effect), sm_(sm), diags_(diags), options_(options) {
+  profile_ = options.profile == EffectProfile::automatic ? infer_profile(effect) : options.profile;
+}
+
+void Checker::run() {
+  collect_symbols();
+  check_functions();
+  check_profile_rules();
+  std::unordered_map<std::string, SourceRange> techniques, groups;
+  auto technique = [&](const ast::Technique& t,
+                       std::unordered_map<std::string, SourceRange>& names) {
+    if (!t.name.empty()) {
+      auto [it, fresh] = names.emplace(t.name, t.name_range);
+      if (!fresh) report_duplicate("technique", t.name, t.name_range, it->second);
+    }
+    check_technique(t);
+  };
+  for (const ast::Decl& d : effect_.decls) {
+    switch (d.kind) {
+      case ast::DeclKind::variable: check_variable(*d.variable); break;
+      case ast::DeclKind::constant_buffer:
+        for (const ast::Variable& v : d.constant_buffer->members) check_variable(v);
+        break;
+      case ast::DeclKind::technique: technique(*d.technique, techniques); break;
+      case ast::DeclKind::state_object: {
+        const ast::StateObject& o = *d.state_object;
+        check_annotations(o.annotations);
+        if (std::optional<StateBlock> block = state_object_block(o.kind))
+          check_states(o.states, *block, 10);
+        break;
+      }
+      case ast::DeclKind::group: {
+        const ast::FxGroup& g = *d.group;
+        if (auto [it, fresh] = groups.emplace(g.name, g.name_range); !fresh)
+          report_duplicate("fxgroup", g.name, g.name_range, it->second);
+        check_annotations(g.annotations);
+        std::unordered_map<std::string, SourceRange> in_group;
+        for (const ast::Technique& t : g.techniques) technique(t, in_group);
+        break;
+      }
+      default: break;
+    }
+  }
+}
+
+void Checker::report_duplicate(std::string_view what, const std::string& name, SourceRange range,
+                               SourceRange previous) {
+  Diagnostic& d = diags_.error("duplicate-definition", range,
+                               std::string(what) + " " + quote(name) + " is already defined");
+  if (previous.valid()) d.notes.push_back({previous.begin, "previous definition is here"});
+}
+
+void Checker::define(const std::string& name, SourceRange range, Symbol symbol,
+                     std::string_view what) {
+  if (name.empty()) return;
+  symbol.range = range;
+  auto [it, fresh] = globals_.emplace(name, symbol);
+  if (!fresh) report_duplicate(what, name, range, it->second.range);
+}
+
+void Checker::collect_symbols() {
+  for (const ast::Decl& d : effect_.decls) {
+    switch (d.kind) {
+      case ast::DeclKind::variable:
+        define(d.variable->name, d.variable->name_range,
+               {Symbol::variable, d.variable->type.name, {}}, "parameter");
+        break;
+      case ast::DeclKind::constant_buffer:
+        for (const ast::Variable& v : d.constant_buffer->members)
+          define(v.name, v.name_range, {Symbol::variable, v.type.name, {}}, "parameter");
+        break;
+      case ast::DeclKind::state_object:
+        define(d.state_object->name, d.state_object->name_range,
+               {Symbol::state_object, d.state_object->kind, {}}, "state object");
+        break;
+      case ast::DeclKind::structure:
+        define(d.structure->name, d.structure->name_range, {Symbol::structure, {}, {}}, "struct");
+        break;
+      case ast::DeclKind::type_alias:
+        define(d.type_alias->name, d.type_alias->range, {Symbol::type_alias, {}, {}}, "typedef");
+        break;
+      case ast::DeclKind::glsl_block:
+        define(d.glsl_block->name, d.glsl_block->name_range, {Symbol::glsl_block, {}, {}},
+               "GLSL block");
+        break;
+      case ast::DeclKind::function:
+        functions_[d.function->name].push_back(d.function.get());
+        break;
+      default: break;
+    }
+  }
+}
+
+void Checker::check_functions() {
+  for (const auto& [name, overloads] : functions_) {
+    if (const Symbol* s = lookup(name)) {
+      report_duplicate("function", name, overloads.front()->name_range, s->range);
+    }
+    // Overloads differ in parameter types; a prototype may precede its definition.
+    std::vector<std::pair<std::string, const ast::Function*>> defined;
+    for (const ast::Function* f : overloads) {
+      if (f->body.empty()) continue;
+      std::string sig = signature(*f);
+      auto prev = std::find_if(defined.begin(), defined.end(),
+                               [&](const auto& p) { return p.first == sig; });
+      if (prev != defined.end()) {
+        report_duplicate("function", name, f->name_range, prev->second->name_range);
+      } else {
+        defined.emplace_back(std::move(sig), f);
+      }
+    }
+  }
+}
+
+void Checker::check_profile_rules() {
+  size_t techniques = 0;
+  auto require = [&](EffectProfile needed, SourceRange range, std::string_view what) {
+    if (profile_ >= needed) return;
+    diags_.error("profile-mismatch", range,
+                 std::string(what) + " needs effect profile " + std::string(to_string(needed)) +
+                     " or later; the effect is " + std::string(to_string(profile_)));
+  };
+  auto technique = [&](const ast::Technique& t) {
+    ++techniques;
+    SourceRange at = t.name_range.valid() ? t.name_range : t.range;
+    if (t.version == 11) require(EffectProfile::fx_5_0, at, "technique11");
+    if (t.version == 10) require(EffectProfile::fx_4_0, at, "technique10");
+    if (t.version == 9 && profile_ >= EffectProfile::fx_4_0)
+      diags_.warning("d3d9-technique", at,
+                     "a Direct3D 9 'technique' in an " + std::string(to_string(profile_)) +
+                         " effect; use technique" +
+                         (profile_ == EffectProfile::fx_5_0 ? "11" : "10"));
+  };
+  for (const ast::Decl& d : effect_.decls) {
+    switch (d.kind) {
+      case ast::DeclKind::technique: technique(*d.technique); break;
+      case ast::DeclKind::group:
+        require(EffectProfile::fx_5_0, d.group->name_range, "fxgroup");
+        for (const ast::Technique& t : d.group->techniques) technique(t);
+        break;
+      case ast::DeclKind::state_object:
+        require(EffectProfile::fx_4_0, d.state_object->name_range.valid()
+                                           ? d.state_object->name_range
+                                           : d.state_object->range,
+                d.state_object->kind);
+        break;
+      case ast::DeclKind::constant_buffer:
+        require(EffectProfile::fx_4_0, d.constant_buffer->range,
+                d.constant_buffer->texture_buffer ? "tbuffer" : "cbuffer");
+        break;
+      default: break;
+    }
+  }
+  if (techniques == 0 && options_.require_technique) {
+    SourceRange at;
+    if (!effect_.tokens.empty()) at = effect_.tokens.front().range();
+    diags_.error("no-technique", at,
+                 "the effect defines no technique, so it has nothing to apply");
+  }
+}
+
+void Checker::check_value_type(std::string_view type_name, size_t array_dims,
+                               const ast::Expr& value, std::string_view what,
+                               std::string_view name, std::string_view id) {
+  std::string subject = std::string(what) + " " + quote(name);
+  if (iequals(type_name, "string")) {
+    if (!only_strings(value))
+      diags_.error(std::string(id), value.range, subject + " is a string; its value is not");
+    return;
+  }
+  int components = numeric_components(type_name);
+  if (components == 0) return;
+  if (contains_string(value)) {
+    diags_.error(std::string(id), value.range,
+                 subject + " is " + quote(type_name) + "; its value is a string");
+    return;
+  }
+  if (array_dims != 0 || value.kind != ast::ExprKind::init_list) return;
+  std::optional<size_t> leaves = literal_leaves(value);
+  if (leaves && *leaves != static_cast<size_t>(components))
+    diags_.error(std::string(id), value.range,
+                 subject + " is " + quote(type_name) + " with " + std::to_string(components) +
+                     " component" + (components == 1 ? "" : "s") + "; its value has " +
+                     std::to_string(*leaves));
+}
+
+void Checker::check_annotations(const std::vector<ast::Annotation>& annotations) {
+  std::unordered_map<std::string, SourceRange> seen;
+  for (const ast::Annotation& a : annotations) {
+    if (auto [it, fresh] = seen.emplace(a.name, a.range); !fresh)
+      report_duplicate("annotation", a.name, a.range, it->second);
+    if (a.value)
+      check_value_type(a.type.name, a.array_dims.size(), *a.value, "annotation", a.name,
+                       "annotation-type-mismatch");
+  }
+}
+
+void Checker::check_variable(const ast::Variable& v) {
+  check_annotations(v.annotations);
+  if (!v.initializer) return;
+  const ast::Expr& init = *v.initializer;
+  if (init.kind == ast::ExprKind::state_block) {
+    // `sampler_state { }` initializes samplers; `stateblock_state { }` holds pass states.
+    check_states(init.states,
+                 iequals(init.text, "stateblock_state") ? StateBlock::pass
+                                                        : StateBlock::sampler_state,
+                 9);
+    return;
+  }
+  check_value_type(v.type.name, v.array_dims.size(), init, "parameter", v.name,
+                   "parameter-type-mismatch");
+}
+
+void Checker::check_technique(const ast::Technique& t) {
+  check_annotations(t.annotations);
+  std::unordered_map<std::string, SourceRange> passes;
+  for (const ast::Pass& p : t.passes) {
+    if (!p.name.empty()) {
+      if (auto [it, fresh] = passes.emplace(p.name, p.name_range); !fresh)
+        report_duplicate("pass", p.name, p.name_range, it->second);
+    }
+    check_annotations(p.annotations);
+    check_states(p.states, StateBlock::pass, t.version);
+  }
+}
+
+const Symbol* Checker::lookup(std::string_view name) const {
+  auto it = globals_.find(std::string(name));
+  return it == globals_.end() ? nullptr : &it->second;
+}
+
+std::vector<std::string_view> Checker::names_of(std::initializer_list<Symbol::Kind> kinds) const {
+  std::vector<std::string_view> names;
+  for (const auto& [name, s] : globals_)
+    if (std::find(kinds.begin(), kinds.end(), s.kind) != kinds.end()) names.push_back(name);
+  if (std::find(kinds.begin(), kinds.end(), Symbol::function) != kinds.end())
+    for (const auto& [name, fs] : functions_) names.push_back(name);
+  // Hash order would make did-you-mean ties depend on the standard library.
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace check
+
+std::string_view to_string(EffectProfile profile) {
+  switch (profile) {
+    case EffectProfile::automatic: return "auto";
+    case EffectProfile::fx_2_0: return "fx_2_0";
+    case EffectProfile::fx_4_0: return "fx_4_0";
+    case EffectProfile::fx_5_0: return "fx_5_0";
+  }
+  return "auto";
+}
+
+std::optional<EffectProfile> parse_effect_profile(std::string_view text) {
+  std::string t;
+  for (char c : text) t.push_back(c == '.' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+  if (t == "fx_2_0") return EffectProfile::fx_2_0;
+  if (t == "fx_4_0" || t == "fx_4_1") return EffectProfile::fx_4_0;
+  if (t == "fx_5_0") return EffectProfile::fx_5_0;
+  if (t == "auto") return EffectProfile::automatic;
+  return std::nullopt;
+}
+
+EffectProfile infer_profile(const ast::Effect& effect) {
+  if (!effect.profile_header.empty())
+    if (std::optional<EffectProfile> p = parse_effect_profile(effect.profile_header);
+        p && *p != EffectProfile::automatic)
+      return *p;
+  EffectProfile needed = EffectProfile::fx_2_0;
+  auto need = [&](EffectProfile p) { needed = std::max(needed, p); };
+  auto technique = [&](const ast::Technique& t) {
+    if (t.version == 11) need(EffectProfile::fx_5_0);
+    if (t.version == 10) need(EffectProfile::fx_4_0);
+    for (const ast::Pass& p : t.passes)
+      for (const ast::StateAssignment& s : p.states)
+        if (const StateInfo* info = find_state(s.name, StateBlock::pass))
+          need(info->api == StateApi::d3d11   ? EffectProfile::fx_5_0
+               : info->api == StateApi::d3d10 ? EffectProfile::fx_4_0
+                                              : EffectProfile::fx_2_0);
+  };
+  for (const ast::Decl& d : effect.decls) {
+    switch (d.kind) {
+      case ast::DeclKind::technique: technique(*d.technique); break;
+      case ast::DeclKind::group:
+        need(EffectProfile::fx_5_0);
+        for (const ast::Technique& t : d.group->techniques) technique(t);
+        break;
+      case ast::DeclKind::state_object:
+      case ast::DeclKind::constant_buffer: need(EffectProfile::fx_4_0); break;
+      default: break;
+    }
+  }
+  return needed;
+}
+
+void check_effect(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& diags,
+                  const CheckOptions& options) {
+  check::Checker(effect, sm, diags, options).run();
+}
+
+}  // namespace fx

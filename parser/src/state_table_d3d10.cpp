@@ -36,7 +36,8 @@ constexpr StateInfo raster(std::string_view name, T type, const EnumSet* enums =
 constexpr StateInfo sampler(std::string_view name, T type, const EnumSet* enums = nullptr) {
   return field(name, StateBlock::sampler_object, type, A::sampler, enums);
 }
-// A pass call: `SetPixelShader(shader)`, `SetBlendState(state, factor, mask)`.
+// A pass call: `SetPixelShader(shader)`, `SetBlendState(state, factor, mask)`; with no
+// arguments, a D3D10 pass assignment (`BlendState = b;`).
 constexpr StateInfo call(std::string_view name, T type, A area, uint8_t args,
                          StateApi api = StateApi::d3d10, std::string_view object_kind = {}) {
   StateInfo s = field(name, StateBlock::pass, type, area);
@@ -112,6 +113,19 @@ std::span<const StateInfo> d3d10_states() {
            "DepthStencilState"),
       call("SetRasterizerState", T::state_object, A::rasterization, 1, StateApi::d3d10,
            "RasterizerState"),
+      // FX10/FX11 also accept the assignment form of the pass calls (EffectStates11.h).
+      call("GeometryShader", T::shader, A::shader_stage, 0),
+      call("HullShader", T::shader, A::shader_stage, 0, StateApi::d3d11),
+      call("DomainShader", T::shader, A::shader_stage, 0, StateApi::d3d11),
+      call("ComputeShader", T::shader, A::shader_stage, 0, StateApi::d3d11),
+      call("BlendState", T::state_object, A::color_blend, 0, StateApi::d3d10, "BlendState"),
+      call("DepthStencilState", T::state_object, A::depth_stencil, 0, StateApi::d3d10,
+           "DepthStencilState"),
+      call("RasterizerState", T::state_object, A::rasterization, 0, StateApi::d3d10,
+           "RasterizerState"),
+      call("AB_BlendFactor", T::float4, A::color_blend, 0),
+      call("AB_SampleMask", T::integer, A::multisample, 0),
+      call("DS_StencilRef", T::integer, A::depth_stencil, 0),
   };
   return rows;
 }

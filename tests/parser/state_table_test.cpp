@@ -185,7 +185,15 @@ TEST(StateTable, DocIsCurrent) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
-  EXPECT_EQ(text.str(), expected) << "docs/states.md is stale; rerun with FXKIT_UPDATE_DOCS=1";
+  // Report the first differing line, not two copies of the whole document.
+  std::istringstream have(text.str()), want(expected);
+  std::string a, b;
+  for (int line = 1; std::getline(want, b); ++line) {
+    bool more = static_cast<bool>(std::getline(have, a));
+    ASSERT_TRUE(more && a == b) << "docs/states.md:" << line << " is stale (expected '" << b
+                                << "'); rerun with FXKIT_UPDATE_DOCS=1";
+  }
+  EXPECT_FALSE(std::getline(have, a)) << "docs/states.md has extra lines";
 }
 
 }  // namespace

@@ -1,0 +1,82 @@
+// The checker's shared state: a symbol table of the effect's global names and the checks
+// split over checker.cpp (symbols, duplicates, annotations, profile rules) and
+// checker_states.cpp (state assignments against the state table). Private to fxkit_parser.
+#pragma once
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "fx/ast.h"
+#include "fx/checker.h"
+#include "fx/state_table.h"
+
+namespace fx::check {
+
+// A global name of the effect.
+struct Symbol {
+  enum Kind : uint8_t { variable, state_object, structure, type_alias, glsl_block, function };
+  Kind kind = variable;
+  std::string_view type;  // variable: its type name; state_object: its kind
+  SourceRange range;      // the name, for "previous definition" notes
+};
+
+// 'text' for messages.
+std::string quote(std::string_view text);
+bool iequals(std::string_view a, std::string_view b);
+// The value of an integer-valued literal expression (`3`, `-1`, `1 << 4`, `TRUE`), if any.
+std::optional<int64_t> literal_int(const ast::Expr& e);
+
+class Checker {
+ public:
+  Checker(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& diags,
+          const CheckOptions& options);
+  void run();
+
+ private:
+  // --- checker.cpp ---
+  void collect_symbols();
+  void define(const std::string& name, SourceRange range, Symbol symbol, std::string_view what);
+  void check_functions();
+  void check_profile_rules();
+  void check_annotations(const std::vector<ast::Annotation>& annotations);
+  void check_variable(const ast::Variable& v);
+  void check_technique(const ast::Technique& t);
+  void check_value_type(std::string_view type_name, size_t array_dims, const ast::Expr& value,
+                        std::string_view what, std::string_view name, std::string_view id);
+  void report_duplicate(std::string_view what, const std::string& name, SourceRange range,
+                        SourceRange previous);
+
+  // --- checker_states.cpp ---
+  void check_states(const std::vector<ast::StateAssignment>& states, StateBlock block,
+                    int technique_version);
+  void check_state(const ast::StateAssignment& a, StateBlock block, int technique_version,
+                   std::map<std::pair<const StateInfo*, int64_t>, SourceRange>& seen);
+  void check_call_args(const StateInfo& info, const ast::StateAssignment& a);
+  void check_value(const StateInfo& info, const ast::Expr& value);
+  void check_leaf(const StateInfo& info, const ast::Expr& value);
+  void check_name(const StateInfo& info, const ast::Expr& value);
+  void check_shader(const StateInfo& info, const ast::Expr& value);
+  void check_compile(const StateInfo& info, std::string_view profile, SourceRange profile_range,
+                     std::string_view function, SourceRange range);
+  void check_symbol_type(const StateInfo& info, const Symbol& symbol, const ast::Expr& value);
+  void type_mismatch(const StateInfo& info, const ast::Expr& value, std::string_view found);
+  void undefined(std::string_view what, const std::string& name, SourceRange range,
+                 const std::vector<std::string_view>& candidates);
+  bool profile_allows(StateApi api) const;
+
+  const Symbol* lookup(std::string_view name) const;
+  std::vector<std::string_view> names_of(std::initializer_list<Symbol::Kind> kinds) const;
+
+  const ast::Effect& effect_;
+  const SourceManager& sm_;
+  DiagnosticSink& diags_;
+  CheckOptions options_;
+  EffectProfile profile_ = EffectProfile::fx_2_0;
+  std::unordered_map<std::string, Symbol> globals_;
+  std::unordered_map<std::string, std::vector<const ast::Function*>> functions_;
+};
+
+}  // namespace fx::check
