@@ -1,0 +1,91 @@
+// fx::vk::RenderTarget: an offscreen color attachment (+ optional depth) rendered with
+// dynamic rendering (vkCmdBeginRendering) and read back into an fx::Image.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <optional>
+
+#include "fx/image.h"
+#include "fx/vulkan/buffer.h"
+#include "fx/vulkan/context.h"
+#include "fx/vulkan/image.h"
+
+namespace fx::vk {
+
+enum class DepthAttachment {
+  none,
+  d32,    // D32_SFLOAT
+  d24s8,  // D24_UNORM_S8_UINT, falling back to D32_SFLOAT_S8_UINT where D24S8 is missing
+  best,   // Context::best_depth_format()
+};
+
+// What RenderTarget::create makes.
+struct RenderTargetDesc {
+  uint32_t width = 0, height = 0;
+  // Readback supports R8G8B8A8 and B8G8R8A8 (UNORM or SRGB); others render but do not read back.
+  VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM;
+  DepthAttachment depth = DepthAttachment::none;
+  // Extra usage for the color image (SAMPLED to read it in a later pass).
+  VkImageUsageFlags extra_color_usage = 0;
+  const char* debug_name = nullptr;
+};
+
+// How begin() initialises the attachments: a value clears, nullopt keeps the contents.
+struct ClearValues {
+  std::optional<std::array<float, 4>> color = std::array<float, 4>{0, 0, 0, 1};
+  std::optional<float> depth = 1.0f;
+  uint32_t stencil = 0;
+};
+
+// Attachment formats in the shape VkPipelineRenderingCreateInfo wants.
+struct AttachmentFormats {
+  VkFormat color = VK_FORMAT_UNDEFINED;
+  VkFormat depth = VK_FORMAT_UNDEFINED;
+  VkFormat stencil = VK_FORMAT_UNDEFINED;
+  // Chain this into VkGraphicsPipelineCreateInfo::pNext; it points at `color`, so keep this
+  // AttachmentFormats alive until the pipeline is created.
+  VkPipelineRenderingCreateInfo pipeline_info() const;
+};
+
+class RenderTarget {
+ public:
+  // Reports "vk-feature-missing" without dynamic rendering, "vk-format-unsupported" if the
+  // color or depth format cannot be an attachment, or allocation failures.
+  static std::optional<RenderTarget> create(const Context& ctx, const RenderTargetDesc& desc,
+                                            DiagnosticSink& sink);
+
+  uint32_t width() const { return width_; }
+  uint32_t height() const { return height_; }
+  VkExtent2D extent() const { return {width_, height_}; }
+  AttachmentFormats formats() const;
+  Image& color() { return color_; }
+  const Image& color() const { return color_; }
+  // The depth attachment, or null if the target has none.
+  Image* depth() { return depth_ ? &depth_ : nullptr; }
+  const Image* depth() const { return depth_ ? &depth_ : nullptr; }
+  // Full-target viewport (depth 0..1, y down as in Vulkan) and scissor.
+  VkViewport viewport() const;
+  VkRect2D scissor() const;
+
+  // Transitions the attachments and calls vkCmdBeginRendering.
+  void begin(VkCommandBuffer cmd, const ClearValues& clear = {});
+  // Calls vkCmdEndRendering; the color stays in COLOR_ATTACHMENT_OPTIMAL.
+  void end(VkCommandBuffer cmd);
+
+  // Records a copy of the color attachment into the target's host-visible readback buffer.
+  void record_readback(VkCommandBuffer cmd);
+  // The pixels of the last recorded readback, once its submission has completed, as RGBA8
+  // (BGRA formats are swizzled). "vk-readback-format" for formats it cannot convert.
+  std::optional<fx::Image> readback_pixels(DiagnosticSink& sink) const;
+  // record_readback + submit_and_wait + readback_pixels.
+  std::optional<fx::Image> read_color(const Context& ctx, DiagnosticSink& sink);
+
+ private:
+  uint32_t width_ = 0, height_ = 0;
+  Image color_;
+  Image depth_;
+  Buffer readback_;
+};
+
+}  // namespace fx::vk

@@ -1,0 +1,233 @@
+// Feature and property queries, and the matching enable chain.
+#include "device_query.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace fx::vk {
+namespace {
+
+constexpr const char* kPushDescriptor = VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME;
+constexpr const char* kEds2 = VK_EXT_EXTENDED_DYNAMIC_STATE_2_EXTENSION_NAME;
+constexpr const char* kEds3 = VK_EXT_EXTENDED_DYNAMIC_STATE_3_EXTENSION_NAME;
+
+// One table maps the Vulkan EDS3 feature bits to ours, both ways.
+struct Eds3Field {
+  VkBool32 VkPhysicalDeviceExtendedDynamicState3FeaturesEXT::*vk;
+  bool DeviceFeatures::Eds3::*ours;
+};
+#define FXKIT_EDS3(vk_name, our_name)                                                  \
+  Eds3Field {                                                                          \
+    &VkPhysicalDeviceExtendedDynamicState3FeaturesEXT::extendedDynamicState3##vk_name, \
+        &DeviceFeatures::Eds3::our_name                                                \
+  }
+constexpr Eds3Field kEds3Fields[] = {
+    FXKIT_EDS3(TessellationDomainOrigin, tessellation_domain_origin),
+    FXKIT_EDS3(DepthClampEnable, depth_clamp_enable),
+    FXKIT_EDS3(PolygonMode, polygon_mode),
+    FXKIT_EDS3(RasterizationSamples, rasterization_samples),
+    FXKIT_EDS3(SampleMask, sample_mask),
+    FXKIT_EDS3(AlphaToCoverageEnable, alpha_to_coverage_enable),
+    FXKIT_EDS3(AlphaToOneEnable, alpha_to_one_enable),
+    FXKIT_EDS3(LogicOpEnable, logic_op_enable),
+    FXKIT_EDS3(ColorBlendEnable, color_blend_enable),
+    FXKIT_EDS3(ColorBlendEquation, color_blend_equation),
+    FXKIT_EDS3(ColorWriteMask, color_write_mask),
+    FXKIT_EDS3(RasterizationStream, rasterization_stream),
+    FXKIT_EDS3(ConservativeRasterizationMode, conservative_rasterization_mode),
+    FXKIT_EDS3(ExtraPrimitiveOverestimationSize, extra_primitive_overestimation_size),
+    FXKIT_EDS3(DepthClipEnable, depth_clip_enable),
+    FXKIT_EDS3(SampleLocationsEnable, sample_locations_enable),
+    FXKIT_EDS3(ColorBlendAdvanced, color_blend_advanced),
+    FXKIT_EDS3(ProvokingVertexMode, provoking_vertex_mode),
+    FXKIT_EDS3(LineRasterizationMode, line_rasterization_mode),
+    FXKIT_EDS3(LineStippleEnable, line_stipple_enable),
+    FXKIT_EDS3(DepthClipNegativeOneToOne, depth_clip_negative_one_to_one),
+    FXKIT_EDS3(ViewportWScalingEnable, viewport_w_scaling_enable),
+    FXKIT_EDS3(ViewportSwizzle, viewport_swizzle),
+    FXKIT_EDS3(CoverageToColorEnable, coverage_to_color_enable),
+    FXKIT_EDS3(CoverageToColorLocation, coverage_to_color_location),
+    FXKIT_EDS3(CoverageModulationMode, coverage_modulation_mode),
+    FXKIT_EDS3(CoverageModulationTableEnable, coverage_modulation_table_enable),
+    FXKIT_EDS3(CoverageModulationTable, coverage_modulation_table),
+    FXKIT_EDS3(CoverageReductionMode, coverage_reduction_mode),
+    FXKIT_EDS3(RepresentativeFragmentTestEnable, representative_fragment_test_enable),
+    FXKIT_EDS3(ShadingRateImageEnable, shading_rate_image_enable),
+};
+#undef FXKIT_EDS3
+
+}  // namespace
+
+bool DeviceFeatures::Eds3::any() const {
+  return std::any_of(std::begin(kEds3Fields), std::end(kEds3Fields),
+                     [this](const Eds3Field& f) { return this->*f.ours; });
+}
+
+bool DeviceSupport::has_extension(std::string_view name) const {
+  return std::find(extensions.begin(), extensions.end(), name) != extensions.end();
+}
+
+DeviceSupport query_device(VkPhysicalDevice physical_device, uint32_t index) {
+  DeviceSupport s;
+  uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(physical_device, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> exts(count);
+  vkEnumerateDeviceExtensionProperties(physical_device, nullptr, &count, exts.data());
+  exts.resize(count);
+  for (const auto& e : exts) s.extensions.emplace_back(e.extensionName);
+
+  VkPhysicalDeviceProperties props{};
+  vkGetPhysicalDeviceProperties(physical_device, &props);
+  s.info.name = props.deviceName;
+  s.info.type = props.deviceType;
+  s.info.api_version = props.apiVersion;
+  s.info.driver_version = props.driverVersion;
+  s.info.vendor_id = props.vendorID;
+  s.info.device_id = props.deviceID;
+  s.info.limits = props.limits;
+  s.info.index = index;
+
+  const bool v13 = props.apiVersion >= VK_API_VERSION_1_3;
+  const bool has_push = s.has_extension(kPushDescriptor);
+  const bool has_eds2 = s.has_extension(kEds2);
+  const bool has_eds3 = s.has_extension(kEds3);
+
+  VkPhysicalDeviceVulkan11Properties p11 = structure<VkPhysicalDeviceVulkan11Properties>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_PROPERTIES);
+  VkPhysicalDevicePushDescriptorPropertiesKHR push_props =
+      structure<VkPhysicalDevicePushDescriptorPropertiesKHR>(
+          VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PUSH_DESCRIPTOR_PROPERTIES_KHR);
+  VkPhysicalDeviceProperties2 props2 =
+      structure<VkPhysicalDeviceProperties2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2);
+  if (props.apiVersion >= VK_API_VERSION_1_2) props2.pNext = &p11;  // Vulkan11Properties is 1.2+
+  if (has_push) {
+    push_props.pNext = props2.pNext;
+    props2.pNext = &push_props;
+  }
+  vkGetPhysicalDeviceProperties2(physical_device, &props2);
+  if (props.apiVersion >= VK_API_VERSION_1_2)
+    std::copy(std::begin(p11.deviceUUID), std::end(p11.deviceUUID), s.info.uuid.begin());
+  if (has_push) s.info.push_descriptor_max = push_props.maxPushDescriptors;
+
+  VkPhysicalDeviceVulkan13Features f13 = structure<VkPhysicalDeviceVulkan13Features>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
+  VkPhysicalDeviceExtendedDynamicState2FeaturesEXT f_eds2 =
+      structure<VkPhysicalDeviceExtendedDynamicState2FeaturesEXT>(
+          VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_2_FEATURES_EXT);
+  VkPhysicalDeviceExtendedDynamicState3FeaturesEXT f_eds3 =
+      structure<VkPhysicalDeviceExtendedDynamicState3FeaturesEXT>(
+          VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_3_FEATURES_EXT);
+  VkPhysicalDeviceFeatures2 f2 =
+      structure<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
+  void** tail = &f2.pNext;
+  auto link = [&tail](auto& s) {
+    *tail = &s;
+    tail = &s.pNext;
+  };
+  if (v13) link(f13);
+  if (has_eds2) link(f_eds2);
+  if (has_eds3) link(f_eds3);
+  vkGetPhysicalDeviceFeatures2(physical_device, &f2);
+
+  DeviceFeatures& f = s.features;
+  f.dynamic_rendering = v13 && f13.dynamicRendering;
+  f.synchronization2 = v13 && f13.synchronization2;
+  f.extended_dynamic_state = v13;  // core commands in 1.3, no feature bit
+  f.extended_dynamic_state2 = v13;
+  f.eds2_logic_op = has_eds2 && f_eds2.extendedDynamicState2LogicOp;
+  f.eds2_patch_control_points = has_eds2 && f_eds2.extendedDynamicState2PatchControlPoints;
+  if (has_eds3)
+    for (const Eds3Field& field : kEds3Fields) f.eds3.*field.ours = f_eds3.*field.vk;
+  f.push_descriptor = has_push;
+  f.sampler_anisotropy = f2.features.samplerAnisotropy;
+  f.fill_mode_non_solid = f2.features.fillModeNonSolid;
+  f.depth_clamp = f2.features.depthClamp;
+  f.independent_blend = f2.features.independentBlend;
+  f.geometry_shader = f2.features.geometryShader;
+  f.tessellation_shader = f2.features.tessellationShader;
+  f.texture_compression_bc = f2.features.textureCompressionBC;
+
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_device, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_device, &count, families.data());
+  for (uint32_t i = 0; i < count; ++i) {
+    if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) {
+      s.has_graphics_queue = true;
+      s.graphics_family = i;
+      break;
+    }
+  }
+  return s;
+}
+
+FeatureChain::FeatureChain(const DeviceSupport& supported) {
+  const DeviceFeatures& f = supported.features;
+  enabled = f;
+  VkPhysicalDeviceFeatures& core = head.features;
+  core.samplerAnisotropy = f.sampler_anisotropy;
+  core.fillModeNonSolid = f.fill_mode_non_solid;
+  core.depthClamp = f.depth_clamp;
+  core.independentBlend = f.independent_blend;
+  core.geometryShader = f.geometry_shader;
+  core.tessellationShader = f.tessellation_shader;
+  core.textureCompressionBC = f.texture_compression_bc;
+
+  v13.dynamicRendering = f.dynamic_rendering;
+  v13.synchronization2 = f.synchronization2;
+  head.pNext = &v13;
+  void** tail = &v13.pNext;
+
+  if (f.push_descriptor) extensions.push_back(kPushDescriptor);
+  if (f.eds2_logic_op || f.eds2_patch_control_points) {
+    eds2.extendedDynamicState2 = VK_TRUE;
+    eds2.extendedDynamicState2LogicOp = f.eds2_logic_op;
+    eds2.extendedDynamicState2PatchControlPoints = f.eds2_patch_control_points;
+    extensions.push_back(kEds2);
+    *tail = &eds2;
+    tail = &eds2.pNext;
+  }
+  if (f.eds3.any()) {
+    for (const Eds3Field& field : kEds3Fields) eds3.*field.vk = f.eds3.*field.ours;
+    extensions.push_back(kEds3);
+    *tail = &eds3;
+    tail = &eds3.pNext;
+  }
+}
+
+DeviceFunctions load_device_functions(VkInstance instance, VkDevice device, const DeviceFeatures& f,
+                                      bool debug_utils) {
+  DeviceFunctions fn;
+  auto load = [device](auto& slot, const char* name) {
+    slot = reinterpret_cast<std::remove_reference_t<decltype(slot)>>(
+        vkGetDeviceProcAddr(device, name));
+  };
+  if (f.push_descriptor) load(fn.push_descriptor_set, "vkCmdPushDescriptorSetKHR");
+  if (f.eds2_logic_op) load(fn.set_logic_op, "vkCmdSetLogicOpEXT");
+  if (f.eds2_patch_control_points)
+    load(fn.set_patch_control_points, "vkCmdSetPatchControlPointsEXT");
+  const auto& e = f.eds3;
+  if (e.polygon_mode) load(fn.set_polygon_mode, "vkCmdSetPolygonModeEXT");
+  if (e.depth_clamp_enable) load(fn.set_depth_clamp_enable, "vkCmdSetDepthClampEnableEXT");
+  if (e.rasterization_samples)
+    load(fn.set_rasterization_samples, "vkCmdSetRasterizationSamplesEXT");
+  if (e.sample_mask) load(fn.set_sample_mask, "vkCmdSetSampleMaskEXT");
+  if (e.alpha_to_coverage_enable)
+    load(fn.set_alpha_to_coverage_enable, "vkCmdSetAlphaToCoverageEnableEXT");
+  if (e.alpha_to_one_enable) load(fn.set_alpha_to_one_enable, "vkCmdSetAlphaToOneEnableEXT");
+  if (e.logic_op_enable) load(fn.set_logic_op_enable, "vkCmdSetLogicOpEnableEXT");
+  if (e.color_blend_enable) load(fn.set_color_blend_enable, "vkCmdSetColorBlendEnableEXT");
+  if (e.color_blend_equation) load(fn.set_color_blend_equation, "vkCmdSetColorBlendEquationEXT");
+  if (e.color_write_mask) load(fn.set_color_write_mask, "vkCmdSetColorWriteMaskEXT");
+  if (e.depth_clip_enable) load(fn.set_depth_clip_enable, "vkCmdSetDepthClipEnableEXT");
+  if (e.provoking_vertex_mode) load(fn.set_provoking_vertex_mode, "vkCmdSetProvokingVertexModeEXT");
+  if (e.line_rasterization_mode)
+    load(fn.set_line_rasterization_mode, "vkCmdSetLineRasterizationModeEXT");
+  if (e.tessellation_domain_origin)
+    load(fn.set_tessellation_domain_origin, "vkCmdSetTessellationDomainOriginEXT");
+  if (debug_utils && instance)
+    fn.set_object_name = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+        vkGetInstanceProcAddr(instance, "vkSetDebugUtilsObjectNameEXT"));
+  return fn;
+}
+
+}  // namespace fx::vk
