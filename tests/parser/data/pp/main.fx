@@ -1,0 +1,4 @@
+// Real files for PreprocessorIncludes.RealFilesOnDisk.
+#include "common.fxh"
+#include <lighting.fxh>
+technique Main { }
