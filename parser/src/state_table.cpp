@@ -2,7 +2,6 @@
 // once on first use, so a lookup neither allocates nor scans.
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cstring>
 
 #include "state_table_data.h"
@@ -10,7 +9,9 @@
 namespace fx {
 namespace {
 
-char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
+// ASCII only: state and enum names are ASCII, and std::tolower's locale lookup would
+// dominate a lookup.
+char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c + ('a' - 'A')) : c; }
 
 uint64_t name_hash(std::string_view name, StateBlock block) {
   uint64_t h = 1469598103934665603ull;
