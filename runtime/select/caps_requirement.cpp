@@ -89,8 +89,12 @@ std::optional<CapsRequirement> parse_caps_requirement(std::string_view token, st
     std::string_view name = token.substr(0, ge), number = token.substr(ge + 2);
     uint32_t value = 0;
     auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
-    if (ec != std::errc() || end != number.data() + number.size())
-      return fail("'" + std::string(number) + "' is not a whole number in '" + std::string(token) + "'");
+    if (ec != std::errc() || end != number.data() + number.size()) {
+      // Appended piecewise: g++ 12 warns falsely (-Wrestrict) on "'" + std::string(...).
+      std::string message = "'";
+      message.append(number).append("' is not a whole number in '").append(token).append("'");
+      return fail(std::move(message));
+    }
     if (!find_limit(name)) return fail("unknown limit '" + std::string(name) + "'");
     return CapsRequirement::limit(name, value);
   }

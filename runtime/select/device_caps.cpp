@@ -125,7 +125,9 @@ class CapsReader {
  private:
   void read_table(const nlohmann::json& j, const std::string& where, CapsLimits& limits) {
     if (!j.is_object()) return complain(where + " must be an object");
-    for (const auto& [key, value] : j.items()) {
+    for (const auto& item : j.items()) {  // no structured binding: clang 14 cannot capture one
+      const std::string& key = item.key();
+      const nlohmann::json& value = item.value();
       auto row = std::find_if(std::begin(kLimitRows), std::end(kLimitRows),
                               [&](const CapsLimitRow& r) { return key == r.name; });
       if (row == std::end(kLimitRows)) {
@@ -138,7 +140,9 @@ class CapsReader {
 
   void read_table(const nlohmann::json& j, const std::string& where, CapsFeatures& features) {
     if (!j.is_object()) return complain(where + " must be an object");
-    for (const auto& [key, value] : j.items()) {
+    for (const auto& item : j.items()) {
+      const std::string& key = item.key();
+      const nlohmann::json& value = item.value();
       auto row = std::find_if(std::begin(kFeatureRows), std::end(kFeatureRows),
                               [&](const CapsFeatureRow& r) { return key == r.name; });
       if (row == std::end(kFeatureRows)) {
