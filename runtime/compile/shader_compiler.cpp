@@ -1,0 +1,235 @@
+#include "fx/compile/shader_compiler.h"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <cstdlib>
+#include <memory>
+#include <mutex>
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+#include "fx/compile/spirv_cache.h"
+#include "glslang_reflect.h"
+#include "spirv_words.h"
+
+namespace fx {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+// glslang's process-wide tables: built once, released at exit. Compiles running in worker
+// threads only need each call to own its TShader and TProgram.
+void ensure_glslang_process() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    glslang::InitializeProcess();
+    std::atexit([] { glslang::FinalizeProcess(); });
+  });
+}
+
+EShLanguage glslang_stage(ShaderStage s) {
+  switch (s) {
+    case ShaderStage::vertex: return EShLangVertex;
+    case ShaderStage::tess_control: return EShLangTessControl;
+    case ShaderStage::tess_evaluation: return EShLangTessEvaluation;
+    case ShaderStage::geometry: return EShLangGeometry;
+    case ShaderStage::fragment: return EShLangFragment;
+    case ShaderStage::compute: return EShLangCompute;
+  }
+  return EShLangVertex;
+}
+
+std::string preamble_for(const TranslationUnit& unit) {
+  std::string out;
+  for (const ShaderDefine& d : unit.defines) out += "#define " + d.name + " " + d.value + "\n";
+  return out;
+}
+
+// Makes D3D semantics mean in Vulkan what they meant in Direct3D: a D3D9 vertex shader's
+// POSITION output is the clip position, and pixel shader outputs COLORn / SV_TargetN go to
+// colour attachment n whatever order they were declared in.
+void apply_d3d_output_semantics(CompiledShader& out, const ShaderProfile& profile, ShaderStage stage) {
+  ShaderReflection& r = out.reflection;
+  if (stage == ShaderStage::vertex && profile.dx9()) {
+    if (std::optional<uint32_t> location = spirv::promote_position_output(out.spirv))
+      std::erase_if(r.outputs, [&](const InterfaceVariable& v) { return v.location == *location; });
+  }
+  if (stage != ShaderStage::fragment) return;
+  std::map<uint32_t, uint32_t> remap;
+  for (InterfaceVariable& v : r.outputs) {
+    std::string_view s = v.semantic;
+    std::string_view digits = s.substr(0, 5) == "COLOR" ? s.substr(5) : s.substr(0, 9) == "SV_TARGET" ? s.substr(9) : "-";
+    if (digits == "-") continue;
+    uint32_t index = digits.empty() ? 0 : static_cast<uint32_t>(digits[0] - '0');
+    if (digits.size() > 1 || (!digits.empty() && (digits[0] < '0' || digits[0] > '7'))) continue;
+    remap[v.location] = index;
+    v.location = index;
+  }
+  spirv::remap_locations(out.spirv, spirv::Interface::output, remap);
+  std::sort(r.outputs.begin(), r.outputs.end(),
+            [](const InterfaceVariable& a, const InterfaceVariable& b) { return a.location < b.location; });
+}
+
+CompiledShader rejected(std::string text) {
+  CompiledShader r;
+  r.info_log = "ERROR: " + text + "\n";
+  r.messages.push_back({Severity::error, {}, 0, 0, std::move(text)});
+  return r;
+}
+
+}  // namespace
+
+ShaderCompiler::ShaderCompiler(CompileOptions options, SpirvCache* cache)
+    : options_(options), cache_(cache) {}
+
+std::string ShaderCompiler::glslang_version() {
+  glslang::Version v = glslang::GetVersion();
+  return "glslang " + std::to_string(v.major) + "." + std::to_string(v.minor) + "." +
+         std::to_string(v.patch) + v.flavor;
+}
+
+CompiledShader ShaderCompiler::compile(const TranslationUnit& unit) const {
+  Clock::time_point start = Clock::now();
+  std::optional<ShaderProfile> profile = parse_profile(unit.profile);
+  if (!profile) return rejected("unknown shader profile '" + unit.profile + "'");
+  if (profile->language != unit.language)
+    return rejected("profile '" + unit.profile + "' is for " + to_string(profile->language) +
+                    " but the shader is " + to_string(unit.language));
+  if (profile->stage && *profile->stage != unit.stage)
+    return rejected("profile '" + unit.profile + "' is a " + to_string(*profile->stage) +
+                    " profile, used for a " + to_string(unit.stage) + " shader");
+  if (unit.language == ShaderLanguage::glsl && unit.entry_point != "main")
+    return rejected("GLSL shaders are entered through main(), not '" + unit.entry_point + "'");
+
+  SpirvCacheKey key;
+  if (cache_) {
+    key = spirv_cache_key(unit, options_);
+    if (std::optional<CompiledShader> hit = cache_->find(key)) {
+      hit->from_cache = true;
+      hit->parse_ms = hit->link_ms = 0;
+      hit->total_ms = ms_since(start);
+      return std::move(*hit);
+    }
+  }
+  CompiledShader result = run_glslang(unit, *profile);
+  if (cache_ && result.ok) cache_->store(key, result);
+  result.total_ms = ms_since(start);
+  return result;
+}
+
+CompiledShader ShaderCompiler::run_glslang(const TranslationUnit& unit, const ShaderProfile& profile) const {
+  ensure_glslang_process();
+  ++glslang_runs_;
+  CompiledShader out;
+  out.entry_point = unit.entry_point;
+  out.reflection.stage = unit.stage;
+  out.reflection.entry_point = unit.entry_point;
+
+  const bool hlsl = unit.language == ShaderLanguage::hlsl;
+  const EShLanguage stage = glslang_stage(unit.stage);
+  const bool vulkan_1_0 = options_.target == VulkanTarget::vulkan_1_0;
+  glslang::EShTargetClientVersion client =
+      options_.target == VulkanTarget::vulkan_1_0   ? glslang::EShTargetVulkan_1_0
+      : options_.target == VulkanTarget::vulkan_1_1 ? glslang::EShTargetVulkan_1_1
+      : options_.target == VulkanTarget::vulkan_1_2 ? glslang::EShTargetVulkan_1_2
+                                                    : glslang::EShTargetVulkan_1_3;
+
+  auto shader = std::make_unique<glslang::TShader>(stage);
+  const char* text = unit.source.c_str();
+  const int length = static_cast<int>(unit.source.size());
+  const char* name = unit.name.c_str();
+  shader->setStringsWithLengthsAndNames(&text, &length, &name, 1);
+  std::string preamble = preamble_for(unit);
+  if (!preamble.empty()) shader->setPreamble(preamble.c_str());
+  // The SPIR-V entry keeps the source name (VS, PS, Wood...): pipelines pass it as pName,
+  // and disassembly and RenderDoc show the author's names.
+  shader->setEntryPoint(unit.entry_point.c_str());
+  shader->setEnvInput(hlsl ? glslang::EShSourceHlsl : glslang::EShSourceGlsl, stage,
+                      glslang::EShClientVulkan, 100);
+  shader->setEnvClient(glslang::EShClientVulkan, client);
+  shader->setEnvTarget(glslang::EShTargetSpv, vulkan_1_0 ? glslang::EShTargetSpv_1_0 : glslang::EShTargetSpv_1_3);
+  shader->setAutoMapBindings(true);
+  shader->setAutoMapLocations(true);
+  if (hlsl) {
+    shader->setHlslIoMapping(true);
+    // Semantics (POSITION, TEXCOORD0) reach reflection through UserSemantic decorations.
+    shader->setEnvTargetHlslFunctionality1();
+  }
+
+  int messages = EShMsgSpvRules | EShMsgVulkanRules | EShMsgCascadingErrors;
+  if (hlsl) messages |= EShMsgReadHlsl | EShMsgHlslOffsets | EShMsgHlslLegalization;
+  if (hlsl && profile.dx9()) messages |= EShMsgHlslDX9Compatible;
+  if (options_.debug_info) messages |= EShMsgDebugInfo;
+  const EShMessages flags = static_cast<EShMessages>(messages);
+  // GLSL sources carry their own #version; 450 is the fallback when they do not.
+  const int default_version = hlsl ? 100 : profile.major * 100 + profile.minor * 10;
+
+  Clock::time_point t0 = Clock::now();
+  bool parsed = shader->parse(GetDefaultResources(), default_version, false, flags);
+  out.parse_ms = ms_since(t0);
+  out.info_log = shader->getInfoLog();
+  if (!parsed) {
+    out.messages = parse_info_log(out.info_log);
+    return out;
+  }
+
+  Clock::time_point t1 = Clock::now();
+  auto program = std::make_unique<glslang::TProgram>();
+  bool spirv_error = false;
+  program->addShader(shader.get());
+  bool linked = program->link(flags) && program->mapIO();
+  out.info_log += program->getInfoLog();
+  if (linked && program->getIntermediate(stage)) {
+    glslang::SpvOptions spv;
+    spv.generateDebugInfo = options_.debug_info;
+    // HLSL needs spirv-opt's legalization (opaque types passed to functions, as D3D9 code
+    // does with samplers); GLSL is valid as generated and skips the optimizer's cost.
+    spv.disableOptimizer = !hlsl;
+    spv::SpvBuildLogger logger;
+    // glslang can emit invalid SPIR-V for code it accepts (D3D9 sampler2D/tex2D under an SM4
+    // profile): SPIRV-Tools' validator turns that into an error instead of a driver crash.
+    spv.validate = options_.validate;
+    glslang::GlslangToSpv(*program->getIntermediate(stage), out.spirv, &logger, &spv);
+    std::string spv_log = logger.getAllMessages();
+    for (size_t pos = 0; pos < spv_log.size();) {
+      size_t nl = spv_log.find('\n', pos);
+      std::string line = spv_log.substr(pos, nl == std::string::npos ? std::string::npos : nl - pos);
+      pos = nl == std::string::npos ? spv_log.size() : nl + 1;
+      if (line.empty()) continue;
+      bool error = line.rfind("error", 0) == 0;
+      out.info_log += (error ? "ERROR: SPIR-V " : "WARNING: SPIR-V ") + line + "\n";
+      if (error) spirv_error = true;
+    }
+    program->buildReflection(kReflectionOptions);
+    ShaderReflection reflection = reflect_program(*program, stage, out.spirv);
+    reflection.stage = unit.stage;
+    reflection.entry_point = unit.entry_point;
+    out.reflection = std::move(reflection);
+    if (hlsl) apply_d3d_output_semantics(out, profile, unit.stage);
+    if (hlsl && !options_.keep_hlsl_semantics) spirv::strip_hlsl_semantics(out.spirv);
+  }
+  out.link_ms = ms_since(t1);
+  out.messages = parse_info_log(out.info_log);
+  out.ok = linked && !spirv_error && !out.spirv.empty();
+  if (options_.warnings_as_errors)
+    for (ShaderMessage& m : out.messages)
+      if (m.severity == Severity::warning) m.severity = Severity::error, out.ok = false;
+  if (!out.ok) out.spirv.clear();
+  return out;
+}
+
+CompiledShader compile_and_report(const ShaderCompiler& compiler, const TranslationUnit& unit,
+                                  const ShaderLocationResolver& resolve, DiagnosticSink& sink) {
+  CompiledShader result = compiler.compile(unit);
+  report_messages(result.messages, resolve, sink);
+  return result;
+}
+
+}  // namespace fx

@@ -1,0 +1,135 @@
+#include "fx/compile/program_link.h"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+
+#include "spirv_words.h"
+
+namespace fx {
+namespace {
+
+// A resource of one stage before linking.
+struct StageResource {
+  std::string name;
+  DescriptorKind kind;
+  uint32_t set, binding, count, size;
+};
+
+DescriptorKind descriptor_kind(ImageBinding::Kind k) {
+  switch (k) {
+    case ImageBinding::Kind::combined_image_sampler: return DescriptorKind::combined_image_sampler;
+    case ImageBinding::Kind::sampled_image: return DescriptorKind::sampled_image;
+    case ImageBinding::Kind::sampler: return DescriptorKind::sampler;
+    case ImageBinding::Kind::storage_image: return DescriptorKind::storage_image;
+  }
+  return DescriptorKind::sampled_image;
+}
+
+std::vector<StageResource> resources_of(const ShaderReflection& r) {
+  std::vector<StageResource> out;
+  for (const UniformBlock& b : r.uniform_blocks)
+    out.push_back({b.name, DescriptorKind::uniform_buffer, b.set, b.binding, 1, b.size});
+  for (const UniformBlock& b : r.storage_blocks)
+    out.push_back({b.name, DescriptorKind::storage_buffer, b.set, b.binding, 1, b.size});
+  for (const ImageBinding& i : r.images)
+    out.push_back({i.name, descriptor_kind(i.kind), i.set, i.binding, std::max(1u, i.array_size), 0});
+  // Declaration order as glslang numbered them.
+  std::stable_sort(out.begin(), out.end(), [](const StageResource& a, const StageResource& b) {
+    return std::pair(a.set, a.binding) < std::pair(b.set, b.binding);
+  });
+  return out;
+}
+
+void apply_binding(ShaderReflection& r, const StageResource& res, uint32_t binding) {
+  auto set_block = [&](std::vector<UniformBlock>& blocks) {
+    for (UniformBlock& b : blocks)
+      if (b.name == res.name && b.set == res.set && b.binding == res.binding) b.set = 0, b.binding = binding;
+  };
+  if (res.kind == DescriptorKind::uniform_buffer) set_block(r.uniform_blocks);
+  else if (res.kind == DescriptorKind::storage_buffer) set_block(r.storage_blocks);
+  else
+    for (ImageBinding& i : r.images)
+      if (i.name == res.name && i.set == res.set && i.binding == res.binding) i.set = 0, i.binding = binding;
+}
+
+// "TEXCOORD" and "TEXCOORD0" name the same D3D register.
+std::string canonical_semantic(std::string s) {
+  if (!s.empty() && !std::isdigit(static_cast<unsigned char>(s.back()))) s += '0';
+  return s;
+}
+
+void link_varyings(CompiledShader& producer, CompiledShader& consumer, DiagnosticSink& sink) {
+  std::map<std::string, uint32_t> location_of;  // canonical semantic -> new location
+  std::map<uint32_t, uint32_t> out_remap, in_remap;
+  auto has_semantic = [](const InterfaceVariable& v) { return !v.semantic.empty(); };
+  // GLSL (no semantics): locations are the author's and already agree.
+  if (!std::all_of(producer.reflection.outputs.begin(), producer.reflection.outputs.end(), has_semantic) ||
+      !std::all_of(consumer.reflection.inputs.begin(), consumer.reflection.inputs.end(), has_semantic))
+    return;
+  uint32_t next = 0;
+  for (InterfaceVariable& v : producer.reflection.outputs) {
+    location_of[canonical_semantic(v.semantic)] = next;
+    out_remap[v.location] = next;
+    v.location = next++;
+  }
+  for (InterfaceVariable& v : consumer.reflection.inputs) {
+    auto it = location_of.find(canonical_semantic(v.semantic));
+    uint32_t location = it != location_of.end() ? it->second : next++;
+    if (it == location_of.end())
+      sink.warning("shader-varying-unwritten", {},
+                   std::string(to_string(consumer.reflection.stage)) + " input '" + v.name + "' (" + v.semantic +
+                       ") is not written by the " + to_string(producer.reflection.stage) + " stage; its value is undefined");
+    in_remap[v.location] = location;
+    v.location = location;
+  }
+  spirv::remap_locations(producer.spirv, spirv::Interface::output, out_remap);
+  spirv::remap_locations(consumer.spirv, spirv::Interface::input, in_remap);
+}
+
+}  // namespace
+
+const ProgramBinding* ProgramLayout::find(std::string_view name) const {
+  for (const ProgramBinding& b : bindings)
+    if (b.name == name) return &b;
+  return nullptr;
+}
+
+ProgramLayout link_program(const std::vector<CompiledShader*>& input, DiagnosticSink& sink) {
+  std::vector<CompiledShader*> stages;
+  for (CompiledShader* s : input)
+    if (s && s->ok) stages.push_back(s);
+  std::stable_sort(stages.begin(), stages.end(), [](const CompiledShader* a, const CompiledShader* b) {
+    return a->reflection.stage < b->reflection.stage;
+  });
+
+  ProgramLayout layout;
+  std::vector<uint32_t> sizes;  // block size per layout entry, to tell same-named blocks apart
+  for (CompiledShader* s : stages) {
+    std::map<spirv::SetBinding, spirv::SetBinding> remap;
+    for (const StageResource& res : resources_of(s->reflection)) {
+      uint32_t stage_bit = 1u << static_cast<unsigned>(s->reflection.stage);
+      size_t index = 0;
+      for (; index < layout.bindings.size(); ++index) {
+        const ProgramBinding& b = layout.bindings[index];
+        if (b.name == res.name && b.kind == res.kind && b.count == res.count && sizes[index] == res.size &&
+            !(b.stage_mask & stage_bit))
+          break;
+      }
+      if (index == layout.bindings.size()) {
+        layout.bindings.push_back({res.name, res.kind, 0, static_cast<uint32_t>(index), res.count, 0});
+        sizes.push_back(res.size);
+      }
+      layout.bindings[index].stage_mask |= stage_bit;
+      remap[{res.set, res.binding}] = {0, layout.bindings[index].binding};
+      apply_binding(s->reflection, res, layout.bindings[index].binding);
+    }
+    spirv::remap_bindings(s->spirv, remap);
+  }
+  for (size_t i = 0; i + 1 < stages.size(); ++i)
+    if (stages[i]->reflection.stage != ShaderStage::compute && stages[i + 1]->reflection.stage != ShaderStage::compute)
+      link_varyings(*stages[i], *stages[i + 1], sink);
+  return layout;
+}
+
+}  // namespace fx

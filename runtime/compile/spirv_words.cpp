@@ -1,0 +1,173 @@
+#include "spirv_words.h"
+
+#include <cctype>
+
+namespace fx::spirv {
+namespace {
+
+// Opcodes and decorations from the SPIR-V 1.6 specification (stable numbers).
+constexpr uint32_t kOpExtension = 10;
+constexpr uint32_t kOpDecorate = 71;
+constexpr uint32_t kOpVariable = 59;
+constexpr uint32_t kOpDecorateId = 332;
+constexpr uint32_t kOpDecorateString = 5632;
+constexpr uint32_t kOpMemberDecorateString = 5633;
+constexpr uint32_t kDecorationLocation = 30;
+constexpr uint32_t kDecorationBinding = 33;
+constexpr uint32_t kDecorationDescriptorSet = 34;
+constexpr uint32_t kDecorationHlslCounterBuffer = 5634;
+constexpr uint32_t kDecorationUserSemantic = 5635;
+constexpr uint32_t kDecorationUserTypeGOOGLE = 5636;
+constexpr uint32_t kStorageInput = 1;
+constexpr uint32_t kStorageOutput = 3;
+constexpr uint32_t kDecorationBuiltIn = 11;
+constexpr uint32_t kBuiltInPosition = 0;
+constexpr size_t kHeaderWords = 5;
+
+// Calls f(offset, opcode, word_count) per instruction; stops at a malformed one.
+template <class F>
+bool for_each_instruction(const std::vector<uint32_t>& w, F&& f) {
+  if (w.size() < kHeaderWords || w[0] != kMagic) return false;
+  for (size_t i = kHeaderWords; i < w.size();) {
+    uint32_t count = w[i] >> 16, op = w[i] & 0xffff;
+    if (count == 0 || i + count > w.size()) return false;
+    f(i, op, count);
+    i += count;
+  }
+  return true;
+}
+
+std::string literal_string(const std::vector<uint32_t>& w, size_t begin, size_t end) {
+  std::string s;
+  for (size_t i = begin; i < end; ++i)
+    for (int b = 0; b < 4; ++b) {
+      char c = static_cast<char>((w[i] >> (8 * b)) & 0xff);
+      if (c == 0) return s;
+      s.push_back(c);
+    }
+  return s;
+}
+
+}  // namespace
+
+namespace {
+
+// Locations and semantics of one side's variables, by result id.
+struct InterfaceVariables {
+  std::map<uint32_t, uint32_t> location_of;     // id -> location
+  std::map<uint32_t, std::string> semantic_of;  // id -> upper-case semantic
+  std::map<uint32_t, size_t> location_word;     // id -> index of the Location literal
+};
+
+InterfaceVariables interface_variables(const std::vector<uint32_t>& w, Interface side) {
+  InterfaceVariables v;
+  std::map<uint32_t, bool> on_side;
+  const uint32_t storage = side == Interface::input ? kStorageInput : kStorageOutput;
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t count) {
+    if (op == kOpVariable && count >= 4 && w[i + 3] == storage) on_side[w[i + 2]] = true;
+  });
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t count) {
+    if (count < 4 || !on_side.count(w[i + 1])) return;
+    if (op == kOpDecorateString && w[i + 2] == kDecorationUserSemantic) {
+      std::string s = literal_string(w, i + 3, i + count);
+      for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      v.semantic_of[w[i + 1]] = s;
+    } else if (op == kOpDecorate && w[i + 2] == kDecorationLocation) {
+      v.location_of[w[i + 1]] = w[i + 3];
+      v.location_word[w[i + 1]] = i + 3;
+    }
+  });
+  return v;
+}
+
+}  // namespace
+
+std::map<uint32_t, std::string> interface_semantics(const std::vector<uint32_t>& w, Interface side) {
+  InterfaceVariables v = interface_variables(w, side);
+  std::map<uint32_t, std::string> out;
+  for (auto& [id, semantic] : v.semantic_of)
+    if (auto loc = v.location_of.find(id); loc != v.location_of.end()) out[loc->second] = semantic;
+  return out;
+}
+
+std::optional<uint32_t> promote_position_output(std::vector<uint32_t>& w) {
+  InterfaceVariables v = interface_variables(w, Interface::output);
+  for (auto& [id, semantic] : v.semantic_of) {
+    if (semantic != "POSITION" && semantic != "POSITION0") continue;
+    auto word = v.location_word.find(id);
+    if (word == v.location_word.end()) continue;
+    // OpDecorate %id Location N  ->  OpDecorate %id BuiltIn Position (same length).
+    uint32_t old_location = w[word->second];
+    w[word->second - 1] = kDecorationBuiltIn;
+    w[word->second] = kBuiltInPosition;
+    return old_location;
+  }
+  return std::nullopt;
+}
+
+size_t remap_locations(std::vector<uint32_t>& w, Interface side, const std::map<uint32_t, uint32_t>& remap) {
+  InterfaceVariables v = interface_variables(w, side);
+  size_t changed = 0;
+  for (auto& [id, word] : v.location_word)
+    if (auto it = remap.find(w[word]); it != remap.end() && it->second != w[word]) {
+      w[word] = it->second;
+      ++changed;
+    }
+  return changed;
+}
+
+bool strip_hlsl_semantics(std::vector<uint32_t>& w) {
+  std::vector<uint32_t> kept;
+  kept.reserve(w.size());
+  bool ok = for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t count) {
+    bool drop = false;
+    if (op == kOpExtension) {
+      std::string name = literal_string(w, i + 1, i + count);
+      drop = name == "SPV_GOOGLE_hlsl_functionality1" || name == "SPV_GOOGLE_decorate_string" ||
+             name == "SPV_GOOGLE_user_type";
+    } else if (op == kOpDecorateString || op == kOpMemberDecorateString) {
+      drop = true;  // only UserSemantic / UserTypeGOOGLE use string decorations
+    } else if (op == kOpDecorateId && count >= 3) {
+      drop = w[i + 2] == kDecorationHlslCounterBuffer;
+    } else if (op == kOpDecorate && count >= 3) {
+      drop = w[i + 2] == kDecorationUserTypeGOOGLE;
+    }
+    if (!drop) kept.insert(kept.end(), w.begin() + static_cast<long>(i), w.begin() + static_cast<long>(i + count));
+  });
+  if (!ok) return false;
+  std::vector<uint32_t> out(w.begin(), w.begin() + kHeaderWords);
+  out.insert(out.end(), kept.begin(), kept.end());
+  w = std::move(out);
+  return true;
+}
+
+std::map<uint32_t, SetBinding> variable_bindings(const std::vector<uint32_t>& w) {
+  std::map<uint32_t, SetBinding> out;
+  std::map<uint32_t, bool> has_binding;
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t count) {
+    if (op != kOpDecorate || count < 4) return;
+    if (w[i + 2] == kDecorationDescriptorSet) out[w[i + 1]].first = w[i + 3];
+    if (w[i + 2] == kDecorationBinding) out[w[i + 1]].second = w[i + 3], has_binding[w[i + 1]] = true;
+  });
+  for (auto it = out.begin(); it != out.end();)
+    it = has_binding.count(it->first) ? std::next(it) : out.erase(it);
+  return out;
+}
+
+size_t remap_bindings(std::vector<uint32_t>& w, const std::map<SetBinding, SetBinding>& remap) {
+  std::map<uint32_t, SetBinding> targets;
+  for (auto& [id, pair] : variable_bindings(w)) {
+    auto it = remap.find(pair);
+    if (it != remap.end() && it->second != pair) targets[id] = it->second;
+  }
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t count) {
+    if (op != kOpDecorate || count < 4) return;
+    auto it = targets.find(w[i + 1]);
+    if (it == targets.end()) return;
+    if (w[i + 2] == kDecorationDescriptorSet) w[i + 3] = it->second.first;
+    if (w[i + 2] == kDecorationBinding) w[i + 3] = it->second.second;
+  });
+  return targets.size();
+}
+
+}  // namespace fx::spirv

@@ -1,0 +1,44 @@
+// Links separately compiled stages into one program: one descriptor layout for all stages
+// and D3D-style varying matching by semantic.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "fx/compile/shader_compiler.h"
+#include "fx/diagnostic.h"
+
+namespace fx {
+
+// Descriptor type of a program binding (what VkDescriptorSetLayoutBinding needs).
+enum class DescriptorKind : uint8_t {
+  uniform_buffer, storage_buffer, combined_image_sampler, sampled_image, sampler, storage_image
+};
+
+// One descriptor shared by the stages that use it.
+struct ProgramBinding {
+  std::string name;
+  DescriptorKind kind = DescriptorKind::uniform_buffer;
+  uint32_t set = 0, binding = 0;
+  uint32_t count = 1;        // descriptor array size
+  uint32_t stage_mask = 0;   // bit (1 << ShaderStage) per stage that uses it
+};
+
+// The program's descriptor layout, in binding order.
+struct ProgramLayout {
+  std::vector<ProgramBinding> bindings;
+  const ProgramBinding* find(std::string_view name) const;
+};
+
+// Rewrites the stages' SPIR-V (and reflection) so that:
+//  - every resource is in set 0; bindings are numbered in pipeline stage order, then in each
+//    stage's declaration order; the same name and kind (and, for blocks, the same size) in two
+//    stages gets the same binding; same-named but different resources get their own;
+//  - for HLSL stages, each stage's inputs take the locations of the previous stage's outputs
+//    with the same semantic (TEXCOORD = TEXCOORD0), as Direct3D links by semantic. Outputs
+//    are numbered densely in location order. An input no earlier stage writes is a warning
+//    ("shader-varying-unwritten") and gets a location past the outputs.
+// Stages must be ok() and listed once each; their order in `stages` does not matter.
+ProgramLayout link_program(const std::vector<CompiledShader*>& stages, DiagnosticSink& sink);
+
+}  // namespace fx

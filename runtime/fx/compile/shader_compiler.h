@@ -1,0 +1,60 @@
+// Compiles one translation unit (HLSL or GLSL) to SPIR-V with glslang and reflects it.
+#pragma once
+#include <atomic>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "fx/compile/shader_message.h"
+#include "fx/compile/shader_reflection.h"
+#include "fx/compile/translation_unit.h"
+
+namespace fx {
+
+class SpirvCache;
+
+// The result of compiling one stage. `ok` is false when glslang reported errors (see
+// `messages`) or the unit was rejected before glslang ran (bad profile or stage).
+struct CompiledShader {
+  bool ok = false;
+  std::vector<uint32_t> spirv;        // SPIR-V words; empty unless ok
+  std::string entry_point;            // OpEntryPoint name: the unit's entry point, unchanged
+  ShaderReflection reflection;
+  std::vector<ShaderMessage> messages;  // parsed from info_log, in log order
+  std::string info_log;               // glslang's raw parse + link + SPIR-V log
+  double parse_ms = 0, link_ms = 0, total_ms = 0;  // wall time of this call
+  bool from_cache = false;            // true when no glslang work was done
+};
+
+// Compiles translation units. compile() is safe to call from several threads at once:
+// each call owns its glslang TShader/TProgram, and glslang's process-wide tables are
+// initialised once (and released at exit).
+class ShaderCompiler {
+ public:
+  // `cache` (optional, not owned) is consulted before glslang and filled after it.
+  explicit ShaderCompiler(CompileOptions options = {}, SpirvCache* cache = nullptr);
+
+  // Compiles `unit`; never throws. Errors are in the result's messages.
+  CompiledShader compile(const TranslationUnit& unit) const;
+
+  const CompileOptions& options() const { return options_; }
+  // How many times this compiler ran glslang (cache hits do not count).
+  uint64_t glslang_runs() const { return glslang_runs_.load(); }
+
+  // "glslang 12.0.0": part of every cache key, so an upgrade invalidates old entries.
+  static std::string glslang_version();
+
+ private:
+  CompiledShader run_glslang(const TranslationUnit& unit, const ShaderProfile& profile) const;
+
+  CompileOptions options_;
+  SpirvCache* cache_ = nullptr;
+  mutable std::atomic<uint64_t> glslang_runs_{0};
+};
+
+// Compiles and reports: the common path for the effect compiler. Diagnostics are placed
+// with `resolve` (see resolver_for) and written to `sink`.
+CompiledShader compile_and_report(const ShaderCompiler& compiler, const TranslationUnit& unit,
+                                  const ShaderLocationResolver& resolve, DiagnosticSink& sink);
+
+}  // namespace fx

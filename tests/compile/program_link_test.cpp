@@ -1,0 +1,98 @@
+// Cross-stage linking: shared descriptor bindings and varyings matched by semantic.
+#include <gtest/gtest.h>
+
+#include "compile_test_util.h"
+#include "fx/compile/program_link.h"
+
+namespace fx {
+namespace {
+
+TEST(ProgramLink, SameNameGetsTheSameBindingInEveryStage) {
+  // Both stages read $Global; only the pixel shader has textures.
+  const char* src = R"(float4x4 M;
+float4 Tint;
+sampler2D A;
+sampler2D B;
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, M) * Tint; }
+float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(B, uv) + tex2D(A, uv.yx) * Tint; }
+)";
+  ShaderCompiler compiler;
+  CompiledShader vs = compiler.compile(test::unit(src, ShaderStage::vertex, "VS", "vs_3_0"));
+  CompiledShader ps = compiler.compile(test::unit(src, ShaderStage::fragment, "PS", "ps_3_0"));
+  ASSERT_TRUE(vs.ok && ps.ok) << vs.info_log << ps.info_log;
+  DiagnosticSink sink;
+  ProgramLayout layout = link_program({&ps, &vs}, sink);  // order of the list does not matter
+  EXPECT_FALSE(sink.has_errors());
+  ASSERT_EQ(layout.bindings.size(), 3u);
+  const ProgramBinding* global = layout.find("$Global");
+  ASSERT_TRUE(global);
+  EXPECT_EQ(global->binding, 0u);
+  EXPECT_EQ(global->stage_mask, (1u << unsigned(ShaderStage::vertex)) | (1u << unsigned(ShaderStage::fragment)));
+  EXPECT_EQ(layout.find("A")->binding, 1u);  // declaration order within the stage
+  EXPECT_EQ(layout.find("B")->binding, 2u);
+  EXPECT_EQ(vs.reflection.uniform_blocks[0].binding, 0u);
+  EXPECT_EQ(ps.reflection.uniform_blocks[0].binding, 0u);
+  for (const ImageBinding& i : ps.reflection.images) EXPECT_EQ(i.binding, layout.find(i.name)->binding);
+  EXPECT_EQ(test::spirv_val(vs.spirv), "");
+  EXPECT_EQ(test::spirv_val(ps.spirv), "");
+  // Linking is deterministic: a second run from fresh compiles gives the same words.
+  CompiledShader vs2 = compiler.compile(test::unit(src, ShaderStage::vertex, "VS", "vs_3_0"));
+  CompiledShader ps2 = compiler.compile(test::unit(src, ShaderStage::fragment, "PS", "ps_3_0"));
+  link_program({&vs2, &ps2}, sink);
+  EXPECT_EQ(vs2.spirv, vs.spirv);
+  EXPECT_EQ(ps2.spirv, ps.spirv);
+}
+
+TEST(ProgramLink, VaryingsMatchBySemanticNotDeclarationOrder) {
+  // The pixel shader declares its inputs in the opposite order to the vertex outputs,
+  // which D3D allows; Vulkan matches by location, so the link step must line them up.
+  ShaderCompiler compiler;
+  CompiledShader vs = compiler.compile(test::unit(test::kD3D9Effect, ShaderStage::vertex, "VS", "vs_2_0"));
+  CompiledShader ps = compiler.compile(test::unit(test::kD3D9Effect, ShaderStage::fragment, "PS", "ps_2_0"));
+  ASSERT_TRUE(vs.ok && ps.ok);
+  DiagnosticSink sink;
+  link_program({&vs, &ps}, sink);
+  EXPECT_EQ(sink.warning_count(), 0u);
+  for (const InterfaceVariable& in : ps.reflection.inputs) {
+    bool matched = false;
+    for (const InterfaceVariable& out : vs.reflection.outputs)
+      if (out.semantic == in.semantic) {
+        EXPECT_EQ(out.location, in.location) << in.semantic;
+        matched = true;
+      }
+    EXPECT_TRUE(matched) << in.semantic;
+  }
+  EXPECT_EQ(test::spirv_val(vs.spirv), "");
+  EXPECT_EQ(test::spirv_val(ps.spirv), "");
+}
+
+TEST(ProgramLink, UnwrittenInputIsAWarning) {
+  const char* src = R"(float4 VS(float4 p : POSITION, out float2 uv : TEXCOORD0) : SV_Position { uv = p.xy; return p; }
+float4 PS(float2 uv : TEXCOORD0, float4 c : COLOR1) : SV_Target { return c * uv.x; }
+)";
+  ShaderCompiler compiler;
+  CompiledShader vs = compiler.compile(test::unit(src, ShaderStage::vertex, "VS", "vs_4_0"));
+  CompiledShader ps = compiler.compile(test::unit(src, ShaderStage::fragment, "PS", "ps_4_0"));
+  ASSERT_TRUE(vs.ok && ps.ok) << vs.info_log << ps.info_log;
+  DiagnosticSink sink;
+  link_program({&vs, &ps}, sink);
+  ASSERT_EQ(sink.warning_count(), 1u);
+  EXPECT_EQ(sink.diagnostics()[0].id, "shader-varying-unwritten");
+  EXPECT_NE(sink.diagnostics()[0].message.find("COLOR1"), std::string::npos);
+}
+
+TEST(ProgramLink, DifferentBlocksWithOneNameGetTheirOwnBindings) {
+  const char* vs_src = "cbuffer C { float4 a; };\nfloat4 VS() : SV_Position { return a; }\n";
+  const char* ps_src = "cbuffer C { float4 a; float4 b; };\nfloat4 PS() : SV_Target { return a + b; }\n";
+  ShaderCompiler compiler;
+  CompiledShader vs = compiler.compile(test::unit(vs_src, ShaderStage::vertex, "VS", "vs_4_0"));
+  CompiledShader ps = compiler.compile(test::unit(ps_src, ShaderStage::fragment, "PS", "ps_4_0"));
+  ASSERT_TRUE(vs.ok && ps.ok);
+  DiagnosticSink sink;
+  ProgramLayout layout = link_program({&vs, &ps}, sink);
+  ASSERT_EQ(layout.bindings.size(), 2u);
+  EXPECT_NE(vs.reflection.uniform_blocks[0].binding, ps.reflection.uniform_blocks[0].binding);
+}
+
+}  // namespace
+}  // namespace fx
