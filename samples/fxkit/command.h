@@ -26,5 +26,6 @@ struct FrontEndFlags {
 // Each subcommand registers itself and sets *run to what to execute when it is chosen.
 using Runner = std::function<int()>;
 void register_check(CLI::App& app, Runner& run);
+void register_bench(CLI::App& app, Runner& run);
 
 }  // namespace fxkit

@@ -1,0 +1,35 @@
+// libFuzzer target: arbitrary bytes as an effect file through preprocessor, parser and
+// checker, with one virtual include, rendered diagnostics included. Any crash, hang,
+// sanitizer report or out-of-memory is a bug.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "fx/diagnostic_render.h"
+#include "fx/frontend.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  std::string text(reinterpret_cast<const char*>(data), size);
+  fx::FrontEndOptions options;
+  // Includes resolve to a small header, or to the input itself (recursion is bounded by
+  // the include-depth limit).
+  options.preprocessor.loader = [&text](const std::string& path) -> std::optional<std::string> {
+    if (path.ends_with("common.fxh")) return std::string("#define SCALE(x) ((x) * 2)\nfloat g;\n");
+    if (path.ends_with("self.fx")) return text;
+    return std::nullopt;
+  };
+  options.preprocessor.lister = [](const std::string&) { return std::vector<std::string>{}; };
+  options.preprocessor.limits.max_include_depth = 16;
+  options.preprocessor.limits.max_input_bytes = 4u << 20;
+  options.preprocessor.limits.max_tokens = 1u << 20;
+  options.preprocessor.limits.max_macro_expansions = 1u << 16;
+  fx::SourceManager sm;
+  fx::DiagnosticSink diags;
+  diags.set_error_limit(64);
+  fx::ParsedEffect parsed = fx::parse_effect_text("fuzz.fx", std::move(text), sm, diags, options);
+  std::string rendered = fx::render_text(diags.diagnostics(), sm);
+  (void)fx::render_json(diags.diagnostics(), sm).dump();
+  (void)parsed;
+  (void)rendered;
+  return 0;
+}
