@@ -91,7 +91,7 @@ struct ContextBuilder {
     info.ppEnabledExtensionNames = extensions.data();
     VkDebugUtilsMessengerCreateInfoEXT messenger_info{};
     if (validation) {
-      ctx.log_ = std::make_unique<ValidationLog>();
+      ctx.log_ = std::make_unique<ValidationLog>(options.on_validation_message);
       // Chained so instance creation and destruction are validated too.
       messenger_info = messenger_create_info(ctx.log_.get(), options.validation_info);
       info.pNext = &messenger_info;

@@ -6,6 +6,7 @@
 namespace fx::vk {
 
 void ValidationLog::record(ValidationMessage message) {
+  if (listener_) listener_(message);
   std::lock_guard lock(mutex_);
   if (message.severity == Severity::error) ++errors_;
   if (message.severity == Severity::warning) ++warnings_;

@@ -1,6 +1,7 @@
 // Private: the store behind Context's validation messages, and the debug-utils callback
 // that fills it. The callback may run on any thread the application records or submits on.
 #pragma once
+#include <functional>
 #include <mutex>
 #include <vector>
 
@@ -10,6 +11,8 @@ namespace fx::vk {
 
 class ValidationLog {
  public:
+  explicit ValidationLog(std::function<void(const ValidationMessage&)> listener = {})
+      : listener_(std::move(listener)) {}
   void record(ValidationMessage message);
   std::vector<ValidationMessage> messages() const;
   std::vector<ValidationMessage> take();
@@ -21,6 +24,7 @@ class ValidationLog {
   static constexpr size_t kMaxStored = 4096;
 
  private:
+  std::function<void(const ValidationMessage&)> listener_;
   mutable std::mutex mutex_;
   std::vector<ValidationMessage> messages_;
   size_t errors_ = 0, warnings_ = 0;

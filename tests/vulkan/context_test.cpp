@@ -1,9 +1,10 @@
 // Context creation, feature queries, validation capture and wrapping.
+#include "fx/vulkan/context.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "fx/vulkan/context.h"
 #include "fx/vulkan/one_shot.h"
 #include "vulkan_fixture.h"
 
@@ -66,13 +67,14 @@ TEST_F(ContextTest, DepthFormatQueryReturnsAUsableFormat) {
   if (stencil != VK_FORMAT_UNDEFINED) {
     EXPECT_TRUE(stencil == VK_FORMAT_D24_UNORM_S8_UINT || stencil == VK_FORMAT_D32_SFLOAT_S8_UINT);
   }
-  EXPECT_TRUE(ctx().supports_format(VK_FORMAT_R8G8B8A8_UNORM,
-                                    VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT));
+  EXPECT_TRUE(
+      ctx().supports_format(VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT));
 }
 
 // The messenger must actually catch errors, or "zero validation errors" proves nothing.
 TEST_F(ContextTest, ValidationErrorsAreRecordedWithIdAndCounted) {
   ASSERT_EQ(ctx().validation_error_count(), 0u);
+  const size_t listened = testing::teardown_validation_errors();
   VkBufferCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
   info.size = 0;  // invalid: VUID-VkBufferCreateInfo-size-00912
@@ -82,6 +84,7 @@ TEST_F(ContextTest, ValidationErrorsAreRecordedWithIdAndCounted) {
   if (r == VK_SUCCESS && buffer) vkDestroyBuffer(ctx().device(), buffer, nullptr);
 
   ASSERT_GE(ctx().validation_error_count(), 1u);
+  EXPECT_GT(testing::teardown_validation_errors(), listened) << "on_validation_message was called";
   auto messages = ctx().validation_messages();
   auto it = std::find_if(messages.begin(), messages.end(), [](const ValidationMessage& m) {
     return m.severity == Severity::error && m.id_name.find("size-00912") != std::string::npos;
@@ -109,13 +112,17 @@ TEST_F(ContextTest, WrapBorrowsHandlesWithoutDestroyingThem) {
     EXPECT_FALSE(borrowed.validation_enabled());
     DiagnosticSink sink;
     // Work through the wrapper on the borrowed device.
-    EXPECT_TRUE(submit_and_wait(borrowed, [](VkCommandBuffer) {}, sink)) << describe(sink);
+    EXPECT_TRUE(submit_and_wait(
+        borrowed, [](VkCommandBuffer) {}, sink))
+        << describe(sink);
     Context moved = std::move(borrowed);  // moving a borrowed context must not destroy either
     EXPECT_EQ(moved.device(), ctx().device());
   }
   // The owner's device still works after the wrappers are gone.
   DiagnosticSink sink;
-  EXPECT_TRUE(submit_and_wait(ctx(), [](VkCommandBuffer) {}, sink)) << describe(sink);
+  EXPECT_TRUE(submit_and_wait(
+      ctx(), [](VkCommandBuffer) {}, sink))
+      << describe(sink);
 }
 
 TEST_F(ContextTest, WrapReportsTheFeaturesTheApplicationEnabled) {
@@ -137,7 +144,9 @@ TEST(ContextOwnership, MovedFromContextIsEmptyAndContextWithoutValidationWorks) 
   Context moved = std::move(*ctx);
   EXPECT_EQ(ctx->device(), VK_NULL_HANDLE);
   EXPECT_NE(moved.device(), VK_NULL_HANDLE);
-  EXPECT_TRUE(submit_and_wait(moved, [](VkCommandBuffer) {}, sink)) << describe(sink);
+  EXPECT_TRUE(submit_and_wait(
+      moved, [](VkCommandBuffer) {}, sink))
+      << describe(sink);
 }
 
 TEST(ContextOwnership, MissingDeviceExtensionIsADiagnosticNotACrash) {

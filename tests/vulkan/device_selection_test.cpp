@@ -1,10 +1,11 @@
 // Device ranking, explicit requests and the FXKIT_DEVICE environment variable.
+#include "fx/vulkan/device_selection.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
 #include "fx/vulkan/context.h"
-#include "fx/vulkan/device_selection.h"
 #include "vulkan_fixture.h"
 
 namespace fx::vk {

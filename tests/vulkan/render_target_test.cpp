@@ -1,5 +1,7 @@
 // Offscreen render targets: clear + readback, a real triangle through a minimal dynamic
 // rendering pipeline, depth testing, PNG output of the result.
+#include "fx/vulkan/render_target.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -8,7 +10,6 @@
 
 #include "fx/image.h"
 #include "fx/vulkan/one_shot.h"
-#include "fx/vulkan/render_target.h"
 #include "triangle_frag.h"
 #include "triangle_vert.h"
 #include "vulkan_fixture.h"
@@ -118,8 +119,8 @@ class TrianglePipeline {
     vkCmdSetDepthTestEnable(cmd, depth_test);
     vkCmdSetDepthWriteEnable(cmd, depth_test);
     vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_LESS);
-    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
-                       0, sizeof push, &push);
+    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof push, &push);
     vkCmdDraw(cmd, 3, 1, 0, 0);
   }
 
@@ -142,7 +143,7 @@ class TrianglePipeline {
 class RenderTargetTest : public testing::VulkanTest {
  protected:
   std::optional<RenderTarget> make_target(uint32_t w, uint32_t h, VkFormat format,
-                           DepthAttachment depth = DepthAttachment::none) {
+                                          DepthAttachment depth = DepthAttachment::none) {
     DiagnosticSink sink;
     RenderTargetDesc desc;
     desc.width = w;

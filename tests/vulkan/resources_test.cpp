@@ -60,9 +60,8 @@ TEST_F(ResourcesTest, InvalidBufferIsADiagnostic) {
 TEST_F(ResourcesTest, StagingToDeviceLocalAndBackThroughOneShotSubmissions) {
   const VkDeviceSize n = 64 * 1024;
   Buffer staging = make_buffer(n, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::upload);
-  Buffer local = make_buffer(
-      n, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-      MemoryUsage::device_local);
+  Buffer local = make_buffer(n, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                             MemoryUsage::device_local);
   Buffer readback = make_buffer(n, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::readback);
   auto data = pattern(n, 3);
   ASSERT_TRUE(staging.write(data.data(), n));

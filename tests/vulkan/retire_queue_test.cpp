@@ -13,7 +13,7 @@ TEST(RetireQueue, DestroysOnlyAfterFramesInFlightHaveCompleted) {
   RetireQueue queue(2);
   std::vector<int> destroyed;
   queue.retire([&] { destroyed.push_back(0); });  // used by frame 0
-  queue.begin_frame();                             // frame 1: frame 0 may still run
+  queue.begin_frame();                            // frame 1: frame 0 may still run
   EXPECT_TRUE(destroyed.empty());
   queue.retire([&] { destroyed.push_back(1); });
   queue.begin_frame();  // frame 2: the app waited on frame 0's fence

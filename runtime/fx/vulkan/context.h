@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,6 +17,14 @@
 #include "fx/vulkan/device_selection.h"
 
 namespace fx::vk {
+
+// One message from the validation layers (or the loader/driver through debug utils).
+struct ValidationMessage {
+  Severity severity = Severity::note;  // error / warning / note (info, verbose)
+  int32_t id_number = 0;
+  std::string id_name;  // e.g. "VUID-vkCmdDraw-None-02699"
+  std::string text;
+};
 
 // Options for Context::headless().
 struct ContextOptions {
@@ -29,6 +38,9 @@ struct ContextOptions {
   // Extra device extensions to enable; missing ones are an error ("vk-extension-missing").
   std::vector<std::string> device_extensions;
   std::string application_name = "fxkit";
+  // Called for each validation message as it is recorded (also while the context is being
+  // destroyed, when leaked objects are reported), from whichever thread triggered it.
+  std::function<void(const ValidationMessage&)> on_validation_message;
 };
 
 // Which optional Vulkan features the context has ENABLED on its device (for a wrapped
@@ -100,14 +112,6 @@ struct DeviceFunctions {
   PFN_vkCmdSetLineRasterizationModeEXT set_line_rasterization_mode = nullptr;
   PFN_vkCmdSetTessellationDomainOriginEXT set_tessellation_domain_origin = nullptr;
   PFN_vkSetDebugUtilsObjectNameEXT set_object_name = nullptr;  // only with validation
-};
-
-// One message from the validation layers (or the loader/driver through debug utils).
-struct ValidationMessage {
-  Severity severity = Severity::note;  // error / warning / note (info, verbose)
-  int32_t id_number = 0;
-  std::string id_name;  // e.g. "VUID-vkCmdDraw-None-02699"
-  std::string text;
 };
 
 class ValidationLog;  // thread-safe message store shared with the messenger callback

@@ -1,0 +1,99 @@
+// fx::vk::ShaderProgram: the shader modules of one pass plus the descriptor set layout and
+// pipeline layout derived from its linked reflection.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fx/compile/program_link.h"
+#include "fx/compile/shader_compiler.h"
+#include "fx/vulkan/context.h"
+
+namespace fx::vk {
+
+// How a program's descriptors are delivered.
+enum class DescriptorMode {
+  // Descriptor sets from per-frame pools; uniform blocks are UNIFORM_BUFFER_DYNAMIC so the
+  // ring offset changes without touching the set.
+  sets,
+  // vkCmdPushDescriptorSetKHR (VK_KHR_push_descriptor); uniform blocks are UNIFORM_BUFFER
+  // with the ring offset written into each push.
+  push,
+};
+
+// One uniform block of the program (set 0).
+struct ProgramUniformBlock {
+  std::string name;
+  uint32_t binding = 0;
+  uint32_t size = 0;  // bytes
+  const UniformBlock* reflection = nullptr;  // members, from the first stage using it
+};
+
+// One texture, sampler or combined image-sampler of the program (set 0).
+struct ProgramImage {
+  std::string name;
+  DescriptorKind kind = DescriptorKind::combined_image_sampler;
+  ImageDim dim = ImageDim::dim_2d;
+  uint32_t binding = 0;
+  uint32_t count = 1;
+};
+
+class ShaderProgram {
+ public:
+  // `stages` must be compiled, linked with link_program (giving `layout`) and outlive the
+  // program (reflection is referenced, not copied). Reports "vk-program-no-vertex-stage",
+  // "vk-descriptor-unsupported" (storage resources, arrays in push mode) and
+  // "vk-call-failed".
+  static std::optional<ShaderProgram> create(const Context& ctx,
+                                             const std::vector<const CompiledShader*>& stages,
+                                             const ProgramLayout& layout, DescriptorMode mode,
+                                             DiagnosticSink& sink);
+
+  ShaderProgram() = default;
+  ShaderProgram(ShaderProgram&& other) noexcept;
+  ShaderProgram& operator=(ShaderProgram&& other) noexcept;
+  ShaderProgram(const ShaderProgram&) = delete;
+  ShaderProgram& operator=(const ShaderProgram&) = delete;
+  ~ShaderProgram() { reset(); }
+
+  // XXH3 over every stage's SPIR-V and entry point (the program's part of a pipeline key).
+  uint64_t hash() const { return hash_; }
+  DescriptorMode descriptor_mode() const { return mode_; }
+  VkDescriptorSetLayout set_layout() const { return set_layout_; }
+  VkPipelineLayout pipeline_layout() const { return pipeline_layout_; }
+  // Shader stage create infos (entry point names point into the program).
+  const std::vector<VkPipelineShaderStageCreateInfo>& stage_infos() const { return stage_infos_; }
+  // Vertex shader inputs with their semantics (vertex attributes).
+  const std::vector<InterfaceVariable>& vertex_inputs() const { return *vertex_inputs_; }
+  // Colour outputs of the fragment stage (0 without a fragment stage).
+  uint32_t color_output_count() const { return color_outputs_; }
+  const std::vector<ProgramUniformBlock>& uniform_blocks() const { return blocks_; }
+  const std::vector<ProgramImage>& images() const { return images_; }
+  // Descriptor counts of the set layout, for pool sizing.
+  uint32_t uniform_descriptor_count() const { return uint32_t(blocks_.size()); }
+
+  void reset();
+
+ private:
+  VkDevice device_ = VK_NULL_HANDLE;
+  uint64_t hash_ = 0;
+  DescriptorMode mode_ = DescriptorMode::sets;
+  std::vector<VkShaderModule> modules_;
+  std::vector<std::string> entry_points_;
+  std::vector<VkPipelineShaderStageCreateInfo> stage_infos_;
+  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
+  const std::vector<InterfaceVariable>* vertex_inputs_ = nullptr;
+  uint32_t color_outputs_ = 0;
+  std::vector<ProgramUniformBlock> blocks_;
+  std::vector<ProgramImage> images_;
+};
+
+// VkShaderStageFlagBits of a shader stage.
+VkShaderStageFlagBits to_vk_stage(ShaderStage stage);
+// VkDescriptorType of a program binding in `mode`.
+VkDescriptorType to_vk_descriptor(DescriptorKind kind, DescriptorMode mode);
+
+}  // namespace fx::vk
