@@ -1,0 +1,146 @@
+// Parameter values of one effect instance: index-based handles, O(1) typed set/get,
+// lookup by name and semantic, defaults applied at creation, dirty tracking per uniform
+// block and packing into block bytes with D3D matrix rules; `shared` parameters live in a
+// ParameterPool several stores reference (as D3DX effect pools). See docs/parameters.md.
+// Stable: Param, ParamStatus, ParameterStore's public functions, ParameterPool, remap.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "fx/model/effect_model.h"
+
+namespace fx {
+
+// A handle to a parameter, an array element or a struct member of one store. `generation`
+// is the store generation it was issued in; handles from before a remap() are translated.
+struct Param {
+  uint32_t index = kNoIndex;
+  uint32_t generation = 0;
+  bool valid() const { return index != kNoIndex; }
+  friend bool operator==(Param, Param) = default;
+};
+
+// Result of a set/get. `removed` is a warning (the parameter went away in a reload; the
+// call did nothing); the others are errors. Never UB: a bad call changes nothing.
+struct ParamStatus {
+  enum Code : uint8_t { ok, invalid_handle, removed, type_mismatch, size_mismatch, not_found };
+  Code code = ok;
+  std::string message;
+  explicit operator bool() const { return code == ok; }
+};
+
+// How the app's 16 floats are ordered: `row_major` = m[r][c] at r*4+c (D3DX, and the
+// memory of a glm::mat4 G used as G*v, which is HLSL's M in mul(v, M)).
+enum class HostMatrixOrder : uint8_t { row_major, column_major };
+
+// Placement of one parameter (or member path `light.dir`, `bones[3]`) in a uniform block.
+struct BlockMemberLayout {
+  std::string name;
+  uint32_t offset = 0;         // bytes
+  uint32_t size = 0;           // bytes, arrays included
+  uint32_t array_stride = 0;   // bytes between array elements (0: not an array)
+  uint32_t matrix_stride = 16; // bytes between registers of a matrix
+  MatrixOrder order = MatrixOrder::column_major;  // HLSL meaning (see docs/parameters.md)
+};
+
+// Storage of `shared` parameters, referenced by every store created with it. Matching is
+// by name and type; a store whose shared parameter has another type gets its own storage
+// and a `shared-type-mismatch` diagnostic.
+class ParameterPool {
+ public:
+  ParameterPool() = default;
+  ParameterPool(const ParameterPool&) = delete;
+  ParameterPool& operator=(const ParameterPool&) = delete;
+  // Number of shared parameters held.
+  size_t size() const { return entries_.size(); }
+
+ private:
+  friend class ParameterStore;
+  struct Entry {
+    std::string name;
+    Type type;
+    uint32_t offset = 0;   // into words_
+    uint32_t count = 0;
+    uint64_t version = 1;  // bumped on every write, for the stores' dirty tracking
+  };
+  std::vector<Entry> entries_;
+  std::unordered_map<std::string, uint32_t> by_name_;
+  std::vector<uint32_t> words_;
+};
+
+class ParameterStore {
+ public:
+  // Creates the values of `model`'s parameters (defaults applied). `shared` ones go to
+  // `pool` when given (the first store to declare one sets its default).
+  explicit ParameterStore(const EffectModel& model, ParameterPool* pool = nullptr, DiagnosticSink* diags = nullptr);
+  ParameterStore(const ParameterStore&) = delete;
+  ParameterStore& operator=(const ParameterStore&) = delete;
+  ParameterStore(ParameterStore&&) noexcept;
+  ParameterStore& operator=(ParameterStore&&) noexcept;
+  ~ParameterStore();
+
+  // Lookup (top-level parameters). find: exact name; by_semantic: case-insensitive.
+  Param find(std::string_view name) const;
+  Param by_semantic(std::string_view semantic) const;
+  // A struct member / array element of `p`; invalid Param when there is none.
+  Param member(Param p, std::string_view name) const;
+  Param element(Param p, uint32_t i) const;
+  // The handle as the current generation sees it (translates handles from before remap()).
+  Param current(Param p) const;
+
+  // Type, name ("light.dir", "bones[3]") of a handle; nullptr / "" when invalid.
+  const Type* type(Param p) const;
+  std::string name(Param p) const;
+  size_t parameter_count() const;
+
+  // Setters: the value's shape must match the handle's type exactly (a float3 takes 3
+  // floats; an array of 4 float4 takes 16; int/bool handles take ints/bools; float handles
+  // take floats). bool and int handles also accept the other integer-like kind.
+  ParamStatus set(Param p, float v);
+  ParamStatus set(Param p, int32_t v);
+  ParamStatus set(Param p, bool v);
+  ParamStatus set(Param p, std::span<const float> v);
+  ParamStatus set(Param p, std::span<const int32_t> v);
+  // A matrix (or matrix array) given as 16-float host matrices (or rows*cols).
+  ParamStatus set_matrix(Param p, std::span<const float> v, HostMatrixOrder order = HostMatrixOrder::row_major);
+  ParamStatus set_string(Param p, std::string_view v);
+  // Getters fill `out` (its size must match the handle's component count).
+  ParamStatus get(Param p, float& out) const;
+  ParamStatus get(Param p, int32_t& out) const;
+  ParamStatus get(Param p, bool& out) const;
+  ParamStatus get(Param p, std::span<float> out) const;
+  ParamStatus get(Param p, std::span<int32_t> out) const;
+  ParamStatus get_matrix(Param p, std::span<float> out, HostMatrixOrder order = HostMatrixOrder::row_major) const;
+  ParamStatus get_string(Param p, std::string& out) const;
+  // Restores the default of `p` (zero when it has none).
+  ParamStatus reset(Param p);
+
+  // Uniform blocks (ids chosen by the caller, e.g. reflection's block index). A member
+  // name that names no parameter is skipped and listed in the result's message.
+  ParamStatus bind_layout(uint32_t block, std::span<const BlockMemberLayout> members, uint32_t block_size);
+  // True when a parameter in `block` changed since the last write_block.
+  bool dirty(uint32_t block) const;
+  // Packs the block's parameters into `out` (at least the bound block size) and clears
+  // its dirty flag. Bytes no parameter covers are left untouched.
+  ParamStatus write_block(uint32_t block, std::span<uint8_t> out);
+
+  uint32_t generation() const;
+
+ private:
+  friend void remap(const ParameterStore& old_store, ParameterStore& new_store);
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// After a reload: copies every value of `old_store` whose parameter still exists in
+// `new_store` with the same name and type, and makes handles issued by `old_store`
+// (any generation) valid on `new_store`; handles of removed parameters become inert
+// (calls return ParamStatus::removed naming the parameter).
+void remap(const ParameterStore& old_store, ParameterStore& new_store);
+
+}  // namespace fx
