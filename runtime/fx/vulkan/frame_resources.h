@@ -1,0 +1,76 @@
+// fx::vk::FrameResources: per-frame-in-flight transient memory: a uniform ring buffer
+// (host-visible, persistently mapped) and a descriptor pool, both recycled when the frame
+// that used them has retired.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <optional>
+#include <vector>
+
+#include "fx/vulkan/buffer.h"
+#include "fx/vulkan/context.h"
+
+namespace fx::vk {
+
+// Sizes of what one frame may use.
+struct FrameResourcesDesc {
+  uint32_t frames_in_flight = 2;
+  VkDeviceSize uniform_bytes_per_frame = 256 * 1024;
+  uint32_t sets_per_frame = 256;
+  uint32_t descriptors_per_type = 1024;  // per descriptor type, per frame
+};
+
+// A slice of the ring: where uniform data was written.
+struct UniformAllocation {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  uint32_t offset = 0;  // aligned to minUniformBufferOffsetAlignment
+  void* mapped = nullptr;
+};
+
+class FrameResources {
+ public:
+  // Reports allocation failures.
+  static std::optional<FrameResources> create(const Context& ctx, const FrameResourcesDesc& desc,
+                                              DiagnosticSink& sink);
+
+  FrameResources() = default;
+  FrameResources(FrameResources&& other) noexcept { *this = std::move(other); }
+  FrameResources& operator=(FrameResources&& other) noexcept;
+  FrameResources(const FrameResources&) = delete;
+  FrameResources& operator=(const FrameResources&) = delete;
+  ~FrameResources();
+
+  // Starts the next frame. Call once the GPU has finished the frame that is
+  // `frames_in_flight` older (its fence waited): its ring slice and pool are reused.
+  void begin_frame();
+  // Frame counter (0 before the first begin_frame()).
+  uint64_t frame() const { return frame_; }
+  uint32_t frames_in_flight() const { return frames_in_flight_; }
+  // Whether data written (or a set allocated) in frame `written` is still intact now.
+  bool still_valid(uint64_t written) const {
+    return written != 0 && written <= frame_ && frame_ - written < frames_in_flight_;
+  }
+
+  // Copies `bytes` into this frame's ring slice. "vk-uniform-ring-full" when the slice has
+  // no room (raise FrameResourcesDesc::uniform_bytes_per_frame).
+  std::optional<UniformAllocation> upload_uniform(const void* data, uint32_t bytes,
+                                                  DiagnosticSink& sink);
+  // A descriptor set from this frame's pool; null and "vk-descriptor-pool-full" when empty.
+  VkDescriptorSet allocate_set(VkDescriptorSetLayout layout, DiagnosticSink& sink);
+
+  VkBuffer ring_buffer() const { return ring_.handle(); }
+  uint64_t uniform_bytes_uploaded() const { return bytes_uploaded_; }
+  uint64_t sets_allocated() const { return sets_allocated_; }
+
+ private:
+  const Context* ctx_ = nullptr;
+  Buffer ring_;
+  std::vector<VkDescriptorPool> pools_;
+  uint32_t frames_in_flight_ = 0;
+  VkDeviceSize slice_ = 0, alignment_ = 256;
+  VkDeviceSize head_ = 0;  // within the current slice
+  uint64_t frame_ = 0;
+  uint64_t bytes_uploaded_ = 0, sets_allocated_ = 0;
+};
+
+}  // namespace fx::vk

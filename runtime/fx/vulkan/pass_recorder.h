@@ -1,0 +1,79 @@
+// fx::vk::PassRecorder: applies passes into the application's command buffer: binds the
+// pipeline, records dynamic state and binds descriptors (uniform ring offsets), skipping
+// anything identical to what the previous pass left bound. The application draws.
+//
+//   recorder.begin(cmd, formats, viewport, scissor);   // inside the app's vkCmdBeginRendering
+//   for (pass : technique) { recorder.apply(pass, sink); app_draw(cmd); }
+//   recorder.end();
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <optional>
+#include <vector>
+
+#include "fx/vulkan/frame_resources.h"
+#include "fx/vulkan/pass_resources.h"
+#include "fx/vulkan/pipeline_cache.h"
+
+namespace fx::vk {
+
+// Everything apply() needs for one pass.
+struct PassDesc {
+  const ShaderProgram* program = nullptr;
+  PipelineState state;
+  const VertexInput* vertex_input = nullptr;
+  PassResources* resources = nullptr;  // its program must be `program`
+};
+
+// What the recorder recorded (and skipped), for tests and benchmarks.
+struct ApplyStats {
+  uint64_t passes = 0;
+  uint64_t pipeline_binds = 0;
+  uint64_t dynamic_state_calls = 0;  // vkCmdSet* calls
+  uint64_t descriptor_binds = 0;     // vkCmdBindDescriptorSets
+  uint64_t descriptor_pushes = 0;    // vkCmdPushDescriptorSetKHR
+  uint64_t descriptor_writes = 0;    // vkUpdateDescriptorSets calls
+  uint64_t uniform_uploads = 0;      // blocks copied into the ring
+};
+
+class PassRecorder {
+ public:
+  // `dynamic` chooses the pipeline path: DynamicStateSet::from_features(ctx.features()) or
+  // DynamicStateSet::none(). Everything referenced must outlive the recorder.
+  PassRecorder(const Context& ctx, PipelineCache& pipelines, FrameResources& frames,
+               DynamicStateSet dynamic);
+
+  // Starts recording passes into `cmd` for attachments of `formats`; sets viewport and scissor.
+  void begin(VkCommandBuffer cmd, const RenderingFormats& formats, const VkViewport& viewport,
+             const VkRect2D& scissor);
+  // Binds what `pass` needs. False (with diagnostics) if a pipeline, upload or descriptor
+  // could not be made, or a texture is unbound ("vk-texture-unbound"); nothing is drawn then.
+  bool apply(const PassDesc& pass, DiagnosticSink& sink);
+  // Ends the sequence; the next begin() assumes nothing is bound.
+  void end();
+
+  const ApplyStats& stats() const { return stats_; }
+  void reset_stats() { stats_ = {}; }
+  const DynamicStateSet& dynamic() const { return dynamic_; }
+
+ private:
+  void record_dynamic_state(const PipelineState& s, bool all);
+  bool bind_descriptors(const PassDesc& pass, DiagnosticSink& sink);
+
+  const Context* ctx_;
+  PipelineCache* pipelines_;
+  FrameResources* frames_;
+  DynamicStateSet dynamic_;
+  VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+  RenderingFormats formats_;
+  // What is bound now.
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  std::optional<PipelineState> state_;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  std::vector<uint32_t> offsets_;
+  const PassResources* pushed_ = nullptr;
+  ApplyStats stats_;
+};
+
+}  // namespace fx::vk

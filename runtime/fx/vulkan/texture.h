@@ -1,0 +1,60 @@
+// fx::vk::Texture: a sampled image bound to effect parameters: uploaded from an fx::Image
+// (PNG), from six fx::Images (cube), from a baked fx::shading::Table (1D/2D/3D lookup
+// tables), or the application's VkImageView borrowed without ownership.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <optional>
+
+#include "fx/image.h"
+#include "fx/shading/table.h"
+#include "fx/vulkan/context.h"
+#include "fx/vulkan/image.h"
+
+namespace fx::vk {
+
+// Colour encoding of 8-bit image data.
+enum class ColorSpace { linear, srgb };
+
+class Texture {
+ public:
+  // A 2D texture from an 8-bit image (1..4 channels; 3 channels are padded to RGBA).
+  // `srgb` stores it as an SRGB format so sampling linearises it.
+  static std::optional<Texture> from_image(const Context& ctx, const fx::Image& image,
+                                           ColorSpace space, DiagnosticSink& sink);
+  // A cube texture from six square faces in +X, -X, +Y, -Y, +Z, -Z order.
+  static std::optional<Texture> cube_from_images(const Context& ctx,
+                                                 const std::array<const fx::Image*, 6>& faces,
+                                                 ColorSpace space, DiagnosticSink& sink);
+  // A 2D (depth 1) or 3D texture from a baked table; unorm8 tables become R8/RG8/RGBA8,
+  // float32 tables R32/RG32/RGBA32_SFLOAT. "vk-format-unsupported" if the device cannot
+  // sample the format with linear filtering.
+  static std::optional<Texture> from_table(const Context& ctx, const fx::shading::Table& table,
+                                           DiagnosticSink& sink);
+  // Borrows the application's view: the texture never destroys it. `layout` is the layout
+  // the image will be in when the pass samples it.
+  static Texture wrap(VkImageView view, VkImageLayout layout, ImageKind kind);
+
+  Texture() = default;
+  Texture(Texture&&) noexcept = default;
+  Texture& operator=(Texture&&) noexcept = default;
+
+  VkImageView view() const { return owned_ ? owned_.view() : borrowed_view_; }
+  VkImageLayout layout() const { return layout_; }
+  ImageKind kind() const { return kind_; }
+  bool owns_image() const { return bool(owned_); }
+  explicit operator bool() const { return view() != VK_NULL_HANDLE; }
+
+ private:
+  // Creates the image and copies `layers` slices of `bytes` into it.
+  static std::optional<Texture> upload(const Context& ctx, const ImageDesc& desc,
+                                       const uint8_t* bytes, size_t byte_count,
+                                       DiagnosticSink& sink);
+  Image owned_;
+  VkImageView borrowed_view_ = VK_NULL_HANDLE;
+  VkImageLayout layout_ = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  ImageKind kind_ = ImageKind::image2d;
+};
+
+}  // namespace fx::vk

@@ -1,0 +1,54 @@
+// Vertex layouts declared by the application, matched to a vertex shader's input semantics.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fx/compile/shader_reflection.h"
+#include "fx/diagnostic.h"
+
+namespace fx::vk {
+
+// One attribute the application's vertex buffers provide.
+struct VertexAttribute {
+  std::string semantic;  // "POSITION", "NORMAL", "TEXCOORD0" (TEXCOORD == TEXCOORD0)
+  VkFormat format = VK_FORMAT_R32G32B32_SFLOAT;
+  uint32_t offset = 0;   // bytes from the start of the vertex
+  uint32_t binding = 0;  // vertex buffer binding
+};
+
+// One vertex buffer binding.
+struct VertexBinding {
+  uint32_t binding = 0;
+  uint32_t stride = 0;
+  VkVertexInputRate rate = VK_VERTEX_INPUT_RATE_VERTEX;
+};
+
+// What the application's geometry looks like.
+struct VertexLayout {
+  std::vector<VertexAttribute> attributes;
+  std::vector<VertexBinding> bindings;
+};
+
+// A layout matched to one vertex shader: the exact Vulkan vertex input state.
+struct VertexInput {
+  std::vector<VkVertexInputAttributeDescription> attributes;  // one per shader input
+  std::vector<VkVertexInputBindingDescription> bindings;
+  uint64_t hash = 0;  // of the descriptions (part of a pipeline key)
+};
+
+// Canonical semantic: upper case, a trailing index of 0 dropped ("texcoord0" -> "TEXCOORD").
+std::string canonical_semantic(std::string_view semantic);
+
+// Matches every shader input to an attribute by semantic (GLSL inputs, which have none,
+// match by variable name). A shader input with no attribute is "vk-vertex-attribute-missing"
+// naming the semantic and the attributes on offer; attributes the shader does not read are
+// left out. A binding referenced but not declared is "vk-vertex-binding-missing".
+std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout,
+                                               const std::vector<InterfaceVariable>& inputs,
+                                               DiagnosticSink& sink);
+
+}  // namespace fx::vk

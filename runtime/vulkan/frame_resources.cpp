@@ -1,0 +1,105 @@
+// FrameResources: uniform ring slices and descriptor pools per frame in flight.
+#include "fx/vulkan/frame_resources.h"
+
+#include <cstring>
+
+#include "vk_check.h"
+
+namespace fx::vk {
+
+std::optional<FrameResources> FrameResources::create(const Context& ctx,
+                                                     const FrameResourcesDesc& desc,
+                                                     DiagnosticSink& sink) {
+  FrameResources f;
+  f.ctx_ = &ctx;
+  f.frames_in_flight_ = std::max(1u, desc.frames_in_flight);
+  f.alignment_ = std::max<VkDeviceSize>(1, ctx.info().limits.minUniformBufferOffsetAlignment);
+  f.slice_ = (desc.uniform_bytes_per_frame + f.alignment_ - 1) / f.alignment_ * f.alignment_;
+  std::optional<Buffer> ring =
+      Buffer::create(ctx,
+                     {f.slice_ * f.frames_in_flight_, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                      MemoryUsage::upload, "fxkit uniform ring"},
+                     sink);
+  if (!ring) return std::nullopt;
+  f.ring_ = std::move(*ring);
+  const VkDescriptorPoolSize sizes[] = {
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, desc.descriptors_per_type},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, desc.descriptors_per_type},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, desc.descriptors_per_type},
+      {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, desc.descriptors_per_type},
+      {VK_DESCRIPTOR_TYPE_SAMPLER, desc.descriptors_per_type},
+  };
+  for (uint32_t i = 0; i < f.frames_in_flight_; ++i) {
+    auto info = structure<VkDescriptorPoolCreateInfo>(
+        VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
+    info.maxSets = desc.sets_per_frame;
+    info.poolSizeCount = uint32_t(std::size(sizes));
+    info.pPoolSizes = sizes;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    if (!check(vkCreateDescriptorPool(ctx.device(), &info, nullptr, &pool), sink,
+               "vkCreateDescriptorPool"))
+      return std::nullopt;
+    f.pools_.push_back(pool);
+  }
+  return f;
+}
+
+FrameResources& FrameResources::operator=(FrameResources&& o) noexcept {
+  if (this == &o) return *this;
+  for (VkDescriptorPool pool : pools_) vkDestroyDescriptorPool(ctx_->device(), pool, nullptr);
+  ctx_ = o.ctx_;
+  ring_ = std::move(o.ring_);
+  pools_ = std::move(o.pools_);
+  o.pools_.clear();
+  frames_in_flight_ = o.frames_in_flight_;
+  slice_ = o.slice_, alignment_ = o.alignment_, head_ = o.head_, frame_ = o.frame_;
+  bytes_uploaded_ = o.bytes_uploaded_, sets_allocated_ = o.sets_allocated_;
+  return *this;
+}
+
+FrameResources::~FrameResources() {
+  for (VkDescriptorPool pool : pools_) vkDestroyDescriptorPool(ctx_->device(), pool, nullptr);
+  pools_.clear();
+}
+
+void FrameResources::begin_frame() {
+  ++frame_;
+  head_ = 0;
+  vkResetDescriptorPool(ctx_->device(), pools_[frame_ % frames_in_flight_], 0);
+}
+
+std::optional<UniformAllocation> FrameResources::upload_uniform(const void* data, uint32_t bytes,
+                                                                DiagnosticSink& sink) {
+  const VkDeviceSize start = (head_ + alignment_ - 1) / alignment_ * alignment_;
+  if (start + bytes > slice_) {
+    sink.error("vk-uniform-ring-full", {},
+               "uniform data of frame " + std::to_string(frame_) + " exceeds the " +
+                   std::to_string(slice_) + "-byte ring slice");
+    return std::nullopt;
+  }
+  const VkDeviceSize offset = slice_ * (frame_ % frames_in_flight_) + start;
+  auto* dst = static_cast<uint8_t*>(ring_.mapped()) + offset;
+  std::memcpy(dst, data, bytes);
+  ring_.flush(offset, bytes);
+  head_ = start + bytes;
+  bytes_uploaded_ += bytes;
+  return UniformAllocation{ring_.handle(), uint32_t(offset), dst};
+}
+
+VkDescriptorSet FrameResources::allocate_set(VkDescriptorSetLayout layout, DiagnosticSink& sink) {
+  auto info = structure<VkDescriptorSetAllocateInfo>(
+      VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+  info.descriptorPool = pools_[frame_ % frames_in_flight_];
+  info.descriptorSetCount = 1;
+  info.pSetLayouts = &layout;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  if (vkAllocateDescriptorSets(ctx_->device(), &info, &set) != VK_SUCCESS) {
+    sink.error("vk-descriptor-pool-full", {},
+               "the descriptor pool of frame " + std::to_string(frame_) + " is exhausted");
+    return VK_NULL_HANDLE;
+  }
+  ++sets_allocated_;
+  return set;
+}
+
+}  // namespace fx::vk

@@ -1,0 +1,157 @@
+// Texture uploads through a staging buffer and a blocking one-shot submission (load time).
+#include "fx/vulkan/texture.h"
+
+#include <cstring>
+#include <vector>
+
+#include "fx/vulkan/buffer.h"
+#include "fx/vulkan/one_shot.h"
+
+namespace fx::vk {
+
+namespace {
+
+VkFormat unorm_format(uint32_t channels, ColorSpace space) {
+  const bool srgb = space == ColorSpace::srgb;
+  switch (channels) {
+    case 1: return srgb ? VK_FORMAT_R8_SRGB : VK_FORMAT_R8_UNORM;
+    case 2: return srgb ? VK_FORMAT_R8G8_SRGB : VK_FORMAT_R8G8_UNORM;
+    default: return srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
+  }
+}
+
+// Pixels with 3 channels padded to 4 (opaque alpha): three-channel formats are rarely
+// sampleable.
+std::vector<uint8_t> gpu_pixels(const fx::Image& image) {
+  if (image.channels != 3) return image.pixels;
+  std::vector<uint8_t> out(size_t(image.width) * image.height * 4);
+  for (size_t i = 0, n = size_t(image.width) * image.height; i < n; ++i) {
+    std::memcpy(&out[i * 4], &image.pixels[i * 3], 3);
+    out[i * 4 + 3] = 255;
+  }
+  return out;
+}
+
+bool check_image(const fx::Image& image, DiagnosticSink& sink) {
+  if (image.empty() || image.channels < 1 || image.channels > 4 ||
+      image.pixels.size() != size_t(image.width) * image.height * image.channels) {
+    sink.error("vk-texture-invalid", {}, "texture image is empty or its pixel data is malformed");
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<Texture> Texture::upload(const Context& ctx, const ImageDesc& desc,
+                                       const uint8_t* bytes, size_t byte_count,
+                                       DiagnosticSink& sink) {
+  if (!ctx.supports_format(desc.format, VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
+                                            VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT)) {
+    sink.error("vk-format-unsupported", {},
+               "the device cannot sample format " + std::to_string(int(desc.format)) +
+                   " with linear filtering");
+    return std::nullopt;
+  }
+  std::optional<Image> image = Image::create(ctx, desc, sink);
+  if (!image) return std::nullopt;
+  std::optional<Buffer> staging = Buffer::create(
+      ctx, {byte_count, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::upload, "texture staging"},
+      sink);
+  if (!staging || !staging->write(bytes, byte_count)) return std::nullopt;
+  Image& img = *image;
+  const bool ok = submit_and_wait(ctx, [&](VkCommandBuffer cmd) {
+    img.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, img.desc().array_layers};
+    copy.imageExtent = img.extent();
+    vkCmdCopyBufferToImage(cmd, staging->handle(), img.handle(),
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+    img.transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  }, sink);
+  if (!ok) return std::nullopt;
+  Texture t;
+  t.owned_ = std::move(img);
+  t.kind_ = desc.kind;
+  return t;
+}
+
+std::optional<Texture> Texture::from_image(const Context& ctx, const fx::Image& image,
+                                           ColorSpace space, DiagnosticSink& sink) {
+  if (!check_image(image, sink)) return std::nullopt;
+  ImageDesc desc;
+  desc.format = unorm_format(image.channels, space);
+  desc.width = image.width;
+  desc.height = image.height;
+  desc.debug_name = "fxkit texture";
+  std::vector<uint8_t> pixels = gpu_pixels(image);
+  return upload(ctx, desc, pixels.data(), pixels.size(), sink);
+}
+
+std::optional<Texture> Texture::cube_from_images(const Context& ctx,
+                                                 const std::array<const fx::Image*, 6>& faces,
+                                                 ColorSpace space, DiagnosticSink& sink) {
+  for (const fx::Image* f : faces) {
+    if (!f || !check_image(*f, sink)) return std::nullopt;
+    if (f->width != f->height || f->width != faces[0]->width || f->channels != faces[0]->channels) {
+      sink.error("vk-texture-invalid", {}, "cube faces must be square and all the same size");
+      return std::nullopt;
+    }
+  }
+  ImageDesc desc;
+  desc.kind = ImageKind::cube;
+  desc.format = unorm_format(faces[0]->channels, space);
+  desc.width = desc.height = faces[0]->width;
+  desc.debug_name = "fxkit cube texture";
+  std::vector<uint8_t> all;
+  for (const fx::Image* f : faces) {
+    std::vector<uint8_t> p = gpu_pixels(*f);
+    all.insert(all.end(), p.begin(), p.end());
+  }
+  return upload(ctx, desc, all.data(), all.size(), sink);
+}
+
+std::optional<Texture> Texture::from_table(const Context& ctx, const fx::shading::Table& table,
+                                           DiagnosticSink& sink) {
+  if (table.width < 1 || table.height < 1 || table.depth < 1 || table.channels < 1 ||
+      table.channels > 4 || table.value_count() == 0) {
+    sink.error("vk-texture-invalid", {}, "lookup table has no texels");
+    return std::nullopt;
+  }
+  ImageDesc desc;
+  desc.kind = table.depth > 1 ? ImageKind::image3d : ImageKind::image2d;
+  desc.width = uint32_t(table.width);
+  desc.height = uint32_t(table.height);
+  desc.depth = uint32_t(table.depth);
+  desc.debug_name = "fxkit lookup table";
+  const uint32_t gpu_channels = table.channels == 3 ? 4 : uint32_t(table.channels);
+  const size_t texels = size_t(table.width) * table.height * table.depth;
+  const bool unorm = table.format == fx::shading::TableFormat::unorm8;
+  const VkFormat float_formats[] = {VK_FORMAT_R32_SFLOAT, VK_FORMAT_R32G32_SFLOAT,
+                                    VK_FORMAT_R32G32B32A32_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT};
+  desc.format = unorm ? unorm_format(gpu_channels, ColorSpace::linear) : float_formats[gpu_channels - 1];
+  const size_t value_bytes = unorm ? 1 : 4;
+  std::vector<uint8_t> bytes(texels * gpu_channels * value_bytes);
+  for (size_t t = 0; t < texels; ++t)
+    for (uint32_t c = 0; c < gpu_channels; ++c) {
+      const bool real = c < uint32_t(table.channels);
+      const size_t src = t * table.channels + c;
+      uint8_t* dst = &bytes[(t * gpu_channels + c) * value_bytes];
+      if (unorm) *dst = real ? table.unorm8[src] : 255;
+      else {
+        const float v = real ? table.float32[src] : 1.0f;
+        std::memcpy(dst, &v, 4);
+      }
+    }
+  return upload(ctx, desc, bytes.data(), bytes.size(), sink);
+}
+
+Texture Texture::wrap(VkImageView view, VkImageLayout layout, ImageKind kind) {
+  Texture t;
+  t.borrowed_view_ = view;
+  t.layout_ = layout;
+  t.kind_ = kind;
+  return t;
+}
+
+}  // namespace fx::vk

@@ -1,0 +1,76 @@
+// Vertex layout matching by semantic.
+#include "fx/vulkan/vertex_layout.h"
+
+#include <xxhash.h>
+
+#include <algorithm>
+
+namespace fx::vk {
+
+std::string canonical_semantic(std::string_view semantic) {
+  std::string s(semantic);
+  for (char& c : s)
+    if (c >= 'a' && c <= 'z') c = char(c - 'a' + 'A');
+  size_t digits = s.size();
+  while (digits > 0 && s[digits - 1] >= '0' && s[digits - 1] <= '9') --digits;
+  if (digits < s.size() && digits > 0 && s.find_first_not_of('0', digits) == std::string::npos)
+    s.resize(digits);
+  return s;
+}
+
+std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout,
+                                               const std::vector<InterfaceVariable>& inputs,
+                                               DiagnosticSink& sink) {
+  VertexInput out;
+  bool ok = true;
+  std::vector<bool> binding_used(layout.bindings.size(), false);
+  for (const InterfaceVariable& in : inputs) {
+    const std::string want = canonical_semantic(in.semantic.empty() ? in.name : in.semantic);
+    auto it = std::find_if(layout.attributes.begin(), layout.attributes.end(),
+                           [&](const VertexAttribute& a) { return canonical_semantic(a.semantic) == want; });
+    if (it == layout.attributes.end()) {
+      std::string offered;
+      for (const VertexAttribute& a : layout.attributes)
+        offered += (offered.empty() ? "" : ", ") + a.semantic;
+      sink.error("vk-vertex-attribute-missing", {},
+                 "the vertex shader reads " + want + " ('" + in.name + "', location " +
+                     std::to_string(in.location) + ") but the vertex layout provides " +
+                     (offered.empty() ? std::string("no attributes") : offered));
+      ok = false;
+      continue;
+    }
+    auto b = std::find_if(layout.bindings.begin(), layout.bindings.end(),
+                          [&](const VertexBinding& vb) { return vb.binding == it->binding; });
+    if (b == layout.bindings.end()) {
+      sink.error("vk-vertex-binding-missing", {},
+                 "attribute " + it->semantic + " uses vertex binding " +
+                     std::to_string(it->binding) + " which the layout does not declare");
+      ok = false;
+      continue;
+    }
+    binding_used[size_t(b - layout.bindings.begin())] = true;
+    out.attributes.push_back({in.location, it->binding, it->format, it->offset});
+  }
+  if (!ok) return std::nullopt;
+  for (size_t i = 0; i < layout.bindings.size(); ++i)
+    if (binding_used[i])
+      out.bindings.push_back(
+          {layout.bindings[i].binding, layout.bindings[i].stride, layout.bindings[i].rate});
+  std::sort(out.attributes.begin(), out.attributes.end(),
+            [](const auto& a, const auto& b) { return a.location < b.location; });
+  XXH3_state_t* hs = XXH3_createState();
+  XXH3_64bits_reset(hs);
+  for (const auto& a : out.attributes) {
+    const uint32_t w[4] = {a.location, a.binding, uint32_t(a.format), a.offset};
+    XXH3_64bits_update(hs, w, sizeof w);
+  }
+  for (const auto& b : out.bindings) {
+    const uint32_t w[3] = {b.binding, b.stride, uint32_t(b.inputRate)};
+    XXH3_64bits_update(hs, w, sizeof w);
+  }
+  out.hash = XXH3_64bits_digest(hs);
+  XXH3_freeState(hs);
+  return out;
+}
+
+}  // namespace fx::vk
