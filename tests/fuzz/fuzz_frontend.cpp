@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "fx/diagnostic_render.h"
 #include "fx/frontend.h"
 
