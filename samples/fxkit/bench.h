@@ -10,8 +10,11 @@ struct BenchArgs {
   double size_mb = 10;  // frontend: size of the generated effect
   int repeats = 5;
   bool json = false;
+  std::string effects_dir = "effects";  // compile: the effects to load
 };
 
 int bench_frontend(const BenchArgs& args);
+// `fxkit bench compile`: effect load time by phase, overhead vs glslang, cached reload.
+int bench_compile(const BenchArgs& args);
 
 }  // namespace fxkit

@@ -32,6 +32,10 @@ int main(int argc, char** argv) {
   fxkit::Runner run;
   fxkit::register_check(app, run);
   fxkit::register_bench(app, run);
+#ifdef FXKIT_HAS_RUNTIME
+  fxkit::register_compile(app, run);
+  fxkit::register_info(app, run);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,99 @@
+#include "fx/compile/effect_programs.h"
+
+#include <chrono>
+
+#include "fx/compile/spirv_cache.h"
+
+namespace fx {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+}  // namespace
+
+const StageProgram* PassProgram::find(ShaderStage stage) const {
+  for (const StageProgram& s : stages)
+    if (s.stage == stage) return &s;
+  return nullptr;
+}
+
+EffectPrograms::EffectPrograms(const EffectUnits& units, const ShaderCompiler& compiler,
+                               const SourceManager& sm)
+    : units_(units), compiler_(compiler), sm_(sm) {
+  programs_.resize(units_.passes().size());
+}
+
+EffectPrograms::~EffectPrograms() = default;
+
+bool EffectPrograms::is_compiled(const EffectPass& pass) const {
+  size_t i = static_cast<size_t>(&pass - units_.passes().data());
+  return i < programs_.size() && programs_[i] != nullptr;
+}
+
+const PassProgram* EffectPrograms::program(std::string_view technique, std::string_view pass) {
+  const EffectPass* p = units_.find(technique, pass);
+  return p ? &program(*p) : nullptr;
+}
+
+StageProgram EffectPrograms::compile_stage(const PassStage& stage, TranslationUnit unit) {
+  StageProgram out;
+  out.stage = stage.stage;
+  Clock::time_point start = Clock::now();
+  std::string key = spirv_cache_key(unit, compiler_.options()).hex();
+  if (auto it = memo_.find(key); it != memo_.end()) {
+    out.shader = it->second.shader;
+    out.diagnostics = it->second.diagnostics;
+    out.reused = true;
+    ++stats_.stages_reused;
+  } else {
+    DiagnosticSink sink;
+    out.shader = compile_and_report(compiler_, unit, resolver_for(sm_), sink);
+    if (!out.shader.ok && out.shader.messages.empty())
+      sink.error("shader-compile-error", stage.range, out.shader.info_log);
+    out.diagnostics = sink.diagnostics();
+    ++stats_.stages_compiled;
+    stats_.compile_ms += out.shader.total_ms;
+    if (!out.shader.from_cache) stats_.glslang_ms += out.shader.parse_ms + out.shader.link_ms;
+    memo_.emplace(std::move(key), Memo{out.shader, out.diagnostics});
+  }
+  out.unit = std::move(unit);
+  out.ms = ms_since(start);
+  return out;
+}
+
+const PassProgram& EffectPrograms::program(const EffectPass& pass) {
+  size_t index = static_cast<size_t>(&pass - units_.passes().data());
+  std::unique_ptr<PassProgram>& slot = programs_.at(index);
+  if (slot) return *slot;
+  slot = std::make_unique<PassProgram>();
+  PassProgram& p = *slot;
+  p.pass = &pass;
+  p.unsupported = pass.unsupported;
+  bool all_ok = true;
+  for (const PassStage& stage : pass.stages) {
+    std::optional<TranslationUnit> unit = units_.unit(stage);
+    if (!unit) {
+      p.unsupported.push_back(std::string(to_string(stage.stage)) + " stage: " + stage.unsupported);
+      continue;
+    }
+    p.stages.push_back(compile_stage(stage, std::move(*unit)));
+    all_ok = all_ok && p.stages.back().shader.ok;
+  }
+  if (all_ok && !p.stages.empty()) {
+    Clock::time_point start = Clock::now();
+    std::vector<CompiledShader*> shaders;
+    for (StageProgram& s : p.stages) shaders.push_back(&s.shader);
+    DiagnosticSink sink;
+    p.layout = link_program(shaders, sink);
+    p.diagnostics = sink.diagnostics();
+    p.compiled = !sink.has_errors();
+    p.link_ms = ms_since(start);
+    stats_.link_ms += p.link_ms;
+  }
+  return p;
+}
+
+}  // namespace fx

@@ -1,0 +1,100 @@
+#include "effect_shader_text.h"
+
+#include <cctype>
+
+namespace fx::detail {
+namespace {
+
+// Up to this many blank lines are written instead of a #line directive.
+constexpr uint32_t kMaxBlankLines = 8;
+
+bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+}  // namespace
+
+std::string line_directive(uint32_t line, std::string_view file) {
+  std::string out = "#line " + std::to_string(line) + " \"";
+  for (char c : file) {
+    // glslang's #line takes the string as written: keep it one token with '/' separators.
+    if (c == '"') continue;
+    out.push_back(c == '\\' ? '/' : c);
+  }
+  out += "\"";
+  return out;
+}
+
+void ShaderTextWriter::end_line() {
+  if (column_ == 1) return;
+  out_.push_back('\n');
+  last_ = '\n';
+  column_ = 1;
+  if (line_) ++line_;
+}
+
+void ShaderTextWriter::line(std::string_view text) {
+  end_line();
+  out_.append(text);
+  out_.push_back('\n');
+  last_ = '\n';
+  column_ = 1;
+  file_.clear();
+}
+
+void ShaderTextWriter::text(std::string_view text) {
+  if (text.empty()) return;
+  if (column_ > 1 && is_word_char(last_) && is_word_char(text.front())) out_.push_back(' ');
+  out_.append(text);
+  column_ += static_cast<uint32_t>(text.size());
+  last_ = text.back();
+}
+
+void ShaderTextWriter::sync(std::string_view file, uint32_t line) {
+  if (!file_.empty() && file == file_ && line >= line_ && line - line_ <= kMaxBlankLines) {
+    while (line_ < line) {
+      out_.push_back('\n');
+      ++line_;
+      column_ = 1;
+      last_ = '\n';
+    }
+    return;
+  }
+  if (column_ > 1) out_.push_back('\n');
+  out_ += line_directive(line, file);
+  out_.push_back('\n');
+  file_.assign(file);
+  line_ = line;
+  column_ = 1;
+  last_ = '\n';
+}
+
+void ShaderTextWriter::token(const Token& t) {
+  PresumedLocation p = t.loc.valid() ? sm_.presumed(t.loc) : PresumedLocation{};
+  bool directive = t.kind == TokenKind::directive;
+  if (p.valid()) sync(p.file, p.line);
+  if (directive && column_ > 1) {
+    // A directive must start its line; the line number moves on by one, so re-sync after.
+    out_.push_back('\n');
+    column_ = 1;
+    file_.clear();
+    if (p.valid()) sync(p.file, p.line);
+  }
+  if (p.valid() && column_ < p.column && !directive) {
+    out_.append(p.column - column_, ' ');
+    column_ = p.column;
+  } else if (column_ > 1 && (t.leading_space() || (is_word_char(last_) && !t.text.empty() &&
+                                                   is_word_char(t.text.front())))) {
+    out_.push_back(' ');
+    ++column_;
+  }
+  out_.append(t.text);
+  column_ += static_cast<uint32_t>(t.text.size());
+  if (!t.text.empty()) last_ = t.text.back();
+  if (directive) {
+    out_.push_back('\n');
+    column_ = 1;
+    last_ = '\n';
+    if (line_) ++line_;
+  }
+}
+
+}  // namespace fx::detail

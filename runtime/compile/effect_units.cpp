@@ -1,0 +1,635 @@
+#include "fx/compile/effect_units.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "effect_shader_text.h"
+#include "fx/compile/hlsl_compat.h"
+
+namespace fx {
+
+const char* to_string(StageSourceKind kind) {
+  switch (kind) {
+    case StageSourceKind::hlsl: return "hlsl";
+    case StageSourceKind::glsl: return "glsl";
+    case StageSourceKind::assembly: return "assembly";
+    case StageSourceKind::invalid: return "invalid";
+  }
+  return "unknown";
+}
+
+const PassStage* EffectPass::find(ShaderStage stage) const {
+  for (const PassStage& s : stages)
+    if (s.stage == stage) return &s;
+  return nullptr;
+}
+
+namespace {
+
+bool iequals(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i])))
+      return false;
+  return true;
+}
+
+// The pipeline stage a pass state sets: D3D9 assignments, D3D10/11 calls, nvFX names.
+std::optional<ShaderStage> stage_of_state(std::string_view name) {
+  if (name.size() > 3 && iequals(name.substr(0, 3), "set")) name.remove_prefix(3);
+  struct Row { std::string_view name; ShaderStage stage; };
+  static constexpr Row kRows[] = {
+      {"VertexShader", ShaderStage::vertex},       {"VertexProgram", ShaderStage::vertex},
+      {"PixelShader", ShaderStage::fragment},      {"FragmentShader", ShaderStage::fragment},
+      {"FragmentProgram", ShaderStage::fragment},  {"GeometryShader", ShaderStage::geometry},
+      {"GeometryProgram", ShaderStage::geometry},  {"HullShader", ShaderStage::tess_control},
+      {"DomainShader", ShaderStage::tess_evaluation}, {"ComputeShader", ShaderStage::compute},
+      {"ComputeProgram", ShaderStage::compute},
+  };
+  for (const Row& r : kRows)
+    if (iequals(name, r.name)) return r.stage;
+  return std::nullopt;
+}
+
+// Effect-only variable types: glslang has no such HLSL types (D3D9 texture objects,
+// strings, shader objects). D3D10's `Texture2D` is real HLSL and stays.
+bool is_effect_only_type(std::string_view type) {
+  for (std::string_view t : {"texture", "string", "VertexShader", "PixelShader", "GeometryShader",
+                             "HullShader", "DomainShader", "ComputeShader", "stateblock"})
+    if (iequals(type, t)) return true;
+  for (std::string_view t : {"texture1D", "texture2D", "texture3D", "textureCUBE"})
+    if (type == t) return true;
+  return false;
+}
+
+bool is_shader_object_type(std::string_view type) {
+  for (std::string_view t : {"VertexShader", "PixelShader", "GeometryShader", "HullShader",
+                             "DomainShader", "ComputeShader"})
+    if (iequals(type, t)) return true;
+  return false;
+}
+
+// Spells a constant expression as HLSL (compile-time arguments). False for what cannot be
+// a compile-time argument (compile expressions, state blocks, asm).
+bool spell(const ast::Expr* e, std::string& out) {
+  if (!e) return false;
+  auto list = [&](size_t from, const char* open, const char* close) {
+    out += open;
+    for (size_t i = from; i < e->args.size(); ++i) {
+      if (i > from) out += ", ";
+      if (!spell(e->args[i].get(), out)) return false;
+    }
+    out += close;
+    return true;
+  };
+  switch (e->kind) {
+    case ast::ExprKind::int_literal:
+    case ast::ExprKind::float_literal:
+    case ast::ExprKind::identifier: out += e->text; return true;
+    case ast::ExprKind::bool_literal: out += e->number != 0 ? "true" : "false"; return true;
+    case ast::ExprKind::unary:
+      out += "(" + e->text;
+      if (e->args.empty() || !spell(e->args[0].get(), out)) return false;
+      out += ")";
+      return true;
+    case ast::ExprKind::binary:
+      if (e->args.size() != 2) return false;
+      out += "(";
+      if (!spell(e->args[0].get(), out)) return false;
+      out += " " + e->text + " ";
+      if (!spell(e->args[1].get(), out)) return false;
+      out += ")";
+      return true;
+    case ast::ExprKind::ternary:
+      if (e->args.size() != 3) return false;
+      out += "(";
+      if (!spell(e->args[0].get(), out)) return false;
+      out += " ? ";
+      if (!spell(e->args[1].get(), out)) return false;
+      out += " : ";
+      if (!spell(e->args[2].get(), out)) return false;
+      out += ")";
+      return true;
+    case ast::ExprKind::call: out += e->text; return list(0, "(", ")");
+    case ast::ExprKind::init_list: return list(0, "{", "}");
+    case ast::ExprKind::cast:
+      out += "((" + e->text + ")";
+      if (e->args.empty() || !spell(e->args[0].get(), out)) return false;
+      out += ")";
+      return true;
+    case ast::ExprKind::member:
+      if (e->args.empty() || !spell(e->args[0].get(), out)) return false;
+      out += "." + e->text;
+      return true;
+    case ast::ExprKind::index:
+      if (e->args.size() != 2 || !spell(e->args[0].get(), out)) return false;
+      out += "[";
+      if (!spell(e->args[1].get(), out)) return false;
+      out += "]";
+      return true;
+    case ast::ExprKind::string_literal: out += "\"" + e->text + "\""; return true;
+    case ast::ExprKind::reference: out += "<" + e->text + ">"; return true;
+    case ast::ExprKind::null: out += "NULL"; return true;
+    case ast::ExprKind::compile: out += "compile " + e->text + " " + e->callee; return list(0, "(", ")");
+    case ast::ExprKind::glsl_list: return list(0, "{", "}");
+    case ast::ExprKind::asm_block: out += "asm { }"; return true;
+    case ast::ExprKind::state_block: out += e->text + " { }"; return true;
+  }
+  return false;
+}
+
+// Tokens joined with single spaces where the source had space: a one-line spelling.
+std::string join_tokens(const std::vector<Token>& toks, ast::TokenSpan span) {
+  std::string out;
+  for (uint32_t i = span.first; i < span.last && i < toks.size(); ++i) {
+    const Token& t = toks[i];
+    if (!out.empty() && (t.leading_space() || (std::isalnum(static_cast<unsigned char>(out.back())) &&
+                                               !t.text.empty() &&
+                                               std::isalnum(static_cast<unsigned char>(t.text[0])))))
+      out.push_back(' ');
+    out.append(t.text);
+  }
+  return out;
+}
+
+// "ps_2_a"/"ps_2_b" -> "ps_2_x" (glslang has one SM2 extended profile); lower case.
+std::string normalize_profile(std::string_view profile) {
+  std::string p;
+  for (char c : profile) p.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+  if (p.size() >= 6 && p[4] == '_' && (p[5] == 'a' || p[5] == 'b')) p[5] = 'x';
+  return p;
+}
+
+}  // namespace
+
+// Builds EffectUnits from the AST: the shared HLSL text, the GLSL blocks and the passes.
+class EffectUnitBuilder {
+ public:
+  EffectUnitBuilder(EffectUnits& units, const ast::Effect& effect, const SourceManager& sm,
+                    DiagnosticSink& sink)
+      : u_(units), effect_(effect), toks_(effect.tokens), sm_(sm), sink_(sink) {}
+
+  void build() {
+    for (const Token& t : toks_)
+      if (t.loc.valid()) {
+        u_.name_ = std::string(sm_.presumed(t.loc).file);
+        break;
+      }
+    if (u_.name_.empty()) u_.name_ = "<effect>";
+    index_declarations();
+    emit_hlsl();
+    collect_glsl();
+    collect_passes();
+  }
+
+ private:
+  void index_declarations() {
+    for (const ast::Decl& d : effect_.decls) {
+      if (d.kind == ast::DeclKind::function) functions_.push_back(d.function.get());
+      if (d.kind == ast::DeclKind::variable) variables_.push_back(d.variable.get());
+      if (d.kind == ast::DeclKind::glsl_block) glsl_names_.push_back(d.glsl_block->name);
+    }
+  }
+
+  // ---- HLSL ----------------------------------------------------------------------------
+
+  void emit_hlsl() {
+    detail::ShaderTextWriter w(sm_);
+    u_.pre_release_ = !effect_.profile_header.empty();
+    if (u_.pre_release_) w.out() += pre_release_hlsl_prelude();
+    uint32_t last_span = UINT32_MAX;
+    for (const ast::Decl& d : effect_.decls) {
+      switch (d.kind) {
+        case ast::DeclKind::variable: {
+          const ast::Variable& v = *d.variable;
+          if (v.tokens.first == last_span || v.tokens.empty()) break;  // declarators share a span
+          last_span = v.tokens.first;
+          if (!is_effect_only_type(v.type.name)) emit_filtered(w, v.tokens);
+          break;
+        }
+        case ast::DeclKind::type_alias:
+          if (d.type_alias->tokens.first == last_span) break;
+          last_span = d.type_alias->tokens.first;
+          emit_tokens(w, d.type_alias->tokens);
+          break;
+        case ast::DeclKind::structure: emit_tokens(w, d.structure->tokens); break;
+        case ast::DeclKind::function: emit_tokens(w, d.function->tokens); break;
+        case ast::DeclKind::constant_buffer: emit_filtered(w, d.constant_buffer->tokens); break;
+        case ast::DeclKind::state_object: emit_sampler_object(w, *d.state_object); break;
+        case ast::DeclKind::directive:
+          // #version/#extension belong to GLSL; HLSL gets the #pragma lines (pack_matrix, ...).
+          if (d.directive->text.rfind("#pragma", 0) == 0) emit_tokens(w, d.directive->tokens);
+          break;
+        case ast::DeclKind::technique:
+        case ast::DeclKind::group:
+        case ast::DeclKind::glsl_block: break;
+      }
+    }
+    w.end_line();
+    u_.hlsl_ = std::move(w.out());
+  }
+
+  void emit_tokens(detail::ShaderTextWriter& w, ast::TokenSpan span) {
+    for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) w.token(toks_[i]);
+  }
+
+  // The index of the `>` closing an annotation opened at `open`, or 0 when the `<` is not an
+  // annotation (a template argument such as Texture2D<float4> never contains a ';').
+  uint32_t annotation_end(uint32_t open, uint32_t last) const {
+    bool semi = false;
+    int depth = 0;
+    for (uint32_t i = open + 1; i < last; ++i) {
+      const Token& t = toks_[i];
+      if (t.is(TokenKind::l_brace) || t.is(TokenKind::l_paren)) ++depth;
+      if (t.is(TokenKind::r_brace) || t.is(TokenKind::r_paren)) --depth;
+      if (t.is(TokenKind::semi)) semi = true;
+      if (t.is(TokenKind::greater) && depth == 0) return semi || i == open + 1 ? i : 0;
+    }
+    return 0;
+  }
+
+  // The index of the token closing the bracket at `open` (or `last` if unbalanced).
+  uint32_t matching_close(uint32_t open, uint32_t last) const {
+    int depth = 0;
+    for (uint32_t i = open; i < last; ++i) {
+      TokenKind k = toks_[i].kind;
+      if (k == TokenKind::l_brace || k == TokenKind::l_paren || k == TokenKind::l_square) ++depth;
+      if (k == TokenKind::r_brace || k == TokenKind::r_paren || k == TokenKind::r_square) --depth;
+      if (depth == 0) return i;
+    }
+    return last;
+  }
+
+  // A global or cbuffer declaration without its effect-only parts: annotations,
+  // `= sampler_state { }` initializers and cbuffer member initializers (which glslang
+  // ignores with a warning; the effect model keeps them as defaults).
+  void emit_filtered(detail::ShaderTextWriter& w, ast::TokenSpan span) {
+    int depth = 0, init_depth = -1;
+    for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) {
+      const Token& t = toks_[i];
+      bool in_init = init_depth >= 0;
+      if (!in_init && t.is(TokenKind::less)) {
+        if (uint32_t end = annotation_end(i, span.last)) {
+          i = end;
+          continue;
+        }
+      }
+      if (!in_init && t.is(TokenKind::equal)) {
+        const Token* next = i + 1 < span.last ? &toks_[i + 1] : nullptr;
+        if (next && next->is(TokenKind::identifier) &&
+            (iequals(next->text, "sampler_state") || iequals(next->text, "stateblock_state"))) {
+          uint32_t open = i + 2;
+          i = open < span.last && toks_[open].is(TokenKind::l_brace) ? matching_close(open, span.last) : i + 1;
+          continue;
+        }
+        if (depth > 0) {  // cbuffer member initializer: skip to its ';'
+          int d = 0;
+          uint32_t j = i + 1;
+          for (; j < span.last; ++j) {
+            TokenKind k = toks_[j].kind;
+            if (k == TokenKind::l_brace || k == TokenKind::l_paren || k == TokenKind::l_square) ++d;
+            if (k == TokenKind::r_brace || k == TokenKind::r_paren || k == TokenKind::r_square) --d;
+            if (d == 0 && k == TokenKind::semi) break;
+          }
+          i = j - 1;
+          continue;
+        }
+        init_depth = depth;
+      }
+      if (t.is(TokenKind::l_brace) || t.is(TokenKind::l_paren) || t.is(TokenKind::l_square)) ++depth;
+      if (t.is(TokenKind::r_brace) || t.is(TokenKind::r_paren) || t.is(TokenKind::r_square)) --depth;
+      if ((t.is(TokenKind::semi) || t.is(TokenKind::comma)) && depth == init_depth) init_depth = -1;
+      if (t.is(TokenKind::l_brace) && !in_init) init_depth = -1;
+      w.token(t);
+    }
+  }
+
+  // D3D10 `SamplerState s { Filter = ...; };` -> `SamplerState s;` (the states are ours).
+  void emit_sampler_object(detail::ShaderTextWriter& w, const ast::StateObject& so) {
+    if (!iequals(so.kind, "SamplerState") && !iequals(so.kind, "SamplerComparisonState")) return;
+    std::string text = so.kind + " " + so.name;
+    for (const ast::ExprPtr& dim : so.array_dims) {
+      text += "[";
+      if (dim) spell(dim.get(), text);
+      text += "]";
+    }
+    if (!so.register_binding.empty()) text += " : register(" + so.register_binding + ")";
+    PresumedLocation p = sm_.presumed(so.name_range.begin);
+    if (p.valid()) w.line(detail::line_directive(p.line, p.file));
+    w.line(text + ";");
+  }
+
+  // ---- GLSL ----------------------------------------------------------------------------
+
+  void collect_glsl() {
+    for (const ast::Decl& d : effect_.decls) {
+      if (d.kind != ast::DeclKind::glsl_block) continue;
+      const ast::GlslBlock& b = *d.glsl_block;
+      EffectUnits::GlslBlockText text;
+      text.name = b.name;
+      ast::TokenSpan code = b.code;
+      if (!code.empty() && toks_[code.first].is(TokenKind::directive) &&
+          toks_[code.first].text.rfind("#version", 0) == 0) {
+        text.version = std::string(toks_[code.first].text);
+        ++code.first;
+      } else if (code.last - code.first >= 3 && toks_[code.first].is(TokenKind::hash) &&
+                 toks_[code.first + 1].is_identifier("version") &&
+                 toks_[code.first + 2].is(TokenKind::integer)) {
+        // `GLSLShader X { #version 450` : not at a line start, so the preprocessor left it as
+        // tokens; a profile word (`core`, `es`) may follow on the same line.
+        text.version = "#version " + std::string(toks_[code.first + 2].text);
+        code.first += 3;
+        PresumedLocation at = sm_.presumed(toks_[code.first - 1].loc);
+        while (code.first < code.last && toks_[code.first].is(TokenKind::identifier) &&
+               sm_.presumed(toks_[code.first].loc).line == at.line)
+          text.version += " " + std::string(toks_[code.first++].text);
+      }
+      detail::ShaderTextWriter w(sm_);
+      emit_tokens(w, code);
+      w.end_line();
+      text.body = std::move(w.out());
+      u_.glsl_blocks_.push_back(std::move(text));
+    }
+  }
+
+  // ---- passes --------------------------------------------------------------------------
+
+  void collect_passes() {
+    uint32_t technique_index = 0;
+    for (const ast::Decl& d : effect_.decls) {
+      if (d.kind == ast::DeclKind::technique) add_technique(*d.technique, "", technique_index++);
+      if (d.kind == ast::DeclKind::group)
+        for (const ast::Technique& t : d.group->techniques) add_technique(t, d.group->name, technique_index++);
+    }
+  }
+
+  void add_technique(const ast::Technique& t, const std::string& group, uint32_t index) {
+    uint32_t pass_index = 0;
+    for (const ast::Pass& p : t.passes) {
+      EffectPass pass;
+      pass.group = group;
+      pass.technique = t.name.empty() ? "technique" + std::to_string(index) : t.name;
+      pass.pass = p.name.empty() ? "pass" + std::to_string(pass_index) : p.name;
+      pass.technique_index = index;
+      pass.pass_index = pass_index++;
+      pass.range = p.range;
+      bool null_pixel = false;
+      for (const ast::StateAssignment& s : p.states) {
+        std::optional<ShaderStage> stage = stage_of_state(s.name);
+        if (!stage || !s.value) continue;
+        PassStage ps;
+        ps.stage = *stage;
+        ps.range = s.range;
+        const ast::Expr* value = s.value.get();
+        if (s.call_style) value = value->args.empty() ? nullptr : value->args[0].get();
+        if (!value || !resolve(*value, ps, 0)) {
+          null_pixel = null_pixel || *stage == ShaderStage::fragment;
+          continue;
+        }
+        // A later assignment of the same stage wins, as in D3D.
+        std::erase_if(pass.stages, [&](const PassStage& o) { return o.stage == ps.stage; });
+        pass.stages.push_back(std::move(ps));
+      }
+      std::stable_sort(pass.stages.begin(), pass.stages.end(),
+                       [](const PassStage& a, const PassStage& b) { return a.stage < b.stage; });
+      add_fixed_function_reasons(t, pass, null_pixel);
+      u_.passes_.push_back(std::move(pass));
+    }
+  }
+
+  // D3D9 passes without a vertex or pixel shader use the fixed-function pipeline there.
+  static void add_fixed_function_reasons(const ast::Technique& t, EffectPass& pass, bool null_pixel) {
+    if (t.version != 9) return;  // technique10/11: no pixel shader means no fragment stage
+    bool glsl = false, compute = false;
+    for (const PassStage& s : pass.stages) {
+      glsl = glsl || s.kind == StageSourceKind::glsl;
+      compute = compute || s.stage == ShaderStage::compute;
+    }
+    if (glsl || compute) return;
+    if (!pass.find(ShaderStage::vertex))
+      pass.unsupported.push_back("fixed-function vertex processing: the pass sets no VertexShader");
+    if (!pass.find(ShaderStage::fragment))
+      pass.unsupported.push_back(std::string("fixed-function pixel processing (texture stage states): ") +
+                                 (null_pixel ? "PixelShader = NULL" : "the pass sets no PixelShader"));
+  }
+
+  const ast::Variable* shader_variable(std::string_view name) const {
+    for (const ast::Variable* v : variables_)
+      if (v->name == name && is_shader_object_type(v->type.name)) return v;
+    return nullptr;
+  }
+
+  // Fills `stage` from a shader value. False when the value names no shader (NULL).
+  bool resolve(const ast::Expr& e, PassStage& stage, int depth) {
+    if (depth > 8) return invalid(stage, "shader variables refer to each other in a cycle");
+    switch (e.kind) {
+      case ast::ExprKind::null: return false;
+      case ast::ExprKind::int_literal: return e.number != 0 && invalid(stage, "a number is not a shader");
+      case ast::ExprKind::compile: {
+        std::vector<const ast::Expr*> args;
+        for (const ast::ExprPtr& a : e.args) args.push_back(a.get());
+        return hlsl(stage, e.text, e.callee, args, e.range);
+      }
+      case ast::ExprKind::call: {
+        if (iequals(e.text, "CompileShader") && e.args.size() == 2 && e.args[0] && e.args[1] &&
+            e.args[1]->kind == ast::ExprKind::call) {
+          std::vector<const ast::Expr*> args;
+          for (const ast::ExprPtr& a : e.args[1]->args) args.push_back(a.get());
+          return hlsl(stage, e.args[0]->text, e.args[1]->text, args, e.range);
+        }
+        if ((iequals(e.text, "ConstructGSWithSO") || stage_of_state(e.text)) && !e.args.empty() && e.args[0])
+          return resolve(*e.args[0], stage, depth + 1);
+        return invalid(stage, "'" + e.text + "(...)' does not name a shader");
+      }
+      case ast::ExprKind::identifier:
+      case ast::ExprKind::reference: {
+        if (iequals(e.text, "NULL")) return false;
+        for (const std::string& g : glsl_names_)
+          if (g == e.text) return glsl(stage, {e.text});
+        if (const ast::Variable* v = shader_variable(e.text)) {
+          if (v->initializer) return resolve(*v->initializer, stage, depth + 1);
+          return invalid(stage, "shader variable '" + e.text + "' has no initializer");
+        }
+        return invalid(stage, "'" + e.text + "' names no shader");
+      }
+      case ast::ExprKind::glsl_list: {
+        std::vector<std::string> names;
+        for (const ast::ExprPtr& a : e.args) names.push_back(a->text);
+        return glsl(stage, std::move(names));
+      }
+      case ast::ExprKind::asm_block:
+        stage.kind = StageSourceKind::assembly;
+        stage.unsupported = "shader model 1 assembly (asm { }) is not compiled; the legacy path emulates it";
+        return true;
+      case ast::ExprKind::index:
+        return invalid(stage, "shader arrays indexed in a pass are not supported");
+      default: return invalid(stage, "the value does not name a shader");
+    }
+  }
+
+  static bool invalid(PassStage& stage, std::string reason) {
+    stage.kind = StageSourceKind::invalid;
+    stage.unsupported = std::move(reason);
+    return true;
+  }
+
+  bool glsl(PassStage& stage, std::vector<std::string> names) {
+    stage.kind = StageSourceKind::glsl;
+    stage.entry_point = "main";
+    for (const std::string& n : names) {
+      bool known = false;
+      for (const std::string& g : glsl_names_) known = known || g == n;
+      // The checker reports unknown block names (undefined-reference).
+      if (!known) return invalid(stage, "no GLSL block named '" + n + "'");
+    }
+    stage.glsl_blocks = std::move(names);
+    stage.profile = "glsl";
+    for (const EffectUnits::GlslBlockText& b : u_.glsl_blocks_)
+      if (b.name == stage.glsl_blocks.front() && !b.version.empty()) {
+        std::string digits;
+        for (char c : b.version.substr(8))
+          if (std::isdigit(static_cast<unsigned char>(c))) digits.push_back(c);
+          else if (!digits.empty()) break;
+        if (!digits.empty()) stage.profile = digits;
+      }
+    return true;
+  }
+
+  // The overload of `name` that takes `args` compile-time arguments (D3D picks the same way).
+  const ast::Function* function(std::string_view name, size_t args) const {
+    const ast::Function* first = nullptr;
+    for (const ast::Function* f : functions_) {
+      if (f->name != name || f->body.empty()) continue;
+      size_t uniforms = 0;
+      for (const ast::Variable& p : f->params) uniforms += (p.storage & ast::kUniform) != 0;
+      if (uniforms == args) return f;
+      if (!first && uniforms >= args) first = f;
+    }
+    return first;
+  }
+
+  bool hlsl(PassStage& stage, const std::string& profile, const std::string& name,
+            const std::vector<const ast::Expr*>& args, SourceRange range) {
+    stage.kind = StageSourceKind::hlsl;
+    stage.profile = profile;
+    stage.function = name;
+    stage.entry_point = name;
+    const ast::Function* f = function(name, args.size());
+    // The checker reports unknown functions (undefined-reference).
+    if (!f) return invalid(stage, "no shader function '" + name + "' with a body");
+    if (args.empty()) return true;
+    size_t uniforms = 0;
+    for (const ast::Variable& p : f->params) uniforms += (p.storage & ast::kUniform) != 0;
+    if (args.size() > uniforms) {
+      sink_.error("effect-shader-arguments", range,
+                  "'" + name + "' takes " + std::to_string(uniforms) + " uniform parameter(s), but " +
+                      std::to_string(args.size()) + " compile-time argument(s) are given");
+      return invalid(stage, "too many compile-time arguments");
+    }
+    for (const ast::Expr* a : args) {
+      std::string text;
+      if (!a || a->kind == ast::ExprKind::compile || a->kind == ast::ExprKind::asm_block ||
+          a->kind == ast::ExprKind::state_block || !spell(a, text)) {
+        sink_.error("effect-shader-argument", a ? a->range : range,
+                    "a compile-time argument of '" + name + "' must be a constant expression");
+        return invalid(stage, "a compile-time argument is not a constant expression");
+      }
+      stage.arguments.push_back(std::move(text));
+    }
+    stage.entry_point = name + "__fx_args";
+    for (const EffectUnits::Wrapper& w : u_.wrappers_)
+      if (w.function == name && w.arguments == stage.arguments) return true;
+    u_.wrappers_.push_back({name, stage.arguments, wrapper(*f, stage.arguments)});
+    return true;
+  }
+
+  // `R F__fx_args(varying params) : SEM { return F(varying..., literal...); }`, placed at the
+  // function's own line so errors in the wrapper point at the function.
+  std::string wrapper(const ast::Function& f, const std::vector<std::string>& args) const {
+    std::string text;
+    PresumedLocation at = sm_.presumed(f.name_range.begin);
+    if (at.valid()) text += detail::line_directive(at.line, at.file) + "\n";
+    for (const std::string& a : f.attributes) text += "[" + a + "] ";
+    text += f.return_type.name;
+    if (!f.return_type.template_arg.empty()) text += "<" + f.return_type.template_arg + ">";
+    text += " " + f.name + "__fx_args(";
+    std::string call = f.name + "(";
+    size_t bound = 0;
+    bool first_param = true;
+    for (size_t i = 0; i < f.params.size(); ++i) {
+      const ast::Variable& p = f.params[i];
+      if (i) call += ", ";
+      if ((p.storage & ast::kUniform) && bound < args.size()) {
+        call += args[bound++];
+        continue;
+      }
+      if (!first_param) text += ", ";
+      first_param = false;
+      text += join_tokens(toks_, p.tokens);
+      call += p.name;
+    }
+    text += ")";
+    if (!f.semantic.empty()) text += " : " + f.semantic;
+    text += f.return_type.name == "void" ? " { " + call + "); }\n" : " { return " + call + "); }\n";
+    return text;
+  }
+
+  EffectUnits& u_;
+  const ast::Effect& effect_;
+  const std::vector<Token>& toks_;
+  const SourceManager& sm_;
+  DiagnosticSink& sink_;
+  std::vector<const ast::Function*> functions_;
+  std::vector<const ast::Variable*> variables_;
+  std::vector<std::string> glsl_names_;
+};
+
+std::string spell_expression(const ast::Expr& e) {
+  std::string out;
+  spell(&e, out);
+  return out;
+}
+
+EffectUnits::EffectUnits(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& sink,
+                         EffectUnitOptions options)
+    : options_(std::move(options)) {
+  EffectUnitBuilder(*this, effect, sm, sink).build();
+}
+
+const EffectPass* EffectUnits::find(std::string_view technique, std::string_view pass) const {
+  for (const EffectPass& p : passes_)
+    if (p.technique == technique && p.pass == pass) return &p;
+  return nullptr;
+}
+
+std::optional<TranslationUnit> EffectUnits::unit(const PassStage& stage) const {
+  TranslationUnit u;
+  u.stage = stage.stage;
+  u.entry_point = stage.entry_point;
+  u.defines = options_.defines;
+  u.name = name_;
+  if (stage.kind == StageSourceKind::hlsl) {
+    u.language = ShaderLanguage::hlsl;
+    u.profile = normalize_profile(stage.profile);
+    u.source = hlsl_;
+    if (!stage.arguments.empty())
+      for (const Wrapper& w : wrappers_)
+        if (w.function == stage.function && w.arguments == stage.arguments) u.source += w.text;
+    return u;
+  }
+  if (stage.kind != StageSourceKind::glsl) return std::nullopt;
+  u.language = ShaderLanguage::glsl;
+  u.profile = stage.profile;
+  std::string version = "#version 450";
+  std::string body;
+  for (const std::string& name : stage.glsl_blocks)
+    for (const GlslBlockText& b : glsl_blocks_)
+      if (b.name == name) {
+        if (&name == &stage.glsl_blocks.front() && !b.version.empty()) version = b.version;
+        body += b.body;
+      }
+  u.source = version + "\n#extension GL_GOOGLE_cpp_style_line_directive : require\n" + body;
+  return u;
+}
+
+}  // namespace fx

@@ -1,0 +1,113 @@
+// The glslang translation units of a parsed effect: one per pass stage. HLSL stages get the
+// effect's shader code (structs, functions, globals, cbuffers) with the effect-only syntax
+// left out and #line directives into the .fx files; GLSL stages get their named blocks
+// joined. Compile-time arguments (`compile ps_2_0 PS(true, 3)`) become a wrapper entry point.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fx/ast.h"
+#include "fx/compile/translation_unit.h"
+#include "fx/diagnostic.h"
+#include "fx/source_manager.h"
+
+namespace fx {
+
+// How a pass stage is written in the effect.
+enum class StageSourceKind : uint8_t {
+  hlsl,      // `compile vs_2_0 VS()`, `CompileShader(vs_4_0, VS())`, a shader variable
+  glsl,      // `VertexShader = Block;` or `= { Common, Block };`
+  assembly,  // `asm { }` / `decl { } asm { }`: shader model 1 assembly, not compiled here
+  invalid,   // the stage names something that does not exist (reported as a diagnostic)
+};
+const char* to_string(StageSourceKind kind);
+
+// One stage of one pass, as the effect names it.
+struct PassStage {
+  ShaderStage stage = ShaderStage::vertex;
+  StageSourceKind kind = StageSourceKind::hlsl;
+  std::string profile;                  // as written: "vs_2_0", "ps_2_a", "ps_4_0"; GLSL "450"
+  std::string function;                 // HLSL: the effect's function ("PS")
+  std::vector<std::string> glsl_blocks; // GLSL: the blocks, in order
+  std::vector<std::string> arguments;   // compile-time arguments, spelled as HLSL
+  std::string entry_point;              // the unit's entry: "PS", "PS__fx_args" or "main"
+  std::string unsupported;              // why no unit is built (assembly, invalid)
+  SourceRange range;                    // the state assignment naming the shader
+};
+
+// One pass of one technique with the stages it names, in pipeline order.
+struct EffectPass {
+  std::string group;      // fxgroup name, empty outside groups
+  std::string technique;  // name; "technique<i>" when unnamed
+  std::string pass;       // name; "pass<j>" when unnamed
+  uint32_t technique_index = 0, pass_index = 0;  // technique index counts all techniques
+  std::vector<PassStage> stages;
+  // Why the pass cannot run as written beyond its stages: fixed-function vertex or pixel
+  // processing in D3D9 techniques (emulated by the legacy path, not compiled here).
+  std::vector<std::string> unsupported;
+  SourceRange range;
+
+  const PassStage* find(ShaderStage stage) const;
+};
+
+// Options for building units.
+struct EffectUnitOptions {
+  // App defines. The preprocessor already expanded them in the effect's tokens; they are
+  // also given to glslang so code that tests them after the effect preprocessor (GLSL
+  // blocks with their own #if) sees them too.
+  std::vector<ShaderDefine> defines;
+};
+
+// The translation units of one effect. The shared HLSL text is built once, in the
+// constructor; units are cheap to make on demand. Holds no reference to `effect` or `sm`
+// after construction.
+class EffectUnits {
+ public:
+  // Problems that are errors in the effect (an unknown shader function or GLSL block, too
+  // many compile-time arguments) are reported into `sink` and mark the stage invalid.
+  EffectUnits(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& sink,
+              EffectUnitOptions options = {});
+
+  // Every pass of every technique (fxgroups included), in source order.
+  const std::vector<EffectPass>& passes() const { return passes_; }
+  // The pass named `technique`/`pass`, or nullptr.
+  const EffectPass* find(std::string_view technique, std::string_view pass) const;
+
+  // The unit for one stage; nullopt when the stage is not compiled (see stage.unsupported).
+  std::optional<TranslationUnit> unit(const PassStage& stage) const;
+
+  // The effect's shader code shared by every HLSL stage (prelude and #line included).
+  const std::string& hlsl_code() const { return hlsl_; }
+  // True when the pre-release HLSL prelude is prepended (an `fx.2.0`-style header).
+  bool pre_release() const { return pre_release_; }
+
+ private:
+  struct GlslBlockText {
+    std::string name;
+    std::string version;  // the block's #version directive line, "" if none
+    std::string body;     // with #line directives, the #version line left out
+  };
+  std::string hlsl_;
+  bool pre_release_ = false;
+  std::vector<EffectPass> passes_;
+  std::vector<GlslBlockText> glsl_blocks_;
+  // Wrapper entry points by (function, arguments), keyed by the stage's entry text.
+  struct Wrapper {
+    std::string function;
+    std::vector<std::string> arguments;
+    std::string text;
+  };
+  std::vector<Wrapper> wrappers_;
+  EffectUnitOptions options_;
+  std::string name_;  // the effect's file name (unit names)
+
+  friend class EffectUnitBuilder;
+};
+
+// Spells an effect expression as text: compile-time arguments, state values for tools.
+std::string spell_expression(const ast::Expr& e);
+
+}  // namespace fx

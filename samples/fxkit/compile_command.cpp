@@ -1,0 +1,153 @@
+// `fxkit compile FILE [-I DIR]... [-D NAME[=VALUE]]... [--profile P] [--technique T]
+//  [-o DIR] [--cache DIR] [--json]`: SPIR-V for every pass stage.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "command.h"
+#include "fx/compile/effect_programs.h"
+#include "fx/compile/spirv_cache.h"
+#include "fx/diagnostic_render.h"
+
+namespace fxkit {
+namespace {
+
+struct CompileArgs {
+  FrontEndFlags front_end;
+  std::string file;
+  std::string technique;
+  std::string output_dir;
+  std::string cache_dir;
+  bool json = false;
+};
+
+std::vector<fx::ShaderDefine> shader_defines(const fx::FrontEndOptions& options) {
+  std::vector<fx::ShaderDefine> out;
+  for (const auto& [name, value] : options.preprocessor.defines) out.push_back({name, value});
+  return out;
+}
+
+bool write_spirv(const std::filesystem::path& path, const std::vector<uint32_t>& words) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
+  return static_cast<bool>(out);
+}
+
+int run_compile(const CompileArgs& args) {
+  fx::FrontEndOptions options;
+  std::string error;
+  if (!args.front_end.to_options(options, error)) {
+    std::fprintf(stderr, "fxkit compile: %s\n", error.c_str());
+    return kUsageError;
+  }
+  if (!std::filesystem::is_regular_file(args.file)) {
+    std::fprintf(stderr, "fxkit compile: cannot read '%s'\n", args.file.c_str());
+    return kUsageError;
+  }
+  if (!args.output_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(args.output_dir, ec);
+    if (ec) {
+      std::fprintf(stderr, "fxkit compile: cannot create '%s': %s\n", args.output_dir.c_str(),
+                   ec.message().c_str());
+      return kUsageError;
+    }
+  }
+  fx::SourceManager sm;
+  fx::DiagnosticSink diags;
+  fx::ParsedEffect parsed = fx::parse_effect_file(args.file, sm, diags, options);
+  fx::EffectUnits units(parsed.ast, sm, diags, {.defines = shader_defines(options)});
+  fx::SpirvCache cache(args.cache_dir);
+  fx::ShaderCompiler compiler({}, &cache);
+  fx::EffectPrograms programs(units, compiler, sm);
+
+  bool failed = diags.has_errors();
+  bool matched = args.technique.empty();
+  nlohmann::json shaders = nlohmann::json::array();
+  std::vector<fx::Diagnostic> all = diags.diagnostics();
+  for (const fx::EffectPass& pass : units.passes()) {
+    if (!args.technique.empty() && pass.technique != args.technique) continue;
+    matched = true;
+    const fx::PassProgram& program = programs.program(pass);
+    for (const fx::StageProgram& s : program.stages) {
+      const fx::PassStage* stage = pass.find(s.stage);
+      bool ok = s.shader.ok && program.compiled;
+      failed = failed || !ok;
+      all.insert(all.end(), s.diagnostics.begin(), s.diagnostics.end());
+      std::string spv;
+      if (ok && !args.output_dir.empty()) {
+        std::filesystem::path path = std::filesystem::path(args.output_dir) /
+                                     (pass.technique + "." + pass.pass + "." + fx::to_string(s.stage) + ".spv");
+        if (!write_spirv(path, s.shader.spirv)) {
+          std::fprintf(stderr, "fxkit compile: cannot write '%s'\n", path.string().c_str());
+          return kUsageError;
+        }
+        spv = path.string();
+      }
+      if (args.json) {
+        nlohmann::json j = {{"technique", pass.technique},
+                            {"pass", pass.pass},
+                            {"stage", fx::to_string(s.stage)},
+                            {"entry", s.unit.entry_point},
+                            {"function", stage ? stage->function : ""},
+                            {"profile", stage ? stage->profile : s.unit.profile},
+                            {"language", fx::to_string(s.unit.language)},
+                            {"ok", ok},
+                            {"ms", s.ms},
+                            {"cached", s.shader.from_cache || s.reused},
+                            {"words", s.shader.spirv.size()},
+                            {"diagnostics", fx::render_json(s.diagnostics, sm)}};
+        if (!spv.empty()) j["spirv"] = spv;
+        shaders.push_back(std::move(j));
+      } else {
+        std::fprintf(stderr, "%s.%s %s (%s %s): %s%s\n", pass.technique.c_str(), pass.pass.c_str(),
+                     fx::to_string(s.stage), s.unit.profile.c_str(), s.unit.entry_point.c_str(),
+                     ok ? "ok" : "FAILED", spv.empty() ? "" : (" -> " + spv).c_str());
+      }
+    }
+    all.insert(all.end(), program.diagnostics.begin(), program.diagnostics.end());
+    if (!program.compiled && !program.stages.empty()) failed = true;
+    for (const std::string& reason : program.unsupported) {
+      if (args.json) {
+        shaders.push_back({{"technique", pass.technique}, {"pass", pass.pass}, {"stage", nullptr},
+                           {"entry", nullptr}, {"profile", nullptr}, {"ok", false}, {"ms", 0},
+                           {"unsupported", reason}, {"diagnostics", nlohmann::json::array()}});
+      } else {
+        std::fprintf(stderr, "%s.%s: not compiled: %s\n", pass.technique.c_str(), pass.pass.c_str(),
+                     reason.c_str());
+      }
+    }
+  }
+  if (!matched) {
+    std::fprintf(stderr, "fxkit compile: no technique named '%s'\n", args.technique.c_str());
+    return kUsageError;
+  }
+  if (args.json) {
+    nlohmann::json out = {{"file", args.file},
+                          {"shaders", std::move(shaders)},
+                          {"diagnostics", fx::render_json(diags.diagnostics(), sm)},
+                          {"ok", !failed}};
+    std::puts(out.dump(2).c_str());
+  } else {
+    std::fputs(fx::render_text(all, sm).c_str(), stderr);
+  }
+  return failed ? kInputErrors : kSuccess;
+}
+
+}  // namespace
+
+void register_compile(CLI::App& app, Runner& run) {
+  auto args = std::make_shared<CompileArgs>();
+  CLI::App* cmd = app.add_subcommand("compile", "Compile every pass stage of an effect to SPIR-V");
+  args->front_end.add_to(*cmd);
+  cmd->add_option("--technique", args->technique, "Only this technique");
+  cmd->add_option("-o", args->output_dir, "Write DIR/<technique>.<pass>.<stage>.spv");
+  cmd->add_option("--cache", args->cache_dir, "SPIR-V cache directory (default: memory only)");
+  cmd->add_flag("--json", args->json, "Print one JSON document: shaders with their diagnostics");
+  cmd->add_option("FILE", args->file, "Effect file")->required();
+  cmd->callback([args, &run] { run = [args] { return run_compile(*args); }; });
+}
+
+}  // namespace fxkit

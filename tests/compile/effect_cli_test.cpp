@@ -1,0 +1,189 @@
+// `fxkit compile --json` and `fxkit info --json` run as a user would: exit codes, output
+// structure, and info's output validated against docs/info.schema.json.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out;
+};
+
+CliRun run(const std::string& args) {
+  fs::path out = fs::temp_directory_path() / ("fxkit_cli_" + std::to_string(::getpid()) + ".json");
+  std::string cmd = std::string(FXKIT_BIN) + " " + args + " > " + out.string() + " 2>/dev/null";
+  int rc = std::system(cmd.c_str());
+  CliRun r;
+  r.exit_code = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  std::ifstream in(out);
+  r.out.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  fs::remove(out);
+  return r;
+}
+
+std::string data(const std::string& rel) { return std::string(FXKIT_SOURCE_DIR) + "/" + rel; }
+
+// A validator for the JSON Schema subset docs/info.schema.json uses: type (string or list),
+// required, properties, items, enum, and $ref into #/definitions.
+class SchemaValidator {
+ public:
+  explicit SchemaValidator(json schema) : root_(std::move(schema)) {}
+  std::vector<std::string> validate(const json& doc) {
+    errors_.clear();
+    check(root_, doc, "$");
+    return errors_;
+  }
+
+ private:
+  static bool has_type(const json& v, const std::string& t) {
+    if (t == "object") return v.is_object();
+    if (t == "array") return v.is_array();
+    if (t == "string") return v.is_string();
+    if (t == "integer") return v.is_number_integer();
+    if (t == "number") return v.is_number();
+    if (t == "boolean") return v.is_boolean();
+    if (t == "null") return v.is_null();
+    return false;
+  }
+  void check(const json& schema, const json& v, const std::string& path) {
+    if (schema.contains("$ref")) {
+      std::string ref = schema["$ref"];
+      const std::string prefix = "#/definitions/";
+      if (ref.rfind(prefix, 0) != 0 || !root_["definitions"].contains(ref.substr(prefix.size()))) {
+        errors_.push_back(path + ": unresolvable $ref " + ref);
+        return;
+      }
+      check(root_["definitions"][ref.substr(prefix.size())], v, path);
+      return;
+    }
+    if (schema.contains("type")) {
+      bool ok = false;
+      if (schema["type"].is_array()) {
+        for (const json& t : schema["type"]) ok = ok || has_type(v, t);
+      } else {
+        ok = has_type(v, schema["type"]);
+      }
+      if (!ok) {
+        errors_.push_back(path + ": expected " + schema["type"].dump() + ", found " + v.dump().substr(0, 80));
+        return;
+      }
+    }
+    if (schema.contains("enum")) {
+      bool found = false;
+      for (const json& e : schema["enum"]) found = found || e == v;
+      if (!found) errors_.push_back(path + ": " + v.dump() + " not in " + schema["enum"].dump());
+    }
+    if (v.is_object()) {
+      if (schema.contains("required"))
+        for (const json& r : schema["required"])
+          if (!v.contains(r.get<std::string>())) errors_.push_back(path + ": missing " + r.get<std::string>());
+      if (schema.contains("properties"))
+        for (auto& [k, sub] : schema["properties"].items())
+          if (v.contains(k)) check(sub, v[k], path + "." + k);
+    }
+    if (v.is_array() && schema.contains("items"))
+      for (size_t i = 0; i < v.size(); ++i) check(schema["items"], v[i], path + "[" + std::to_string(i) + "]");
+  }
+  json root_;
+  std::vector<std::string> errors_;
+};
+
+json load_schema() {
+  std::ifstream in(data("docs/info.schema.json"));
+  return json::parse(in);
+}
+
+TEST(SchemaValidator, RejectsWhatTheSchemaForbids) {
+  SchemaValidator v(load_schema());
+  EXPECT_FALSE(v.validate(json::object()).empty());  // required fields missing
+  json bad = {{"file", 3}, {"ok", true}, {"profile", "fx_9_0"}, {"includes", json::array()},
+              {"parameters", json::array({{{"name", "x"}}})}, {"textures", json::array()},
+              {"samplers", json::array()}, {"techniques", json::array()}, {"diagnostics", json::array()}};
+  std::vector<std::string> errors = v.validate(bad);
+  std::string all;
+  for (const std::string& e : errors) all += e + "\n";
+  EXPECT_NE(all.find("$.file"), std::string::npos) << all;
+  EXPECT_NE(all.find("$.profile"), std::string::npos) << all;
+  EXPECT_NE(all.find("$.parameters[0]: missing type"), std::string::npos) << all;
+}
+
+TEST(FxkitInfo, JsonMatchesTheSchemaAndReflectsTheEffect) {
+  CliRun r = run("info --json " + data("tests/parser/data/sdk_sample.fx"));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  json doc = json::parse(r.out);
+  SchemaValidator v(load_schema());
+  std::vector<std::string> errors = v.validate(doc);
+  for (const std::string& e : errors) ADD_FAILURE() << e;
+  // Parameters carry their place in the compiled uniform blocks.
+  bool gloss = false;
+  for (const json& p : doc["parameters"])
+    if (p["name"] == "g_LightDir") {
+      gloss = true;
+      EXPECT_EQ(p["block"], "$Global");
+      EXPECT_EQ(p["size"], 12);
+      EXPECT_EQ(p["semantic"], "DIRECTION");
+      EXPECT_EQ(p["annotations"].size(), 3u);
+    }
+  EXPECT_TRUE(gloss);
+  ASSERT_EQ(doc["samplers"].size(), 2u);
+  EXPECT_EQ(doc["samplers"][0]["texture"], "g_MeshTexture");
+  ASSERT_EQ(doc["techniques"].size(), 3u);
+  const json& pass = doc["techniques"][0]["passes"][0];
+  EXPECT_TRUE(pass["ok"].get<bool>());
+  EXPECT_EQ(pass["vertex_inputs"].size(), 3u);
+  EXPECT_FALSE(doc["techniques"][1]["passes"][0]["ok"].get<bool>());  // fixed-function pixel
+}
+
+TEST(FxkitInfo, ExitCodes) {
+  EXPECT_EQ(run("info --json /nonexistent.fx").exit_code, 2);
+  fs::path bad = fs::temp_directory_path() / ("fxkit_cli_bad_" + std::to_string(::getpid()) + ".fx");
+  std::ofstream(bad) << "technique T { pass P { NoSuchState = 1; } }\n";
+  EXPECT_EQ(run("info --json " + bad.string()).exit_code, 1);
+  fs::remove(bad);
+}
+
+TEST(FxkitCompile, JsonListsEveryShaderAndWritesSpirv) {
+  fs::path dir = fs::temp_directory_path() / ("fxkit_cli_out_" + std::to_string(::getpid()));
+  CliRun r = run("compile --json --technique Render10 -o " + dir.string() + " " +
+              data("tests/parser/data/sdk_sample.fx"));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  json doc = json::parse(r.out);
+  ASSERT_EQ(doc["shaders"].size(), 2u);
+  for (const json& s : doc["shaders"]) {
+    for (const char* key : {"technique", "pass", "stage", "entry", "profile", "ok", "ms", "diagnostics"})
+      EXPECT_TRUE(s.contains(key)) << key;
+    EXPECT_TRUE(s["ok"].get<bool>());
+    EXPECT_EQ(s["technique"], "Render10");
+  }
+  EXPECT_TRUE(fs::exists(dir / "Render10.P0.vertex.spv"));
+  EXPECT_TRUE(fs::exists(dir / "Render10.P0.fragment.spv"));
+  EXPECT_GT(fs::file_size(dir / "Render10.P0.fragment.spv"), 20u);
+  fs::remove_all(dir);
+}
+
+TEST(FxkitCompile, ExitsOneWhenAShaderFails) {
+  fs::path bad = fs::temp_directory_path() / ("fxkit_cli_fail_" + std::to_string(::getpid()) + ".fx");
+  std::ofstream(bad) << "float4 PS() : COLOR0 { return undefined_value; }\n"
+                        "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+  CliRun r = run("compile --json " + bad.string());
+  EXPECT_EQ(r.exit_code, 1);
+  json doc = json::parse(r.out);
+  ASSERT_EQ(doc["shaders"].size(), 2u);  // the pixel shader, and the fixed-function vertex stage
+  const json& ps = doc["shaders"][0];
+  EXPECT_FALSE(ps["ok"].get<bool>());
+  ASSERT_FALSE(ps["diagnostics"].empty());
+  EXPECT_EQ(ps["diagnostics"][0]["line"], 1);
+  EXPECT_EQ(run("compile --json --technique Missing " + bad.string()).exit_code, 2);
+  fs::remove(bad);
+}
+
+}  // namespace

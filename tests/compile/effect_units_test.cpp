@@ -1,0 +1,319 @@
+// Effect translation units and per-pass programs: what glslang gets, where its errors land,
+// compile-time arguments, laziness and the cache; every shader of the test and project
+// effects compiles or says why.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "compile_test_util.h"
+#include "fx/compile/effect_programs.h"
+#include "fx/compile/spirv_cache.h"
+#include "fx/diagnostic_render.h"
+#include "fx/frontend.h"
+
+namespace fx {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A parsed effect with everything it needs kept alive.
+struct Loaded {
+  SourceManager sm;
+  DiagnosticSink diags;
+  ParsedEffect parsed;
+  std::unique_ptr<EffectUnits> units;
+};
+
+std::unique_ptr<Loaded> load(const std::string& path, std::vector<std::string> include_dirs = {}) {
+  auto l = std::make_unique<Loaded>();
+  FrontEndOptions options;
+  options.preprocessor.include_dirs = std::move(include_dirs);
+  l->parsed = parse_effect_file(path, l->sm, l->diags, options);
+  l->units = std::make_unique<EffectUnits>(l->parsed.ast, l->sm, l->diags);
+  return l;
+}
+
+fs::path temp_dir(const std::string& name) {
+  fs::path dir = fs::temp_directory_path() / ("fxkit_units_" + std::to_string(::getpid())) / name;
+  fs::create_directories(dir);
+  return dir;
+}
+
+void write(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+std::string data(const std::string& rel) { return std::string(FXKIT_SOURCE_DIR) + "/" + rel; }
+
+TEST(EffectUnits, LeavesOutEffectSyntaxAndKeepsShaderCode) {
+  auto l = load(data("tests/parser/data/sdk_sample.fx"));
+  const std::string& code = l->units->hlsl_code();
+  for (const char* gone : {"sampler_state", "technique", "UIName", "texture g_MeshTexture", "BlendState",
+                           "Filter", "Script ="})
+    EXPECT_EQ(code.find(gone), std::string::npos) << gone << " in\n" << code;
+  for (const char* kept : {"sampler MeshTextureSampler", "SamplerState g_samLinear : register(s0);",
+                           "VS_OUTPUT RenderSceneVS(", "cbuffer cbPerObject", "Texture2D<float4> g_txDiffuse",
+                           "#line "})
+    EXPECT_NE(code.find(kept), std::string::npos) << kept << " missing in\n" << code;
+  // Lines are kept: the struct VS_OUTPUT is written on its own .fx line.
+  ASSERT_EQ(l->units->passes().size(), 3u);
+  const EffectPass& p0 = l->units->passes()[0];
+  EXPECT_EQ(p0.technique, "RenderSceneWithTexture1Light");
+  ASSERT_EQ(p0.stages.size(), 2u);
+  EXPECT_EQ(p0.stages[0].entry_point, "RenderSceneVS__fx_args");
+  EXPECT_EQ(p0.stages[0].arguments, (std::vector<std::string>{"1", "true", "true"}));
+  EXPECT_TRUE(p0.unsupported.empty());
+  // PixelShader = NULL in a D3D9 technique: fixed-function pixel processing.
+  const EffectPass& p1 = l->units->passes()[1];
+  ASSERT_EQ(p1.unsupported.size(), 1u);
+  EXPECT_NE(p1.unsupported[0].find("PixelShader = NULL"), std::string::npos);
+  // D3D10: SetGeometryShader(NULL) is no stage and nothing unsupported.
+  const EffectPass& p2 = l->units->passes()[2];
+  EXPECT_EQ(p2.stages.size(), 2u);
+  EXPECT_TRUE(p2.unsupported.empty());
+}
+
+TEST(EffectPrograms, SdkSampleCompilesAndLinks) {
+  auto l = load(data("tests/parser/data/sdk_sample.fx"));
+  ShaderCompiler compiler;
+  EffectPrograms programs(*l->units, compiler, l->sm);
+  for (const EffectPass& pass : l->units->passes()) {
+    const PassProgram& p = programs.program(pass);
+    for (const StageProgram& s : p.stages) {
+      EXPECT_TRUE(s.shader.ok) << pass.technique << "." << pass.pass << " " << to_string(s.stage) << "\n"
+                               << render_text(s.diagnostics, l->sm);
+      if (s.shader.ok) {
+        EXPECT_EQ(test::spirv_val(s.shader.spirv), "");
+      }
+    }
+    EXPECT_TRUE(p.compiled) << pass.technique;
+  }
+  // Vertex inputs by semantic, from the wrapper entry's varying parameters.
+  const PassProgram* p = programs.program("RenderSceneWithTexture1Light", "P0");
+  ASSERT_NE(p, nullptr);
+  std::vector<std::string> semantics;
+  for (const InterfaceVariable& v : p->find(ShaderStage::vertex)->shader.reflection.inputs)
+    semantics.push_back(v.semantic);
+  EXPECT_EQ(semantics, (std::vector<std::string>{"POSITION", "NORMAL", "TEXCOORD0"}));
+}
+
+TEST(EffectPrograms, CompileTimeArgumentsGiveDifferentSpirv) {
+  fs::path dir = temp_dir("args");
+  write(dir / "args.fx", R"(float4 Tint;
+float4 PS(float2 uv : TEXCOORD0, uniform bool bright, uniform int n) : COLOR0 {
+  float4 c = Tint;
+  for (int i = 0; i < n; ++i) c *= 0.5;
+  return bright ? c * 2 : c;
+}
+technique A { pass P { PixelShader = compile ps_2_0 PS(true, 3); } }
+technique B { pass P { PixelShader = compile ps_2_0 PS(false, 1); } }
+technique C { pass P { PixelShader = compile ps_2_0 PS(true, 3); } }
+)");
+  auto l = load((dir / "args.fx").string());
+  ASSERT_FALSE(l->diags.has_errors()) << render_text(l->diags.diagnostics(), l->sm);
+  ShaderCompiler compiler;
+  EffectPrograms programs(*l->units, compiler, l->sm);
+  const StageProgram* a = programs.program("A", "P")->find(ShaderStage::fragment);
+  const StageProgram* b = programs.program("B", "P")->find(ShaderStage::fragment);
+  ASSERT_TRUE(a && b);
+  ASSERT_TRUE(a->shader.ok) << a->shader.info_log;
+  ASSERT_TRUE(b->shader.ok) << b->shader.info_log;
+  EXPECT_EQ(a->shader.entry_point, "PS__fx_args");
+  EXPECT_NE(a->shader.spirv, b->shader.spirv);
+  // The uniform parameters are bound: no uniform block needs them.
+  for (const UniformBlock& blk : a->shader.reflection.uniform_blocks)
+    for (const BlockMember& m : blk.members) EXPECT_NE(m.name, "bright");
+  // C has the same unit as A: compiled once.
+  const StageProgram* c = programs.program("C", "P")->find(ShaderStage::fragment);
+  ASSERT_TRUE(c);
+  EXPECT_TRUE(c->reused);
+  EXPECT_EQ(c->shader.spirv, a->shader.spirv);
+  EXPECT_EQ(compiler.glslang_runs(), 2u);
+}
+
+TEST(EffectPrograms, CompilesLazilyAndReloadHitsTheCache) {
+  auto l = load(data("tests/parser/data/sdk_sample.fx"));
+  SpirvCache cache;
+  ShaderCompiler compiler({}, &cache);
+  {
+    EffectPrograms programs(*l->units, compiler, l->sm);
+    EXPECT_EQ(compiler.glslang_runs(), 0u);  // nothing compiled until asked
+    const PassProgram* p = programs.program("Render10", "P0");
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(compiler.glslang_runs(), 2u);  // only that pass's two stages
+    EXPECT_FALSE(programs.is_compiled(l->units->passes()[0]));
+    for (const EffectPass& pass : l->units->passes()) programs.program(pass);
+  }
+  uint64_t runs = compiler.glslang_runs();
+  // Reload of the unchanged file: a new parse, new units, the same cache: no glslang.
+  auto again = load(data("tests/parser/data/sdk_sample.fx"));
+  EffectPrograms programs(*again->units, compiler, again->sm);
+  for (const EffectPass& pass : again->units->passes()) {
+    const PassProgram& p = programs.program(pass);
+    for (const StageProgram& s : p.stages) EXPECT_TRUE(s.shader.from_cache || s.reused);
+  }
+  EXPECT_EQ(compiler.glslang_runs(), runs);
+  EXPECT_GT(cache.stats().memory_hits, 0u);
+}
+
+// The presumed location of the first error diagnostic with `id`.
+PresumedLocation first_error(const std::vector<Diagnostic>& ds, const SourceManager& sm) {
+  for (const Diagnostic& d : ds)
+    if (d.severity >= Severity::error) return sm.presumed(d.range.begin);
+  return {};
+}
+
+TEST(EffectErrors, HlslErrorInTheEffectIncludeAndMacroLandOnTheirLines) {
+  fs::path dir = temp_dir("hlsl_err");
+  write(dir / "lib.fxh", "// helpers\nfloat3 Helper(float3 v)\n{\n    return v * undefined_thing;\n}\n");
+  write(dir / "main.fx", R"(#include "lib.fxh"
+#define BROKEN(x) (x + missing_in_macro)
+float4 Color;
+float4 PS(float2 uv : TEXCOORD0) : COLOR0 {
+  float4 c = Color;
+  c.xyz = Helper(c.xyz);
+  return c;
+}
+float4 PS2(float2 uv : TEXCOORD0) : COLOR0 {
+  float4 c = Color;
+      c.x = BROKEN(c.y);
+  return c;
+}
+technique T1 { pass P { PixelShader = compile ps_2_0 PS(); } }
+technique T2 { pass P { PixelShader = compile ps_2_0 PS2(); } }
+)");
+  auto l = load((dir / "main.fx").string());
+  ShaderCompiler compiler;
+  EffectPrograms programs(*l->units, compiler, l->sm);
+  // Every pass has the include's error (the shared code holds all functions).
+  const StageProgram* s1 = programs.program("T1", "P")->find(ShaderStage::fragment);
+  ASSERT_TRUE(s1);
+  EXPECT_FALSE(s1->shader.ok);
+  PresumedLocation inc = first_error(s1->diagnostics, l->sm);
+  EXPECT_EQ(fs::path(std::string(inc.file)).filename(), "lib.fxh") << render_text(s1->diagnostics, l->sm);
+  EXPECT_EQ(inc.line, 4u);
+  // The macro's error is reported at the line that invokes it, in main.fx.
+  bool macro_line = false;
+  for (const Diagnostic& d : s1->diagnostics) {
+    PresumedLocation p = l->sm.presumed(d.range.begin);
+    if (d.message.find("missing_in_macro") != std::string::npos) {
+      EXPECT_EQ(fs::path(std::string(p.file)).filename(), "main.fx");
+      EXPECT_EQ(p.line, 11u);
+      macro_line = true;
+    }
+  }
+  EXPECT_TRUE(macro_line) << render_text(s1->diagnostics, l->sm);
+}
+
+TEST(EffectErrors, HlslGrammarErrorKeepsItsColumn) {
+  fs::path dir = temp_dir("hlsl_grammar");
+  write(dir / "gram.fx", R"(float4 Color;
+float4 PS(float2 uv : TEXCOORD0) : COLOR0 {
+  float4 c = Color; c.x = (c.y + nope);
+  return c;
+}
+technique T { pass P { PixelShader = compile ps_2_0 PS(); } }
+)");
+  auto l = load((dir / "gram.fx").string());
+  ShaderCompiler compiler;
+  EffectPrograms programs(*l->units, compiler, l->sm);
+  const StageProgram* s = programs.program("T", "P")->find(ShaderStage::fragment);
+  ASSERT_TRUE(s);
+  EXPECT_FALSE(s->shader.ok);
+  PresumedLocation at = first_error(s->diagnostics, l->sm);
+  EXPECT_EQ(fs::path(std::string(at.file)).filename(), "gram.fx");
+  EXPECT_EQ(at.line, 3u) << render_text(s->diagnostics, l->sm);
+  // glslang gives a column for some HLSL grammar errors: here, the statement's final ';'.
+  size_t with_column = 0;
+  for (const Diagnostic& d : s->diagnostics) {
+    PresumedLocation p = l->sm.presumed(d.range.begin);
+    if (p.column == 1) continue;
+    ++with_column;
+    EXPECT_EQ(p.line, 3u);
+    EXPECT_EQ(p.column, 38u) << render_text(d, l->sm) << s->unit.source;
+  }
+  EXPECT_GT(with_column, 0u) << render_text(s->diagnostics, l->sm);
+}
+
+TEST(EffectErrors, GlslErrorLandsOnTheBlockLine) {
+  fs::path dir = temp_dir("glsl_err");
+  write(dir / "g.fx", R"(GLSLShader Common { #version 450
+  vec3 shade(vec3 n) { return n * 0.5 + 0.5; }
+}
+GLSLShader FS {
+  layout(location = 0) out vec4 color;
+  void main() {
+    color = vec4(shade(vec3(1)), 1) + not_declared;
+  }
+}
+GLSLShader VS {
+  void main() { gl_Position = vec4(0, 0, 0, 1); }
+}
+technique Good { pass { VertexShader = VS; PixelShader = { Common, FS }; } }
+)");
+  auto l = load((dir / "g.fx").string());
+  ASSERT_FALSE(l->diags.has_errors()) << render_text(l->diags.diagnostics(), l->sm);
+  ShaderCompiler compiler;
+  EffectPrograms programs(*l->units, compiler, l->sm);
+  const PassProgram* p = programs.program("Good", "pass0");
+  ASSERT_NE(p, nullptr);
+  const StageProgram* vs = p->find(ShaderStage::vertex);
+  const StageProgram* fs = p->find(ShaderStage::fragment);
+  ASSERT_TRUE(vs && fs);
+  EXPECT_TRUE(vs->shader.ok) << vs->shader.info_log << vs->unit.source;
+  EXPECT_FALSE(fs->shader.ok);
+  PresumedLocation at = first_error(fs->diagnostics, l->sm);
+  EXPECT_EQ(fs::path(std::string(at.file)).filename(), "g.fx") << fs->shader.info_log;
+  EXPECT_EQ(at.line, 7u) << fs->shader.info_log << fs->unit.source;
+  EXPECT_EQ(fs->unit.source.rfind("#version 450", 0), 0u);
+}
+
+// Every pass stage of every effect either compiles or fails with a diagnostic saying why;
+// returns (stages compiled, stages with a unit).
+std::pair<size_t, size_t> compile_all(const std::string& path, std::string& report) {
+  auto l = load(path, {fs::path(path).parent_path().string()});
+  ShaderCompiler compiler;
+  EffectPrograms programs(*l->units, compiler, l->sm);
+  size_t ok = 0, total = 0;
+  for (const EffectPass& pass : l->units->passes()) {
+    const PassProgram& p = programs.program(pass);
+    for (const StageProgram& s : p.stages) {
+      ++total;
+      if (s.shader.ok) {
+        ++ok;
+        continue;
+      }
+      EXPECT_FALSE(s.diagnostics.empty()) << path << " " << pass.technique << "." << pass.pass;
+      report += path + " " + pass.technique + "." + pass.pass + " " + to_string(s.stage) + ":\n" +
+                render_text(s.diagnostics, l->sm, {.show_source_line = false});
+    }
+    for (const std::string& why : p.unsupported) EXPECT_FALSE(why.empty());
+  }
+  return {ok, total};
+}
+
+TEST(EffectCorpus, EveryShaderCompilesOrSaysWhy) {
+  std::vector<std::string> files;
+  for (const char* dir : {"tests/parser/data", "tests/fuzz/corpus", "effects", "effects/seeds"}) {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(data(dir), ec))
+      if (e.path().extension() == ".fx") files.push_back(e.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  size_t ok = 0, total = 0, project_ok = 0, project_total = 0;
+  std::string report;
+  for (const std::string& f : files) {
+    auto [o, t] = compile_all(f, report);
+    ok += o, total += t;
+    if (f.find("/effects/") != std::string::npos) project_ok += o, project_total += t;
+  }
+  std::printf("[corpus] %zu file(s): %zu of %zu stages compiled; project effects %zu of %zu\n%s", files.size(),
+              ok, total, project_ok, project_total, report.c_str());
+  EXPECT_GT(total, 10u);
+  // The acceptance bar: at least 95% of the project's shader entry points reach SPIR-V.
+  if (project_total) {
+    EXPECT_GE(project_ok * 100, project_total * 95) << report;
+  }
+}
+
+}  // namespace
+}  // namespace fx
