@@ -30,11 +30,6 @@ class PipelineRender : public VulkanTest, public ::testing::WithParamInterface<b
   }
 };
 
-PipelineState opaque() {
-  PipelineState s;
-  return s;
-}
-
 void set_color(PassResources& r, float red, float green, float blue, float alpha) {
   DiagnosticSink sink;
   const float c[4] = {red, green, blue, alpha};
