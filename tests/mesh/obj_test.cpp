@@ -61,6 +61,20 @@ TEST(Obj, PolygonWithoutUvsOrNormalsGetsAFiniteFrame) {
   for (const Vertex& v : pentagon->vertices) EXPECT_EQ(v.normal, glm::vec3(0, 0, 1));
 }
 
+TEST(Obj, MissingMaterialLibraryIsAWarningOnly) {
+  DiagnosticSink sink;
+  auto tri = load_obj(data("missing_material.obj"), sink);
+  ASSERT_TRUE(tri.has_value());
+  EXPECT_EQ(tri->triangle_count(), 1u);
+  EXPECT_EQ(sink.error_count(), 0u);
+  EXPECT_GE(sink.warning_count(), 1u);
+  EXPECT_TRUE(has_id(sink, "obj-warning"));
+  bool names_file = false;
+  for (const Diagnostic& d : sink.diagnostics())
+    if (d.message.find("nothing_here.mtl") != std::string::npos) names_file = true;
+  EXPECT_TRUE(names_file);
+}
+
 TEST(Obj, OutOfRangeIndexIsAnError) {
   DiagnosticSink sink;
   EXPECT_FALSE(load_obj(data("broken_index.obj"), sink).has_value());
