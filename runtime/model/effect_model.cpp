@@ -1,0 +1,320 @@
+// Building the effect model: parameters (types, folded defaults, annotations), textures
+// and their procedural-generator annotations, samplers, state objects, techniques and
+// passes. State values are resolved in state_resolve.cpp, summaries in pass_summary.cpp.
+#include "fx/model/effect_model.h"
+
+#include <algorithm>
+
+#include "model_build.h"
+#include "model_internal.h"
+
+namespace fx {
+namespace {
+
+using model_detail::iequals;
+using model_detail::ResolveContext;
+
+// Folds an initializer; errors that make the effect wrong (division by zero, a bad
+// swizzle) are errors, a merely non-foldable default (a function call) is a warning and
+// the parameter starts at zero.
+std::optional<Value> fold_default(const ast::Expr& e, const ConstantScope& scope, DiagnosticSink& diags,
+                                  const std::string& name) {
+  DiagnosticSink local;
+  auto v = fold_constant(e, scope, local, false);
+  for (const Diagnostic& d : local.diagnostics()) {
+    if (!v && d.id == "not-constant") {
+      diags.warning("unfolded-initializer", e.range,
+                    "the default of '" + name + "' is not a constant fxkit can fold (" + d.message +
+                        "); it starts at zero");
+      break;
+    }
+    Diagnostic& copy = diags.report(d.severity, d.id, d.range, d.message);
+    copy.notes = d.notes;
+  }
+  return v;
+}
+
+class Builder {
+ public:
+  Builder(const ast::Effect& effect, DiagnosticSink& diags)
+      : effect_(effect), diags_(diags), ctx_{model_, diags, {}, {}, {}} {
+    model_.ast = &effect;
+    // Initializers and annotations see `static`/`const` parameters; state values see every
+    // parameter's default (the value the pass uses until the app sets it).
+    const_scope_.lookup = [this](std::string_view n) -> const Value* {
+      uint32_t i = model_.find_parameter(n);
+      if (i == kNoIndex) return nullptr;
+      const Parameter& p = model_.parameters[i];
+      if (!(p.storage & (ast::kStatic | ast::kConst)) || !p.default_value) return nullptr;
+      return &*p.default_value;
+    };
+    const_scope_.types = &model_.types;
+    ctx_.scope.lookup = [this](std::string_view n) -> const Value* {
+      uint32_t i = model_.find_parameter(n);
+      if (i == kNoIndex || !model_.parameters[i].default_value) return nullptr;
+      return &*model_.parameters[i].default_value;
+    };
+    ctx_.scope.types = &model_.types;
+  }
+
+  EffectModel run() {
+    for (const ast::Decl& d : effect_.decls) {
+      switch (d.kind) {
+        case ast::DeclKind::structure:
+          if (d.structure) model_.types.add_struct(*d.structure, diags_, &const_scope_);
+          break;
+        case ast::DeclKind::type_alias:
+          if (d.type_alias) model_.types.add_typedef(*d.type_alias, diags_, &const_scope_);
+          break;
+        case ast::DeclKind::variable:
+          if (d.variable) add_parameter(*d.variable, "");
+          break;
+        case ast::DeclKind::constant_buffer:
+          if (d.constant_buffer)
+            for (const ast::Variable& v : d.constant_buffer->members) add_parameter(v, d.constant_buffer->name);
+          break;
+        case ast::DeclKind::function:
+          if (d.function) model_.functions.push_back(d.function->name);
+          break;
+        case ast::DeclKind::glsl_block:
+          if (d.glsl_block) {
+            model_.glsl_blocks.push_back(d.glsl_block->name);
+            ctx_.glsl_blocks[d.glsl_block->name] = true;
+          }
+          break;
+        case ast::DeclKind::state_object:
+          if (d.state_object) add_state_object(*d.state_object);
+          break;
+        case ast::DeclKind::technique:
+          if (d.technique) add_technique(*d.technique, "");
+          break;
+        case ast::DeclKind::group:
+          if (d.group)
+            for (const ast::Technique& t : d.group->techniques) add_technique(t, d.group->name);
+          break;
+        case ast::DeclKind::directive: break;
+      }
+    }
+    return std::move(model_);
+  }
+
+ private:
+  std::vector<AnnotationValue> annotations(const std::vector<ast::Annotation>& list) {
+    std::vector<AnnotationValue> out;
+    for (const ast::Annotation& a : list) {
+      if (!a.value) continue;
+      Type t = model_.types.resolve(a.type, 0, a.array_dims, diags_, &const_scope_);
+      if (t.cls == TypeClass::error) continue;
+      auto v = fold_constant(*a.value, const_scope_, diags_);
+      if (!v) continue;
+      auto converted = convert_value(*v, t, a.value->range, diags_);
+      if (!converted) continue;
+      out.push_back({a.name, std::move(*converted), a.range});
+    }
+    return out;
+  }
+
+  void add_parameter(const ast::Variable& v, const std::string& cbuffer) {
+    if (v.name.empty() || model_.parameter_index.count(v.name)) return;  // duplicates: the checker's report
+    Parameter p;
+    p.name = v.name;
+    p.type = model_.types.resolve(v.type, v.storage, v.array_dims, diags_, &const_scope_);
+    p.semantic = v.semantic;
+    p.storage = v.storage;
+    p.constant_buffer = cbuffer;
+    p.register_binding = v.register_binding;
+    p.range = v.range;
+    p.name_range = v.name_range;
+    p.decl = &v;
+    p.annotations = annotations(v.annotations);
+    const TypeClass cls = p.type.cls;
+    p.shader_visible = !(v.storage & ast::kStatic) &&
+                       (p.type.is_numeric() || cls == TypeClass::structure || cls == TypeClass::texture ||
+                        cls == TypeClass::sampler);
+    const uint32_t index = static_cast<uint32_t>(model_.parameters.size());
+    if (v.initializer) initialize(p, *v.initializer, index);
+    model_.parameter_index.emplace(p.name, index);
+    model_.parameters.push_back(std::move(p));
+    if (cls == TypeClass::texture) add_texture(index);
+  }
+
+  void initialize(Parameter& p, const ast::Expr& init, uint32_t index) {
+    switch (p.type.cls) {
+      case TypeClass::sampler:
+        if (init.kind == ast::ExprKind::state_block) add_sampler(p.name, init.states, index, kNoIndex, init.range, false);
+        else if (init.kind == ast::ExprKind::init_list)
+          for (size_t i = 0; i < init.args.size(); ++i)
+            if (init.args[i] && init.args[i]->kind == ast::ExprKind::state_block)
+              add_sampler(p.name + "[" + std::to_string(i) + "]", init.args[i]->states, index, kNoIndex,
+                          init.args[i]->range, false);
+        return;
+      case TypeClass::shader: ctx_.shader_variables[p.name] = &init; return;
+      case TypeClass::texture:
+      case TypeClass::state_object:
+      case TypeClass::error:
+      case TypeClass::void_type: return;
+      default: break;
+    }
+    if (init.kind == ast::ExprKind::state_block) {
+      diags_.error("initializer-mismatch", init.range, "sampler_state initialises a " + p.type.to_string());
+      return;
+    }
+    if (auto v = fold_default(init, const_scope_, diags_, p.name))
+      p.default_value = convert_value(*v, p.type, init.range, diags_);
+  }
+
+  void add_texture(uint32_t parameter) {
+    const Parameter& p = model_.parameters[parameter];
+    TextureInfo t;
+    t.parameter = parameter;
+    t.shape = p.type.texture;
+    for (const AnnotationValue& a : p.annotations) {
+      if (iequals(a.name, "Generator") && a.value.is_string()) {
+        t.generator = a.value.text;
+        t.generator_range = a.range;
+      } else if ((iequals(a.name, "ResourceName") || iequals(a.name, "File")) && a.value.is_string()) {
+        t.resource_name = a.value.text;
+      } else if (a.value.is_string()) {
+        t.generator_params.set(a.name, a.value.text);
+      } else if (a.value.components.size() == 1) {
+        t.generator_params.set(a.name, a.value.number());
+      }
+    }
+    if (!t.generator.empty()) {
+      std::vector<std::string_view> names = shading::generator_names();
+      if (std::none_of(names.begin(), names.end(), [&](std::string_view n) { return iequals(n, t.generator); })) {
+        Diagnostic& d = diags_.error("unknown-generator", t.generator_range,
+                                     "unknown texture generator '" + t.generator + "'");
+        std::string guess = closest_match(t.generator, names);
+        if (!guess.empty()) d.message += "; did you mean '" + guess + "'?";
+      }
+    }
+    model_.textures.push_back(std::move(t));
+  }
+
+  void add_sampler(std::string name, const std::vector<ast::StateAssignment>& states, uint32_t parameter,
+                   uint32_t object, SourceRange range, bool d3d10) {
+    std::vector<ResolvedState> resolved;
+    StateBlock block = d3d10 ? StateBlock::sampler_object : StateBlock::sampler_state;
+    for (const ast::StateAssignment& a : states) {
+      ResolvedState r;
+      if (model_detail::resolve_state(a, block, ctx_, r, nullptr, nullptr)) resolved.push_back(std::move(r));
+    }
+    SamplerInfo s;
+    s.name = std::move(name);
+    s.parameter = parameter;
+    s.state_object = object;
+    s.range = range;
+    s.desc = model_detail::describe_sampler(resolved, d3d10, s.texture);
+    if (object != kNoIndex) model_.state_objects[object].states = std::move(resolved);
+    model_.samplers.push_back(std::move(s));
+  }
+
+  void add_state_object(const ast::StateObject& o) {
+    auto block = state_object_block(o.kind);
+    if (!block || o.name.empty() || model_.state_object_index.count(o.name)) return;
+    StateObjectInfo info;
+    info.block = *block;
+    info.name = o.name;
+    info.range = o.range;
+    info.annotations = annotations(o.annotations);
+    const uint32_t index = static_cast<uint32_t>(model_.state_objects.size());
+    model_.state_object_index.emplace(o.name, index);
+    model_.state_objects.push_back(std::move(info));
+    if (*block == StateBlock::sampler_object) {
+      model_.state_objects[index].sampler = static_cast<uint32_t>(model_.samplers.size());
+      add_sampler(o.name, o.states, kNoIndex, index, o.range, true);
+      return;
+    }
+    std::vector<ResolvedState> resolved;
+    for (const ast::StateAssignment& a : o.states) {
+      ResolvedState r;
+      if (model_detail::resolve_state(a, *block, ctx_, r, nullptr, nullptr)) resolved.push_back(std::move(r));
+    }
+    model_.state_objects[index].states = std::move(resolved);
+  }
+
+  void add_technique(const ast::Technique& t, const std::string& group) {
+    TechniqueInfo info;
+    info.name = t.name;
+    info.version = t.version;
+    info.group = group;
+    info.annotations = annotations(t.annotations);
+    info.range = t.range;
+    for (const ast::Pass& p : t.passes) {
+      PassInfo pass;
+      pass.name = p.name;
+      pass.annotations = annotations(p.annotations);
+      pass.range = p.range;
+      for (const ast::StateAssignment& a : p.states) {
+        ResolvedState r;
+        if (model_detail::resolve_state(a, StateBlock::pass, ctx_, r, &pass.shaders, &pass.unsupported))
+          pass.states.push_back(std::move(r));
+      }
+      pass.summary = model_detail::summarize_pass(pass.states, model_);
+      info.passes.push_back(std::move(pass));
+    }
+    model_.techniques.push_back(std::move(info));
+  }
+
+  const ast::Effect& effect_;
+  DiagnosticSink& diags_;
+  EffectModel model_;
+  ConstantScope const_scope_;
+  ResolveContext ctx_;
+};
+
+}  // namespace
+
+const AnnotationValue* find_annotation(const std::vector<AnnotationValue>& list, std::string_view name) {
+  for (const AnnotationValue& a : list)
+    if (a.name == name) return &a;
+  return nullptr;
+}
+
+std::string_view to_string(PassStage stage) {
+  switch (stage) {
+    case PassStage::vertex: return "vertex";
+    case PassStage::pixel: return "pixel";
+    case PassStage::geometry: return "geometry";
+    case PassStage::hull: return "hull";
+    case PassStage::domain: return "domain";
+    case PassStage::compute: return "compute";
+  }
+  return "?";
+}
+
+const ShaderBinding* PassInfo::shader(PassStage stage) const {
+  for (const ShaderBinding& s : shaders)
+    if (s.stage == stage) return &s;
+  return nullptr;
+}
+
+uint32_t EffectModel::find_parameter(std::string_view name) const {
+  auto it = parameter_index.find(std::string(name));
+  return it == parameter_index.end() ? kNoIndex : it->second;
+}
+
+uint32_t EffectModel::find_state_object(std::string_view name) const {
+  auto it = state_object_index.find(std::string(name));
+  return it == state_object_index.end() ? kNoIndex : it->second;
+}
+
+const TechniqueInfo* EffectModel::find_technique(std::string_view name) const {
+  for (const TechniqueInfo& t : techniques)
+    if (t.name == name) return &t;
+  return nullptr;
+}
+
+const TextureInfo* EffectModel::texture_of(uint32_t parameter) const {
+  for (const TextureInfo& t : textures)
+    if (t.parameter == parameter) return &t;
+  return nullptr;
+}
+
+EffectModel build_effect_model(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& diags) {
+  (void)sm;  // locations are SourceRanges already; kept for notes that need file lookups
+  return Builder(effect, diags).run();
+}
+
+}  // namespace fx

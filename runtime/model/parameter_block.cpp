@@ -1,0 +1,212 @@
+// ParameterStore: uniform-block layouts, dirty tracking, packing with D3D matrix rules,
+// and remap() across reloads.
+#include <algorithm>
+#include <cstring>
+
+#include "parameter_store_impl.h"
+
+namespace fx {
+namespace {
+
+// Bytes one element of `t` occupies with D3D cbuffer rules when the layout gives no stride:
+// every array element and every matrix register starts a 16-byte register.
+uint32_t default_element_stride(const Type& t, uint32_t matrix_stride) {
+  if (t.cls == TypeClass::matrix) {
+    uint32_t registers = t.order == MatrixOrder::row_major ? t.rows : t.cols;
+    return registers * matrix_stride;
+  }
+  return 16;
+}
+
+}  // namespace
+
+uint32_t ParameterStore::Impl::find_path(std::string_view path) const {
+  size_t i = 0;
+  auto name_end = [&](size_t from) {
+    size_t e = from;
+    while (e < path.size() && path[e] != '.' && path[e] != '[') ++e;
+    return e;
+  };
+  size_t e = name_end(0);
+  auto it = by_name.find(std::string(path.substr(0, e)));
+  if (it == by_name.end()) return kNoIndex;
+  uint32_t node = it->second;
+  i = e;
+  while (i < path.size()) {
+    const Node& n = nodes[node];
+    if (path[i] == '[') {
+      size_t close = path.find(']', i);
+      if (close == std::string_view::npos || !n.type.is_array()) return kNoIndex;
+      uint32_t k = 0;
+      for (size_t c = i + 1; c < close; ++c) {
+        if (path[c] < '0' || path[c] > '9') return kNoIndex;
+        k = k * 10 + static_cast<uint32_t>(path[c] - '0');
+        if (k > (1u << 24)) return kNoIndex;
+      }
+      if (k >= n.child_count) return kNoIndex;
+      node = n.first_child + k;
+      i = close + 1;
+    } else if (path[i] == '.') {
+      e = name_end(i + 1);
+      std::string_view m = path.substr(i + 1, e - i - 1);
+      uint32_t found = kNoIndex;
+      if (!n.type.is_array())
+        for (uint32_t k = 0; k < n.child_count; ++k)
+          if (nodes[n.first_child + k].member == m) found = n.first_child + k;
+      if (found == kNoIndex) return kNoIndex;
+      node = found;
+      i = e;
+    } else {
+      return kNoIndex;
+    }
+  }
+  return node;
+}
+
+std::vector<uint32_t> ParameterStore::Impl::match_into(const Impl& other) const {
+  std::vector<uint32_t> out(nodes.size(), kNoIndex);
+  // Top levels by name and type; children follow by position (same type => same shape).
+  for (uint32_t i = 0; i < top_count; ++i) {
+    auto it = other.by_name.find(model->parameters[i].name);
+    if (it == other.by_name.end() || !other.nodes[it->second].type.same_as(nodes[i].type)) continue;
+    std::vector<std::pair<uint32_t, uint32_t>> stack{{i, it->second}};
+    while (!stack.empty()) {
+      auto [a, b] = stack.back();
+      stack.pop_back();
+      out[a] = b;
+      for (uint32_t k = 0; k < nodes[a].child_count && k < other.nodes[b].child_count; ++k)
+        stack.emplace_back(nodes[a].first_child + k, other.nodes[b].first_child + k);
+    }
+  }
+  return out;
+}
+
+ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMemberLayout> members, uint32_t block_size) {
+  Impl& s = *impl_;
+  uint32_t slot;
+  if (auto it = s.block_slot.find(block); it != s.block_slot.end()) {
+    slot = it->second;
+    for (auto& tb : s.top_blocks) tb.erase(std::remove(tb.begin(), tb.end(), slot), tb.end());
+  } else {
+    slot = static_cast<uint32_t>(s.blocks.size());
+    s.blocks.emplace_back();
+    s.block_slot.emplace(block, slot);
+  }
+  Impl::Block b;
+  b.id = block;
+  b.size = block_size;
+  std::string skipped;
+  for (const BlockMemberLayout& m : members) {
+    uint32_t node = s.find_path(m.name);
+    if (node == kNoIndex || s.nodes[node].words == 0 || s.nodes[node].type.cls == TypeClass::structure) {
+      skipped += (skipped.empty() ? "" : ", ") + m.name;
+      continue;
+    }
+    if (m.offset > block_size || m.size > block_size - m.offset)
+      return fail(ParamStatus::size_mismatch, "member '" + m.name + "' lies outside the block (" +
+                                                  std::to_string(block_size) + " bytes)");
+    b.members.push_back({node, m});
+    const Impl::Node& n = s.nodes[node];
+    auto& tb = s.top_blocks[n.top];
+    if (std::find(tb.begin(), tb.end(), slot) == tb.end()) tb.push_back(slot);
+    if (n.pooled) b.pooled.emplace_back(n.pool_entry, 0);
+  }
+  s.blocks[slot] = std::move(b);
+  if (!skipped.empty())
+    return fail(ParamStatus::not_found, "no parameter (or a struct without member paths) for: " + skipped);
+  return {};
+}
+
+bool ParameterStore::dirty(uint32_t block) const {
+  const Impl& s = *impl_;
+  auto it = s.block_slot.find(block);
+  if (it == s.block_slot.end()) return false;
+  const Impl::Block& b = s.blocks[it->second];
+  if (b.dirty) return true;
+  for (auto [entry, seen] : b.pooled)
+    if (s.pool->entries_[entry].version != seen) return true;
+  return false;
+}
+
+ParamStatus ParameterStore::write_block(uint32_t block, std::span<uint8_t> out) {
+  Impl& s = *impl_;
+  auto it = s.block_slot.find(block);
+  if (it == s.block_slot.end()) return fail(ParamStatus::not_found, "block " + std::to_string(block) + " has no layout");
+  Impl::Block& b = s.blocks[it->second];
+  if (out.size() < b.size)
+    return fail(ParamStatus::size_mismatch, "block " + std::to_string(block) + " needs " + std::to_string(b.size) +
+                                                " bytes, the buffer has " + std::to_string(out.size()));
+  for (const Impl::Placement& p : b.members) {
+    const Impl::Node& n = s.nodes[p.node];
+    const uint32_t* words = s.data(n);
+    const Type elem = n.type.without_arrays();
+    const uint32_t per = elem.component_count();
+    const uint32_t count = n.type.element_count();
+    const uint32_t mstride = p.layout.matrix_stride ? p.layout.matrix_stride : 16;
+    const uint32_t astride = p.layout.array_stride ? p.layout.array_stride : default_element_stride(elem, mstride);
+    const uint64_t limit = static_cast<uint64_t>(p.layout.offset) + p.layout.size;
+    auto put = [&](uint64_t at, uint32_t word) {
+      if (at + 4 <= limit && at + 4 <= out.size()) std::memcpy(out.data() + at, &word, 4);
+    };
+    for (uint32_t e = 0; e < count; ++e) {
+      const uint64_t base = p.layout.offset + static_cast<uint64_t>(e) * (count > 1 ? astride : 0);
+      const uint32_t* w = words + static_cast<size_t>(e) * per;
+      if (elem.cls == TypeClass::matrix) {
+        for (uint32_t r = 0; r < elem.rows; ++r)
+          for (uint32_t c = 0; c < elem.cols; ++c) {
+            // column_major: register c holds HLSL column c; row_major: register r holds row r.
+            uint64_t at = p.layout.order == MatrixOrder::column_major ? base + c * mstride + r * 4
+                                                                       : base + r * mstride + c * 4;
+            put(at, w[r * elem.cols + c]);
+          }
+      } else {
+        for (uint32_t k = 0; k < per; ++k) {
+          uint32_t word = w[k];
+          // Doubles are held as float; booleans are 32-bit 0/1 as HLSL's bool in a cbuffer.
+          put(base + k * 4, word);
+        }
+      }
+    }
+  }
+  b.dirty = false;
+  for (auto& [entry, seen] : b.pooled) seen = s.pool->entries_[entry].version;
+  return {};
+}
+
+void remap(const ParameterStore& old_store, ParameterStore& new_store) {
+  const ParameterStore::Impl& o = *old_store.impl_;
+  ParameterStore::Impl& n = *new_store.impl_;
+  std::vector<uint32_t> map = o.match_into(n);
+  // Carry values of matched top-level parameters (pooled ones live in the pool already).
+  for (uint32_t i = 0; i < o.top_count; ++i) {
+    uint32_t j = map[i];
+    if (j == kNoIndex) continue;
+    const auto& a = o.nodes[i];
+    auto& b = n.nodes[j];
+    if (a.string_slot != kNoIndex && b.string_slot != kNoIndex) n.strings[b.string_slot] = o.strings[a.string_slot];
+    if (b.pooled || a.words != b.words || a.words == 0) continue;
+    std::memcpy(n.data(b), o.data(a), a.words * sizeof(uint32_t));
+    n.touch(b);
+  }
+  n.generation = o.generation + 1;
+  n.translate.assign(n.generation, {});
+  n.removed.clear();
+  for (uint32_t g = 0; g < o.generation; ++g) {
+    const auto& older = o.translate[g];
+    auto& t = n.translate[g];
+    t.resize(older.size(), kNoIndex);
+    for (size_t k = 0; k < older.size(); ++k) {
+      if (older[k] != kNoIndex) t[k] = map[older[k]];
+      if (t[k] == kNoIndex) {
+        auto it = o.removed.find(static_cast<uint64_t>(g) << 32 | k);
+        n.removed[static_cast<uint64_t>(g) << 32 | k] =
+            it != o.removed.end() ? it->second : older[k] != kNoIndex ? o.path(older[k]) : std::string("?");
+      }
+    }
+  }
+  n.translate[o.generation] = map;
+  for (size_t k = 0; k < map.size(); ++k)
+    if (map[k] == kNoIndex) n.removed[static_cast<uint64_t>(o.generation) << 32 | k] = o.path(static_cast<uint32_t>(k));
+}
+
+}  // namespace fx

@@ -1,0 +1,184 @@
+// Internal state of ParameterStore, shared by its source files (not installed).
+#pragma once
+#include <cstring>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "fx/model/parameter_store.h"
+#include "model_internal.h"
+
+namespace fx::param_detail {
+
+inline bool float_like(BaseType b) { return b == BaseType::half || b == BaseType::float32 || b == BaseType::float64; }
+inline bool int_like(BaseType b) { return !float_like(b); }
+
+inline uint32_t float_bits(float f) {
+  uint32_t u;
+  std::memcpy(&u, &f, 4);
+  return u;
+}
+inline float bits_float(uint32_t u) {
+  float f;
+  std::memcpy(&f, &u, 4);
+  return f;
+}
+
+// One component converted to the base type and encoded as a 32-bit word.
+inline uint32_t encode(double v, BaseType b) {
+  double c = convert_component(v, b);
+  if (float_like(b)) return float_bits(static_cast<float>(c));
+  if (b == BaseType::int32) return static_cast<uint32_t>(static_cast<int32_t>(c));
+  return static_cast<uint32_t>(c);
+}
+
+inline void flatten_bases(const Type& t, std::vector<BaseType>& out) {
+  for (uint32_t e = 0; e < t.element_count(); ++e) {
+    if (t.cls == TypeClass::structure && t.structure) {
+      for (const StructMember& m : t.structure->members) flatten_bases(m.type, out);
+    } else {
+      for (uint32_t i = 0; i < t.element_components(); ++i) out.push_back(t.base);
+    }
+  }
+}
+
+inline ParamStatus fail(ParamStatus::Code code, std::string message) { return {code, std::move(message)}; }
+
+}  // namespace fx::param_detail
+
+namespace fx {
+using namespace param_detail;
+
+struct ParameterStore::Impl {
+  struct Node {
+    std::string member;            // struct member name ("" for elements and top level)
+    Type type;
+    uint32_t parent = kNoIndex;
+    uint32_t element = 0;          // index within an array parent
+    uint32_t first_child = kNoIndex, child_count = 0;
+    uint32_t top = 0;              // the top-level parameter node
+    uint32_t offset = 0;           // first word (in the store's or the pool's words)
+    uint32_t words = 0;
+    uint32_t base_offset = 0;      // first entry in `bases` (pooled nodes too)
+    bool pooled = false;
+    uint32_t pool_entry = kNoIndex;
+    uint32_t string_slot = kNoIndex;
+  };
+  struct Placement {
+    uint32_t node;
+    BlockMemberLayout layout;
+  };
+  struct Block {
+    uint32_t id = 0, size = 0;
+    std::vector<Placement> members;
+    bool dirty = true;
+    std::vector<std::pair<uint32_t, uint64_t>> pooled;  // pool entry, version last written
+  };
+
+  const EffectModel* model = nullptr;
+  ParameterPool* pool = nullptr;
+  std::vector<Node> nodes;
+  uint32_t top_count = 0;            // nodes [0, top_count) are the model's parameters
+  std::vector<uint32_t> words;
+  std::vector<BaseType> bases;       // per component, see Node::base_offset
+  std::vector<std::string> strings;
+  std::vector<std::vector<uint32_t>> top_blocks;  // top-level node -> block slots
+  std::vector<Block> blocks;
+  std::unordered_map<uint32_t, uint32_t> block_slot;
+  std::unordered_map<std::string, uint32_t> by_name;
+  std::unordered_map<std::string, uint32_t> by_semantic;  // lower-cased
+  uint32_t generation = 0;
+  std::vector<std::vector<uint32_t>> translate;           // [old generation][old index] -> index
+  std::unordered_map<uint64_t, std::string> removed;      // (generation << 32 | index) -> name
+
+  uint32_t* data(const Node& n) {
+    return n.pooled ? pool->words_.data() + n.offset : words.data() + n.offset;
+  }
+  const uint32_t* data(const Node& n) const {
+    return n.pooled ? pool->words_.data() + n.offset : words.data() + n.offset;
+  }
+
+  // Creates the children of node `i` (members or elements), words already assigned.
+  void expand(uint32_t i) {
+    Node n = nodes[i];
+    std::vector<std::pair<std::string, Type>> kids;
+    if (n.type.is_array()) {
+      Type e = n.type.element_type();
+      for (uint32_t k = 0; k < n.type.array_dims[0]; ++k) kids.emplace_back("", e);
+    } else if (n.type.cls == TypeClass::structure && n.type.structure) {
+      for (const StructMember& m : n.type.structure->members) kids.emplace_back(m.name, m.type);
+    }
+    if (kids.empty()) return;
+    uint32_t first = static_cast<uint32_t>(nodes.size());
+    nodes[i].first_child = first;
+    nodes[i].child_count = static_cast<uint32_t>(kids.size());
+    uint32_t offset = n.offset;
+    for (uint32_t k = 0; k < kids.size(); ++k) {
+      Node c;
+      c.member = kids[k].first;
+      c.type = kids[k].second;
+      c.parent = i;
+      c.element = k;
+      c.top = n.top;
+      c.offset = offset;
+      c.base_offset = n.base_offset + (offset - n.offset);
+      c.words = c.type.component_count();
+      c.pooled = n.pooled;
+      c.pool_entry = n.pool_entry;
+      offset += c.words;
+      nodes.push_back(std::move(c));
+    }
+    for (uint32_t k = 0; k < kids.size(); ++k) expand(first + k);
+  }
+
+  std::string path(uint32_t i) const {
+    const Node& n = nodes[i];
+    if (n.parent == kNoIndex) return model->parameters[i].name;
+    std::string base = path(n.parent);
+    return n.member.empty() ? base + "[" + std::to_string(n.element) + "]" : base + "." + n.member;
+  }
+
+  // Resolves `p` to a node index, or reports why not.
+  ParamStatus resolve(Param p, uint32_t& out) const {
+    if (p.generation != generation) {
+      if (p.generation > generation || p.generation >= translate.size())
+        return fail(ParamStatus::invalid_handle, "handle from another store or generation");
+      const auto& table = translate[p.generation];
+      if (p.index >= table.size()) return fail(ParamStatus::invalid_handle, "invalid parameter handle");
+      if (table[p.index] == kNoIndex) {
+        auto it = removed.find(static_cast<uint64_t>(p.generation) << 32 | p.index);
+        return fail(ParamStatus::removed, "parameter '" + (it == removed.end() ? std::string("?") : it->second) +
+                                              "' was removed by a reload; the call did nothing");
+      }
+      out = table[p.index];
+      return {};
+    }
+    if (p.index >= nodes.size()) return fail(ParamStatus::invalid_handle, "invalid parameter handle");
+    out = p.index;
+    return {};
+  }
+
+  void touch(const Node& n) {
+    for (uint32_t slot : top_blocks[n.top]) blocks[slot].dirty = true;
+    if (n.pooled) ++pool->entries_[n.pool_entry].version;
+  }
+
+  BaseType base_at(const Node& n, uint32_t word) const { return bases[n.base_offset + word]; }
+
+  // Checks that the handle's components are all float-like (or all int-like).
+  bool uniform_kind(const Node& n, bool want_float) const {
+    if (!n.type.is_numeric() && n.type.cls != TypeClass::structure) return false;
+    for (uint32_t w = 0; w < n.words; ++w)
+      if (float_like(bases[n.base_offset + w]) != want_float) return false;
+    return true;
+  }
+
+  // The node a block member path names: "light", "light.dir", "bones[3]", "lights[1].dir".
+  uint32_t find_path(std::string_view path) const;
+  // Every node index of this store mapped to `other`'s node with the same path and type.
+  std::vector<uint32_t> match_into(const Impl& other) const;
+
+  std::string describe(uint32_t i) const { return "'" + path(i) + "' (" + nodes[i].type.to_string() + ")"; }
+};
+
+}  // namespace fx

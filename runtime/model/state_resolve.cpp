@@ -1,0 +1,377 @@
+// Resolution of state assignments (pass states, sampler_state, state objects) to typed
+// values: enum values, flags, colours, parameter references, shader bindings and state
+// object references. Names were checked against the state table by the checker; this
+// file reports only what needs values (non-constant expressions, bad references).
+#include <algorithm>
+#include <cmath>
+
+#include "fx/model/value.h"
+#include "model_build.h"
+#include "model_internal.h"
+
+namespace fx::model_detail {
+namespace {
+
+std::optional<PassStage> stage_of(std::string_view state) {
+  std::string n = lower(state);
+  if (n.starts_with("set")) n = n.substr(3);
+  if (n == "vertexshader" || n == "vertexprogram") return PassStage::vertex;
+  if (n == "pixelshader" || n == "fragmentshader" || n == "fragmentprogram") return PassStage::pixel;
+  if (n == "geometryshader") return PassStage::geometry;
+  if (n == "hullshader") return PassStage::hull;
+  if (n == "domainshader") return PassStage::domain;
+  if (n == "computeshader") return PassStage::compute;
+  return std::nullopt;
+}
+
+// `(.5f, .5f, .5f, .5f)` parses as a comma expression: collect its operands in order.
+void flatten_comma(const ast::Expr& e, std::vector<const ast::Expr*>& out) {
+  if (e.kind == ast::ExprKind::binary && e.text == "," && e.args.size() == 2 && e.args[0] && e.args[1]) {
+    flatten_comma(*e.args[0], out);
+    flatten_comma(*e.args[1], out);
+  } else {
+    out.push_back(&e);
+  }
+}
+
+std::optional<Value> fold_list(const ast::Expr& e, ResolveContext& ctx, bool quiet) {
+  std::vector<const ast::Expr*> parts;
+  flatten_comma(e, parts);
+  if (parts.size() == 1) return fold_constant(e, ctx.scope, ctx.diags, quiet);
+  Value out;
+  out.type = make_numeric(BaseType::float32, 1, static_cast<uint8_t>(std::min<size_t>(parts.size(), 4)));
+  for (const ast::Expr* p : parts) {
+    auto v = fold_constant(*p, ctx.scope, ctx.diags, quiet);
+    if (!v || !v->is_numeric()) return std::nullopt;
+    out.components.insert(out.components.end(), v->components.begin(), v->components.end());
+  }
+  if (out.components.size() > 4 || out.components.size() != parts.size()) {
+    out.type = make_numeric(BaseType::float32);
+    out.type.array_dims = {static_cast<uint32_t>(out.components.size())};
+  }
+  return out;
+}
+
+// The parameter an identifier or `<ref>` names (possibly parenthesised), or kNoIndex.
+uint32_t parameter_named(const ast::Expr& e, const EffectModel& model) {
+  if (e.kind == ast::ExprKind::identifier || e.kind == ast::ExprKind::reference) return model.find_parameter(e.text);
+  if (e.kind == ast::ExprKind::index && !e.args.empty() && e.args[0]) return parameter_named(*e.args[0], model);
+  return kNoIndex;
+}
+
+bool is_null(const ast::Expr& e) {
+  return e.kind == ast::ExprKind::null || (e.kind == ast::ExprKind::identifier && iequals(e.text, "NULL")) ||
+         (e.kind == ast::ExprKind::int_literal && e.number == 0);
+}
+
+// Enumeration and flags values: names, integers and `|` combinations.
+std::optional<int64_t> enum_value(const ast::Expr& e, const StateInfo& info, ResolveContext& ctx) {
+  if (e.kind == ast::ExprKind::identifier) {
+    if (auto v = find_enum(info, e.text)) return *v;
+    if (const Value* c = ctx.scope.lookup ? ctx.scope.lookup(e.text) : nullptr; c && c->is_numeric())
+      return static_cast<int64_t>(c->number());
+    return std::nullopt;  // the checker reported an unknown enum name
+  }
+  if (e.kind == ast::ExprKind::binary && (e.text == "|" || e.text == "+") && e.args.size() == 2 && e.args[0] && e.args[1]) {
+    auto a = enum_value(*e.args[0], info, ctx), b = enum_value(*e.args[1], info, ctx);
+    if (!a || !b) return std::nullopt;
+    return e.text == "|" ? (*a | *b) : (*a + *b);
+  }
+  auto v = fold_constant(e, ctx.scope, ctx.diags, true);
+  if (v && v->is_numeric()) return static_cast<int64_t>(v->number());
+  return std::nullopt;
+}
+
+// D3DCOLOR 0xAARRGGBB -> r, g, b, a in [0, 1].
+std::array<float, 4> unpack_color(uint32_t c) {
+  return {((c >> 16) & 0xFF) / 255.0f, ((c >> 8) & 0xFF) / 255.0f, (c & 0xFF) / 255.0f, ((c >> 24) & 0xFF) / 255.0f};
+}
+
+void not_constant(ResolveContext& ctx, const ast::Expr& e, const StateInfo& info) {
+  // Re-fold loudly so the user sees what is not constant.
+  if (!fold_constant(e, ctx.scope, ctx.diags, false))
+    return;
+  ctx.diags.error("bad-state-value", e.range, "value of '" + std::string(info.name) + "' is not a " +
+                                                  std::string(to_string(info.type)));
+}
+
+ShaderBinding shader_from(const ast::Expr& e, PassStage stage, ResolveContext& ctx, int depth = 0) {
+  ShaderBinding b;
+  b.stage = stage;
+  b.range = e.range;
+  b.expr = &e;
+  if (depth > 8) return b;
+  auto fold_args = [&](const std::vector<ast::ExprPtr>& args) {
+    for (const ast::ExprPtr& a : args) {
+      if (!a) continue;
+      auto v = fold_constant(*a, ctx.scope, ctx.diags, true);
+      if (!v) {
+        ctx.diags.error("not-constant", a->range, "compile-time shader argument must be a constant");
+        continue;
+      }
+      b.args.push_back(std::move(*v));
+    }
+  };
+  switch (e.kind) {
+    case ast::ExprKind::compile:
+      b.source = ShaderSource::hlsl_compile;
+      b.profile = e.text;
+      b.entry = e.callee;
+      fold_args(e.args);
+      return b;
+    case ast::ExprKind::asm_block:
+      b.source = ShaderSource::asm_block;
+      b.asm_code = e.code;
+      b.decl_code = e.decl_code;
+      return b;
+    case ast::ExprKind::glsl_list:
+    case ast::ExprKind::init_list:
+      b.source = ShaderSource::glsl_blocks;
+      b.profile = "glsl";
+      for (const ast::ExprPtr& a : e.args)
+        if (a && a->kind == ast::ExprKind::identifier) {
+          if (!ctx.glsl_blocks.count(a->text))
+            ctx.diags.error("unknown-glsl-block", a->range, "no GLSL block named '" + a->text + "'");
+          b.glsl_blocks.push_back(a->text);
+        }
+      return b;
+    case ast::ExprKind::call: {
+      if (iequals(e.text, "CompileShader") && e.args.size() >= 2 && e.args[0] && e.args[1]) {
+        b.source = ShaderSource::hlsl_compile;
+        b.profile = e.args[0]->text;
+        const ast::Expr& fn = *e.args[1];
+        b.entry = fn.text;
+        fold_args(fn.args);
+        return b;
+      }
+      if (iequals(e.text, "ConstructGSWithSO") && !e.args.empty() && e.args[0]) {
+        ShaderBinding inner = shader_from(*e.args[0], stage, ctx, depth + 1);
+        inner.range = e.range;
+        return inner;
+      }
+      // D3D10 pass call form: SetPixelShader(x).
+      if (e.args.size() == 1 && e.args[0]) return shader_from(*e.args[0], stage, ctx, depth + 1);
+      break;
+    }
+    case ast::ExprKind::identifier:
+    case ast::ExprKind::reference:
+    case ast::ExprKind::index: {
+      if (is_null(e)) return b;
+      const ast::Expr* base = &e;
+      std::optional<size_t> element;
+      if (e.kind == ast::ExprKind::index && e.args.size() == 2 && e.args[0] && e.args[1]) {
+        base = e.args[0].get();
+        auto i = fold_constant(*e.args[1], ctx.scope, ctx.diags, true);
+        if (i && i->is_numeric() && i->number() >= 0) element = static_cast<size_t>(i->number());
+      }
+      if (base->kind == ast::ExprKind::identifier && ctx.glsl_blocks.count(base->text)) {
+        b.source = ShaderSource::glsl_blocks;
+        b.profile = "glsl";
+        b.glsl_blocks.push_back(base->text);
+        return b;
+      }
+      auto it = ctx.shader_variables.find(base->text);
+      if (it != ctx.shader_variables.end() && it->second) {
+        const ast::Expr* init = it->second;
+        if (init->kind == ast::ExprKind::init_list) {
+          size_t k = element.value_or(0);
+          init = k < init->args.size() ? init->args[k].get() : nullptr;
+        }
+        if (init) {
+          ShaderBinding inner = shader_from(*init, stage, ctx, depth + 1);
+          inner.variable = base->text;
+          return inner;
+        }
+      }
+      ctx.diags.error("unknown-shader", e.range, "'" + base->text + "' is not a shader variable or GLSL block");
+      return b;
+    }
+    case ast::ExprKind::null: return b;
+    default: break;
+  }
+  ctx.diags.error("bad-state-value", e.range, "not a shader: expected compile, CompileShader, asm, a GLSL block or NULL");
+  return b;
+}
+
+}  // namespace
+
+bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveContext& ctx, ResolvedState& out,
+                   std::vector<ShaderBinding>* shaders, std::vector<UnsupportedState>* unsupported) {
+  const StateInfo* info = find_state(a.name, block);
+  if (!info || !a.value) return false;
+  out = ResolvedState{};
+  out.info = info;
+  out.range = a.range;
+  if (a.index) {
+    auto i = fold_constant(*a.index, ctx.scope, ctx.diags, true);
+    if (!i || !i->is_numeric() || i->number() < 0) {
+      ctx.diags.error("bad-state-index", a.index->range, "state index must be a non-negative integer constant");
+      return false;
+    }
+    out.index = static_cast<uint32_t>(i->number());
+    out.indexed = true;
+  }
+  if (info->vulkan == VulkanMeaning::fixed_function && unsupported)
+    unsupported->push_back({info, out.index, a.range,
+                            "'" + std::string(info->name) +
+                                "' is Direct3D 9 fixed-function state with no Vulkan equivalent; use a pixel shader"});
+
+  const ast::Expr* value = a.value.get();
+  // Call form: SetBlendState(b, factor, mask) -> value is args[0], the rest are call_args.
+  if (a.call_style) {
+    if (value->args.empty() || !value->args[0]) return false;
+    for (size_t i = 1; i < value->args.size(); ++i)
+      if (value->args[i])
+        if (auto v = fold_list(*value->args[i], ctx, true)) out.call_args.push_back(std::move(*v));
+    value = value->args[0].get();
+  }
+
+  switch (info->type) {
+    case StateValueType::boolean:
+    case StateValueType::integer:
+    case StateValueType::floating: {
+      if (uint32_t p = parameter_named(*value, ctx.model); p != kNoIndex && !ctx.model.parameters[p].is_static()) {
+        out.kind = StateValueKind::parameter;
+        out.target = p;
+      }
+      auto v = fold_constant(*value, ctx.scope, ctx.diags, true);
+      if (!v || !v->is_numeric()) {
+        if (out.kind == StateValueKind::parameter) return true;  // the app sets it
+        not_constant(ctx, *value, *info);
+        return false;
+      }
+      if (out.kind != StateValueKind::parameter)
+        out.kind = info->type == StateValueType::boolean ? StateValueKind::boolean
+                   : info->type == StateValueType::integer ? StateValueKind::integer
+                                                           : StateValueKind::floating;
+      out.floating = v->number();
+      out.integer = static_cast<int64_t>(convert_component(v->number(), BaseType::uint32));
+      if (info->type == StateValueType::boolean) out.integer = v->number() != 0;
+      if (info->type == StateValueType::integer && v->number() < 0) out.integer = static_cast<int64_t>(v->number());
+      return true;
+    }
+    case StateValueType::enumeration:
+    case StateValueType::flags: {
+      auto v = enum_value(*value, *info, ctx);
+      if (!v) return false;  // reported by the checker
+      out.kind = StateValueKind::enumeration;
+      out.integer = *v;
+      return true;
+    }
+    case StateValueType::color:
+    case StateValueType::float4: {
+      if (uint32_t p = parameter_named(*value, ctx.model); p != kNoIndex) {
+        out.kind = StateValueKind::parameter;
+        out.target = p;
+        const Parameter& param = ctx.model.parameters[p];
+        if (param.default_value)
+          for (size_t i = 0; i < 4 && i < param.default_value->components.size(); ++i)
+            out.vector[i] = static_cast<float>(param.default_value->components[i]);
+        return true;
+      }
+      auto v = fold_list(*value, ctx, true);
+      if (!v || !v->is_numeric()) {
+        not_constant(ctx, *value, *info);
+        return false;
+      }
+      out.kind = StateValueKind::vector;
+      if (info->type == StateValueType::color && v->components.size() == 1 &&
+          (v->type.base == BaseType::int32 || v->type.base == BaseType::uint32)) {
+        out.vector = unpack_color(static_cast<uint32_t>(static_cast<int64_t>(v->number())));
+      } else if (v->components.size() == 1) {
+        out.vector.fill(static_cast<float>(v->number()));
+      } else {
+        for (size_t i = 0; i < 4 && i < v->components.size(); ++i) out.vector[i] = static_cast<float>(v->components[i]);
+      }
+      out.constant = std::move(*v);
+      return true;
+    }
+    case StateValueType::matrix:
+    case StateValueType::texture:
+    case StateValueType::sampler: {
+      if (is_null(*value)) {
+        out.kind = StateValueKind::null;
+        return true;
+      }
+      uint32_t p = parameter_named(*value, ctx.model);
+      if (p == kNoIndex) {
+        ctx.diags.error("bad-state-value", value->range,
+                        "'" + std::string(info->name) + "' needs a " + std::string(to_string(info->type)) +
+                            " parameter, found '" + value->text + "'");
+        return false;
+      }
+      const Type& t = ctx.model.parameters[p].type;
+      TypeClass want = info->type == StateValueType::texture   ? TypeClass::texture
+                       : info->type == StateValueType::sampler ? TypeClass::sampler
+                                                               : TypeClass::matrix;
+      if (t.cls != want && t.cls != TypeClass::error) {
+        ctx.diags.error("state-type-mismatch", value->range,
+                        "'" + std::string(info->name) + "' needs a " + std::string(to_string(info->type)) + ", '" +
+                            ctx.model.parameters[p].name + "' is a " + t.to_string());
+        return false;
+      }
+      out.kind = StateValueKind::parameter;
+      out.target = p;
+      return true;
+    }
+    case StateValueType::shader_constant: {
+      if (uint32_t p = parameter_named(*value, ctx.model); p != kNoIndex) {
+        out.kind = StateValueKind::parameter;
+        out.target = p;
+        return true;
+      }
+      auto v = fold_list(*value, ctx, true);
+      if (!v || !v->is_numeric()) {
+        not_constant(ctx, *value, *info);
+        return false;
+      }
+      out.kind = StateValueKind::vector;
+      for (size_t i = 0; i < 4 && i < v->components.size(); ++i) out.vector[i] = static_cast<float>(v->components[i]);
+      out.constant = std::move(*v);
+      return true;
+    }
+    case StateValueType::shader: {
+      auto stage = stage_of(info->name);
+      if (!stage) return false;
+      ShaderBinding b = shader_from(*value, *stage, ctx);
+      out.kind = b.source == ShaderSource::null && is_null(*value) ? StateValueKind::null : StateValueKind::shader;
+      if (shaders) {
+        auto it = std::find_if(shaders->begin(), shaders->end(), [&](const ShaderBinding& s) { return s.stage == *stage; });
+        if (it != shaders->end()) {
+          *it = std::move(b);
+          out.target = static_cast<uint32_t>(it - shaders->begin());
+        } else {
+          out.target = static_cast<uint32_t>(shaders->size());
+          shaders->push_back(std::move(b));
+        }
+      }
+      return true;
+    }
+    case StateValueType::state_object: {
+      if (is_null(*value)) {
+        out.kind = StateValueKind::null;
+        return true;
+      }
+      std::string name = value->kind == ast::ExprKind::index && !value->args.empty() && value->args[0]
+                             ? value->args[0]->text : value->text;
+      uint32_t o = ctx.model.find_state_object(name);
+      if (o == kNoIndex) {
+        ctx.diags.error("unknown-state-object", value->range, "no state object named '" + name + "'");
+        return false;
+      }
+      const StateObjectInfo& obj = ctx.model.state_objects[o];
+      if (!info->object_kind.empty() && !iequals(to_string(obj.block), info->object_kind)) {
+        ctx.diags.error("state-type-mismatch", value->range,
+                        "'" + std::string(info->name) + "' needs a " + std::string(info->object_kind) + ", '" + name +
+                            "' is a " + std::string(to_string(obj.block)));
+        return false;
+      }
+      out.kind = StateValueKind::state_object;
+      out.target = o;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace fx::model_detail

@@ -1,0 +1,274 @@
+// ParameterStore: typed set/get for every type, mismatches, lookup, dirty tracking, block
+// packing with D3D matrix rules, shared pools and remap across reloads.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "fx/model/parameter_store.h"
+#include "model_test_util.h"
+
+namespace fx {
+namespace {
+
+const char* kParams = R"(
+  float f = 0.5; float2 f2; float3 f3 : LightDirection = {0, 1, 0}; float4 f4;
+  float4x4 m : WorldViewProjection; float3x4 m34; row_major float4x4 rm;
+  int i = 4; int3 i3; uint u; bool b = true; bool4 b4; half h; double d;
+  float4 arr[3]; string label = "x";
+  struct Light { float3 dir; int kind; float4 color; };
+  Light light; Light lights[2];
+  texture tex;
+)";
+
+TEST(ParameterStore, RoundTripEveryType) {
+  auto b = test::build(kParams);
+  ASSERT_FALSE(b->diags.has_errors()) << b->text();
+  ParameterStore store(b->model);
+  float f = 0;
+  ASSERT_TRUE(store.get(store.find("f"), f));
+  EXPECT_EQ(f, 0.5f);  // default applied
+  ASSERT_TRUE(store.set(store.find("f"), 2.5f));
+  ASSERT_TRUE(store.get(store.find("f"), f));
+  EXPECT_EQ(f, 2.5f);
+  for (const char* name : {"f2", "f3", "f4", "m", "m34", "rm", "arr", "h", "d"}) {
+    Param p = store.find(name);
+    ASSERT_TRUE(p.valid()) << name;
+    std::vector<float> in(store.type(p)->component_count()), out(in.size());
+    for (size_t k = 0; k < in.size(); ++k) in[k] = static_cast<float>(k) * 0.25f - 1.0f;
+    ASSERT_TRUE(store.set(p, std::span<const float>(in))) << name;
+    ASSERT_TRUE(store.get(p, std::span<float>(out))) << name;
+    EXPECT_EQ(in, out) << name;
+  }
+  for (const char* name : {"i3", "b4"}) {
+    Param p = store.find(name);
+    std::vector<int32_t> in(store.type(p)->component_count()), out(in.size());
+    for (size_t k = 0; k < in.size(); ++k) in[k] = static_cast<int32_t>(k % 2);
+    ASSERT_TRUE(store.set(p, std::span<const int32_t>(in))) << name;
+    ASSERT_TRUE(store.get(p, std::span<int32_t>(out))) << name;
+    EXPECT_EQ(in, out) << name;
+  }
+  int32_t i = 0;
+  ASSERT_TRUE(store.get(store.find("i"), i));
+  EXPECT_EQ(i, 4);
+  ASSERT_TRUE(store.set(store.find("u"), int32_t{7}));
+  bool flag = false;
+  ASSERT_TRUE(store.get(store.find("b"), flag));
+  EXPECT_TRUE(flag);
+  ASSERT_TRUE(store.set(store.find("b"), false));
+  ASSERT_TRUE(store.get(store.find("b"), flag));
+  EXPECT_FALSE(flag);
+  std::string label;
+  ASSERT_TRUE(store.get_string(store.find("label"), label));
+  EXPECT_EQ(label, "x");
+  ASSERT_TRUE(store.set_string(store.find("label"), "y"));
+  ASSERT_TRUE(store.get_string(store.find("label"), label));
+  EXPECT_EQ(label, "y");
+}
+
+TEST(ParameterStore, MembersAndElements) {
+  auto b = test::build(kParams);
+  ParameterStore store(b->model);
+  Param light = store.find("light");
+  Param dir = store.member(light, "dir");
+  ASSERT_TRUE(dir.valid());
+  EXPECT_EQ(store.name(dir), "light.dir");
+  const float d[3] = {1, 2, 3};
+  ASSERT_TRUE(store.set(dir, std::span<const float>(d)));
+  ASSERT_TRUE(store.set(store.member(light, "kind"), int32_t{2}));
+  Param second = store.member(store.element(store.find("lights"), 1), "color");
+  ASSERT_TRUE(second.valid());
+  EXPECT_EQ(store.name(second), "lights[1].color");
+  const float c[4] = {0.1f, 0.2f, 0.3f, 0.4f};
+  ASSERT_TRUE(store.set(second, std::span<const float>(c)));
+  float out[4];
+  ASSERT_TRUE(store.get(second, std::span<float>(out)));
+  EXPECT_EQ(out[2], 0.3f);
+  EXPECT_FALSE(store.element(store.find("lights"), 2).valid());
+  EXPECT_FALSE(store.member(light, "nope").valid());
+  EXPECT_FALSE(store.element(store.find("f4"), 0).valid());
+  Param e2 = store.element(store.find("arr"), 2);
+  const float v[4] = {9, 8, 7, 6};
+  ASSERT_TRUE(store.set(e2, std::span<const float>(v)));
+  float all[12];
+  ASSERT_TRUE(store.get(store.find("arr"), std::span<float>(all)));
+  EXPECT_EQ(all[8], 9);
+  EXPECT_EQ(all[11], 6);
+  // A struct mixing floats and ints cannot be set from floats as a whole.
+  std::vector<float> whole(8);
+  EXPECT_EQ(store.set(light, std::span<const float>(whole)).code, ParamStatus::type_mismatch);
+}
+
+TEST(ParameterStore, MismatchesAreErrorsNotUB) {
+  auto b = test::build(kParams);
+  ParameterStore store(b->model);
+  const float two[2] = {1, 2};
+  ParamStatus s = store.set(store.find("f3"), std::span<const float>(two));
+  EXPECT_EQ(s.code, ParamStatus::size_mismatch);
+  EXPECT_NE(s.message.find("f3"), std::string::npos) << s.message;
+  EXPECT_EQ(store.set(store.find("i"), 1.0f).code, ParamStatus::type_mismatch);
+  EXPECT_EQ(store.set(store.find("f"), int32_t{1}).code, ParamStatus::type_mismatch);
+  EXPECT_EQ(store.set(store.find("tex"), 1.0f).code, ParamStatus::type_mismatch);
+  EXPECT_EQ(store.set_string(store.find("f"), "s").code, ParamStatus::type_mismatch);
+  EXPECT_EQ(store.set(store.find("missing"), 1.0f).code, ParamStatus::invalid_handle);
+  EXPECT_EQ(store.set(Param{123456, 0}, 1.0f).code, ParamStatus::invalid_handle);
+  EXPECT_EQ(store.set(Param{0, 7}, 1.0f).code, ParamStatus::invalid_handle);
+  EXPECT_EQ(store.set_matrix(store.find("f4"), std::vector<float>(16)).code, ParamStatus::type_mismatch);
+  float out[3];
+  EXPECT_EQ(store.get(store.find("f4"), std::span<float>(out)).code, ParamStatus::size_mismatch);
+  float f = 0;
+  ASSERT_TRUE(store.get(store.find("f"), f));
+  EXPECT_EQ(f, 0.5f) << "a failed call changes nothing";
+}
+
+TEST(ParameterStore, LookupBySemanticIgnoresCase) {
+  auto b = test::build(kParams);
+  ParameterStore store(b->model);
+  EXPECT_EQ(store.by_semantic("worldviewprojection"), store.find("m"));
+  EXPECT_EQ(store.by_semantic("LIGHTDIRECTION"), store.find("f3"));
+  EXPECT_FALSE(store.by_semantic("Nope").valid());
+  EXPECT_EQ(store.parameter_count(), b->model.parameters.size());
+}
+
+TEST(ParameterStore, MatrixPackingFollowsD3D) {
+  auto b = test::build("float4x4 cm; row_major float4x4 rm; float4x4 ms[2]; float3 v;");
+  ParameterStore store(b->model);
+  // A D3DX-style row-major matrix: m[r][c] = 10*r + c (translation in row 3).
+  std::vector<float> m(16);
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) m[r * 4 + c] = static_cast<float>(10 * r + c);
+  ASSERT_TRUE(store.set_matrix(store.find("cm"), m));
+  ASSERT_TRUE(store.set_matrix(store.find("rm"), m));
+  // The same matrix given column-major (glm memory of the transpose) reads back equal.
+  std::vector<float> col(16);
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) col[c * 4 + r] = m[r * 4 + c];
+  std::vector<float> two(32);
+  std::copy(col.begin(), col.end(), two.begin());
+  std::copy(col.begin(), col.end(), two.begin() + 16);
+  ASSERT_TRUE(store.set_matrix(store.find("ms"), two, HostMatrixOrder::column_major));
+  std::vector<float> back(16);
+  ASSERT_TRUE(store.get_matrix(store.element(store.find("ms"), 1), back));
+  EXPECT_EQ(back, m);
+  const BlockMemberLayout layout[] = {
+      {"cm", 0, 64, 0, 16, MatrixOrder::column_major},
+      {"rm", 64, 64, 0, 16, MatrixOrder::row_major},
+      {"ms", 128, 128, 64, 16, MatrixOrder::column_major},
+      {"v", 256, 12, 0, 16, MatrixOrder::column_major},
+  };
+  ASSERT_TRUE(store.bind_layout(0, layout, 272));
+  std::vector<uint8_t> bytes(272, 0xCD);
+  ASSERT_TRUE(store.write_block(0, bytes));
+  auto at = [&](size_t offset) {
+    float f;
+    std::memcpy(&f, bytes.data() + offset, 4);
+    return f;
+  };
+  // column_major: register c holds column c, so the bytes read m[0][1] at offset 16.
+  EXPECT_EQ(at(16), 1.0f);   // register 1, component 0 = m[0][1]
+  EXPECT_EQ(at(4), 10.0f);   // register 0, component 1 = m[1][0]
+  EXPECT_EQ(at(48 + 0), 3.0f);
+  // row_major: register r holds row r, identical to the host's row-major floats.
+  EXPECT_EQ(at(64 + 4), 1.0f);
+  EXPECT_EQ(at(64 + 16), 10.0f);
+  // Second array element starts at its stride.
+  EXPECT_EQ(at(128 + 64 + 16), 1.0f);
+  // Bytes no parameter covers are untouched.
+  EXPECT_EQ(bytes[268], 0xCD);
+  std::vector<uint8_t> small(100);
+  EXPECT_EQ(store.write_block(0, small).code, ParamStatus::size_mismatch);
+  const BlockMemberLayout outside[] = {{"v", 300, 12, 0, 16, MatrixOrder::column_major}};
+  EXPECT_EQ(store.bind_layout(1, outside, 272).code, ParamStatus::size_mismatch);
+}
+
+TEST(ParameterStore, DirtyTrackingPerBlock) {
+  auto b = test::build("float4 a; float4 c; struct S { float3 p; float w; }; S s;");
+  ParameterStore store(b->model);
+  const BlockMemberLayout b0[] = {{"a", 0, 16, 0, 16, MatrixOrder::column_major}};
+  const BlockMemberLayout b1[] = {{"c", 0, 16, 0, 16, MatrixOrder::column_major},
+                                  {"s.p", 16, 12, 0, 16, MatrixOrder::column_major},
+                                  {"s.w", 28, 4, 0, 16, MatrixOrder::column_major}};
+  ASSERT_TRUE(store.bind_layout(0, b0, 16));
+  ASSERT_TRUE(store.bind_layout(1, b1, 32));
+  EXPECT_TRUE(store.dirty(0));
+  std::vector<uint8_t> bytes(32);
+  ASSERT_TRUE(store.write_block(0, bytes));
+  ASSERT_TRUE(store.write_block(1, bytes));
+  EXPECT_FALSE(store.dirty(0));
+  EXPECT_FALSE(store.dirty(1));
+  ASSERT_TRUE(store.set(store.member(store.find("s"), "w"), 2.0f));
+  EXPECT_FALSE(store.dirty(0));
+  EXPECT_TRUE(store.dirty(1));
+  ASSERT_TRUE(store.write_block(1, bytes));
+  float w;
+  std::memcpy(&w, bytes.data() + 28, 4);
+  EXPECT_EQ(w, 2.0f);
+  const float a[4] = {1, 2, 3, 4};
+  ASSERT_TRUE(store.set(store.find("a"), std::span<const float>(a)));
+  EXPECT_TRUE(store.dirty(0));
+  EXPECT_FALSE(store.dirty(1));
+  const BlockMemberLayout unknown[] = {{"zz", 0, 4, 0, 16, MatrixOrder::column_major}};
+  EXPECT_EQ(store.bind_layout(2, unknown, 4).code, ParamStatus::not_found);
+}
+
+TEST(ParameterStore, SharedPool) {
+  auto one = test::build("shared float4x4 ViewProj; shared float Time = 1; float local = 2;");
+  auto two = test::build("shared float Time = 5; shared float4x4 ViewProj; shared int Time2;");
+  auto bad = test::build("shared float3 Time;");
+  ParameterPool pool;
+  ParameterStore a(one->model, &pool), b(two->model, &pool);
+  EXPECT_EQ(pool.size(), 3u);
+  float t = 0;
+  ASSERT_TRUE(b.get(b.find("Time"), t));
+  EXPECT_EQ(t, 1.0f) << "the first store to declare a shared parameter sets its default";
+  const BlockMemberLayout layout[] = {{"Time", 0, 4, 0, 16, MatrixOrder::column_major}};
+  ASSERT_TRUE(b.bind_layout(0, layout, 16));
+  std::vector<uint8_t> bytes(16);
+  ASSERT_TRUE(b.write_block(0, bytes));
+  EXPECT_FALSE(b.dirty(0));
+  ASSERT_TRUE(a.set(a.find("Time"), 9.0f));
+  EXPECT_TRUE(b.dirty(0)) << "a write through another store dirties this store's block";
+  ASSERT_TRUE(b.get(b.find("Time"), t));
+  EXPECT_EQ(t, 9.0f);
+  DiagnosticSink diags;
+  ParameterStore c(bad->model, &pool, &diags);
+  EXPECT_EQ(diags.error_count(), 1u);
+  EXPECT_EQ(diags.diagnostics()[0].id, "shared-type-mismatch");
+  const float three[3] = {1, 2, 3};
+  ASSERT_TRUE(c.set(c.find("Time"), std::span<const float>(three)));
+  ASSERT_TRUE(a.get(a.find("Time"), t));
+  EXPECT_EQ(t, 9.0f);
+}
+
+TEST(ParameterStore, RemapSurvivesReload) {
+  auto v1 = test::build("float Gloss = 0.5; float4 Tint; float Removed; int Count;");
+  auto v2 = test::build("float4 Tint; float Gloss = 0.1; int Count = 3; float Added;");
+  auto v3 = test::build("float Gloss; float3 Tint;");
+  ParameterStore s1(v1->model);
+  Param gloss = s1.find("Gloss"), tint = s1.find("Tint"), removed = s1.find("Removed"), count = s1.find("Count");
+  ASSERT_TRUE(s1.set(gloss, 0.75f));
+  ASSERT_TRUE(s1.set(count, int32_t{9}));
+  ParameterStore s2(v2->model);
+  remap(s1, s2);
+  EXPECT_EQ(s2.generation(), 1u);
+  float g = 0;
+  ASSERT_TRUE(s2.get(gloss, g));
+  EXPECT_EQ(g, 0.75f) << "the value carries over and the old handle still works";
+  int32_t n = 0;
+  ASSERT_TRUE(s2.get(count, n));
+  EXPECT_EQ(n, 9);
+  EXPECT_EQ(s2.current(tint), s2.find("Tint"));
+  ParamStatus st = s2.set(removed, 1.0f);
+  EXPECT_EQ(st.code, ParamStatus::removed);
+  EXPECT_NE(st.message.find("Removed"), std::string::npos) << st.message;
+  // A second reload changes Tint's type: handles from both generations follow or go inert.
+  ParameterStore s3(v3->model);
+  remap(s2, s3);
+  ASSERT_TRUE(s3.get(gloss, g));
+  EXPECT_EQ(g, 0.75f);
+  EXPECT_EQ(s3.set(tint, 1.0f).code, ParamStatus::removed);
+  EXPECT_EQ(s3.set(count, int32_t{1}).code, ParamStatus::removed);
+  EXPECT_EQ(s3.set(s2.find("Added"), 1.0f).code, ParamStatus::removed);
+}
+
+}  // namespace
+}  // namespace fx
