@@ -1,0 +1,158 @@
+// The application-facing facade: load effects, set parameters through handles that
+// survive reloads, select techniques, and call poll() once per frame to swap in the
+// versions a background worker rebuilt after the files (or their includes) were edited.
+//
+//   fx::EffectLibrary lib({.include_dirs = {"effects"}, .backend = &binding});
+//   fx::EffectHandle e = lib.load("effects/strand_aniso.fx");
+//   fx::Param light = e.param("LightDir");                 // fx/model/parameter_store.h
+//   e.params()->set(light, std::span<const float>(dir));
+//   uint32_t t = e.select({.distance = 12.f});
+//   for (;;) { draw(e.version(), t); for (auto& ev : lib.poll(frame++)) log(ev); }
+//
+// Threading: load(), poll(), unload() and every EffectHandle call belong to one thread
+// (the render thread). The library runs one worker thread for watching and rebuilding.
+#pragma once
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fx/checker.h"
+#include "fx/diagnostic.h"
+#include "fx/reload/effect_backend.h"
+#include "fx/reload/file_watcher.h"
+#include "fx/reload/reload_event.h"
+#include "fx/reload/technique_choice.h"
+#include "fx/select/device_caps.h"
+
+namespace fx {
+
+// Declared, not included: fx/model/parameter_store.h (for Param, ParameterStore) and
+// fx/select/selection.h (for SelectionCriteria) cannot share a translation unit yet (see
+// fx/reload/technique_choice.h); include the one your code uses.
+struct Param;
+class ParameterStore;
+struct SelectionCriteria;
+struct EffectVersion;
+
+struct EffectLibraryOptions {
+  std::vector<std::string> include_dirs;  // searched after the including file's folder
+  std::vector<std::string> defines;       // "NAME" or "NAME=VALUE", as -D
+  EffectProfile profile = EffectProfile::automatic;
+  bool watch = true;                      // reload on edits (a worker thread is started)
+  std::chrono::milliseconds coalesce{50}; // quiet time before an edited file is reloaded
+  WatchBackend watch_backend = WatchBackend::automatic;
+  EffectBackend* backend = nullptr;       // not owned; nullptr: no GPU objects
+  std::optional<DeviceCaps> caps;         // techniques are validated against these
+  std::string spirv_cache_dir;            // "" keeps the SPIR-V cache in memory only
+  uint32_t frames_in_flight = 2;          // how long replaced versions are kept (poll frames)
+  std::function<void(const ReloadEvent&)> on_event;  // called from poll(), before it returns
+};
+
+// Counters for tests and tools.
+struct EffectLibraryStats {
+  uint64_t transactions = 0;   // reload attempts run by the worker
+  uint64_t reloads = 0;        // versions swapped in by poll()
+  uint64_t failures = 0;       // failed reload attempts reported
+  uint64_t deletions = 0;      // deleted events reported
+  size_t retiring = 0;         // replaced versions waiting for their frames to retire
+  size_t watched_files = 0;    // files in the include graph
+};
+
+namespace detail {
+struct EffectSlot;
+}
+
+// A loaded effect. Copies refer to the same effect; the handle stays valid across reloads.
+// After unload() or the library's destruction it is inert (ok() false, version() null).
+class EffectHandle {
+ public:
+  EffectHandle() = default;
+
+  // Whether this handle refers to an effect at all.
+  bool valid() const { return slot_ != nullptr; }
+  // Whether a good version is live (false when the first load failed and no fix came yet).
+  bool ok() const;
+  // The effect file as given to load().
+  const std::string& path() const;
+  // The live version (nullptr when !ok()). Holding it keeps it alive past its retirement.
+  std::shared_ptr<const EffectVersion> version() const;
+  // Serial of the live version (0 when none): changes on every successful reload.
+  uint64_t serial() const;
+  // Diagnostics of the last load or reload attempt, and the sources they point into.
+  const std::vector<Diagnostic>& diagnostics() const;
+  std::shared_ptr<const SourceManager> diagnostic_sources() const;
+
+  // A parameter by exact name, else by semantic (case-insensitive); invalid if neither
+  // (or when no version is live).
+  Param param(std::string_view name_or_semantic) const;
+  // The live parameter values (nullptr when !ok()): set/get through it. Handles from
+  // earlier versions stay valid (translated); removed parameters' handles are inert.
+  ParameterStore* params() const;
+
+  // Chooses a technique (index into version()->model.techniques, or kNoTechnique) and
+  // remembers the criteria: every reload re-selects with them.
+  uint32_t select(const SelectionCriteria& criteria) const;
+  // Selects with default criteria (every scheme, no distance), remembered likewise.
+  uint32_t select() const;
+  // The last selected technique (re-selected after reloads); kNoTechnique before select().
+  uint32_t technique() const;
+  std::string technique_name() const;
+
+ private:
+  friend class EffectLibrary;
+  explicit EffectHandle(std::shared_ptr<detail::EffectSlot> slot) : slot_(std::move(slot)) {}
+  std::shared_ptr<detail::EffectSlot> slot_;
+};
+
+class EffectLibrary {
+ public:
+  explicit EffectLibrary(EffectLibraryOptions options = {});
+  // Stops the worker and releases every version (the device must be idle by then).
+  ~EffectLibrary();
+  EffectLibrary(const EffectLibrary&) = delete;
+  EffectLibrary& operator=(const EffectLibrary&) = delete;
+
+  // Loads (synchronously) and starts watching the file and its includes. Loading the same
+  // path twice returns the same effect. A failed load still returns a handle (ok() false,
+  // diagnostics() say why) that becomes ok once an edit fixes the file.
+  EffectHandle load(const std::string& path);
+  // Stops watching the effect; its version is retired like a replaced one and the
+  // handle (and its copies) become inert.
+  void unload(const EffectHandle& effect);
+
+  // At a frame boundary: swaps in completed reloads, retires replaced versions and
+  // returns (and passes to on_event) what happened. `frame` is the number of the frame
+  // about to be recorded: a version replaced now is destroyed at the first poll() whose
+  // frame is >= now + frames_in_flight.
+  std::vector<ReloadEvent> poll(uint64_t frame);
+  // The same, counting calls as frames.
+  std::vector<ReloadEvent> poll();
+  // Destroys replaced versions whose last frame is <= `completed_frame` (for applications
+  // that know from a fence or timeline semaphore which frames finished).
+  void release_completed(uint64_t completed_frame);
+  // Destroys every replaced version now (after vkDeviceWaitIdle).
+  void release_all();
+
+  // Blocks until the worker has a result for poll() or `timeout` passes; true if one is
+  // ready. For tools and tests that have no frame loop.
+  bool wait(std::chrono::milliseconds timeout);
+
+  // Rebuilds every loaded effect now (the worker reports the outcome through poll()).
+  void reload_all();
+
+  EffectLibraryStats stats() const;
+  // Problems of the watcher itself (inotify unavailable, watch limits).
+  std::vector<Diagnostic> watcher_diagnostics() const;
+  const EffectLibraryOptions& options() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fx

@@ -1,0 +1,45 @@
+// Reload transaction, model side: the effect model, its parameter store and what technique
+// selection needs to know about each technique.
+#include <optional>
+#include <variant>
+
+#include "fx/model/effect_model.h"
+#include "fx/model/parameter_store.h"
+#include "version_steps.h"
+
+namespace fx {
+namespace {
+
+using FactValue = std::variant<bool, int32_t, float, std::string>;
+
+std::optional<FactValue> fact_value(const Value& v) {
+  if (v.is_string()) return FactValue(v.text);
+  if (v.type.cls != TypeClass::scalar || v.components.empty()) return std::nullopt;
+  switch (v.type.base) {
+    case BaseType::boolean: return FactValue(v.truthy());
+    case BaseType::int32:
+    case BaseType::uint32: return FactValue(static_cast<int32_t>(v.number()));
+    default: return FactValue(static_cast<float>(v.number()));
+  }
+}
+
+}  // namespace
+
+bool build_version_model(EffectVersion& version, DiagnosticSink& sink, std::vector<TechniqueFacts>& facts) {
+  size_t errors = sink.error_count();
+  version.model = std::make_shared<EffectModel>(build_effect_model(version.parsed, *version.sources, sink));
+  if (sink.error_count() != errors) return false;
+  version.params = std::make_shared<ParameterStore>(*version.model, nullptr, &sink);
+  facts.clear();
+  for (const TechniqueInfo& t : version.model->techniques) {
+    TechniqueFacts f;
+    f.name = t.name;
+    f.range = t.range;
+    for (const fx::AnnotationValue& a : t.annotations)
+      if (auto v = fact_value(a.value)) f.annotations.emplace_back(a.name, std::move(*v));
+    facts.push_back(std::move(f));
+  }
+  return sink.error_count() == errors;
+}
+
+}  // namespace fx

@@ -1,0 +1,35 @@
+// Reload transaction, compile side: translation units and every pass's program, through
+// the shared SPIR-V cache so that only changed units reach glslang.
+#include "fx/compile/effect_programs.h"
+#include "fx/compile/effect_units.h"
+#include "version_steps.h"
+
+namespace fx {
+
+bool build_version_programs(EffectVersion& version, const ShaderCompiler& compiler, const FrontEndOptions& options,
+                            DiagnosticSink& sink, ProgramOutcome& outcome) {
+  size_t errors = sink.error_count();
+  EffectUnitOptions unit_options;
+  for (const auto& [name, value] : options.preprocessor.defines) unit_options.defines.push_back({name, value});
+  version.units = std::make_shared<EffectUnits>(version.parsed.ast, *version.sources, sink, std::move(unit_options));
+  version.programs = std::make_shared<EffectPrograms>(*version.units, compiler, *version.sources);
+  // Every pass, not just the selected technique's: a broken fallback must not be
+  // discovered the day the fallback is chosen.
+  for (const EffectPass& pass : version.units->passes()) {
+    const PassProgram& program = version.programs->program(pass);
+    for (const StageProgram& s : program.stages) {
+      for (const Diagnostic& d : s.diagnostics) forward(d, sink);
+      if (!s.shader.from_cache && !s.reused)
+        outcome.recompiled.push_back(pass.technique + "." + pass.pass + "." + to_string(s.stage));
+    }
+    for (const Diagnostic& d : program.diagnostics) forward(d, sink);
+    for (const std::string& why : program.unsupported)
+      outcome.rejections.push_back({pass.technique_index, pass.technique, pass.pass + ": " + why});
+    if (!program.compiled && !program.stages.empty())
+      outcome.rejections.push_back({pass.technique_index, pass.technique, pass.pass + ": did not compile"});
+  }
+  outcome.glslang_ms = version.programs->stats().glslang_ms;
+  return sink.error_count() == errors;
+}
+
+}  // namespace fx
