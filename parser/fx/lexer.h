@@ -24,14 +24,22 @@ class Lexer {
   // True when the next token starts a new line (checked by directive parsing).
   bool at_line_end();
   // Location of the next character.
-  SourceLocation here() const { return sm_.location(buffer_, static_cast<uint32_t>(pos_)); }
+  SourceLocation here() const { return at(pos_); }
   BufferId buffer() const { return buffer_; }
 
  private:
-  char peek(size_t ahead = 0) const;
+  char peek(size_t ahead = 0) const {
+    return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
+  }
+  // The location of a buffer offset; the buffer's base is cached because this runs once
+  // per token (SourceManager::location is an out-of-line bounds-checked lookup).
+  SourceLocation at(size_t offset) const {
+    return base_ ? SourceLocation{base_ + static_cast<uint32_t>(offset)} : SourceLocation{};
+  }
   void skip_splices();
   void skip_whitespace_and_comments();
   Token make(TokenKind kind, size_t begin);
+  std::string_view clean_spelling(const Token& t);
   Token lex_number(size_t begin);
   Token lex_quoted(size_t begin, char quote);
   Token lex_punct(size_t begin);
@@ -40,8 +48,10 @@ class Lexer {
   DiagnosticSink& diags_;
   BufferId buffer_;
   std::string_view text_;
+  uint32_t base_ = 0;  // raw location of offset 0 (0 for an invalid buffer)
   size_t pos_ = 0;
   uint8_t pending_flags_ = kAtLineStart;
+  bool spliced_ = false;  // the current token contains a backslash-newline
 };
 
 // Value of a numeric literal: integer or floating, with its suffix checked. Returns

@@ -11,11 +11,7 @@ namespace fx {
 namespace check {
 namespace {
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
+char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c + ('a' - 'A')) : c; }
 
 // Components of a numeric type name (`float3` 3, `float4x4` 16, `int` 1), or 0 when the
 // type is not numeric (string, texture, struct names).
@@ -23,13 +19,12 @@ int numeric_components(std::string_view type) {
   static constexpr std::string_view kScalars[] = {
       "bool", "int", "uint", "dword", "half", "float", "double", "min16float", "min10float",
       "min16int", "min12int", "min16uint"};
-  std::string t = lower(type);
   for (std::string_view scalar : kScalars) {
-    if (t.compare(0, scalar.size(), scalar) != 0) continue;
-    std::string_view rest = std::string_view(t).substr(scalar.size());
+    if (type.size() < scalar.size() || !iequals(type.substr(0, scalar.size()), scalar)) continue;
+    std::string_view rest = type.substr(scalar.size());
     if (rest.empty()) return 1;
     if (rest.size() == 1 && rest[0] >= '1' && rest[0] <= '4') return rest[0] - '0';
-    if (rest.size() == 3 && rest[1] == 'x' && rest[0] >= '1' && rest[0] <= '4' &&
+    if (rest.size() == 3 && lower(rest[1]) == 'x' && rest[0] >= '1' && rest[0] <= '4' &&
         rest[2] >= '1' && rest[2] <= '4')
       return (rest[0] - '0') * (rest[2] - '0');
   }
@@ -87,12 +82,12 @@ std::string signature(const ast::Function& f) {
 
 std::string quote(std::string_view text) { return "'" + std::string(text) + "'"; }
 
+// ASCII only: names are ASCII, and std::tolower's locale call dominated the checker.
 bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() &&
-         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) ==
-                  std::tolower(static_cast<unsigned char>(y));
-         });
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (lower(a[i]) != lower(b[i])) return false;
+  return true;
 }
 
 Checker::Checker(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& diags,
@@ -105,9 +100,9 @@ void Checker::run() {
   collect_symbols();
   check_functions();
   check_profile_rules();
-  std::unordered_map<std::string, SourceRange> techniques, groups;
+  std::unordered_map<std::string_view, SourceRange> techniques, groups;
   auto technique = [&](const ast::Technique& t,
-                       std::unordered_map<std::string, SourceRange>& names) {
+                       std::unordered_map<std::string_view, SourceRange>& names) {
     if (!t.name.empty()) {
       auto [it, fresh] = names.emplace(t.name, t.name_range);
       if (!fresh) report_duplicate("technique", t.name, t.name_range, it->second);
@@ -133,7 +128,7 @@ void Checker::run() {
         if (auto [it, fresh] = groups.emplace(g.name, g.name_range); !fresh)
           report_duplicate("fxgroup", g.name, g.name_range, it->second);
         check_annotations(g.annotations);
-        std::unordered_map<std::string, SourceRange> in_group;
+        std::unordered_map<std::string_view, SourceRange> in_group;
         for (const ast::Technique& t : g.techniques) technique(t, in_group);
         break;
       }
@@ -142,14 +137,14 @@ void Checker::run() {
   }
 }
 
-void Checker::report_duplicate(std::string_view what, const std::string& name, SourceRange range,
+void Checker::report_duplicate(std::string_view what, std::string_view name, SourceRange range,
                                SourceRange previous) {
   Diagnostic& d = diags_.error("duplicate-definition", range,
                                std::string(what) + " " + quote(name) + " is already defined");
   if (previous.valid()) d.notes.push_back({previous.begin, "previous definition is here"});
 }
 
-void Checker::define(const std::string& name, SourceRange range, Symbol symbol,
+void Checker::define(std::string_view name, SourceRange range, Symbol symbol,
                      std::string_view what) {
   if (name.empty()) return;
   symbol.range = range;
@@ -158,6 +153,7 @@ void Checker::define(const std::string& name, SourceRange range, Symbol symbol,
 }
 
 void Checker::collect_symbols() {
+  globals_.reserve(effect_.decls.size());
   for (const ast::Decl& d : effect_.decls) {
     switch (d.kind) {
       case ast::DeclKind::variable:
@@ -261,33 +257,34 @@ void Checker::check_profile_rules() {
 void Checker::check_value_type(std::string_view type_name, size_t array_dims,
                                const ast::Expr& value, std::string_view what,
                                std::string_view name, std::string_view id) {
-  std::string subject = std::string(what) + " " + quote(name);
+  // Built only for a report: this runs for every parameter and annotation.
+  auto subject = [&] { return std::string(what) + " " + quote(name); };
   if (iequals(type_name, "string")) {
     if (!only_strings(value))
-      diags_.error(std::string(id), value.range, subject + " is a string; its value is not");
+      diags_.error(std::string(id), value.range, subject() + " is a string; its value is not");
     return;
   }
   int components = numeric_components(type_name);
   if (components == 0) return;
   if (contains_string(value)) {
     diags_.error(std::string(id), value.range,
-                 subject + " is " + quote(type_name) + "; its value is a string");
+                 subject() + " is " + quote(type_name) + "; its value is a string");
     return;
   }
   if (array_dims != 0 || value.kind != ast::ExprKind::init_list) return;
   std::optional<size_t> leaves = literal_leaves(value);
   if (leaves && *leaves != static_cast<size_t>(components))
     diags_.error(std::string(id), value.range,
-                 subject + " is " + quote(type_name) + " with " + std::to_string(components) +
+                 subject() + " is " + quote(type_name) + " with " + std::to_string(components) +
                      " component" + (components == 1 ? "" : "s") + "; its value has " +
                      std::to_string(*leaves));
 }
 
 void Checker::check_annotations(const std::vector<ast::Annotation>& annotations) {
-  std::unordered_map<std::string, SourceRange> seen;
+  FirstSeen<std::string_view> seen;
   for (const ast::Annotation& a : annotations) {
-    if (auto [it, fresh] = seen.emplace(a.name, a.range); !fresh)
-      report_duplicate("annotation", a.name, a.range, it->second);
+    if (const SourceRange* previous = seen.insert(a.name, a.range))
+      report_duplicate("annotation", a.name, a.range, *previous);
     if (a.value)
       check_value_type(a.type.name, a.array_dims.size(), *a.value, "annotation", a.name,
                        "annotation-type-mismatch");
@@ -312,11 +309,11 @@ void Checker::check_variable(const ast::Variable& v) {
 
 void Checker::check_technique(const ast::Technique& t) {
   check_annotations(t.annotations);
-  std::unordered_map<std::string, SourceRange> passes;
+  FirstSeen<std::string_view> passes;
   for (const ast::Pass& p : t.passes) {
     if (!p.name.empty()) {
-      if (auto [it, fresh] = passes.emplace(p.name, p.name_range); !fresh)
-        report_duplicate("pass", p.name, p.name_range, it->second);
+      if (const SourceRange* previous = passes.insert(p.name, p.name_range))
+        report_duplicate("pass", p.name, p.name_range, *previous);
     }
     check_annotations(p.annotations);
     check_states(p.states, StateBlock::pass, t.version);
@@ -324,7 +321,7 @@ void Checker::check_technique(const ast::Technique& t) {
 }
 
 const Symbol* Checker::lookup(std::string_view name) const {
-  auto it = globals_.find(std::string(name));
+  auto it = globals_.find(name);
   return it == globals_.end() ? nullptr : &it->second;
 }
 

@@ -2,7 +2,8 @@
 // split over checker.cpp (symbols, duplicates, annotations, profile rules) and
 // checker_states.cpp (state assignments against the state table). Private to fxkit_parser.
 #pragma once
-#include <map>
+#include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -14,6 +15,46 @@
 #include "fx/state_table.h"
 
 namespace fx::check {
+
+// First occurrences of keys in one block (annotations, passes, states): blocks are small,
+// so the first kSmall keys are scanned in place without allocating; larger blocks switch
+// to a hash index, so a huge block stays linear.
+template <class Key, class Hash = std::hash<Key>>
+class FirstSeen {
+ public:
+  // Records `value` for a new key and returns nullptr, or returns the value recorded for
+  // an earlier equal key (which the caller may update).
+  SourceRange* insert(const Key& key, SourceRange value) {
+    if (!overflow_.empty()) {
+      auto [it, fresh] = overflow_.emplace(key, value);
+      return fresh ? nullptr : &it->second;
+    }
+    for (size_t i = 0; i < count_; ++i)
+      if (small_[i].first == key) return &small_[i].second;
+    if (count_ < kSmall) {
+      small_[count_++] = {key, value};
+      return nullptr;
+    }
+    overflow_.reserve(2 * kSmall);
+    for (size_t i = 0; i < count_; ++i) overflow_.emplace(small_[i].first, small_[i].second);
+    overflow_.emplace(key, value);
+    return nullptr;
+  }
+
+ private:
+  static constexpr size_t kSmall = 16;
+  std::array<std::pair<Key, SourceRange>, kSmall> small_{};
+  size_t count_ = 0;
+  std::unordered_map<Key, SourceRange, Hash> overflow_;
+};
+
+// A state row and index, as a FirstSeen key.
+using StateSlot = std::pair<const StateInfo*, int64_t>;
+struct StateSlotHash {
+  size_t operator()(const StateSlot& s) const {
+    return std::hash<const void*>()(s.first) * 31 + std::hash<int64_t>()(s.second);
+  }
+};
 
 // A global name of the effect.
 struct Symbol {
@@ -38,7 +79,7 @@ class Checker {
  private:
   // --- checker.cpp ---
   void collect_symbols();
-  void define(const std::string& name, SourceRange range, Symbol symbol, std::string_view what);
+  void define(std::string_view name, SourceRange range, Symbol symbol, std::string_view what);
   void check_functions();
   void check_profile_rules();
   void check_annotations(const std::vector<ast::Annotation>& annotations);
@@ -46,14 +87,14 @@ class Checker {
   void check_technique(const ast::Technique& t);
   void check_value_type(std::string_view type_name, size_t array_dims, const ast::Expr& value,
                         std::string_view what, std::string_view name, std::string_view id);
-  void report_duplicate(std::string_view what, const std::string& name, SourceRange range,
+  void report_duplicate(std::string_view what, std::string_view name, SourceRange range,
                         SourceRange previous);
 
   // --- checker_states.cpp ---
   void check_states(const std::vector<ast::StateAssignment>& states, StateBlock block,
                     int technique_version);
   void check_state(const ast::StateAssignment& a, StateBlock block, int technique_version,
-                   std::map<std::pair<const StateInfo*, int64_t>, SourceRange>& seen);
+                   FirstSeen<StateSlot, StateSlotHash>& seen);
   void check_call_args(const StateInfo& info, const ast::StateAssignment& a);
   void check_value(const StateInfo& info, const ast::Expr& value);
   void check_leaf(const StateInfo& info, const ast::Expr& value);
@@ -63,7 +104,7 @@ class Checker {
                      std::string_view function, SourceRange range);
   void check_symbol_type(const StateInfo& info, const Symbol& symbol, const ast::Expr& value);
   void type_mismatch(const StateInfo& info, const ast::Expr& value, std::string_view found);
-  void undefined(std::string_view what, const std::string& name, SourceRange range,
+  void undefined(std::string_view what, std::string_view name, SourceRange range,
                  const std::vector<std::string_view>& candidates);
   bool profile_allows(StateApi api) const;
 
@@ -75,8 +116,9 @@ class Checker {
   DiagnosticSink& diags_;
   CheckOptions options_;
   EffectProfile profile_ = EffectProfile::fx_2_0;
-  std::unordered_map<std::string, Symbol> globals_;
-  std::unordered_map<std::string, std::vector<const ast::Function*>> functions_;
+  // Keys view names owned by the effect, which outlives the checker.
+  std::unordered_map<std::string_view, Symbol> globals_;
+  std::unordered_map<std::string_view, std::vector<const ast::Function*>> functions_;
 };
 
 }  // namespace fx::check

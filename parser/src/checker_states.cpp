@@ -8,9 +8,11 @@
 namespace fx::check {
 namespace {
 
+// ASCII only, like the state table: std::tolower's locale call is slow.
 std::string lower(std::string_view s) {
   std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (char& c : out)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c + ('a' - 'A'));
   return out;
 }
 
@@ -128,7 +130,7 @@ bool Checker::profile_allows(StateApi api) const {
 
 void Checker::check_states(const std::vector<ast::StateAssignment>& states, StateBlock block,
                            int technique_version) {
-  std::map<std::pair<const StateInfo*, int64_t>, SourceRange> seen;
+  FirstSeen<StateSlot, StateSlotHash> seen;
   for (const ast::StateAssignment& a : states) check_state(a, block, technique_version, seen);
 }
 
@@ -152,7 +154,7 @@ static std::optional<SourceRange> word_in(const SourceManager& sm, SourceRange r
 }
 
 void Checker::check_state(const ast::StateAssignment& a, StateBlock block, int technique_version,
-                          std::map<std::pair<const StateInfo*, int64_t>, SourceRange>& seen) {
+                          FirstSeen<StateSlot, StateSlotHash>& seen) {
   const StateInfo* info = find_state(a.name, block);
   if (!info) {
     std::string guess = closest_match(a.name, state_names(block));
@@ -212,14 +214,13 @@ void Checker::check_state(const ast::StateAssignment& a, StateBlock block, int t
                      "[n] (0.." + std::to_string(info->index_count - 1) + ")");
   }
   if (index_known) {
-    auto [it, fresh] = seen.emplace(std::make_pair(info, index), a.range);
-    if (!fresh) {
+    if (SourceRange* previous = seen.insert({info, index}, a.range)) {
       Diagnostic& d = diags_.warning("duplicate-state", a.name_range,
                                      "state " + quote(info->name) +
                                          (a.index ? "[" + std::to_string(index) + "]" : "") +
                                          " is set twice in this block; the last value wins");
-      if (it->second.valid()) d.notes.push_back({it->second.begin, "previous assignment is here"});
-      it->second = a.range;
+      if (previous->valid()) d.notes.push_back({previous->begin, "previous assignment is here"});
+      *previous = a.range;
     }
   }
   if (!a.value) return;
@@ -265,7 +266,7 @@ void Checker::type_mismatch(const StateInfo& info, const ast::Expr& value, std::
                    ", found " + std::string(found));
 }
 
-void Checker::undefined(std::string_view what, const std::string& name, SourceRange range,
+void Checker::undefined(std::string_view what, std::string_view name, SourceRange range,
                         const std::vector<std::string_view>& candidates) {
   std::string guess = closest_match(name, candidates);
   std::string message = "use of undefined " + std::string(what) + " " + quote(name);
@@ -482,8 +483,8 @@ void Checker::check_compile(const StateInfo& info, std::string_view profile,
                  "state " + quote(info.name) + " needs a " + std::string(stage) +
                      "_* profile, found " + quote(profile));
   }
-  if (!function.empty() && !functions_.count(std::string(function)))
-    undefined("function", std::string(function), range, names_of({Symbol::function}));
+  if (!function.empty() && !functions_.count(function))
+    undefined("function", function, range, names_of({Symbol::function}));
 }
 
 }  // namespace fx::check

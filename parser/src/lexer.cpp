@@ -1,6 +1,8 @@
 #include "fx/lexer.h"
 
+#include <array>
 #include <cerrno>
+#include <cstring>
 #include <charconv>
 #include <cstdlib>
 #include <string>
@@ -8,12 +10,21 @@
 namespace fx {
 namespace {
 
-bool is_ident_start(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
-}
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_ident_char(char c) { return is_ident_start(c) || is_digit(c); }
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+// Character classes by table: the lexer asks "identifier character?" for nearly every byte.
+enum : uint8_t { kIdentStart = 1, kDigit = 2, kSpace = 4 };
+constexpr std::array<uint8_t, 256> kClass = [] {
+  std::array<uint8_t, 256> t{};
+  for (int c = 'a'; c <= 'z'; ++c) t[c] = kIdentStart;
+  for (int c = 'A'; c <= 'Z'; ++c) t[c] = kIdentStart;
+  t['_'] = kIdentStart;
+  for (int c = '0'; c <= '9'; ++c) t[c] = kDigit;
+  for (char c : {' ', '\t', '\r', '\f', '\v'}) t[static_cast<unsigned char>(c)] = kSpace;
+  return t;
+}();
+uint8_t char_class(char c) { return kClass[static_cast<unsigned char>(c)]; }
+bool is_ident_start(char c) { return char_class(c) & kIdentStart; }
+bool is_digit(char c) { return char_class(c) & kDigit; }
+bool is_ident_char(char c) { return char_class(c) & (kIdentStart | kDigit); }
 
 }  // namespace
 
@@ -80,11 +91,8 @@ const char* spelling(TokenKind k) {
 }
 
 Lexer::Lexer(SourceManager& sm, BufferId buffer, DiagnosticSink& diags)
-    : sm_(sm), diags_(diags), buffer_(buffer), text_(sm.buffer_text(buffer)) {}
-
-char Lexer::peek(size_t ahead) const {
-  return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
-}
+    : sm_(sm), diags_(diags), buffer_(buffer), text_(sm.buffer_text(buffer)),
+      base_(sm.location(buffer, 0).raw) {}
 
 // Removes backslash-newline pairs at the current position (translation phase 2).
 void Lexer::skip_splices() {
@@ -92,32 +100,49 @@ void Lexer::skip_splices() {
     if (peek(1) == '\n') pos_ += 2;
     else if (peek(1) == '\r' && peek(2) == '\n') pos_ += 3;
     else break;
+    spliced_ = true;
   }
 }
 
 void Lexer::skip_whitespace_and_comments() {
+  const size_t size = text_.size();
   for (;;) {
-    skip_splices();
-    char c = peek();
-    if (is_space(c)) {
+    if (pos_ >= size) return;
+    char c = text_[pos_];
+    if (char_class(c) & kSpace) {
       ++pos_;
       pending_flags_ |= kLeadingSpace;
     } else if (c == '\n') {
       ++pos_;
       pending_flags_ |= kAtLineStart | kLeadingSpace;
+    } else if (c == '\\') {
+      size_t before = pos_;
+      skip_splices();
+      if (pos_ == before) return;  // a stray backslash: a token of its own
     } else if (c == '/' && peek(1) == '/') {
-      // A line comment ends at a newline not preceded by a continuation backslash.
-      while (pos_ < text_.size() && text_[pos_] != '\n') {
-        if (text_[pos_] == '\\') skip_splices();
-        if (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+      // A line comment ends at a newline not preceded by a continuation backslash
+      // (`\` + LF or `\` + CR LF).
+      for (;;) {
+        const void* nl = std::memchr(text_.data() + pos_, '\n', size - pos_);
+        if (!nl) {
+          pos_ = size;
+          break;
+        }
+        size_t at_nl = static_cast<size_t>(static_cast<const char*>(nl) - text_.data());
+        size_t prev = at_nl - 1;  // the comment's "//" precedes, so at_nl >= 2
+        if (text_[prev] == '\r') --prev;
+        if (text_[prev] != '\\') {
+          pos_ = at_nl;
+          break;
+        }
+        pos_ = at_nl + 1;
       }
       pending_flags_ |= kLeadingSpace;
     } else if (c == '/' && peek(1) == '*') {
       size_t begin = pos_;
       size_t end = text_.find("*/", pos_ + 2);
       if (end == std::string_view::npos) {
-        diags_.error("unterminated-comment", {sm_.location(buffer_, uint32_t(begin)), {}},
-                     "unterminated /* comment");
+        diags_.error("unterminated-comment", {at(begin), {}}, "unterminated /* comment");
         pos_ = text_.size();
         return;
       }
@@ -141,29 +166,32 @@ Token Lexer::make(TokenKind kind, size_t begin) {
   t.kind = kind;
   t.flags = pending_flags_;
   pending_flags_ = 0;
-  t.loc = sm_.location(buffer_, static_cast<uint32_t>(begin));
-  std::string_view raw = text_.substr(begin, pos_ - begin);
-  if (raw.find('\\') != std::string_view::npos && kind != TokenKind::string &&
-      kind != TokenKind::character) {
-    // The token was split by continuations: give it its clean spelling.
-    std::string clean;
-    for (size_t i = 0; i < raw.size(); ++i) {
-      if (raw[i] == '\\' && i + 1 < raw.size() && (raw[i + 1] == '\n' || raw[i + 1] == '\r')) {
-        i += raw[i + 1] == '\r' ? 2 : 1;
-        continue;
-      }
-      clean.push_back(raw[i]);
-    }
-    t.text = sm_.text_at(sm_.add_scratch(clean, t.loc)).substr(0, clean.size());
-  } else {
-    t.text = raw;
-  }
+  t.loc = at(begin);
+  t.text = std::string_view(text_.data() + begin, pos_ - begin);
+  if (spliced_ && kind != TokenKind::string && kind != TokenKind::character) [[unlikely]]
+    t.text = clean_spelling(t);
   return t;
+}
+
+// Out of line so that make(), which runs for every token, needs no stack frame.
+[[gnu::noinline]] std::string_view Lexer::clean_spelling(const Token& t) {
+  // The token was split by continuations: give it its clean spelling.
+  std::string_view raw = t.text;
+  std::string clean;
+  for (size_t i = 0; i < raw.size(); ++i) {
+    if (raw[i] == '\\' && i + 1 < raw.size() && (raw[i + 1] == '\n' || raw[i + 1] == '\r')) {
+      i += raw[i + 1] == '\r' ? 2 : 1;
+      continue;
+    }
+    clean.push_back(raw[i]);
+  }
+  return sm_.text_at(sm_.add_scratch(clean, t.loc)).substr(0, clean.size());
 }
 
 Token Lexer::next() {
   skip_whitespace_and_comments();
   size_t begin = pos_;
+  spliced_ = false;
   if (pos_ >= text_.size()) {
     Token t = make(TokenKind::eof, begin);
     pending_flags_ = kAtLineStart;
@@ -171,9 +199,11 @@ Token Lexer::next() {
   }
   char c = text_[pos_];
   if (is_ident_start(c)) {
+    const size_t size = text_.size();
     for (;;) {
       ++pos_;
-      skip_splices();
+      while (pos_ < size && is_ident_char(text_[pos_])) ++pos_;
+      if (pos_ < size && text_[pos_] == '\\') skip_splices();
       if (!is_ident_char(peek())) break;
     }
     return make(TokenKind::identifier, begin);
@@ -215,7 +245,7 @@ Token Lexer::lex_quoted(size_t begin, char quote) {
     ++pos_;
   }
   if (pos_ >= text_.size() || text_[pos_] != quote) {
-    diags_.error("unterminated-string", {sm_.location(buffer_, uint32_t(begin)), {}},
+    diags_.error("unterminated-string", {at(begin), {}},
                  quote == '"' ? "missing terminating '\"' character"
                               : "missing terminating ' character");
   } else {
@@ -287,6 +317,7 @@ Token Lexer::lex_punct(size_t begin) {
 
 std::optional<Token> Lexer::header_name() {
   skip_whitespace_and_comments();
+  spliced_ = false;
   if (pending_flags_ & kAtLineStart || peek() != '<') return std::nullopt;
   size_t begin = pos_;
   size_t end = text_.find_first_of(">\n", pos_);

@@ -50,6 +50,31 @@ bool decimal_value(std::string_view s, double& out) {
   return true;
 }
 
+// Fast path for a plain `0.577` / `1.0f` with at most 15 significant digits: mantissa and
+// power of ten are both exact doubles, so one IEEE division gives the correctly rounded
+// value strtod would. Anything else (exponents, long mantissas) takes parse_number.
+bool simple_float_value(std::string_view s, double& out) {
+  static constexpr double kPow10[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                      1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+  if (!s.empty() && (s.back() == 'f' || s.back() == 'F' || s.back() == 'h' || s.back() == 'H'))
+    s.remove_suffix(1);
+  uint64_t mantissa = 0;
+  int digits = 0, fraction = -1;
+  for (char c : s) {
+    if (c == '.') {
+      if (fraction >= 0) return false;
+      fraction = 0;
+      continue;
+    }
+    if (c < '0' || c > '9' || ++digits > 15) return false;
+    mantissa = mantissa * 10 + uint64_t(c - '0');
+    if (fraction >= 0) ++fraction;
+  }
+  if (fraction < 0 || digits == 0) return false;
+  out = double(mantissa) / kPow10[fraction];
+  return true;
+}
+
 }  // namespace
 
 bool Parser::enter_nesting() {
@@ -199,7 +224,9 @@ ast::ExprPtr Parser::parse_primary() {
                                              : ast::ExprKind::float_literal,
                     first);
       e->text = std::string(t.text);
-      if (!decimal_value(t.text, e->number)) {
+      bool fast = t.is(TokenKind::integer) ? decimal_value(t.text, e->number)
+                                           : simple_float_value(t.text, e->number);
+      if (!fast) {
         std::string why;
         std::optional<NumberValue> value = parse_number(t.text, &why);
         if (!value) {

@@ -359,8 +359,16 @@ bool is_storage_keyword(std::string_view word, uint32_t& bit) {
       {"line", ast::kLine},             {"triangle", ast::kTriangle},
       {"lineadj", ast::kLineAdj},       {"triangleadj", ast::kTriangleAdj},
   };
+  // Most words are not modifiers: reject by first letter before comparing spellings.
+  constexpr uint32_t kFirstLetters = [] {
+    uint32_t mask = 0;
+    for (char c : std::string_view("sucevrgionlpt")) mask |= 1u << (c - 'a');
+    return mask;
+  }();
+  if (word.empty() || word[0] < 'a' || word[0] > 'z' || !(kFirstLetters >> (word[0] - 'a') & 1))
+    return false;
   for (const auto& w : kWords)
-    if (w.word == word) {
+    if (w.word[0] == word[0] && w.word == word) {
       bit = w.bit;
       return true;
     }
