@@ -16,5 +16,7 @@ struct BenchArgs {
 int bench_frontend(const BenchArgs& args);
 // `fxkit bench compile`: effect load time by phase, overhead vs glslang, cached reload.
 int bench_compile(const BenchArgs& args);
+// `fxkit bench reload`: edit-to-swap latency of hot reload by phase, framework share.
+int bench_reload(const BenchArgs& args);
 
 }  // namespace fxkit

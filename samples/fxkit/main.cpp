@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
 #ifdef FXKIT_HAS_RUNTIME
   fxkit::register_compile(app, run);
   fxkit::register_info(app, run);
+  fxkit::register_watch(app, run);
 #endif
   try {
     app.parse(argc, argv);
