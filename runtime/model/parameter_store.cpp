@@ -3,6 +3,7 @@
 // stored in D3D order (m[r][c] at r*cols+c) and laid out per block at write_block time
 // (parameter_block.cpp).
 #include <algorithm>
+#include <cstring>
 
 #include "parameter_store_impl.h"
 
@@ -70,8 +71,10 @@ ParameterStore::ParameterStore(const EffectModel& model, ParameterPool* pool, Di
     s.by_name.emplace(p.name, i);
     if (!p.semantic.empty()) s.by_semantic.emplace(model_detail::lower(p.semantic), i);
   }
-  for (uint32_t i = 0; i < s.top_count; ++i)
+  for (uint32_t i = 0; i < s.top_count; ++i) {
+    s.classify(s.nodes[i]);
     if (s.nodes[i].words) s.expand(i);
+  }
 }
 
 ParameterStore::ParameterStore(ParameterStore&&) noexcept = default;
@@ -143,8 +146,8 @@ ParamStatus ParameterStore::set(Param p, std::span<const float> v) {
   if (v.size() != n.words)
     return fail(ParamStatus::size_mismatch, s.describe(i) + " takes " + std::to_string(n.words) + " floats, got " +
                                                 std::to_string(v.size()));
-  uint32_t* d = s.data(n);
-  for (uint32_t w = 0; w < n.words; ++w) d[w] = encode(v[w], s.base_at(n, w));
+  // Float-like components are held as float bits (half and double included): a copy.
+  std::memcpy(s.data(n), v.data(), n.words * sizeof(float));
   s.touch(n);
   return {};
 }

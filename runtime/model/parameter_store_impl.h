@@ -63,6 +63,7 @@ struct ParameterStore::Impl {
     bool pooled = false;
     uint32_t pool_entry = kNoIndex;
     uint32_t string_slot = kNoIndex;
+    bool all_float = false, all_int = false;  // every component float-like / int-like
   };
   struct Placement {
     uint32_t node;
@@ -128,6 +129,7 @@ struct ParameterStore::Impl {
       offset += c.words;
       nodes.push_back(std::move(c));
     }
+    for (uint32_t k = 0; k < kids.size(); ++k) classify(nodes[first + k]);
     for (uint32_t k = 0; k < kids.size(); ++k) expand(first + k);
   }
 
@@ -166,11 +168,16 @@ struct ParameterStore::Impl {
   BaseType base_at(const Node& n, uint32_t word) const { return bases[n.base_offset + word]; }
 
   // Checks that the handle's components are all float-like (or all int-like).
-  bool uniform_kind(const Node& n, bool want_float) const {
-    if (!n.type.is_numeric() && n.type.cls != TypeClass::structure) return false;
-    for (uint32_t w = 0; w < n.words; ++w)
-      if (float_like(bases[n.base_offset + w]) != want_float) return false;
-    return true;
+  bool uniform_kind(const Node& n, bool want_float) const { return want_float ? n.all_float : n.all_int; }
+  // Computes Node::all_float / all_int from the bases (once, at creation).
+  void classify(Node& n) const {
+    if (!n.type.is_numeric() && n.type.cls != TypeClass::structure) return;
+    n.all_float = n.all_int = n.words > 0;
+    for (uint32_t w = 0; w < n.words; ++w) {
+      bool f = float_like(bases[n.base_offset + w]);
+      n.all_float = n.all_float && f;
+      n.all_int = n.all_int && !f;
+    }
   }
 
   // The node a block member path names: "light", "light.dir", "bones[3]", "lights[1].dir".

@@ -50,7 +50,9 @@ TEST(SeedModel, ParserSeedEffects) {
     ++files;
     EXPECT_GT(c.parameters, 0u) << path;
     EXPECT_GE(c.passes, c.techniques) << path;
-    if (c.techniques) EXPECT_GT(c.shaders + c.passes, 0u) << path;
+    if (c.techniques) {
+      EXPECT_GT(c.shaders + c.passes, 0u) << path;
+    }
     // The seeds are valid effects: the model adds no errors beyond the front end's.
     EXPECT_EQ(c.model_errors, 0u) << path << "\n" << errors;
   }
