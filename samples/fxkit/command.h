@@ -30,5 +30,6 @@ void register_bench(CLI::App& app, Runner& run);
 void register_compile(CLI::App& app, Runner& run);
 void register_info(CLI::App& app, Runner& run);
 void register_watch(CLI::App& app, Runner& run);
+void register_select(CLI::App& app, Runner& run);
 
 }  // namespace fxkit

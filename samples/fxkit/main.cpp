@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   fxkit::register_compile(app, run);
   fxkit::register_info(app, run);
   fxkit::register_watch(app, run);
+  fxkit::register_select(app, run);
 #endif
   try {
     app.parse(argc, argv);

@@ -1,0 +1,77 @@
+// Technique validation against device caps, from an effect's real passes: shader profiles
+// (HLSL, shader model 1 assembly, GLSL), fixed-function and caps-dependent states, texture
+// stages, texture formats, compiled programs within the device limits, compile success and
+// the technique's own `Requires` annotation. Every rejection is a located fx::Diagnostic.
+//
+// This header does not include fx/model/effect_model.h: the model's `fx::AnnotationValue`
+// (a named, located annotation) and selection's `fx::AnnotationValue` (a typed value in
+// technique_candidate.h) share a name, so one translation unit cannot see both. Results
+// here carry annotations in selection's vocabulary, spelled out.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "fx/diagnostic.h"
+#include "fx/select/device_caps.h"
+#include "fx/source_manager.h"
+
+namespace fx {
+
+struct EffectModel;
+struct TechniqueInfo;
+class EffectPrograms;
+class ShaderCompiler;
+namespace ast { struct Effect; }
+
+// A technique annotation as selection reads it (the same alternatives as
+// technique_candidate.h's AnnotationValue, so values copy across unchanged).
+using TechniqueAnnotation = std::pair<std::string, std::variant<bool, int32_t, float, std::string>>;
+
+// One technique validated on one device.
+struct TechniqueValidation {
+  std::string name;
+  SourceRange range;                            // the technique's declaration
+  bool valid = true;
+  // Why not, one per cause, each with the range that caused it; severity note, ids in
+  // docs/diagnostics.md ("Technique validation"). Empty when valid.
+  std::vector<Diagnostic> reasons;
+  std::vector<TechniqueAnnotation> annotations; // literal annotations, in declaration order
+};
+
+// What validation may use besides the model.
+struct TechniqueValidationOptions {
+  // When set, every pass with HLSL or GLSL stages is compiled (lazily, memoised by the
+  // programs object) and checked for compile errors and against the device limits.
+  EffectPrograms* programs = nullptr;
+};
+
+// D3DX ValidateTechnique: one technique of `model` on `caps`.
+TechniqueValidation validate_technique(const EffectModel& model, const TechniqueInfo& technique,
+                                       const DeviceCaps& caps,
+                                       const TechniqueValidationOptions& options = {});
+// Every technique of `model`, in declaration order.
+std::vector<TechniqueValidation> validate_techniques(const EffectModel& model, const DeviceCaps& caps,
+                                                     const TechniqueValidationOptions& options = {});
+
+// Builds the model of a parsed effect (its diagnostics go to `diags`) and validates every
+// technique; with `compile`, passes are compiled with `compiler` (a default compiler when
+// null). The one-call path for tools.
+std::vector<TechniqueValidation> validate_effect(const ast::Effect& effect, const SourceManager& sm,
+                                                 const DeviceCaps& caps, DiagnosticSink& diags,
+                                                 bool compile = true,
+                                                 const ShaderCompiler* compiler = nullptr);
+
+// D3DX FindNextValidTechnique: the first valid technique after `after` (from the start when
+// nullopt), in declaration order.
+std::optional<size_t> find_next_valid(std::span<const TechniqueValidation> techniques,
+                                      std::optional<size_t> after = std::nullopt);
+
+// "file.fx:12: message": a reason with its presumed file and line, for one-line reports.
+std::string located_reason(const Diagnostic& reason, const SourceManager& sm);
+
+}  // namespace fx

@@ -1,0 +1,36 @@
+// Candidates and a selection plan from an effect's validated techniques.
+// This file must not include fx/model/effect_model.h (see technique_validation.h).
+#include "fx/select/effect_candidates.h"
+
+namespace fx {
+
+std::vector<TechniqueCandidate> effect_candidates(std::span<const TechniqueValidation> techniques,
+                                                  const SourceManager& sm, size_t max_reasons) {
+  std::vector<TechniqueCandidate> out;
+  out.reserve(techniques.size());
+  for (const TechniqueValidation& t : techniques) {
+    TechniqueCandidate c;
+    c.name = t.name;
+    c.range = t.range;
+    c.valid = t.valid;
+    for (const auto& [name, value] : t.annotations)
+      std::visit([&](const auto& v) { c.annotations.set(name, AnnotationValue(v)); }, value);
+    for (size_t i = 0; i < t.reasons.size() && i < max_reasons; ++i)
+      c.rejection_reasons.push_back(located_reason(t.reasons[i], sm));
+    if (t.reasons.size() > max_reasons)
+      c.rejection_reasons.push_back("and " + std::to_string(t.reasons.size() - max_reasons) + " more");
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+EffectSelection build_effect_selection(const ast::Effect& effect, const SourceManager& sm, const DeviceCaps& caps,
+                                       DiagnosticSink& diags, const EffectSelectionOptions& options) {
+  EffectSelection s;
+  s.techniques = validate_effect(effect, sm, caps, diags, options.compile, options.compiler);
+  s.candidates = effect_candidates(s.techniques, sm);
+  s.plan = SelectionPlan::build(s.candidates, diags, options.plan);
+  return s;
+}
+
+}  // namespace fx

@@ -1,0 +1,44 @@
+// Private to runtime/select: the compiled-program half of technique validation. It lives
+// in its own translation unit because fx/compile/effect_units.h (struct PassStage) and
+// fx/model/effect_model.h (enum class PassStage) cannot both be included in one file.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fx/diagnostic.h"
+#include "fx/select/device_caps.h"
+#include "fx/source_manager.h"
+
+namespace fx {
+class EffectPrograms;
+class ShaderCompiler;
+namespace ast { struct Effect; }
+}  // namespace fx
+
+namespace fx::detail {
+
+// What compiling one pass said about the device.
+struct PassProgramCheck {
+  bool found = false;                    // the programs know this pass
+  std::vector<Diagnostic> reasons;       // compile/link failures, limits exceeded (severity note)
+  std::vector<std::string> image_names;  // texture/sampler bindings of the compiled stages
+};
+
+// Compiles (or reuses) the program of pass `pass` of technique number `technique_index`
+// (named `technique`, "" when unnamed) and checks it against `caps`.
+PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique_index,
+                                    std::string_view technique, uint32_t pass, SourceRange pass_range,
+                                    const DeviceCaps& caps);
+
+// Lazily compiled programs of `effect` together with what they need to live (units, a
+// default compiler when `compiler` is null). `effect`, `sm` and `compiler` must outlive it.
+std::shared_ptr<EffectPrograms> make_effect_programs(const ast::Effect& effect, const SourceManager& sm,
+                                                     const ShaderCompiler* compiler);
+
+// unmet_reason for a limit, or "" when met or when the caps do not state it (0).
+std::string unmet_limit(const DeviceCaps& caps, std::string_view limit, uint32_t need);
+
+}  // namespace fx::detail

@@ -1,0 +1,367 @@
+// Technique validation from an effect model's passes (see technique_validation.h).
+#include "fx/select/technique_validation.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <memory>
+#include <tuple>
+
+#include "fx/model/effect_model.h"
+#include "fx/select/caps_requirement.h"
+#include "fx/state_table.h"
+#include "pass_program_check.h"
+
+namespace fx {
+namespace {
+
+bool iequals(std::string_view a, std::string_view b) {
+  return a.size() == b.size() &&
+         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
+std::string caps_name(const DeviceCaps& caps) { return caps.name.empty() ? "this device" : caps.name; }
+
+// "ColorOp[0]" for indexed rows, "AlphaTestEnable" otherwise.
+std::string state_name(const ResolvedState& s) {
+  std::string n(s.info->name);
+  if (s.info->index_count > 0) n += "[" + std::to_string(s.index) + "]";
+  return n;
+}
+
+const char* stage_noun(PassStage stage) {
+  switch (stage) {
+    case PassStage::vertex: return "vertex shader";
+    case PassStage::pixel: return "pixel shader";
+    case PassStage::geometry: return "geometry shader";
+    case PassStage::hull: return "hull shader";
+    case PassStage::domain: return "domain shader";
+    case PassStage::compute: return "compute shader";
+  }
+  return "shader";
+}
+
+// The text of the first line of a token span: "vs" ".1.1" -> "vs.1.1".
+std::string first_line(const ast::Effect& effect, ast::TokenSpan span) {
+  std::string out;
+  for (uint32_t i = span.first; i < span.last && i < effect.tokens.size(); ++i) {
+    const Token& t = effect.tokens[i];
+    if (i != span.first && t.at_line_start()) break;
+    out += t.text;
+  }
+  return out;
+}
+
+// Collects reasons for one technique; keeps the first of equal (id, message, range).
+class Rejections {
+ public:
+  void add(std::string id, SourceRange range, std::string message) {
+    for (const Diagnostic& d : list_)
+      if (d.id == id && d.message == message && d.range.begin == range.begin) return;
+    Diagnostic d;
+    d.id = std::move(id);
+    d.severity = Severity::note;
+    d.range = range;
+    d.message = std::move(message);
+    list_.push_back(std::move(d));
+  }
+  Diagnostic& last() { return list_.back(); }
+  bool has_message(std::string_view message) const {
+    return std::any_of(list_.begin(), list_.end(), [&](const Diagnostic& d) { return d.message == message; });
+  }
+  std::vector<Diagnostic> take() { return std::move(list_); }
+
+ private:
+  std::vector<Diagnostic> list_;
+};
+
+class TechniqueValidator {
+ public:
+  TechniqueValidator(const EffectModel& model, const DeviceCaps& caps, const TechniqueValidationOptions& options)
+      : model_(model), caps_(caps), options_(options) {}
+
+  TechniqueValidation run(const TechniqueInfo& technique) {
+    TechniqueValidation out;
+    out.name = technique.name;
+    out.range = technique.range;
+    out.annotations = annotations(technique);
+    for (uint32_t p = 0; p < technique.passes.size(); ++p) check_pass(technique, p);
+    check_requires(technique);
+    out.reasons = reasons_.take();
+    out.valid = out.reasons.empty();
+    return out;
+  }
+
+ private:
+  static std::vector<TechniqueAnnotation> annotations(const TechniqueInfo& technique) {
+    std::vector<TechniqueAnnotation> out;
+    for (const auto& a : technique.annotations) {
+      const Value& v = a.value;
+      if (v.is_string()) {
+        out.emplace_back(a.name, v.text);
+      } else if (v.components.size() == 1 && v.type.cls == TypeClass::scalar) {
+        switch (v.type.base) {
+          case BaseType::boolean: out.emplace_back(a.name, v.truthy()); break;
+          case BaseType::int32:
+          case BaseType::uint32: out.emplace_back(a.name, int32_t(v.number())); break;
+          default: out.emplace_back(a.name, float(v.number())); break;
+        }
+      }
+    }
+    return out;
+  }
+
+  void require_profile(const std::string& profile, SourceRange range) {
+    if (supports(caps_, profile)) return;
+    profile_rejected_ = true;
+    reasons_.add("unsupported-shader-profile", range,
+                 unmet_reason(caps_, CapsRequirement::profile(profile)).value_or(profile + " not supported"));
+  }
+
+  // The GLSL version a list of blocks declares (`#version 450` -> 450), 0 when none.
+  int glsl_version(const ShaderBinding& b) const {
+    if (!model_.ast) return 0;
+    for (const std::string& name : b.glsl_blocks)
+      for (const auto& d : model_.ast->decls) {
+        if (d.kind != ast::DeclKind::glsl_block || d.glsl_block->name != name) continue;
+        const ast::TokenSpan code = d.glsl_block->code;
+        for (uint32_t i = code.first; i < code.last && i < model_.ast->tokens.size(); ++i) {
+          std::string_view t = model_.ast->tokens[i].text;
+          if (model_.ast->tokens[i].kind != TokenKind::directive || t.find("version") == std::string_view::npos)
+            continue;
+          size_t digit = t.find_first_of("0123456789");
+          int version = 0;
+          if (digit != std::string_view::npos) std::from_chars(t.data() + digit, t.data() + t.size(), version);
+          if (version) return version;
+        }
+      }
+    return 0;
+  }
+
+  void check_shader(const ShaderBinding& b) {
+    switch (b.source) {
+      case ShaderSource::null: return;
+      case ShaderSource::hlsl_compile: require_profile(canonical_shader_profile(b.profile), b.range); return;
+      case ShaderSource::asm_block: {
+        std::string version = model_.ast ? first_line(*model_.ast, b.asm_code) : std::string();
+        std::string profile = canonical_shader_profile(version);
+        bool looks_like_version = profile.size() >= 6 && (profile.starts_with("vs_") || profile.starts_with("ps_"));
+        if (!looks_like_version) {
+          profile_rejected_ = true;
+          reasons_.add("unsupported-shader-profile", b.range,
+                       std::string(stage_noun(b.stage)) + " assembly has no version token (vs.1.1, ps.1.4) on its first line");
+          return;
+        }
+        require_profile(profile, b.range);
+        if (b.stage == PassStage::pixel && profile < "ps_1_4") count_texture_registers(b);
+        return;
+      }
+      case ShaderSource::glsl_blocks: {
+        int version = glsl_version(b);
+        if (version) {
+          require_profile("glsl_" + std::to_string(version), b.range);
+          return;
+        }
+        bool any = std::any_of(caps_.shader_profiles.begin(), caps_.shader_profiles.end(),
+                               [](const std::string& p) { return p.starts_with("glsl_"); });
+        if (!any) {
+          profile_rejected_ = true;
+          reasons_.add("unsupported-shader-profile", b.range, "GLSL shaders not supported on " + caps_name(caps_));
+        }
+        return;
+      }
+    }
+  }
+
+  // ps.1.1-1.3 sample stage n into register tn: the highest t register is the stage count.
+  void count_texture_registers(const ShaderBinding& b) {
+    for (uint32_t i = b.asm_code.first; i < b.asm_code.last && i < model_.ast->tokens.size(); ++i) {
+      const Token& t = model_.ast->tokens[i];
+      if (t.kind != TokenKind::identifier || t.text.size() < 2 || t.text[0] != 't') continue;
+      uint32_t n = 0;
+      auto [end, ec] = std::from_chars(t.text.data() + 1, t.text.data() + t.text.size(), n);
+      if (ec != std::errc() || end != t.text.data() + t.text.size() || n >= 16) continue;
+      note_texture_stage(n, b.range);
+    }
+  }
+
+  void note_texture_stage(uint32_t stage, SourceRange range) {
+    if (stage + 1 > textures_) {
+      textures_ = stage + 1;
+      textures_range_ = range;
+    }
+  }
+
+  void check_fixed_function(const ResolvedState& s) {
+    if (!caps_.features.fixed_function_stages) {
+      reasons_.add("fixed-function-state", s.range,
+                   "fixed-function state '" + state_name(s) + "' has no Vulkan equivalent (" + caps_name(caps_) +
+                       " has no fixed-function texture stages)");
+      return;
+    }
+    bool is_op = iequals(s.info->name, "ColorOp") || iequals(s.info->name, "AlphaOp");
+    if (!is_op || s.kind != StateValueKind::enumeration) return;
+    auto op_is = [&](std::string_view op) {
+      auto v = find_enum(*s.info, op);
+      return v && *v == s.integer;
+    };
+    if (op_is("Disable")) return;
+    if (op_is("DotProduct3") && !caps_.features.dot3)
+      reasons_.add("state-needs-feature", s.range,
+                   "'" + state_name(s) + " = DotProduct3' needs dot3 (D3DTOP_DOTPRODUCT3), not supported on " +
+                       caps_name(caps_));
+    if (op_is("Subtract") && !caps_.features.subtract)
+      reasons_.add("state-needs-feature", s.range,
+                   "'" + state_name(s) + " = Subtract' needs subtract (D3DTOP_SUBTRACT), not supported on " +
+                       caps_name(caps_));
+    // A blending stage past the device's stages cannot run even when it samples nothing.
+    note_texture_stage(s.index, s.range);
+  }
+
+  void check_feature_state(const ResolvedState& s, std::string_view state, const char* feature,
+                           bool CapsFeatures::*member) {
+    if (!iequals(s.info->name, state) || s.kind != StateValueKind::boolean || s.integer == 0) return;
+    if (caps_.features.*member) return;
+    reasons_.add("state-needs-feature", s.range,
+                 "'" + state_name(s) + " = TRUE' needs " + feature + ", not supported on " + caps_name(caps_));
+  }
+
+  // `string Format = "float32"` on a texture parameter: the format it is created with.
+  void check_texture_format(uint32_t parameter) {
+    if (parameter >= model_.parameters.size()) return;
+    const Parameter& p = model_.parameters[parameter];
+    const AnnotationValue* fmt = find_annotation(p.annotations, "Format");
+    if (!fmt || !fmt->value.is_string()) return;
+    const std::string& f = fmt->value.text;
+    std::string vk_format = f;
+    bool is_float = false;
+    if (iequals(f, "float32")) vk_format = "R32G32B32A32_SFLOAT", is_float = true;
+    else if (iequals(f, "float16")) vk_format = "R16G16B16A16_SFLOAT", is_float = true;
+    else if (iequals(f, "unorm8")) vk_format = "R8G8B8A8_UNORM";
+    else is_float = f.find("FLOAT") != std::string::npos || f.find("float") != std::string::npos;
+    // Generated tables are fxkit's own data: on generations without float textures the
+    // seed techniques read them at 8 bits (the BRDF seed's DirectX 8 cube maps), so only
+    // textures the application supplies make the technique invalid.
+    const TextureInfo* tex = model_.texture_of(parameter);
+    bool generated = tex && !tex->generator.empty();
+    if (is_float && !generated && !caps_.features.float_textures)
+      reasons_.add("unsupported-format", fmt->range,
+                   "texture '" + p.name + "' is " + f + ": float_textures not supported on " + caps_name(caps_));
+    if (!caps_.vulkan.present) return;
+    CapsRequirement req;
+    req.kind = CapsRequirement::Kind::format;
+    req.name = vk_format;
+    req.usage = "sampled";
+    if (auto why = unmet_reason(caps_, req)) reasons_.add("unsupported-format", fmt->range, "texture '" + p.name + "': " + *why);
+  }
+
+  void check_program(const TechniqueInfo& technique, uint32_t index) {
+    const uint32_t t = uint32_t(&technique - model_.techniques.data());
+    detail::PassProgramCheck c = detail::check_pass_program(*options_.programs, t, technique.name, index,
+                                                            technique.passes[index].range, caps_);
+    for (Diagnostic& d : c.reasons) {
+      reasons_.add(d.id, d.range, d.message);
+      for (auto& n : d.notes) reasons_.last().notes.push_back(n);
+    }
+    for (const std::string& name : c.image_names)  // the formats of the textures it samples
+      for (const SamplerInfo& s : model_.samplers)
+        if (s.name == name && s.texture != kNoIndex && s.texture < model_.textures.size())
+          check_texture_format(model_.textures[s.texture].parameter);
+  }
+
+  void check_pass(const TechniqueInfo& technique, uint32_t index) {
+    const PassInfo& pass = technique.passes[index];
+    textures_ = 0;
+    textures_range_ = {};
+    profile_rejected_ = false;
+    for (const ShaderBinding& b : pass.shaders) check_shader(b);
+    for (const ResolvedState& s : pass.states) {
+      if (!s.info) continue;
+      if (s.info->vulkan == VulkanMeaning::fixed_function) {
+        check_fixed_function(s);
+        continue;
+      }
+      check_feature_state(s, "AlphaTestEnable", "alpha_test (no shader emulation yet)", &CapsFeatures::alpha_test);
+      check_feature_state(s, "SeparateAlphaBlendEnable", "separate_alpha_blend", &CapsFeatures::separate_alpha_blend);
+      check_feature_state(s, "TwoSidedStencilMode", "two_sided_stencil", &CapsFeatures::two_sided_stencil);
+      bool binds_texture = s.info->block == StateBlock::pass &&
+                           (iequals(s.info->name, "Texture") || iequals(s.info->name, "Sampler")) &&
+                           s.kind != StateValueKind::null && s.kind != StateValueKind::invalid;
+      if (binds_texture) {
+        note_texture_stage(s.index, s.range);
+        if (s.kind == StateValueKind::parameter && iequals(s.info->name, "Texture")) check_texture_format(s.target);
+      }
+    }
+    if (std::string why = detail::unmet_limit(caps_, "simultaneous_textures", textures_); !why.empty())
+      reasons_.add("too-many-textures", textures_range_, why);
+    // Limits of a profile the device cannot run at all would only repeat the rejection.
+    if (options_.programs && !profile_rejected_) check_program(technique, index);
+  }
+
+  // The technique's `Requires`: located at the annotation. A need the passes already
+  // reported (same sentence) is not repeated.
+  void check_requires(const TechniqueInfo& technique) {
+    const AnnotationValue* req = find_annotation(technique.annotations, "Requires");
+    if (!req) return;
+    if (!req->value.is_string()) {
+      reasons_.add("bad-requires", req->range, "annotation Requires must be a string");
+      return;
+    }
+    std::vector<std::string> errors;
+    for (const CapsRequirement& r : parse_caps_requirements(req->value.text, &errors))
+      if (auto why = unmet_reason(caps_, r); why && !reasons_.has_message(*why))
+        reasons_.add("unmet-requirement", req->range, "Requires: " + *why);
+    for (std::string& e : errors) reasons_.add("bad-requires", req->range, std::move(e));
+  }
+
+  const EffectModel& model_;
+  const DeviceCaps& caps_;
+  const TechniqueValidationOptions& options_;
+  Rejections reasons_;
+  uint32_t textures_ = 0;        // texture stages the current pass uses
+  SourceRange textures_range_;   // the state or shader that uses the last one
+  bool profile_rejected_ = false;  // the current pass has a shader the device cannot run
+};
+
+}  // namespace
+
+TechniqueValidation validate_technique(const EffectModel& model, const TechniqueInfo& technique,
+                                       const DeviceCaps& caps, const TechniqueValidationOptions& options) {
+  return TechniqueValidator(model, caps, options).run(technique);
+}
+
+std::vector<TechniqueValidation> validate_techniques(const EffectModel& model, const DeviceCaps& caps,
+                                                     const TechniqueValidationOptions& options) {
+  std::vector<TechniqueValidation> out;
+  out.reserve(model.techniques.size());
+  for (const TechniqueInfo& t : model.techniques) out.push_back(validate_technique(model, t, caps, options));
+  return out;
+}
+
+std::vector<TechniqueValidation> validate_effect(const ast::Effect& effect, const SourceManager& sm,
+                                                 const DeviceCaps& caps, DiagnosticSink& diags, bool compile,
+                                                 const ShaderCompiler* compiler) {
+  EffectModel model = build_effect_model(effect, sm, diags);
+  if (!compile) return validate_techniques(model, caps);
+  std::shared_ptr<EffectPrograms> programs = detail::make_effect_programs(effect, sm, compiler);
+  return validate_techniques(model, caps, {.programs = programs.get()});
+}
+
+std::optional<size_t> find_next_valid(std::span<const TechniqueValidation> techniques, std::optional<size_t> after) {
+  if (after && *after >= techniques.size()) return std::nullopt;
+  for (size_t i = after ? *after + 1 : 0; i < techniques.size(); ++i)
+    if (techniques[i].valid) return i;
+  return std::nullopt;
+}
+
+std::string located_reason(const Diagnostic& reason, const SourceManager& sm) {
+  PresumedLocation at = sm.presumed(reason.range.begin);
+  if (!at.valid()) return reason.message;
+  std::string file(at.file);
+  if (auto slash = file.find_last_of("/\\"); slash != std::string::npos) file = file.substr(slash + 1);
+  return file + ":" + std::to_string(at.line) + ": " + reason.message;
+}
+
+}  // namespace fx

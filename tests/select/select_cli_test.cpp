@@ -1,0 +1,114 @@
+// `fxkit check --caps` and `fxkit select` as a user runs them: the built binary, its exit
+// codes, its text and its JSON.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+struct CliRun {
+  int status = -1;
+  std::string out;
+};
+
+// Runs fxkit with `args` (stderr discarded) and returns its exit status and stdout.
+CliRun fxkit(const std::string& args) {
+  CliRun r;
+  std::string cmd = std::string(FXKIT_BINARY) + " " + args + " 2>/dev/null";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+  int status = pclose(p);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+const std::string kEffects = std::string(FXKIT_SOURCE_DIR) + "/effects/";
+
+TEST(SelectCli, SelectPrintsTheChoiceAndEveryRejection) {
+  CliRun r = fxkit("select " + kEffects + "per_pixel_lighting.fx --caps dx7");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_EQ(r.out.rfind("per_pixel_lighting.fx on dx7: dot3_multitexture (direct)\n", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("  diffuse_ps20: invalid: per_pixel_lighting.fx:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("ps_2_0 not supported on dx7"), std::string::npos) << r.out;
+}
+
+TEST(SelectCli, SelectJsonHasTheChoiceRouteAndLocatedRejections) {
+  CliRun r = fxkit("select " + kEffects + "strand_aniso.fx --caps dx8 --distance 100 --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_FALSE(j.is_discarded()) << r.out;
+  EXPECT_EQ(j["caps"], "dx8");
+  EXPECT_EQ(j["chosen"], "strand_lut_ps11");
+  EXPECT_EQ(j["route"], "direct");  // strand_lut_ps11 has no distance band
+  EXPECT_EQ(j["criteria"]["distance"], 100.0);
+  EXPECT_TRUE(j["criteria"]["budget_ms"].is_null());
+  ASSERT_TRUE(j["fallback_path"].is_array());
+  EXPECT_TRUE(j["fallback_path"].empty());
+  ASSERT_TRUE(j["techniques"].is_array());
+  int chosen = 0;
+  for (const auto& t : j["techniques"]) {
+    ASSERT_TRUE(t.contains("name") && t.contains("valid") && t.contains("reason") && t.contains("rejections"));
+    chosen += t["chosen"].get<bool>() ? 1 : 0;
+    if (t["chosen"].get<bool>()) EXPECT_EQ(t["reason"], "");
+    else EXPECT_NE(t["reason"], "") << t["name"];
+    if (!t["valid"].get<bool>()) {
+      ASSERT_FALSE(t["rejections"].empty()) << t["name"];
+      const auto& first = t["rejections"][0];
+      EXPECT_NE(first["file"].get<std::string>().find("strand_aniso.fx"), std::string::npos);
+      EXPECT_GT(first["line"].get<int>(), 0);
+      EXPECT_EQ(first["severity"], "note");
+    }
+  }
+  EXPECT_EQ(chosen, 1);
+}
+
+TEST(SelectCli, SelectWithNothingValidExitsOne) {
+  CliRun r = fxkit("select " + kEffects + "aniso_highlights_glsl.fx --caps dx9c --json");
+  EXPECT_EQ(r.status, 1) << r.out;
+  nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_FALSE(j.is_discarded());
+  EXPECT_TRUE(j["chosen"].is_null());
+  EXPECT_EQ(j["route"], "none");
+}
+
+TEST(SelectCli, CheckCapsListsEveryTechniqueWithReasons) {
+  CliRun r = fxkit("check " + kEffects + "per_pixel_lighting.fx --caps modern");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("on modern: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  valid    diffuse_ps20\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  invalid  emboss\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(": fixed-function state 'ColorOp[0]' has no Vulkan equivalent"), std::string::npos) << r.out;
+
+  CliRun j = fxkit("check --json --caps dx6 " + kEffects + "per_pixel_lighting.fx");
+  EXPECT_EQ(j.status, 0) << j.out;
+  nlohmann::json doc = nlohmann::json::parse(j.out, nullptr, false);
+  ASSERT_FALSE(doc.is_discarded()) << j.out;
+  const auto& e = doc["effects"][0];
+  EXPECT_EQ(e["caps"], "dx6");
+  ASSERT_TRUE(e["techniques"].is_array());
+  size_t valid = 0;
+  for (const auto& t : e["techniques"]) valid += t["valid"].get<bool>() ? 1 : 0;
+  EXPECT_EQ(e["valid_techniques"], valid);
+  EXPECT_GE(valid, 2u);  // emboss, specular_emboss
+}
+
+TEST(SelectCli, CheckCapsFailsWhenNothingRunsAndOnBadCaps) {
+  EXPECT_EQ(fxkit("check " + kEffects + "strand_aniso.fx --caps dx7").status, 1);
+  EXPECT_EQ(fxkit("check " + kEffects + "strand_aniso.fx --caps dx77").status, 2);
+  EXPECT_EQ(fxkit("select " + kEffects + "strand_aniso.fx --caps /no/such/caps.json").status, 2);
+  // A saved caps file is accepted.
+  CliRun saved = fxkit("select " + std::string(FXKIT_SOURCE_DIR) + "/effects/hemisphere.fx --caps " +
+                    std::string(FXKIT_SOURCE_DIR) + "/runtime/select/profiles/dx8.json");
+  EXPECT_EQ(saved.status, 0);
+  EXPECT_EQ(saved.out.rfind("hemisphere.fx on dx8: hemisphere_ps11", 0), 0u) << saved.out;
+}
+
+}  // namespace
