@@ -68,6 +68,8 @@ class Rejections {
     list_.push_back(std::move(d));
   }
   Diagnostic& last() { return list_.back(); }
+  Diagnostic& at(size_t i) { return list_[i]; }
+  size_t size() const { return list_.size(); }
   bool has_message(std::string_view message) const {
     return std::any_of(list_.begin(), list_.end(), [&](const Diagnostic& d) { return d.message == message; });
   }
@@ -196,9 +198,16 @@ class TechniqueValidator {
 
   void check_fixed_function(const ResolvedState& s) {
     if (!caps_.features.fixed_function_stages) {
+      // One reason per pass; the pass's other fixed-function states become its notes.
+      if (fixed_function_reason_ != kNone) {
+        reasons_.at(fixed_function_reason_).notes.push_back(
+            {s.range.begin, "fixed-function state '" + state_name(s) + "' here too"});
+        return;
+      }
       reasons_.add("fixed-function-state", s.range,
                    "fixed-function state '" + state_name(s) + "' has no Vulkan equivalent (" + caps_name(caps_) +
                        " has no fixed-function texture stages)");
+      fixed_function_reason_ = reasons_.size() - 1;
       return;
     }
     bool is_op = iequals(s.info->name, "ColorOp") || iequals(s.info->name, "AlphaOp");
@@ -276,6 +285,7 @@ class TechniqueValidator {
     textures_ = 0;
     textures_range_ = {};
     profile_rejected_ = false;
+    fixed_function_reason_ = kNone;
     for (const ShaderBinding& b : pass.shaders) check_shader(b);
     for (const ResolvedState& s : pass.states) {
       if (!s.info) continue;
@@ -296,6 +306,11 @@ class TechniqueValidator {
     }
     if (std::string why = detail::unmet_limit(caps_, "simultaneous_textures", textures_); !why.empty())
       reasons_.add("too-many-textures", textures_range_, why);
+    if (fixed_function_reason_ != kNone) {
+      Diagnostic& d = reasons_.at(fixed_function_reason_);
+      if (!d.notes.empty())
+        d.message += "; " + std::to_string(d.notes.size()) + " more in pass '" + pass.name + "'";
+    }
     // Limits of a profile the device cannot run at all would only repeat the rejection.
     if (options_.programs && !profile_rejected_) check_program(technique, index);
   }
@@ -323,6 +338,8 @@ class TechniqueValidator {
   uint32_t textures_ = 0;        // texture stages the current pass uses
   SourceRange textures_range_;   // the state or shader that uses the last one
   bool profile_rejected_ = false;  // the current pass has a shader the device cannot run
+  static constexpr size_t kNone = size_t(-1);
+  size_t fixed_function_reason_ = kNone;  // the current pass's fixed-function reason
 };
 
 }  // namespace

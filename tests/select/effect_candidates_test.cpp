@@ -143,13 +143,17 @@ TEST(EffectCandidates, RejectionsNameTheirFileAndLine) {
       if (in_emboss && line.find("ColorOp[0]") != std::string::npos) { color_op_line = n; break; }
     }
   }
-  for (const auto& r : emboss.reasons)
-    if (r.id == "fixed-function-state" && r.message.find("'ColorOp[0]'") != std::string::npos) {
-      found = true;
-      EXPECT_EQ(located(r), "per_pixel_lighting.fx:" + std::to_string(color_op_line) +
-                                ": fixed-function state 'ColorOp[0]' has no Vulkan equivalent (modern has no "
-                                "fixed-function texture stages)");
-    }
+  for (const auto& r : emboss.reasons) {
+    if (r.id != "fixed-function-state") continue;
+    EXPECT_EQ(located(r).find("per_pixel_lighting.fx:"), 0u) << located(r);
+    EXPECT_NE(r.message.find("has no Vulkan equivalent (modern has no fixed-function texture stages)"),
+              std::string::npos) << r.message;
+    // ColorOp[0] is the reason or one of its located notes.
+    if (r.message.find("'ColorOp[0]'") != std::string::npos) found = l->sm.presumed(r.range.begin).line == color_op_line;
+    for (const auto& n : r.notes)
+      if (n.message == "fixed-function state 'ColorOp[0]' here too")
+        found = l->sm.presumed(n.location).line == color_op_line;
+  }
   EXPECT_TRUE(found) << fx::render_text(emboss.reasons, l->sm);
 
   fx::EffectSelection dx7 = selection(*l, "dx7");
