@@ -13,8 +13,8 @@ std::vector<TechniqueCandidate> effect_candidates(std::span<const TechniqueValid
     c.name = t.name;
     c.range = t.range;
     c.valid = t.valid;
-    for (const auto& [name, value] : t.annotations)
-      std::visit([&](const auto& v) { c.annotations.set(name, AnnotationValue(v)); }, value);
+    for (const TechniqueAnnotation& a : t.annotations)
+      std::visit([&](const auto& v) { c.annotations.set(a.first, AnnotationValue(v)); }, a.second);
     for (size_t i = 0; i < t.reasons.size() && i < max_reasons; ++i)
       c.rejection_reasons.push_back(located_reason(t.reasons[i], sm));
     if (t.reasons.size() > max_reasons)
