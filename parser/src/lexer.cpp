@@ -188,7 +188,11 @@ Token Lexer::make(TokenKind kind, size_t begin) {
   return sm_.text_at(sm_.add_scratch(clean, t.loc)).substr(0, clean.size());
 }
 
-Token Lexer::next() {
+Token Lexer::next() { return next_token(); }
+
+// next() and next_batch() share this body, inlined into both: the batch loop then makes no
+// call per token.
+inline Token Lexer::next_token() {
   skip_whitespace_and_comments();
   size_t begin = pos_;
   spliced_ = false;
@@ -211,6 +215,18 @@ Token Lexer::next() {
   if (is_digit(c) || (c == '.' && is_digit(peek(1)))) return lex_number(begin);
   if (c == '"' || c == '\'') return lex_quoted(begin, c);
   return lex_punct(begin);
+}
+
+void Lexer::next_batch(std::vector<Token>& out, size_t max) {
+  // Counts, not the stored list: they grow even past an error limit.
+  auto reported = [&] { return diags_.error_count() + diags_.warning_count(); };
+  const size_t before = reported();
+  for (size_t n = 0; n < max; ++n) {
+    const Token& t = out.emplace_back(next_token());
+    if ((t.kind == TokenKind::hash && t.at_line_start()) || t.kind == TokenKind::eof ||
+        reported() != before)
+      return;
+  }
 }
 
 // A pp-number: digits, letters, '.', and signs after an exponent letter. It is classified

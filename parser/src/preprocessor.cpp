@@ -26,6 +26,7 @@ class Preprocessor::Impl final : public pp::FileTokenSource {
 
   bool run(const std::string& name, std::optional<std::string> text, std::vector<Token>& out);
   Token next_file_token() override;
+  [[gnu::noinline]] Token next_file_token_slow();
 
   std::vector<std::string> files_;
   std::vector<IncludeEdge> includes_;
@@ -42,6 +43,10 @@ class Preprocessor::Impl final : public pp::FileTokenSource {
     DiagnosticSink lex_diags;
     Lexer lexer;
     size_t conditional_base;  // conditionals_ entries opened before this file
+    // Tokens lexed ahead (Lexer::next_batch), up to the next directive: one call per
+    // batch instead of per token. Only the last one may have left lexer diagnostics.
+    std::vector<Token> ahead;
+    size_t ahead_next = 0;
   };
   struct Conditional {
     SourceLocation loc;
@@ -87,6 +92,9 @@ class Preprocessor::Impl final : public pp::FileTokenSource {
 };
 
 namespace {
+// Tokens lexed per batch: enough to amortise the call, small enough to stay in cache.
+constexpr size_t kLexBatch = 256;
+
 Token number_token(std::string_view text, SourceLocation loc) {
   Token t;
   t.kind = TokenKind::integer;
@@ -123,11 +131,29 @@ void Preprocessor::Impl::push_file(const std::string& path, std::string text,
 }
 
 Token Preprocessor::Impl::next_file_token() {
+  // Hot path: a token from the middle of a batch is never a directive or eof and left no
+  // lexer diagnostics (only a batch's last token can), so it needs no checks but the
+  // limits. Everything else takes next_file_token_slow().
+  if (!frames_.empty()) {
+    Frame& f = *frames_.back();
+    if (f.ahead_next + 1 < f.ahead.size() && !budget_.exhausted() &&
+        !diags_.error_limit_reached())
+      return f.ahead[f.ahead_next++];
+  }
+  return next_file_token_slow();
+}
+
+Token Preprocessor::Impl::next_file_token_slow() {
   for (;;) {
     if (frames_.empty() || budget_.exhausted() || diags_.error_limit_reached()) return Token{};
     Frame& f = *frames_.back();
-    Token t = f.lexer.next();
-    forward(f, true);
+    if (f.ahead_next == f.ahead.size()) {
+      f.ahead.clear();
+      f.ahead_next = 0;
+      f.lexer.next_batch(f.ahead, kLexBatch);
+    }
+    Token t = f.ahead[f.ahead_next++];
+    if (f.ahead_next == f.ahead.size()) forward(f, true);
     if (t.kind == TokenKind::hash && t.at_line_start()) {
       if (std::optional<Token> kept = directive(f, t)) return *kept;
       continue;
