@@ -152,7 +152,19 @@ Token MacroEngine::next_raw(Level& l) {
   }
 }
 
-Token MacroEngine::next() { return next_expanded(*levels_[0]); }
+Token MacroEngine::next() {
+  Level& l = *levels_[0];
+  // Hot path: nothing pending at file level, so the next token comes straight from the
+  // files and only a macro name needs the general path (which reads it back from
+  // pushback exactly as if it had come from the files).
+  if (l.pushback.empty() && l.active == 0 && files_ && !budget_.exhausted()) {
+    Token t = files_->next_file_token();
+    if (t.kind != TokenKind::identifier || (t.flags & kNoExpand) || !macros_.find(t.text))
+      return t;
+    l.pushback.push_back(t);
+  }
+  return next_expanded(l);
+}
 
 Token MacroEngine::next_expanded(Level& l) {
   for (;;) {
