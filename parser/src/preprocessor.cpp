@@ -530,6 +530,11 @@ bool Preprocessor::Impl::run(const std::string& name, std::optional<std::string>
                                   " output tokens");
       break;
     }
+    // Included files make the output outgrow any first estimate. Growing 4x instead of
+    // 2x writes the tokens into fresh memory 1.33 times instead of 2 on average; page
+    // faults on those copies were a third of preprocessing time on a 10 MB effect. Only
+    // touched pages become resident, so the spare capacity costs address space only.
+    if (out.size() == out.capacity()) out.reserve(4 * out.capacity());
     out.push_back(t);
   }
   Token eof;

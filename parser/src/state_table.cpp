@@ -48,18 +48,22 @@ class StateIndex {
     });
     size_t capacity = 1;
     while (capacity < rows_.size() * 2) capacity *= 2;
-    slots_.assign(capacity, -1);
+    slots_.assign(capacity, Slot{});
     mask_ = capacity - 1;
     for (size_t i = 0; i < rows_.size(); ++i) {
-      size_t slot = name_hash(rows_[i].name, rows_[i].block) & mask_;
-      while (slots_[slot] >= 0) slot = (slot + 1) & mask_;
-      slots_[slot] = static_cast<int32_t>(i);
+      uint64_t hash = name_hash(rows_[i].name, rows_[i].block);
+      size_t slot = hash & mask_;
+      while (slots_[slot].row >= 0) slot = (slot + 1) & mask_;
+      slots_[slot] = {hash, static_cast<int32_t>(i)};
     }
   }
 
   const StateInfo* find(std::string_view name, StateBlock block) const {
-    for (size_t slot = name_hash(name, block) & mask_; slots_[slot] >= 0; slot = (slot + 1) & mask_) {
-      const StateInfo& s = rows_[static_cast<size_t>(slots_[slot])];
+    uint64_t hash = name_hash(name, block);
+    for (size_t slot = hash & mask_; slots_[slot].row >= 0; slot = (slot + 1) & mask_) {
+      // The stored hash rejects colliding rows without comparing their names.
+      if (slots_[slot].hash != hash) continue;
+      const StateInfo& s = rows_[static_cast<size_t>(slots_[slot].row)];
       if (s.block == block && iequals(s.name, name)) return &s;
     }
     return nullptr;
@@ -68,8 +72,12 @@ class StateIndex {
   std::span<const StateInfo> rows() const { return rows_; }
 
  private:
+  struct Slot {
+    uint64_t hash = 0;
+    int32_t row = -1;  // index into rows_, or -1 for an empty slot
+  };
   std::vector<StateInfo> rows_;
-  std::vector<int32_t> slots_;  // row index or -1; load factor <= 1/2
+  std::vector<Slot> slots_;  // load factor <= 1/2
   size_t mask_ = 0;
 };
 
