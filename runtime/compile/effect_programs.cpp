@@ -38,7 +38,7 @@ const PassProgram* EffectPrograms::program(std::string_view technique, std::stri
   return p ? &program(*p) : nullptr;
 }
 
-StageProgram EffectPrograms::compile_stage(const PassStage& stage, TranslationUnit unit) {
+StageProgram EffectPrograms::compile_stage(const StageUnit& stage, TranslationUnit unit) {
   StageProgram out;
   out.stage = stage.stage;
   Clock::time_point start = Clock::now();
@@ -73,7 +73,7 @@ const PassProgram& EffectPrograms::program(const EffectPass& pass) {
   p.pass = &pass;
   p.unsupported = pass.unsupported;
   bool all_ok = true;
-  for (const PassStage& stage : pass.stages) {
+  for (const StageUnit& stage : pass.stages) {
     std::optional<TranslationUnit> unit = units_.unit(stage);
     if (!unit) {
       p.unsupported.push_back(std::string(to_string(stage.stage)) + " stage: " + stage.unsupported);

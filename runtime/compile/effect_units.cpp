@@ -18,8 +18,8 @@ const char* to_string(StageSourceKind kind) {
   return "unknown";
 }
 
-const PassStage* EffectPass::find(ShaderStage stage) const {
-  for (const PassStage& s : stages)
+const StageUnit* EffectPass::find(ShaderStage stage) const {
+  for (const StageUnit& s : stages)
     if (s.stage == stage) return &s;
   return nullptr;
 }
@@ -377,7 +377,7 @@ class EffectUnitBuilder {
       for (const ast::StateAssignment& s : p.states) {
         std::optional<ShaderStage> stage = stage_of_state(s.name);
         if (!stage || !s.value) continue;
-        PassStage ps;
+        StageUnit ps;
         ps.stage = *stage;
         ps.range = s.range;
         const ast::Expr* value = s.value.get();
@@ -387,11 +387,11 @@ class EffectUnitBuilder {
           continue;
         }
         // A later assignment of the same stage wins, as in D3D.
-        std::erase_if(pass.stages, [&](const PassStage& o) { return o.stage == ps.stage; });
+        std::erase_if(pass.stages, [&](const StageUnit& o) { return o.stage == ps.stage; });
         pass.stages.push_back(std::move(ps));
       }
       std::stable_sort(pass.stages.begin(), pass.stages.end(),
-                       [](const PassStage& a, const PassStage& b) { return a.stage < b.stage; });
+                       [](const StageUnit& a, const StageUnit& b) { return a.stage < b.stage; });
       add_fixed_function_reasons(t, pass, null_pixel);
       u_.passes_.push_back(std::move(pass));
     }
@@ -401,7 +401,7 @@ class EffectUnitBuilder {
   static void add_fixed_function_reasons(const ast::Technique& t, EffectPass& pass, bool null_pixel) {
     if (t.version != 9) return;  // technique10/11: no pixel shader means no fragment stage
     bool glsl = false, compute = false;
-    for (const PassStage& s : pass.stages) {
+    for (const StageUnit& s : pass.stages) {
       glsl = glsl || s.kind == StageSourceKind::glsl;
       compute = compute || s.stage == ShaderStage::compute;
     }
@@ -420,7 +420,7 @@ class EffectUnitBuilder {
   }
 
   // Fills `stage` from a shader value. False when the value names no shader (NULL).
-  bool resolve(const ast::Expr& e, PassStage& stage, int depth) {
+  bool resolve(const ast::Expr& e, StageUnit& stage, int depth) {
     if (depth > 8) return invalid(stage, "shader variables refer to each other in a cycle");
     switch (e.kind) {
       case ast::ExprKind::null: return false;
@@ -467,13 +467,13 @@ class EffectUnitBuilder {
     }
   }
 
-  static bool invalid(PassStage& stage, std::string reason) {
+  static bool invalid(StageUnit& stage, std::string reason) {
     stage.kind = StageSourceKind::invalid;
     stage.unsupported = std::move(reason);
     return true;
   }
 
-  bool glsl(PassStage& stage, std::vector<std::string> names) {
+  bool glsl(StageUnit& stage, std::vector<std::string> names) {
     stage.kind = StageSourceKind::glsl;
     stage.entry_point = "main";
     for (const std::string& n : names) {
@@ -508,7 +508,7 @@ class EffectUnitBuilder {
     return first;
   }
 
-  bool hlsl(PassStage& stage, const std::string& profile, const std::string& name,
+  bool hlsl(StageUnit& stage, const std::string& profile, const std::string& name,
             const std::vector<const ast::Expr*>& args, SourceRange range) {
     stage.kind = StageSourceKind::hlsl;
     stage.profile = profile;
@@ -602,7 +602,7 @@ const EffectPass* EffectUnits::find(std::string_view technique, std::string_view
   return nullptr;
 }
 
-std::optional<TranslationUnit> EffectUnits::unit(const PassStage& stage) const {
+std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
   TranslationUnit u;
   u.stage = stage.stage;
   u.entry_point = stage.entry_point;

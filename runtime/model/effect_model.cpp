@@ -99,8 +99,8 @@ class Builder {
   }
 
  private:
-  std::vector<AnnotationValue> annotations(const std::vector<ast::Annotation>& list) {
-    std::vector<AnnotationValue> out;
+  std::vector<Annotation> annotations(const std::vector<ast::Annotation>& list) {
+    std::vector<Annotation> out;
     for (const ast::Annotation& a : list) {
       if (!a.value) continue;
       Type t = model_.types.resolve(a.type, 0, a.array_dims, diags_, &const_scope_);
@@ -168,7 +168,7 @@ class Builder {
     TextureInfo t;
     t.parameter = parameter;
     t.shape = p.type.texture;
-    for (const AnnotationValue& a : p.annotations) {
+    for (const Annotation& a : p.annotations) {
       if (iequals(a.name, "Generator") && a.value.is_string()) {
         t.generator = a.value.text;
         t.generator_range = a.range;
@@ -266,8 +266,8 @@ class Builder {
 
 }  // namespace
 
-const AnnotationValue* find_annotation(const std::vector<AnnotationValue>& list, std::string_view name) {
-  for (const AnnotationValue& a : list)
+const Annotation* find_annotation(const std::vector<Annotation>& list, std::string_view name) {
+  for (const Annotation& a : list)
     if (a.name == name) return &a;
   return nullptr;
 }

@@ -35,7 +35,7 @@ bool build_version_model(EffectVersion& version, DiagnosticSink& sink, std::vect
     TechniqueFacts f;
     f.name = t.name;
     f.range = t.range;
-    for (const fx::AnnotationValue& a : t.annotations)
+    for (const fx::Annotation& a : t.annotations)
       if (auto v = fact_value(a.value)) f.annotations.emplace_back(a.name, std::move(*v));
     facts.push_back(std::move(f));
   }

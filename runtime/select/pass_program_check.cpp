@@ -72,17 +72,17 @@ PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique
   const EffectPass* ep = find_pass(programs.units(), technique_index, technique, pass_index);
   if (!ep) return out;
   out.found = true;
-  for (const PassStage& stage : ep->stages)
+  for (const StageUnit& stage : ep->stages)
     if (stage.kind == StageSourceKind::invalid)
       out.reasons.push_back(reason("shader-compile-failed", stage.range, "shader does not compile: " + stage.unsupported));
-  bool compiled = std::any_of(ep->stages.begin(), ep->stages.end(), [](const PassStage& s) {
+  bool compiled = std::any_of(ep->stages.begin(), ep->stages.end(), [](const StageUnit& s) {
     return s.kind == StageSourceKind::hlsl || s.kind == StageSourceKind::glsl;
   });
   if (!compiled) return out;
 
   const PassProgram& program = programs.program(*ep);
   auto at = [&](ShaderStage s) {
-    const PassStage* ps = ep->find(s);
+    const StageUnit* ps = ep->find(s);
     return ps ? ps->range : pass_range;
   };
   bool all_ok = true;

@@ -1,6 +1,5 @@
-// Private to runtime/select: the compiled-program half of technique validation. It lives
-// in its own translation unit because fx/compile/effect_units.h (struct PassStage) and
-// fx/model/effect_model.h (enum class PassStage) cannot both be included in one file.
+// Private to runtime/select: the compiled-program half of technique validation (limits
+// and compile success of a pass's linked program).
 #pragma once
 #include <cstdint>
 #include <memory>

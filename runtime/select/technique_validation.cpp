@@ -241,7 +241,7 @@ class TechniqueValidator {
   void check_texture_format(uint32_t parameter) {
     if (parameter >= model_.parameters.size()) return;
     const Parameter& p = model_.parameters[parameter];
-    const AnnotationValue* fmt = find_annotation(p.annotations, "Format");
+    const Annotation* fmt = find_annotation(p.annotations, "Format");
     if (!fmt || !fmt->value.is_string()) return;
     const std::string& f = fmt->value.text;
     std::string vk_format = f;
@@ -318,7 +318,7 @@ class TechniqueValidator {
   // The technique's `Requires`: located at the annotation. A need the passes already
   // reported (same sentence) is not repeated.
   void check_requires(const TechniqueInfo& technique) {
-    const AnnotationValue* req = find_annotation(technique.annotations, "Requires");
+    const Annotation* req = find_annotation(technique.annotations, "Requires");
     if (!req) return;
     if (!req->value.is_string()) {
       reasons_.add("bad-requires", req->range, "annotation Requires must be a string");

@@ -72,7 +72,7 @@ int run_compile(const CompileArgs& args) {
     matched = true;
     const fx::PassProgram& program = programs.program(pass);
     for (const fx::StageProgram& s : program.stages) {
-      const fx::PassStage* stage = pass.find(s.stage);
+      const fx::StageUnit* stage = pass.find(s.stage);
       bool ok = s.shader.ok && program.compiled;
       failed = failed || !ok;
       all.insert(all.end(), s.diagnostics.begin(), s.diagnostics.end());

@@ -117,7 +117,7 @@ const char* kind_name(fx::DescriptorKind k) {
   return "unknown";
 }
 
-json shader_json(const fx::StageProgram& s, const fx::PassStage* stage, const fx::SourceManager& sm) {
+json shader_json(const fx::StageProgram& s, const fx::StageUnit* stage, const fx::SourceManager& sm) {
   json images = json::array();
   for (const fx::ImageBinding& i : s.shader.reflection.images)
     images.push_back({{"name", i.name}, {"set", i.set}, {"binding", i.binding}, {"array", i.array_size}});

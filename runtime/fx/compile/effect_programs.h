@@ -76,7 +76,7 @@ class EffectPrograms {
     CompiledShader shader;  // before linking: link_program rewrites bindings per pass
     std::vector<Diagnostic> diagnostics;
   };
-  StageProgram compile_stage(const PassStage& stage, TranslationUnit unit);
+  StageProgram compile_stage(const StageUnit& stage, TranslationUnit unit);
 
   const EffectUnits& units_;
   const ShaderCompiler& compiler_;

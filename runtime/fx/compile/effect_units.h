@@ -26,7 +26,7 @@ enum class StageSourceKind : uint8_t {
 const char* to_string(StageSourceKind kind);
 
 // One stage of one pass, as the effect names it.
-struct PassStage {
+struct StageUnit {
   ShaderStage stage = ShaderStage::vertex;
   StageSourceKind kind = StageSourceKind::hlsl;
   std::string profile;                  // as written: "vs_2_0", "ps_2_a", "ps_4_0"; GLSL "450"
@@ -44,13 +44,13 @@ struct EffectPass {
   std::string technique;  // name; "technique<i>" when unnamed
   std::string pass;       // name; "pass<j>" when unnamed
   uint32_t technique_index = 0, pass_index = 0;  // technique index counts all techniques
-  std::vector<PassStage> stages;
+  std::vector<StageUnit> stages;
   // Why the pass cannot run as written beyond its stages: fixed-function vertex or pixel
   // processing in D3D9 techniques (emulated by the legacy path, not compiled here).
   std::vector<std::string> unsupported;
   SourceRange range;
 
-  const PassStage* find(ShaderStage stage) const;
+  const StageUnit* find(ShaderStage stage) const;
 };
 
 // Options for building units.
@@ -77,7 +77,7 @@ class EffectUnits {
   const EffectPass* find(std::string_view technique, std::string_view pass) const;
 
   // The unit for one stage; nullopt when the stage is not compiled (see stage.unsupported).
-  std::optional<TranslationUnit> unit(const PassStage& stage) const;
+  std::optional<TranslationUnit> unit(const StageUnit& stage) const;
 
   // The effect's shader code shared by every HLSL stage (prelude and #line included).
   const std::string& hlsl_code() const { return hlsl_; }

@@ -26,20 +26,21 @@ namespace fx {
 
 inline constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
 
-struct AnnotationValue {
+// A named, typed, located annotation (`float UIMin = 0;`).
+struct Annotation {
   std::string name;
   Value value;
   SourceRange range;
 };
 
 // The annotation named `name` (case-sensitive, as D3DX), or nullptr.
-const AnnotationValue* find_annotation(const std::vector<AnnotationValue>& list, std::string_view name);
+const Annotation* find_annotation(const std::vector<Annotation>& list, std::string_view name);
 
 struct Parameter {
   std::string name;
   Type type;
   std::string semantic;               // as written (lookups ignore case)
-  std::vector<AnnotationValue> annotations;
+  std::vector<Annotation> annotations;
   std::optional<Value> default_value; // converted to `type`; absent when not initialised
   uint32_t storage = 0;               // ast::StorageClass bits
   bool is_shared() const { return storage & ast::kShared; }
@@ -135,14 +136,14 @@ struct StateObjectInfo {
   StateBlock block = StateBlock::blend_state;
   std::string name;
   std::vector<ResolvedState> states;
-  std::vector<AnnotationValue> annotations;
+  std::vector<Annotation> annotations;
   uint32_t sampler = kNoIndex;       // SamplerState objects: index into samplers
   SourceRange range;
 };
 
 struct PassInfo {
   std::string name;
-  std::vector<AnnotationValue> annotations;
+  std::vector<Annotation> annotations;
   std::vector<ResolvedState> states;       // in source order
   std::vector<ShaderBinding> shaders;      // one per stage set (later ones replace)
   std::vector<UnsupportedState> unsupported;
@@ -156,7 +157,7 @@ struct TechniqueInfo {
   std::string name;
   int version = 9;                         // 9, 10, 11
   std::string group;                       // enclosing fxgroup ("" if none)
-  std::vector<AnnotationValue> annotations;
+  std::vector<Annotation> annotations;
   std::vector<PassInfo> passes;
   SourceRange range;
 };

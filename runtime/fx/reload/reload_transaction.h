@@ -21,9 +21,8 @@
 
 namespace fx {
 
-// Declared, not included: fx/model/effect_model.h declares an `enum class PassStage` and
-// fx/compile/effect_units.h a `struct PassStage`, so no translation unit can include both
-// yet. Include the one you use; members are shared_ptrs so either side compiles alone.
+// Declared, not included, so users of a transaction need not include every layer; members
+// are shared_ptrs.
 struct EffectModel;
 class EffectUnits;
 class EffectPrograms;

@@ -1,8 +1,6 @@
 // Technique validation and selection for one effect version, behind a header that names
-// neither the effect model nor the selection headers: fx/select/technique_candidate.h and
-// fx/model/effect_model.h both declare fx::AnnotationValue (a variant and a struct), so no
-// translation unit can include both. The model side fills TechniqueFacts; the selection
-// side (technique_choice.cpp) turns them into candidates and a SelectionPlan.
+// neither the effect model nor the selection headers. The model side fills TechniqueFacts;
+// the selection side (technique_choice.cpp) turns them into candidates and a SelectionPlan.
 #pragma once
 #include <cstdint>
 #include <memory>

@@ -3,10 +3,8 @@
 // stages, texture formats, compiled programs within the device limits, compile success and
 // the technique's own `Requires` annotation. Every rejection is a located fx::Diagnostic.
 //
-// This header does not include fx/model/effect_model.h: the model's `fx::AnnotationValue`
-// (a named, located annotation) and selection's `fx::AnnotationValue` (a typed value in
-// technique_candidate.h) share a name, so one translation unit cannot see both. Results
-// here carry annotations in selection's vocabulary, spelled out.
+// Results carry annotations in selection's vocabulary (technique_candidate.h); the model
+// types are only forward-declared here so callers need not include the model.
 #pragma once
 #include <cstdint>
 #include <optional>
