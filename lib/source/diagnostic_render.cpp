@@ -55,9 +55,11 @@ std::string render_text(const Diagnostic& d, const SourceManager& sm,
   if (!d.id.empty()) out += " [" + d.id + "]";
   out.push_back('\n');
   if (options.show_source_line && d.range.valid()) append_source_line(out, sm, d.range);
-  for (const FixIt& f : d.fixits)
-    if (!f.replacement.empty())
-      out += position(sm, f.range.begin) + ": note: fix-it: replace with '" + f.replacement + "'\n";
+  for (const FixIt& f : d.fixits) {
+    bool insertion = !f.range.end.valid() || f.range.end == f.range.begin;
+    out += position(sm, f.range.begin) + ": note: fix-it: " +
+           (insertion ? "insert '" : "replace with '") + f.replacement + "'\n";
+  }
   std::vector<DiagnosticNote> notes = d.notes;
   std::vector<DiagnosticNote> context = context_notes(d.range.begin, sm);
   notes.insert(notes.end(), context.begin(), context.end());

@@ -220,7 +220,10 @@ void Checker::check_profile_rules() {
     SourceRange at = t.name_range.valid() ? t.name_range : t.range;
     if (t.version == 11) require(EffectProfile::fx_5_0, at, "technique11");
     if (t.version == 10) require(EffectProfile::fx_4_0, at, "technique10");
-    if (t.version == 9 && profile_ >= EffectProfile::fx_4_0)
+    // An inferred profile comes from the newest forms in the file; D3D9 techniques beside
+    // them mean the file targets both runtimes (as SDK samples did), which is no mistake.
+    bool explicit_profile = options_.profile != EffectProfile::automatic;
+    if (t.version == 9 && profile_ >= EffectProfile::fx_4_0 && explicit_profile)
       diags_.warning("d3d9-technique", at,
                      "a Direct3D 9 'technique' in an " + std::string(to_string(profile_)) +
                          " effect; use technique" +

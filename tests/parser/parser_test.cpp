@@ -403,7 +403,7 @@ TEST(ParserErrors, MissingSemicolonOnNewLine) {
             "test.fx:1:12: error: expected ';' after declaration [expected-token]\n"
             "float a = 1\n"
             "           ^\n"
-            "test.fx:1:12: note: fix-it: replace with ';'\n");
+            "test.fx:1:12: note: fix-it: insert ';'\n");
   EXPECT_EQ(p->effect.decls.size(), 2u);  // b is still parsed
 }
 
