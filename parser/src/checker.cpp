@@ -252,8 +252,9 @@ void Checker::check_profile_rules() {
   if (techniques == 0 && options_.require_technique) {
     SourceRange at;
     if (!effect_.tokens.empty()) at = effect_.tokens.front().range();
-    diags_.error("no-technique", at,
-                 "the effect defines no technique, so it has nothing to apply");
+    // D3DX creates such effects (shader libraries, parameter pools); warn, do not fail.
+    diags_.warning("no-technique", at,
+                   "the effect defines no technique, so it has nothing to apply");
   }
 }
 

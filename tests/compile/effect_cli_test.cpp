@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fxkit_cli.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -19,15 +21,8 @@ struct CliRun {
 };
 
 CliRun run(const std::string& args) {
-  fs::path out = fs::temp_directory_path() / ("fxkit_cli_" + std::to_string(::getpid()) + ".json");
-  std::string cmd = std::string(FXKIT_BIN) + " " + args + " > " + out.string() + " 2>/dev/null";
-  int rc = std::system(cmd.c_str());
-  CliRun r;
-  r.exit_code = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-  std::ifstream in(out);
-  r.out.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  fs::remove(out);
-  return r;
+  fxkit_test::CliRun r = fxkit_test::run_fxkit(args);
+  return {r.status, std::move(r.out)};
 }
 
 std::string data(const std::string& rel) { return std::string(FXKIT_SOURCE_DIR) + "/" + rel; }

@@ -315,8 +315,9 @@ TEST(Checker, ProfileRules) {
   EXPECT_EQ(calls9->ids(), (Ids{"profile-mismatch"}));
 }
 
-TEST(Checker, NoTechniqueIsAnErrorUnlessTheEffectIsALibrary) {
+TEST(Checker, NoTechniqueIsAWarningUnlessTheEffectIsALibrary) {
   EXPECT_EQ(check("float4 c;\n")->ids(), (Ids{"no-technique"}));
+  EXPECT_EQ(check("float4 c;\n")->diags.diagnostics()[0].severity, Severity::warning);
   EXPECT_EQ(check("float4 c;\n", {.require_technique = false})->ids(), Ids{});
   EXPECT_EQ(check("fxgroup g { technique11 t { pass p {} } }\n")->ids(), Ids{});
 }

@@ -2,33 +2,16 @@
 // codes, its text and its JSON.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "fxkit_cli.h"
+
 namespace {
 
-struct CliRun {
-  int status = -1;
-  std::string out;
-};
-
-// Runs fxkit with `args` (stderr discarded) and returns its exit status and stdout.
-CliRun fxkit(const std::string& args) {
-  CliRun r;
-  std::string cmd = std::string(FXKIT_BINARY) + " " + args + " 2>/dev/null";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-  int status = pclose(p);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using fxkit_test::CliRun;
+CliRun fxkit(const std::string& args) { return fxkit_test::run_fxkit(args); }
 
 const std::string kEffects = std::string(FXKIT_SOURCE_DIR) + "/effects/";
 

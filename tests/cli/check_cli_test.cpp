@@ -1,0 +1,104 @@
+// `fxkit check` as a user and a CI job run it: exit codes (0 clean, 1 errors, 2 usage or
+// I/O), clickable text diagnostics, and the JSON document.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "fxkit_cli.h"
+
+namespace {
+
+using fxkit_test::run_fxkit;
+namespace fs = std::filesystem;
+
+const std::string kData = std::string(FXKIT_SOURCE_DIR) + "/tests/parser/data/";
+
+// A file in a fresh temporary folder, for includes and broken copies.
+std::string write_temp(const std::string& name, const std::string& text) {
+  fs::path dir = fs::path(::testing::TempDir()) / ("fxkit_check_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return (dir / name).string();
+}
+
+TEST(CheckCli, CleanEffectExitsZeroAndPrintsNothing) {
+  auto r = run_fxkit("check " + kData + "sdk_sample.fx", true);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+}
+
+TEST(CheckCli, ErrorsExitOneWithFileLineColumnAndCaret) {
+  std::string path = write_temp("broken.fx",
+                                "float4 Color;\n"
+                                "technique T { pass P { CullMod = None; } }\n");
+  auto r = run_fxkit("check " + path, true);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find(path + ":2:24: error: unknown state 'CullMod' in a pass; did you mean "
+                              "'CullMode'? [unknown-state]\n"
+                              "technique T { pass P { CullMod = None; } }\n"
+                              "                       ^~~~~~~\n"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST(CheckCli, IncludeDirsDefinesAndIncludeNotes) {
+  std::string header = write_temp("lights.fxh", "#ifndef LIGHTS\n#error LIGHTS must be defined\n#endif\n");
+  std::string main = write_temp("main.fx", "#include \"lights.fxh\"\ntechnique T { pass P {} }\n");
+  auto missing = run_fxkit("check " + main, true);
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.err.find("lights.fxh:2:1: error: LIGHTS must be defined [error-directive]"),
+            std::string::npos)
+      << missing.err;
+  EXPECT_NE(missing.err.find("main.fx:1:1: note: included from here"), std::string::npos) << missing.err;
+  EXPECT_EQ(run_fxkit("check -D LIGHTS=4 " + main).status, 0);
+}
+
+TEST(CheckCli, WerrorTurnsWarningsIntoFailures) {
+  std::string path = write_temp("dup.fx", "technique T { pass P { ZEnable = TRUE; ZEnable = FALSE; } }\n");
+  EXPECT_EQ(run_fxkit("check " + path).status, 0);
+  EXPECT_EQ(run_fxkit("check --werror " + path).status, 1);
+}
+
+TEST(CheckCli, JsonHasDiagnosticsAndASummary) {
+  std::string path = write_temp("json.fx",
+                                "float4 Diffuse : DIFFUSE < string UIName = \"Diffuse\"; >;\n"
+                                "technique T < string Scheme = \"quality\"; > { pass P0 { ZEnable = Maybe; } pass P1 {} }\n");
+  auto r = run_fxkit("check --json " + path);
+  EXPECT_EQ(r.status, 1);
+  nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_FALSE(j.is_discarded()) << r.out;
+  ASSERT_EQ(j["diagnostics"].size(), 1u) << r.out;
+  const auto& d = j["diagnostics"][0];
+  EXPECT_EQ(d["file"], path);
+  EXPECT_EQ(d["line"], 2);
+  EXPECT_EQ(d["severity"], "error");
+  EXPECT_EQ(d["id"], "unknown-state-value");
+  EXPECT_TRUE(d["end"].is_object());
+  EXPECT_TRUE(d["notes"].is_array());
+  ASSERT_EQ(j["effects"].size(), 1u);
+  const auto& e = j["effects"][0];
+  EXPECT_EQ(e["parameters"][0]["name"], "Diffuse");
+  EXPECT_EQ(e["parameters"][0]["semantic"], "DIFFUSE");
+  EXPECT_EQ(e["techniques"][0]["name"], "T");
+  EXPECT_EQ(e["techniques"][0]["passes"].size(), 2u);
+  EXPECT_EQ(j["errors"], 1);
+}
+
+TEST(CheckCli, UsageAndIoErrorsExitTwo) {
+  EXPECT_EQ(run_fxkit("check").status, 2);
+  EXPECT_EQ(run_fxkit("check /nonexistent/effect.fx").status, 2);
+  EXPECT_EQ(run_fxkit("check --profile fx_9_9 " + kData + "sdk_sample.fx").status, 2);
+  EXPECT_EQ(run_fxkit("frobnicate").status, 2);
+}
+
+TEST(CheckCli, EverySeedListingChecksClean) {
+  for (const char* name : {"brdf.fx", "wood.fx", "state_snippets.fx", "sdk_sample.fx"}) {
+    auto r = run_fxkit(std::string("check ") + kData + name, true);
+    EXPECT_EQ(r.status, 0) << name << "\n" << r.err;
+  }
+}
+
+}  // namespace
