@@ -1,5 +1,6 @@
-// libFuzzer target: arbitrary bytes as an effect file through preprocessor, parser and
-// checker, with one virtual include, rendered diagnostics included. Any crash, hang,
+// libFuzzer target: arbitrary bytes as an effect file through preprocessor, parser,
+// checker and (when the runtime is built) the semantic model: types, constant folding,
+// resolved states. One virtual include; rendered diagnostics included. Any crash, hang,
 // sanitizer report or out-of-memory is a bug.
 #include <cstddef>
 #include <cstdint>
@@ -9,6 +10,9 @@
 
 #include "fx/diagnostic_render.h"
 #include "fx/frontend.h"
+#ifdef FXKIT_FUZZ_MODEL
+#include "fx/model/effect_model.h"
+#endif
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::string text(reinterpret_cast<const char*>(data), size);
@@ -29,6 +33,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   fx::DiagnosticSink diags;
   diags.set_error_limit(64);
   fx::ParsedEffect parsed = fx::parse_effect_text("fuzz.fx", std::move(text), sm, diags, options);
+#ifdef FXKIT_FUZZ_MODEL
+  // The model must cope with partial trees from inputs that failed to parse, too.
+  fx::EffectModel model = fx::build_effect_model(parsed, sm, diags);
+  (void)model;
+#endif
   std::string rendered = fx::render_text(diags.diagnostics(), sm);
   (void)fx::render_json(diags.diagnostics(), sm).dump();
   (void)parsed;
