@@ -31,9 +31,8 @@
 
 namespace fx {
 
-// Declared, not included: fx/model/parameter_store.h (for Param, ParameterStore) and
-// fx/select/selection.h (for SelectionCriteria) cannot share a translation unit yet (see
-// fx/reload/technique_choice.h); include the one your code uses.
+// Declared, not included, so this header stays light: include fx/model/parameter_store.h
+// (Param, ParameterStore) and fx/select/selection.h (SelectionCriteria) where you use them.
 struct Param;
 class ParameterStore;
 struct SelectionCriteria;
