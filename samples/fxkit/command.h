@@ -31,5 +31,6 @@ void register_compile(CLI::App& app, Runner& run);
 void register_info(CLI::App& app, Runner& run);
 void register_watch(CLI::App& app, Runner& run);
 void register_select(CLI::App& app, Runner& run);
+void register_render(CLI::App& app, Runner& run);
 
 }  // namespace fxkit

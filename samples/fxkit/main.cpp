@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   fxkit::register_info(app, run);
   fxkit::register_watch(app, run);
   fxkit::register_select(app, run);
+  fxkit::register_render(app, run);
 #endif
   try {
     app.parse(argc, argv);

@@ -1,8 +1,8 @@
 // `fxkit watch FILE [-I DIR]... [-D NAME[=VALUE]]... [--json] [--frames N] [--events N]
 //  [--timeout S] [--mesh M] [--out FILE.png]`: loads an effect, reloads it whenever it or
 // an include is saved, and prints one line per reload event (one JSON object per line with
-// --json). Rendering (--mesh/--out) needs the Vulkan effect binding; until it exists the
-// command watches, reloads and reports.
+// --json). With --out (or --mesh) it also renders every frame headlessly through the Vulkan
+// effect binding and rewrites the PNG after the first frame of each new version.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +12,9 @@
 #include "command.h"
 #include "fx/diagnostic_render.h"
 #include "fx/reload/effect_library.h"
+#include "fx/reload/reload_transaction.h"
+#include "fx/vulkan/effect_preview.h"
+#include "fx/vulkan/reload_backend.h"
 
 namespace fxkit {
 namespace {
@@ -77,8 +80,27 @@ int run_watch(const WatchArgs& args) {
     std::fprintf(stderr, "fxkit watch: cannot read '%s'\n", args.file.c_str());
     return kUsageError;
   }
-  if (!args.mesh.empty() || !args.out.empty())
-    std::fprintf(stderr, "fxkit watch: rendering (--mesh, --out) needs the Vulkan effect binding; watching only\n");
+  // Rendering: a headless device, the mesh framed by the camera, a binding per version.
+  const bool render = !args.mesh.empty() || !args.out.empty();
+  std::optional<fx::vk::Context> ctx;
+  std::unique_ptr<fx::vk::EffectPreview> preview;
+  std::unique_ptr<fx::vk::ReloadBackend> backend;
+  if (render) {
+    fx::DiagnosticSink sink;
+    auto mesh = fx::make_mesh(args.mesh.empty() ? "sphere" : args.mesh, sink);
+    if (mesh) ctx = fx::vk::Context::headless({}, sink);
+    if (ctx) preview = fx::vk::EffectPreview::create(*ctx, *mesh, {}, sink);
+    if (!preview) {
+      for (const fx::Diagnostic& d : sink.diagnostics()) std::fprintf(stderr, "fxkit watch: %s [%s]\n", d.message.c_str(), d.id.c_str());
+      return kUsageError;
+    }
+    fx::vk::EffectPreview* p = preview.get();
+    backend = std::make_unique<fx::vk::ReloadBackend>(
+        *ctx, preview->textures(), preview->frames(),
+        fx::vk::ReloadBackendDesc{preview->formats(), preview->binding_desc(),
+                                  [p](std::span<const fx::InterfaceVariable> in) { return p->vertex_layout(in); }});
+    options.backend = backend.get();
+  }
 
   fx::EffectLibrary lib(std::move(options));
   fx::EffectHandle effect = lib.load(args.file);
@@ -96,6 +118,23 @@ int run_watch(const WatchArgs& args) {
   using Clock = std::chrono::steady_clock;
   Clock::time_point start = Clock::now();
   int events = 0;
+  uint64_t written_serial = 0;  // the version whose frame is in the PNG
+  auto render_frame = [&] {
+    auto version = effect.version();
+    fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
+    if (!binding) return;
+    uint32_t technique = effect.technique();
+    if (!binding->technique_ok(technique)) technique = binding->first_ok_technique();
+    fx::vk::set_standard_semantics(*effect.params(), *version->model, preview->scene());
+    fx::DiagnosticSink sink;
+    auto image = preview->render(*binding, technique, 0, sink);
+    for (const fx::Diagnostic& d : sink.diagnostics()) std::fprintf(stderr, "fxkit watch: %s [%s]\n", d.message.c_str(), d.id.c_str());
+    if (image && !args.out.empty() && written_serial != version->serial) {
+      if (fx::write_png(args.out, *image, sink)) written_serial = version->serial;
+      else std::fprintf(stderr, "fxkit watch: cannot write '%s'\n", args.out.c_str());
+    }
+  };
+  if (render) effect.select();
   // One loop iteration is one frame: wait (bounded) for a reload, then poll at the boundary.
   for (uint64_t frame = 0; args.frames <= 0 || frame < static_cast<uint64_t>(args.frames); ++frame) {
     if (args.timeout > 0 && std::chrono::duration<double>(Clock::now() - start).count() >= args.timeout) break;
@@ -104,8 +143,10 @@ int run_watch(const WatchArgs& args) {
       print_event(ev, args.json);
       ++events;
     }
+    if (render) render_frame();
     if (args.events > 0 && events >= args.events) break;
   }
+  lib.release_all();
   return effect.ok() ? kSuccess : kInputErrors;
 }
 
@@ -121,8 +162,8 @@ void register_watch(CLI::App& app, Runner& run) {
   cmd->add_option("--timeout", args->timeout, "Stop after S seconds");
   cmd->add_option("--coalesce-ms", args->coalesce_ms, "Quiet time before a saved file is reloaded")
       ->capture_default_str();
-  cmd->add_option("--mesh", args->mesh, "Mesh to render (needs the Vulkan effect binding)");
-  cmd->add_option("--out", args->out, "PNG rewritten after each reload (needs the Vulkan effect binding)");
+  cmd->add_option("--mesh", args->mesh, "Mesh to render: sphere, torus, quad, teapot or an .obj (default sphere)");
+  cmd->add_option("--out", args->out, "PNG rewritten after the first frame of each new version");
   cmd->add_option("FILE", args->file, "Effect file")->required();
   cmd->callback([args, &run] { run = [args] { return run_watch(*args); }; });
 }

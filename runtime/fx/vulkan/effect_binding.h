@@ -1,0 +1,139 @@
+// fx::vk::EffectBinding: one effect (model + compiled programs + parameter values) made
+// drawable in the application's command buffers. Per pass it holds the ShaderProgram, the
+// pipeline state mapped from the pass's states, its descriptors (samplers from the sampler
+// states, textures from generators, files or the app's image views) and uniform blocks fed
+// from the ParameterStore (only blocks whose parameters changed are re-packed).
+//
+//   auto binding = EffectBinding::create(ctx, model, programs, params, textures, frames, {}, sink);
+//   uint32_t layout = binding->add_vertex_layout(my_vertex_layout);
+//   frames.begin_frame();                                   // app: per frame in flight
+//   vkCmdBeginRendering(cmd, ...);                          // app: attachments of `formats`
+//   binding->begin(cmd, technique, formats, viewport, scissor, sink);
+//   for (uint32_t p = 0; p < binding->pass_count(technique); ++p)
+//     if (binding->apply(p, layout, sink)) draw_my_mesh(cmd);
+//   binding->end();
+//
+// Threading: create() and warm() may run on any thread (a reload worker) while other
+// bindings render; begin/apply/end/set_texture belong to the render thread. Texture
+// uploads happen in begin() because they use the context's queue.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <atomic>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fx/compile/effect_programs.h"
+#include "fx/model/effect_model.h"
+#include "fx/model/parameter_store.h"
+#include "fx/vulkan/effect_textures.h"
+#include "fx/vulkan/pass_recorder.h"
+#include "fx/vulkan/pass_state_mapping.h"
+#include "fx/vulkan/sampler_cache.h"
+
+namespace fx::vk {
+
+// How an effect is bound.
+struct EffectBindingDesc {
+  DescriptorMode descriptors = DescriptorMode::sets;
+  // Pipeline path: DynamicStateSet::from_features(ctx.features()) or DynamicStateSet::none().
+  std::optional<DynamicStateSet> dynamic;  // unset: from the context's features
+  // Render target facts the pass states are mapped for (attachment count, samples, depth
+  // bits, winding). See pass_state_mapping.h.
+  PassTargetInfo target;
+  // Folder that texture ResourceNames are relative to (the effect file's folder).
+  std::filesystem::path effect_dir;
+};
+
+class EffectBinding {
+ public:
+  // Builds every pass of every technique whose programs compiled. A technique that cannot
+  // run (assembly or fixed-function stages, compile errors, unsupported states, a missing
+  // device feature, alpha test) is kept with its reason. Null only when nothing at all could
+  // be set up (diagnostics say why). Everything referenced must outlive the binding.
+  static std::unique_ptr<EffectBinding> create(const Context& ctx, const EffectModel& model,
+                                               EffectPrograms& programs, ParameterStore& params,
+                                               EffectTextureCache& textures, FrameResources& frames,
+                                               const EffectBindingDesc& desc, DiagnosticSink& sink);
+  ~EffectBinding();
+  EffectBinding(const EffectBinding&) = delete;
+  EffectBinding& operator=(const EffectBinding&) = delete;
+
+  // Techniques, indexed as EffectModel::techniques.
+  uint32_t technique_count() const { return uint32_t(techniques_.size()); }
+  bool technique_ok(uint32_t technique) const;
+  // Why the technique cannot run ("" when it can).
+  const std::string& technique_reason(uint32_t technique) const;
+  uint32_t pass_count(uint32_t technique) const;
+  // The first technique that can run, or kNoIndex.
+  uint32_t first_ok_technique() const;
+
+  // Registers a layout of the application's vertex buffers; apply() takes the returned id.
+  // Shader inputs are matched to it per pass on first use ("vk-vertex-attribute-missing").
+  uint32_t add_vertex_layout(VertexLayout layout);
+
+  // Samples the application's image instead of the effect's own texture for the texture
+  // parameter `texture` (render thread; takes effect at the next begin()). False and
+  // "vk-resource-unknown" when the effect has no such texture parameter.
+  bool set_texture(std::string_view texture, VkImageView view, VkImageLayout layout, ImageKind kind,
+                   DiagnosticSink& sink);
+
+  // Creates the technique's pipelines for these formats and layout now (instead of at the
+  // first apply). False with diagnostics if one cannot be made.
+  bool warm(uint32_t technique, const RenderingFormats& formats, uint32_t vertex_layout, DiagnosticSink& sink);
+
+  // Starts applying `technique` into `cmd` (inside the app's dynamic rendering with
+  // attachments of `formats`); uploads textures not yet on the GPU. False (nothing is
+  // recorded by apply then) when the technique cannot run or an upload failed.
+  bool begin(VkCommandBuffer cmd, uint32_t technique, const RenderingFormats& formats,
+             const VkViewport& viewport, const VkRect2D& scissor, DiagnosticSink& sink);
+  // Binds pass `pass` of the begun technique for geometry of `vertex_layout`; the app draws
+  // after it returns true.
+  bool apply(uint32_t pass, uint32_t vertex_layout, DiagnosticSink& sink);
+  // Ends the technique; the next begin() assumes nothing is bound.
+  void end();
+
+  const ApplyStats& stats() const { return recorder_->stats(); }
+  void reset_stats() { recorder_->reset_stats(); }
+  // Pipelines created and samplers held by this binding.
+  size_t pipeline_count() const;
+  size_t sampler_count() const { return samplers_.size(); }
+  const PipelineCacheStats& pipeline_stats() const;
+  const DynamicStateSet& dynamic() const { return recorder_->dynamic(); }
+
+  // Vulkan objects (shader modules, layouts, pipelines, samplers, pipeline caches) that
+  // live bindings hold, summed over the process: returns to its baseline when every binding
+  // made after it is gone. Updated by create, warm, end and destruction.
+  static int64_t live_vulkan_objects() { return live_objects_.load(); }
+
+ private:
+  struct Pass;
+  struct Technique;
+  EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures,
+                FrameResources& frames);
+  bool bind_textures(DiagnosticSink& sink);
+  const VertexInput* vertex_input(Pass& pass, uint32_t layout, DiagnosticSink& sink);
+  void update_object_count();
+
+  const Context* ctx_;
+  const EffectModel* model_ = nullptr;
+  ParameterStore* params_;
+  EffectTextureCache* textures_;
+  FrameResources* frames_;
+  std::optional<PipelineCache> pipelines_;
+  SamplerCache samplers_;
+  std::optional<PassRecorder> recorder_;
+  std::vector<std::unique_ptr<Technique>> techniques_;
+  std::vector<VertexLayout> layouts_;
+  std::vector<std::pair<uint32_t, Texture>> app_textures_;  // texture parameter -> app view
+  bool textures_pending_ = true;
+  Technique* active_ = nullptr;
+  int64_t counted_objects_ = 0;
+  static std::atomic<int64_t> live_objects_;
+};
+
+}  // namespace fx::vk

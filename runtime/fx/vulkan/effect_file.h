@@ -1,0 +1,36 @@
+// fx::vk::EffectFile: one effect file loaded for rendering without hot reload: parsed,
+// modelled, split into translation units, compiled lazily, with its parameter values.
+// What `fxkit render`, `fxkit bench apply` and the rendering tests start from (hot reload
+// builds the same pieces per version in fx/reload).
+#pragma once
+#include <memory>
+#include <string>
+
+#include "fx/compile/effect_programs.h"
+#include "fx/compile/effect_units.h"
+#include "fx/compile/shader_compiler.h"
+#include "fx/frontend.h"
+#include "fx/model/effect_model.h"
+#include "fx/model/parameter_store.h"
+#include "fx/source_manager.h"
+
+namespace fx::vk {
+
+struct EffectFile {
+  std::string path;
+  SourceManager sources;
+  ParsedEffect parsed;
+  std::unique_ptr<EffectModel> model;
+  std::unique_ptr<EffectUnits> units;
+  std::unique_ptr<ShaderCompiler> compiler;
+  std::unique_ptr<EffectPrograms> programs;
+  std::unique_ptr<ParameterStore> params;
+
+  // Loads `path`; null when the front end or the model reported errors (in `sink`).
+  static std::unique_ptr<EffectFile> load(const std::string& path, const FrontEndOptions& options,
+                                          DiagnosticSink& sink);
+  // The technique named `name`, or kNoIndex.
+  uint32_t find_technique(std::string_view name) const;
+};
+
+}  // namespace fx::vk

@@ -1,0 +1,65 @@
+// fx::vk::EffectTextureCache: the textures effect parameters name, shared by every effect
+// binding (and every reloaded version) of one device: procedural tables baked once per
+// (generator, parameters), PNG files decoded once per (path, size, mtime), and neutral
+// stand-ins for files that are missing. CPU data is resolved on any thread (reload workers
+// bake while the app renders); GPU images are created only on the render thread, because
+// uploads use the context's queue, which Vulkan does not let two threads share.
+#pragma once
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "fx/compile/shader_reflection.h"
+#include "fx/image.h"
+#include "fx/model/effect_model.h"
+#include "fx/shading/table.h"
+#include "fx/vulkan/texture.h"
+
+namespace fx::vk {
+
+// The CPU contents of one effect texture: an 8-bit image or a baked table.
+struct EffectTextureData {
+  std::string key;                      // identity in the cache
+  std::optional<fx::Image> image;       // PNG files and stand-ins
+  std::optional<shading::Table> table;  // procedural generators
+  bool stand_in = false;                // a neutral texture for a missing file
+  ImageDim dim = ImageDim::dim_2d;       // stand-ins take the shape the shader samples
+};
+
+class EffectTextureCache {
+ public:
+  explicit EffectTextureCache(const Context& ctx) : ctx_(&ctx) {}
+  EffectTextureCache(const EffectTextureCache&) = delete;
+  EffectTextureCache& operator=(const EffectTextureCache&) = delete;
+
+  // The data for `texture` of `model` (thread-safe). A generator is baked (failures are
+  // errors from the generator registry); a ResourceName is read relative to `effect_dir`.
+  // A file that is missing or unreadable gets a stand-in (flat normal for NORMALMAP
+  // semantics, white otherwise) and the warning "vk-texture-file-missing"; a texture with
+  // neither (set by the application) gets the stand-in silently. Null only when a
+  // generator fails.
+  // `dim` is how the shader samples it (stand-ins are made in that shape: 2D, 3D or cube).
+  std::shared_ptr<const EffectTextureData> resolve(const EffectModel& model, const TextureInfo& texture,
+                                                   const std::filesystem::path& effect_dir, ImageDim dim,
+                                                   DiagnosticSink& sink);
+
+  // The GPU texture for `data`, uploaded on first use. Render thread only.
+  const Texture* gpu(const EffectTextureData& data, DiagnosticSink& sink);
+
+  // GPU textures alive (for leak checks) and CPU entries held.
+  size_t gpu_count() const { return gpu_.size(); }
+  size_t cpu_count() const;
+  // Drops everything (render thread; the device must be done with the textures).
+  void clear();
+
+ private:
+  const Context* ctx_;
+  mutable std::mutex mutex_;  // guards cpu_
+  std::map<std::string, std::shared_ptr<const EffectTextureData>> cpu_;
+  std::map<std::string, Texture> gpu_;
+};
+
+}  // namespace fx::vk

@@ -1,0 +1,355 @@
+// EffectBinding: effect passes -> programs, pipeline states, descriptors and uniforms.
+#include "fx/vulkan/effect_binding.h"
+
+#include <algorithm>
+#include <map>
+
+namespace fx::vk {
+
+std::atomic<int64_t> EffectBinding::live_objects_{0};
+
+// One image, sampler or combined image-sampler descriptor of a pass and what feeds it.
+struct ImageSlot {
+  std::string name;
+  DescriptorKind kind = DescriptorKind::combined_image_sampler;
+  VkSampler sampler = VK_NULL_HANDLE;
+  uint32_t texture_param = kNoIndex;                // the texture parameter it samples
+  std::shared_ptr<const EffectTextureData> data;    // the effect's own texture
+};
+
+// A uniform block of a pass, packed from the parameter store under block id `id`.
+struct BlockSlot {
+  uint32_t id = 0;
+  std::string name;
+  std::vector<uint8_t> staging;
+  bool written = false;
+};
+
+struct EffectBinding::Pass {
+  const PassProgram* program = nullptr;
+  ProgramLayout layout;  // the linked layout with same-named blocks told apart
+  ShaderProgram shader;
+  std::unique_ptr<PassResources> resources;
+  PipelineState state;
+  std::vector<BlockSlot> blocks;
+  std::vector<ImageSlot> images;
+  std::vector<std::optional<VertexInput>> inputs;  // per vertex layout id
+};
+
+struct EffectBinding::Technique {
+  std::vector<std::unique_ptr<Pass>> passes;
+  std::string reason;
+};
+
+namespace {
+
+const EffectPass* find_pass(const EffectUnits& units, uint32_t technique, uint32_t pass) {
+  for (const EffectPass& p : units.passes())
+    if (p.technique_index == technique && p.pass_index == pass) return &p;
+  return nullptr;
+}
+
+// Block and image names must be unique for PassResources (it finds blocks by name), but an
+// HLSL vertex and pixel stage each have a "$Global" block of their own. Later duplicates
+// get "@binding" appended.
+void make_names_unique(ProgramLayout& layout) {
+  std::map<std::string, int> seen;
+  for (ProgramBinding& b : layout.bindings)
+    if (seen[b.name]++ > 0) b.name += "@" + std::to_string(b.binding);
+}
+
+// The parameter the reflected member path ("light.dir", "bones[3]") starts with.
+std::string_view root_name(std::string_view path) {
+  size_t end = path.find_first_of(".[");
+  return end == std::string_view::npos ? path : path.substr(0, end);
+}
+
+// The model sampler (and the texture it reads) behind a program image named `name`.
+void resolve_image(const EffectModel& model, std::string_view name, const fx::SamplerDesc** sampler,
+                   uint32_t* texture_param) {
+  *sampler = nullptr;
+  *texture_param = kNoIndex;
+  for (const SamplerInfo& s : model.samplers) {
+    if (s.name != name) continue;
+    *sampler = &s.desc;
+    *texture_param = s.texture;
+    return;
+  }
+  // GLSL combined samplers and D3D10 Texture2D objects are named after the texture.
+  uint32_t p = model.find_parameter(name);
+  if (p != kNoIndex && model.texture_of(p)) *texture_param = p;
+}
+
+bool stage_is_glsl(const PassProgram& program) {
+  if (!program.pass) return false;
+  for (const StageUnit& s : program.pass->stages)
+    if (s.kind == StageSourceKind::glsl) return true;
+  return false;
+}
+
+}  // namespace
+
+EffectBinding::EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures,
+                             FrameResources& frames)
+    : ctx_(&ctx), params_(&params), textures_(&textures), frames_(&frames), samplers_(ctx) {}
+
+EffectBinding::~EffectBinding() {
+  techniques_.clear();  // programs before the pipeline cache: nothing else depends on order
+  live_objects_ -= counted_objects_;
+}
+
+std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const EffectModel& model,
+                                                     EffectPrograms& programs, ParameterStore& params,
+                                                     EffectTextureCache& textures, FrameResources& frames,
+                                                     const EffectBindingDesc& desc, DiagnosticSink& sink) {
+  std::unique_ptr<EffectBinding> b(new EffectBinding(ctx, params, textures, frames));
+  b->model_ = &model;
+  b->pipelines_ = PipelineCache::create(ctx, sink);
+  if (!b->pipelines_) return nullptr;
+  b->recorder_.emplace(ctx, *b->pipelines_, frames,
+                       desc.dynamic.value_or(DynamicStateSet::from_features(ctx.features())));
+  uint32_t next_block = 0;
+  for (uint32_t t = 0; t < model.techniques.size(); ++t) {
+    const TechniqueInfo& info = model.techniques[t];
+    auto tech = std::make_unique<Technique>();
+    for (uint32_t p = 0; p < info.passes.size() && tech->reason.empty(); ++p) {
+      const PassInfo& pass_info = info.passes[p];
+      const EffectPass* unit = find_pass(programs.units(), t, p);
+      if (!unit) {
+        tech->reason = "pass '" + pass_info.name + "' has no shader units";
+        break;
+      }
+      const PassProgram& program = programs.program(*unit);
+      if (!program.ok()) {
+        tech->reason = "pass '" + pass_info.name + "': " +
+                       (program.unsupported.empty() ? std::string("its shaders did not compile")
+                                                    : program.unsupported.front());
+        break;
+      }
+      if (!pass_info.unsupported.empty()) {
+        tech->reason = "pass '" + pass_info.name + "': " + pass_info.unsupported.front().reason;
+        break;
+      }
+      if (pass_info.summary.alpha_test && pass_info.summary.alpha_compare != CompareOp::always) {
+        // Emulation needs a discard spliced into the pixel shader's translation unit.
+        tech->reason = "pass '" + pass_info.name + "': alpha test (AlphaTestEnable) is not emulated yet";
+        break;
+      }
+      DiagnosticSink pass_sink;
+      auto state = to_pipeline_state(pass_info.summary, desc.target, ctx.features(), pass_sink);
+      if (!state) {
+        tech->reason = "pass '" + pass_info.name + "': " +
+                       (pass_sink.diagnostics().empty() ? std::string("state") : pass_sink.diagnostics().front().message);
+        break;
+      }
+      auto pass = std::make_unique<Pass>();
+      pass->program = &program;
+      pass->state = *state;
+      pass->layout = program.layout;
+      make_names_unique(pass->layout);
+      std::vector<const CompiledShader*> stages;
+      for (const StageProgram& s : program.stages) stages.push_back(&s.shader);
+      auto shader = ShaderProgram::create(ctx, stages, pass->layout, desc.descriptors, pass_sink);
+      if (!shader) {
+        tech->reason = "pass '" + pass_info.name + "': " +
+                       (pass_sink.diagnostics().empty() ? std::string("program") : pass_sink.diagnostics().front().message);
+        break;
+      }
+      pass->shader = std::move(*shader);
+      pass->resources = std::make_unique<PassResources>(pass->shader);
+      // Uniform blocks: the store packs each under an id of its own.
+      const bool glsl = stage_is_glsl(program);
+      for (const ProgramUniformBlock& block : pass->shader.uniform_blocks()) {
+        BlockSlot slot{next_block++, block.name, std::vector<uint8_t>(block.size, 0), false};
+        std::vector<BlockMemberLayout> members;
+        if (block.reflection)
+          for (const BlockMember& m : block.reflection->members) {
+            BlockMemberLayout l{m.name, m.offset, m.size, m.array_stride,
+                                m.matrix_stride ? m.matrix_stride : 16u, MatrixOrder::column_major};
+            // An HLSL matrix keeps its declared meaning; a GLSL mat4 M * v stores HLSL's
+            // mul(v, M) transposed (column c of the GLSL matrix is row c of M).
+            Param root = params.find(root_name(m.name));
+            const Type* type = root.valid() ? params.type(root) : nullptr;
+            if (glsl) l.order = MatrixOrder::row_major;
+            else if (type) l.order = type->order;
+            members.push_back(std::move(l));
+          }
+        ParamStatus status = params.bind_layout(slot.id, members, block.size);
+        if (!status.message.empty())
+          sink.warning("vk-uniform-unbound", pass_info.range,
+                       "pass '" + pass_info.name + "', block '" + block.name + "': " + status.message);
+        pass->blocks.push_back(std::move(slot));
+      }
+      // Images and samplers: sampler states -> cached samplers, textures resolved (baked,
+      // decoded) now, uploaded at the first begin().
+      for (const ProgramImage& image : pass->shader.images()) {
+        ImageSlot slot;
+        slot.name = image.name;
+        slot.kind = image.kind;
+        const fx::SamplerDesc* sampler_desc = nullptr;
+        resolve_image(model, image.name, &sampler_desc, &slot.texture_param);
+        if (image.kind != DescriptorKind::sampled_image) {
+          SamplerDesc vk_desc = sampler_desc ? to_sampler_desc(*sampler_desc, pass_sink) : SamplerDesc{};
+          slot.sampler = b->samplers_.get(vk_desc, sink);
+          if (!slot.sampler) return nullptr;
+        }
+        if (image.kind != DescriptorKind::sampler) {
+          const TextureInfo* tex = slot.texture_param != kNoIndex ? model.texture_of(slot.texture_param) : nullptr;
+          if (!tex) {
+            sink.warning("vk-texture-unresolved", pass_info.range,
+                         "pass '" + pass_info.name + "': '" + image.name +
+                             "' names no texture parameter; a white texture stands in until set_texture()");
+            slot.data = textures.resolve(model, TextureInfo{}, desc.effect_dir, image.dim, sink);
+          } else {
+            slot.data = textures.resolve(model, *tex, desc.effect_dir, image.dim, sink);
+          }
+          if (!slot.data) {
+            tech->reason = "pass '" + pass_info.name + "': texture '" + image.name + "' could not be made";
+            break;
+          }
+        }
+        pass->images.push_back(std::move(slot));
+      }
+      tech->passes.push_back(std::move(pass));
+    }
+    if (!tech->reason.empty()) tech->passes.clear();
+    b->techniques_.push_back(std::move(tech));
+  }
+  b->update_object_count();
+  return b;
+}
+
+bool EffectBinding::technique_ok(uint32_t t) const {
+  return t < techniques_.size() && techniques_[t]->reason.empty() && !techniques_[t]->passes.empty();
+}
+
+const std::string& EffectBinding::technique_reason(uint32_t t) const {
+  static const std::string no_such = "no such technique", no_passes = "the technique has no passes";
+  if (t >= techniques_.size()) return no_such;
+  if (techniques_[t]->reason.empty() && techniques_[t]->passes.empty()) return no_passes;
+  return techniques_[t]->reason;
+}
+
+uint32_t EffectBinding::pass_count(uint32_t t) const {
+  return t < techniques_.size() ? uint32_t(techniques_[t]->passes.size()) : 0;
+}
+
+uint32_t EffectBinding::first_ok_technique() const {
+  for (uint32_t t = 0; t < techniques_.size(); ++t)
+    if (technique_ok(t)) return t;
+  return kNoIndex;
+}
+
+uint32_t EffectBinding::add_vertex_layout(VertexLayout layout) {
+  layouts_.push_back(std::move(layout));
+  return uint32_t(layouts_.size() - 1);
+}
+
+bool EffectBinding::set_texture(std::string_view texture, VkImageView view, VkImageLayout layout,
+                                ImageKind kind, DiagnosticSink& sink) {
+  uint32_t p = model_->find_parameter(texture);
+  if (p == kNoIndex || !model_->texture_of(p)) {
+    sink.error("vk-resource-unknown", {}, "the effect has no texture parameter '" + std::string(texture) + "'");
+    return false;
+  }
+  auto it = std::find_if(app_textures_.begin(), app_textures_.end(), [&](const auto& e) { return e.first == p; });
+  if (it != app_textures_.end()) it->second = Texture::wrap(view, layout, kind);
+  else app_textures_.emplace_back(p, Texture::wrap(view, layout, kind));
+  textures_pending_ = true;
+  return true;
+}
+
+bool EffectBinding::bind_textures(DiagnosticSink& sink) {
+  for (auto& tech : techniques_)
+    for (auto& pass : tech->passes)
+      for (ImageSlot& slot : pass->images) {
+        if (slot.kind == DescriptorKind::sampler) {
+          if (!pass->resources->bind_sampler(slot.name, slot.sampler, sink)) return false;
+          continue;
+        }
+        const Texture* texture = nullptr;
+        for (const auto& [param, app] : app_textures_)
+          if (param == slot.texture_param) texture = &app;
+        if (!texture) texture = textures_->gpu(*slot.data, sink);
+        if (!texture || !pass->resources->bind(slot.name, *texture, slot.sampler, sink)) return false;
+      }
+  textures_pending_ = false;
+  return true;
+}
+
+const VertexInput* EffectBinding::vertex_input(Pass& pass, uint32_t layout, DiagnosticSink& sink) {
+  if (layout >= layouts_.size()) {
+    sink.error("vk-vertex-layout-unknown", {}, "vertex layout id " + std::to_string(layout) + " was not registered");
+    return nullptr;
+  }
+  if (pass.inputs.size() <= layout) pass.inputs.resize(layouts_.size());
+  if (!pass.inputs[layout]) pass.inputs[layout] = match_vertex_layout(layouts_[layout], pass.shader.vertex_inputs(), sink);
+  return pass.inputs[layout] ? &*pass.inputs[layout] : nullptr;
+}
+
+bool EffectBinding::warm(uint32_t technique, const RenderingFormats& formats, uint32_t vertex_layout,
+                         DiagnosticSink& sink) {
+  if (!technique_ok(technique)) {
+    sink.error("vk-technique-invalid", {}, technique_reason(technique));
+    return false;
+  }
+  bool ok = true;
+  for (auto& pass : techniques_[technique]->passes) {
+    const VertexInput* input = vertex_input(*pass, vertex_layout, sink);
+    ok = input && pipelines_->get(pass->shader, pass->state, *input, formats, recorder_->dynamic(), sink) && ok;
+  }
+  update_object_count();
+  return ok;
+}
+
+bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const RenderingFormats& formats,
+                          const VkViewport& viewport, const VkRect2D& scissor, DiagnosticSink& sink) {
+  active_ = nullptr;
+  if (!technique_ok(technique)) {
+    sink.error("vk-technique-invalid", {}, technique_reason(technique));
+    return false;
+  }
+  if (textures_pending_ && !bind_textures(sink)) return false;
+  active_ = techniques_[technique].get();
+  recorder_->begin(cmd, formats, viewport, scissor);
+  return true;
+}
+
+bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, DiagnosticSink& sink) {
+  if (!active_ || pass_index >= active_->passes.size()) {
+    sink.error("vk-pass-unknown", {}, "apply() of pass " + std::to_string(pass_index) + " outside begin()/end() or past the last pass");
+    return false;
+  }
+  Pass& pass = *active_->passes[pass_index];
+  for (BlockSlot& block : pass.blocks) {
+    if (block.written && !params_->dirty(block.id)) continue;
+    params_->write_block(block.id, block.staging);
+    if (!pass.resources->set_block_bytes(block.name, 0, block.staging.data(), uint32_t(block.staging.size()), sink))
+      return false;
+    block.written = true;
+  }
+  const VertexInput* input = vertex_input(pass, vertex_layout, sink);
+  if (!input) return false;
+  PassDesc desc{&pass.shader, pass.state, input, pass.resources.get()};
+  return recorder_->apply(desc, sink);
+}
+
+void EffectBinding::end() {
+  if (active_) recorder_->end();
+  active_ = nullptr;
+  update_object_count();
+}
+
+size_t EffectBinding::pipeline_count() const { return pipelines_->size(); }
+const PipelineCacheStats& EffectBinding::pipeline_stats() const { return pipelines_->stats(); }
+
+void EffectBinding::update_object_count() {
+  int64_t owned = 1 + int64_t(pipelines_->size()) + int64_t(samplers_.size());  // + the VkPipelineCache
+  for (const auto& tech : techniques_)
+    for (const auto& pass : tech->passes)
+      owned += int64_t(pass->shader.stage_infos().size()) + 2;  // modules, set and pipeline layout
+  live_objects_ += owned - counted_objects_;
+  counted_objects_ = owned;
+}
+
+}  // namespace fx::vk

@@ -1,0 +1,29 @@
+// EffectFile: front end -> model -> units -> lazily compiled programs -> parameter store.
+#include "fx/vulkan/effect_file.h"
+
+namespace fx::vk {
+
+std::unique_ptr<EffectFile> EffectFile::load(const std::string& path, const FrontEndOptions& options,
+                                             DiagnosticSink& sink) {
+  auto e = std::make_unique<EffectFile>();
+  e->path = path;
+  e->parsed = parse_effect_file(path, e->sources, sink, options);
+  if (sink.has_errors()) return nullptr;
+  e->model = std::make_unique<EffectModel>(build_effect_model(e->parsed, e->sources, sink));
+  if (sink.has_errors()) return nullptr;
+  std::vector<ShaderDefine> defines;
+  for (const auto& [name, value] : options.preprocessor.defines) defines.push_back({name, value});
+  e->units = std::make_unique<EffectUnits>(e->parsed.ast, e->sources, sink, EffectUnitOptions{defines});
+  e->compiler = std::make_unique<ShaderCompiler>();
+  e->programs = std::make_unique<EffectPrograms>(*e->units, *e->compiler, e->sources);
+  e->params = std::make_unique<ParameterStore>(*e->model, nullptr, &sink);
+  return e;
+}
+
+uint32_t EffectFile::find_technique(std::string_view name) const {
+  for (uint32_t t = 0; t < model->techniques.size(); ++t)
+    if (model->techniques[t].name == name) return t;
+  return kNoIndex;
+}
+
+}  // namespace fx::vk

@@ -1,0 +1,180 @@
+// EffectPreview: mesh buffers, an offscreen target and a one-frame render loop.
+#include "fx/vulkan/effect_preview.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "fx/vulkan/one_shot.h"
+
+namespace fx::vk {
+namespace {
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+struct MeshAttribute {
+  const char* semantic;
+  VkFormat format;
+  uint32_t offset;
+};
+
+// fx::Vertex by semantic (mesh_vertex_layout(), in Vulkan formats).
+const MeshAttribute kMeshAttributes[] = {
+    {"POSITION", VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
+    {"NORMAL", VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
+    {"TANGENT", VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
+    {"BINORMAL", VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, binormal)},
+    {"TEXCOORD", VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
+};
+
+// The mesh attribute a GLSL input name suggests ("inTexCoord" -> TEXCOORD), or nullptr.
+const MeshAttribute* guess_attribute(std::string_view name) {
+  const std::string n = lower(name);
+  auto has = [&](const char* s) { return n.find(s) != std::string::npos; };
+  if (has("binormal") || has("bitangent")) return &kMeshAttributes[3];
+  if (has("tangent")) return &kMeshAttributes[2];
+  if (has("normal")) return &kMeshAttributes[1];
+  if (has("pos")) return &kMeshAttributes[0];
+  if (has("texcoord") || has("uv")) return &kMeshAttributes[4];
+  return nullptr;
+}
+
+uint32_t depth_bits(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_D16_UNORM:
+    case VK_FORMAT_D16_UNORM_S8_UINT: return 16;
+    case VK_FORMAT_D32_SFLOAT:
+    case VK_FORMAT_D32_SFLOAT_S8_UINT: return 32;
+    default: return 24;
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<EffectPreview> EffectPreview::create(const Context& ctx, const Mesh& mesh,
+                                                     const EffectPreviewDesc& desc, DiagnosticSink& sink) {
+  std::unique_ptr<EffectPreview> p(new EffectPreview(ctx));
+  p->desc_ = desc;
+  p->bounds_ = bounds(mesh);
+  p->target_ = RenderTarget::create(ctx, {desc.width, desc.height, VK_FORMAT_R8G8B8A8_UNORM, desc.depth, 0, "fxkit preview"}, sink);
+  p->frames_ = FrameResources::create(ctx, desc.frames, sink);
+  if (!p->target_ || !p->frames_) return nullptr;
+  const VkDeviceSize vbytes = mesh.vertices.size() * sizeof(Vertex), ibytes = mesh.indices.size() * sizeof(uint32_t);
+  auto vb = Buffer::create(ctx, {vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "preview vertices"}, sink);
+  auto ib = Buffer::create(ctx, {ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUsage::upload, "preview indices"}, sink);
+  auto cb = Buffer::create(ctx, {16, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "preview constant attributes"}, sink);
+  if (!vb || !ib || !cb) return nullptr;
+  const float constant[4] = {0, 0, 0, 1};
+  if (!vb->write(mesh.vertices.data(), vbytes) || !ib->write(mesh.indices.data(), ibytes) || !cb->write(constant, 16)) {
+    sink.error("vk-call-failed", {}, "could not write the preview mesh buffers");
+    return nullptr;
+  }
+  p->vertices_ = std::move(*vb);
+  p->indices_ = std::move(*ib);
+  p->constants_ = std::move(*cb);
+  p->index_count_ = uint32_t(mesh.indices.size());
+  return p;
+}
+
+EffectPreview::~EffectPreview() {
+  if (ctx_) ctx_->wait_idle();
+}
+
+RenderingFormats EffectPreview::formats() const {
+  RenderingFormats f;
+  const AttachmentFormats a = target_->formats();
+  f.color[0] = a.color;
+  f.color_count = 1;
+  f.depth = a.depth;
+  f.stencil = a.stencil;
+  return f;
+}
+
+EffectBindingDesc EffectPreview::binding_desc() const {
+  EffectBindingDesc d;
+  d.target.color_attachment_count = 1;
+  d.target.depth_bits = depth_bits(target_->formats().depth);
+  // render() flips Y with a negative viewport height, but the meshes are right-handed
+  // (counter-clockwise from outside): the mirror of D3D's clockwise front faces, which is
+  // what the mapping does for a projection flip.
+  d.target.negative_viewport_height = false;
+  return d;
+}
+
+SceneView EffectPreview::scene() const {
+  return frame_bounds(bounds_, float(desc_.width) / float(desc_.height));
+}
+
+VertexLayout EffectPreview::vertex_layout(std::span<const InterfaceVariable> inputs) const {
+  VertexLayout layout;
+  layout.bindings = {{0, uint32_t(sizeof(Vertex)), VK_VERTEX_INPUT_RATE_VERTEX},
+                     {1, 0, VK_VERTEX_INPUT_RATE_VERTEX}};
+  for (const MeshAttribute& a : kMeshAttributes) layout.attributes.push_back({a.semantic, a.format, a.offset, 0});
+  for (const InterfaceVariable& in : inputs) {
+    if (in.semantic.empty()) {
+      bool listed = false;
+      for (const VertexAttribute& a : layout.attributes) listed = listed || a.semantic == in.name;
+      if (listed) continue;
+      const MeshAttribute* a = guess_attribute(in.name);
+      if (a) layout.attributes.push_back({in.name, a->format, a->offset, 0});
+      else layout.attributes.push_back({in.name, VK_FORMAT_R32G32B32A32_SFLOAT, 0, 1});
+      continue;
+    }
+    const std::string sem = canonical_semantic(in.semantic);
+    bool known = false;
+    for (const VertexAttribute& a : layout.attributes) known = known || canonical_semantic(a.semantic) == sem;
+    if (!known) layout.attributes.push_back({sem, VK_FORMAT_R32G32B32A32_SFLOAT, 0, 1});
+  }
+  return layout;
+}
+
+std::optional<fx::Image> EffectPreview::render(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
+                                               DiagnosticSink& sink) {
+  frames_->begin_frame();
+  bool recorded = true;
+  const VkViewport viewport{0.0f, float(desc_.height), float(desc_.width), -float(desc_.height), 0.0f, 1.0f};
+  const bool submitted = submit_and_wait(*ctx_, [&](VkCommandBuffer cmd) {
+    ClearValues clear;
+    clear.color = desc_.clear;
+    target_->begin(cmd, clear);
+    if (binding.begin(cmd, technique, formats(), viewport, target_->scissor(), sink)) {
+      const VkBuffer buffers[2] = {vertices_.handle(), constants_.handle()};
+      const VkDeviceSize offsets[2] = {0, 0};
+      vkCmdBindVertexBuffers(cmd, 0, 2, buffers, offsets);
+      vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+      for (uint32_t p = 0; p < binding.pass_count(technique); ++p) {
+        if (!binding.apply(p, vertex_layout, sink)) {
+          recorded = false;
+          break;
+        }
+        vkCmdDrawIndexed(cmd, index_count_, 1, 0, 0, 0);
+      }
+      binding.end();
+    } else {
+      recorded = false;
+    }
+    target_->end(cmd);
+    target_->record_readback(cmd);
+  }, sink);
+  if (!submitted || !recorded) return std::nullopt;
+  ++frames_rendered_;
+  return target_->readback_pixels(sink);
+}
+
+std::vector<InterfaceVariable> technique_vertex_inputs(const EffectModel& model, EffectPrograms& programs,
+                                                       uint32_t technique) {
+  std::vector<InterfaceVariable> out;
+  if (technique >= model.techniques.size()) return out;
+  for (const EffectPass& pass : programs.units().passes()) {
+    if (pass.technique_index != technique) continue;
+    const PassProgram& program = programs.program(pass);
+    if (const StageProgram* vs = program.find(ShaderStage::vertex))
+      for (const InterfaceVariable& v : vs->shader.reflection.inputs) out.push_back(v);
+  }
+  return out;
+}
+
+}  // namespace fx::vk

@@ -1,0 +1,140 @@
+// EffectTextureCache: bake/decode once, upload once, stand-ins for missing files.
+#include "fx/vulkan/effect_textures.h"
+
+#include <cctype>
+#include <system_error>
+#include <variant>
+
+#include "fx/shading/generator.h"
+
+namespace fx::vk {
+namespace {
+
+bool iequals(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (std::toupper(static_cast<unsigned char>(a[i])) != std::toupper(static_cast<unsigned char>(b[i])))
+      return false;
+  return true;
+}
+
+// Generator parameters in a canonical order (the map is sorted by lower-cased name).
+std::string generator_key(const TextureInfo& t) {
+  std::string key = "gen:" + t.generator;
+  for (const auto& [name, value] : t.generator_params.entries()) {
+    key += ';' + name + '=';
+    if (const double* d = std::get_if<double>(&value)) key += std::to_string(*d);
+    else key += std::get<std::string>(value);
+  }
+  return key;
+}
+
+// A 1x1 texel that leaves the shading it feeds neutral: a normal map's "straight out of
+// the surface", or white for colours and masks.
+std::string stand_in_key(bool normal_map, ImageDim dim) {
+  return std::string(normal_map ? "stand-in:normal:" : "stand-in:white:") + std::to_string(int(dim));
+}
+
+EffectTextureData stand_in(bool normal_map, ImageDim dim) {
+  EffectTextureData d;
+  d.key = stand_in_key(normal_map, dim);
+  d.dim = dim;
+  d.stand_in = true;
+  const uint8_t texel[4] = {uint8_t(normal_map ? 128 : 255), uint8_t(normal_map ? 128 : 255), 255, 255};
+  if (dim == ImageDim::dim_3d) {
+    // Texture::from_table makes a 3D image only for depth > 1.
+    shading::Table table = shading::Table::make(2, 2, 2, 4, shading::TableFormat::unorm8);
+    for (size_t i = 0; i < table.unorm8.size(); ++i) table.unorm8[i] = texel[i % 4];
+    d.table = std::move(table);
+    return d;
+  }
+  fx::Image image = fx::Image::blank(1, 1, 4);
+  std::copy(texel, texel + 4, image.pixels.begin());
+  d.image = std::move(image);
+  return d;
+}
+
+}  // namespace
+
+std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const EffectModel& model,
+                                                                     const TextureInfo& texture,
+                                                                     const std::filesystem::path& effect_dir,
+                                                                     ImageDim dim, DiagnosticSink& sink) {
+  const Parameter* param = texture.parameter < model.parameters.size() ? &model.parameters[texture.parameter] : nullptr;
+  const bool normal_map = param && (iequals(param->semantic, "NORMALMAP") || iequals(param->semantic, "NORMAL"));
+  std::string key;
+  std::filesystem::path file;
+  if (!texture.generator.empty()) {
+    key = generator_key(texture);
+  } else if (!texture.resource_name.empty()) {
+    file = std::filesystem::path(texture.resource_name);
+    if (file.is_relative()) file = effect_dir / file;
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(file, ec);
+    if (!ec) {
+      const auto mtime = std::filesystem::last_write_time(file, ec).time_since_epoch().count();
+      key = "file:" + file.lexically_normal().string() + ':' + std::to_string(size) + ':' + std::to_string(mtime);
+    } else {
+      sink.warning("vk-texture-file-missing", param ? param->range : SourceRange{},
+                   "texture file '" + file.string() + "' of '" + (param ? param->name : std::string()) +
+                       "' cannot be read; a neutral " + (normal_map ? "flat normal" : "white") +
+                       " texture stands in");
+      key = stand_in_key(normal_map, dim);
+    }
+  } else {
+    key = stand_in_key(normal_map, dim);
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (auto it = cpu_.find(key); it != cpu_.end()) return it->second;
+  }
+  // Baking can take a while (BRDF factorisation): done outside the lock, so two threads may
+  // race to bake the same table; the first to insert wins and both get equal data.
+  EffectTextureData data;
+  if (key.rfind("stand-in:", 0) == 0) {
+    data = stand_in(normal_map, dim);
+  } else if (!texture.generator.empty()) {
+    auto table = shading::bake(texture.generator, texture.generator_params, sink, texture.generator_range);
+    if (!table) return nullptr;
+    data.table = std::move(*table);
+  } else {
+    DiagnosticSink decode;
+    auto image = fx::read_png(file, decode);
+    if (!image) {
+      sink.warning("vk-texture-file-missing", param ? param->range : SourceRange{},
+                   "texture file '" + file.string() + "' cannot be decoded; a neutral texture stands in");
+      data = stand_in(normal_map, dim);
+    } else {
+      data.image = std::move(*image);
+    }
+  }
+  data.key = key;
+  auto shared = std::make_shared<const EffectTextureData>(std::move(data));
+  std::lock_guard<std::mutex> lock(mutex_);
+  return cpu_.emplace(key, std::move(shared)).first->second;
+}
+
+const Texture* EffectTextureCache::gpu(const EffectTextureData& data, DiagnosticSink& sink) {
+  if (auto it = gpu_.find(data.key); it != gpu_.end()) return &it->second;
+  std::optional<Texture> texture;
+  if (data.stand_in && data.dim == ImageDim::cube) {
+    const fx::Image* face = &*data.image;
+    texture = Texture::cube_from_images(*ctx_, {face, face, face, face, face, face}, ColorSpace::linear, sink);
+  } else if (data.table) texture = Texture::from_table(*ctx_, *data.table, sink);
+  else if (data.image) texture = Texture::from_image(*ctx_, *data.image, ColorSpace::linear, sink);
+  if (!texture) return nullptr;
+  return &gpu_.emplace(data.key, std::move(*texture)).first->second;
+}
+
+size_t EffectTextureCache::cpu_count() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return cpu_.size();
+}
+
+void EffectTextureCache::clear() {
+  gpu_.clear();
+  std::lock_guard<std::mutex> lock(mutex_);
+  cpu_.clear();
+}
+
+}  // namespace fx::vk

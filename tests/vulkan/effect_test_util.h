@@ -1,0 +1,81 @@
+// Shared by the effect rendering tests: load an effect file, bind it to a preview on a
+// mesh, render one frame with the standard semantics filled in.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "fx/vulkan/effect_file.h"
+#include "fx/vulkan/effect_preview.h"
+#include "vulkan_fixture.h"
+
+namespace fx::vk::testing {
+
+inline std::string effects_dir() { return std::string(FXKIT_SOURCE_DIR) + "/effects"; }
+
+// An effect, a preview and a binding of one to the other.
+struct RenderedEffect {
+  std::unique_ptr<EffectFile> effect;
+  std::unique_ptr<EffectPreview> preview;
+  std::unique_ptr<EffectBinding> binding;
+  uint32_t technique = kNoIndex;
+  uint32_t layout = 0;
+
+  // Renders one frame; fails the test on diagnostics that are errors.
+  std::optional<fx::Image> render() {
+    DiagnosticSink sink;
+    set_standard_semantics(*effect->params, *effect->model, preview->scene());
+    auto image = preview->render(*binding, technique, layout, sink);
+    EXPECT_TRUE(image.has_value()) << describe(sink);
+    return image;
+  }
+};
+
+// Loads `path` and binds it for `mesh` at `size`; `technique` "" = the first that can run.
+inline std::unique_ptr<RenderedEffect> bind_effect(Context& ctx, const std::string& path,
+                                                   const std::string& technique = "",
+                                                   const std::string& mesh = "sphere", uint32_t size = 96,
+                                                   std::optional<DynamicStateSet> dynamic = std::nullopt) {
+  auto r = std::make_unique<RenderedEffect>();
+  DiagnosticSink sink;
+  FrontEndOptions options;
+  options.preprocessor.include_dirs = {effects_dir()};
+  r->effect = EffectFile::load(path, options, sink);
+  EXPECT_TRUE(r->effect) << describe(sink);
+  if (!r->effect) return nullptr;
+  auto m = make_mesh(mesh, sink);
+  EXPECT_TRUE(m) << describe(sink);
+  EffectPreviewDesc desc;
+  desc.width = desc.height = size;
+  r->preview = EffectPreview::create(ctx, *m, desc, sink);
+  EXPECT_TRUE(r->preview) << describe(sink);
+  if (!r->preview) return nullptr;
+  EffectBindingDesc bd = r->preview->binding_desc();
+  bd.effect_dir = std::filesystem::path(path).parent_path();
+  bd.dynamic = dynamic;
+  r->binding = EffectBinding::create(ctx, *r->effect->model, *r->effect->programs, *r->effect->params,
+                                     r->preview->textures(), r->preview->frames(), bd, sink);
+  EXPECT_TRUE(r->binding) << describe(sink);
+  if (!r->binding) return nullptr;
+  r->technique = technique.empty() ? r->binding->first_ok_technique() : r->effect->find_technique(technique);
+  EXPECT_NE(r->technique, kNoIndex) << technique;
+  if (r->technique == kNoIndex) return nullptr;
+  EXPECT_TRUE(r->binding->technique_ok(r->technique)) << r->binding->technique_reason(r->technique);
+  auto inputs = technique_vertex_inputs(*r->effect->model, *r->effect->programs, r->technique);
+  r->layout = r->binding->add_vertex_layout(r->preview->vertex_layout(inputs));
+  return r;
+}
+
+// Writes `text` to a fresh file under the test temp dir and returns its path.
+inline std::string write_effect(const std::string& name, const std::string& text) {
+  auto dir = std::filesystem::temp_directory_path() / ("fxkit_effect_tests_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  auto path = dir / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+}  // namespace fx::vk::testing
