@@ -11,6 +11,7 @@ struct BenchArgs {
   int repeats = 5;
   bool json = false;
   std::string effects_dir = "effects";  // compile: the effects to load
+  std::string fxh;  // accuracy: write technique cost/error annotations here
 };
 
 int bench_frontend(const BenchArgs& args);
@@ -18,5 +19,7 @@ int bench_frontend(const BenchArgs& args);
 int bench_compile(const BenchArgs& args);
 // `fxkit bench reload`: edit-to-swap latency of hot reload by phase, framework share.
 int bench_reload(const BenchArgs& args);
+// `fxkit bench accuracy`: error vs double reference and GPU ns/pixel per approximation.
+int bench_accuracy(const BenchArgs& args);
 
 }  // namespace fxkit

@@ -8,9 +8,9 @@ namespace fxkit {
 void register_bench(CLI::App& app, Runner& run) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand("bench", "Benchmarks: fxkit against a baseline, as a ratio");
-  cmd->add_option("MODE", args->mode, "What to measure: frontend, compile, reload")
+  cmd->add_option("MODE", args->mode, "What to measure: frontend, compile, reload, accuracy")
       ->required()
-      ->check(CLI::IsMember({"frontend", "compile", "reload"}));
+      ->check(CLI::IsMember({"frontend", "compile", "reload", "accuracy"}));
   cmd->add_option("--effects", args->effects_dir, "compile: folder of .fx files to load")
       ->capture_default_str();
   cmd->add_option("--size-mb", args->size_mb, "frontend: size of the generated effect in MB")
@@ -18,11 +18,16 @@ void register_bench(CLI::App& app, Runner& run) {
   cmd->add_option("--repeats", args->repeats, "Repetitions (the median is reported)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
+  cmd->add_option("--fxh", args->fxh, "accuracy: write technique cost/error annotations to FILE");
   cmd->add_flag("--json", args->json, "Print the results as JSON");
   cmd->callback([args, &run] {
 #ifdef FXKIT_HAS_RUNTIME
     if (args->mode == "reload") {
       run = [args] { return bench_reload(*args); };
+      return;
+    }
+    if (args->mode == "accuracy") {
+      run = [args] { return bench_accuracy(*args); };
       return;
     }
     if (args->mode == "compile") {
