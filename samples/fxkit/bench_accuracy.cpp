@@ -65,7 +65,7 @@ int bench_accuracy(const BenchArgs& args) {
   std::vector<fx::shading::ApproximationError> errors = fx::shading::measure_approximations(options);
   fx::DiagnosticSink sink;
   std::optional<GpuRun> gpu = time_kernels(accuracy_kernels(kTargetSize), kTargetSize, args.repeats, sink);
-  if (!gpu || sink.error_count() > 0) {
+  if (!gpu || sink.error_count() > 0 || gpu->validation_messages > 0) {
     std::fprintf(stderr, "%s", fx::render_text(sink.diagnostics(), fx::SourceManager{}).c_str());
     return 1;
   }

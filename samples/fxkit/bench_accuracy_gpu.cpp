@@ -218,6 +218,9 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
     bool submitted = commands->run(
         [&](VkCommandBuffer cmd) {
           vkCmdResetQueryPool(cmd, queries, 0, 2);
+          // Outside the rendering scope: a tiling or binning device (lavapipe bins the whole
+          // scope and rasterizes at its end) only finishes the draws when the scope ends.
+          vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, 0);
           target->begin(cmd);
           VkViewport v = target->viewport();
           VkRect2D s = target->scissor();
@@ -225,10 +228,9 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
           vkCmdSetScissor(cmd, 0, 1, &s);
           vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, o.pipeline);
           vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &o.set, 0, nullptr);
-          vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, 0);
           for (uint32_t d = 0; d < kDraws; ++d) vkCmdDraw(cmd, o.vertices, 1, 0, 0);
-          vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 1);
           target->end(cmd);
+          vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 1);
         },
         sink);
     if (!submitted) return std::nullopt;

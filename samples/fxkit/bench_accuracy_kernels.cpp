@@ -108,15 +108,18 @@ VSOut VS(uint id : SV_VertexID) {
 
 const char* kGridPs = R"(
 struct PSIn { float4 pos : SV_Position; float2 uv : TEXCOORD0; float3 n : TEXCOORD1; float3 t : TEXCOORD2; float4 c : COLOR0; };
+// Every variant reads every interpolant (a tiny weight keeps them alive): unconsumed
+// vertex outputs are a validation warning.
 float4 PS(PSIn i) : SV_Target {
+  float4 keep = float4(i.n + i.t, i.c.a + i.uv.x) * 1e-6;
 #if PER_PIXEL
   float3 N = normalize(i.n), T = normalize(i.t - dot(i.t, N) * N);
   float3 L = normalize(float3(1, 1, 1)), V = normalize(float3(0.2, -0.4, 1));
   float sl = min(length(cross(L, T)), 1), sv = min(length(cross(V, T)), 1);
   float r = max(sl * sv - dot(L, T) * dot(V, T), 0);
-  return float4(r > 0 ? pow(r, 32) : 0, sl, 0, 1);
+  return float4(r > 0 ? pow(r, 32) : 0, sl, 0, 1) + keep;
 #else
-  return i.c + float4(i.uv, 0, 0);
+  return i.c + float4(i.uv, 0, 0) + keep;
 #endif
 }
 )";
