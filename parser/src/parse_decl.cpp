@@ -213,6 +213,7 @@ bool Parser::parse_function(ast::Function& f) {
   advance();  // (
   if (at_ident("void") && peek().is(TokenKind::r_paren)) advance();
   if (!accept(TokenKind::r_paren)) {
+    f.params.reserve(4);
     for (;;) {
       ast::Variable p;
       if (!parse_parameter(p)) return false;
@@ -269,6 +270,7 @@ bool Parser::parse_member_list(std::vector<ast::Variable>& members, std::string_
   }
   Token open = tok();
   advance();
+  members.reserve(4);
   while (!at(TokenKind::r_brace)) {
     if (at_eof()) {
       unterminated(open, what);

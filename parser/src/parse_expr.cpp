@@ -364,6 +364,7 @@ ast::ExprPtr Parser::parse_init_list() {
   uint32_t first = pos_;
   Token open = advance();
   auto e = make(ast::ExprKind::init_list, first);
+  e->args.reserve(4);
   while (!accept(TokenKind::r_brace)) {
     ast::ExprPtr element = parse_assignment();
     if (failed_) return nullptr;
@@ -382,6 +383,7 @@ ast::ExprPtr Parser::parse_init_list() {
 bool Parser::parse_call_args(std::vector<ast::ExprPtr>& args) {
   Token open = advance();  // (
   if (accept(TokenKind::r_paren)) return true;
+  args.reserve(4);  // `float4(a, b, c, d)`: one allocation instead of three
   for (;;) {
     ast::ExprPtr arg = parse_assignment();
     if (failed_) return false;

@@ -30,8 +30,16 @@ class Parser {
   bool at(TokenKind k) const { return tokens_[pos_].kind == k; }
   bool at_ident(std::string_view name) const { return tokens_[pos_].is_identifier(name); }
   bool at_eof() const { return at(TokenKind::eof); }
-  // Consumes the current token (never the final eof) and tracks brace depth.
-  const Token& advance();
+  // Consumes the current token (never the final eof) and tracks brace depth. Inline: it
+  // runs once per token from every part of the parser.
+  const Token& advance() {
+    const Token& t = tokens_[pos_];
+    if (t.kind == TokenKind::eof) return t;
+    if (t.kind == TokenKind::l_brace) ++depth_;
+    else if (t.kind == TokenKind::r_brace && depth_ > 0) --depth_;
+    ++pos_;
+    return t;
+  }
   bool accept(TokenKind k);
   // Consumes `k` or reports `expected-token`: "expected 'k' <context>".
   bool expect(TokenKind k, std::string_view context);

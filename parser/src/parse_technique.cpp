@@ -8,6 +8,8 @@ namespace fx::detail {
 bool Parser::parse_annotations(std::vector<ast::Annotation>& out) {
   Token open = tok();
   advance();  // <
+  // Lists of a few entries are the rule; one allocation instead of growing 1, 2, 4.
+  out.reserve(out.size() + 4);
   for (;;) {
     switch (tok().kind) {
       case TokenKind::greater:

@@ -69,15 +69,6 @@ Parser::Parser(std::vector<Token> tokens, const SourceManager& sm, DiagnosticSin
   if (options_.max_nesting == 0) options_.max_nesting = 1;
 }
 
-const Token& Parser::advance() {
-  const Token& t = tokens_[pos_];
-  if (t.kind == TokenKind::eof) return t;
-  if (t.kind == TokenKind::l_brace) ++depth_;
-  else if (t.kind == TokenKind::r_brace && depth_ > 0) --depth_;
-  ++pos_;
-  return t;
-}
-
 bool Parser::accept(TokenKind k) {
   if (!at(k)) return false;
   advance();

@@ -116,6 +116,12 @@ class MacroEngine {
   void reset(FileTokenSource* files);
   // The next fully expanded token from the files.
   Token next();
+  // True when nothing is pending at file level: the next token would come straight from
+  // the files, so a driver may read it itself and call expand_file_token only for a
+  // macro name (what next() does, without two calls per token).
+  bool idle() const;
+  // Continues as next() would after reading `name` (a macro name) from the files.
+  Token expand_file_token(const Token& name);
   // Appends the expansion of `in` to `out` (nothing beyond `in` is read).
   void expand_list(std::span<const Token> in, std::vector<Token>& out);
   // True while a function-like macro's arguments are being collected from the files.
@@ -148,6 +154,29 @@ class MacroEngine {
   int collecting_ = 0;
   std::string scratch_;
 };
+
+struct MacroEngine::Context {
+  Macro* macro = nullptr;  // nullptr for a standalone list
+  std::vector<Token> tokens;
+  size_t pos = 0;
+};
+
+struct MacroEngine::Level {
+  std::vector<Context> contexts;  // [0, active) in use; the rest keep their capacity
+  size_t active = 0;
+  std::vector<Token> pushback;
+  bool from_files = false;
+  // The invocation being substituted at this level.
+  std::vector<Token> args;
+  std::vector<uint32_t> arg_begin;  // argument i is args[arg_begin[i], arg_begin[i + 1])
+  std::vector<Token> expanded;      // fully expanded arguments, computed on first use
+  std::vector<uint32_t> expanded_begin, expanded_end;
+  std::vector<Token> build;
+};
+
+inline bool MacroEngine::idle() const {
+  return levels_[0]->pushback.empty() && levels_[0]->active == 0;
+}
 
 // Evaluates the macro-expanded tokens of an #if/#elif line. `defined` must already be
 // resolved. Reports `pp-expression` errors and treats a failed expression as false.

@@ -14,25 +14,6 @@
 
 namespace fx::pp {
 
-struct MacroEngine::Context {
-  Macro* macro = nullptr;  // nullptr for a standalone list
-  std::vector<Token> tokens;
-  size_t pos = 0;
-};
-
-struct MacroEngine::Level {
-  std::vector<Context> contexts;  // [0, active) in use; the rest keep their capacity
-  size_t active = 0;
-  std::vector<Token> pushback;
-  bool from_files = false;
-  // The invocation being substituted at this level.
-  std::vector<Token> args;
-  std::vector<uint32_t> arg_begin;  // argument i is args[arg_begin[i], arg_begin[i + 1])
-  std::vector<Token> expanded;      // fully expanded arguments, computed on first use
-  std::vector<uint32_t> expanded_begin, expanded_end;
-  std::vector<Token> build;
-};
-
 namespace {
 constexpr uint32_t kNotExpanded = UINT32_MAX;
 constexpr uint32_t kExpandsToItself = UINT32_MAX - 1;
@@ -163,6 +144,12 @@ Token MacroEngine::next() {
       return t;
     l.pushback.push_back(t);
   }
+  return next_expanded(l);
+}
+
+Token MacroEngine::expand_file_token(const Token& name) {
+  Level& l = *levels_[0];
+  l.pushback.push_back(name);
   return next_expanded(l);
 }
 

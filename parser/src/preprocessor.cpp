@@ -523,7 +523,15 @@ bool Preprocessor::Impl::run(const std::string& name, std::optional<std::string>
   BufferId main = frames_.back()->buffer;
   uint64_t emitted = 0;
   for (;;) {
-    Token t = engine_.next();
+    Token t;
+    if (engine_.idle() && !budget_.exhausted()) {
+      // MacroEngine::next's hot path, with the file read inlined here.
+      t = next_file_token();
+      if (t.kind == TokenKind::identifier && !(t.flags & kNoExpand) && macros_.find(t.text))
+        t = engine_.expand_file_token(t);
+    } else {
+      t = engine_.next();
+    }
     if (t.kind == TokenKind::eof) break;
     if (++emitted > options_.limits.max_tokens) {
       budget_.fail(t.range(), "more than " + std::to_string(options_.limits.max_tokens) +
