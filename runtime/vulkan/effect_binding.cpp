@@ -334,6 +334,22 @@ bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, Diagnosti
   return recorder_->apply(desc, sink);
 }
 
+bool EffectBinding::pass_objects(uint32_t technique, uint32_t pass_index, const RenderingFormats& formats,
+                                 uint32_t vertex_layout, VkPipeline& pipeline, const ShaderProgram*& program,
+                                 DiagnosticSink& sink) {
+  if (!technique_ok(technique) || pass_index >= techniques_[technique]->passes.size()) {
+    sink.error("vk-pass-unknown", {}, "no drawable pass " + std::to_string(pass_index) + " in technique " + std::to_string(technique));
+    return false;
+  }
+  Pass& pass = *techniques_[technique]->passes[pass_index];
+  const VertexInput* input = vertex_input(pass, vertex_layout, sink);
+  if (!input) return false;
+  pipeline = pipelines_->get(pass.shader, pass.state, *input, formats, recorder_->dynamic(), sink);
+  program = &pass.shader;
+  update_object_count();
+  return pipeline != VK_NULL_HANDLE;
+}
+
 void EffectBinding::end() {
   if (active_) recorder_->end();
   active_ = nullptr;

@@ -19,6 +19,8 @@ int bench_frontend(const BenchArgs& args);
 int bench_compile(const BenchArgs& args);
 // `fxkit bench reload`: edit-to-swap latency of hot reload by phase, framework share.
 int bench_reload(const BenchArgs& args);
+// `fxkit bench apply`: EffectBinding recording vs hand-written Vulkan, ratio, pipeline counts.
+int bench_apply(const BenchArgs& args);
 // `fxkit bench accuracy`: error vs double reference and GPU ns/pixel per approximation.
 int bench_accuracy(const BenchArgs& args);
 

@@ -8,9 +8,9 @@ namespace fxkit {
 void register_bench(CLI::App& app, Runner& run) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand("bench", "Benchmarks: fxkit against a baseline, as a ratio");
-  cmd->add_option("MODE", args->mode, "What to measure: frontend, compile, reload, accuracy")
+  cmd->add_option("MODE", args->mode, "What to measure: frontend, compile, reload, accuracy, apply")
       ->required()
-      ->check(CLI::IsMember({"frontend", "compile", "reload", "accuracy"}));
+      ->check(CLI::IsMember({"frontend", "compile", "reload", "accuracy", "apply"}));
   cmd->add_option("--effects", args->effects_dir, "compile: folder of .fx files to load")
       ->capture_default_str();
   cmd->add_option("--size-mb", args->size_mb, "frontend: size of the generated effect in MB")
@@ -22,6 +22,10 @@ void register_bench(CLI::App& app, Runner& run) {
   cmd->add_flag("--json", args->json, "Print the results as JSON");
   cmd->callback([args, &run] {
 #ifdef FXKIT_HAS_RUNTIME
+    if (args->mode == "apply") {
+      run = [args] { return bench_apply(*args); };
+      return;
+    }
     if (args->mode == "reload") {
       run = [args] { return bench_reload(*args); };
       return;

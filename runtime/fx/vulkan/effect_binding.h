@@ -97,6 +97,12 @@ class EffectBinding {
   // Ends the technique; the next begin() assumes nothing is bound.
   void end();
 
+  // The pipeline (created if needed) and program that pass `pass` of `technique` binds for
+  // these formats and vertex layout: for tools that record the same work by hand (fxkit
+  // bench apply). False with diagnostics when the pass cannot be drawn.
+  bool pass_objects(uint32_t technique, uint32_t pass, const RenderingFormats& formats, uint32_t vertex_layout,
+                    VkPipeline& pipeline, const ShaderProgram*& program, DiagnosticSink& sink);
+
   const ApplyStats& stats() const { return recorder_->stats(); }
   void reset_stats() { recorder_->reset_stats(); }
   // Pipelines created and samplers held by this binding.
