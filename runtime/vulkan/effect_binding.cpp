@@ -109,6 +109,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
   b->recorder_.emplace(ctx, *b->pipelines_, frames,
                        desc.dynamic.value_or(DynamicStateSet::from_features(ctx.features())));
   uint32_t next_block = 0;
+  std::vector<uint32_t> resolved;  // texture parameters already resolved (report once)
   for (uint32_t t = 0; t < model.techniques.size(); ++t) {
     const TechniqueInfo& info = model.techniques[t];
     auto tech = std::make_unique<Technique>();
@@ -201,7 +202,10 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
                              "' names no texture parameter; a white texture stands in until set_texture()");
             slot.data = textures.resolve(model, TextureInfo{}, desc.effect_dir, image.dim, sink);
           } else {
-            slot.data = textures.resolve(model, *tex, desc.effect_dir, image.dim, sink);
+            const bool first = std::find(resolved.begin(), resolved.end(), slot.texture_param) == resolved.end();
+            DiagnosticSink repeat;  // the same warning for every pass sampling the texture is noise
+            slot.data = textures.resolve(model, *tex, desc.effect_dir, image.dim, first ? sink : repeat);
+            if (first) resolved.push_back(slot.texture_param);
           }
           if (!slot.data) {
             tech->reason = "pass '" + pass_info.name + "': texture '" + image.name + "' could not be made";
