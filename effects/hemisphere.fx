@@ -10,6 +10,7 @@
 //            A different model: up to (sqrt 2 - 1)/2 = 0.207 away at 45 and 135 degrees.
 //            Kept as the "measurement" technique for comparison.
 #include "common.fxh"
+#include "generated/costs.fxh"  // COST_<technique>: measured cost/error, scripts/accuracy-report
 
 float3 SkyAxis < string UIName = "Sky axis (world)"; string Space = "World"; > = {0.0, 1.0, 0.0};
 float4 SkyColor < string UIName = "Sky"; string UIWidget = "Color"; > = {0.55, 0.65, 0.9, 1.0};
@@ -151,7 +152,7 @@ technique hemisphere_three_term
 }
 
 technique hemisphere_two_term
-< string Requires = "vs_2_0 ps_2_0"; float MaxDistance = 50.0; string UIName = "Two-term hemisphere (sky/ground), per pixel"; >
+< string Requires = "vs_2_0 ps_2_0"; float MaxDistance = 50.0; string UIName = "Two-term hemisphere (sky/ground), per pixel";  COST_hemisphere_two_term >
 {
     pass p0
     {

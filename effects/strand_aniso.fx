@@ -8,6 +8,7 @@
 //   STRAND_BUMP   0|1   1 adds the bump-mapped (Gram-Schmidt) techniques
 // Light directions point from the light into the scene, as the seed's -c16 expects.
 #include "common.fxh"
+#include "generated/costs.fxh"  // COST_<technique>: measured cost/error, scripts/accuracy-report
 
 #ifndef STRAND_LIGHTS
 #define STRAND_LIGHTS 1
@@ -266,6 +267,7 @@ technique strand_analytic
     float MaxDistance = 40.0;
     string Fallback = "strand_lut";
     string UIName = "Strands, analytic per pixel";
+ COST_strand_analytic
 >
 {
     pass p0
@@ -297,6 +299,7 @@ technique strand_lut_seed_wrap
     string Scheme = "measurement";
     float MaxDistance = 40.0;
     string UIName = "Strands, table per pixel (seed's wrap bias)";
+ COST_strand_lut_seed_wrap
 >
 {
     pass p0
@@ -330,6 +333,7 @@ technique strand_per_vertex
     float MinDistance = 40.0;
     string Fallback = "strand_lut_ps11";
     string UIName = "Strands, per vertex (far away)";
+ COST_strand_per_vertex
 >
 {
     pass p0

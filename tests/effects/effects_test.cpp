@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -131,10 +134,16 @@ TEST(Effects, EveryTechniqueHasWellFormedSelectionAnnotations) {
       for (const auto& r : reqs) has_profile |= r.kind == fx::CapsRequirement::Kind::shader_profile;
       EXPECT_TRUE(has_profile) << "every technique names the shader generation it needs";
       EXPECT_TRUE(c.annotations.string("UIName").has_value());
-      // Cost and error come from the accuracy benchmark, never by hand.
+      // Cost and error come from the accuracy benchmark, never by hand: only through the
+      // generated COST_<technique> macros (checked on the file text below).
       EXPECT_EQ(c.annotations.find("CostMs"), nullptr);
-      EXPECT_EQ(c.annotations.find("MaxError"), nullptr);
-      EXPECT_EQ(c.annotations.find("CostNsPerPixel"), nullptr);
+      EXPECT_EQ(c.annotations.find("MaxError") != nullptr, c.annotations.find("CostNsPerPixel") != nullptr);
+    }
+    {
+      std::ifstream f(std::string(FXKIT_EFFECTS_DIR) + "/" + name);
+      std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+      EXPECT_EQ(text.find("CostNsPerPixel"), std::string::npos) << name << " writes a cost by hand";
+      EXPECT_EQ(text.find("MaxError"), std::string::npos) << name << " writes an error by hand";
     }
     // Fallback names resolve and do not cycle.
     fx::DiagnosticSink sink;
@@ -259,3 +268,45 @@ TEST(Effects, SchemesDistancesAndVariantsSteerTheChoice) {
 }
 
 }  // namespace
+
+// With the generated annotations, selection picks the cheaper technique once the error
+// budget allows it and the cost budget rules out the accurate one (docs/accuracy.md).
+TEST(Effects, ErrorBudgetLetsSelectionPickTheCheaperMeasuredTechnique) {
+  auto l = load("strand_aniso.fx");
+  std::vector<fx::TechniqueCandidate> measured;
+  for (fx::TechniqueCandidate& c : candidates(l->effect.ast))
+    if (c.annotations.number("MaxError") && c.annotations.number("CostNsPerPixel") &&
+        !c.annotations.number("MinDistance"))
+      measured.push_back(std::move(c));
+  ASSERT_GE(measured.size(), 2u);
+  fx::DiagnosticSink sink;
+  fx::SelectionPlan plan = fx::SelectionPlan::build(measured, sink);
+  int pairs = 0;
+  for (const auto& cheap : measured) {
+    for (const auto& good : measured) {
+      float ce = *cheap.annotations.number("MaxError"), ge = *good.annotations.number("MaxError");
+      float cc = *cheap.annotations.number("CostNsPerPixel"), gc = *good.annotations.number("CostNsPerPixel");
+      if (!(cc < gc) || !(ce > ge)) continue;
+      SCOPED_TRACE(cheap.name + " vs " + good.name);
+      ++pairs;
+      fx::SelectionCriteria q;
+      q.distance = 1;
+      q.pixels = 1e6f;
+      q.cost_budget_ms = (cc + gc) * 0.5f;  // ns/pixel x 1e6 pixels = ms: `good` does not fit
+      q.max_error = ce;
+      uint32_t chosen = plan.select(plan.query(q));
+      ASSERT_NE(chosen, fx::no_technique);
+      EXPECT_NE(plan.name(chosen), good.name);
+      EXPECT_LE(*measured[chosen].annotations.number("CostNsPerPixel"), q.cost_budget_ms);
+      EXPECT_LE(*measured[chosen].annotations.number("MaxError"), ce);
+      // Without the cost budget the accurate technique wins again.
+      q.cost_budget_ms = std::numeric_limits<float>::infinity();
+      EXPECT_LE(*measured[plan.select(plan.query(q))].annotations.number("MaxError"), ge);
+      // A budget below the cheap technique's error rules it out.
+      q.max_error = ce * 0.5f;
+      uint32_t strict = plan.select(plan.query(q));
+      EXPECT_TRUE(strict == fx::no_technique || plan.name(strict) != cheap.name);
+    }
+  }
+  EXPECT_GT(pairs, 0) << "the generated costs give no cheaper-but-less-accurate pair";
+}
