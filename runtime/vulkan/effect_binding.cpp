@@ -89,9 +89,8 @@ bool stage_is_glsl(const PassProgram& program) {
 
 }  // namespace
 
-EffectBinding::EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures,
-                             FrameResources& frames)
-    : ctx_(&ctx), params_(&params), textures_(&textures), frames_(&frames), samplers_(ctx) {}
+EffectBinding::EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures)
+    : params_(&params), textures_(&textures), samplers_(ctx) {}
 
 EffectBinding::~EffectBinding() {
   techniques_.clear();  // programs before the pipeline cache: nothing else depends on order
@@ -102,7 +101,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
                                                      EffectPrograms& programs, ParameterStore& params,
                                                      EffectTextureCache& textures, FrameResources& frames,
                                                      const EffectBindingDesc& desc, DiagnosticSink& sink) {
-  std::unique_ptr<EffectBinding> b(new EffectBinding(ctx, params, textures, frames));
+  std::unique_ptr<EffectBinding> b(new EffectBinding(ctx, params, textures));
   b->model_ = &model;
   b->pipelines_ = PipelineCache::create(ctx, sink);
   if (!b->pipelines_) return nullptr;

@@ -153,8 +153,7 @@ int bench_apply(const BenchArgs& args) {
         images.reserve(16);
         std::vector<VkWriteDescriptorSet> writes;
         for (const fx::vk::ProgramUniformBlock& b : program->uniform_blocks()) {
-          RawPass::Block block{b.size};
-          block.bytes.assign(b.size, 0);
+          RawPass::Block block{b.size, UINT32_MAX, UINT32_MAX, std::vector<uint8_t>(b.size, 0)};
           for (const fx::BlockMember& m : b.reflection->members) {
             if (m.name == "World") block.world = m.offset;
             if (m.name == "WorldViewProjection") block.wvp = m.offset;
@@ -284,7 +283,7 @@ int bench_apply(const BenchArgs& args) {
            {"uniform_uploads", stats.uniform_uploads},
            {"dynamic_state_calls", stats.dynamic_state_calls}};
     if (args.json) {
-      std::printf("%s\n", out.dump(2).c_str());
+      std::printf("%s\n", json_text(out).c_str());
     } else {
       std::printf("fxkit bench apply on %s: %u objects in %zu technique groups (static pipelines), median of %d frames\n",
                   ctx->info().name.c_str(), kObjects, groups.size(), frames);

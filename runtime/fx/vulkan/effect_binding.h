@@ -119,17 +119,14 @@ class EffectBinding {
  private:
   struct Pass;
   struct Technique;
-  EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures,
-                FrameResources& frames);
+  EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures);
   bool bind_textures(DiagnosticSink& sink);
   const VertexInput* vertex_input(Pass& pass, uint32_t layout, DiagnosticSink& sink);
   void update_object_count();
 
-  const Context* ctx_;
   const EffectModel* model_ = nullptr;
   ParameterStore* params_;
   EffectTextureCache* textures_;
-  FrameResources* frames_;
   std::optional<PipelineCache> pipelines_;
   SamplerCache samplers_;
   std::optional<PassRecorder> recorder_;
