@@ -86,7 +86,7 @@ std::string write_shader_metadata(const CompiledShader& s) {
             {"inputs", interface(r.inputs)},
             {"outputs", interface(r.outputs)},
             {"local_size", {r.local_size[0], r.local_size[1], r.local_size[2]}}};
-  return j.dump();
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 bool read_shader_metadata(std::string_view text, CompiledShader& s) {

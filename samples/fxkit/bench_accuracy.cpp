@@ -123,7 +123,7 @@ int bench_accuracy(const BenchArgs& args) {
   }
 
   if (args.json) {
-    std::printf("%s\n", out.dump(1).c_str());
+    std::printf("%s\n", json_text(out, 1).c_str());
     return 0;
   }
   std::printf("accuracy: %zu approximations, %zu GPU kernels on %s (%ux%u, %u draws/pass, median of %u)\n",

@@ -130,7 +130,7 @@ int bench_compile(const BenchArgs& args) {
                           {"reload_speedup", reload_speedup},
                           {"reload_target", 20.0},
                           {"effects", effects}};
-    std::puts(out.dump(2).c_str());
+    std::puts(json_text(out).c_str());
   } else {
     std::printf("fxkit bench compile: %zu effect(s) in %s, median of %d run(s); glslang warm-up %.1f ms (excluded)\n",
                 files.size(), args.effects_dir.c_str(), args.repeats, warmup);

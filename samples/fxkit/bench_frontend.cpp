@@ -110,7 +110,7 @@ int bench_frontend(const BenchArgs& args) {
       {"glslang", {{"seconds", glsl}, {"shader_mb", shader_mb}, {"mb_per_s", glsl_rate}, {"ok", glslang_ok}}},
       {"ratio_mb_per_s", front_rate / glsl_rate}, {"repeats", args.repeats}};
   if (args.json) {
-    std::puts(j.dump(2).c_str());
+    std::puts(json_text(j).c_str());
   } else {
     std::printf("fxkit bench frontend: %.1f MB effect, %zu included modules, %zu tokens (median of %d)\n",
                 mb, g.files.size() - 1, median.tokens, args.repeats);

@@ -147,7 +147,7 @@ int bench_reload(const BenchArgs& args) {
                         {"baseline", "glslang time of the same units"},
                         {"ratio_to_baseline", ratio},
                         {"backend", "none (Vulkan effect binding not wired: pipeline and first_frame are 0)"}};
-    std::printf("%s\n", j.dump(2).c_str());
+    std::printf("%s\n", json_text(j).c_str());
   } else {
     std::printf("fxkit bench reload: %zu reloads of %zu seed effects (%d failed, %d timed out), coalescing 0 ms\n",
                 samples.size(), effects.size(), failures, timeouts);

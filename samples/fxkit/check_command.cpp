@@ -105,7 +105,7 @@ int run_check(const CheckArgs& args) {
                           {"effects", std::move(effects)},
                           {"errors", diags.error_count()},
                           {"warnings", diags.warning_count()}};
-    std::puts(out.dump(2).c_str());
+    std::puts(json_text(out).c_str());
   } else if (diags.error_count() || diags.warning_count()) {
     std::fprintf(stderr, "%zu error(s), %zu warning(s)\n", diags.error_count(), diags.warning_count());
   }

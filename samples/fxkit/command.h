@@ -5,12 +5,19 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "fx/frontend.h"
 
 namespace fxkit {
 
 enum ExitCode { kSuccess = 0, kInputErrors = 1, kUsageError = 2 };
+
+// JSON text for stdout. Effect files are not always valid UTF-8, and messages quote them:
+// invalid bytes become U+FFFD instead of an exception. indent < 0: one line.
+inline std::string json_text(const nlohmann::json& j, int indent = 2) {
+  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 
 // -I, -D and --profile, as every command that reads effects takes them.
 struct FrontEndFlags {

@@ -129,7 +129,7 @@ int run_compile(const CompileArgs& args) {
                           {"shaders", std::move(shaders)},
                           {"diagnostics", fx::render_json(diags.diagnostics(), sm)},
                           {"ok", !failed}};
-    std::puts(out.dump(2).c_str());
+    std::puts(json_text(out).c_str());
   } else {
     std::fputs(fx::render_text(all, sm).c_str(), stderr);
   }

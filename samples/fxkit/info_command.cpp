@@ -273,7 +273,7 @@ int run_info(const InfoArgs& args) {
               {"techniques", techniques},
               {"diagnostics", fx::render_json(diags.diagnostics(), sm)}};
   if (args.json) {
-    std::puts(out.dump(2).c_str());
+    std::puts(json_text(out).c_str());
   } else {
     std::printf("%s: %zu parameter(s), %zu texture(s), %zu sampler(s), %zu technique(s)\n", args.file.c_str(),
                 parameters.size(), textures.size(), samplers.size(), techniques.size());

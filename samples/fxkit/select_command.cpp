@@ -88,7 +88,7 @@ int run_select(const SelectArgs& args) {
         {"techniques", std::move(techniques)},
         {"diagnostics", fx::render_json(diags.diagnostics(), sm)},
     };
-    std::puts(out.dump(2).c_str());
+    std::puts(json_text(out).c_str());
   } else {
     std::fputs(fx::render_text(diags.diagnostics(), sm).c_str(), stderr);
     std::string name = std::filesystem::path(args.file).filename().string();

@@ -53,7 +53,7 @@ nlohmann::json event_json(const fx::ReloadEvent& ev) {
 
 void print_event(const fx::ReloadEvent& ev, bool json) {
   if (json) {
-    std::printf("%s\n", event_json(ev).dump().c_str());
+    std::printf("%s\n", json_text(event_json(ev), -1).c_str());
   } else {
     std::string changed;
     for (const std::string& f : ev.changed) changed += (changed.empty() ? "" : ", ") + f;

@@ -87,6 +87,19 @@ TEST(CheckCli, JsonHasDiagnosticsAndASummary) {
   EXPECT_EQ(j["errors"], 1);
 }
 
+TEST(CheckCli, JsonSurvivesInvalidUtf8InTheEffect) {
+  // Found by the fuzzer: a message quoting a state name with bytes that are not UTF-8.
+  std::string path = write_temp("latin1.fx", "technique T { pass P { Pi\x91\x9alShader = NULL; } }\n");
+  auto r = run_fxkit("check --json " + path);
+  EXPECT_EQ(r.status, 1);
+  nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_FALSE(j.is_discarded()) << r.out;
+  bool replaced = false;  // the quoted bytes come out as U+FFFD
+  for (const auto& d : j["diagnostics"])
+    replaced = replaced || d["message"].get<std::string>().find("\xEF\xBF\xBD") != std::string::npos;
+  EXPECT_TRUE(replaced) << r.out;
+}
+
 TEST(CheckCli, UsageAndIoErrorsExitTwo) {
   EXPECT_EQ(run_fxkit("check").status, 2);
   EXPECT_EQ(run_fxkit("check /nonexistent/effect.fx").status, 2);

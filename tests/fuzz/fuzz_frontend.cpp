@@ -39,7 +39,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   (void)model;
 #endif
   std::string rendered = fx::render_text(diags.diagnostics(), sm);
-  (void)fx::render_json(diags.diagnostics(), sm).dump();
+  // As the CLI prints it: invalid UTF-8 from the input is replaced, never thrown.
+  (void)fx::render_json(diags.diagnostics(), sm).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   (void)parsed;
   (void)rendered;
   return 0;
