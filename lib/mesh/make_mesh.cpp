@@ -1,20 +1,11 @@
 // `--mesh NAME` resolution: a built-in generator or an OBJ file.
 #include <algorithm>
-#include <cctype>
 #include <string>
 
+#include "fx/ascii_case.h"
 #include "fx/mesh.h"
 
 namespace fx {
-namespace {
-
-bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-         });
-}
-
-}  // namespace
 
 std::optional<Mesh> make_mesh(std::string_view name, DiagnosticSink& sink) {
   if (iequals(name, "sphere")) return sphere();

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "fx/ascii_case.h"
 #include "fx/ast.h"
 #include "fx/diagnostic.h"
 #include "fx/source_manager.h"
@@ -27,9 +28,5 @@ ast::Effect parse_effect(std::vector<Token> tokens, const SourceManager& sm,
 // Lexes a whole buffer without preprocessing (tests, tools that skip the preprocessor).
 // The result ends with the eof token.
 std::vector<Token> lex_all(SourceManager& sm, BufferId buffer, DiagnosticSink& diags);
-
-// Case-insensitive ASCII comparison, for the parts of the language that ignore case
-// (state names, `asm`, `decl`, `NULL`, `TRUE`/`FALSE`).
-bool iequals(std::string_view a, std::string_view b);
 
 }  // namespace fx

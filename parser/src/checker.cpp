@@ -3,15 +3,12 @@
 #include "fx/checker.h"
 
 #include <algorithm>
-#include <cctype>
 
 #include "checker_internal.h"
 
 namespace fx {
 namespace check {
 namespace {
-
-char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c + ('a' - 'A')) : c; }
 
 // Components of a numeric type name (`float3` 3, `float4x4` 16, `int` 1), or 0 when the
 // type is not numeric (string, texture, struct names).
@@ -24,7 +21,7 @@ int numeric_components(std::string_view type) {
     std::string_view rest = type.substr(scalar.size());
     if (rest.empty()) return 1;
     if (rest.size() == 1 && rest[0] >= '1' && rest[0] <= '4') return rest[0] - '0';
-    if (rest.size() == 3 && lower(rest[1]) == 'x' && rest[0] >= '1' && rest[0] <= '4' &&
+    if (rest.size() == 3 && ascii_lower(rest[1]) == 'x' && rest[0] >= '1' && rest[0] <= '4' &&
         rest[2] >= '1' && rest[2] <= '4')
       return (rest[0] - '0') * (rest[2] - '0');
   }
@@ -81,14 +78,6 @@ std::string signature(const ast::Function& f) {
 }  // namespace
 
 std::string quote(std::string_view text) { return "'" + std::string(text) + "'"; }
-
-// ASCII only: names are ASCII, and std::tolower's locale call dominated the checker.
-bool iequals(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i)
-    if (lower(a[i]) != lower(b[i])) return false;
-  return true;
-}
 
 Checker::Checker(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& diags,
                  const CheckOptions& options)
@@ -354,7 +343,7 @@ std::string_view to_string(EffectProfile profile) {
 
 std::optional<EffectProfile> parse_effect_profile(std::string_view text) {
   std::string t;
-  for (char c : text) t.push_back(c == '.' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+  for (char c : text) t.push_back(c == '.' ? '_' : ascii_lower(c));
   if (t == "fx_2_0") return EffectProfile::fx_2_0;
   if (t == "fx_4_0" || t == "fx_4_1") return EffectProfile::fx_4_0;
   if (t == "fx_5_0") return EffectProfile::fx_5_0;

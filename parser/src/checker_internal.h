@@ -10,6 +10,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "fx/ascii_case.h"
 #include "fx/ast.h"
 #include "fx/checker.h"
 #include "fx/state_table.h"
@@ -66,7 +67,6 @@ struct Symbol {
 
 // 'text' for messages.
 std::string quote(std::string_view text);
-bool iequals(std::string_view a, std::string_view b);
 // The value of an integer-valued literal expression (`3`, `-1`, `1 << 4`, `TRUE`), if any.
 std::optional<int64_t> literal_int(const ast::Expr& e);
 

@@ -8,14 +8,6 @@
 namespace fx::check {
 namespace {
 
-// ASCII only, like the state table: std::tolower's locale call is slow.
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out)
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c + ('a' - 'A'));
-  return out;
-}
-
 bool starts_with_i(std::string_view s, std::string_view prefix) {
   return s.size() >= prefix.size() && iequals(s.substr(0, prefix.size()), prefix);
 }
@@ -429,7 +421,7 @@ void Checker::check_symbol_type(const StateInfo& info, const Symbol& s, const as
            state_object_block(s.type) == state_object_block(info.object_kind);
       break;
     default: {
-      std::string type = lower(s.type);
+      std::string type = ascii_lower(s.type);
       bool object_var = type.rfind("texture", 0) == 0 || type.rfind("sampler", 0) == 0 ||
                         type == "string" || ends_with_i(type, "shader");
       ok = variable && !object_var;
@@ -468,7 +460,7 @@ void Checker::check_compile(const StateInfo& info, std::string_view profile,
                             SourceRange profile_range, std::string_view function,
                             SourceRange range) {
   const std::vector<std::string>& profiles = shader_profiles();
-  if (std::find(profiles.begin(), profiles.end(), lower(profile)) == profiles.end()) {
+  if (std::find(profiles.begin(), profiles.end(), ascii_lower(profile)) == profiles.end()) {
     std::vector<std::string_view> names(profiles.begin(), profiles.end());
     std::string guess = closest_match(profile, names);
     std::string message = "unknown shader profile " + quote(profile);

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "fx/ascii_case.h"
 #include "pp_internal.h"
 
 namespace fx {
@@ -55,17 +56,6 @@ std::vector<std::string_view> split(std::string_view p) {
     begin = end + 1;
   }
   return parts;
-}
-
-bool equal_ignoring_case(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i) {
-    char x = a[i], y = b[i];
-    if (x >= 'A' && x <= 'Z') x = char(x - 'A' + 'a');
-    if (y >= 'A' && y <= 'Z') y = char(y - 'A' + 'a');
-    if (x != y) return false;
-  }
-  return true;
 }
 
 }  // namespace
@@ -134,7 +124,7 @@ std::optional<ResolvedInclude> resolve_include(std::string_view name,
           if (e == part) match = &e;
         if (!match)
           for (const std::string& e : entries)
-            if (equal_ignoring_case(e, part)) {
+            if (iequals(e, part)) {
               match = &e;
               break;
             }

@@ -4,26 +4,16 @@
 #include <array>
 #include <cstring>
 
+#include "fx/ascii_case.h"
 #include "state_table_data.h"
 
 namespace fx {
 namespace {
 
-// ASCII only: state and enum names are ASCII, and std::tolower's locale lookup would
-// dominate a lookup.
-char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c + ('a' - 'A')) : c; }
-
 uint64_t name_hash(std::string_view name, StateBlock block) {
   uint64_t h = 1469598103934665603ull;
-  for (char c : name) h = (h ^ static_cast<unsigned char>(lower(c))) * 1099511628211ull;
+  for (char c : name) h = (h ^ static_cast<unsigned char>(ascii_lower(c))) * 1099511628211ull;
   return (h ^ static_cast<uint64_t>(block)) * 1099511628211ull;
-}
-
-bool iequals(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i)
-    if (lower(a[i]) != lower(b[i])) return false;
-  return true;
 }
 
 class StateIndex {
@@ -93,7 +83,7 @@ bool normalize(std::string_view in, std::array<char, 96>& out, size_t& size) {
   for (char c : in) {
     if (c == '_') continue;
     if (size == out.size()) return false;
-    out[size++] = lower(c);
+    out[size++] = ascii_lower(c);
   }
   return true;
 }
@@ -102,7 +92,7 @@ bool matches_normalized(std::string_view normalized, std::string_view name) {
   size_t i = 0;
   for (char c : name) {
     if (c == '_') continue;
-    if (i == normalized.size() || normalized[i] != lower(c)) return false;
+    if (i == normalized.size() || normalized[i] != ascii_lower(c)) return false;
     ++i;
   }
   return i == normalized.size();
