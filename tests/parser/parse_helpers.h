@@ -1,5 +1,7 @@
-// Test helper: lexes a source string straight into the parser (no preprocessor).
+// Test helpers: lexes a source string straight into the parser (no preprocessor).
 #pragma once
+#include <gtest/gtest.h>
+
 #include <memory>
 #include <string>
 
@@ -32,6 +34,12 @@ inline std::unique_ptr<Parsed> parse(const std::string& source, const char* name
   fx::BufferId buffer = p->sm.add_buffer(name, source);
   p->effect = fx::parse_effect(fx::lex_all(p->sm, buffer, p->diags), p->sm, p->diags, options);
   return p;
+}
+
+// Declaration `i` of `p`, which must be a variable.
+inline const fx::ast::Variable& var(const Parsed& p, size_t i) {
+  EXPECT_EQ(p.decl(i).kind, fx::ast::DeclKind::variable);
+  return *p.decl(i).variable;
 }
 
 }  // namespace fxtest

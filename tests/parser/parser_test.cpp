@@ -1,25 +1,19 @@
-// One case per grammar feature of the effect parser, valid and invalid. Invalid inputs
-// check the exact rendered diagnostic: one mistake gives one diagnostic.
+// One case per grammar feature of the effect parser on valid input (invalid input:
+// parser_errors_test.cpp).
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <chrono>
-#include <cstdio>
-
 #include <iterator>
+#include <string>
+#include <vector>
 
 #include "fx/lexer.h"
 #include "parse_helpers.h"
 
 using namespace fx;
 using fxtest::parse;
+using fxtest::var;
 
 namespace {
-
-const ast::Variable& var(const fxtest::Parsed& p, size_t i) {
-  EXPECT_EQ(p.decl(i).kind, ast::DeclKind::variable);
-  return *p.decl(i).variable;
-}
 
 #define EXPECT_CLEAN(p) EXPECT_EQ((p)->text(), "") << "unexpected diagnostics"
 
@@ -387,217 +381,6 @@ TEST(Parser, RangesPointIntoTheSource) {
   EXPECT_EQ(p->sm.presumed(s.name_range.begin).column, 24u);
   EXPECT_EQ(p->sm.presumed(s.value->range.begin).column, 34u);
   EXPECT_EQ(p->sm.presumed(p->decl(1).technique->range.end).column, 43u);
-}
-
-// ---- invalid input: exactly one diagnostic, golden text ----
-
-void expect_one(const std::string& source, const std::string& golden) {
-  auto p = parse(source);
-  EXPECT_EQ(p->diags.diagnostics().size(), 1u) << p->text();
-  EXPECT_EQ(p->text(), golden);
-}
-
-TEST(ParserErrors, MissingSemicolonOnNewLine) {
-  auto p = parse("float a = 1\nfloat b;\n");
-  EXPECT_EQ(p->text(),
-            "test.fx:1:12: error: expected ';' after declaration [expected-token]\n"
-            "float a = 1\n"
-            "           ^\n"
-            "test.fx:1:12: note: fix-it: insert ';'\n");
-  EXPECT_EQ(p->effect.decls.size(), 2u);  // b is still parsed
-}
-
-TEST(ParserErrors, StrayBrace) {
-  expect_one("float a;\n}\nfloat b;\n",
-             "test.fx:2:1: error: expected a declaration, found '}' [expected-declaration]\n"
-             "}\n"
-             "^\n");
-}
-
-TEST(ParserErrors, BadStateValueRecoversAtSemicolon) {
-  auto p = parse("technique t { pass p { ZEnable = ; CullMode = None; } }\nfloat x;\n");
-  EXPECT_EQ(p->text(),
-            "test.fx:1:34: error: expected an expression, found ';' [expected-expression]\n"
-            "technique t { pass p { ZEnable = ; CullMode = None; } }\n"
-            "                                 ^\n");
-  ASSERT_EQ(p->effect.decls.size(), 2u);
-  EXPECT_EQ(p->decl(0).technique->passes.at(0).states.size(), 1u);
-}
-
-TEST(ParserErrors, MissingEqualsInState) {
-  expect_one("technique t { pass p { ZEnable TRUE; } }",
-             "test.fx:1:32: error: expected '=' after state name 'ZEnable', found 'TRUE' "
-             "[expected-token]\n"
-             "technique t { pass p { ZEnable TRUE; } }\n"
-             "                               ^~~~\n");
-}
-
-TEST(ParserErrors, UnterminatedTechnique) {
-  expect_one("technique t {\n  pass p { ZEnable = TRUE; }\n",
-             "test.fx:3:1: error: expected '}' to close technique [unterminated-block]\n"
-             "\n"
-             "^\n"
-             "test.fx:1:13: note: to match this '{'\n");
-}
-
-TEST(ParserErrors, UnterminatedFunctionBody) {
-  expect_one("float4 PS() : COLOR {\n  return 1;\n",
-             "test.fx:3:1: error: expected '}' to close function body [unterminated-block]\n"
-             "\n"
-             "^\n"
-             "test.fx:1:21: note: to match this '{'\n");
-}
-
-TEST(ParserErrors, BadAnnotationKeepsDeclaration) {
-  auto p = parse("float g < string a = ; float b = 1; > = 2;\n");
-  EXPECT_EQ(p->text(),
-            "test.fx:1:22: error: expected an expression, found ';' [expected-expression]\n"
-            "float g < string a = ; float b = 1; > = 2;\n"
-            "                     ^\n");
-  ASSERT_EQ(p->effect.decls.size(), 1u);
-  EXPECT_EQ(var(*p, 0).annotations.size(), 1u);
-  EXPECT_EQ(var(*p, 0).initializer->number, 2);
-}
-
-TEST(ParserErrors, ExpectedPass) {
-  expect_one("technique t { ZEnable = TRUE; pass p {} }",
-             "test.fx:1:15: error: expected 'pass' in technique body, found 'ZEnable' "
-             "[expected-pass]\n"
-             "technique t { ZEnable = TRUE; pass p {} }\n"
-             "              ^~~~~~~\n");
-}
-
-TEST(ParserErrors, InvalidNumber) {
-  expect_one("float a = 1.2.3;",
-             "test.fx:1:11: error: invalid floating-point literal '1.2.3' [invalid-number]\n"
-             "float a = 1.2.3;\n"
-             "          ^~~~~\n");
-}
-
-TEST(ParserErrors, DeclWithoutAsm) {
-  expect_one("technique t { pass { VertexShader = decl { stream 0; }; } }",
-             "test.fx:1:55: error: expected 'asm { }' after 'decl { }', found ';' "
-             "[expected-token]\n"
-             "technique t { pass { VertexShader = decl { stream 0; }; } }\n"
-             "                                                      ^\n");
-}
-
-TEST(ParserErrors, AttributeOnVariable) {
-  expect_one("[unroll] float a;",
-             "test.fx:1:1: error: attributes such as [unroll] apply only to functions "
-             "[unexpected-attribute]\n"
-             "[unroll] float a;\n"
-             "^\n");
-}
-
-TEST(ParserErrors, UnclosedTemplate) {
-  expect_one("Texture2D<float4 t;",
-             "test.fx:1:19: error: expected '>' to close the template argument list, found ';' "
-             "[expected-token]\n"
-             "Texture2D<float4 t;\n"
-             "                  ^\n"
-             "test.fx:1:10: note: to match this '<'\n");
-}
-
-TEST(ParserErrors, OneDiagnosticPerMistake) {
-  auto p = parse(
-      "float a = ;\n"
-      "technique t { pass { A = 1 B = 2; C = 3; } }\n"
-      "float ok;\n");
-  ASSERT_EQ(p->diags.diagnostics().size(), 2u) << p->text();
-  EXPECT_EQ(p->diags.diagnostics()[0].id, "expected-expression");
-  EXPECT_EQ(p->diags.diagnostics()[1].id, "expected-token");
-  ASSERT_EQ(p->effect.decls.size(), 2u);
-  EXPECT_EQ(p->decl(0).technique->passes.at(0).states.back().name, "C");
-  EXPECT_EQ(var(*p, 1).name, "ok");
-}
-
-TEST(ParserErrors, DeepNestingGivesOneErrorQuickly) {
-  for (const char* open_close : {"()", "{}", "-;"}) {
-    std::string source = "float a = ";
-    source.append(10000, open_close[0]);
-    source += "1";
-    if (open_close[1] != ';') source.append(10000, open_close[1]);
-    source += ";\nfloat b;\n";
-    auto start = std::chrono::steady_clock::now();
-    auto p = parse(source);
-    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
-                                                          start).count();
-    ASSERT_EQ(p->diags.diagnostics().size(), 1u) << p->text();
-    EXPECT_EQ(p->diags.diagnostics()[0].id, "nesting-too-deep");
-    ASSERT_EQ(p->effect.decls.size(), 1u);
-    EXPECT_EQ(var(*p, 0).name, "b");
-    EXPECT_LT(ms, 2000.0);
-  }
-  // Unbalanced at file scope: also one error, and no second one at end of file.
-  auto p = parse(std::string(10000, '{'));
-  EXPECT_EQ(p->diags.diagnostics().size(), 1u) << p->text();
-}
-
-TEST(ParserErrors, EveryTruncationGivesAtMostOneDiagnostic) {
-  const std::string source =
-      "float4x4 W : WORLD < string UIName = \"World\"; >;\n"
-      "texture T; sampler2D S = sampler_state { Texture = <T>; AddressU = Clamp; };\n"
-      "struct V { float4 p : POSITION; };\n"
-      "float4 PS(V v) : COLOR { return tex2D(S, v.p.xy); }\n"
-      "BlendState B { BlendEnable[0] = TRUE; };\n"
-      "technique10 t < int x = 1; > { pass p {\n"
-      "  SetPixelShader(CompileShader(ps_4_0, PS()));\n"
-      "  VertexShader = decl { stream 0; } asm { vs.1.1 };\n"
-      "  Texture[0] = <T>; VertexShaderConstant[0] = (.5f, .5f); } }\n";
-  for (size_t n = 0; n <= source.size(); ++n) {
-    auto p = parse(source.substr(0, n));
-    size_t errors = 0;
-    for (const Diagnostic& d : p->diags.diagnostics())
-      if (d.id.rfind("unterminated-string", 0) != 0) ++errors;  // the lexer's own
-    EXPECT_LE(errors, 1u) << "prefix of " << n << " bytes:\n" << p->text();
-  }
-}
-
-// ---- speed ----
-
-TEST(ParserSpeed, LargeInput) {
-  std::string unit =
-      "float4x4 World : WORLD < string UIName = \"World\"; float UIMin = 0; >;\n"
-      "texture Tex < string ResourceName = \"a.dds\"; >;\n"
-      "sampler2D Samp = sampler_state { Texture = <Tex>; AddressU = Clamp; MinFilter = Linear; };\n"
-      "float4 PS(float2 uv : TEXCOORD0) : COLOR { return tex2D(Samp, uv) * (1 + 2); }\n"
-      "technique T < string Name = \"t\"; > { pass P {\n"
-      "  VertexShader = compile vs_2_0 VS(1, true); ZEnable = TRUE;\n"
-      "  Texture[0] = <Tex>; ColorArg1[1] = Texture | Complement;\n"
-      "  SetBlendState(B, float4(0, 0, 0, 0), 0xFFFFFFFF); } }\n";
-  std::string source;
-#ifdef NDEBUG
-  const size_t target = 8u << 20;
-#else
-  const size_t target = 1u << 20;  // unoptimised builds only check that it works
-#endif
-  while (source.size() < target) source += unit;
-  SourceManager sm;
-  DiagnosticSink diags;
-  BufferId b = sm.add_buffer("big.fx", source);
-  const std::vector<Token> tokens = lex_all(sm, b, diags);
-  // The first parse pays for faulting in fresh heap pages; later ones show the steady
-  // state of an engine that reloads effects. Both are reported.
-  double first_s = 0, best_s = 1e9;
-  size_t decls = 0;
-  for (int run = 0; run < 5; ++run) {
-    std::vector<Token> copy = tokens;
-    auto start = std::chrono::steady_clock::now();
-    ast::Effect e = parse_effect(std::move(copy), sm, diags);
-    double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (run == 0) first_s = s;
-    best_s = std::min(best_s, s);
-    decls = e.decls.size();
-    EXPECT_EQ(e.tokens.size(), tokens.size());
-  }
-  EXPECT_FALSE(diags.has_errors());
-  double mb = double(source.size()) / (1 << 20);
-  std::printf("[ parse speed ] %.1f MiB, %zu tokens, %zu decls: first %.0f MiB/s, best of 5 "
-              "%.0f MiB/s (target 150 MiB/s in an optimised build)\n",
-              mb, tokens.size(), decls, mb / first_s, mb / best_s);
-  double s = best_s;
-  RecordProperty("parse_mib_per_s", std::to_string(mb / s));
 }
 
 }  // namespace

@@ -1,0 +1,137 @@
+// #include: search order, case-insensitive fallback, #pragma once, depth limit, notes.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "preprocessor_fixture.h"
+
+namespace fx {
+namespace {
+
+using test::Pp;
+using test::seconds_since;
+using test::spelled;
+using test::kHangSeconds;
+
+TEST(PreprocessorIncludes, QuotedSearchesIncluderFolderFirst) {
+  Pp p;
+  p.options.include_dirs = {"lib"};
+  p.files["fx/common.fxh"] = "local\n";
+  p.files["lib/common.fxh"] = "library\n";
+  p.files["lib/only.fxh"] = "only\n#include \"common.fxh\"\n";
+  p.files["fx/main.fx"] =
+      "#include \"common.fxh\"\n#include <common.fxh>\n#include \"only.fxh\"\n";
+  std::vector<Token> out;
+  Preprocessor pp(p.sm, p.diags, p.options);
+  EXPECT_TRUE(pp.run_file("fx/main.fx", out));
+  EXPECT_EQ(Pp::spell(out), "local library only library");
+  EXPECT_EQ(pp.files(),
+            (std::vector<std::string>{"fx/main.fx", "fx/common.fxh", "lib/common.fxh",
+                                      "lib/only.fxh"}));
+  ASSERT_EQ(pp.includes().size(), 4u);
+  EXPECT_EQ(pp.includes()[3].includer, "lib/only.fxh");
+  EXPECT_EQ(pp.includes()[3].included, "lib/common.fxh");
+}
+
+TEST(PreprocessorIncludes, BackslashesMacrosAndDotDot) {
+  Pp p;
+  p.files["shaders/sub/light.fxh"] = "#include \"..\\util.fxh\"\nlight\n";
+  p.files["shaders/util.fxh"] = "util\n";
+  p.files["shaders/main.fx"] =
+      "#define HDR <sub/light.fxh>\n#define Q \"util.fxh\"\n#include \"sub\\light.fxh\"\n"
+      "#include Q\n#include HDR\n";
+  p.options.include_dirs = {"shaders"};
+  std::vector<Token> out;
+  Preprocessor pp(p.sm, p.diags, p.options);
+  pp.run_file("shaders/./main.fx", out);
+  EXPECT_EQ(Pp::spell(out), "util light util util light");
+  EXPECT_EQ(p.ids(), "");
+}
+
+TEST(PreprocessorIncludes, CaseInsensitiveFallbackWarnsWithRealName) {
+  Pp p;
+  p.files["Shaders/Common/Lighting.fxh"] = "lit\n";
+  EXPECT_EQ(p.run("#include \"shaders\\common\\LIGHTING.FXH\"\n"), "lit");
+  const Diagnostic& d = p.only();
+  EXPECT_EQ(d.id, "include-case-mismatch");
+  EXPECT_EQ(d.severity, Severity::warning);
+  EXPECT_EQ(d.message, "'shaders\\common\\LIGHTING.FXH' matches 'Shaders/Common/Lighting.fxh' "
+                       "only when ignoring case");
+  EXPECT_EQ(p.read_files[1], "Shaders/Common/Lighting.fxh");
+  // Without a lister there is no fallback.
+  p.options.lister = nullptr;
+  p.run("#include \"shaders/common/lighting.fxh\"\n");
+  EXPECT_EQ(p.ids(), "include-case-mismatch include-not-found");
+}
+
+TEST(PreprocessorIncludes, NotFoundAndMalformed) {
+  Pp p;
+  p.files["lib/a.fxh"] = "a";
+  p.run("#include <a.fxh>\n#include \"lib\"\n#include\n#include <a.fxh\n#include \"x\" y\n");
+  EXPECT_EQ(p.ids(),
+            "include-not-found include-not-found invalid-directive invalid-directive "
+            "extra-tokens include-not-found");
+  EXPECT_EQ(p.diags.diagnostics()[0].message, "'a.fxh' file not found");
+}
+
+TEST(PreprocessorIncludes, PragmaOnce) {
+  Pp p;
+  p.files["once.fxh"] = "#pragma once\nonce\n";
+  p.files["twice.fxh"] = "twice\n";
+  EXPECT_EQ(p.run("#include \"once.fxh\"\n#include \"./once.fxh\"\n#include \"twice.fxh\"\n"
+                  "#include \"twice.fxh\"\n"),
+            "once twice twice");
+  EXPECT_EQ(p.edges.size(), 4u);
+}
+
+TEST(PreprocessorIncludes, DepthLimitStopsCyclesQuickly) {
+  Pp p;
+  p.files["a.fxh"] = "a\n#include \"b.fxh\"\n";
+  p.files["b.fxh"] = "b\n#include \"a.fxh\"\n";
+  auto start = std::chrono::steady_clock::now();
+  p.run("#include \"a.fxh\"\nafter\n");
+  EXPECT_LT(seconds_since(start), kHangSeconds);
+  const Diagnostic& d = p.only();
+  EXPECT_EQ(d.id, "limit-exceeded");
+  EXPECT_EQ(d.message, "#include nested more than 200 levels deep (include cycle: 'b.fxh' "
+                       "includes itself)");
+  EXPECT_EQ(p.tokens.size(), 200u);  // 199 files' tokens and the eof; `after` is not reached
+}
+
+TEST(PreprocessorIncludes, IncludeNotesInRenderedDiagnostics) {
+  Pp p;
+  p.files["inc.fxh"] = "#define P(a) a ## -\nP(+)\n#error stop\n";
+  p.run("#include \"inc.fxh\"\n");
+  ASSERT_EQ(p.ids(), "invalid-paste error-directive");
+  EXPECT_EQ(render_text(p.diags.diagnostics(), p.sm),
+            "inc.fxh:2:1: error: pasting formed '+-', an invalid preprocessing token "
+            "[invalid-paste]\n"
+            "P(+)\n"
+            "^\n"
+            "inc.fxh:2:1: note: in expansion of macro 'P'\n"
+            "main.fx:1:1: note: included from here\n"
+            "inc.fxh:3:1: error: stop [error-directive]\n"
+            "#error stop\n"
+            "^~~~~~\n"
+            "main.fx:1:1: note: included from here\n");
+}
+
+TEST(PreprocessorIncludes, RealFilesOnDisk) {
+  SourceManager sm;
+  DiagnosticSink diags;
+  PreprocessorOptions options;
+  std::string data = std::string(FXKIT_SOURCE_DIR) + "/tests/parser/data/pp";
+  options.include_dirs = {data + "/include"};
+  Preprocessor pp(sm, diags, options);
+  std::vector<Token> out;
+  EXPECT_TRUE(pp.run_file(data + "/main.fx", out)) << render_text(diags.diagnostics(), sm);
+  EXPECT_EQ(Pp::spell(out), spelled("float4 Tint = float4(1, 0.5, 0.25, 1); "
+                                    "float Gloss = 32; technique Main { }"));
+  ASSERT_EQ(diags.diagnostics().size(), 1u);
+  EXPECT_EQ(diags.diagnostics()[0].id, "include-case-mismatch");
+  ASSERT_EQ(pp.files().size(), 3u);
+  EXPECT_EQ(pp.files()[2], data + "/include/Lighting.fxh");
+}
+}  // namespace
+}  // namespace fx
