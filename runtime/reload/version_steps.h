@@ -1,4 +1,4 @@
-// The two halves of a reload transaction that cannot share a translation unit (see
+// The two halves of a reload transaction, one per layer (see
 // fx/reload/reload_transaction.h): the model side and the compile side.
 #pragma once
 #include <string>

@@ -1,6 +1,5 @@
 // Technique selection through the library: criteria are remembered and re-applied after a
-// reload. Its own file: fx/select/selection.h cannot share a translation unit with the
-// model headers yet (see fx/reload/technique_choice.h).
+// reload.
 #include "fx/select/selection.h"
 #include "library_test_support.h"
 
