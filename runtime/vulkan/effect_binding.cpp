@@ -107,7 +107,9 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
   if (!b->pipelines_) return nullptr;
   b->recorder_.emplace(ctx, *b->pipelines_, frames,
                        desc.dynamic.value_or(DynamicStateSet::from_features(ctx.features())));
-  uint32_t next_block = 0;
+  // Block ids are unique in the process, so two bindings of one ParameterStore (say a
+  // dynamic-state and a static one) never overwrite each other's block layouts.
+  static std::atomic<uint32_t> next_block_id{0};
   std::vector<uint32_t> resolved;  // texture parameters already resolved (report once)
   for (uint32_t t = 0; t < model.techniques.size(); ++t) {
     const TechniqueInfo& info = model.techniques[t];
@@ -160,7 +162,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
       // Uniform blocks: the store packs each under an id of its own.
       const bool glsl = stage_is_glsl(program);
       for (const ProgramUniformBlock& block : pass->shader.uniform_blocks()) {
-        BlockSlot slot{next_block++, block.name, std::vector<uint8_t>(block.size, 0), false};
+        BlockSlot slot{next_block_id++, block.name, std::vector<uint8_t>(block.size, 0), false};
         std::vector<BlockMemberLayout> members;
         if (block.reflection)
           for (const BlockMember& m : block.reflection->members) {
