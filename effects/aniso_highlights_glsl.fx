@@ -14,9 +14,11 @@ float4 LightPosition : POSITION < string UIName = "Light position"; string Objec
 float4 LightColor : DIFFUSE < string UIName = "Light color"; string UIWidget = "Color"; > = {1.0, 1.0, 1.0, 1.0};
 int toggleaniso < string UIName = "Anisotropic (runtime switch, key I)"; int UIMin = 0; int UIMax = 1; > = 1;
 int togglemodel < string UIName = "Blinn-Phong (runtime switch, key M)"; int UIMin = 0; int UIMax = 1; > = 0;
-texture ColorMap : DIFFUSEMAP < string ResourceName = "hair_color.png"; string UIName = "Color"; >;
-texture NormalMap : NORMALMAP < string ResourceName = "hair_normal.png"; string UIName = "Normal map"; >;
-texture GlossMap < string ResourceName = "hair_gloss.png"; string UIName = "Gloss (r brightness, g sqrt exponent, b strand angle)"; >;
+// An engine binds its own hair textures here; the generators bake brown hair with strands
+// along the tangent (u), fibre bumps and a gloss map in the seed's channel layout.
+texture ColorMap : DIFFUSEMAP < string Generator = "color_map"; string Pattern = "streaks"; string Color0 = "0.22 0.11 0.05"; string Color1 = "0.55 0.32 0.14"; float Softness = 0.5; int Frequency = 4; int Stretch = 16; int Width = 256; int Seed = 4; string UIName = "Color"; >;
+texture NormalMap : NORMALMAP < string Generator = "normal_map"; string Pattern = "streaks"; float Strength = 0.5; int Frequency = 4; int Stretch = 16; int Width = 256; int Seed = 4; string Alpha = "one"; string UIName = "Normal map"; >;
+texture GlossMap < string Generator = "gloss_map"; string Pattern = "linear"; float Angle = 0; float Amount = 0.1; float Brightness = 1.0; float Variation = 0.5; float Exponent = 32; int Frequency = 4; int Stretch = 16; int Width = 256; int Seed = 4; string UIName = "Gloss (r brightness, g sqrt exponent, b strand angle)"; >;
 
 GLSLShader Header
 {

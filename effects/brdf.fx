@@ -14,7 +14,9 @@ float4 CameraPosition : CAMERAPOSITION < string UIWidget = "None"; >;
 texture BRDFTexture1 < string Generator = "brdf_factor"; string Factor = "out"; int Width = 32; string Lobe = "ward"; float AlphaX = 0.15; float AlphaY = 0.35; int Samples = 16384; int Iterations = 300; int Seed = 1; string Format = "float32"; >;
 texture BRDFTexture2 < string Generator = "brdf_factor"; string Factor = "in"; int Width = 32; string Lobe = "ward"; float AlphaX = 0.15; float AlphaY = 0.35; int Samples = 16384; int Iterations = 300; int Seed = 1; string Format = "float32"; >;
 texture BRDFTexture3 < string Generator = "brdf_factor"; string Factor = "half"; int Width = 32; string Lobe = "ward"; float AlphaX = 0.15; float AlphaY = 0.35; int Samples = 16384; int Iterations = 300; int Seed = 1; string Format = "float32"; >;
-texture ObjectTexture : DIFFUSEMAP < string ResourceName = "brdf_object.png"; string UIName = "Object texture"; >;
+// An engine binds the object's own texture here; a faint checker shows the detail layer
+// without hiding the lobe.
+texture ObjectTexture : DIFFUSEMAP < string Generator = "color_map"; string Pattern = "checker"; string Color0 = "0.8 0.8 0.8"; string Color1 = "1 1 1"; int Checks = 8; int Width = 256; string UIName = "Object texture"; >;
 
 // The seed's viewer strings.
 string tec0 = "BRDF Shader";

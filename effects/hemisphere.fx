@@ -16,12 +16,15 @@ float3 SkyAxis < string UIName = "Sky axis (world)"; string Space = "World"; > =
 float4 SkyColor < string UIName = "Sky"; string UIWidget = "Color"; > = {0.55, 0.65, 0.9, 1.0};
 float4 GroundColor < string UIName = "Ground"; string UIWidget = "Color"; > = {0.3, 0.25, 0.2, 1.0};
 float3 SunDirection : DIRECTION < string UIName = "Sun direction (from the sun)"; string Object = "DirectionalLight0"; string Space = "World"; > = {-0.4, -0.8, -0.45};
-float4 SunColor : DIFFUSE < string UIName = "Sun"; string UIWidget = "Color"; > = {1.0, 0.95, 0.85, 1.0};
+float4 SunColor : DIFFUSE < string UIName = "Sun"; string UIWidget = "Color"; > = {0.6, 0.57, 0.5, 1.0};
 float4 Half = {0.5, 0.5, 0.5, 0.5};
 float4 One = {1.0, 1.0, 1.0, 1.0};
 
-texture NormalMap : NORMALMAP < string ResourceName = "head_normal.png"; string UIName = "Normal map (alpha = occlusion)"; >;
-texture BaseMap : DIFFUSEMAP < string ResourceName = "head_base.png"; string UIName = "Base texture"; >;
+// An engine binds its own textures here; the generators bake a bumpy surface whose normal
+// map alpha is the fraction of the sky its own relief blocks (the seed's "bump-mapped
+// earth": a convex sphere has no self-occlusion, the bump map carries all of it).
+texture NormalMap : NORMALMAP < string Generator = "normal_map"; string Pattern = "noise"; float Strength = 0.8; int Frequency = 8; int Octaves = 4; int Width = 256; int Seed = 5; string Alpha = "occlusion"; string UIName = "Normal map (alpha = occlusion)"; >;
+texture BaseMap : DIFFUSEMAP < string Generator = "color_map"; string Pattern = "noise"; string Color0 = "0.62 0.58 0.54"; string Color1 = "0.85 0.82 0.78"; float Softness = 0.5; int Frequency = 8; int Octaves = 4; int Width = 256; int Seed = 5; string UIName = "Base texture"; >;
 sampler2D NormalSampler = sampler_state { Texture = <NormalMap>; MinFilter = Linear; MagFilter = Linear; MipFilter = Linear; AddressU = Wrap; AddressV = Wrap; };
 sampler2D BaseSampler = sampler_state { Texture = <BaseMap>; MinFilter = Linear; MagFilter = Linear; MipFilter = Linear; AddressU = Wrap; AddressV = Wrap; };
 

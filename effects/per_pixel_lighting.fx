@@ -7,15 +7,18 @@
 #include "common.fxh"
 
 float4 CameraPosition : CAMERAPOSITION < string UIWidget = "None"; >;
-float3 LightDirection : DIRECTION < string UIName = "Light direction"; string Object = "DirectionalLight0"; string Space = "World"; > = {0.577, -0.577, 0.577};
+float3 LightDirection : DIRECTION < string UIName = "Light direction"; string Object = "DirectionalLight0"; string Space = "World"; > = {0.45, -0.55, -0.7};
 float4 LightColor : DIFFUSE < string UIName = "Light color"; string UIWidget = "Color"; > = {1.0, 1.0, 1.0, 1.0};
 float SpecularExponent : SPECULARPOWER < string UIName = "Exponent (native pow)"; float UIMin = 1.0; float UIMax = 256.0; > = 100.0;
 float4 EmbossOffset < string UIName = "Emboss shift (texels along the light)"; float UIMin = 0.0; float UIMax = 0.01; > = {0.004, 0.004, 0.0, 0.0};
 
-texture NormalMap : NORMALMAP < string ResourceName = "earth_normal.png"; string UIName = "Normal map (0.5n+0.5)"; >;
-texture ColorMap : DIFFUSEMAP < string ResourceName = "earth_color.png"; string UIName = "Color map"; >;
-texture HeightMap : HEIGHTMAP < string ResourceName = "earth_height.png"; string UIName = "Height map (emboss)"; >;
-texture HighlightMap < string ResourceName = "highlight.png"; string UIName = "Highlight spot (specular emboss)"; >;
+// An engine binds its own textures here; the generators bake the seed's bumpy earth from
+// one height field (same Frequency, Octaves, Seed): land above sea level, bumps and the
+// emboss height map agree texel for texel.
+texture NormalMap : NORMALMAP < string Generator = "normal_map"; string Pattern = "noise"; float Strength = 0.7; int Frequency = 8; int Octaves = 4; int Width = 256; int Seed = 3; string Alpha = "height"; string UIName = "Normal map (0.5n+0.5)"; >;
+texture ColorMap : DIFFUSEMAP < string Generator = "color_map"; string Pattern = "noise"; string Color0 = "0.08 0.2 0.55"; string Color1 = "0.4 0.55 0.25"; float Threshold = 0.5; float Softness = 0.04; int Frequency = 8; int Octaves = 4; int Width = 256; int Seed = 3; string UIName = "Color map"; >;
+texture HeightMap : HEIGHTMAP < string Generator = "height_map"; string Pattern = "noise"; int Frequency = 8; int Octaves = 4; int Width = 256; int Seed = 3; string UIName = "Height map (emboss)"; >;
+texture HighlightMap < string Generator = "color_map"; string Pattern = "spot"; string Color0 = "0 0 0"; string Color1 = "1 1 1"; float Radius = 0.2; int Width = 128; string UIName = "Highlight spot (specular emboss)"; >;
 // The seed's LightEval table: rgb = pow(v, 100), a = u (D3DXFillTexture's texel centres).
 texture LightEval < string Generator = "pow"; int Width = 256; int Height = 256; float Exponent = 100; string Format = "unorm8"; >;
 

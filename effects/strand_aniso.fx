@@ -37,9 +37,13 @@ float Kd < string UIName = "Diffuse"; float UIMin = 0.0; float UIMax = 1.0; floa
 float Ks < string UIName = "Specular"; float UIMin = 0.0; float UIMax = 2.0; float UIStep = 0.01; > = 0.8;
 float SpecularExponent : SPECULARPOWER < string UIName = "Exponent (analytic techniques; tables bake STRAND_EXPONENT)"; float UIMin = 1.0; float UIMax = 256.0; > = STRAND_EXPONENT;
 
-texture DirectionMap < string ResourceName = "strand_direction.png"; string UIName = "Direction of anisotropy (tangent space, 0.5x+0.5)"; >;
-texture BaseMap : DIFFUSEMAP < string ResourceName = "strand_base.png"; string UIName = "Base color (alpha = gloss)"; >;
-texture BumpMap : NORMALMAP < string ResourceName = "strand_bump.png"; string UIName = "Bump map (tangent-space normals)"; >;
+// An engine binds its own textures to DirectionMap, BaseMap and BumpMap; the generators
+// bake brushed metal so the effect renders its seed's picture on its own: strands along
+// u with a little jitter (Pattern = "circular" gives a record's grooves, "radial" a
+// brushed disc), streaked grey metal, fibre bumps along the same strands.
+texture DirectionMap < string Generator = "direction_field"; string Pattern = "linear"; float Angle = 0; float Amount = 0.12; int Frequency = 16; int Width = 256; int Seed = 1; string UIName = "Direction of anisotropy (tangent space, 0.5x+0.5)"; >;
+texture BaseMap : DIFFUSEMAP < string Generator = "color_map"; string Pattern = "streaks"; string Color0 = "0.45 0.45 0.48"; string Color1 = "0.75 0.75 0.78"; float Threshold = 0.5; float Softness = 0.5; float Gloss0 = 0.6; float Gloss1 = 1.0; int Frequency = 4; int Stretch = 16; int Width = 256; int Seed = 2; string UIName = "Base color (alpha = gloss)"; >;
+texture BumpMap : NORMALMAP < string Generator = "normal_map"; string Pattern = "streaks"; float Strength = 0.6; int Frequency = 4; int Stretch = 16; int Width = 256; int Seed = 2; string Alpha = "one"; string UIName = "Bump map (tangent-space normals)"; >;
 // Both strand terms in one table: rgb = L.N', a = (V.R')^n with the exponent pre-baked.
 texture StrandLut < string Generator = "strand"; int Width = STRAND_LUT_SIZE; float Exponent = STRAND_EXPONENT; string Mapping = "texel_centre"; string Index = "dot"; string Format = "unorm8"; >;
 // The seed's layout: offset by half the table so wrap addressing adds the 0.5 bias.

@@ -185,7 +185,9 @@ TEST(Effects, GeneratedTexturesNameKnownGeneratorsWithValidParameters) {
       EXPECT_TRUE(baked.ok()) << baked.error_id << ": " << baked.message;
     }
   }
-  EXPECT_EQ(generated, 8);  // strand x2, pow, noise3d, ln_hn, brdf_factor x3
+  // Tables: strand x2, pow, noise3d, ln_hn, brdf_factor x3; texture assets (no image files
+  // anywhere): strand 3, GLSL hair 3, per-pixel lighting 4, hemisphere 2, BRDF object 1.
+  EXPECT_EQ(generated, 21);
 }
 
 TEST(Effects, StrandFeatureVariantsCompileOnlyWhatTheSceneEnables) {
