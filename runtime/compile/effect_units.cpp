@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "effect_shader_text.h"
+#include "fx/ascii_case.h"
 #include "fx/compile/hlsl_compat.h"
 
 namespace fx {
@@ -25,14 +26,6 @@ const StageUnit* EffectPass::find(ShaderStage stage) const {
 }
 
 namespace {
-
-bool iequals(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i)
-    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i])))
-      return false;
-  return true;
-}
 
 // The pipeline stage a pass state sets: D3D9 assignments, D3D10/11 calls, nvFX names.
 std::optional<ShaderStage> stage_of_state(std::string_view name) {
@@ -154,8 +147,7 @@ std::string join_tokens(const std::vector<Token>& toks, ast::TokenSpan span) {
 
 // "ps_2_a"/"ps_2_b" -> "ps_2_x" (glslang has one SM2 extended profile); lower case.
 std::string normalize_profile(std::string_view profile) {
-  std::string p;
-  for (char c : profile) p.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+  std::string p = ascii_lower(profile);
   if (p.size() >= 6 && p[4] == '_' && (p[5] == 'a' || p[5] == 'b')) p[5] = 'x';
   return p;
 }

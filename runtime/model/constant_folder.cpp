@@ -10,7 +10,6 @@
 namespace fx {
 namespace {
 
-using model_detail::iequals;
 
 // HLSL's usual arithmetic conversions pick the "larger" base.
 BaseType promote(BaseType a, BaseType b) { return static_cast<BaseType>(std::max(static_cast<int>(a), static_cast<int>(b))); }

@@ -11,7 +11,6 @@
 namespace fx {
 namespace {
 
-using model_detail::iequals;
 using model_detail::ResolveContext;
 
 // Folds an initializer; errors that make the effect wrong (division by zero, a bad

@@ -69,7 +69,7 @@ ParameterStore::ParameterStore(const EffectModel& model, ParameterPool* pool, Di
       }
     }
     s.by_name.emplace(p.name, i);
-    if (!p.semantic.empty()) s.by_semantic.emplace(model_detail::lower(p.semantic), i);
+    if (!p.semantic.empty()) s.by_semantic.emplace(ascii_lower(p.semantic), i);
   }
   for (uint32_t i = 0; i < s.top_count; ++i) {
     s.classify(s.nodes[i]);
@@ -87,7 +87,7 @@ Param ParameterStore::find(std::string_view name) const {
 }
 
 Param ParameterStore::by_semantic(std::string_view semantic) const {
-  auto it = impl_->by_semantic.find(model_detail::lower(semantic));
+  auto it = impl_->by_semantic.find(ascii_lower(semantic));
   return it == impl_->by_semantic.end() ? Param{} : Param{it->second, impl_->generation};
 }
 

@@ -13,7 +13,7 @@ namespace fx::model_detail {
 namespace {
 
 std::optional<PassStage> stage_of(std::string_view state) {
-  std::string n = lower(state);
+  std::string n = ascii_lower(state);
   if (n.starts_with("set")) n = n.substr(3);
   if (n == "vertexshader" || n == "vertexprogram") return PassStage::vertex;
   if (n == "pixelshader" || n == "fragmentshader" || n == "fragmentprogram") return PassStage::pixel;

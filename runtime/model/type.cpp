@@ -11,9 +11,6 @@
 namespace fx {
 namespace {
 
-using model_detail::iequals;
-using model_detail::lower;
-
 std::optional<BaseType> scalar_name(std::string_view n) {
   if (n == "bool") return BaseType::boolean;
   if (n == "int" || n == "min16int" || n == "min12int" || n == "signed int" || n == "int32_t") return BaseType::int32;
@@ -68,7 +65,7 @@ Type object_type(TypeClass cls, std::string kind) {
 
 // Texture, sampler, shader and state-object names (case-insensitive, as fxc).
 std::optional<Type> object_name(std::string_view name, std::string_view template_arg) {
-  std::string n = lower(name);
+  std::string n = ascii_lower(name);
   static const std::pair<const char*, TextureShape> textures[] = {
       {"texture", TextureShape::any}, {"texture1d", TextureShape::tex1d}, {"texture2d", TextureShape::tex2d},
       {"texture3d", TextureShape::tex3d}, {"texturecube", TextureShape::cube},

@@ -1,8 +1,8 @@
 // The shipped generation profiles, compiled in from profiles/*.json (see CMakeLists.txt).
 #include <algorithm>
-#include <cctype>
 #include <nlohmann/json.hpp>
 
+#include "fx/ascii_case.h"
 #include "fx/select/caps_sources.h"
 
 namespace fx {
@@ -14,16 +14,6 @@ struct EmbeddedCapsProfile {
 extern const EmbeddedCapsProfile kEmbeddedCapsProfiles[];
 extern const size_t kEmbeddedCapsProfileCount;
 }  // namespace detail
-
-namespace {
-bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() &&
-         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) ==
-                  std::tolower(static_cast<unsigned char>(y));
-         });
-}
-}  // namespace
 
 std::vector<std::string> caps_profile_names() {
   std::vector<std::string> names;

@@ -3,8 +3,9 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <nlohmann/json.hpp>
+
+#include "fx/ascii_case.h"
 
 namespace fx {
 namespace {
@@ -217,8 +218,7 @@ std::string canonical_shader_profile(std::string_view profile) {
   std::string out;
   out.reserve(profile.size());
   for (char c : profile) {
-    if (c == '.') c = '_';
-    out.push_back(char(std::tolower(static_cast<unsigned char>(c))));
+    out.push_back(c == '.' ? '_' : ascii_lower(c));
   }
   return out;
 }

@@ -5,17 +5,9 @@
 #include <cctype>
 #include <cmath>
 
-namespace fx {
-namespace {
-bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() &&
-         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) ==
-                  std::tolower(static_cast<unsigned char>(y));
-         });
-}
-}  // namespace
+#include "fx/ascii_case.h"
 
+namespace fx {
 AnnotationMap::AnnotationMap(std::initializer_list<std::pair<std::string, AnnotationValue>> entries)
     : entries_(entries) {}
 

@@ -2,11 +2,11 @@
 #include "fx/select/technique_validation.h"
 
 #include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <memory>
 #include <tuple>
 
+#include "fx/ascii_case.h"
 #include "fx/model/effect_model.h"
 #include "fx/select/caps_requirement.h"
 #include "fx/state_table.h"
@@ -14,13 +14,6 @@
 
 namespace fx {
 namespace {
-
-bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() &&
-         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-         });
-}
 
 std::string caps_name(const DeviceCaps& caps) { return caps.name.empty() ? "this device" : caps.name; }
 

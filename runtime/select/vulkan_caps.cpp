@@ -1,11 +1,11 @@
 // DeviceCaps from Vulkan: a live physical device or a `vulkaninfo --json` report. Both
 // paths fill the same VulkanFacts so they derive identical caps for the same device.
 #include <algorithm>
-#include <cctype>
 #include <cstddef>
 #include <cstring>
 #include <nlohmann/json.hpp>
 
+#include "fx/ascii_case.h"
 #include "fx/select/caps_sources.h"
 
 namespace fx {
@@ -127,9 +127,7 @@ constexpr const char* kVulkan13Features[] = {"dynamicRendering", "synchronizatio
 std::string device_type_name(std::string_view vk_name) {
   constexpr std::string_view prefix = "VK_PHYSICAL_DEVICE_TYPE_";
   if (vk_name.starts_with(prefix)) vk_name.remove_prefix(prefix.size());
-  std::string out(vk_name);
-  for (char& c : out) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return out;
+  return ascii_lower(vk_name);
 }
 
 const char* device_type_name(VkPhysicalDeviceType t) {
