@@ -81,6 +81,46 @@ std::vector<uint32_t> ParameterStore::Impl::match_into(const Impl& other) const 
   return out;
 }
 
+// The copies that place one member's words into a block, with D3D matrix conventions:
+// column_major puts HLSL column c in register c, row_major puts row r in register r.
+// Words that would fall outside the member's range or the block are left out; adjacent
+// words merge into one run.
+void ParameterStore::Impl::plan_runs(const Node& n, uint32_t node, const BlockMemberLayout& m,
+                                     uint32_t block_size, std::vector<WordRun>& runs) {
+  const Type elem = n.type.without_arrays();
+  const uint32_t per = elem.component_count();
+  const uint32_t count = n.type.element_count();
+  const uint32_t mstride = m.matrix_stride ? m.matrix_stride : 16;
+  const uint32_t astride = m.array_stride ? m.array_stride : default_element_stride(elem, mstride);
+  const uint64_t limit = std::min<uint64_t>(static_cast<uint64_t>(m.offset) + m.size, block_size);
+  auto put = [&](uint64_t at, uint32_t word) {
+    if (at + 4 > limit) return;
+    auto dst = static_cast<uint32_t>(at);
+    if (!runs.empty()) {
+      WordRun& last = runs.back();
+      if (last.node == node && last.src + last.words == word && last.dst + last.words * 4 == dst) {
+        ++last.words;
+        return;
+      }
+    }
+    runs.push_back({node, word, dst, 1});
+  };
+  for (uint32_t e = 0; e < count; ++e) {
+    const uint64_t base = m.offset + static_cast<uint64_t>(e) * (count > 1 ? astride : 0);
+    const uint32_t first = e * per;
+    if (elem.cls == TypeClass::matrix) {
+      for (uint32_t r = 0; r < elem.rows; ++r)
+        for (uint32_t c = 0; c < elem.cols; ++c) {
+          uint64_t at = m.order == MatrixOrder::column_major ? base + c * mstride + r * 4 : base + r * mstride + c * 4;
+          put(at, first + r * elem.cols + c);
+        }
+    } else {
+      // Doubles are held as float; booleans are 32-bit 0/1 as HLSL's bool in a cbuffer.
+      for (uint32_t k = 0; k < per; ++k) put(base + k * 4, first + k);
+    }
+  }
+}
+
 ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMemberLayout> members, uint32_t block_size) {
   Impl& s = *impl_;
   uint32_t slot;
@@ -106,6 +146,7 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
       return fail(ParamStatus::size_mismatch, "member '" + m.name + "' lies outside the block (" +
                                                   std::to_string(block_size) + " bytes)");
     b.members.push_back({node, m});
+    Impl::plan_runs(s.nodes[node], node, m, block_size, b.runs);
     const Impl::Node& n = s.nodes[node];
     auto& tb = s.top_blocks[n.top];
     if (std::find(tb.begin(), tb.end(), slot) == tb.end()) tb.push_back(slot);
@@ -136,38 +177,8 @@ ParamStatus ParameterStore::write_block(uint32_t block, std::span<uint8_t> out) 
   if (out.size() < b.size)
     return fail(ParamStatus::size_mismatch, "block " + std::to_string(block) + " needs " + std::to_string(b.size) +
                                                 " bytes, the buffer has " + std::to_string(out.size()));
-  for (const Impl::Placement& p : b.members) {
-    const Impl::Node& n = s.nodes[p.node];
-    const uint32_t* words = s.data(n);
-    const Type elem = n.type.without_arrays();
-    const uint32_t per = elem.component_count();
-    const uint32_t count = n.type.element_count();
-    const uint32_t mstride = p.layout.matrix_stride ? p.layout.matrix_stride : 16;
-    const uint32_t astride = p.layout.array_stride ? p.layout.array_stride : default_element_stride(elem, mstride);
-    const uint64_t limit = static_cast<uint64_t>(p.layout.offset) + p.layout.size;
-    auto put = [&](uint64_t at, uint32_t word) {
-      if (at + 4 <= limit && at + 4 <= out.size()) std::memcpy(out.data() + at, &word, 4);
-    };
-    for (uint32_t e = 0; e < count; ++e) {
-      const uint64_t base = p.layout.offset + static_cast<uint64_t>(e) * (count > 1 ? astride : 0);
-      const uint32_t* w = words + static_cast<size_t>(e) * per;
-      if (elem.cls == TypeClass::matrix) {
-        for (uint32_t r = 0; r < elem.rows; ++r)
-          for (uint32_t c = 0; c < elem.cols; ++c) {
-            // column_major: register c holds HLSL column c; row_major: register r holds row r.
-            uint64_t at = p.layout.order == MatrixOrder::column_major ? base + c * mstride + r * 4
-                                                                       : base + r * mstride + c * 4;
-            put(at, w[r * elem.cols + c]);
-          }
-      } else {
-        for (uint32_t k = 0; k < per; ++k) {
-          uint32_t word = w[k];
-          // Doubles are held as float; booleans are 32-bit 0/1 as HLSL's bool in a cbuffer.
-          put(base + k * 4, word);
-        }
-      }
-    }
-  }
+  for (const Impl::WordRun& r : b.runs)
+    std::memcpy(out.data() + r.dst, s.data(s.nodes[r.node]) + r.src, r.words * sizeof(uint32_t));
   b.dirty = false;
   for (auto& [entry, seen] : b.pooled) seen = s.pool->entries_[entry].version;
   return {};

@@ -69,12 +69,20 @@ struct ParameterStore::Impl {
     uint32_t node;
     BlockMemberLayout layout;
   };
+  // One contiguous copy into a block: `words` 32-bit words of a node, from word `src` to
+  // byte offset `dst`. bind_layout plans them once, so write_block only copies.
+  struct WordRun {
+    uint32_t node, src, dst, words;
+  };
   struct Block {
     uint32_t id = 0, size = 0;
     std::vector<Placement> members;
+    std::vector<WordRun> runs;  // planned by plan_runs
     bool dirty = true;
     std::vector<std::pair<uint32_t, uint64_t>> pooled;  // pool entry, version last written
   };
+  static void plan_runs(const Node& n, uint32_t node, const BlockMemberLayout& m, uint32_t block_size,
+                        std::vector<WordRun>& runs);
 
   const EffectModel* model = nullptr;
   ParameterPool* pool = nullptr;
