@@ -8,7 +8,9 @@
 
 float ringscale < string UIName = "Ring scale"; float UIMin = 1.0; float UIMax = 40.0; > = 10.0;
 float point_scale < string UIName = "Point scale"; float UIMin = 0.1; float UIMax = 4.0; > = 1.0;
-float turbulence < string UIName = "Turbulence"; float UIMin = 0.0; float UIMax = 2.0; > = 1.0;
+// The seed uses 1.0 in RenderMan scene units; on unit-sized meshes that much noise scrambles
+// the rings, so the default here is 0.1.
+float turbulence < string UIName = "Turbulence"; float UIMin = 0.0; float UIMax = 2.0; > = 0.1;
 float3 lightwood < string UIName = "Light wood"; string UIWidget = "Color"; > = {0.3, 0.12, 0.03};
 float3 darkwood < string UIName = "Dark wood"; string UIWidget = "Color"; > = {0.05, 0.01, 0.005};
 float Ka < string UIName = "Ambient"; float UIMin = 0.0; float UIMax = 1.0; > = 0.2;
