@@ -17,7 +17,8 @@ static const float kDegenerateLength = 4.76837158e-7;
 float3 normalize_or(float3 v, float3 fallback)
 {
     float len = length(v);
-    return len > kDegenerateLength ? v / len : fallback;
+    // An infinite component makes len infinite and v / len NaN: fall back, as for zero.
+    return len > kDegenerateLength && !isinf(len) ? v / len : fallback;
 }
 
 // pow(x, y) with x clamped to [0, 1] and pow(0, 0) = 1: pow(x<0, y) and pow(0, 0) are

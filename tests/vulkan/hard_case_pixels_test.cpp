@@ -201,13 +201,9 @@ TEST_F(HardCasePixels, StrandTermsAreFiniteAndWithinTwoLsbOfTheDoubleReference) 
   check_pixels(ctx(), hard_samples(false));
 }
 
-// Known defect, disabled until effects/common.fxh is fixed: its normalize_or tests only
-// len > kDegenerateLength, so an infinite component gives len = Inf and v / len = Inf / Inf
-// = NaN (guarded.h's normalize_or returns the fallback for any non-finite input). On
-// lavapipe min/clamp/saturate then turn the NaN into arbitrary finite colours (diffuse 255
-// where the fallback gives 0.95). Fix: `len > kDegenerateLength && !isinf(len)`.
-// Run with --gtest_also_run_disabled_tests.
-TEST_F(HardCasePixels, DISABLED_InfiniteInputsFallBackAsGuardedHDocuments) {
+// Infinite components: normalize_or must fall back (len = Inf would make v / len NaN, which
+// lavapipe's min/clamp/saturate then turn into arbitrary finite colours).
+TEST_F(HardCasePixels, InfiniteInputsFallBackAsGuardedHDocuments) {
   check_pixels(ctx(), hard_samples(true));
 }
 
