@@ -20,6 +20,7 @@ struct ImageSlot {
 // A uniform block of a pass, packed from the parameter store under block id `id`.
 struct BlockSlot {
   uint32_t id = 0;
+  uint32_t index = 0;  // in the program's uniform_blocks(), resolved once at create()
   std::string name;
   std::vector<uint8_t> staging;
   bool written = false;
@@ -34,6 +35,10 @@ struct EffectBinding::Pass {
   std::vector<BlockSlot> blocks;
   std::vector<ImageSlot> images;
   std::vector<std::optional<VertexInput>> inputs;  // per vertex layout id
+  // Pipelines per vertex layout id for `pipeline_formats`: pipelines live as long as the
+  // binding, so apply() looks the key up once per layout and format change, not per call.
+  RenderingFormats pipeline_formats;
+  std::vector<VkPipeline> pipelines;
 };
 
 struct EffectBinding::Technique {
@@ -161,8 +166,10 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
       pass->resources = std::make_unique<PassResources>(pass->shader);
       // Uniform blocks: the store packs each under an id of its own.
       const bool glsl = stage_is_glsl(program);
-      for (const ProgramUniformBlock& block : pass->shader.uniform_blocks()) {
-        BlockSlot slot{next_block_id++, block.name, std::vector<uint8_t>(block.size, 0), false};
+      const auto& program_blocks = pass->shader.uniform_blocks();
+      for (uint32_t index = 0; index < program_blocks.size(); ++index) {
+        const ProgramUniformBlock& block = program_blocks[index];
+        BlockSlot slot{next_block_id++, index, block.name, std::vector<uint8_t>(block.size, 0), false};
         std::vector<BlockMemberLayout> members;
         if (block.reflection)
           for (const BlockMember& m : block.reflection->members) {
@@ -316,6 +323,7 @@ bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const Renderi
   }
   if (textures_pending_ && !bind_textures(sink)) return false;
   active_ = techniques_[technique].get();
+  formats_ = formats;
   recorder_->begin(cmd, formats, viewport, scissor);
   return true;
 }
@@ -329,13 +337,23 @@ bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, Diagnosti
   for (BlockSlot& block : pass.blocks) {
     if (block.written && !params_->dirty(block.id)) continue;
     params_->write_block(block.id, block.staging);
-    if (!pass.resources->set_block_bytes(block.name, 0, block.staging.data(), uint32_t(block.staging.size()), sink))
+    if (!pass.resources->set_block_bytes(block.index, 0, block.staging.data(), uint32_t(block.staging.size()), sink))
       return false;
     block.written = true;
   }
   const VertexInput* input = vertex_input(pass, vertex_layout, sink);
   if (!input) return false;
-  PassDesc desc{&pass.shader, pass.state, input, pass.resources.get()};
+  if (!(pass.pipeline_formats == formats_)) {
+    pass.pipeline_formats = formats_;
+    std::fill(pass.pipelines.begin(), pass.pipelines.end(), VK_NULL_HANDLE);
+  }
+  if (pass.pipelines.size() <= vertex_layout) pass.pipelines.resize(layouts_.size(), VK_NULL_HANDLE);
+  VkPipeline& pipeline = pass.pipelines[vertex_layout];
+  if (!pipeline) {
+    pipeline = pipelines_->get(pass.shader, pass.state, *input, formats_, recorder_->dynamic(), sink);
+    if (!pipeline) return false;
+  }
+  PassDesc desc{&pass.shader, pass.state, input, pass.resources.get(), pipeline};
   return recorder_->apply(desc, sink);
 }
 

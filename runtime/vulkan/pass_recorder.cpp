@@ -31,16 +31,20 @@ void PassRecorder::end() {
 
 bool PassRecorder::apply(const PassDesc& pass, DiagnosticSink& sink) {
   ++stats_.passes;
-  VkPipeline pipeline = pipelines_->get(*pass.program, pass.state, *pass.vertex_input, formats_,
-                                        dynamic_, sink);
+  VkPipeline pipeline = pass.pipeline ? pass.pipeline
+                                      : pipelines_->get(*pass.program, pass.state, *pass.vertex_input,
+                                                        formats_, dynamic_, sink);
   if (!pipeline) return false;
   if (pipeline != pipeline_) {
     vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     ++stats_.pipeline_binds;
     pipeline_ = pipeline;
   }
-  record_dynamic_state(pass.state, !state_.has_value());
-  state_ = pass.state;
+  // Consecutive passes with equal state (every object of a group) have nothing to record.
+  if (!state_ || !(pass.state == *state_)) {
+    record_dynamic_state(pass.state, !state_.has_value());
+    state_ = pass.state;
+  }
   return bind_descriptors(pass, sink);
 }
 
@@ -139,7 +143,8 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
   const ShaderProgram& program = *pass.program;
   const auto& blocks = program.uniform_blocks();
   const auto& images = program.images();
-  std::vector<uint32_t> offsets(blocks.size());
+  std::vector<uint32_t>& offsets = next_offsets_;
+  offsets.resize(blocks.size());
   for (size_t i = 0; i < blocks.size(); ++i) {
     PassResources::Block& b = r.blocks_[i];
     if (b.dirty || !frames_->still_valid(b.uploaded_frame)) {
@@ -170,9 +175,14 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
     return true;
 
   // Descriptor writes: uniform blocks then images.
-  std::vector<VkDescriptorBufferInfo> buffers(blocks.size());
-  std::vector<VkDescriptorImageInfo> image_infos(images.size());
-  std::vector<VkWriteDescriptorSet> writes;
+  // Reserved up front: the writes point into these arrays.
+  std::vector<VkDescriptorBufferInfo>& buffers = buffer_infos_;
+  std::vector<VkDescriptorImageInfo>& image_infos = image_infos_;
+  std::vector<VkWriteDescriptorSet>& writes = writes_;
+  buffers.resize(blocks.size());
+  image_infos.resize(images.size());
+  writes.clear();
+  writes.reserve(blocks.size() + images.size());
   auto write_all = [&](VkDescriptorSet set) {
     for (size_t i = 0; i < blocks.size(); ++i) {
       buffers[i] = {frames_->ring_buffer(), push ? offsets[i] : 0, blocks[i].size};
@@ -223,7 +233,7 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
       set_ = r.set_;
     }
   }
-  offsets_ = std::move(offsets);
+  offsets_.swap(offsets);
   layout_ = program.pipeline_layout();
   return true;
 }

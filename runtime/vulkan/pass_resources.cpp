@@ -2,6 +2,7 @@
 #include "fx/vulkan/pass_resources.h"
 
 #include <cstring>
+#include <string>
 
 namespace fx::vk {
 
@@ -43,18 +44,26 @@ bool PassResources::set_uniform(std::string_view name, const void* data, uint32_
 bool PassResources::set_block_bytes(std::string_view block, uint32_t offset, const void* data,
                                     uint32_t bytes, DiagnosticSink& sink) {
   const auto& blocks = program_->uniform_blocks();
-  for (size_t i = 0; i < blocks.size(); ++i) {
-    if (blocks[i].name != block) continue;
-    if (uint64_t(offset) + bytes > blocks_[i].data.size()) {
-      sink.error("vk-uniform-size", {}, "write past the end of uniform block '" +
-                                            std::string(block) + "'");
-      return false;
-    }
-    write_if_changed(blocks_[i].data, offset, data, bytes, blocks_[i].dirty);
-    return true;
-  }
+  for (size_t i = 0; i < blocks.size(); ++i)
+    if (blocks[i].name == block) return set_block_bytes(uint32_t(i), offset, data, bytes, sink);
   sink.error("vk-uniform-unknown", {}, "the program has no uniform block '" + std::string(block) + "'");
   return false;
+}
+
+bool PassResources::set_block_bytes(uint32_t index, uint32_t offset, const void* data, uint32_t bytes,
+                                    DiagnosticSink& sink) {
+  if (index >= blocks_.size()) {
+    sink.error("vk-uniform-unknown", {}, "the program has no uniform block #" + std::to_string(index));
+    return false;
+  }
+  Block& b = blocks_[index];
+  if (uint64_t(offset) + bytes > b.data.size()) {
+    sink.error("vk-uniform-size", {}, "write past the end of uniform block '" +
+                                          program_->uniform_blocks()[index].name + "'");
+    return false;
+  }
+  write_if_changed(b.data, offset, data, bytes, b.dirty);
+  return true;
 }
 
 bool PassResources::bind(std::string_view name, const Texture& texture, VkSampler sampler,

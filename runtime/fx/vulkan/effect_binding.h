@@ -135,6 +135,7 @@ class EffectBinding {
   std::vector<std::pair<uint32_t, Texture>> app_textures_;  // texture parameter -> app view
   bool textures_pending_ = true;
   Technique* active_ = nullptr;
+  RenderingFormats formats_;  // of the begun technique
   int64_t counted_objects_ = 0;
   static std::atomic<int64_t> live_objects_;
 };

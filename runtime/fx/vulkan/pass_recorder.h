@@ -23,6 +23,9 @@ struct PassDesc {
   PipelineState state;
   const VertexInput* vertex_input = nullptr;
   PassResources* resources = nullptr;  // its program must be `program`
+  // When set, the pipeline the cache gives for this pass at the begun formats: a caller that
+  // remembers it spares the recorder hashing the pipeline key on every apply.
+  VkPipeline pipeline = VK_NULL_HANDLE;
 };
 
 // What the recorder recorded (and skipped), for tests and benchmarks.
@@ -72,6 +75,11 @@ class PassRecorder {
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
   std::vector<uint32_t> offsets_;
+  // Scratch reused by every apply so recording allocates nothing once warm.
+  std::vector<uint32_t> next_offsets_;
+  std::vector<VkDescriptorBufferInfo> buffer_infos_;
+  std::vector<VkDescriptorImageInfo> image_infos_;
+  std::vector<VkWriteDescriptorSet> writes_;
   const PassResources* pushed_ = nullptr;
   ApplyStats stats_;
 };
