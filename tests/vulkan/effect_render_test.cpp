@@ -61,7 +61,9 @@ TEST_F(EffectRenderTest, SeedEffectsMatchGoldenImages) {
     SCOPED_TRACE(c.golden);
     auto r = bind_effect(ctx(), effects_dir() + "/" + c.file, c.technique, c.mesh, 128);
     ASSERT_TRUE(r);
-    if (c.float_param) ASSERT_TRUE(r->effect->params->set(r->effect->params->find(c.float_param), c.value));
+    if (c.float_param) {
+      ASSERT_TRUE(r->effect->params->set(r->effect->params->find(c.float_param), c.value));
+    }
     auto image = r->render();
     ASSERT_TRUE(image);
     // Not a blank frame: the object covers a good part of the image.

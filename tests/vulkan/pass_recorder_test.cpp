@@ -262,7 +262,9 @@ TEST_F(PassRecorderTest, SamplerCacheSharesAndClampsToTheDevice) {
   EXPECT_EQ(samplers.size(), 1u);
   const SamplerDesc e = samplers.effective(a);
   EXPECT_LE(e.max_anisotropy, std::max(1.0f, ctx().info().limits.maxSamplerAnisotropy));
-  if (!ctx().features().sampler_anisotropy) EXPECT_EQ(e.max_anisotropy, 1.0f);
+  if (!ctx().features().sampler_anisotropy) {
+    EXPECT_EQ(e.max_anisotropy, 1.0f);
+  }
   EXPECT_LE(e.mip_lod_bias, ctx().info().limits.maxSamplerLodBias);
 }
 
