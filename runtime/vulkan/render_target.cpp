@@ -188,6 +188,22 @@ std::optional<fx::Image> RenderTarget::readback_pixels(DiagnosticSink& sink) con
   return image;
 }
 
+std::optional<fx::ImageF> RenderTarget::readback_floats(DiagnosticSink& sink) const {
+  VkFormat format = color_.format();
+  if (format != VK_FORMAT_R32G32B32A32_SFLOAT || !readback_) {
+    sink.error("vk-readback-format", {},
+               "reading back color format " + std::to_string(int(format)) +
+                   " as floats is not supported (R32G32B32A32_SFLOAT only)");
+    return std::nullopt;
+  }
+  fx::ImageF image = fx::ImageF::blank(width_, height_, 4);
+  if (!readback_.read(image.pixels.data(), image.pixels.size() * sizeof(float))) {
+    sink.error("vk-readback-format", {}, "readback buffer is smaller than the image");
+    return std::nullopt;
+  }
+  return image;
+}
+
 std::optional<fx::Image> RenderTarget::read_color(const Context& ctx, DiagnosticSink& sink) {
   if (!readable_rgba8(color_.format())) return readback_pixels(sink);  // reports the format
   if (!submit_and_wait(

@@ -88,10 +88,10 @@ inline void add_quad(std::vector<Vertex>& v, float x0, float y0, float x1, float
 class PassHarness {
  public:
   PassHarness(Context& ctx, DynamicStateSet dynamic, uint32_t size = 8,
-              DepthAttachment depth = DepthAttachment::d24s8)
+              DepthAttachment depth = DepthAttachment::d24s8, VkFormat color = VK_FORMAT_R8G8B8A8_UNORM)
       : ctx_(ctx) {
     DiagnosticSink sink;
-    target_ = RenderTarget::create(ctx, {size, size, VK_FORMAT_R8G8B8A8_UNORM, depth, 0, "pass test"}, sink);
+    target_ = RenderTarget::create(ctx, {size, size, color, depth, 0, "pass test"}, sink);
     pipelines_ = PipelineCache::create(ctx, sink);
     frames_ = FrameResources::create(ctx, {}, sink);
     EXPECT_TRUE(target_ && pipelines_ && frames_) << describe(sink);
@@ -122,6 +122,31 @@ class PassHarness {
   fx::Image render(const std::function<void(VkCommandBuffer, PassRecorder&)>& record,
                    std::array<float, 4> clear = {0, 0, 0, 1}) {
     DiagnosticSink sink;
+    draw_frame(record, clear);
+    auto image = target_->readback_pixels(sink);
+    EXPECT_TRUE(image.has_value()) << describe(sink);
+    return image ? *image : fx::Image{};
+  }
+
+  // The same for an R32G32B32A32_SFLOAT harness: the float values as the shader wrote them.
+  fx::ImageF render_floats(const std::function<void(VkCommandBuffer, PassRecorder&)>& record,
+                           std::array<float, 4> clear = {0, 0, 0, 1}) {
+    DiagnosticSink sink;
+    draw_frame(record, clear);
+    auto image = target_->readback_floats(sink);
+    EXPECT_TRUE(image.has_value()) << describe(sink);
+    return image ? *image : fx::ImageF{};
+  }
+
+  PassRecorder& recorder() { return *recorder_; }
+  PipelineCache& pipelines() { return *pipelines_; }
+  FrameResources& frames() { return *frames_; }
+
+ private:
+  // begin_frame, clear, `record` between recorder begin/end, readback recorded and waited for.
+  void draw_frame(const std::function<void(VkCommandBuffer, PassRecorder&)>& record,
+                  std::array<float, 4> clear) {
+    DiagnosticSink sink;
     frames_->begin_frame();
     const bool ok = submit_and_wait(ctx_, [&](VkCommandBuffer cmd) {
       ClearValues cv;
@@ -134,16 +159,8 @@ class PassHarness {
       target_->record_readback(cmd);
     }, sink);
     EXPECT_TRUE(ok) << describe(sink);
-    auto image = target_->readback_pixels(sink);
-    EXPECT_TRUE(image.has_value()) << describe(sink);
-    return image ? *image : fx::Image{};
   }
 
-  PassRecorder& recorder() { return *recorder_; }
-  PipelineCache& pipelines() { return *pipelines_; }
-  FrameResources& frames() { return *frames_; }
-
- private:
   Context& ctx_;
   std::optional<RenderTarget> target_;
   std::optional<PipelineCache> pipelines_;
