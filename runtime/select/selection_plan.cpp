@@ -73,6 +73,9 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
     if (!(h >= 0.f)) h = 0.f;
     widen(e.dist_min, e.dist_max, h, e.dist_min_h, e.dist_max_h);
     widen(e.size_min, e.size_max, h, e.size_min_h, e.size_max_h);
+    // A technique without a measured error ranks as exact (the author's reference) but never
+    // passes an error budget: the budget is a promise the annotation has to back.
+    e.error_known = a.find("MaxError") || a.find("MaxErrorAbs");
     e.error = number({"MaxError"}, 0.f);
     if (!a.find("MaxError")) e.error = number({"MaxErrorAbs"}, 0.f) * 255.f;  // absolute -> LSB
     e.cost_ms = number({"CostMs"}, 0.f);
@@ -199,18 +202,37 @@ uint8_t SelectionPlan::failures(const Entry& e, const SelectionQuery& q, bool wi
     float smin = widened ? e.size_min_h : e.size_min, smax = widened ? e.size_max_h : e.size_max;
     if (q.screen_size < smin || q.screen_size >= smax) f |= fail_screen;
   }
-  if (e.error > q.max_error) f |= fail_error;
-  if (e.cost_ms + e.cost_ns_per_pixel * q.pixels * 1e-6f > q.cost_budget_ms) f |= fail_cost;
+  if (e.error > q.max_error || (!e.error_known && has_error_limit(q))) f |= fail_error;
+  if (cost_ms(e, q) > q.cost_budget_ms) f |= fail_cost;
   return f;
+}
+
+float SelectionPlan::cost_ms(const Entry& e, const SelectionQuery& q) {
+  return e.cost_ms + e.cost_ns_per_pixel * q.pixels * 1e-6f;
+}
+
+bool SelectionPlan::has_error_limit(const SelectionQuery& q) { return q.max_error < kInf; }
+
+uint32_t SelectionPlan::first_survivor(const SelectionQuery& q, uint32_t last) const {
+  // Without an error budget the best-ranked survivor wins; with one, "good enough" is
+  // decided, so the cheapest survivor wins (ties keep rank order).
+  const bool cheapest = has_error_limit(q);
+  uint32_t best = no_technique;
+  float best_cost = kInf;
+  for (uint32_t i : order_) {
+    if (failures(entries_[i], q, i == last) != 0) continue;
+    if (!cheapest) return i;
+    float c = cost_ms(entries_[i], q);
+    if (best == no_technique || c < best_cost) best = i, best_cost = c;
+  }
+  return best;
 }
 
 uint32_t SelectionPlan::choose(const SelectionQuery& q, uint32_t last, SelectionRoute* route,
                                uint32_t* chain_start) const {
-  for (uint32_t i : order_) {
-    if (failures(entries_[i], q, i == last) == 0) {
-      *route = SelectionRoute::direct;
-      return i;
-    }
+  if (uint32_t i = first_survivor(q, last); i != no_technique) {
+    *route = SelectionRoute::direct;
+    return i;
   }
   // Nothing survived: follow the explicit chain of the best technique the application
   // asked for (right scheme and band) that the device or a budget ruled out.

@@ -65,17 +65,20 @@ std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool 
     return "outside screen-size band [" + number(lo) + ", " + number(hi) + ") at " +
            number(q.screen_size) + suffix;
   }
-  if (f & fail_error)
+  if (f & fail_error) {
+    if (!e.error_known)
+      return "error not measured (no MaxError annotation) under limit " + number(q.max_error) + " LSB";
     return "error " + number(e.error) + " LSB over limit " + number(q.max_error) + " LSB";
-  if (f & fail_cost) {
-    float cost = e.cost_ms + e.cost_ns_per_pixel * q.pixels * 1e-6f;
-    return "cost " + millis(cost) + " ms over budget " + millis(q.cost_budget_ms) + " ms";
   }
+  if (f & fail_cost)
+    return "cost " + millis(cost_ms(e, q)) + " ms over budget " + millis(q.cost_budget_ms) + " ms";
   if (chosen == no_technique) return "passed";
   // It passed every filter: it lost on rank to the chosen technique.
   const Entry& c = entries_[chosen];
   std::string why;
-  if (c.error != e.error)
+  if (has_error_limit(q) && cost_ms(c, q) != cost_ms(e, q))
+    why = "cheaper within the error limit: " + millis(cost_ms(c, q)) + " vs " + millis(cost_ms(e, q)) + " ms";
+  else if (c.error != e.error)
     why = "lower error " + number(c.error) + " vs " + number(e.error) + " LSB";
   else if (c.priority != e.priority)
     why = "priority " + std::to_string(c.priority) + " vs " + std::to_string(e.priority);

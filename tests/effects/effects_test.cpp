@@ -272,7 +272,8 @@ TEST(Effects, SchemesDistancesAndVariantsSteerTheChoice) {
 }  // namespace
 
 // With the generated annotations, selection picks the cheaper technique once the error
-// budget allows it and the cost budget rules out the accurate one (docs/accuracy.md).
+// budget allows it (docs/accuracy.md): the cheapest within the limit, the most accurate
+// without one.
 TEST(Effects, ErrorBudgetLetsSelectionPickTheCheaperMeasuredTechnique) {
   auto l = load("strand_aniso.fx");
   std::vector<fx::TechniqueCandidate> measured;
@@ -301,8 +302,16 @@ TEST(Effects, ErrorBudgetLetsSelectionPickTheCheaperMeasuredTechnique) {
       EXPECT_NE(plan.name(chosen), good.name);
       EXPECT_LE(*measured[chosen].annotations.number("CostNsPerPixel"), q.cost_budget_ms);
       EXPECT_LE(*measured[chosen].annotations.number("MaxError"), ce);
-      // Without the cost budget the accurate technique wins again.
+      // Without the cost budget the error limit still decides "good enough": the cheapest
+      // technique within it wins.
       q.cost_budget_ms = std::numeric_limits<float>::infinity();
+      const fx::TechniqueCandidate& within = measured[plan.select(plan.query(q))];
+      for (const auto& other : measured)
+        if (*other.annotations.number("MaxError") <= ce)
+          EXPECT_LE(*within.annotations.number("CostNsPerPixel"), *other.annotations.number("CostNsPerPixel"))
+              << within.name << " vs " << other.name;
+      // With no limit at all the accurate technique wins again.
+      q.max_error = std::numeric_limits<float>::infinity();
       EXPECT_LE(*measured[plan.select(plan.query(q))].annotations.number("MaxError"), ge);
       // A budget below the cheap technique's error rules it out.
       q.max_error = ce * 0.5f;

@@ -2,6 +2,7 @@
 // reason texts, and agreement between the fast path and explain().
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 #include "fx/select/selection.h"
@@ -152,6 +153,33 @@ TEST(Selection, CostAndErrorBudgets) {
   q.max_error = 2.f;
   EXPECT_EQ(plan.select(q), fx::no_technique);
   EXPECT_EQ(plan.explain(q).reasons[2], "error 4 LSB over limit 2 LSB");
+}
+
+// An error limit means "good enough": the cheapest technique within it wins, and a technique
+// with no measured error cannot promise to be within it.
+TEST(Selection, ErrorLimitPicksTheCheapestMeasuredTechnique) {
+  fx::SelectionPlan plan = build({
+      tech("reference", {{"CostNsPerPixel", 9.f}}),
+      tech("analytic", {{"CostNsPerPixel", 6.f}, {"MaxError", 0.f}}),
+      tech("lut", {{"CostNsPerPixel", 4.f}, {"MaxError", 3.f}}),
+      tech("coarse", {{"CostNsPerPixel", 2.f}, {"MaxError", 20.f}}),
+  });
+  const float inf = std::numeric_limits<float>::infinity();
+  EXPECT_EQ(plan.select(plan.query({.pixels = 1e6f, .max_error = inf})), 0u);  // no limit: rank order
+  fx::SelectionQuery q = plan.query({.pixels = 1e6f, .max_error = 4.f});
+  EXPECT_EQ(plan.select(q), 2u);
+  fx::SelectionResult r = plan.explain(q);
+  EXPECT_EQ(r.reasons[0], "error not measured (no MaxError annotation) under limit 4 LSB");
+  EXPECT_EQ(r.reasons[1], "ranks below 'lut' (cheaper within the error limit: 4.0 vs 6.0 ms)");
+  EXPECT_EQ(r.reasons[3], "error 20 LSB over limit 4 LSB");
+  EXPECT_EQ(plan.select(plan.query({.pixels = 1e6f, .max_error = 0.5f})), 1u);
+  EXPECT_EQ(plan.select(plan.query({.pixels = 1e6f, .max_error = 100.f})), 3u);
+  // Equal costs keep rank order (lower error first).
+  fx::SelectionPlan tie = build({tech("a", {{"CostMs", 1.f}, {"MaxError", 2.f}}),
+                                 tech("b", {{"CostMs", 1.f}, {"MaxError", 1.f}})});
+  fx::SelectionQuery tq = tie.query({.max_error = 5.f});
+  EXPECT_EQ(tie.select(tq), 1u);
+  EXPECT_EQ(tie.explain(tq).reasons[0], "ranks below 'b' (lower error 1 vs 2 LSB)");
 }
 
 TEST(Selection, TiesGoToPriorityThenDeclarationOrder) {

@@ -101,12 +101,18 @@ class SelectionPlan {
     uint32_t fallback;     // index or no_technique
     int32_t priority;
     bool valid;
+    bool error_known;  // MaxError or MaxErrorAbs given
   };
   enum Failure : uint8_t {
     fail_invalid = 1, fail_scheme = 2, fail_distance = 4, fail_screen = 8, fail_error = 16,
     fail_cost = 32,
   };
   uint8_t failures(const Entry& e, const SelectionQuery& q, bool widened) const;
+  static float cost_ms(const Entry& e, const SelectionQuery& q);
+  // A finite error limit: unmeasured techniques fail it and the cheapest survivor wins.
+  static bool has_error_limit(const SelectionQuery& q);
+  // The technique the filters and ranking choose directly, or no_technique.
+  uint32_t first_survivor(const SelectionQuery& q, uint32_t last) const;
   uint32_t choose(const SelectionQuery& q, uint32_t last, SelectionRoute* route,
                   uint32_t* chain_start) const;
   std::string reason(uint32_t index, const SelectionQuery& q, bool widened, uint32_t chosen) const;
