@@ -3,7 +3,9 @@
 // not interpreted here.
 #pragma once
 #include <cstdint>
+#include <initializer_list>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,7 +43,8 @@ struct TypeRef {
 };
 
 struct Expr;
-using ExprPtr = std::unique_ptr<Expr>;
+// An expression node, owned by its effect's ExprPool (null where a part is missing).
+using ExprPtr = Expr*;
 struct StateAssignment;
 
 enum class ExprKind : uint8_t {
@@ -72,25 +75,45 @@ struct Expr {
   std::string text;
   std::string callee;       // compile: the entry function
   double number = 0;        // numeric literals
-  std::vector<ExprPtr> args;
+  std::span<const ExprPtr> args;  // stored in the effect's ExprPool
   std::vector<StateAssignment> states;  // state_block
   TokenSpan code;           // asm_block: tokens between the braces
   TokenSpan decl_code;      // asm_block: `decl { }` tokens (empty if absent)
+};
+
+// Owns an effect's expression nodes and argument lists. Both live in blocks, so a tree
+// costs one allocation per block instead of one per node, lies in memory in parse order
+// for the checker's walks, and is freed block by block. Addresses never move.
+class ExprPool {
+ public:
+  // A new node of `kind`, otherwise value-initialized.
+  ExprPtr make(ExprKind kind);
+  // A stored copy of `items`, for Expr::args.
+  std::span<const ExprPtr> list(std::span<const ExprPtr> items);
+  std::span<const ExprPtr> list(std::initializer_list<ExprPtr> items) {
+    return list(std::span<const ExprPtr>(items.begin(), items.size()));
+  }
+
+ private:
+  std::vector<std::unique_ptr<Expr[]>> nodes_;
+  size_t nodes_used_ = 0;  // in nodes_.back()
+  std::vector<std::unique_ptr<ExprPtr[]>> lists_;
+  size_t lists_used_ = 0, lists_capacity_ = 0;  // of lists_.back()
 };
 
 struct Annotation {
   TypeRef type;  // string, float, float2, int, bool, ... (may carry array dims below)
   std::string name;
   std::vector<ExprPtr> array_dims;
-  ExprPtr value;
+  ExprPtr value = nullptr;
   SourceRange range;
 };
 
 struct StateAssignment {
   std::string name;           // as written; the state table is case-insensitive
   SourceRange name_range;
-  ExprPtr index;              // `Texture[3]` (null if not indexed)
-  ExprPtr value;
+  ExprPtr index = nullptr;    // `Texture[3]` (null if not indexed)
+  ExprPtr value = nullptr;
   SourceRange range;
   // D3D10/11 call form `SetVertexShader(CompileShader(vs_4_0, VS()));`: name is the
   // function, value is the ExprKind::call (text = name), index is null.
@@ -107,7 +130,7 @@ struct Variable {
   std::string register_binding;  // `: register(c0)` (empty if none)
   std::string packoffset;     // `: packoffset(c0.y)` -> "c0.y" (empty if none)
   std::vector<Annotation> annotations;
-  ExprPtr initializer;
+  ExprPtr initializer = nullptr;
   SourceRange range;
   TokenSpan tokens;           // the whole declaration, for the shader compiler
 };
@@ -229,6 +252,7 @@ struct Effect {
   std::string profile_header;  // from a leading `fx.2.0`-style line, if any
   std::vector<Token> tokens;   // the preprocessed token stream the spans index
   std::vector<Decl> decls;     // in source order
+  ExprPool expressions;        // every Expr the declarations point to
 };
 
 }  // namespace fx::ast

@@ -224,7 +224,7 @@ void Checker::check_state(const ast::StateAssignment& a, StateBlock block, int t
 }
 
 void Checker::check_call_args(const StateInfo& info, const ast::StateAssignment& a) {
-  const std::vector<ast::ExprPtr>& args = a.value->args;
+  std::span<const ast::ExprPtr> args = a.value->args;
   if (args.size() != info.call_args) {
     diags_.error("state-call-form", a.value->range,
                  quote(info.name) + " takes " + std::to_string(info.call_args) + " argument" +
@@ -340,7 +340,7 @@ void Checker::check_value(const StateInfo& info, const ast::Expr& e) {
       }
       // Names inside the expression must still resolve (enum names, parameters).
       for (size_t i = e.kind == K::ternary ? 1 : 0; i < e.args.size(); ++i)
-        if (const ast::Expr* arg = e.args[i].get();
+        if (const ast::Expr* arg = e.args[i];
             arg && (arg->kind == K::identifier || arg->kind == K::reference ||
                     arg->kind == K::string_literal || arg->args.size()))
           check_value(info, *arg);

@@ -86,8 +86,7 @@ bool Parser::enter_nesting() {
 }
 
 ast::ExprPtr Parser::make(ast::ExprKind kind, uint32_t first) {
-  auto e = std::make_unique<ast::Expr>();
-  e->kind = kind;
+  ast::ExprPtr e = expressions_.make(kind);
   e->range = tokens_[first].range();
   return e;
 }
@@ -101,8 +100,7 @@ ast::ExprPtr Parser::parse_expression() {
     if (failed_) return nullptr;
     auto comma = make(ast::ExprKind::binary, first);
     comma->text = ",";
-    comma->args.push_back(std::move(e));
-    comma->args.push_back(std::move(rhs));
+    comma->args = expressions_.list({e, rhs});
     comma->range = range_from(first);
     e = std::move(comma);
   }
@@ -115,11 +113,11 @@ ast::ExprPtr Parser::parse_assignment() {
   if (failed_ || !at(TokenKind::question)) return cond;
   advance();
   auto e = make(ast::ExprKind::ternary, first);
-  e->args.push_back(std::move(cond));
-  e->args.push_back(parse_assignment());
+  ast::ExprPtr then = parse_assignment();
   if (failed_ || !expect(TokenKind::colon, "in conditional expression")) return nullptr;
-  e->args.push_back(parse_assignment());
+  ast::ExprPtr otherwise = parse_assignment();
   if (failed_) return nullptr;
+  e->args = expressions_.list({cond, then, otherwise});
   e->range = range_from(first);
   return e;
 }
@@ -135,8 +133,7 @@ ast::ExprPtr Parser::parse_binary(int min_precedence) {
     e->text = std::string(advance().text);
     ast::ExprPtr rhs = parse_binary(precedence + 1);
     if (failed_) return nullptr;
-    e->args.push_back(std::move(lhs));
-    e->args.push_back(std::move(rhs));
+    e->args = expressions_.list({lhs, rhs});
     e->range = range_from(first);
     lhs = std::move(e);
   }
@@ -157,10 +154,10 @@ ast::ExprPtr Parser::parse_unary() {
       result->text = std::string(advance().text);
       ast::ExprPtr operand = parse_unary();
       if (failed_) {
-        result.reset();
+        result = nullptr;
         break;
       }
-      result->args.push_back(std::move(operand));
+      result->args = expressions_.list({operand});
       result->range = range_from(first);
       break;
     }
@@ -174,10 +171,10 @@ ast::ExprPtr Parser::parse_unary() {
         advance();
         ast::ExprPtr operand = parse_unary();
         if (failed_) {
-          result.reset();
+          result = nullptr;
           break;
         }
-        result->args.push_back(std::move(operand));
+        result->args = expressions_.list({operand});
         result->range = range_from(first);
         break;
       }
@@ -196,16 +193,16 @@ ast::ExprPtr Parser::parse_postfix(ast::ExprPtr e, uint32_t first) {
     if (at(TokenKind::l_square)) {
       advance();
       auto index = make(ast::ExprKind::index, first);
-      index->args.push_back(std::move(e));
-      index->args.push_back(parse_expression());
+      ast::ExprPtr subscript = parse_expression();
       if (failed_ || !expect(TokenKind::r_square, "after index")) return nullptr;
+      index->args = expressions_.list({e, subscript});
       index->range = range_from(first);
       e = std::move(index);
     } else if (at(TokenKind::period) && peek().is(TokenKind::identifier)) {
       advance();
       auto member = make(ast::ExprKind::member, first);
       member->text = std::string(advance().text);
-      member->args.push_back(std::move(e));
+      member->args = expressions_.list({e});
       member->range = range_from(first);
       e = std::move(member);
     } else {
@@ -364,38 +361,46 @@ ast::ExprPtr Parser::parse_init_list() {
   uint32_t first = pos_;
   Token open = advance();
   auto e = make(ast::ExprKind::init_list, first);
-  e->args.reserve(4);
+  size_t mark = pending_args_.size();
   while (!accept(TokenKind::r_brace)) {
     ast::ExprPtr element = parse_assignment();
-    if (failed_) return nullptr;
-    e->args.push_back(std::move(element));
+    if (failed_) break;
+    pending_args_.push_back(element);
     if (accept(TokenKind::comma) || at(TokenKind::r_brace)) continue;
     if (Diagnostic* d = error_here("expected-token",
                                    "expected ',' or '}' in initializer list, found " +
                                        describe(tok())))
       d->notes.push_back({open.loc, "to match this '{'"});
-    return nullptr;
+    break;
   }
+  if (!failed_) e->args = expressions_.list(std::span(pending_args_).subspan(mark));
+  pending_args_.resize(mark);
+  if (failed_) return nullptr;
   e->range = range_from(first);
   return e;
 }
 
-bool Parser::parse_call_args(std::vector<ast::ExprPtr>& args) {
+bool Parser::parse_call_args(std::span<const ast::ExprPtr>& args) {
   Token open = advance();  // (
   if (accept(TokenKind::r_paren)) return true;
-  args.reserve(4);  // `float4(a, b, c, d)`: one allocation instead of three
+  size_t mark = pending_args_.size();
   for (;;) {
     ast::ExprPtr arg = parse_assignment();
-    if (failed_) return false;
-    args.push_back(std::move(arg));
+    if (failed_) break;
+    pending_args_.push_back(arg);
     if (accept(TokenKind::comma)) continue;
-    if (accept(TokenKind::r_paren)) return true;
+    if (accept(TokenKind::r_paren)) {
+      args = expressions_.list(std::span(pending_args_).subspan(mark));
+      break;
+    }
     if (Diagnostic* d = error_here("expected-token",
                                    "expected ')' or ',' in argument list, found " +
                                        describe(tok())))
       d->notes.push_back({open.loc, "to match this '('"});
-    return false;
+    break;
   }
+  pending_args_.resize(mark);
+  return !failed_;
 }
 
 }  // namespace fx::detail

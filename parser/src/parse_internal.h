@@ -3,6 +3,7 @@
 // structs, buffers) and parse_technique.cpp (techniques, passes, states, annotations).
 // Private to fxkit_parser.
 #pragma once
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -108,12 +109,16 @@ class Parser {
   ast::ExprPtr parse_compile();
   ast::ExprPtr parse_asm();
   ast::ExprPtr parse_init_list();
-  bool parse_call_args(std::vector<ast::ExprPtr>& args);
+  bool parse_call_args(std::span<const ast::ExprPtr>& args);
   ast::ExprPtr make(ast::ExprKind kind, uint32_t first);
   bool enter_nesting();
   void leave_nesting() { --nesting_; }
 
   std::vector<Token> tokens_;
+  ast::ExprPool expressions_;
+  // Arguments and list elements being parsed, innermost list last: each list is stored
+  // in the pool once complete, so none needs a vector of its own.
+  std::vector<ast::ExprPtr> pending_args_;
   uint32_t pos_ = 0;
   uint32_t depth_ = 0;    // unclosed '{' consumed so far
   size_t nesting_ = 0;    // current recursion depth of expressions

@@ -214,6 +214,7 @@ ast::Effect Parser::run() {
   }
   effect.profile_header = std::move(profile_header_);
   effect.tokens = std::move(tokens_);
+  effect.expressions = std::move(expressions_);
   return effect;
 }
 

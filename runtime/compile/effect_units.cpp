@@ -70,7 +70,7 @@ bool spell(const ast::Expr* e, std::string& out) {
     out += open;
     for (size_t i = from; i < e->args.size(); ++i) {
       if (i > from) out += ", ";
-      if (!spell(e->args[i].get(), out)) return false;
+      if (!spell(e->args[i], out)) return false;
     }
     out += close;
     return true;
@@ -82,42 +82,42 @@ bool spell(const ast::Expr* e, std::string& out) {
     case ast::ExprKind::bool_literal: out += e->number != 0 ? "true" : "false"; return true;
     case ast::ExprKind::unary:
       out += "(" + e->text;
-      if (e->args.empty() || !spell(e->args[0].get(), out)) return false;
+      if (e->args.empty() || !spell(e->args[0], out)) return false;
       out += ")";
       return true;
     case ast::ExprKind::binary:
       if (e->args.size() != 2) return false;
       out += "(";
-      if (!spell(e->args[0].get(), out)) return false;
+      if (!spell(e->args[0], out)) return false;
       out += " " + e->text + " ";
-      if (!spell(e->args[1].get(), out)) return false;
+      if (!spell(e->args[1], out)) return false;
       out += ")";
       return true;
     case ast::ExprKind::ternary:
       if (e->args.size() != 3) return false;
       out += "(";
-      if (!spell(e->args[0].get(), out)) return false;
+      if (!spell(e->args[0], out)) return false;
       out += " ? ";
-      if (!spell(e->args[1].get(), out)) return false;
+      if (!spell(e->args[1], out)) return false;
       out += " : ";
-      if (!spell(e->args[2].get(), out)) return false;
+      if (!spell(e->args[2], out)) return false;
       out += ")";
       return true;
     case ast::ExprKind::call: out += e->text; return list(0, "(", ")");
     case ast::ExprKind::init_list: return list(0, "{", "}");
     case ast::ExprKind::cast:
       out += "((" + e->text + ")";
-      if (e->args.empty() || !spell(e->args[0].get(), out)) return false;
+      if (e->args.empty() || !spell(e->args[0], out)) return false;
       out += ")";
       return true;
     case ast::ExprKind::member:
-      if (e->args.empty() || !spell(e->args[0].get(), out)) return false;
+      if (e->args.empty() || !spell(e->args[0], out)) return false;
       out += "." + e->text;
       return true;
     case ast::ExprKind::index:
-      if (e->args.size() != 2 || !spell(e->args[0].get(), out)) return false;
+      if (e->args.size() != 2 || !spell(e->args[0], out)) return false;
       out += "[";
-      if (!spell(e->args[1].get(), out)) return false;
+      if (!spell(e->args[1], out)) return false;
       out += "]";
       return true;
     case ast::ExprKind::string_literal: out += "\"" + e->text + "\""; return true;
@@ -302,7 +302,7 @@ class EffectUnitBuilder {
     std::string text = so.kind + " " + so.name;
     for (const ast::ExprPtr& dim : so.array_dims) {
       text += "[";
-      if (dim) spell(dim.get(), text);
+      if (dim) spell(dim, text);
       text += "]";
     }
     if (!so.register_binding.empty()) text += " : register(" + so.register_binding + ")";
@@ -372,8 +372,8 @@ class EffectUnitBuilder {
         StageUnit ps;
         ps.stage = *stage;
         ps.range = s.range;
-        const ast::Expr* value = s.value.get();
-        if (s.call_style) value = value->args.empty() ? nullptr : value->args[0].get();
+        const ast::Expr* value = s.value;
+        if (s.call_style) value = value->args.empty() ? nullptr : value->args[0];
         if (!value || !resolve(*value, ps, 0)) {
           null_pixel = null_pixel || *stage == ShaderStage::fragment;
           continue;
@@ -419,14 +419,14 @@ class EffectUnitBuilder {
       case ast::ExprKind::int_literal: return e.number != 0 && invalid(stage, "a number is not a shader");
       case ast::ExprKind::compile: {
         std::vector<const ast::Expr*> args;
-        for (const ast::ExprPtr& a : e.args) args.push_back(a.get());
+        for (const ast::ExprPtr& a : e.args) args.push_back(a);
         return hlsl(stage, e.text, e.callee, args, e.range);
       }
       case ast::ExprKind::call: {
         if (iequals(e.text, "CompileShader") && e.args.size() == 2 && e.args[0] && e.args[1] &&
             e.args[1]->kind == ast::ExprKind::call) {
           std::vector<const ast::Expr*> args;
-          for (const ast::ExprPtr& a : e.args[1]->args) args.push_back(a.get());
+          for (const ast::ExprPtr& a : e.args[1]->args) args.push_back(a);
           return hlsl(stage, e.args[0]->text, e.args[1]->text, args, e.range);
         }
         if ((iequals(e.text, "ConstructGSWithSO") || stage_of_state(e.text)) && !e.args.empty() && e.args[0])

@@ -101,7 +101,7 @@ ShaderBinding shader_from(const ast::Expr& e, PassStage stage, ResolveContext& c
   b.range = e.range;
   b.expr = &e;
   if (depth > 8) return b;
-  auto fold_args = [&](const std::vector<ast::ExprPtr>& args) {
+  auto fold_args = [&](std::span<const ast::ExprPtr> args) {
     for (const ast::ExprPtr& a : args) {
       if (!a) continue;
       auto v = fold_constant(*a, ctx.scope, ctx.diags, true);
@@ -160,7 +160,7 @@ ShaderBinding shader_from(const ast::Expr& e, PassStage stage, ResolveContext& c
       const ast::Expr* base = &e;
       std::optional<size_t> element;
       if (e.kind == ast::ExprKind::index && e.args.size() == 2 && e.args[0] && e.args[1]) {
-        base = e.args[0].get();
+        base = e.args[0];
         auto i = fold_constant(*e.args[1], ctx.scope, ctx.diags, true);
         if (i && i->is_numeric() && i->number() >= 0) element = static_cast<size_t>(i->number());
       }
@@ -175,7 +175,7 @@ ShaderBinding shader_from(const ast::Expr& e, PassStage stage, ResolveContext& c
         const ast::Expr* init = it->second;
         if (init->kind == ast::ExprKind::init_list) {
           size_t k = element.value_or(0);
-          init = k < init->args.size() ? init->args[k].get() : nullptr;
+          init = k < init->args.size() ? init->args[k] : nullptr;
         }
         if (init) {
           ShaderBinding inner = shader_from(*init, stage, ctx, depth + 1);
@@ -216,14 +216,14 @@ bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveConte
                             "'" + std::string(info->name) +
                                 "' is Direct3D 9 fixed-function state with no Vulkan equivalent; use a pixel shader"});
 
-  const ast::Expr* value = a.value.get();
+  const ast::Expr* value = a.value;
   // Call form: SetBlendState(b, factor, mask) -> value is args[0], the rest are call_args.
   if (a.call_style) {
     if (value->args.empty() || !value->args[0]) return false;
     for (size_t i = 1; i < value->args.size(); ++i)
       if (value->args[i])
         if (auto v = fold_list(*value->args[i], ctx, true)) out.call_args.push_back(std::move(*v));
-    value = value->args[0].get();
+    value = value->args[0];
   }
 
   switch (info->type) {

@@ -266,9 +266,12 @@ TEST(Parser, CallStyleStates) {
   EXPECT_TRUE(states[0].call_style);
   EXPECT_EQ(states[0].name, "SetVertexShader");
   EXPECT_EQ(states[0].value->kind, ast::ExprKind::call);
-  EXPECT_EQ(states[0].value->args.at(0)->text, "CompileShader");
+  ASSERT_EQ(states[0].value->args.size(), 1u);
+  EXPECT_EQ(states[0].value->args[0]->text, "CompileShader");
   EXPECT_EQ(states[1].value->args.size(), 3u);
-  EXPECT_EQ(states[2].value->args.at(0)->args.at(1)->text, "POSITION.xyz");
+  ASSERT_FALSE(states[2].value->args.empty());
+  ASSERT_EQ(states[2].value->args[0]->args.size(), 2u);
+  EXPECT_EQ(states[2].value->args[0]->args[1]->text, "POSITION.xyz");
 }
 
 TEST(Parser, StateObjects) {
