@@ -5,17 +5,11 @@
 #ifndef FXKIT_GENERATED_COSTS_FXH
 #define FXKIT_GENERATED_COSTS_FXH
 // COST_strand_analytic: strand_analytic/stable/specular
-#define COST_strand_analytic float CostNsPerPixel = 5.571; float MaxError = 0.00;
-// COST_strand_lut: strand_lut/dot/unorm8/n32/s256
-#define COST_strand_lut float CostNsPerPixel = 5.259; float MaxError = 22.97;
+#define COST_strand_analytic float CostNsPerPixel = 3.651; float MaxError = 0.00;
 // COST_strand_lut_seed_wrap: strand_mapping/seed_wrap/specular/s256
-#define COST_strand_lut_seed_wrap float CostNsPerPixel = 5.530; float MaxError = 120.50;
+#define COST_strand_lut_seed_wrap float CostNsPerPixel = 4.414; float MaxError = 120.50;
 // COST_strand_per_vertex: per_vertex/rings24
 #define COST_strand_per_vertex float CostNsPerPixel = 0.000; float MaxError = 14.41;
-// COST_ln_hn_per_pixel: ln_hn/blinn_phong/s128
-#define COST_ln_hn_per_pixel float CostNsPerPixel = 5.140; float MaxError = 6.01;
-// COST_gaussian_per_pixel: gaussian/float
-#define COST_gaussian_per_pixel float CostNsPerPixel = 3.654; float MaxError = 0.00;
 // COST_hemisphere_two_term: hemisphere/cosine_float
-#define COST_hemisphere_two_term float CostNsPerPixel = 1.705; float MaxError = 0.08;
+#define COST_hemisphere_two_term float CostNsPerPixel = 0.647; float MaxError = 0.08;
 #endif

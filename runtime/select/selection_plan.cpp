@@ -78,6 +78,7 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
     e.error_known = a.find("MaxError") || a.find("MaxErrorAbs");
     e.error = number({"MaxError"}, 0.f);
     if (!a.find("MaxError")) e.error = number({"MaxErrorAbs"}, 0.f) * 255.f;  // absolute -> LSB
+    e.cost_known = a.find("CostMs") || a.find("CostNsPerPixel");
     e.cost_ms = number({"CostMs"}, 0.f);
     e.cost_ns_per_pixel = number({"CostNsPerPixel"}, 0.f);
     e.priority = 0;
@@ -215,14 +216,14 @@ bool SelectionPlan::has_error_limit(const SelectionQuery& q) { return q.max_erro
 
 uint32_t SelectionPlan::first_survivor(const SelectionQuery& q, uint32_t last) const {
   // Without an error budget the best-ranked survivor wins; with one, "good enough" is
-  // decided, so the cheapest survivor wins (ties keep rank order).
+  // decided, so the cheapest survivor wins (ties, and unmeasured costs, keep rank order).
   const bool cheapest = has_error_limit(q);
   uint32_t best = no_technique;
   float best_cost = kInf;
   for (uint32_t i : order_) {
     if (failures(entries_[i], q, i == last) != 0) continue;
     if (!cheapest) return i;
-    float c = cost_ms(entries_[i], q);
+    float c = entries_[i].cost_known ? cost_ms(entries_[i], q) : kInf;  // unmeasured: last
     if (best == no_technique || c < best_cost) best = i, best_cost = c;
   }
   return best;

@@ -76,7 +76,9 @@ std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool 
   // It passed every filter: it lost on rank to the chosen technique.
   const Entry& c = entries_[chosen];
   std::string why;
-  if (has_error_limit(q) && cost_ms(c, q) != cost_ms(e, q))
+  if (has_error_limit(q) && c.cost_known && !e.cost_known)
+    why = "cheaper within the error limit: " + millis(cost_ms(c, q)) + " ms vs cost not measured";
+  else if (has_error_limit(q) && cost_ms(c, q) != cost_ms(e, q))
     why = "cheaper within the error limit: " + millis(cost_ms(c, q)) + " vs " + millis(cost_ms(e, q)) + " ms";
   else if (c.error != e.error)
     why = "lower error " + number(c.error) + " vs " + number(e.error) + " LSB";

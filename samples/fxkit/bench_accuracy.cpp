@@ -45,11 +45,8 @@ struct TechniqueSource {
 };
 const TechniqueSource kTechniques[] = {
     {"COST_strand_analytic", "strand_analytic/stable/specular"},
-    {"COST_strand_lut", "strand_lut/dot/unorm8/n32/s256"},
     {"COST_strand_lut_seed_wrap", "strand_mapping/seed_wrap/specular/s256"},
     {"COST_strand_per_vertex", "per_vertex/rings24"},
-    {"COST_ln_hn_per_pixel", "ln_hn/blinn_phong/s128"},
-    {"COST_gaussian_per_pixel", "gaussian/float"},
     {"COST_hemisphere_two_term", "hemisphere/cosine_float"},
 };
 

@@ -174,6 +174,12 @@ TEST(Selection, ErrorLimitPicksTheCheapestMeasuredTechnique) {
   EXPECT_EQ(r.reasons[3], "error 20 LSB over limit 4 LSB");
   EXPECT_EQ(plan.select(plan.query({.pixels = 1e6f, .max_error = 0.5f})), 1u);
   EXPECT_EQ(plan.select(plan.query({.pixels = 1e6f, .max_error = 100.f})), 3u);
+  // A measured error without a measured cost ranks after every measured cost.
+  fx::SelectionPlan partial = build({tech("table", {{"MaxError", 3.f}}),
+                                     tech("pow", {{"CostNsPerPixel", 5.f}, {"MaxError", 3.f}})});
+  fx::SelectionQuery pq = partial.query({.pixels = 1e6f, .max_error = 4.f});
+  EXPECT_EQ(partial.select(pq), 1u);
+  EXPECT_EQ(partial.explain(pq).reasons[0], "ranks below 'pow' (cheaper within the error limit: 5.0 ms vs cost not measured)");
   // Equal costs keep rank order (lower error first).
   fx::SelectionPlan tie = build({tech("a", {{"CostMs", 1.f}, {"MaxError", 2.f}}),
                                  tech("b", {{"CostMs", 1.f}, {"MaxError", 1.f}})});

@@ -102,6 +102,7 @@ class SelectionPlan {
     int32_t priority;
     bool valid;
     bool error_known;  // MaxError or MaxErrorAbs given
+    bool cost_known;   // CostMs or CostNsPerPixel given
   };
   enum Failure : uint8_t {
     fail_invalid = 1, fail_scheme = 2, fail_distance = 4, fail_screen = 8, fail_error = 16,
