@@ -89,12 +89,11 @@ void Checker::run() {
   collect_symbols();
   check_functions();
   check_profile_rules();
-  std::unordered_map<std::string_view, SourceRange> techniques, groups;
-  auto technique = [&](const ast::Technique& t,
-                       std::unordered_map<std::string_view, SourceRange>& names) {
+  NameTable<SourceRange> techniques, groups;
+  auto technique = [&](const ast::Technique& t, NameTable<SourceRange>& names) {
     if (!t.name.empty()) {
-      auto [it, fresh] = names.emplace(t.name, t.name_range);
-      if (!fresh) report_duplicate("technique", t.name, t.name_range, it->second);
+      auto [entry, fresh] = names.emplace(t.name, t.name_range);
+      if (!fresh) report_duplicate("technique", t.name, t.name_range, entry->second);
     }
     check_technique(t);
   };
@@ -114,10 +113,10 @@ void Checker::run() {
       }
       case ast::DeclKind::group: {
         const ast::FxGroup& g = *d.group;
-        if (auto [it, fresh] = groups.emplace(g.name, g.name_range); !fresh)
-          report_duplicate("fxgroup", g.name, g.name_range, it->second);
+        if (auto [entry, fresh] = groups.emplace(g.name, g.name_range); !fresh)
+          report_duplicate("fxgroup", g.name, g.name_range, entry->second);
         check_annotations(g.annotations);
-        std::unordered_map<std::string_view, SourceRange> in_group;
+        NameTable<SourceRange> in_group;
         for (const ast::Technique& t : g.techniques) technique(t, in_group);
         break;
       }
@@ -137,8 +136,8 @@ void Checker::define(std::string_view name, SourceRange range, Symbol symbol,
                      std::string_view what) {
   if (name.empty()) return;
   symbol.range = range;
-  auto [it, fresh] = globals_.emplace(name, symbol);
-  if (!fresh) report_duplicate(what, name, range, it->second.range);
+  auto [entry, fresh] = globals_.emplace(name, symbol);
+  if (!fresh) report_duplicate(what, name, range, entry->second.range);
 }
 
 void Checker::collect_symbols() {
@@ -168,21 +167,38 @@ void Checker::collect_symbols() {
                "GLSL block");
         break;
       case ast::DeclKind::function:
-        functions_[d.function->name].push_back(d.function.get());
+        functions_.emplace_back(d.function->name, d.function.get());
         break;
       default: break;
     }
   }
+  std::stable_sort(functions_.begin(), functions_.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+}
+
+bool Checker::has_function(std::string_view name) const {
+  auto it = std::lower_bound(functions_.begin(), functions_.end(), name,
+                             [](const auto& f, std::string_view n) { return f.first < n; });
+  return it != functions_.end() && it->first == name;
 }
 
 void Checker::check_functions() {
-  for (const auto& [name, overloads] : functions_) {
+  std::vector<std::pair<std::string, const ast::Function*>> defined;
+  for (auto group = functions_.begin(); group != functions_.end();) {
+    std::string_view name = group->first;
+    auto group_end = std::find_if(group, functions_.end(),
+                                  [&](const auto& f) { return f.first != name; });
     if (const Symbol* s = lookup(name)) {
-      report_duplicate("function", name, overloads.front()->name_range, s->range);
+      report_duplicate("function", name, group->second->name_range, s->range);
+    }
+    if (group_end - group == 1) {  // no overloads: nothing to tell apart
+      group = group_end;
+      continue;
     }
     // Overloads differ in parameter types; a prototype may precede its definition.
-    std::vector<std::pair<std::string, const ast::Function*>> defined;
-    for (const ast::Function* f : overloads) {
+    defined.clear();
+    for (; group != group_end; ++group) {
+      const ast::Function* f = group->second;
       if (f->body.empty()) continue;
       std::string sig = signature(*f);
       auto prev = std::find_if(defined.begin(), defined.end(),
@@ -314,8 +330,7 @@ void Checker::check_technique(const ast::Technique& t) {
 }
 
 const Symbol* Checker::lookup(std::string_view name) const {
-  auto it = globals_.find(name);
-  return it == globals_.end() ? nullptr : &it->second;
+  return globals_.find(name);
 }
 
 std::vector<std::string_view> Checker::names_of(std::initializer_list<Symbol::Kind> kinds) const {
@@ -323,7 +338,9 @@ std::vector<std::string_view> Checker::names_of(std::initializer_list<Symbol::Ki
   for (const auto& [name, s] : globals_)
     if (std::find(kinds.begin(), kinds.end(), s.kind) != kinds.end()) names.push_back(name);
   if (std::find(kinds.begin(), kinds.end(), Symbol::function) != kinds.end())
-    for (const auto& [name, fs] : functions_) names.push_back(name);
+    for (size_t i = 0; i < functions_.size(); ++i)
+      if (i == 0 || functions_[i].first != functions_[i - 1].first)
+        names.push_back(functions_[i].first);
   // Hash order would make did-you-mean ties depend on the standard library.
   std::sort(names.begin(), names.end());
   return names;

@@ -14,6 +14,7 @@
 #include "fx/ast.h"
 #include "fx/checker.h"
 #include "fx/state_table.h"
+#include "name_table.h"
 
 namespace fx::check {
 
@@ -117,8 +118,10 @@ class Checker {
   CheckOptions options_;
   EffectProfile profile_ = EffectProfile::fx_2_0;
   // Keys view names owned by the effect, which outlives the checker.
-  std::unordered_map<std::string_view, Symbol> globals_;
-  std::unordered_map<std::string_view, std::vector<const ast::Function*>> functions_;
+  NameTable<Symbol> globals_;
+  // Every function by name, overloads in source order (sorted once collected).
+  std::vector<std::pair<std::string_view, const ast::Function*>> functions_;
+  bool has_function(std::string_view name) const;
 };
 
 }  // namespace fx::check

@@ -475,7 +475,7 @@ void Checker::check_compile(const StateInfo& info, std::string_view profile,
                  "state " + quote(info.name) + " needs a " + std::string(stage) +
                      "_* profile, found " + quote(profile));
   }
-  if (!function.empty() && !functions_.count(function))
+  if (!function.empty() && !has_function(function))
     undefined("function", function, range, names_of({Symbol::function}));
 }
 
