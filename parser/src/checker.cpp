@@ -174,12 +174,8 @@ void Checker::collect_symbols() {
   }
   std::stable_sort(functions_.begin(), functions_.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
-}
-
-bool Checker::has_function(std::string_view name) const {
-  auto it = std::lower_bound(functions_.begin(), functions_.end(), name,
-                             [](const auto& f, std::string_view n) { return f.first < n; });
-  return it != functions_.end() && it->first == name;
+  function_names_.reserve(functions_.size());
+  for (const auto& [name, f] : functions_) function_names_.emplace(name, f);
 }
 
 void Checker::check_functions() {
@@ -338,9 +334,7 @@ std::vector<std::string_view> Checker::names_of(std::initializer_list<Symbol::Ki
   for (const auto& [name, s] : globals_)
     if (std::find(kinds.begin(), kinds.end(), s.kind) != kinds.end()) names.push_back(name);
   if (std::find(kinds.begin(), kinds.end(), Symbol::function) != kinds.end())
-    for (size_t i = 0; i < functions_.size(); ++i)
-      if (i == 0 || functions_[i].first != functions_[i - 1].first)
-        names.push_back(functions_[i].first);
+    for (const auto& [name, f] : function_names_) names.push_back(name);
   // Hash order would make did-you-mean ties depend on the standard library.
   std::sort(names.begin(), names.end());
   return names;

@@ -121,7 +121,7 @@ class Checker {
   NameTable<Symbol> globals_;
   // Every function by name, overloads in source order (sorted once collected).
   std::vector<std::pair<std::string_view, const ast::Function*>> functions_;
-  bool has_function(std::string_view name) const;
+  NameTable<const ast::Function*> function_names_;  // the first overload of each name
 };
 
 }  // namespace fx::check

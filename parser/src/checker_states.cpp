@@ -460,7 +460,8 @@ void Checker::check_compile(const StateInfo& info, std::string_view profile,
                             SourceRange profile_range, std::string_view function,
                             SourceRange range) {
   const std::vector<std::string>& profiles = shader_profiles();
-  if (std::find(profiles.begin(), profiles.end(), ascii_lower(profile)) == profiles.end()) {
+  if (std::none_of(profiles.begin(), profiles.end(),
+                   [&](const std::string& p) { return iequals(p, profile); })) {
     std::vector<std::string_view> names(profiles.begin(), profiles.end());
     std::string guess = closest_match(profile, names);
     std::string message = "unknown shader profile " + quote(profile);
@@ -475,7 +476,7 @@ void Checker::check_compile(const StateInfo& info, std::string_view profile,
                  "state " + quote(info.name) + " needs a " + std::string(stage) +
                      "_* profile, found " + quote(profile));
   }
-  if (!function.empty() && !has_function(function))
+  if (!function.empty() && !function_names_.find(function))
     undefined("function", function, range, names_of({Symbol::function}));
 }
 

@@ -10,10 +10,17 @@
 namespace fx {
 namespace {
 
+// Hashes the length and five characters (the first two, the middle, the last two): that
+// tells the table's names apart (MinFilter/MagFilter, AddressU/AddressV) at a fixed cost,
+// and the few collisions are settled by the stored hash and one iequals.
 uint64_t name_hash(std::string_view name, StateBlock block) {
-  uint64_t h = 1469598103934665603ull;
-  for (char c : name) h = (h ^ static_cast<unsigned char>(ascii_lower(c))) * 1099511628211ull;
-  return (h ^ static_cast<uint64_t>(block)) * 1099511628211ull;
+  uint64_t h = (name.size() * 1099511628211ull) ^ static_cast<uint64_t>(block);
+  if (!name.empty()) {
+    size_t n = name.size();
+    for (size_t i : {size_t(0), size_t(1), n / 2, n - 2, n - 1})
+      if (i < n) h = (h ^ static_cast<unsigned char>(ascii_lower(name[i]))) * 1099511628211ull;
+  }
+  return h;
 }
 
 class StateIndex {
