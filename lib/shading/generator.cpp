@@ -15,7 +15,7 @@ namespace {
 
 using detail::failure;
 using detail::finish;
-using detail::lower;
+using fx::ascii_lower;
 using detail::ParamReader;
 
 BakeResult bake_strand(ParamReader& in) {
@@ -131,17 +131,17 @@ constexpr GeneratorEntry kGenerators[] = {
 }  // namespace
 
 GeneratorParams& GeneratorParams::set(std::string_view name, double value) {
-  values_[lower(name)] = value;
+  values_[ascii_lower(name)] = value;
   return *this;
 }
 
 GeneratorParams& GeneratorParams::set(std::string_view name, std::string_view value) {
-  values_[lower(name)] = std::string(value);
+  values_[ascii_lower(name)] = std::string(value);
   return *this;
 }
 
 const GeneratorParams::Value* GeneratorParams::find(std::string_view name) const {
-  auto it = values_.find(lower(name));
+  auto it = values_.find(ascii_lower(name));
   return it == values_.end() ? nullptr : &it->second;
 }
 
@@ -152,7 +152,7 @@ std::vector<std::string_view> generator_names() {
 }
 
 BakeResult bake(std::string_view generator, const GeneratorParams& params) {
-  std::string name = lower(generator);
+  std::string name = ascii_lower(generator);
   for (const GeneratorEntry& g : kGenerators) {
     if (g.name != name) continue;
     ParamReader in(g.name, params);

@@ -4,7 +4,6 @@
 // generators (asset_generators.cpp) so both report errors in the same words.
 #pragma once
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <initializer_list>
 #include <string>
@@ -12,16 +11,11 @@
 #include <variant>
 #include <vector>
 
+#include "fx/ascii_case.h"
 #include "fx/shading/bakers.h"
 #include "fx/shading/generator.h"
 
 namespace fx::shading::detail {
-
-inline std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 // One swap of adjacent letters ("Widht"): closest_match's distance budget misses these.
 inline bool is_transposition(std::string_view a, std::string_view b) {
@@ -75,7 +69,7 @@ class ParamReader {
     const GeneratorParams::Value* v = params_.find(name);
     if (!v) return fallback;
     const std::string* s = std::get_if<std::string>(v);
-    std::string want = s ? lower(*s) : std::string();
+    std::string want = s ? ascii_lower(*s) : std::string();
     int i = 0;
     for (std::string_view c : choices) {
       if (s && want == c) return i;
@@ -109,13 +103,13 @@ class ParamReader {
   // Rejects near-misses of the vocabulary ("Widht"); other names are the annotation's own.
   void check_unknown() {
     std::vector<std::string> known;
-    for (std::string_view v : vocabulary_) known.push_back(lower(v));
+    for (std::string_view v : vocabulary_) known.push_back(ascii_lower(v));
     known.push_back("generator");
     for (const auto& [name, value] : params_.entries()) {
       if (std::find(known.begin(), known.end(), name) != known.end()) continue;
       std::string near = closest_match(name, std::vector<std::string_view>(vocabulary_.begin(), vocabulary_.end()));
       for (std::string_view v : vocabulary_)
-        if (near.empty() && is_transposition(name, lower(v))) near = std::string(v);
+        if (near.empty() && is_transposition(name, ascii_lower(v))) near = std::string(v);
       if (!near.empty())
         fail("unknown parameter '" + name + "' for generator '" + generator_ + "'; did you mean '" + near + "'?");
     }

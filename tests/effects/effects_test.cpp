@@ -296,9 +296,11 @@ TEST(Effects, ErrorLimitPicksTheCheapestMeasuredTechnique) {
       ASSERT_NE(chosen, fx::no_technique) << "limit " << q.max_error;
       ASSERT_TRUE(error(chosen)) << list[chosen].name << " has no measured error";
       EXPECT_LE(*error(chosen), q.max_error);
-      for (uint32_t o = 0; o < list.size(); ++o)
-        if (error(o) && *error(o) <= q.max_error)
+      for (uint32_t o = 0; o < list.size(); ++o) {
+        if (error(o) && *error(o) <= q.max_error) {
           EXPECT_LE(cost(chosen), cost(o)) << list[chosen].name << " vs " << list[o].name;
+        }
+      }
     }
   }
   EXPECT_GE(limits, 4);  // every generated annotation was exercised
