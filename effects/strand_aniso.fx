@@ -24,14 +24,16 @@
 
 float4 CameraPosition : CAMERAPOSITION < string UIWidget = "None"; >;
 
+// Lights 1-3 are dimmer fill lights in saturated hues: strand diffuse is sin(L, T), which
+// does not fall off with the surface's facing, so four full-strength lights wash to white.
 float3 Light0Direction : DIRECTION < string UIName = "Light 0 direction"; string Object = "DirectionalLight0"; string Space = "World"; > = {0.577, -0.577, 0.577};
 float3 Light1Direction : DIRECTION < string UIName = "Light 1 direction"; string Object = "DirectionalLight1"; string Space = "World"; > = {-0.577, -0.577, 0.577};
 float3 Light2Direction : DIRECTION < string UIName = "Light 2 direction"; string Object = "DirectionalLight2"; string Space = "World"; > = {0.0, -0.707, -0.707};
 float3 Light3Direction : DIRECTION < string UIName = "Light 3 direction"; string Object = "DirectionalLight3"; string Space = "World"; > = {0.0, 1.0, 0.0};
 float4 Light0Color : DIFFUSE < string UIName = "Light 0 color"; string UIWidget = "Color"; > = {1.0, 0.9, 0.8, 1.0};
-float4 Light1Color : DIFFUSE < string UIName = "Light 1 color"; string UIWidget = "Color"; > = {0.2, 0.4, 1.0, 1.0};
-float4 Light2Color : DIFFUSE < string UIName = "Light 2 color"; string UIWidget = "Color"; > = {1.0, 0.2, 0.2, 1.0};
-float4 Light3Color : DIFFUSE < string UIName = "Light 3 color"; string UIWidget = "Color"; > = {0.2, 1.0, 0.3, 1.0};
+float4 Light1Color : DIFFUSE < string UIName = "Light 1 color"; string UIWidget = "Color"; > = {0.05, 0.15, 0.6, 1.0};
+float4 Light2Color : DIFFUSE < string UIName = "Light 2 color"; string UIWidget = "Color"; > = {0.6, 0.05, 0.05, 1.0};
+float4 Light3Color : DIFFUSE < string UIName = "Light 3 color"; string UIWidget = "Color"; > = {0.05, 0.5, 0.1, 1.0};
 float4 AmbientColor : AMBIENT < string UIName = "Ambient"; string UIWidget = "Color"; > = {0.05, 0.05, 0.05, 1.0};
 float Kd < string UIName = "Diffuse"; float UIMin = 0.0; float UIMax = 1.0; float UIStep = 0.01; > = 0.6;
 float Ks < string UIName = "Specular"; float UIMin = 0.0; float UIMax = 2.0; float UIStep = 0.01; > = 0.8;
