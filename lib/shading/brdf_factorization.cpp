@@ -174,11 +174,14 @@ BrdfFactors factorize_brdf(const AnalyticBrdf& brdf, const BrdfFactorizationOpti
   multiply_transposed(rows, r, s);
   p = s;
   double gamma = dot(s, s);
-  for (int it = 0; it < o.iterations && gamma > 1e-30; ++it) {
+  // Stop once |A^T r| has fallen 12 orders of magnitude: past that, rounding breaks the
+  // search directions' conjugacy and a near-zero q.q sends alpha to Inf (NaN factors).
+  const double converged = gamma * 1e-24;
+  for (int it = 0; it < o.iterations && gamma > converged; ++it) {
     multiply(rows, p, q);
     double qq = dot(q, q);
-    if (!(qq > 0.0)) break;
     double alpha = gamma / qq;
+    if (!(qq > 0.0) || !std::isfinite(alpha)) break;
     for (size_t i = 0; i < m; ++i) x[i] += alpha * p[i];
     for (size_t i = 0; i < r.size(); ++i) r[i] -= alpha * q[i];
     multiply_transposed(rows, r, s);
