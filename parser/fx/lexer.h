@@ -44,6 +44,9 @@ class Lexer {
   }
   void skip_splices();
   void skip_whitespace_and_comments();
+  // At a backslash or '/': skips a splice or a comment and returns true, or returns false at
+  // a token.
+  bool skip_comment_or_splice();
   Token next_token();
   Token make(TokenKind kind, size_t begin);
   std::string_view clean_spelling(const Token& t);

@@ -104,7 +104,9 @@ void Lexer::skip_splices() {
   }
 }
 
-void Lexer::skip_whitespace_and_comments() {
+// Inline into next_token(): most tokens follow one blank or none, and a call per token
+// cost more than the skipping. Comments and splices go out of line.
+inline void Lexer::skip_whitespace_and_comments() {
   const size_t size = text_.size();
   for (;;) {
     if (pos_ >= size) return;
@@ -115,45 +117,57 @@ void Lexer::skip_whitespace_and_comments() {
     } else if (c == '\n') {
       ++pos_;
       pending_flags_ |= kAtLineStart | kLeadingSpace;
-    } else if (c == '\\') {
-      size_t before = pos_;
-      skip_splices();
-      if (pos_ == before) return;  // a stray backslash: a token of its own
-    } else if (c == '/' && peek(1) == '/') {
-      // A line comment ends at a newline not preceded by a continuation backslash
-      // (`\` + LF or `\` + CR LF).
-      for (;;) {
-        const void* nl = std::memchr(text_.data() + pos_, '\n', size - pos_);
-        if (!nl) {
-          pos_ = size;
-          break;
-        }
-        size_t at_nl = static_cast<size_t>(static_cast<const char*>(nl) - text_.data());
-        size_t prev = at_nl - 1;  // the comment's "//" precedes, so at_nl >= 2
-        if (text_[prev] == '\r') --prev;
-        if (text_[prev] != '\\') {
-          pos_ = at_nl;
-          break;
-        }
-        pos_ = at_nl + 1;
-      }
-      pending_flags_ |= kLeadingSpace;
-    } else if (c == '/' && peek(1) == '*') {
-      size_t begin = pos_;
-      size_t end = text_.find("*/", pos_ + 2);
-      if (end == std::string_view::npos) {
-        diags_.error("unterminated-comment", {at(begin), {}}, "unterminated /* comment");
-        pos_ = text_.size();
-        return;
-      }
-      // A comment spanning lines still leaves the next token on a new line for directives
-      // only if a real newline follows; C treats the comment as one space.
-      pos_ = end + 2;
-      pending_flags_ |= kLeadingSpace;
-    } else {
+    } else if (c != '\\' && c != '/') {
+      return;
+    } else if (!skip_comment_or_splice()) {
       return;
     }
   }
+}
+
+bool Lexer::skip_comment_or_splice() {
+  const size_t size = text_.size();
+  if (text_[pos_] == '\\') {
+    size_t before = pos_;
+    skip_splices();
+    return pos_ != before;  // a stray backslash: a token of its own
+  }
+  if (peek(1) == '/') {
+    // A line comment ends at a newline not preceded by a continuation backslash
+    // (`\` + LF or `\` + CR LF).
+    for (;;) {
+      const void* nl = std::memchr(text_.data() + pos_, '\n', size - pos_);
+      if (!nl) {
+        pos_ = size;
+        break;
+      }
+      size_t at_nl = static_cast<size_t>(static_cast<const char*>(nl) - text_.data());
+      size_t prev = at_nl - 1;  // the comment's "//" precedes, so at_nl >= 2
+      if (text_[prev] == '\r') --prev;
+      if (text_[prev] != '\\') {
+        pos_ = at_nl;
+        break;
+      }
+      pos_ = at_nl + 1;
+    }
+    pending_flags_ |= kLeadingSpace;
+    return true;
+  }
+  if (peek(1) == '*') {
+    size_t begin = pos_;
+    size_t end = text_.find("*/", pos_ + 2);
+    if (end == std::string_view::npos) {
+      diags_.error("unterminated-comment", {at(begin), {}}, "unterminated /* comment");
+      pos_ = size;
+      return false;
+    }
+    // A comment spanning lines still leaves the next token on a new line for directives
+    // only if a real newline follows; C treats the comment as one space.
+    pos_ = end + 2;
+    pending_flags_ |= kLeadingSpace;
+    return true;
+  }
+  return false;  // a '/' operator
 }
 
 bool Lexer::at_line_end() {
