@@ -59,7 +59,7 @@ std::unique_ptr<EffectPreview> EffectPreview::create(const Context& ctx, const M
   std::unique_ptr<EffectPreview> p(new EffectPreview(ctx));
   p->desc_ = desc;
   p->bounds_ = bounds(mesh);
-  p->target_ = RenderTarget::create(ctx, {desc.width, desc.height, VK_FORMAT_R8G8B8A8_UNORM, desc.depth, 0, "fxkit preview"}, sink);
+  p->target_ = RenderTarget::create(ctx, {desc.width, desc.height, desc.color_format, desc.depth, 0, "fxkit preview"}, sink);
   p->frames_ = FrameResources::create(ctx, desc.frames, sink);
   if (!p->target_ || !p->frames_) return nullptr;
   const VkDeviceSize vbytes = mesh.vertices.size() * sizeof(Vertex), ibytes = mesh.indices.size() * sizeof(uint32_t);
@@ -133,6 +133,18 @@ VertexLayout EffectPreview::vertex_layout(std::span<const InterfaceVariable> inp
 
 std::optional<fx::Image> EffectPreview::render(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
                                                DiagnosticSink& sink) {
+  if (!draw_frame(binding, technique, vertex_layout, sink)) return std::nullopt;
+  return target_->readback_pixels(sink);
+}
+
+std::optional<fx::ImageF> EffectPreview::render_floats(EffectBinding& binding, uint32_t technique,
+                                                       uint32_t vertex_layout, DiagnosticSink& sink) {
+  if (!draw_frame(binding, technique, vertex_layout, sink)) return std::nullopt;
+  return target_->readback_floats(sink);
+}
+
+bool EffectPreview::draw_frame(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
+                               DiagnosticSink& sink) {
   frames_->begin_frame();
   bool recorded = true;
   const VkViewport viewport{0.0f, float(desc_.height), float(desc_.width), -float(desc_.height), 0.0f, 1.0f};
@@ -159,9 +171,9 @@ std::optional<fx::Image> EffectPreview::render(EffectBinding& binding, uint32_t 
     target_->end(cmd);
     target_->record_readback(cmd);
   }, sink);
-  if (!submitted || !recorded) return std::nullopt;
+  if (!submitted || !recorded) return false;
   ++frames_rendered_;
-  return target_->readback_pixels(sink);
+  return true;
 }
 
 std::vector<InterfaceVariable> technique_vertex_inputs(const EffectModel& model, EffectPrograms& programs,

@@ -2,6 +2,9 @@
 #include "fx/vulkan/render_target.h"
 
 #include <utility>
+#include <vector>
+
+#include <glm/gtc/packing.hpp>
 
 #include "fx/vulkan/barrier.h"
 #include "fx/vulkan/one_shot.h"
@@ -190,17 +193,22 @@ std::optional<fx::Image> RenderTarget::readback_pixels(DiagnosticSink& sink) con
 
 std::optional<fx::ImageF> RenderTarget::readback_floats(DiagnosticSink& sink) const {
   VkFormat format = color_.format();
-  if (format != VK_FORMAT_R32G32B32A32_SFLOAT || !readback_) {
+  const bool half = format == VK_FORMAT_R16G16B16A16_SFLOAT;
+  if ((!half && format != VK_FORMAT_R32G32B32A32_SFLOAT) || !readback_) {
     sink.error("vk-readback-format", {},
                "reading back color format " + std::to_string(int(format)) +
-                   " as floats is not supported (R32G32B32A32_SFLOAT only)");
+                   " as floats is not supported (R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT only)");
     return std::nullopt;
   }
   fx::ImageF image = fx::ImageF::blank(width_, height_, 4);
-  if (!readback_.read(image.pixels.data(), image.pixels.size() * sizeof(float))) {
+  std::vector<uint16_t> halves(half ? image.pixels.size() : 0);
+  const bool read = half ? readback_.read(halves.data(), halves.size() * sizeof(uint16_t))
+                         : readback_.read(image.pixels.data(), image.pixels.size() * sizeof(float));
+  if (!read) {
     sink.error("vk-readback-format", {}, "readback buffer is smaller than the image");
     return std::nullopt;
   }
+  for (size_t i = 0; i < halves.size(); ++i) image.pixels[i] = glm::unpackHalf1x16(halves[i]);  // keeps Inf, NaN
   return image;
 }
 

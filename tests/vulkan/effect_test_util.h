@@ -38,7 +38,8 @@ struct RenderedEffect {
 inline std::unique_ptr<RenderedEffect> bind_effect(Context& ctx, const std::string& path,
                                                    const std::string& technique = "",
                                                    const std::string& mesh = "sphere", uint32_t size = 96,
-                                                   std::optional<DynamicStateSet> dynamic = std::nullopt) {
+                                                   std::optional<DynamicStateSet> dynamic = std::nullopt,
+                                                   VkFormat color = VK_FORMAT_R8G8B8A8_UNORM) {
   auto r = std::make_unique<RenderedEffect>();
   DiagnosticSink sink;
   FrontEndOptions options;
@@ -50,6 +51,7 @@ inline std::unique_ptr<RenderedEffect> bind_effect(Context& ctx, const std::stri
   EXPECT_TRUE(m) << describe(sink);
   EffectPreviewDesc desc;
   desc.width = desc.height = size;
+  desc.color_format = color;
   r->preview = EffectPreview::create(ctx, *m, desc, sink);
   EXPECT_TRUE(r->preview) << describe(sink);
   if (!r->preview) return nullptr;

@@ -17,6 +17,9 @@ namespace fx::vk {
 
 struct EffectPreviewDesc {
   uint32_t width = 256, height = 256;
+  // RGBA8 for pictures (render); R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT to read the
+  // shader's values unclamped (render_floats).
+  VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM;
   DepthAttachment depth = DepthAttachment::d24s8;
   std::array<float, 4> clear{0.08f, 0.08f, 0.1f, 1.0f};
   FrameResourcesDesc frames;
@@ -49,11 +52,16 @@ class EffectPreview {
   // per pass, end, read back. nullopt with diagnostics on failure.
   std::optional<fx::Image> render(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
                                   DiagnosticSink& sink);
+  // The same frame read back as floats, from a float color_format.
+  std::optional<fx::ImageF> render_floats(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
+                                          DiagnosticSink& sink);
   // Frames rendered by render().
   uint64_t frames_rendered() const { return frames_rendered_; }
 
  private:
   explicit EffectPreview(const Context& ctx) : ctx_(&ctx), textures_(ctx) {}
+  // Records and submits one frame of `technique` and its readback; false on failure.
+  bool draw_frame(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout, DiagnosticSink& sink);
   const Context* ctx_;
   EffectPreviewDesc desc_;
   MeshBounds bounds_;

@@ -24,7 +24,7 @@ enum class DepthAttachment {
 struct RenderTargetDesc {
   uint32_t width = 0, height = 0;
   // Readback supports R8G8B8A8 and B8G8R8A8 (UNORM or SRGB) as fx::Image, and
-  // R32G32B32A32_SFLOAT as fx::ImageF; others render but do not read back.
+  // R16G16B16A16_SFLOAT / R32G32B32A32_SFLOAT as fx::ImageF; others render but do not read back.
   VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM;
   DepthAttachment depth = DepthAttachment::none;
   // Extra usage for the color image (SAMPLED to read it in a later pass).
@@ -79,8 +79,9 @@ class RenderTarget {
   // The pixels of the last recorded readback, once its submission has completed, as RGBA8
   // (BGRA formats are swizzled). "vk-readback-format" for formats it cannot convert.
   std::optional<fx::Image> readback_pixels(DiagnosticSink& sink) const;
-  // The same for an R32G32B32A32_SFLOAT target: the float values, unclamped and unrounded
-  // (for measuring shader error below one 8-bit level). "vk-readback-format" otherwise.
+  // The same for an R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT target: the values as
+  // floats, unclamped (NaN and Inf kept), for measuring shader error below one 8-bit level.
+  // "vk-readback-format" otherwise.
   std::optional<fx::ImageF> readback_floats(DiagnosticSink& sink) const;
   // record_readback + submit_and_wait + readback_pixels.
   std::optional<fx::Image> read_color(const Context& ctx, DiagnosticSink& sink);
