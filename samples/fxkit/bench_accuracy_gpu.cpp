@@ -47,7 +47,8 @@ struct KernelObjects {
 };
 
 VkShaderModule module_from(VkDevice device, const fx::CompiledShader& s) {
-  VkShaderModuleCreateInfo ci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  VkShaderModuleCreateInfo ci{};
+  ci.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
   ci.codeSize = s.spirv.size() * 4;
   ci.pCode = s.spirv.data();
   VkShaderModule m = VK_NULL_HANDLE;
@@ -92,19 +93,22 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
   // Shared layout: binding 0 sampled image, 1 sampler (clamp or wrap), fragment stage.
   VkDescriptorSetLayoutBinding b[2] = {{0, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
                                        {1, VK_DESCRIPTOR_TYPE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
-  VkDescriptorSetLayoutCreateInfo dl{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  VkDescriptorSetLayoutCreateInfo dl{};
+  dl.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
   dl.bindingCount = 2;
   dl.pBindings = b;
   VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
   vkCreateDescriptorSetLayout(dev, &dl, nullptr, &set_layout);
-  VkPipelineLayoutCreateInfo pl{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  VkPipelineLayoutCreateInfo pl{};
+  pl.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
   pl.setLayoutCount = 1;
   pl.pSetLayouts = &set_layout;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   vkCreatePipelineLayout(dev, &pl, nullptr, &layout);
   VkSampler samplers[2] = {};
   for (int w = 0; w < 2; ++w) {
-    VkSamplerCreateInfo sc{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    VkSamplerCreateInfo sc{};
+    sc.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
     sc.magFilter = sc.minFilter = VK_FILTER_LINEAR;
     sc.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
     sc.addressModeU = sc.addressModeV = sc.addressModeW =
@@ -114,13 +118,15 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
   }
   VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, uint32_t(kernels.size())},
                                    {VK_DESCRIPTOR_TYPE_SAMPLER, uint32_t(kernels.size())}};
-  VkDescriptorPoolCreateInfo dp{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  VkDescriptorPoolCreateInfo dp{};
+  dp.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
   dp.maxSets = uint32_t(kernels.size());
   dp.poolSizeCount = 2;
   dp.pPoolSizes = sizes;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   vkCreateDescriptorPool(dev, &dp, nullptr, &pool);
-  VkQueryPoolCreateInfo qp{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  VkQueryPoolCreateInfo qp{};
+  qp.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
   qp.queryType = VK_QUERY_TYPE_TIMESTAMP;
   qp.queryCount = 2;
   VkQueryPool queries = VK_NULL_HANDLE;
@@ -147,14 +153,16 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
     auto tex = fx::vk::Texture::from_table(*ctx, k.table.width ? k.table : dummy, sink);
     if (!tex) { ok = false; break; }
     o->texture = std::move(*tex);
-    VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    VkDescriptorSetAllocateInfo ai{};
+    ai.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
     ai.descriptorPool = pool;
     ai.descriptorSetCount = 1;
     ai.pSetLayouts = &set_layout;
     vkAllocateDescriptorSets(dev, &ai, &o->set);
     VkDescriptorImageInfo image{VK_NULL_HANDLE, o->texture.view(), o->texture.layout()};
     VkDescriptorImageInfo sampler{samplers[k.wrap ? 1 : 0], VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED};
-    VkWriteDescriptorSet w[2] = {{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}, {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}};
+    VkWriteDescriptorSet w[2] = {};
+    w[0].sType = w[1].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
     w[0].dstSet = w[1].dstSet = o->set;
     w[0].dstBinding = 0, w[1].dstBinding = 1;
     w[0].descriptorCount = w[1].descriptorCount = 1;
@@ -162,33 +170,41 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
     w[1].descriptorType = VK_DESCRIPTOR_TYPE_SAMPLER, w[1].pImageInfo = &sampler;
     vkUpdateDescriptorSets(dev, 2, w, 0, nullptr);
 
-    VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
-                                                 {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
+    VkPipelineShaderStageCreateInfo stages[2] = {};
+    stages[0].sType = stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT, stages[0].module = o->vs, stages[0].pName = cv.entry_point.c_str();
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT, stages[1].module = o->ps, stages[1].pName = cp.entry_point.c_str();
-    VkPipelineVertexInputStateCreateInfo vi{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    VkPipelineInputAssemblyStateCreateInfo ia{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    VkPipelineVertexInputStateCreateInfo vi{};
+    vi.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+    VkPipelineInputAssemblyStateCreateInfo ia{};
+    ia.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
     ia.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo vp{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    VkPipelineViewportStateCreateInfo vp{};
+    vp.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
     vp.viewportCount = vp.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    VkPipelineRasterizationStateCreateInfo rs{};
+    rs.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
     rs.polygonMode = VK_POLYGON_MODE_FILL;
     rs.cullMode = VK_CULL_MODE_NONE;
     rs.lineWidth = 1;
-    VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    VkPipelineMultisampleStateCreateInfo ms{};
+    ms.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
     ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
     VkPipelineColorBlendAttachmentState att{};
     att.colorWriteMask = 0xF;
-    VkPipelineColorBlendStateCreateInfo cb{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    VkPipelineColorBlendStateCreateInfo cb{};
+    cb.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
     cb.attachmentCount = 1;
     cb.pAttachments = &att;
     VkDynamicState dyn[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo ds{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    VkPipelineDynamicStateCreateInfo ds{};
+    ds.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
     ds.dynamicStateCount = 2;
     ds.pDynamicStates = dyn;
     fx::vk::AttachmentFormats formats = target->formats();
     VkPipelineRenderingCreateInfo rendering = formats.pipeline_info();
-    VkGraphicsPipelineCreateInfo gp{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+    VkGraphicsPipelineCreateInfo gp{};
+    gp.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
     gp.pNext = &rendering;
     gp.stageCount = 2;
     gp.pStages = stages;
