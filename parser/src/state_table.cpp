@@ -61,7 +61,8 @@ class StateIndex {
       // The stored hash rejects colliding rows without comparing their names.
       if (slots_[slot].hash != hash) continue;
       const StateInfo& s = rows_[static_cast<size_t>(slots_[slot].row)];
-      if (s.block == block && iequals(s.name, name)) return &s;
+      // Effects mostly spell states as the table does: one memcmp before folding case.
+      if (s.block == block && (s.name == name || iequals(s.name, name))) return &s;
     }
     return nullptr;
   }
