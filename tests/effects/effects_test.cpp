@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "seed_picks.h"
 #include "fx/diagnostic_render.h"
 #include "fx/frontend.h"
 #include "fx/select/caps_requirement.h"
@@ -223,22 +224,7 @@ TEST(Effects, StrandFeatureVariantsCompileOnlyWhatTheSceneEnables) {
 // The seeds' generational story (docs/effects.md): what each profile runs, distance 0,
 // no scheme asked for.
 TEST(Effects, EachGenerationPicksWhatTheSeedDescribes) {
-  struct Row { const char* effect; std::map<std::string, std::string> picks; };
-  std::vector<Row> rows = {
-      {"per_pixel_lighting.fx", {{"dx6", "emboss"}, {"dx7", "dot3_multitexture"}, {"dx8", "diffuse_ps11"},
-                                 {"dx8_1", "diffuse_ps11"}, {"dx9", "diffuse_ps20"}, {"modern", "diffuse_ps20"}}},
-      {"strand_aniso.fx", {{"dx6", ""}, {"dx7", ""}, {"dx8", "strand_lut_ps11"},
-                           {"dx8_1", "strand_four_lights_ps14"}, {"dx9", "strand_bump_renormalized"},
-                           {"modern", "strand_bump_renormalized"}}},
-      {"hemisphere.fx", {{"dx6", "hemisphere_vs11"}, {"dx7", "hemisphere_vs11"}, {"dx8", "hemisphere_ps11"},
-                         {"dx8_1", "hemisphere_ps11"}, {"dx9", "hemisphere_sun"}, {"modern", "hemisphere_sun"}}},
-      {"brdf.fx", {{"dx7", ""}, {"dx8", "tec0"}, {"dx9", "brdf_ps20"}, {"modern", "brdf_ps20"}}},
-      {"wood.fx", {{"dx8_1", ""}, {"dx9", "wood"}, {"modern", "wood"}}},
-      {"seeds/wood_seed.fx", {{"dx8_1", ""}, {"dx9", "wood_seed"}, {"modern", "wood_seed"}}},
-      {"aniso_lut_ward.fx", {{"dx8_1", ""}, {"dx9", "gaussian_per_pixel"}, {"modern", "gaussian_per_pixel"}}},
-      {"aniso_highlights_glsl.fx", {{"dx9c", ""}, {"modern", "aniso_blinn_phong"}}},
-  };
-  for (const Row& row : rows)
+  for (const auto& row : fxkit::testing::seed_picks())
     for (const auto& [caps, want] : row.picks) EXPECT_EQ(pick(row.effect, caps), want) << row.effect << " on " << caps;
 }
 
