@@ -132,6 +132,7 @@ DeviceSupport query_device(VkPhysicalDevice physical_device, uint32_t index) {
   DeviceFeatures& f = s.features;
   f.dynamic_rendering = v13 && f13.dynamicRendering;
   f.synchronization2 = v13 && f13.synchronization2;
+  f.maintenance4 = v13 && f13.maintenance4;
   f.extended_dynamic_state = v13;  // core commands in 1.3, no feature bit
   f.extended_dynamic_state2 = v13;
   f.eds2_logic_op = has_eds2 && f_eds2.extendedDynamicState2LogicOp;
@@ -174,6 +175,7 @@ FeatureChain::FeatureChain(const DeviceSupport& supported) {
 
   v13.dynamicRendering = f.dynamic_rendering;
   v13.synchronization2 = f.synchronization2;
+  v13.maintenance4 = f.maintenance4;
   head.pNext = &v13;
   void** tail = &v13.pNext;
 

@@ -4,11 +4,35 @@
 #include <xxhash.h>
 
 #include <algorithm>
+#include <span>
 #include <utility>
 
 #include "vk_check.h"
 
 namespace fx::vk {
+namespace {
+
+// The Location of every Input variable of a SPIR-V module. glslang's reflection can list an
+// input its optimiser removed; a vertex attribute no input reads is a validation warning.
+std::vector<uint32_t> input_locations(std::span<const uint32_t> spirv) {
+  constexpr uint32_t kOpVariable = 59, kOpDecorate = 71, kDecorationLocation = 30, kStorageClassInput = 1;
+  std::vector<std::pair<uint32_t, uint32_t>> locations;  // id, Location
+  std::vector<uint32_t> inputs;                           // ids of Input variables
+  for (size_t i = 5; i < spirv.size();) {
+    const uint32_t words = spirv[i] >> 16, op = spirv[i] & 0xffffu;
+    if (words == 0 || i + words > spirv.size()) break;
+    if (op == kOpDecorate && words >= 4 && spirv[i + 2] == kDecorationLocation)
+      locations.emplace_back(spirv[i + 1], spirv[i + 3]);
+    if (op == kOpVariable && words >= 4 && spirv[i + 3] == kStorageClassInput) inputs.push_back(spirv[i + 2]);
+    i += words;
+  }
+  std::vector<uint32_t> out;
+  for (const auto& [id, location] : locations)
+    if (std::find(inputs.begin(), inputs.end(), id) != inputs.end()) out.push_back(location);
+  return out;
+}
+
+}  // namespace
 
 VkShaderStageFlagBits to_vk_stage(ShaderStage stage) {
   switch (stage) {
@@ -56,7 +80,7 @@ ShaderProgram& ShaderProgram::operator=(ShaderProgram&& o) noexcept {
   stage_infos_ = std::move(o.stage_infos_);
   set_layout_ = std::exchange(o.set_layout_, VK_NULL_HANDLE);
   pipeline_layout_ = std::exchange(o.pipeline_layout_, VK_NULL_HANDLE);
-  vertex_inputs_ = o.vertex_inputs_;
+  vertex_inputs_ = std::move(o.vertex_inputs_);
   color_outputs_ = o.color_outputs_;
   blocks_ = std::move(o.blocks_);
   images_ = std::move(o.images_);
@@ -122,7 +146,9 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx,
     sink.error("vk-program-no-vertex-stage", {}, "a graphics program needs a vertex shader");
     return std::nullopt;
   }
-  p.vertex_inputs_ = &vertex->reflection.inputs;
+  const std::vector<uint32_t> live = input_locations(vertex->spirv);
+  for (const InterfaceVariable& input : vertex->reflection.inputs)
+    if (std::find(live.begin(), live.end(), input.location) != live.end()) p.vertex_inputs_.push_back(input);
 
   std::vector<VkDescriptorSetLayoutBinding> bindings;
   for (const ProgramBinding& b : layout.bindings) {

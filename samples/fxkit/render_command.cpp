@@ -170,17 +170,14 @@ int run_render(const RenderArgs& args) {
   }
   ctx->wait_idle();
   if (args.validation) {
-    // Every error and warning fails the run, except the layer's performance warning that a
-    // vertex output is not read by the pixel shader: Direct3D links stages by semantic and
-    // allows it, and the layer silences it once the device enables maintenance4 (the
-    // Context does not yet). It is printed and counted all the same.
-    size_t failing = 0, unconsumed = 0;
+    // Every error and warning fails the run. (A vertex output the pixel shader does not
+    // read, which Direct3D allows, is no warning: the Context enables maintenance4 when the
+    // device has it.)
+    size_t failing = 0;
     for (const fx::vk::ValidationMessage& m : ctx->validation_messages()) {
-      const bool interface = m.id_name == "UNASSIGNED-CoreValidation-Shader-OutputNotConsumed";
-      (interface ? unconsumed : failing) += 1;
+      ++failing;
       std::fprintf(stderr, "validation %s: %s: %s\n", fx::to_string(m.severity), m.id_name.c_str(), m.text.c_str());
     }
-    if (unconsumed) std::fprintf(stderr, "fxkit render: %zu unconsumed-interface performance warning(s) (not failures)\n", unconsumed);
     if (failing) status = kInputErrors;
   }
   return status;

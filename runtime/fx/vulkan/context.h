@@ -77,6 +77,9 @@ struct DeviceFeatures {
   bool geometry_shader = false;
   bool tessellation_shader = false;
   bool texture_compression_bc = false;
+  // Vulkan 1.3 maintenance4: among others, a vertex output the next stage does not read is
+  // well defined (Direct3D links stages by semantic), so the layer does not warn about it.
+  bool maintenance4 = false;
 };
 
 // Identity and limits of the physical device.

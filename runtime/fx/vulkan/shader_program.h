@@ -65,8 +65,9 @@ class ShaderProgram {
   VkPipelineLayout pipeline_layout() const { return pipeline_layout_; }
   // Shader stage create infos (entry point names point into the program).
   const std::vector<VkPipelineShaderStageCreateInfo>& stage_infos() const { return stage_infos_; }
-  // Vertex shader inputs with their semantics (vertex attributes).
-  const std::vector<InterfaceVariable>& vertex_inputs() const { return *vertex_inputs_; }
+  // Vertex shader inputs with their semantics (vertex attributes): those the SPIR-V still
+  // reads (an input the compiler removed as unused must not be fed an attribute).
+  const std::vector<InterfaceVariable>& vertex_inputs() const { return vertex_inputs_; }
   // Colour outputs of the fragment stage (0 without a fragment stage).
   uint32_t color_output_count() const { return color_outputs_; }
   const std::vector<ProgramUniformBlock>& uniform_blocks() const { return blocks_; }
@@ -85,7 +86,7 @@ class ShaderProgram {
   std::vector<VkPipelineShaderStageCreateInfo> stage_infos_;
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
-  const std::vector<InterfaceVariable>* vertex_inputs_ = nullptr;
+  std::vector<InterfaceVariable> vertex_inputs_;
   uint32_t color_outputs_ = 0;
   std::vector<ProgramUniformBlock> blocks_;
   std::vector<ProgramImage> images_;
