@@ -1,15 +1,18 @@
 // `fxkit bench apply [--repeats N] [--json]`: CPU cost of recording N objects through
 // EffectBinding (parameters set per object, begin/apply/draw/end per technique group)
 // against hand-written Vulkan recording the same work into a command buffer: the same
-// pipelines, one descriptor set per program with dynamic uniform offsets, uniform bytes
-// copied into a mapped ring, the same binds and draws. Both run in the same process on the
-// same device, both are submitted (only recording is timed); the ratio is fxkit / raw.
+// pipelines, one descriptor set per program with dynamic uniform offsets, the same uniform
+// bytes copied into a mapped ring (blocks holding per-object matrices per draw, the others
+// once per frame, as fxkit re-packs only changed blocks), the same binds and draws. Both
+// run in the same process on the same device, both are submitted (only recording is
+// timed); the ratio is fxkit / raw.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <map>
 #include <set>
+#include <string_view>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -33,18 +36,25 @@ struct Group {
   fx::Param world, wvp;
 };
 
-// What the hand-written path keeps per pass: pipeline, layout, its own descriptor set, the
-// block sizes and where World / WorldViewProjection sit in each block.
+// What the hand-written path keeps per pass: pipeline, layout, its own descriptor set and
+// per block the app's constants (the effect's values, packed as the shader reads them),
+// where World / WorldViewProjection sit and whether the shader reads them transposed.
 struct RawPass {
   VkPipeline pipeline;
   VkPipelineLayout layout;
   VkDescriptorSet set = VK_NULL_HANDLE;
   struct Block {
     uint32_t size, world = UINT32_MAX, wvp = UINT32_MAX;
+    bool world_columns = false, wvp_columns = false;  // column_major: registers hold columns
     std::vector<uint8_t> bytes;
+    uint32_t offset = 0;  // ring offset of this frame's copy (blocks without per-object data)
+    bool per_object() const { return world != UINT32_MAX || wvp != UINT32_MAX; }
   };
   std::vector<Block> blocks;
 };
+
+// The parameter a reflected member path ("light.dir", "bones[3]") starts with.
+std::string_view root_name(std::string_view path) { return path.substr(0, path.find_first_of(".[")); }
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -106,10 +116,14 @@ int bench_apply(const BenchArgs& args) {
     const fx::vk::RenderingFormats formats = preview->formats();
     const fx::vk::SceneView scene = preview->scene();
     // Object transforms: a grid, the same for both paths.
-    std::vector<glm::mat4> world(kObjects), wvp(kObjects);
+    // The hand-written path keeps them in the layout its shaders read as well (the
+    // transpose for column_major registers), as an engine choosing its own math would.
+    std::vector<glm::mat4> world(kObjects), wvp(kObjects), world_t(kObjects), wvp_t(kObjects);
     for (uint32_t i = 0; i < kObjects; ++i) {
       world[i] = glm::translate(glm::mat4(1.0f), glm::vec3(float(i % 50) * 0.02f - 0.5f, float(i / 50) * 0.02f - 0.4f, 0.0f));
       wvp[i] = scene.projection * scene.view * world[i];
+      world_t[i] = glm::transpose(world[i]);
+      wvp_t[i] = glm::transpose(wvp[i]);
     }
     const uint32_t per_group = kObjects / uint32_t(groups.size());
 
@@ -138,6 +152,11 @@ int bench_apply(const BenchArgs& args) {
     std::set<VkPipeline> distinct;
     for (size_t g = 0; g < groups.size(); ++g) {
       const Group& G = groups[g];
+      // The app's constants: the effect's parameter values (copied from fxkit's store) packed
+      // once by a store of the app's own, with the HLSL matrix order of each member.
+      fx::ParameterStore values(*G.effect->model);
+      fx::remap(*G.effect->params, values);
+      uint32_t block_id = 0;
       for (uint32_t p = 0; p < G.binding->pass_count(G.technique); ++p) {
         RawPass rp{};
         const fx::vk::ShaderProgram* program = nullptr;
@@ -153,11 +172,19 @@ int bench_apply(const BenchArgs& args) {
         images.reserve(16);
         std::vector<VkWriteDescriptorSet> writes;
         for (const fx::vk::ProgramUniformBlock& b : program->uniform_blocks()) {
-          RawPass::Block block{b.size, UINT32_MAX, UINT32_MAX, std::vector<uint8_t>(b.size, 0)};
+          RawPass::Block block{b.size};
+          block.bytes.assign(b.size, 0);
+          std::vector<fx::BlockMemberLayout> members;
           for (const fx::BlockMember& m : b.reflection->members) {
-            if (m.name == "World") block.world = m.offset;
-            if (m.name == "WorldViewProjection") block.wvp = m.offset;
+            const fx::Param root = values.find(root_name(m.name));
+            const fx::Type* type = root.valid() ? values.type(root) : nullptr;
+            const fx::MatrixOrder order = type ? type->order : fx::MatrixOrder::column_major;
+            members.push_back({m.name, m.offset, m.size, m.array_stride, m.matrix_stride ? m.matrix_stride : 16u, order});
+            if (m.name == "World") block.world = m.offset, block.world_columns = order == fx::MatrixOrder::column_major;
+            if (m.name == "WorldViewProjection") block.wvp = m.offset, block.wvp_columns = order == fx::MatrixOrder::column_major;
           }
+          values.bind_layout(block_id, members, b.size);
+          values.write_block(block_id++, block.bytes);
           rp.blocks.push_back(std::move(block));
           buffers.push_back({ring->handle(), 0, b.size});
           writes.push_back({VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET, nullptr, rp.set, b.binding, 0, 1,
@@ -204,25 +231,42 @@ int bench_apply(const BenchArgs& args) {
       return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     };
     uint8_t* ring_bytes = static_cast<uint8_t*>(ring->mapped());
+    uint64_t raw_bytes = 0;  // uniform bytes the last raw frame copied into its ring
     auto frame_raw = [&](VkCommandBuffer cmd) {
       auto t0 = Clock::now();
       VkDeviceSize head = 0;
       VkPipeline bound = VK_NULL_HANDLE;
       uint32_t offsets[8];
+      raw_bytes = 0;
+      auto upload = [&](const RawPass::Block& block) {
+        std::memcpy(ring_bytes + head, block.bytes.data(), block.size);
+        const auto at = uint32_t(head);
+        head += (block.size + align - 1) / align * align;
+        raw_bytes += block.size;
+        return at;
+      };
       for (size_t g = 0; g < groups.size(); ++g) {
         vkCmdSetViewport(cmd, 0, 1, &viewport);
         vkCmdSetScissor(cmd, 0, 1, &scissor);
         vkCmdBindVertexBuffers(cmd, 0, 2, vbs, offs);
+        // The material's constants do not change between objects: one copy per frame.
+        for (RawPass& rp : raw[g])
+          for (RawPass::Block& block : rp.blocks)
+            if (!block.per_object()) block.offset = upload(block);
         for (uint32_t i = uint32_t(g) * per_group; i < uint32_t(g + 1) * per_group; ++i) {
           for (RawPass& rp : raw[g]) {
             // The app's own uniform structs: the two matrices change per object.
             for (size_t b = 0; b < rp.blocks.size(); ++b) {
               RawPass::Block& block = rp.blocks[b];
-              if (block.world != UINT32_MAX) std::memcpy(block.bytes.data() + block.world, glm::value_ptr(world[i]), 64);
-              if (block.wvp != UINT32_MAX) std::memcpy(block.bytes.data() + block.wvp, glm::value_ptr(wvp[i]), 64);
-              std::memcpy(ring_bytes + head, block.bytes.data(), block.size);
-              offsets[b] = uint32_t(head);
-              head += (block.size + align - 1) / align * align;
+              if (!block.per_object()) {
+                offsets[b] = block.offset;
+                continue;
+              }
+              if (block.world != UINT32_MAX)
+                std::memcpy(block.bytes.data() + block.world, glm::value_ptr(block.world_columns ? world_t[i] : world[i]), 64);
+              if (block.wvp != UINT32_MAX)
+                std::memcpy(block.bytes.data() + block.wvp, glm::value_ptr(block.wvp_columns ? wvp_t[i] : wvp[i]), 64);
+              offsets[b] = upload(block);
             }
             if (rp.pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = rp.pipeline);
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, rp.layout, 0, 1, &rp.set,
@@ -233,8 +277,10 @@ int bench_apply(const BenchArgs& args) {
       }
       return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     };
+    uint64_t fx_bytes = 0;  // uniform bytes the last fxkit frame packed into its ring
     auto run = [&](bool fxkit_path) {
       double ms = 0;
+      const uint64_t bytes_before = preview->frames().uniform_bytes_uploaded();
       if (fxkit_path) {
         preview->frames().begin_frame();
         for (auto& b : bindings) b->reset_stats();
@@ -244,6 +290,7 @@ int bench_apply(const BenchArgs& args) {
         ms = fxkit_path ? frame_fxkit(cmd) : frame_raw(cmd);
         target->end(cmd);
       }, sink) && ok;
+      if (fxkit_path) fx_bytes = preview->frames().uniform_bytes_uploaded() - bytes_before;
       return ms;
     };
     std::vector<double> fx_ms, raw_ms;
@@ -281,6 +328,8 @@ int bench_apply(const BenchArgs& args) {
            {"pipeline_binds", stats.pipeline_binds},
            {"descriptor_binds", stats.descriptor_binds},
            {"uniform_uploads", stats.uniform_uploads},
+           {"fxkit_uniform_bytes", fx_bytes},
+           {"raw_uniform_bytes", raw_bytes},
            {"dynamic_state_calls", stats.dynamic_state_calls}};
     if (args.json) {
       std::printf("%s\n", json_text(out).c_str());
@@ -293,6 +342,8 @@ int bench_apply(const BenchArgs& args) {
       std::printf("  pipelines created %zu for %zu distinct state combinations; last frame: %llu pipeline binds, %llu descriptor binds, %llu uniform uploads\n",
                   pipelines, distinct.size(), (unsigned long long)stats.pipeline_binds,
                   (unsigned long long)stats.descriptor_binds, (unsigned long long)stats.uniform_uploads);
+      std::printf("  uniform bytes per frame: fxkit %llu, hand-written %llu\n", (unsigned long long)fx_bytes,
+                  (unsigned long long)raw_bytes);
     }
     ctx->wait_idle();
     vkDestroyDescriptorPool(ctx->device(), pool, nullptr);
