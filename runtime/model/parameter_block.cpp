@@ -83,10 +83,11 @@ std::vector<uint32_t> ParameterStore::Impl::match_into(const Impl& other) const 
 
 // The copies that place one member's words into a block, with D3D matrix conventions:
 // column_major puts HLSL column c in register c, row_major puts row r in register r.
-// Words that would fall outside the member's range or the block are left out; adjacent
-// words merge into one run.
-void ParameterStore::Impl::plan_runs(const Node& n, uint32_t node, const BlockMemberLayout& m,
-                                     uint32_t block_size, std::vector<WordRun>& runs) {
+// Words that would fall outside the member's range or the block are left out. Words are
+// visited in destination order, so each register becomes one run (a whole row-major
+// matrix with packed registers, one).
+void ParameterStore::Impl::plan_runs(const Node& n, const BlockMemberLayout& m, uint32_t block_size,
+                                     std::vector<WordRun>& runs) {
   const Type elem = n.type.without_arrays();
   const uint32_t per = elem.component_count();
   const uint32_t count = n.type.element_count();
@@ -95,25 +96,32 @@ void ParameterStore::Impl::plan_runs(const Node& n, uint32_t node, const BlockMe
   const uint64_t limit = std::min<uint64_t>(static_cast<uint64_t>(m.offset) + m.size, block_size);
   auto put = [&](uint64_t at, uint32_t word) {
     if (at + 4 > limit) return;
-    auto dst = static_cast<uint32_t>(at);
+    const auto dst = static_cast<uint32_t>(at);
+    const uint32_t src = n.offset + word;
     if (!runs.empty()) {
       WordRun& last = runs.back();
-      if (last.node == node && last.src + last.words == word && last.dst + last.words * 4 == dst) {
+      if (last.kind != RunKind::columns4x4 && last.pooled == n.pooled && last.dst + last.words * 4 == dst &&
+          src > last.src && (last.words == 1 || last.src + last.words * last.stride == src)) {
+        if (last.words == 1) last.stride = src - last.src;
+        last.kind = last.stride == 1 ? RunKind::copy : RunKind::gather;
         ++last.words;
         return;
       }
     }
-    runs.push_back({node, word, dst, 1});
+    runs.push_back({src, dst, 1, 1, n.pooled, RunKind::copy});
   };
   for (uint32_t e = 0; e < count; ++e) {
     const uint64_t base = m.offset + static_cast<uint64_t>(e) * (count > 1 ? astride : 0);
     const uint32_t first = e * per;
-    if (elem.cls == TypeClass::matrix) {
+    const bool columns = elem.cls == TypeClass::matrix && m.order == MatrixOrder::column_major;
+    if (columns && elem.rows == 4 && elem.cols == 4 && mstride == 16 && base + 64 <= limit) {
+      runs.push_back({n.offset + first, static_cast<uint32_t>(base), 16, 4, n.pooled, RunKind::columns4x4});
+    } else if (columns) {
+      for (uint32_t c = 0; c < elem.cols; ++c)
+        for (uint32_t r = 0; r < elem.rows; ++r) put(base + c * mstride + r * 4, first + r * elem.cols + c);
+    } else if (elem.cls == TypeClass::matrix) {
       for (uint32_t r = 0; r < elem.rows; ++r)
-        for (uint32_t c = 0; c < elem.cols; ++c) {
-          uint64_t at = m.order == MatrixOrder::column_major ? base + c * mstride + r * 4 : base + r * mstride + c * 4;
-          put(at, first + r * elem.cols + c);
-        }
+        for (uint32_t c = 0; c < elem.cols; ++c) put(base + r * mstride + c * 4, first + r * elem.cols + c);
     } else {
       // Doubles are held as float; booleans are 32-bit 0/1 as HLSL's bool in a cbuffer.
       for (uint32_t k = 0; k < per; ++k) put(base + k * 4, first + k);
@@ -123,19 +131,11 @@ void ParameterStore::Impl::plan_runs(const Node& n, uint32_t node, const BlockMe
 
 ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMemberLayout> members, uint32_t block_size) {
   Impl& s = *impl_;
-  uint32_t slot;
-  if (auto it = s.block_slot.find(block); it != s.block_slot.end()) {
-    slot = it->second;
-    for (auto& tb : s.top_blocks) tb.erase(std::remove(tb.begin(), tb.end(), slot), tb.end());
-  } else {
-    slot = static_cast<uint32_t>(s.blocks.size());
-    s.blocks.emplace_back();
-    s.block_slot.emplace(block, slot);
-  }
   Impl::Block b;
   b.id = block;
   b.size = block_size;
   std::string skipped;
+  std::vector<std::pair<uint32_t, std::vector<Impl::WordRun>>> per_top;  // runs grouped by top-level node
   for (const BlockMemberLayout& m : members) {
     uint32_t node = s.find_path(m.name);
     if (node == kNoIndex || s.nodes[node].words == 0 || s.nodes[node].type.cls == TypeClass::structure) {
@@ -146,27 +146,64 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
       return fail(ParamStatus::size_mismatch, "member '" + m.name + "' lies outside the block (" +
                                                   std::to_string(block_size) + " bytes)");
     b.members.push_back({node, m});
-    Impl::plan_runs(s.nodes[node], node, m, block_size, b.runs);
     const Impl::Node& n = s.nodes[node];
-    auto& tb = s.top_blocks[n.top];
-    if (std::find(tb.begin(), tb.end(), slot) == tb.end()) tb.push_back(slot);
-    if (n.pooled) b.pooled.emplace_back(n.pool_entry, 0);
+    auto group = std::find_if(per_top.begin(), per_top.end(), [&](const auto& g) { return g.first == n.top; });
+    if (group == per_top.end()) group = per_top.insert(per_top.end(), {n.top, {}});
+    Impl::plan_runs(n, m, block_size, group->second);
   }
+  uint32_t slot;
+  if (auto it = s.block_slot.find(block); it != s.block_slot.end()) {
+    slot = it->second;
+  } else {
+    slot = static_cast<uint32_t>(s.blocks.size());
+    s.blocks.emplace_back();
+    s.block_slot.emplace(block, slot);
+  }
+  for (const auto& [top, runs] : per_top) {
+    const auto group = static_cast<uint32_t>(b.groups.size());
+    b.groups.push_back({top, static_cast<uint32_t>(b.runs.size()), static_cast<uint32_t>(runs.size()), s.versions[top]});
+    b.runs.insert(b.runs.end(), runs.begin(), runs.end());
+    if (s.nodes[top].pooled) b.pooled.push_back({s.nodes[top].pool_entry, group, 0});
+  }
+  b.packed.assign(block_size, 0);
+  s.pack(b, 0, static_cast<uint32_t>(b.runs.size()));
+  for (Impl::PooledRuns& p : b.pooled) p.packed_version = s.pool->entries_[p.entry].version;
   s.blocks[slot] = std::move(b);
   if (!skipped.empty())
     return fail(ParamStatus::not_found, "no parameter (or a struct without member paths) for: " + skipped);
   return {};
 }
 
+void ParameterStore::Impl::pack(Block& b, uint32_t first, uint32_t count) const {
+  const uint32_t* own = words.data();
+  const uint32_t* pooled = pool ? pool->words_.data() : nullptr;
+  uint8_t* to = b.packed.data();
+  for (uint32_t i = first; i < first + count; ++i) {
+    const WordRun& r = b.runs[i];
+    const uint32_t* from = (r.pooled ? pooled : own) + r.src;
+    switch (r.kind) {
+      case RunKind::copy:
+        std::memcpy(to + r.dst, from, r.words * sizeof(uint32_t));
+        break;
+      case RunKind::gather:
+        for (uint32_t k = 0; k < r.words; ++k) std::memcpy(to + r.dst + k * 4, from + k * r.stride, sizeof(uint32_t));
+        break;
+      case RunKind::columns4x4: {
+        uint32_t columns[16];
+        for (uint32_t c = 0; c < 4; ++c)
+          for (uint32_t row = 0; row < 4; ++row) columns[c * 4 + row] = from[row * 4 + c];
+        std::memcpy(to + r.dst, columns, sizeof columns);
+        break;
+      }
+    }
+  }
+}
+
 bool ParameterStore::dirty(uint32_t block) const {
   const Impl& s = *impl_;
   auto it = s.block_slot.find(block);
   if (it == s.block_slot.end()) return false;
-  const Impl::Block& b = s.blocks[it->second];
-  if (b.dirty) return true;
-  for (auto [entry, seen] : b.pooled)
-    if (s.pool->entries_[entry].version != seen) return true;
-  return false;
+  return s.blocks[it->second].changed(s.versions, s.pool);
 }
 
 ParamStatus ParameterStore::write_block(uint32_t block, std::span<uint8_t> out) {
@@ -177,10 +214,19 @@ ParamStatus ParameterStore::write_block(uint32_t block, std::span<uint8_t> out) 
   if (out.size() < b.size)
     return fail(ParamStatus::size_mismatch, "block " + std::to_string(block) + " needs " + std::to_string(b.size) +
                                                 " bytes, the buffer has " + std::to_string(out.size()));
-  for (const Impl::WordRun& r : b.runs)
-    std::memcpy(out.data() + r.dst, s.data(s.nodes[r.node]) + r.src, r.words * sizeof(uint32_t));
-  b.dirty = false;
-  for (auto& [entry, seen] : b.pooled) seen = s.pool->entries_[entry].version;
+  for (Impl::RunGroup& g : b.groups) {
+    if (s.versions[g.top] == g.packed_version) continue;
+    s.pack(b, g.first, g.count);
+    g.packed_version = s.versions[g.top];
+  }
+  for (Impl::PooledRuns& p : b.pooled) {
+    const uint64_t version = s.pool->entries_[p.entry].version;
+    if (version == p.packed_version) continue;
+    s.pack(b, b.groups[p.group].first, b.groups[p.group].count);
+    p.packed_version = version;
+  }
+  std::memcpy(out.data(), b.packed.data(), b.size);
+  b.written = true;
   return {};
 }
 

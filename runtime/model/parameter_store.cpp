@@ -1,7 +1,7 @@
 // ParameterStore: a flat node array (parameters, struct members, array elements) over
 // 32-bit words, one per scalar component (float bits, int, uint, bool 0/1). Matrices are
-// stored in D3D order (m[r][c] at r*cols+c) and laid out per block at write_block time
-// (parameter_block.cpp).
+// stored in D3D order (m[r][c] at r*cols+c); each bound block keeps a packed copy that a
+// set updates (parameter_block.cpp).
 #include <algorithm>
 #include <cstring>
 
@@ -17,7 +17,7 @@ ParameterStore::ParameterStore(const EffectModel& model, ParameterPool* pool, Di
   s.pool = pool;
   s.top_count = static_cast<uint32_t>(model.parameters.size());
   s.nodes.resize(s.top_count);
-  s.top_blocks.resize(s.top_count);
+  s.versions.assign(s.top_count, 1);
   for (uint32_t i = 0; i < s.top_count; ++i) {
     const Parameter& p = model.parameters[i];
     Impl::Node& n = s.nodes[i];
@@ -136,20 +136,25 @@ ParamStatus ParameterStore::set(Param p, bool v) {
   return set(p, std::span<const int32_t>(&i, 1));
 }
 
-ParamStatus ParameterStore::set(Param p, std::span<const float> v) {
-  Impl& s = *impl_;
-  uint32_t i;
-  if (ParamStatus st = s.resolve(p, i); !st) return st;
-  const Impl::Node& n = s.nodes[i];
-  if (!s.uniform_kind(n, true))
-    return fail(ParamStatus::type_mismatch, "cannot set " + s.describe(i) + " from floats");
-  if (v.size() != n.words)
-    return fail(ParamStatus::size_mismatch, s.describe(i) + " takes " + std::to_string(n.words) + " floats, got " +
-                                                std::to_string(v.size()));
-  // Float-like components are held as float bits (half and double included): a copy.
-  std::memcpy(s.data(n), v.data(), n.words * sizeof(float));
-  s.touch(n);
+ParamStatus ParameterStore::Impl::write_floats(uint32_t i, const float* v, size_t count) {
+  const Node& n = nodes[i];
+  if (!uniform_kind(n, true)) return fail(ParamStatus::type_mismatch, "cannot set " + describe(i) + " from floats");
+  if (count != n.words)
+    return fail(ParamStatus::size_mismatch, describe(i) + " takes " + std::to_string(n.words) + " floats, got " +
+                                                std::to_string(count));
+  // Float-like components are held as float bits (half and double included): a copy. An
+  // unchanged value (the same matrix set every frame) leaves the blocks clean.
+  uint32_t* d = data(n);
+  if (std::memcmp(d, v, n.words * sizeof(float)) == 0) return {};
+  std::memcpy(d, v, n.words * sizeof(float));
+  touch(n);
   return {};
+}
+
+ParamStatus ParameterStore::set(Param p, std::span<const float> v) {
+  uint32_t i;
+  if (ParamStatus st = impl_->resolve(p, i); !st) return st;
+  return impl_->write_floats(i, v.data(), v.size());
 }
 
 ParamStatus ParameterStore::set(Param p, std::span<const int32_t> v) {
@@ -163,8 +168,13 @@ ParamStatus ParameterStore::set(Param p, std::span<const int32_t> v) {
     return fail(ParamStatus::size_mismatch, s.describe(i) + " takes " + std::to_string(n.words) + " integers, got " +
                                                 std::to_string(v.size()));
   uint32_t* d = s.data(n);
-  for (uint32_t w = 0; w < n.words; ++w) d[w] = encode(v[w], s.base_at(n, w));
-  s.touch(n);
+  bool changed = false;
+  for (uint32_t w = 0; w < n.words; ++w) {
+    const uint32_t word = encode(v[w], s.base_at(n, w));
+    changed = changed || d[w] != word;
+    d[w] = word;
+  }
+  if (changed) s.touch(n);
   return {};
 }
 
@@ -175,7 +185,7 @@ ParamStatus ParameterStore::set_matrix(Param p, std::span<const float> v, HostMa
   const Impl::Node& n = s.nodes[i];
   if (n.type.cls != TypeClass::matrix)
     return fail(ParamStatus::type_mismatch, s.describe(i) + " is not a matrix");
-  if (order == HostMatrixOrder::row_major) return set(p, v);
+  if (order == HostMatrixOrder::row_major) return s.write_floats(i, v.data(), v.size());
   const uint32_t r = n.type.rows, c = n.type.cols, per = r * c;
   if (v.size() != n.words)
     return fail(ParamStatus::size_mismatch, s.describe(i) + " takes " + std::to_string(n.words) + " floats, got " +
@@ -184,7 +194,7 @@ ParamStatus ParameterStore::set_matrix(Param p, std::span<const float> v, HostMa
   for (uint32_t e = 0; e < n.words / per; ++e)
     for (uint32_t a = 0; a < r; ++a)
       for (uint32_t b = 0; b < c; ++b) rows[e * per + a * c + b] = v[e * per + b * r + a];
-  return set(p, std::span<const float>(rows));
+  return s.write_floats(i, rows.data(), rows.size());
 }
 
 ParamStatus ParameterStore::set_string(Param p, std::string_view v) {

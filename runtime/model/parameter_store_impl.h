@@ -69,20 +69,55 @@ struct ParameterStore::Impl {
     uint32_t node;
     BlockMemberLayout layout;
   };
-  // One contiguous copy into a block: `words` 32-bit words of a node, from word `src` to
-  // byte offset `dst`. bind_layout plans them once, so write_block only copies.
+  // One copy into a block: `words` 32-bit words to consecutive bytes from `dst`, read from
+  // word `src` of the store's words (the pool's when `pooled`). `gather` reads every
+  // `stride` words (one column of a row-stored matrix); `columns4x4` writes a whole
+  // row-stored 4x4 matrix as four column registers (HLSL's default float4x4). bind_layout
+  // plans them once, so write_block only copies.
+  enum class RunKind : uint8_t { copy, gather, columns4x4 };
   struct WordRun {
-    uint32_t node, src, dst, words;
+    uint32_t src, dst, words, stride;
+    bool pooled;
+    RunKind kind;
   };
+  // The runs [first, first + count) of top-level parameter `top` in a block, packed when
+  // the parameter's change count was `packed_version`.
+  struct RunGroup {
+    uint32_t top = 0, first = 0, count = 0;
+    uint64_t packed_version = 0;
+  };
+  // A pooled parameter's group in a block and the pool version it was packed from: a write
+  // through another store is packed at the next write_block.
+  struct PooledRuns {
+    uint32_t entry, group;
+    uint64_t packed_version;
+  };
+  // A block keeps its bytes packed (`packed`: padding zero) as the app's own constant
+  // struct would be: write_block re-packs only the changed parameters' runs there, then
+  // copies the block once.
   struct Block {
     uint32_t id = 0, size = 0;
     std::vector<Placement> members;
-    std::vector<WordRun> runs;  // planned by plan_runs
-    bool dirty = true;
-    std::vector<std::pair<uint32_t, uint64_t>> pooled;  // pool entry, version last written
+    std::vector<WordRun> runs;  // planned by plan_runs, grouped by top-level parameter
+    std::vector<RunGroup> groups;
+    std::vector<uint8_t> packed;
+    bool written = false;  // by write_block since bind_layout
+    std::vector<PooledRuns> pooled;
+    bool changed(const std::vector<uint64_t>& versions, const ParameterPool* pool) const {
+      if (!written) return true;
+      for (const RunGroup& g : groups)
+        if (versions[g.top] != g.packed_version) return true;
+      for (const PooledRuns& p : pooled)
+        if (pool->entries_[p.entry].version != p.packed_version) return true;
+      return false;
+    }
   };
-  static void plan_runs(const Node& n, uint32_t node, const BlockMemberLayout& m, uint32_t block_size,
-                        std::vector<WordRun>& runs);
+  static void plan_runs(const Node& n, const BlockMemberLayout& m, uint32_t block_size, std::vector<WordRun>& runs);
+  // Copies runs [first, first + count) of `b` from the words into b.packed.
+  void pack(Block& b, uint32_t first, uint32_t count) const;
+  // Stores `count` floats into node `i` (all float-like components); dirties its blocks only
+  // when a bit changes.
+  ParamStatus write_floats(uint32_t i, const float* v, size_t count);
 
   const EffectModel* model = nullptr;
   ParameterPool* pool = nullptr;
@@ -91,7 +126,9 @@ struct ParameterStore::Impl {
   std::vector<uint32_t> words;
   std::vector<BaseType> bases;       // per component, see Node::base_offset
   std::vector<std::string> strings;
-  std::vector<std::vector<uint32_t>> top_blocks;  // top-level node -> block slots
+  // Per top-level node, bumped on every change: a block compares it with what it packed,
+  // so a set costs the same however many blocks hold the parameter.
+  std::vector<uint64_t> versions;
   std::vector<Block> blocks;
   std::unordered_map<uint32_t, uint32_t> block_slot;
   std::unordered_map<std::string, uint32_t> by_name;
@@ -169,7 +206,7 @@ struct ParameterStore::Impl {
   }
 
   void touch(const Node& n) {
-    for (uint32_t slot : top_blocks[n.top]) blocks[slot].dirty = true;
+    ++versions[n.top];
     if (n.pooled) ++pool->entries_[n.pool_entry].version;
   }
 

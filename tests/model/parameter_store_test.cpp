@@ -172,8 +172,22 @@ TEST(ParameterStore, MatrixPackingFollowsD3D) {
   EXPECT_EQ(at(64 + 16), 10.0f);
   // Second array element starts at its stride.
   EXPECT_EQ(at(128 + 64 + 16), 1.0f);
-  // Bytes no parameter covers are untouched.
-  EXPECT_EQ(bytes[268], 0xCD);
+  // Every component of every matrix, in both orders.
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) {
+      const float want = m[r * 4 + c];
+      EXPECT_EQ(at(c * 16 + r * 4), want) << "cm " << r << c;
+      EXPECT_EQ(at(64 + r * 16 + c * 4), want) << "rm " << r << c;
+      EXPECT_EQ(at(128 + c * 16 + r * 4), want) << "ms[0] " << r << c;
+      EXPECT_EQ(at(192 + c * 16 + r * 4), want) << "ms[1] " << r << c;
+    }
+  // Bytes no parameter covers are zeroed (the block may be a recycled ring slot): the
+  // padding after `v` up to the block size.
+  EXPECT_EQ(bytes[268], 0);
+  EXPECT_EQ(bytes[271], 0);
+  std::vector<uint8_t> larger(280, 0xCD);
+  ASSERT_TRUE(store.write_block(0, larger));
+  EXPECT_EQ(larger[272], 0xCD) << "bytes past the block size are left alone";
   std::vector<uint8_t> small(100);
   EXPECT_EQ(store.write_block(0, small).code, ParamStatus::size_mismatch);
   const BlockMemberLayout outside[] = {{"v", 300, 12, 0, 16, MatrixOrder::column_major}};
@@ -206,6 +220,9 @@ TEST(ParameterStore, DirtyTrackingPerBlock) {
   ASSERT_TRUE(store.set(store.find("a"), std::span<const float>(a)));
   EXPECT_TRUE(store.dirty(0));
   EXPECT_FALSE(store.dirty(1));
+  ASSERT_TRUE(store.write_block(0, bytes));
+  ASSERT_TRUE(store.set(store.find("a"), std::span<const float>(a)));
+  EXPECT_FALSE(store.dirty(0)) << "setting the value the parameter holds changes nothing";
   const BlockMemberLayout unknown[] = {{"zz", 0, 4, 0, 16, MatrixOrder::column_major}};
   EXPECT_EQ(store.bind_layout(2, unknown, 4).code, ParamStatus::not_found);
 }

@@ -100,7 +100,8 @@ class ParameterStore {
 
   // Setters: the value's shape must match the handle's type exactly (a float3 takes 3
   // floats; an array of 4 float4 takes 16; int/bool handles take ints/bools; float handles
-  // take floats). bool and int handles also accept the other integer-like kind.
+  // take floats). bool and int handles also accept the other integer-like kind. A set that
+  // changes no bit leaves the parameter's blocks clean.
   ParamStatus set(Param p, float v);
   ParamStatus set(Param p, int32_t v);
   ParamStatus set(Param p, bool v);
@@ -126,7 +127,8 @@ class ParameterStore {
   // True when a parameter in `block` changed since the last write_block.
   bool dirty(uint32_t block) const;
   // Packs the block's parameters into `out` (at least the bound block size) and clears
-  // its dirty flag. Bytes no parameter covers are left untouched.
+  // its dirty flag. Bytes of the block no parameter covers are zeroed, so `out` may be
+  // recycled memory (a uniform ring slot); bytes past the block size are left untouched.
   ParamStatus write_block(uint32_t block, std::span<uint8_t> out);
 
   uint32_t generation() const;
