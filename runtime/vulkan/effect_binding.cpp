@@ -17,13 +17,13 @@ struct ImageSlot {
   std::shared_ptr<const EffectTextureData> data;    // the effect's own texture
 };
 
-// A uniform block of a pass, packed from the parameter store under block id `id`.
+// A uniform block of a pass, packed by the parameter store (block id `id`) straight into
+// the frame's uniform ring: rewritten when a parameter in it changed or the ring slice
+// holding its last copy was recycled.
 struct BlockSlot {
   uint32_t id = 0;
-  uint32_t index = 0;  // in the program's uniform_blocks(), resolved once at create()
-  std::string name;
-  std::vector<uint8_t> staging;
-  bool written = false;
+  uint32_t size = 0;
+  uint64_t frame = 0;  // FrameResources::frame() of the last write (0: never)
 };
 
 struct EffectBinding::Pass {
@@ -32,7 +32,8 @@ struct EffectBinding::Pass {
   ShaderProgram shader;
   std::unique_ptr<PassResources> resources;
   PipelineState state;
-  std::vector<BlockSlot> blocks;
+  std::vector<BlockSlot> blocks;       // in the program's uniform_blocks() order
+  std::vector<uint32_t> ring_offsets;  // of each block's last write, parallel to `blocks`
   std::vector<ImageSlot> images;
   std::vector<std::optional<VertexInput>> inputs;  // per vertex layout id
   // Pipelines per vertex layout id for `pipeline_formats`: pipelines live as long as the
@@ -110,6 +111,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
   b->model_ = &model;
   b->pipelines_ = PipelineCache::create(ctx, sink);
   if (!b->pipelines_) return nullptr;
+  b->frames_ = &frames;
   b->recorder_.emplace(ctx, *b->pipelines_, frames,
                        desc.dynamic.value_or(DynamicStateSet::from_features(ctx.features())));
   // Block ids are unique in the process, so two bindings of one ParameterStore (say a
@@ -169,7 +171,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
       const auto& program_blocks = pass->shader.uniform_blocks();
       for (uint32_t index = 0; index < program_blocks.size(); ++index) {
         const ProgramUniformBlock& block = program_blocks[index];
-        BlockSlot slot{next_block_id++, index, block.name, std::vector<uint8_t>(block.size, 0), false};
+        BlockSlot slot{next_block_id++, block.size, 0};
         std::vector<BlockMemberLayout> members;
         if (block.reflection)
           for (const BlockMember& m : block.reflection->members) {
@@ -187,8 +189,9 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
         if (!status.message.empty())
           sink.warning("vk-uniform-unbound", pass_info.range,
                        "pass '" + pass_info.name + "', block '" + block.name + "': " + status.message);
-        pass->blocks.push_back(std::move(slot));
+        pass->blocks.push_back(slot);
       }
+      pass->ring_offsets.resize(pass->blocks.size(), 0);
       // Images and samplers: sampler states -> cached samplers, textures resolved (baked,
       // decoded) now, uploaded at the first begin().
       for (const ProgramImage& image : pass->shader.images()) {
@@ -323,6 +326,7 @@ bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const Renderi
   }
   if (textures_pending_ && !bind_textures(sink)) return false;
   active_ = techniques_[technique].get();
+  applied_ = nullptr;
   formats_ = formats;
   recorder_->begin(cmd, formats, viewport, scissor);
   return true;
@@ -334,13 +338,19 @@ bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, Diagnosti
     return false;
   }
   Pass& pass = *active_->passes[pass_index];
-  for (BlockSlot& block : pass.blocks) {
-    if (block.written && !params_->dirty(block.id)) continue;
-    params_->write_block(block.id, block.staging);
-    if (!pass.resources->set_block_bytes(block.index, 0, block.staging.data(), uint32_t(block.staging.size()), sink))
-      return false;
-    block.written = true;
+  for (size_t i = 0; i < pass.blocks.size(); ++i) {
+    BlockSlot& block = pass.blocks[i];
+    if (frames_->still_valid(block.frame) && !params_->dirty(block.id)) continue;
+    std::optional<uint32_t> offset = recorder_->write_uniform(
+        block.size, [&](uint8_t* ring) { params_->write_block(block.id, {ring, block.size}); }, sink);
+    if (!offset) return false;
+    pass.ring_offsets[i] = *offset;
+    block.frame = frames_->frame();
   }
+  // The same pass again (the next object of a group): only the uniform offsets can differ.
+  if (&pass == applied_ && vertex_layout == applied_layout_ && recorder_->reapply(*pass.resources, pass.ring_offsets))
+    return true;
+  applied_ = nullptr;
   const VertexInput* input = vertex_input(pass, vertex_layout, sink);
   if (!input) return false;
   if (!(pass.pipeline_formats == formats_)) {
@@ -353,8 +363,11 @@ bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, Diagnosti
     pipeline = pipelines_->get(pass.shader, pass.state, *input, formats_, recorder_->dynamic(), sink);
     if (!pipeline) return false;
   }
-  PassDesc desc{&pass.shader, pass.state, input, pass.resources.get(), pipeline};
-  return recorder_->apply(desc, sink);
+  PassDesc desc{&pass.shader, pass.state, input, pass.resources.get(), pipeline, pass.ring_offsets};
+  if (!recorder_->apply(desc, sink)) return false;
+  applied_ = &pass;
+  applied_layout_ = vertex_layout;
+  return true;
 }
 
 bool EffectBinding::pass_objects(uint32_t technique, uint32_t pass_index, const RenderingFormats& formats,
@@ -376,6 +389,7 @@ bool EffectBinding::pass_objects(uint32_t technique, uint32_t pass_index, const 
 void EffectBinding::end() {
   if (active_) recorder_->end();
   active_ = nullptr;
+  applied_ = nullptr;
   update_object_count();
 }
 

@@ -52,7 +52,7 @@ FrameResources& FrameResources::operator=(FrameResources&& o) noexcept {
   pools_ = std::move(o.pools_);
   o.pools_.clear();
   frames_in_flight_ = o.frames_in_flight_;
-  slice_ = o.slice_, alignment_ = o.alignment_, head_ = o.head_, frame_ = o.frame_;
+  slice_ = o.slice_, alignment_ = o.alignment_, head_ = o.head_, slice_start_ = o.slice_start_, frame_ = o.frame_;
   bytes_uploaded_ = o.bytes_uploaded_, sets_allocated_ = o.sets_allocated_;
   return *this;
 }
@@ -65,11 +65,11 @@ FrameResources::~FrameResources() {
 void FrameResources::begin_frame() {
   ++frame_;
   head_ = 0;
+  slice_start_ = slice_ * (frame_ % frames_in_flight_);
   vkResetDescriptorPool(ctx_->device(), pools_[frame_ % frames_in_flight_], 0);
 }
 
-std::optional<UniformAllocation> FrameResources::upload_uniform(const void* data, uint32_t bytes,
-                                                                DiagnosticSink& sink) {
+std::optional<UniformAllocation> FrameResources::reserve_uniform(uint32_t bytes, DiagnosticSink& sink) {
   const VkDeviceSize start = (head_ + alignment_ - 1) / alignment_ * alignment_;
   if (start + bytes > slice_) {
     sink.error("vk-uniform-ring-full", {},
@@ -77,13 +77,19 @@ std::optional<UniformAllocation> FrameResources::upload_uniform(const void* data
                    std::to_string(slice_) + "-byte ring slice");
     return std::nullopt;
   }
-  const VkDeviceSize offset = slice_ * (frame_ % frames_in_flight_) + start;
-  auto* dst = static_cast<uint8_t*>(ring_.mapped()) + offset;
-  std::memcpy(dst, data, bytes);
-  ring_.flush(offset, bytes);
+  const VkDeviceSize offset = slice_start_ + start;
   head_ = start + bytes;
   bytes_uploaded_ += bytes;
-  return UniformAllocation{ring_.handle(), uint32_t(offset), dst};
+  return UniformAllocation{ring_.handle(), uint32_t(offset), static_cast<uint8_t*>(ring_.mapped()) + offset};
+}
+
+std::optional<UniformAllocation> FrameResources::upload_uniform(const void* data, uint32_t bytes,
+                                                                DiagnosticSink& sink) {
+  std::optional<UniformAllocation> a = reserve_uniform(bytes, sink);
+  if (!a) return std::nullopt;
+  std::memcpy(a->mapped, data, bytes);
+  flush_uniform(*a, bytes);
+  return a;
 }
 
 VkDescriptorSet FrameResources::allocate_set(VkDescriptorSetLayout layout, DiagnosticSink& sink) {

@@ -1,6 +1,8 @@
 // PassRecorder: redundant-state-skipping application of passes into a command buffer.
 #include "fx/vulkan/pass_recorder.h"
 
+#include <algorithm>
+
 #include "vk_check.h"
 
 namespace fx::vk {
@@ -27,10 +29,12 @@ void PassRecorder::end() {
   set_ = VK_NULL_HANDLE;
   offsets_.clear();
   pushed_ = nullptr;
+  applied_ = nullptr;
 }
 
 bool PassRecorder::apply(const PassDesc& pass, DiagnosticSink& sink) {
   ++stats_.passes;
+  applied_ = nullptr;
   VkPipeline pipeline = pass.pipeline ? pass.pipeline
                                       : pipelines_->get(*pass.program, pass.state, *pass.vertex_input,
                                                         formats_, dynamic_, sink);
@@ -45,7 +49,23 @@ bool PassRecorder::apply(const PassDesc& pass, DiagnosticSink& sink) {
     record_dynamic_state(pass.state, !state_.has_value());
     state_ = pass.state;
   }
-  return bind_descriptors(pass, sink);
+  if (!bind_descriptors(pass, sink)) return false;
+  applied_ = pass.resources;
+  return true;
+}
+
+bool PassRecorder::reapply(const PassResources& r, std::span<const uint32_t> offsets) {
+  if (&r != applied_ || r.images_changed_ || offsets.size() != offsets_.size()) return false;
+  const bool same = std::equal(offsets.begin(), offsets.end(), offsets_.begin());
+  if (!same && (r.program().descriptor_mode() == DescriptorMode::push || !frames_->still_valid(r.set_frame_)))
+    return false;
+  ++stats_.passes;
+  if (same) return true;
+  vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, uint32_t(offsets.size()),
+                          offsets.data());
+  ++stats_.descriptor_binds;
+  std::copy(offsets.begin(), offsets.end(), offsets_.begin());
+  return true;
 }
 
 void PassRecorder::record_dynamic_state(const PipelineState& s, bool all) {
@@ -138,26 +158,8 @@ void PassRecorder::record_dynamic_state(const PipelineState& s, bool all) {
   }
 }
 
-bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) {
-  PassResources& r = *pass.resources;
-  const ShaderProgram& program = *pass.program;
-  const auto& blocks = program.uniform_blocks();
-  const auto& images = program.images();
-  std::vector<uint32_t>& offsets = next_offsets_;
-  offsets.resize(blocks.size());
-  for (size_t i = 0; i < blocks.size(); ++i) {
-    PassResources::Block& b = r.blocks_[i];
-    if (b.dirty || !frames_->still_valid(b.uploaded_frame)) {
-      std::optional<UniformAllocation> a =
-          frames_->upload_uniform(b.data.data(), uint32_t(b.data.size()), sink);
-      if (!a) return false;
-      b.dirty = false;
-      b.uploaded_frame = frames_->frame();
-      b.offset = a->offset;
-      ++stats_.uniform_uploads;
-    }
-    offsets[i] = b.offset;
-  }
+bool PassRecorder::images_bound(const PassResources& r, DiagnosticSink& sink) const {
+  const auto& images = r.program().images();
   for (size_t i = 0; i < images.size(); ++i) {
     const PassResources::Bound& b = r.images_[i];
     const bool needs_view = images[i].kind != DescriptorKind::sampler;
@@ -169,10 +171,43 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
       return false;
     }
   }
+  return true;
+}
+
+bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) {
+  PassResources& r = *pass.resources;
+  const ShaderProgram& program = *pass.program;
+  const auto& blocks = program.uniform_blocks();
+  const auto& images = program.images();
+  std::span<const uint32_t> offsets = pass.uniform_offsets;
+  if (offsets.empty() && !blocks.empty()) {
+    next_offsets_.resize(blocks.size());
+    for (size_t i = 0; i < blocks.size(); ++i) {
+      PassResources::Block& b = r.blocks_[i];
+      if (b.dirty || !frames_->still_valid(b.uploaded_frame)) {
+        std::optional<UniformAllocation> a =
+            frames_->upload_uniform(b.data.data(), uint32_t(b.data.size()), sink);
+        if (!a) return false;
+        b.dirty = false;
+        b.uploaded_frame = frames_->frame();
+        b.offset = a->offset;
+        ++stats_.uniform_uploads;
+      }
+      next_offsets_[i] = b.offset;
+    }
+    offsets = next_offsets_;
+  } else if (offsets.size() != blocks.size()) {
+    sink.error("vk-uniform-offsets", {},
+               std::to_string(offsets.size()) + " uniform offsets for " + std::to_string(blocks.size()) + " blocks");
+    return false;
+  }
   const bool push = program.descriptor_mode() == DescriptorMode::push;
   const bool layout_changed = program.pipeline_layout() != layout_;
-  if (push && !layout_changed && pushed_ == &r && offsets == offsets_ && !r.images_changed_)
-    return true;
+  const bool same_offsets = std::equal(offsets.begin(), offsets.end(), offsets_.begin(), offsets_.end());
+  if (push && !layout_changed && pushed_ == &r && same_offsets && !r.images_changed_) return true;
+  // A set or push is written only from validated images: unchanged ones were checked then.
+  if ((push || !r.set_ || r.images_changed_ || !frames_->still_valid(r.set_frame_)) && !images_bound(r, sink))
+    return false;
 
   // Descriptor writes: uniform blocks then images.
   // Reserved up front: the writes point into these arrays.
@@ -226,14 +261,14 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
       r.set_frame_ = frames_->frame();
       r.images_changed_ = false;
     }
-    if (r.set_ != set_ || offsets != offsets_ || layout_changed) {
+    if (r.set_ != set_ || !same_offsets || layout_changed) {
       vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, program.pipeline_layout(), 0,
                               1, &r.set_, uint32_t(offsets.size()), offsets.data());
       ++stats_.descriptor_binds;
       set_ = r.set_;
     }
   }
-  offsets_.swap(offsets);
+  if (!same_offsets) offsets_.assign(offsets.begin(), offsets.end());
   layout_ = program.pipeline_layout();
   return true;
 }

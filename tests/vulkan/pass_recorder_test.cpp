@@ -1,9 +1,10 @@
 // Pipeline keying and pass application bookkeeping: dynamic vs static paths give byte-equal
 // images, pipeline counts per distinct state, redundant state not re-recorded, dirty-only
-// uniform uploads, push descriptors, vertex layout diagnostics, pipeline cache persistence,
+// uniform uploads, caller-written uniforms, push descriptors, vertex layout diagnostics, pipeline cache persistence,
 // lookup-table textures.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -162,6 +163,43 @@ TEST_F(PassRecorderTest, UniformRingUploadsOnlyDirtyBlocks) {
   EXPECT_EQ(frame(0.5f), 0u);
   // Two frames without change: the slice holding the data is recycled (2 frames in flight).
   EXPECT_EQ(frame(0.5f), 1u);
+}
+
+// A caller that packs a block itself writes it into the ring in place and passes the
+// offsets; the resources' shadow (never set here) is not read.
+TEST_F(PassRecorderTest, CallerWrittenUniformsAreBoundByOffset) {
+  PassHarness h(ctx(), DynamicStateSet::none());
+  auto prog = make_program(ctx(), "PSColor");
+  DiagnosticSink sink;
+  auto input = match_vertex_layout(quad_layout(), prog->program.vertex_inputs(), sink);
+  ASSERT_TRUE(input);
+  ASSERT_EQ(prog->program.uniform_blocks().size(), 1u);
+  const uint32_t size = prog->program.uniform_blocks()[0].size;
+  PassResources res(prog->program);
+  std::vector<Vertex> v;
+  add_quad(v, -1, -1, 1, 1, 0.5f);
+  VkBuffer vb = h.vertices(v);
+  fx::Image img = h.render([&](VkCommandBuffer cmd, PassRecorder& r) {
+    const float green[4] = {0, 1, 0, 1};
+    std::optional<uint32_t> offset = r.write_uniform(size, [&](uint8_t* ring) {
+      std::memset(ring, 0, size);
+      std::memcpy(ring, green, sizeof green);
+    }, sink);
+    ASSERT_TRUE(offset) << describe(sink);
+    const uint32_t offsets[1] = {*offset};
+    PassDesc pass{&prog->program, PipelineState{}, &*input, &res};
+    pass.uniform_offsets = offsets;
+    draw(cmd, r, pass, vb, 6);
+    EXPECT_EQ(r.stats().uniform_uploads, 1u);
+    const uint32_t too_many[2] = {*offset, *offset};
+    pass.uniform_offsets = too_many;
+    DiagnosticSink bad;
+    EXPECT_FALSE(r.apply(pass, bad));
+    ASSERT_FALSE(bad.diagnostics().empty());
+    EXPECT_EQ(bad.diagnostics()[0].id, "vk-uniform-offsets");
+  });
+  EXPECT_NEAR(pixel(img, 2, 2)[0], 0, 1);
+  EXPECT_NEAR(pixel(img, 2, 2)[1], 255, 1);
 }
 
 TEST_F(PassRecorderTest, PushDescriptorsRenderLikeDescriptorSets) {

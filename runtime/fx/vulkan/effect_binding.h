@@ -2,7 +2,8 @@
 // drawable in the application's command buffers. Per pass it holds the ShaderProgram, the
 // pipeline state mapped from the pass's states, its descriptors (samplers from the sampler
 // states, textures from generators, files or the app's image views) and uniform blocks fed
-// from the ParameterStore (only blocks whose parameters changed are re-packed).
+// from the ParameterStore (only blocks whose parameters changed are re-packed, straight
+// into the frame's uniform ring).
 //
 //   auto binding = EffectBinding::create(ctx, model, programs, params, textures, frames, {}, sink);
 //   uint32_t layout = binding->add_vertex_layout(my_vertex_layout);
@@ -129,12 +130,15 @@ class EffectBinding {
   EffectTextureCache* textures_;
   std::optional<PipelineCache> pipelines_;
   SamplerCache samplers_;
+  FrameResources* frames_ = nullptr;
   std::optional<PassRecorder> recorder_;
   std::vector<std::unique_ptr<Technique>> techniques_;
   std::vector<VertexLayout> layouts_;
   std::vector<std::pair<uint32_t, Texture>> app_textures_;  // texture parameter -> app view
   bool textures_pending_ = true;
   Technique* active_ = nullptr;
+  const Pass* applied_ = nullptr;  // the pass the last apply() recorded, and its vertex layout
+  uint32_t applied_layout_ = 0;
   RenderingFormats formats_;  // of the begun technique
   int64_t counted_objects_ = 0;
   static std::atomic<int64_t> live_objects_;

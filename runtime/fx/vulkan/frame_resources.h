@@ -55,6 +55,12 @@ class FrameResources {
   // no room (raise FrameResourcesDesc::uniform_bytes_per_frame).
   std::optional<UniformAllocation> upload_uniform(const void* data, uint32_t bytes,
                                                   DiagnosticSink& sink);
+  // Reserves `bytes` of this frame's ring slice for the caller to fill through `mapped`
+  // (then flush_uniform): data packed straight into the ring, no staging copy.
+  std::optional<UniformAllocation> reserve_uniform(uint32_t bytes, DiagnosticSink& sink);
+  // Makes what the caller wrote into a reservation visible to the device (no-op for
+  // coherent memory).
+  void flush_uniform(const UniformAllocation& a, uint32_t bytes) const { ring_.flush(a.offset, bytes); }
   // A descriptor set from this frame's pool; null and "vk-descriptor-pool-full" when empty.
   VkDescriptorSet allocate_set(VkDescriptorSetLayout layout, DiagnosticSink& sink);
 
@@ -68,7 +74,8 @@ class FrameResources {
   std::vector<VkDescriptorPool> pools_;
   uint32_t frames_in_flight_ = 0;
   VkDeviceSize slice_ = 0, alignment_ = 256;
-  VkDeviceSize head_ = 0;  // within the current slice
+  VkDeviceSize head_ = 0;         // within the current slice
+  VkDeviceSize slice_start_ = 0;  // ring offset of the current frame's slice
   uint64_t frame_ = 0;
   uint64_t bytes_uploaded_ = 0, sets_allocated_ = 0;
 };

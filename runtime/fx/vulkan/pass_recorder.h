@@ -9,6 +9,7 @@
 #include <vulkan/vulkan.h>
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "fx/vulkan/frame_resources.h"
@@ -26,6 +27,10 @@ struct PassDesc {
   // When set, the pipeline the cache gives for this pass at the begun formats: a caller that
   // remembers it spares the recorder hashing the pipeline key on every apply.
   VkPipeline pipeline = VK_NULL_HANDLE;
+  // When not empty: the ring offsets (from write_uniform) of every uniform block, in
+  // program.uniform_blocks() order, written by the caller; the resources' block shadows
+  // are then not read.
+  std::span<const uint32_t> uniform_offsets;
 };
 
 // What the recorder recorded (and skipped), for tests and benchmarks.
@@ -52,8 +57,26 @@ class PassRecorder {
   // Binds what `pass` needs. False (with diagnostics) if a pipeline, upload or descriptor
   // could not be made, or a texture is unbound ("vk-texture-unbound"); nothing is drawn then.
   bool apply(const PassDesc& pass, DiagnosticSink& sink);
+  // Applies again the pass applied last (nothing else applied since), whose caller-written
+  // uniforms moved to `uniform_offsets`: pipeline, dynamic state and textures are bound
+  // already, so only the descriptor offsets can change. False (nothing recorded) when
+  // `resources` is not that pass's, its textures changed or it pushes descriptors: call
+  // apply() then.
+  bool reapply(const PassResources& resources, std::span<const uint32_t> uniform_offsets);
   // Ends the sequence; the next begin() assumes nothing is bound.
   void end();
+  // Reserves `bytes` of the frame's uniform ring, lets `fill(uint8_t*)` write them in place
+  // and returns their offset for PassDesc::uniform_offsets (counted as an upload).
+  // nullopt and "vk-uniform-ring-full" when the frame's slice has no room.
+  template <class Fill>
+  std::optional<uint32_t> write_uniform(uint32_t bytes, Fill&& fill, DiagnosticSink& sink) {
+    std::optional<UniformAllocation> a = frames_->reserve_uniform(bytes, sink);
+    if (!a) return std::nullopt;
+    fill(static_cast<uint8_t*>(a->mapped));
+    frames_->flush_uniform(*a, bytes);
+    ++stats_.uniform_uploads;
+    return a->offset;
+  }
 
   const ApplyStats& stats() const { return stats_; }
   void reset_stats() { stats_ = {}; }
@@ -62,6 +85,7 @@ class PassRecorder {
  private:
   void record_dynamic_state(const PipelineState& s, bool all);
   bool bind_descriptors(const PassDesc& pass, DiagnosticSink& sink);
+  bool images_bound(const PassResources& r, DiagnosticSink& sink) const;
 
   const Context* ctx_;
   PipelineCache* pipelines_;
@@ -81,6 +105,7 @@ class PassRecorder {
   std::vector<VkDescriptorImageInfo> image_infos_;
   std::vector<VkWriteDescriptorSet> writes_;
   const PassResources* pushed_ = nullptr;
+  const PassResources* applied_ = nullptr;  // of the last successful apply()
   ApplyStats stats_;
 };
 
