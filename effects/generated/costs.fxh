@@ -5,11 +5,11 @@
 #ifndef FXKIT_GENERATED_COSTS_FXH
 #define FXKIT_GENERATED_COSTS_FXH
 // COST_strand_analytic: strand_analytic/stable/specular
-#define COST_strand_analytic float CostNsPerPixel = 3.651; float MaxError = 0.00;
+#define COST_strand_analytic float CostNsPerPixel = 4.499; float MaxError = 0.00;
 // COST_strand_lut_seed_wrap: strand_mapping/seed_wrap/specular/s256
-#define COST_strand_lut_seed_wrap float CostNsPerPixel = 4.414; float MaxError = 120.50;
+#define COST_strand_lut_seed_wrap float CostNsPerPixel = 4.938; float MaxError = 120.50;
 // COST_strand_per_vertex: per_vertex/rings24
 #define COST_strand_per_vertex float CostNsPerPixel = 0.000; float MaxError = 14.41;
 // COST_hemisphere_two_term: hemisphere/cosine_float
-#define COST_hemisphere_two_term float CostNsPerPixel = 0.647; float MaxError = 0.08;
+#define COST_hemisphere_two_term float CostNsPerPixel = 1.540; float MaxError = 0.08;
 #endif

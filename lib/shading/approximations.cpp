@@ -142,6 +142,53 @@ void strand_arithmetic(std::span<const ShadingSample> samples, std::vector<Appro
   }
 }
 
+// The seed's ps.1.4 bump shader: T' = T - (N'.T)N' against the bump normal N', not
+// renormalized ("almost no visual impact"), so the table is indexed by L.T' and V.T' of a
+// shorter vector. Each uniform sample's normal is tilted by a fixed angle (in a direction
+// that turns with the sample) to make N'; the reference is the analytic strand with the
+// renormalized T'. The renormalized float path is the control.
+void bump_gram_schmidt(const ApproximationOptions& o, std::span<const ShadingSample> samples,
+                       std::vector<ApproximationError>& out) {
+  for (double degrees : o.bump_tilts_degrees) {
+    const double tilt = degrees * kPi / 180.0;
+    std::vector<ShadingSample> bumped;
+    for (const ShadingSample& s : samples) {
+      if (s.kind != SampleKind::uniform) continue;
+      const double phi = 2.399963 * double(bumped.size());  // golden angle: directions spread evenly
+      const glm::dvec3 b = glm::cross(s.n, s.t);
+      ShadingSample t = s;
+      t.n = std::cos(tilt) * s.n + std::sin(tilt) * (std::cos(phi) * s.t + std::sin(phi) * b);
+      bumped.push_back(t);
+    }
+    for (bool diffuse : {true, false}) {
+      const char* term = diffuse ? "diffuse" : "specular";
+      ShadingTerm reference = [diffuse](const ShadingSample& s) {
+        StrandTerms<double> r = strand_reference(s.l, s.v, gram_schmidt_tangent(s.t, s.n), 32);
+        return diffuse ? r.diffuse : r.specular;
+      };
+      ShadingTerm unnormalized = [diffuse](const ShadingSample& s) {
+        glm::vec3 t = gram_schmidt_unnormalized(to_float(s.t), to_float(s.n));
+        StrandTerms<float> f = strand_from_cosines(glm::dot(to_float(s.l), t), glm::dot(to_float(s.v), t), 32.f);
+        return double(diffuse ? f.diffuse : f.specular);
+      };
+      ShadingTerm renormalized = [diffuse](const ShadingSample& s) {
+        glm::vec3 t = gram_schmidt_tangent(to_float(s.t), to_float(s.n));
+        StrandTerms<float> f = strand_from_vectors(to_float(s.l), to_float(s.v), t, 32.f);
+        return double(diffuse ? f.diffuse : f.specular);
+      };
+      const std::string tilt_name = number(degrees);
+      for (bool renorm : {false, true}) {
+        const char* form = renorm ? "renormalized" : "unnormalized";
+        out.push_back(measured(std::string("bump/") + form + "/" + term + "/tilt" + tilt_name, "bump_gram_schmidt",
+                               std::string("strand ") + term + " on T' = T - (N'.T)N', " + form + ", bump normal " +
+                                   tilt_name + " deg off the surface normal, float",
+                               {{"form", form}, {"term", term}, {"tilt_degrees", tilt_name}}, reference,
+                               renorm ? renormalized : unnormalized, bumped));
+      }
+    }
+  }
+}
+
 void specular_powers(const ApproximationOptions& o, std::span<const ShadingSample> samples,
                      std::vector<ApproximationError>& out) {
   // The cosine is computed once in float and fed to both sides: this isolates the power's
@@ -335,6 +382,7 @@ std::vector<ApproximationError> measure_approximations(const ApproximationOption
   std::vector<ApproximationError> out;
   strand_arithmetic(samples, out);
   strand_tables(options, samples, out);
+  bump_gram_schmidt(options, samples, out);
   specular_powers(options, samples, out);
   per_vertex(options, out);
   hemisphere(options, out);

@@ -3,6 +3,7 @@
 // fetch, own reference formulas) that shares only the sample set with the library.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <vector>
@@ -100,6 +101,30 @@ TEST(AccuracyReport, StrandFloatTableMatchesIndependentComputation) {
     worst = std::max(worst, std::abs(fetch(glm::dot(s.l, s.t), glm::dot(s.v, s.t)) - ref));
   }
   double reported = reported_max_abs(r, "strand_lut/dot/float32/n32/s64");
+  EXPECT_NEAR(reported, worst, 0.01 * worst + 1e-4) << "independent " << worst << ", report " << reported;
+}
+
+// The seed's unnormalized Gram-Schmidt tangent (bump/unnormalized/diffuse/tilt15): each
+// uniform sample's normal tilted 15 degrees toward T cos(phi) + (N x T) sin(phi), phi the
+// golden angle times the sample's rank, as the report builds it; then sqrt(1 - (L.T')^2)
+// against |L x T'/|T'|| in double.
+TEST(AccuracyReport, UnnormalizedBumpTangentMatchesIndependentComputation) {
+  nlohmann::json r = report();
+  ASSERT_TRUE(r.is_object());
+  const double tilt = 15 * kPi / 180;
+  double worst = 0;
+  int k = 0;
+  for (const auto& s : fx::shading::shading_samples()) {
+    if (s.kind != fx::shading::SampleKind::uniform) continue;
+    const double phi = 2.399963 * k++;
+    const glm::dvec3 n = std::cos(tilt) * s.n + std::sin(tilt) * (std::cos(phi) * s.t + std::sin(phi) * glm::cross(s.n, s.t));
+    const glm::dvec3 t = s.t - glm::dot(n, s.t) * n;
+    const double lt = std::clamp(glm::dot(s.l, t), -1.0, 1.0);
+    const double approx = std::sqrt(1 - lt * lt);
+    const double exact = glm::length(glm::cross(s.l, t / glm::length(t)));
+    worst = std::max(worst, std::abs(approx - exact));
+  }
+  double reported = reported_max_abs(r, "bump/unnormalized/diffuse/tilt15");
   EXPECT_NEAR(reported, worst, 0.01 * worst + 1e-4) << "independent " << worst << ", report " << reported;
 }
 

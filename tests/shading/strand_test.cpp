@@ -50,7 +50,9 @@ TEST(Strand, CrossFormKeepsPrecisionAtSmallAngles) {
     float stable = strand_from_vectors(lf, lf, tf, 1.0f).diffuse;
     float naive = strand_naive(glm::dot(lf, tf), 0.0f, 1.0f).diffuse;
     EXPECT_NEAR(stable, exact, 4.0 * std::numeric_limits<float>::epsilon()) << "a=" << a;
-    if (a <= 1e-4 && exact > 0) EXPECT_FALSE(std::abs(naive - exact) < 0.5 * exact) << "a=" << a << " naive=" << naive;
+    if (a <= 1e-4 && exact > 0) {
+      EXPECT_FALSE(std::abs(naive - exact) < 0.5 * exact) << "a=" << a << " naive=" << naive;
+    }
   }
 }
 

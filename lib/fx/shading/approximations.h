@@ -28,6 +28,7 @@ struct ApproximationOptions {
   std::vector<double> strand_exponents = {8, 32, 128};
   std::vector<int> sphere_rings = {6, 12, 24, 48, 96};  // per-vertex: latitude rings
   std::vector<int> brdf_sizes = {8, 16, 32};
+  std::vector<double> bump_tilts_degrees = {5, 15, 30, 45};  // bump normal vs surface normal
   int hemisphere_quadrature_steps = 400;
 };
 
