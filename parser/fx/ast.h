@@ -96,7 +96,7 @@ class ExprPool {
 
  private:
   std::vector<std::unique_ptr<Expr[]>> nodes_;
-  size_t nodes_used_ = 0;  // in nodes_.back()
+  size_t nodes_used_ = 0, nodes_capacity_ = 0;  // of nodes_.back()
   std::vector<std::unique_ptr<ExprPtr[]>> lists_;
   size_t lists_used_ = 0, lists_capacity_ = 0;  // of lists_.back()
 };

@@ -6,16 +6,17 @@
 namespace fx::ast {
 namespace {
 
-// A 10 MB effect has about a million nodes: blocks of this size keep the allocations
-// few without wasting much on a small effect's last block.
-constexpr size_t kNodesPerBlock = 1024;
-constexpr size_t kListBlock = 4096;
+// Blocks start small, so a small effect does not pay for a big block, and double up to a
+// size that keeps a 10 MB effect (about a million nodes) at a few hundred allocations.
+constexpr size_t kFirstNodes = 64, kMaxNodes = 1024;
+constexpr size_t kFirstList = 256, kMaxList = 4096;
 
 }  // namespace
 
 ExprPtr ExprPool::make(ExprKind kind) {
-  if (nodes_.empty() || nodes_used_ == kNodesPerBlock) {
-    nodes_.push_back(std::make_unique<Expr[]>(kNodesPerBlock));
+  if (nodes_.empty() || nodes_used_ == nodes_capacity_) {
+    nodes_capacity_ = nodes_.empty() ? kFirstNodes : std::min(2 * nodes_capacity_, kMaxNodes);
+    nodes_.push_back(std::make_unique<Expr[]>(nodes_capacity_));
     nodes_used_ = 0;
   }
   ExprPtr e = &nodes_.back()[nodes_used_++];
@@ -26,7 +27,8 @@ ExprPtr ExprPool::make(ExprKind kind) {
 std::span<const ExprPtr> ExprPool::list(std::span<const ExprPtr> items) {
   if (items.empty()) return {};
   if (lists_.empty() || lists_capacity_ - lists_used_ < items.size()) {
-    lists_capacity_ = std::max(kListBlock, items.size());
+    size_t next = lists_.empty() ? kFirstList : std::min(2 * lists_capacity_, kMaxList);
+    lists_capacity_ = std::max(next, items.size());
     lists_.push_back(std::make_unique_for_overwrite<ExprPtr[]>(lists_capacity_));
     lists_used_ = 0;
   }
