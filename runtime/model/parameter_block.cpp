@@ -2,6 +2,9 @@
 // and remap() across reloads.
 #include <algorithm>
 #include <cstring>
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 
 #include "parameter_store_impl.h"
 
@@ -145,7 +148,6 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
     if (m.offset > block_size || m.size > block_size - m.offset)
       return fail(ParamStatus::size_mismatch, "member '" + m.name + "' lies outside the block (" +
                                                   std::to_string(block_size) + " bytes)");
-    b.members.push_back({node, m});
     const Impl::Node& n = s.nodes[node];
     auto group = std::find_if(per_top.begin(), per_top.end(), [&](const auto& g) { return g.first == n.top; });
     if (group == per_top.end()) group = per_top.insert(per_top.end(), {n.top, {}});
@@ -165,6 +167,9 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
     b.runs.insert(b.runs.end(), runs.begin(), runs.end());
     if (s.nodes[top].pooled) b.pooled.push_back({s.nodes[top].pool_entry, group, 0});
   }
+  b.group_of.assign(s.top_count, kNoIndex);
+  for (uint32_t g = 0; g < b.groups.size(); ++g) b.group_of[b.groups[g].top] = g;
+  b.seen_changes = s.changes;
   b.packed.assign(block_size, 0);
   s.pack(b, 0, static_cast<uint32_t>(b.runs.size()));
   for (Impl::PooledRuns& p : b.pooled) p.packed_version = s.pool->entries_[p.entry].version;
@@ -189,14 +194,60 @@ void ParameterStore::Impl::pack(Block& b, uint32_t first, uint32_t count) const 
         for (uint32_t k = 0; k < r.words; ++k) std::memcpy(to + r.dst + k * 4, from + k * r.stride, sizeof(uint32_t));
         break;
       case RunKind::columns4x4: {
+#if defined(__SSE2__)
+        // The per-object matrices (World, WorldViewProjection) take this path on every draw.
+        __m128 r0 = _mm_loadu_ps(reinterpret_cast<const float*>(from));
+        __m128 r1 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 4));
+        __m128 r2 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 8));
+        __m128 r3 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 12));
+        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+        float* column = reinterpret_cast<float*>(to + r.dst);
+        _mm_storeu_ps(column, r0);
+        _mm_storeu_ps(column + 4, r1);
+        _mm_storeu_ps(column + 8, r2);
+        _mm_storeu_ps(column + 12, r3);
+#else
         uint32_t columns[16];
         for (uint32_t c = 0; c < 4; ++c)
           for (uint32_t row = 0; row < 4; ++row) columns[c * 4 + row] = from[row * 4 + c];
         std::memcpy(to + r.dst, columns, sizeof columns);
+#endif
         break;
       }
     }
   }
+}
+
+bool ParameterStore::Impl::refresh(Block& b) const {
+  bool changed = !b.written;
+  b.written = true;
+  auto repack = [&](RunGroup& g) {
+    const uint64_t version = versions[g.top];
+    if (version == g.packed_version) return;  // unchanged, or a parameter touched twice
+    pack(b, g.first, g.count);
+    g.packed_version = version;
+    changed = true;
+  };
+  if (changes - b.seen_changes <= kTouchLog) {
+    for (uint64_t k = b.seen_changes; k < changes; ++k)
+      if (const uint32_t group = b.group_of[touched[k % kTouchLog]]; group != kNoIndex) repack(b.groups[group]);
+  } else {
+    for (RunGroup& g : b.groups) repack(g);
+  }
+  b.seen_changes = changes;
+  for (PooledRuns& p : b.pooled) {
+    const uint64_t version = pool->entries_[p.entry].version;
+    if (version == p.packed_version) continue;
+    pack(b, b.groups[p.group].first, b.groups[p.group].count);
+    p.packed_version = version;
+    changed = true;
+  }
+  return changed;
+}
+
+BlockHandle ParameterStore::block(uint32_t block) const {
+  auto it = impl_->block_slot.find(block);
+  return it == impl_->block_slot.end() ? BlockHandle{} : BlockHandle{it->second};
 }
 
 bool ParameterStore::dirty(uint32_t block) const {
@@ -214,20 +265,18 @@ ParamStatus ParameterStore::write_block(uint32_t block, std::span<uint8_t> out) 
   if (out.size() < b.size)
     return fail(ParamStatus::size_mismatch, "block " + std::to_string(block) + " needs " + std::to_string(b.size) +
                                                 " bytes, the buffer has " + std::to_string(out.size()));
-  for (Impl::RunGroup& g : b.groups) {
-    if (s.versions[g.top] == g.packed_version) continue;
-    s.pack(b, g.first, g.count);
-    g.packed_version = s.versions[g.top];
-  }
-  for (Impl::PooledRuns& p : b.pooled) {
-    const uint64_t version = s.pool->entries_[p.entry].version;
-    if (version == p.packed_version) continue;
-    s.pack(b, b.groups[p.group].first, b.groups[p.group].count);
-    p.packed_version = version;
-  }
+  s.refresh(b);
   std::memcpy(out.data(), b.packed.data(), b.size);
-  b.written = true;
   return {};
+}
+
+std::span<const uint8_t> ParameterStore::update_block(BlockHandle block, bool& changed) {
+  Impl& s = *impl_;
+  changed = false;
+  if (block.slot >= s.blocks.size()) return {};
+  Impl::Block& b = s.blocks[block.slot];
+  changed = s.refresh(b);
+  return {b.packed.data(), b.size};
 }
 
 void remap(const ParameterStore& old_store, ParameterStore& new_store) {

@@ -142,12 +142,7 @@ ParamStatus ParameterStore::Impl::write_floats(uint32_t i, const float* v, size_
   if (count != n.words)
     return fail(ParamStatus::size_mismatch, describe(i) + " takes " + std::to_string(n.words) + " floats, got " +
                                                 std::to_string(count));
-  // Float-like components are held as float bits (half and double included): a copy. An
-  // unchanged value (the same matrix set every frame) leaves the blocks clean.
-  uint32_t* d = data(n);
-  if (std::memcmp(d, v, n.words * sizeof(float)) == 0) return {};
-  std::memcpy(d, v, n.words * sizeof(float));
-  touch(n);
+  store_floats(n, v);
   return {};
 }
 
@@ -180,6 +175,15 @@ ParamStatus ParameterStore::set(Param p, std::span<const int32_t> v) {
 
 ParamStatus ParameterStore::set_matrix(Param p, std::span<const float> v, HostMatrixOrder order) {
   Impl& s = *impl_;
+  // The per-object call (a current handle, row-major floats of the right count) checks the
+  // handle once; anything else takes the path that says what is wrong.
+  if (order == HostMatrixOrder::row_major && p.generation == s.generation && p.index < s.nodes.size()) {
+    const Impl::Node& n = s.nodes[p.index];
+    if (n.type.cls == TypeClass::matrix && n.all_float && v.size() == n.words) {
+      s.store_floats(n, v.data());
+      return {};
+    }
+  }
   uint32_t i;
   if (ParamStatus st = s.resolve(p, i); !st) return st;
   const Impl::Node& n = s.nodes[i];

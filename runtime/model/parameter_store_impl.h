@@ -2,6 +2,9 @@
 #pragma once
 #include <cstring>
 #include <string>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <unordered_map>
 #include <vector>
 
@@ -65,10 +68,6 @@ struct ParameterStore::Impl {
     uint32_t string_slot = kNoIndex;
     bool all_float = false, all_int = false;  // every component float-like / int-like
   };
-  struct Placement {
-    uint32_t node;
-    BlockMemberLayout layout;
-  };
   // One copy into a block: `words` 32-bit words to consecutive bytes from `dst`, read from
   // word `src` of the store's words (the pool's when `pooled`). `gather` reads every
   // `stride` words (one column of a row-stored matrix); `columns4x4` writes a whole
@@ -97,11 +96,12 @@ struct ParameterStore::Impl {
   // copies the block once.
   struct Block {
     uint32_t id = 0, size = 0;
-    std::vector<Placement> members;
     std::vector<WordRun> runs;  // planned by plan_runs, grouped by top-level parameter
     std::vector<RunGroup> groups;
     std::vector<uint8_t> packed;
     bool written = false;  // by write_block since bind_layout
+    std::vector<uint32_t> group_of;  // per top-level parameter: its group here, or kNoIndex
+    uint64_t seen_changes = 0;       // Impl::changes when the groups were last brought up to date
     std::vector<PooledRuns> pooled;
     bool changed(const std::vector<uint64_t>& versions, const ParameterPool* pool) const {
       if (!written) return true;
@@ -112,6 +112,9 @@ struct ParameterStore::Impl {
       return false;
     }
   };
+  // Re-packs the runs of `b` whose parameter changed since they were packed; true when
+  // anything was re-packed or the block was never handed out.
+  bool refresh(Block& b) const;
   static void plan_runs(const Node& n, const BlockMemberLayout& m, uint32_t block_size, std::vector<WordRun>& runs);
   // Copies runs [first, first + count) of `b` from the words into b.packed.
   void pack(Block& b, uint32_t first, uint32_t count) const;
@@ -129,6 +132,12 @@ struct ParameterStore::Impl {
   // Per top-level node, bumped on every change: a block compares it with what it packed,
   // so a set costs the same however many blocks hold the parameter.
   std::vector<uint64_t> versions;
+  // The last kTouchLog changes: touched[k % kTouchLog] is the top-level parameter of change
+  // k (`changes` so far), so a block refreshed a few changes ago re-packs just those
+  // instead of comparing every parameter's version (World and WorldViewProjection per draw).
+  static constexpr uint32_t kTouchLog = 16;
+  uint64_t changes = 0;
+  uint32_t touched[kTouchLog] = {};
   std::vector<Block> blocks;
   std::unordered_map<uint32_t, uint32_t> block_slot;
   std::unordered_map<std::string, uint32_t> by_name;
@@ -207,7 +216,35 @@ struct ParameterStore::Impl {
 
   void touch(const Node& n) {
     ++versions[n.top];
+    touched[changes % kTouchLog] = n.top;
+    ++changes;
     if (n.pooled) ++pool->entries_[n.pool_entry].version;
+  }
+
+  // Copies n.words floats into node `n` (all float-like: held as float bits, half and
+  // double included) and dirties its blocks only when a bit changed (the same matrix set
+  // every frame leaves them clean). One pass, no branch per word.
+  void store_floats(const Node& n, const float* v) {
+    uint32_t* d = data(n);
+    uint32_t w = 0;
+    bool changed = false;
+#if defined(__SSE2__)
+    __m128i diff = _mm_setzero_si128();
+    for (; w + 4 <= n.words; w += 4) {
+      const __m128i now = _mm_loadu_si128(reinterpret_cast<const __m128i*>(d + w));
+      const __m128i next = _mm_loadu_si128(reinterpret_cast<const __m128i*>(v + w));
+      diff = _mm_or_si128(diff, _mm_xor_si128(now, next));
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(d + w), next);
+    }
+    changed = _mm_movemask_epi8(_mm_cmpeq_epi32(diff, _mm_setzero_si128())) != 0xFFFF;
+#endif
+    for (; w < n.words; ++w) {
+      uint32_t word;
+      std::memcpy(&word, v + w, sizeof word);
+      changed = changed || d[w] != word;
+      d[w] = word;
+    }
+    if (changed) touch(n);
   }
 
   BaseType base_at(const Node& n, uint32_t word) const { return bases[n.base_offset + word]; }

@@ -2,6 +2,7 @@
 // packing with D3D matrix rules, shared pools and remap across reloads.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "fx/model/parameter_store.h"
@@ -225,6 +226,76 @@ TEST(ParameterStore, DirtyTrackingPerBlock) {
   EXPECT_FALSE(store.dirty(0)) << "setting the value the parameter holds changes nothing";
   const BlockMemberLayout unknown[] = {{"zz", 0, 4, 0, 16, MatrixOrder::column_major}};
   EXPECT_EQ(store.bind_layout(2, unknown, 4).code, ParamStatus::not_found);
+}
+
+// update_block through a handle: the same bytes write_block gives, `changed` only when a
+// bit changed, and the same result whether a few changes (the recent-change log) or more
+// than the log holds (the full comparison) happened since the last update.
+TEST(ParameterStore, UpdateBlockThroughHandle) {
+  auto b = test::build("float4x4 World; float4x4 Wvp; float4 a; float c; float e[20];");
+  ParameterStore store(b->model);
+  const BlockMemberLayout layout[] = {{"World", 0, 64, 0, 16, MatrixOrder::column_major},
+                                      {"Wvp", 64, 64, 0, 16, MatrixOrder::row_major},
+                                      {"a", 128, 16, 0, 16, MatrixOrder::column_major},
+                                      {"c", 144, 4, 0, 16, MatrixOrder::column_major}};
+  ASSERT_TRUE(store.bind_layout(7, layout, 160));
+  EXPECT_FALSE(store.block(8).valid());
+  const BlockHandle h = store.block(7);
+  ASSERT_TRUE(h.valid());
+  bool changed = false;
+  EXPECT_TRUE(store.update_block(BlockHandle{}, changed).empty());
+  EXPECT_FALSE(changed);
+  std::span<const uint8_t> bytes = store.update_block(h, changed);
+  ASSERT_EQ(bytes.size(), 160u);
+  EXPECT_TRUE(changed) << "never handed out";
+  bytes = store.update_block(h, changed);
+  EXPECT_FALSE(changed);
+  float m[16];
+  for (int i = 0; i < 16; ++i) m[i] = float(i + 1);
+  ASSERT_TRUE(store.set_matrix(store.find("World"), m));
+  ASSERT_TRUE(store.set_matrix(store.find("Wvp"), m));
+  ASSERT_TRUE(store.set_matrix(store.find("World"), m)) << "the same value again";
+  EXPECT_TRUE(store.dirty(7));
+  bytes = store.update_block(h, changed);
+  EXPECT_TRUE(changed);
+  EXPECT_FALSE(store.dirty(7));
+  std::vector<uint8_t> written(160, 0xCD);
+  ASSERT_TRUE(store.write_block(7, written));
+  EXPECT_TRUE(std::equal(bytes.begin(), bytes.end(), written.begin()));
+  float at;
+  std::memcpy(&at, bytes.data() + 16, 4);
+  EXPECT_EQ(at, 2.0f) << "column_major World: register 1 starts with m[0][1]";
+  std::memcpy(&at, bytes.data() + 64 + 4, 4);
+  EXPECT_EQ(at, 2.0f) << "row_major Wvp: register 0 is row 0";
+  // More changes than the recent-change log holds, to parameters in and out of the block.
+  const Param e = store.find("e"), a = store.find("a"), c = store.find("c");
+  for (int k = 0; k < 40; ++k) ASSERT_TRUE(store.set(store.element(e, uint32_t(k % 20)), float(k)));
+  ASSERT_TRUE(store.set(c, 3.0f));
+  for (int k = 0; k < 40; ++k) ASSERT_TRUE(store.set(store.element(e, uint32_t(k % 20)), float(k + 100)));
+  bytes = store.update_block(h, changed);
+  EXPECT_TRUE(changed);
+  std::memcpy(&at, bytes.data() + 144, 4);
+  EXPECT_EQ(at, 3.0f);
+  // Changes only outside the block leave it unchanged, logged or not.
+  ASSERT_TRUE(store.set(store.element(e, 0), -1.0f));
+  store.update_block(h, changed);
+  EXPECT_FALSE(changed);
+  for (int k = 0; k < 40; ++k) ASSERT_TRUE(store.set(store.element(e, uint32_t(k % 20)), float(k + 200)));
+  store.update_block(h, changed);
+  EXPECT_FALSE(changed);
+  // A parameter changed twice within the log is packed with its last value.
+  const float v1[4] = {1, 2, 3, 4}, v2[4] = {5, 6, 7, 8};
+  ASSERT_TRUE(store.set(a, std::span<const float>(v1)));
+  ASSERT_TRUE(store.set(a, std::span<const float>(v2)));
+  bytes = store.update_block(h, changed);
+  EXPECT_TRUE(changed);
+  std::memcpy(&at, bytes.data() + 128 + 12, 4);
+  EXPECT_EQ(at, 8.0f);
+  // A rebind keeps the handle.
+  ASSERT_TRUE(store.bind_layout(7, std::span<const BlockMemberLayout>(layout, 2), 128));
+  EXPECT_EQ(store.block(7).slot, h.slot);
+  EXPECT_EQ(store.update_block(h, changed).size(), 128u);
+  EXPECT_TRUE(changed);
 }
 
 TEST(ParameterStore, SharedPool) {

@@ -25,6 +25,12 @@ struct Param {
   friend bool operator==(Param, Param) = default;
 };
 
+// A bound uniform block of one store (ParameterStore::block).
+struct BlockHandle {
+  uint32_t slot = kNoIndex;
+  bool valid() const { return slot != kNoIndex; }
+};
+
 // Result of a set/get. `removed` is a warning (the parameter went away in a reload; the
 // call did nothing); the others are errors. Never UB: a bad call changes nothing.
 struct ParamStatus {
@@ -124,12 +130,20 @@ class ParameterStore {
   // Uniform blocks (ids chosen by the caller, e.g. reflection's block index). A member
   // name that names no parameter is skipped and listed in the result's message.
   ParamStatus bind_layout(uint32_t block, std::span<const BlockMemberLayout> members, uint32_t block_size);
-  // True when a parameter in `block` changed since the last write_block.
+  // The bound block `block` as a handle for per-draw calls (no id lookup); invalid when
+  // the id has no layout. It stays valid for the store's life (a rebind keeps it).
+  BlockHandle block(uint32_t block) const;
+  // True when a parameter in `block` changed since the last write_block / update_block.
   bool dirty(uint32_t block) const;
   // Packs the block's parameters into `out` (at least the bound block size) and clears
   // its dirty flag. Bytes of the block no parameter covers are zeroed, so `out` may be
   // recycled memory (a uniform ring slot); bytes past the block size are left untouched.
   ParamStatus write_block(uint32_t block, std::span<uint8_t> out);
+  // dirty + write_block in one pass: re-packs what changed and returns the block's bytes
+  // (its bound size, padding zero; valid until the next call on this store), `changed`
+  // telling whether they differ from what the last update or write returned. Empty for
+  // an invalid handle.
+  std::span<const uint8_t> update_block(BlockHandle block, bool& changed);
 
   uint32_t generation() const;
 
