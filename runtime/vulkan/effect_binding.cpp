@@ -2,6 +2,7 @@
 #include "fx/vulkan/effect_binding.h"
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 
 namespace fx::vk {
@@ -22,6 +23,7 @@ struct ImageSlot {
 // holding its last copy was recycled.
 struct BlockSlot {
   uint32_t id = 0;
+  BlockHandle handle;  // of `id`, for the per-draw update without an id lookup
   uint32_t size = 0;
   uint64_t frame = 0;  // FrameResources::frame() of the last write (0: never)
 };
@@ -171,7 +173,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
       const auto& program_blocks = pass->shader.uniform_blocks();
       for (uint32_t index = 0; index < program_blocks.size(); ++index) {
         const ProgramUniformBlock& block = program_blocks[index];
-        BlockSlot slot{next_block_id++, block.size, 0};
+        BlockSlot slot{next_block_id++, {}, block.size, 0};
         std::vector<BlockMemberLayout> members;
         if (block.reflection)
           for (const BlockMember& m : block.reflection->members) {
@@ -189,6 +191,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
         if (!status.message.empty())
           sink.warning("vk-uniform-unbound", pass_info.range,
                        "pass '" + pass_info.name + "', block '" + block.name + "': " + status.message);
+        slot.handle = params.block(slot.id);
         pass->blocks.push_back(slot);
       }
       pass->ring_offsets.resize(pass->blocks.size(), 0);
@@ -338,17 +341,28 @@ bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, Diagnosti
     return false;
   }
   Pass& pass = *active_->passes[pass_index];
+  bool moved = false;  // a block was written to a new ring offset
   for (size_t i = 0; i < pass.blocks.size(); ++i) {
     BlockSlot& block = pass.blocks[i];
-    if (frames_->still_valid(block.frame) && !params_->dirty(block.id)) continue;
+    bool changed;
+    const std::span<const uint8_t> bytes = params_->update_block(block.handle, changed);
+    if (!changed && frames_->still_valid(block.frame)) continue;
     std::optional<uint32_t> offset = recorder_->write_uniform(
-        block.size, [&](uint8_t* ring) { params_->write_block(block.id, {ring, block.size}); }, sink);
+        block.size,
+        [&](uint8_t* ring) {
+          // A block bind_layout refused has no bytes: the shader reads zeros.
+          if (bytes.size() == block.size) std::memcpy(ring, bytes.data(), block.size);
+          else std::memset(ring, 0, block.size);
+        },
+        sink);
     if (!offset) return false;
     pass.ring_offsets[i] = *offset;
     block.frame = frames_->frame();
+    moved = true;
   }
   // The same pass again (the next object of a group): only the uniform offsets can differ.
-  if (&pass == applied_ && vertex_layout == applied_layout_ && recorder_->reapply(*pass.resources, pass.ring_offsets))
+  if (&pass == applied_ && vertex_layout == applied_layout_ &&
+      recorder_->reapply(*pass.resources, pass.ring_offsets, moved))
     return true;
   applied_ = nullptr;
   const VertexInput* input = vertex_input(pass, vertex_layout, sink);

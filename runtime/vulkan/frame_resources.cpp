@@ -1,6 +1,7 @@
 // FrameResources: uniform ring slices and descriptor pools per frame in flight.
 #include "fx/vulkan/frame_resources.h"
 
+#include <bit>
 #include <cstring>
 
 #include "vk_check.h"
@@ -13,7 +14,8 @@ std::optional<FrameResources> FrameResources::create(const Context& ctx,
   FrameResources f;
   f.ctx_ = &ctx;
   f.frames_in_flight_ = std::max(1u, desc.frames_in_flight);
-  f.alignment_ = std::max<VkDeviceSize>(1, ctx.info().limits.minUniformBufferOffsetAlignment);
+  // A power of two per the Vulkan spec; rounded up anyway, reserve_uniform masks with it.
+  f.alignment_ = std::bit_ceil(std::max<VkDeviceSize>(1, ctx.info().limits.minUniformBufferOffsetAlignment));
   f.slice_ = (desc.uniform_bytes_per_frame + f.alignment_ - 1) / f.alignment_ * f.alignment_;
   std::optional<Buffer> ring =
       Buffer::create(ctx,
@@ -22,6 +24,7 @@ std::optional<FrameResources> FrameResources::create(const Context& ctx,
                      sink);
   if (!ring) return std::nullopt;
   f.ring_ = std::move(*ring);
+  f.ring_coherent_ = f.ring_.coherent();
   const VkDescriptorPoolSize sizes[] = {
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, desc.descriptors_per_type},
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, desc.descriptors_per_type},
@@ -49,6 +52,7 @@ FrameResources& FrameResources::operator=(FrameResources&& o) noexcept {
   for (VkDescriptorPool pool : pools_) vkDestroyDescriptorPool(ctx_->device(), pool, nullptr);
   ctx_ = o.ctx_;
   ring_ = std::move(o.ring_);
+  ring_coherent_ = o.ring_coherent_;
   pools_ = std::move(o.pools_);
   o.pools_.clear();
   frames_in_flight_ = o.frames_in_flight_;
@@ -69,18 +73,11 @@ void FrameResources::begin_frame() {
   vkResetDescriptorPool(ctx_->device(), pools_[frame_ % frames_in_flight_], 0);
 }
 
-std::optional<UniformAllocation> FrameResources::reserve_uniform(uint32_t bytes, DiagnosticSink& sink) {
-  const VkDeviceSize start = (head_ + alignment_ - 1) / alignment_ * alignment_;
-  if (start + bytes > slice_) {
-    sink.error("vk-uniform-ring-full", {},
-               "uniform data of frame " + std::to_string(frame_) + " exceeds the " +
-                   std::to_string(slice_) + "-byte ring slice");
-    return std::nullopt;
-  }
-  const VkDeviceSize offset = slice_start_ + start;
-  head_ = start + bytes;
-  bytes_uploaded_ += bytes;
-  return UniformAllocation{ring_.handle(), uint32_t(offset), static_cast<uint8_t*>(ring_.mapped()) + offset};
+std::optional<UniformAllocation> FrameResources::ring_full(DiagnosticSink& sink) const {
+  sink.error("vk-uniform-ring-full", {},
+             "uniform data of frame " + std::to_string(frame_) + " exceeds the " + std::to_string(slice_) +
+                 "-byte ring slice");
+  return std::nullopt;
 }
 
 std::optional<UniformAllocation> FrameResources::upload_uniform(const void* data, uint32_t bytes,

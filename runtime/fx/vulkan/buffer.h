@@ -39,6 +39,8 @@ class Buffer {
   // Mapped pointer for host-visible memory, null otherwise.
   void* mapped() const { return mapped_; }
   bool host_visible() const { return mapped_ != nullptr; }
+  // Whether CPU writes need no flush (host-coherent memory).
+  bool coherent() const { return coherent_; }
 
   // Copies into the mapping and flushes it; false if not host-visible or out of range.
   bool write(const void* data, VkDeviceSize bytes, VkDeviceSize offset = 0);

@@ -56,11 +56,21 @@ class FrameResources {
   std::optional<UniformAllocation> upload_uniform(const void* data, uint32_t bytes,
                                                   DiagnosticSink& sink);
   // Reserves `bytes` of this frame's ring slice for the caller to fill through `mapped`
-  // (then flush_uniform): data packed straight into the ring, no staging copy.
-  std::optional<UniformAllocation> reserve_uniform(uint32_t bytes, DiagnosticSink& sink);
+  // (then flush_uniform): data packed straight into the ring, no staging copy. Inline: it
+  // runs once per uniform block and draw.
+  std::optional<UniformAllocation> reserve_uniform(uint32_t bytes, DiagnosticSink& sink) {
+    const VkDeviceSize start = (head_ + alignment_ - 1) & ~(alignment_ - 1);  // a power of two
+    if (start + bytes > slice_) return ring_full(sink);
+    const VkDeviceSize offset = slice_start_ + start;
+    head_ = start + bytes;
+    bytes_uploaded_ += bytes;
+    return UniformAllocation{ring_.handle(), uint32_t(offset), static_cast<uint8_t*>(ring_.mapped()) + offset};
+  }
   // Makes what the caller wrote into a reservation visible to the device (no-op for
   // coherent memory).
-  void flush_uniform(const UniformAllocation& a, uint32_t bytes) const { ring_.flush(a.offset, bytes); }
+  void flush_uniform(const UniformAllocation& a, uint32_t bytes) const {
+    if (!ring_coherent_) ring_.flush(a.offset, bytes);
+  }
   // A descriptor set from this frame's pool; null and "vk-descriptor-pool-full" when empty.
   VkDescriptorSet allocate_set(VkDescriptorSetLayout layout, DiagnosticSink& sink);
 
@@ -69,8 +79,11 @@ class FrameResources {
   uint64_t sets_allocated() const { return sets_allocated_; }
 
  private:
+  std::optional<UniformAllocation> ring_full(DiagnosticSink& sink) const;
+
   const Context* ctx_ = nullptr;
   Buffer ring_;
+  bool ring_coherent_ = true;
   std::vector<VkDescriptorPool> pools_;
   uint32_t frames_in_flight_ = 0;
   VkDeviceSize slice_ = 0, alignment_ = 256;

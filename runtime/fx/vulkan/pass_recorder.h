@@ -59,10 +59,11 @@ class PassRecorder {
   bool apply(const PassDesc& pass, DiagnosticSink& sink);
   // Applies again the pass applied last (nothing else applied since), whose caller-written
   // uniforms moved to `uniform_offsets`: pipeline, dynamic state and textures are bound
-  // already, so only the descriptor offsets can change. False (nothing recorded) when
+  // already, so only the descriptor offsets can change. `moved` false promises the offsets
+  // are the ones applied last (nothing to compare or bind). False (nothing recorded) when
   // `resources` is not that pass's, its textures changed or it pushes descriptors: call
   // apply() then.
-  bool reapply(const PassResources& resources, std::span<const uint32_t> uniform_offsets);
+  bool reapply(const PassResources& resources, std::span<const uint32_t> uniform_offsets, bool moved = true);
   // Ends the sequence; the next begin() assumes nothing is bound.
   void end();
   // Reserves `bytes` of the frame's uniform ring, lets `fill(uint8_t*)` write them in place
