@@ -179,7 +179,7 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
   return {};
 }
 
-void ParameterStore::Impl::pack(Block& b, uint32_t first, uint32_t count) const {
+inline void ParameterStore::Impl::pack(Block& b, uint32_t first, uint32_t count) const {
   const uint32_t* own = words.data();
   const uint32_t* pooled = pool ? pool->words_.data() : nullptr;
   uint8_t* to = b.packed.data();

@@ -184,6 +184,12 @@ ParamStatus ParameterStore::set_matrix(Param p, std::span<const float> v, HostMa
       return {};
     }
   }
+  // Out of line, so the call above stays a small leaf (no stack frame for the messages).
+  return s.set_matrix_checked(p, v, order);
+}
+
+ParamStatus ParameterStore::Impl::set_matrix_checked(Param p, std::span<const float> v, HostMatrixOrder order) {
+  Impl& s = *this;
   uint32_t i;
   if (ParamStatus st = s.resolve(p, i); !st) return st;
   const Impl::Node& n = s.nodes[i];

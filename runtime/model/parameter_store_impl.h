@@ -117,10 +117,12 @@ struct ParameterStore::Impl {
   bool refresh(Block& b) const;
   static void plan_runs(const Node& n, const BlockMemberLayout& m, uint32_t block_size, std::vector<WordRun>& runs);
   // Copies runs [first, first + count) of `b` from the words into b.packed.
-  void pack(Block& b, uint32_t first, uint32_t count) const;
+  [[gnu::always_inline]] inline void pack(Block& b, uint32_t first, uint32_t count) const;
   // Stores `count` floats into node `i` (all float-like components); dirties its blocks only
   // when a bit changes.
   ParamStatus write_floats(uint32_t i, const float* v, size_t count);
+  // set_matrix for what its fast path does not take: old handles, column-major input, errors.
+  [[gnu::noinline]] ParamStatus set_matrix_checked(Param p, std::span<const float> v, HostMatrixOrder order);
 
   const EffectModel* model = nullptr;
   ParameterPool* pool = nullptr;

@@ -336,10 +336,7 @@ bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const Renderi
 }
 
 bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, DiagnosticSink& sink) {
-  if (!active_ || pass_index >= active_->passes.size()) {
-    sink.error("vk-pass-unknown", {}, "apply() of pass " + std::to_string(pass_index) + " outside begin()/end() or past the last pass");
-    return false;
-  }
+  if (!active_ || pass_index >= active_->passes.size()) return unknown_pass(pass_index, sink);
   Pass& pass = *active_->passes[pass_index];
   bool moved = false;  // a block was written to a new ring offset
   for (size_t i = 0; i < pass.blocks.size(); ++i) {
@@ -364,6 +361,15 @@ bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, Diagnosti
   if (&pass == applied_ && vertex_layout == applied_layout_ &&
       recorder_->reapply(*pass.resources, pass.ring_offsets, moved))
     return true;
+  return apply_pass(pass, vertex_layout, sink);
+}
+
+bool EffectBinding::unknown_pass(uint32_t pass_index, DiagnosticSink& sink) {
+  sink.error("vk-pass-unknown", {}, "apply() of pass " + std::to_string(pass_index) + " outside begin()/end() or past the last pass");
+  return false;
+}
+
+bool EffectBinding::apply_pass(Pass& pass, uint32_t vertex_layout, DiagnosticSink& sink) {
   applied_ = nullptr;
   const VertexInput* input = vertex_input(pass, vertex_layout, sink);
   if (!input) return false;

@@ -122,6 +122,10 @@ class EffectBinding {
   struct Technique;
   EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures);
   bool bind_textures(DiagnosticSink& sink);
+  // apply()'s out-of-line parts, so the per-object path stays small: the error for a bad
+  // pass index, and a pass bound from scratch (pipeline, state, descriptors).
+  [[gnu::noinline]] static bool unknown_pass(uint32_t pass_index, DiagnosticSink& sink);
+  [[gnu::noinline]] bool apply_pass(Pass& pass, uint32_t vertex_layout, DiagnosticSink& sink);
   const VertexInput* vertex_input(Pass& pass, uint32_t layout, DiagnosticSink& sink);
   void update_object_count();
 
