@@ -172,7 +172,8 @@ int bench_apply(const BenchArgs& args) {
         images.reserve(16);
         std::vector<VkWriteDescriptorSet> writes;
         for (const fx::vk::ProgramUniformBlock& b : program->uniform_blocks()) {
-          RawPass::Block block{b.size};
+          RawPass::Block block{};
+          block.size = b.size;
           block.bytes.assign(b.size, 0);
           std::vector<fx::BlockMemberLayout> members;
           for (const fx::BlockMember& m : b.reflection->members) {
