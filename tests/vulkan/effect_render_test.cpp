@@ -93,9 +93,7 @@ TEST_F(EffectRenderTest, EveryEffectTechniqueRendersOrHasAReason) {
         ++skipped;
         continue;
       }
-      r->technique = t;
-      auto inputs = technique_vertex_inputs(*r->effect->model, *r->effect->programs, t);
-      r->layout = r->binding->add_vertex_layout(r->preview->vertex_layout(inputs));
+      r->use_technique(t);
       const size_t errors = ctx().validation_error_count();
       EXPECT_TRUE(r->render());
       EXPECT_EQ(ctx().validation_error_count(), errors) << describe_messages(ctx());

@@ -24,11 +24,27 @@ struct RenderedEffect {
   uint32_t technique = kNoIndex;
   uint32_t layout = 0;
 
+  // Makes technique `t` the one render() draws, with a vertex layout for its inputs.
+  void use_technique(uint32_t t) {
+    technique = t;
+    auto inputs = technique_vertex_inputs(*effect->model, *effect->programs, t);
+    layout = binding->add_vertex_layout(preview->vertex_layout(inputs));
+  }
+
   // Renders one frame; fails the test on diagnostics that are errors.
   std::optional<fx::Image> render() {
     DiagnosticSink sink;
     set_standard_semantics(*effect->params, *effect->model, preview->scene());
     auto image = preview->render(*binding, technique, layout, sink);
+    EXPECT_TRUE(image.has_value()) << describe(sink);
+    return image;
+  }
+
+  // The same frame read back as floats (bind_effect with a float colour format).
+  std::optional<fx::ImageF> render_floats() {
+    DiagnosticSink sink;
+    set_standard_semantics(*effect->params, *effect->model, preview->scene());
+    auto image = preview->render_floats(*binding, technique, layout, sink);
     EXPECT_TRUE(image.has_value()) << describe(sink);
     return image;
   }
@@ -62,12 +78,11 @@ inline std::unique_ptr<RenderedEffect> bind_effect(Context& ctx, const std::stri
                                      r->preview->textures(), r->preview->frames(), bd, sink);
   EXPECT_TRUE(r->binding) << describe(sink);
   if (!r->binding) return nullptr;
-  r->technique = technique.empty() ? r->binding->first_ok_technique() : r->effect->find_technique(technique);
-  EXPECT_NE(r->technique, kNoIndex) << technique;
-  if (r->technique == kNoIndex) return nullptr;
-  EXPECT_TRUE(r->binding->technique_ok(r->technique)) << r->binding->technique_reason(r->technique);
-  auto inputs = technique_vertex_inputs(*r->effect->model, *r->effect->programs, r->technique);
-  r->layout = r->binding->add_vertex_layout(r->preview->vertex_layout(inputs));
+  const uint32_t t = technique.empty() ? r->binding->first_ok_technique() : r->effect->find_technique(technique);
+  EXPECT_NE(t, kNoIndex) << technique;
+  if (t == kNoIndex) return nullptr;
+  EXPECT_TRUE(r->binding->technique_ok(t)) << r->binding->technique_reason(t);
+  r->use_technique(t);
   return r;
 }
 

@@ -105,10 +105,7 @@ void apply(const HardCase& c, RenderedEffect& r) {
 // Renders the bound technique with `c` applied; the number of non-finite channels.
 size_t non_finite_channels(RenderedEffect& r, const HardCase& c) {
   apply(c, r);
-  DiagnosticSink sink;
-  set_standard_semantics(*r.effect->params, *r.effect->model, r.preview->scene());
-  auto image = r.preview->render_floats(*r.binding, r.technique, r.layout, sink);
-  EXPECT_TRUE(image) << describe(sink);
+  auto image = r.render_floats();
   size_t bad = 0;
   if (image)
     for (float v : image->pixels) bad += !std::isfinite(v);
@@ -144,9 +141,7 @@ TEST_F(HardCaseEffects, NoTechniqueOutputsNanOrInfOnHardCaseParameters) {
       if (!r->binding->technique_ok(t)) continue;  // asm / fixed function: not drawn on Vulkan
       SCOPED_TRACE(r->effect->model->techniques[t].name);
       ++techniques;
-      r->technique = t;
-      auto inputs = technique_vertex_inputs(*r->effect->model, *r->effect->programs, t);
-      r->layout = r->binding->add_vertex_layout(r->preview->vertex_layout(inputs));
+      r->use_technique(t);
       for (const HardCase& c : hard_cases(r->preview->scene().eye)) {
         SCOPED_TRACE(c.name);
         EXPECT_EQ(non_finite_channels(*r, c), 0u) << "non-finite channels in the output";
