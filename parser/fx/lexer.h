@@ -4,7 +4,6 @@
 #include <optional>
 #include <string_view>
 #include <variant>
-#include <vector>
 
 #include "fx/diagnostic.h"
 #include "fx/source_manager.h"
@@ -18,11 +17,12 @@ class Lexer {
 
   // The next token; TokenKind::eof at the end (repeatedly).
   Token next();
-  // Appends up to `max` tokens to `out`, stopping after a `#` that starts a line (a
-  // directive reads the raw line after it), after eof, or after the first token that
-  // reported a diagnostic (so the caller can forward it with that token). Lexing does not
-  // depend on macros, so reading ahead like this yields exactly the tokens next() would.
-  void next_batch(std::vector<Token>& out, size_t max);
+  // Writes up to `max` tokens to `out` and returns how many, stopping after a `#` that
+  // starts a line (a directive reads the raw line after it), after eof, or after the first
+  // token that reported a diagnostic (so the caller can forward it with that token).
+  // Lexing does not depend on macros, so reading ahead like this yields exactly the
+  // tokens next() would.
+  size_t next_batch(Token* out, size_t max);
   // After `#include`: reads a `<path>` header name if one follows on this line.
   std::optional<Token> header_name();
   // Skips the rest of the current line (an unknown or skipped directive) and returns it.

@@ -26,6 +26,75 @@ bool is_ident_start(char c) { return char_class(c) & kIdentStart; }
 bool is_digit(char c) { return char_class(c) & kDigit; }
 bool is_ident_char(char c) { return char_class(c) & (kIdentStart | kDigit); }
 
+// The flags a blank character gives the next token (0: not a blank), so that skipping
+// blanks is one load and one test per character.
+constexpr std::array<uint8_t, 256> kBlankFlags = [] {
+  std::array<uint8_t, 256> t{};
+  for (char c : {' ', '\t', '\r', '\f', '\v'}) t[static_cast<unsigned char>(c)] = kLeadingSpace;
+  t['\n'] = kAtLineStart | kLeadingSpace;
+  return t;
+}();
+
+// How next_batch starts a token on its first character. Everything `other` (quotes, a
+// backslash, '\0' at the end, characters that start no token) takes the general path.
+enum class Start : uint8_t { other, identifier, digit, period, punct };
+constexpr std::array<Start, 256> kStart = [] {
+  std::array<Start, 256> t{};
+  for (int c = 0; c < 256; ++c) {
+    if (kClass[c] & kIdentStart) t[c] = Start::identifier;
+    else if (kClass[c] & kDigit) t[c] = Start::digit;
+  }
+  t['.'] = Start::period;
+  for (char c : std::string_view("()[]{};,?~:!=*/%^#+-&|<>"))
+    t[static_cast<unsigned char>(c)] = Start::punct;
+  return t;
+}();
+
+// The punctuator at `p` (a character kStart marks punct), longest match; advances `p`.
+inline TokenKind punctuator(const char*& p) {
+  const char c = *p++;
+  auto take = [&](char next) {
+    if (*p == next) return ++p, true;
+    return false;
+  };
+  switch (c) {
+    case '(': return TokenKind::l_paren;
+    case ')': return TokenKind::r_paren;
+    case '[': return TokenKind::l_square;
+    case ']': return TokenKind::r_square;
+    case '{': return TokenKind::l_brace;
+    case '}': return TokenKind::r_brace;
+    case ';': return TokenKind::semi;
+    case ',': return TokenKind::comma;
+    case '.': return TokenKind::period;
+    case '?': return TokenKind::question;
+    case '~': return TokenKind::tilde;
+    case ':': return take(':') ? TokenKind::coloncolon : TokenKind::colon;
+    case '!': return take('=') ? TokenKind::exclaimequal : TokenKind::exclaim;
+    case '=': return take('=') ? TokenKind::equalequal : TokenKind::equal;
+    case '*': return take('=') ? TokenKind::starequal : TokenKind::star;
+    case '/': return take('=') ? TokenKind::slashequal : TokenKind::slash;
+    case '%': return take('=') ? TokenKind::percentequal : TokenKind::percent;
+    case '^': return take('=') ? TokenKind::caretequal : TokenKind::caret;
+    case '#': return take('#') ? TokenKind::hashhash : TokenKind::hash;
+    case '+': return take('+') ? TokenKind::plusplus : take('=') ? TokenKind::plusequal : TokenKind::plus;
+    case '-':
+      return take('-')   ? TokenKind::minusminus
+             : take('=') ? TokenKind::minusequal
+             : take('>') ? TokenKind::arrow
+                         : TokenKind::minus;
+    case '&': return take('&') ? TokenKind::ampamp : take('=') ? TokenKind::ampequal : TokenKind::amp;
+    case '|': return take('|') ? TokenKind::pipepipe : take('=') ? TokenKind::pipeequal : TokenKind::pipe;
+    case '<':
+      if (take('<')) return take('=') ? TokenKind::lesslessequal : TokenKind::lessless;
+      return take('=') ? TokenKind::lessequal : TokenKind::less;
+    case '>':
+      if (take('>')) return take('=') ? TokenKind::greatergreaterequal : TokenKind::greatergreater;
+      return take('=') ? TokenKind::greaterequal : TokenKind::greater;
+    default: return TokenKind::unknown;
+  }
+}
+
 }  // namespace
 
 const char* spelling(TokenKind k) {
@@ -92,7 +161,9 @@ const char* spelling(TokenKind k) {
 
 Lexer::Lexer(SourceManager& sm, BufferId buffer, DiagnosticSink& diags)
     : sm_(sm), diags_(diags), buffer_(buffer), text_(sm.buffer_text(buffer)),
-      base_(sm.location(buffer, 0).raw) {}
+      base_(sm.location(buffer, 0).raw) {
+  if (!text_.data()) text_ = "";  // an invalid buffer: still a '\0' after the text
+}
 
 // Removes backslash-newline pairs at the current position (translation phase 2).
 void Lexer::skip_splices() {
@@ -204,8 +275,7 @@ Token Lexer::make(TokenKind kind, size_t begin) {
 
 Token Lexer::next() { return next_token(); }
 
-// next() and next_batch() share this body, inlined into both: the batch loop then makes no
-// call per token.
+// Every token next() returns, and the ones next_batch() leaves to the general path.
 inline Token Lexer::next_token() {
   skip_whitespace_and_comments();
   size_t begin = pos_;
@@ -231,16 +301,99 @@ inline Token Lexer::next_token() {
   return lex_punct(begin);
 }
 
-void Lexer::next_batch(std::vector<Token>& out, size_t max) {
+size_t Lexer::next_batch(Token* out, size_t max) {
   // Counts, not the stored list: they grow even past an error limit.
   auto reported = [&] { return diags_.error_count() + diags_.warning_count(); };
   const size_t before = reported();
-  for (size_t n = 0; n < max; ++n) {
-    const Token& t = out.emplace_back(next_token());
-    if ((t.kind == TokenKind::hash && t.at_line_start()) || t.kind == TokenKind::eof ||
-        reported() != before)
-      return;
+  // The common tokens are lexed here with the position and flags in registers (a member
+  // would be reloaded after every byte stored into a Token). The text is a std::string's,
+  // so a '\0' follows it: the loops stop there without bounds checks. Anything else
+  // (comments, continuations, strings, unknown characters, eof) goes through
+  // next_token() from the token's first character, which is always exact.
+  const char* const text = text_.data();
+  const char* p = text + pos_;
+  uint8_t flags = pending_flags_;
+  size_t n = 0;
+  while (n < max) {
+    for (;;) {
+      while (uint8_t blank = kBlankFlags[static_cast<unsigned char>(*p)]) {
+        flags |= blank;
+        ++p;
+      }
+      if (*p != '\\' && (*p != '/' || (p[1] != '/' && p[1] != '*'))) break;
+      pos_ = static_cast<size_t>(p - text);
+      pending_flags_ = flags;
+      bool skipped = skip_comment_or_splice();
+      p = text + pos_;
+      flags = pending_flags_;
+      if (!skipped) break;
+    }
+    const char* begin = p;
+    TokenKind kind = TokenKind::unknown;
+    switch (kStart[static_cast<unsigned char>(*p)]) {
+      case Start::identifier:
+        do ++p;
+        while (is_ident_char(*p));
+        if (*p != '\\') kind = TokenKind::identifier;
+        break;
+      case Start::period:
+        if (!is_digit(p[1])) {
+          kind = punctuator(p);
+          break;
+        }
+        [[fallthrough]];
+      case Start::digit: {
+        // lex_number's pp-number rule.
+        const bool hex = p[0] == '0' && (p[1] == 'x' || p[1] == 'X');
+        bool floating = false;
+        for (;; ++p) {
+          char c = *p;
+          if (c == '.') {
+            floating = true;
+          } else if ((c == '+' || c == '-') && !hex) {
+            if (p[-1] != 'e' && p[-1] != 'E') break;
+            floating = true;
+          } else if (!is_ident_char(c)) {
+            break;
+          } else if (!hex && (c == 'e' || c == 'E' || c == 'f' || c == 'F' || c == 'h' ||
+                              c == 'H')) {
+            floating = true;
+          }
+        }
+        if (*p != '\\') kind = floating ? TokenKind::floating : TokenKind::integer;
+        break;
+      }
+      case Start::punct:
+        kind = punctuator(p);
+        break;
+      case Start::other:
+        break;
+    }
+    if (kind == TokenKind::unknown) [[unlikely]] {
+      pos_ = static_cast<size_t>(begin - text);
+      pending_flags_ = flags;
+      const Token& t = out[n++] = next_token();
+      p = text + pos_;
+      flags = pending_flags_;
+      if ((t.kind == TokenKind::hash && t.at_line_start()) || t.kind == TokenKind::eof ||
+          reported() != before)
+        break;
+      continue;
+    }
+    Token& t = out[n++];
+    t.kind = kind;
+    t.flags = flags;
+    t.loc = SourceLocation{base_ + static_cast<uint32_t>(begin - text)};
+    t.text = std::string_view(begin, static_cast<size_t>(p - begin));
+    if (kind == TokenKind::hash && (flags & kAtLineStart)) {
+      flags = 0;
+      break;
+    }
+    flags = 0;
   }
+  pos_ = static_cast<size_t>(p - text);
+  pending_flags_ = flags;
+  return n;
 }
 
 // A pp-number: digits, letters, '.', and signs after an exponent letter. It is classified
@@ -285,62 +438,15 @@ Token Lexer::lex_quoted(size_t begin, char quote) {
 }
 
 Token Lexer::lex_punct(size_t begin) {
-  char c = text_[pos_++];
-  auto take = [&](char next) {
-    if (peek() == next) return ++pos_, true;
-    return false;
-  };
-  TokenKind k = TokenKind::unknown;
-  switch (c) {
-    case '(': k = TokenKind::l_paren; break;
-    case ')': k = TokenKind::r_paren; break;
-    case '[': k = TokenKind::l_square; break;
-    case ']': k = TokenKind::r_square; break;
-    case '{': k = TokenKind::l_brace; break;
-    case '}': k = TokenKind::r_brace; break;
-    case ';': k = TokenKind::semi; break;
-    case ',': k = TokenKind::comma; break;
-    case '.': k = TokenKind::period; break;
-    case '?': k = TokenKind::question; break;
-    case '~': k = TokenKind::tilde; break;
-    case ':': k = take(':') ? TokenKind::coloncolon : TokenKind::colon; break;
-    case '!': k = take('=') ? TokenKind::exclaimequal : TokenKind::exclaim; break;
-    case '=': k = take('=') ? TokenKind::equalequal : TokenKind::equal; break;
-    case '*': k = take('=') ? TokenKind::starequal : TokenKind::star; break;
-    case '/': k = take('=') ? TokenKind::slashequal : TokenKind::slash; break;
-    case '%': k = take('=') ? TokenKind::percentequal : TokenKind::percent; break;
-    case '^': k = take('=') ? TokenKind::caretequal : TokenKind::caret; break;
-    case '#': k = take('#') ? TokenKind::hashhash : TokenKind::hash; break;
-    case '+':
-      k = take('+') ? TokenKind::plusplus : take('=') ? TokenKind::plusequal : TokenKind::plus;
-      break;
-    case '-':
-      k = take('-')   ? TokenKind::minusminus
-          : take('=') ? TokenKind::minusequal
-          : take('>') ? TokenKind::arrow
-                      : TokenKind::minus;
-      break;
-    case '&':
-      k = take('&') ? TokenKind::ampamp : take('=') ? TokenKind::ampequal : TokenKind::amp;
-      break;
-    case '|':
-      k = take('|') ? TokenKind::pipepipe : take('=') ? TokenKind::pipeequal : TokenKind::pipe;
-      break;
-    case '<':
-      if (take('<')) k = take('=') ? TokenKind::lesslessequal : TokenKind::lessless;
-      else k = take('=') ? TokenKind::lessequal : TokenKind::less;
-      break;
-    case '>':
-      if (take('>')) k = take('=') ? TokenKind::greatergreaterequal : TokenKind::greatergreater;
-      else k = take('=') ? TokenKind::greaterequal : TokenKind::greater;
-      break;
-    default: {
-      // Swallow a whole UTF-8 sequence so one stray character gives one diagnostic.
-      while (pos_ < text_.size() && (static_cast<unsigned char>(text_[pos_]) & 0xC0) == 0x80) ++pos_;
-      Token t = make(TokenKind::unknown, begin);
-      diags_.error("unknown-character", t.range(), "unexpected character in source");
-      return t;
-    }
+  const char* p = text_.data() + pos_;
+  TokenKind k = punctuator(p);
+  pos_ = static_cast<size_t>(p - text_.data());
+  if (k == TokenKind::unknown) {
+    // Swallow a whole UTF-8 sequence so one stray character gives one diagnostic.
+    while (pos_ < text_.size() && (static_cast<unsigned char>(text_[pos_]) & 0xC0) == 0x80) ++pos_;
+    Token t = make(TokenKind::unknown, begin);
+    diags_.error("unknown-character", t.range(), "unexpected character in source");
+    return t;
   }
   return make(k, begin);
 }

@@ -4,6 +4,7 @@
 #include "fx/preprocessor.h"
 
 #include <algorithm>
+#include <array>
 #include <string>
 #include <unordered_set>
 
@@ -13,6 +14,11 @@
 namespace fx {
 
 using pp::Macro;
+
+namespace {
+// Tokens lexed per batch: enough to amortise the call, small enough to stay in cache.
+constexpr size_t kLexBatch = 256;
+}  // namespace
 
 class Preprocessor::Impl final : public pp::FileTokenSource {
  public:
@@ -49,8 +55,8 @@ class Preprocessor::Impl final : public pp::FileTokenSource {
     size_t conditional_base;  // conditionals_ entries opened before this file
     // Tokens lexed ahead (Lexer::next_batch), up to the next directive: one call per
     // batch instead of per token. Only the last one may have left lexer diagnostics.
-    std::vector<Token> ahead;
-    size_t ahead_next = 0;
+    std::array<Token, kLexBatch> ahead;
+    size_t ahead_size = 0, ahead_next = 0;
   };
   struct Conditional {
     SourceLocation loc;
@@ -96,9 +102,6 @@ class Preprocessor::Impl final : public pp::FileTokenSource {
 };
 
 namespace {
-// Tokens lexed per batch: enough to amortise the call, small enough to stay in cache.
-constexpr size_t kLexBatch = 256;
-
 Token number_token(std::string_view text, SourceLocation loc) {
   Token t;
   t.kind = TokenKind::integer;
@@ -140,7 +143,7 @@ Token Preprocessor::Impl::next_file_token() {
   // limits. Everything else takes next_file_token_slow().
   if (!frames_.empty()) {
     Frame& f = *frames_.back();
-    if (f.ahead_next + 1 < f.ahead.size() && !budget_.exhausted() &&
+    if (f.ahead_next + 1 < f.ahead_size && !budget_.exhausted() &&
         !diags_.error_limit_reached())
       return f.ahead[f.ahead_next++];
   }
@@ -151,13 +154,12 @@ Token Preprocessor::Impl::next_file_token_slow() {
   for (;;) {
     if (frames_.empty() || budget_.exhausted() || diags_.error_limit_reached()) return Token{};
     Frame& f = *frames_.back();
-    if (f.ahead_next == f.ahead.size()) {
-      f.ahead.clear();
+    if (f.ahead_next == f.ahead_size) {
+      f.ahead_size = f.lexer.next_batch(f.ahead.data(), kLexBatch);
       f.ahead_next = 0;
-      f.lexer.next_batch(f.ahead, kLexBatch);
     }
     Token t = f.ahead[f.ahead_next++];
-    if (f.ahead_next == f.ahead.size()) forward(f, true);
+    if (f.ahead_next == f.ahead_size) forward(f, true);
     if (t.kind == TokenKind::hash && t.at_line_start()) {
       if (std::optional<Token> kept = directive(f, t)) return *kept;
       continue;
@@ -177,9 +179,9 @@ size_t Preprocessor::Impl::copy_plain_tokens(std::vector<Token>& out, uint64_t l
   // no eof, no diagnostics among them, so nothing can happen between two of them.
   if (frames_.empty() || budget_.exhausted() || diags_.error_limit_reached()) return 0;
   Frame& f = *frames_.back();
-  if (f.ahead_next + 1 >= f.ahead.size()) return 0;
+  if (f.ahead_next + 1 >= f.ahead_size) return 0;
   const Token* first = f.ahead.data() + f.ahead_next;
-  const Token* end = f.ahead.data() + f.ahead.size() - 1;
+  const Token* end = f.ahead.data() + f.ahead_size - 1;
   if (static_cast<uint64_t>(end - first) > limit) end = first + limit;
   const Token* t = first;
   while (t != end && !(t->kind == TokenKind::identifier && !(t->flags & kNoExpand) &&

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -190,6 +192,58 @@ TEST(Lexer, RestOfLineReturnsRawTextAndEndsTheLine) {
   EXPECT_TRUE(t.is_identifier("next"));
   EXPECT_TRUE(t.at_line_start());
   EXPECT_TRUE(diags.diagnostics().empty());
+}
+
+// next_batch lexes common tokens on a path of its own; it must give exactly what next()
+// gives, flags, locations and diagnostics included, whatever the batch size.
+TEST(Lexer, BatchesYieldTheTokensOfNext) {
+  std::vector<std::string> texts = {
+      "float4 x = {0.577, -0.577, .5e+3f, 0x1Fu, 1.h}; a->b; c::d; e <<= f >>= g != h ## i",
+      "a/*c*/b // line\nc/* multi\nline */d\n  #  define X 1\n#x\n x # y",
+      "ab\\\ncd x\\\r\ny 1\\\n2 .\\\n5 +\\\n= a\\b \\ z // c \\\n c\nz",
+      "\"str\\\"ing\" 'c' \"abc\nnext 'x \xC3\xA9 $ @ `",
+      std::string("a\0b 1\0 +\0", 9),
+      "a /* never closed\nb",
+      "x/", "7", ".", "#", "\\", "",
+  };
+  for (const char* file : {"brdf.fx", "sdk_sample.fx", "state_snippets.fx", "wood.fx"}) {
+    std::ifstream in(std::string(FXKIT_SOURCE_DIR) + "/tests/parser/data/" + file, std::ios::binary);
+    std::stringstream contents;
+    contents << in.rdbuf();
+    texts.push_back(contents.str());
+  }
+  for (const std::string& text : texts) {
+    SourceManager sm;
+    DiagnosticSink one_diags;
+    BufferId id = sm.add_buffer("t.fx", text);
+    Lexer one(sm, id, one_diags);
+    std::vector<Token> expected;
+    do expected.push_back(one.next());
+    while (!expected.back().is(K::eof));
+    for (size_t max : {1, 3, 256}) {
+      DiagnosticSink diags;
+      Lexer batched(sm, id, diags);
+      std::vector<Token> got;
+      Token batch[256];
+      while (got.empty() || !got.back().is(K::eof)) {
+        size_t n = batched.next_batch(batch, max);
+        ASSERT_GE(n, 1u);
+        got.insert(got.end(), batch, batch + n);
+      }
+      ASSERT_EQ(got.size(), expected.size()) << text;
+      for (size_t i = 0; i < got.size(); ++i) {
+        EXPECT_EQ(got[i].kind, expected[i].kind) << text << " token " << i;
+        EXPECT_EQ(got[i].flags, expected[i].flags) << text << " token " << i;
+        EXPECT_EQ(got[i].loc, expected[i].loc) << text << " token " << i;
+        EXPECT_EQ(got[i].text, expected[i].text) << text << " token " << i;
+      }
+      ASSERT_EQ(diags.diagnostics().size(), one_diags.diagnostics().size()) << text;
+      for (size_t i = 0; i < diags.diagnostics().size(); ++i) {
+        EXPECT_EQ(diags.diagnostics()[i].id, one_diags.diagnostics()[i].id);
+        EXPECT_EQ(diags.diagnostics()[i].range.begin, one_diags.diagnostics()[i].range.begin);
+      }
+    }
+  }
 }
 
 }  // namespace
