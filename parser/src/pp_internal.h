@@ -59,10 +59,11 @@ class MacroTable {
   void clear();
 
  private:
+  // The first character picks the bit (its low six bits tell letters and '_' apart), the
+  // length and last character the word: two loads beside the length, no multiply.
   static size_t filter_slot(std::string_view n) {
-    return (n.size() * 131 + static_cast<unsigned char>(n[0]) * 31 +
-            static_cast<unsigned char>(n.back()) * 7 + static_cast<unsigned char>(n[n.size() / 2])) %
-           (kFilterWords * 64);
+    return (n.size() * 8 + static_cast<unsigned char>(n.back())) % kFilterWords * 64 +
+           static_cast<unsigned char>(n[0]) % 64;
   }
   static constexpr size_t kFilterWords = 64;
   uint64_t filter_[kFilterWords] = {};
