@@ -77,8 +77,7 @@ bool simple_float_value(std::string_view s, double& out) {
 
 }  // namespace
 
-bool Parser::enter_nesting() {
-  if (++nesting_ <= options_.max_nesting) return true;
+bool Parser::nesting_too_deep() {
   --nesting_;
   error_here("nesting-too-deep", "expression nested too deeply (more than " +
                                      std::to_string(options_.max_nesting) + " levels)");
@@ -188,7 +187,7 @@ ast::ExprPtr Parser::parse_unary() {
   return failed_ ? nullptr : std::move(result);
 }
 
-ast::ExprPtr Parser::parse_postfix(ast::ExprPtr e, uint32_t first) {
+ast::ExprPtr Parser::parse_postfix_operators(ast::ExprPtr e, uint32_t first) {
   for (;;) {
     if (at(TokenKind::l_square)) {
       advance();

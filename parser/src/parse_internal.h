@@ -41,15 +41,30 @@ class Parser {
     ++pos_;
     return t;
   }
-  bool accept(TokenKind k);
+  // The cursor helpers below are inline: each runs once or more per token or node.
+  bool accept(TokenKind k) {
+    if (!at(k)) return false;
+    advance();
+    return true;
+  }
   // Consumes `k` or reports `expected-token`: "expected 'k' <context>".
   bool expect(TokenKind k, std::string_view context);
   // A missing ';' before a token on a new line is reported without derailing the parse.
-  bool expect_semi(std::string_view context);
+  bool expect_semi(std::string_view context) {
+    return accept(TokenKind::semi) || missing_semi(context);
+  }
+  bool missing_semi(std::string_view context);
   // Splits `>>`, `>=`, `>>=` so that the current token is a single `>`.
   void split_greater();
-  SourceLocation end_of_previous() const;
-  SourceRange range_from(uint32_t first) const;
+  SourceLocation end_of_previous() const {
+    if (pos_ == 0) return tok().loc;
+    return tokens_[pos_ - 1].range().end;
+  }
+  SourceRange range_from(uint32_t first) const {
+    SourceRange r{tokens_[first].loc, tokens_[first].range().end};
+    if (pos_ > first) r.end = end_of_previous();
+    return r;
+  }
   ast::TokenSpan span_from(uint32_t first) const { return {first, pos_}; }
 
   // --- errors and recovery (parser.cpp) ---
@@ -103,7 +118,11 @@ class Parser {
   ast::ExprPtr parse_assignment();  // one initializer / argument (no comma operator)
   ast::ExprPtr parse_binary(int min_precedence);
   ast::ExprPtr parse_unary();
-  ast::ExprPtr parse_postfix(ast::ExprPtr e, uint32_t first);
+  // `[index]` and `.member` after an operand; most operands have neither.
+  ast::ExprPtr parse_postfix(ast::ExprPtr e, uint32_t first) {
+    return at(TokenKind::l_square) || at(TokenKind::period) ? parse_postfix_operators(e, first) : e;
+  }
+  ast::ExprPtr parse_postfix_operators(ast::ExprPtr e, uint32_t first);
   ast::ExprPtr parse_primary();
   ast::ExprPtr parse_identifier_expr();
   ast::ExprPtr parse_compile();
@@ -111,7 +130,11 @@ class Parser {
   ast::ExprPtr parse_init_list();
   bool parse_call_args(std::span<const ast::ExprPtr>& args);
   ast::ExprPtr make(ast::ExprKind kind, uint32_t first);
-  bool enter_nesting();
+  bool enter_nesting() {
+    if (++nesting_ <= options_.max_nesting) return true;
+    return nesting_too_deep();
+  }
+  bool nesting_too_deep();
   void leave_nesting() { --nesting_; }
 
   std::vector<Token> tokens_;

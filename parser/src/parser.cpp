@@ -58,12 +58,6 @@ Parser::Parser(std::vector<Token> tokens, const SourceManager& sm, DiagnosticSin
   if (options_.max_nesting == 0) options_.max_nesting = 1;
 }
 
-bool Parser::accept(TokenKind k) {
-  if (!at(k)) return false;
-  advance();
-  return true;
-}
-
 bool Parser::expect(TokenKind k, std::string_view context) {
   if (accept(k)) return true;
   std::string message = "expected '";
@@ -75,8 +69,7 @@ bool Parser::expect(TokenKind k, std::string_view context) {
   return false;
 }
 
-bool Parser::expect_semi(std::string_view context) {
-  if (accept(TokenKind::semi)) return true;
+bool Parser::missing_semi(std::string_view context) {
   if (pos_ > 0 && (tok().at_line_start() || at_eof())) {
     // The statement is complete and the next one starts on its own line: a forgotten ';'.
     // Say so once and keep parsing from here rather than skipping the next statement.
@@ -108,17 +101,6 @@ void Parser::split_greater() {
   // Only nested template arguments get here, so the O(n) insert stays rare. No span
   // handed out so far ends after pos_, so every stored index remains valid.
   tokens_.insert(tokens_.begin() + pos_ + 1, rest);
-}
-
-SourceLocation Parser::end_of_previous() const {
-  if (pos_ == 0) return tok().loc;
-  return tokens_[pos_ - 1].range().end;
-}
-
-SourceRange Parser::range_from(uint32_t first) const {
-  SourceRange r{tokens_[first].loc, tokens_[first].range().end};
-  if (pos_ > first) r.end = end_of_previous();
-  return r;
 }
 
 Diagnostic* Parser::error(std::string id, SourceRange range, std::string message) {
