@@ -24,7 +24,7 @@ bool Parser::parse_type(ast::TypeRef& type) {
     return false;
   }
   uint32_t first = pos_;
-  type.name = std::string(advance().text);
+  type.name.assign(advance().text);
   if ((type.name == "unsigned" || type.name == "signed") && at(TokenKind::identifier))
     (type.name += ' ') += advance().text;
   if (at(TokenKind::less) && !parse_template_args(type.template_arg)) return false;
@@ -110,7 +110,7 @@ bool Parser::parse_semantics(ast::Variable& v) {
       }
       advance();
     } else {
-      v.semantic = std::string(word);
+      v.semantic.assign(word);
       advance();
     }
   }
@@ -123,7 +123,7 @@ bool Parser::parse_declarator_head(ast::Variable& v) {
                "expected a name for the declaration, found " + describe(tok()));
     return false;
   }
-  v.name = std::string(tok().text);
+  v.name.assign(tok().text);
   v.name_range = tok().range();
   advance();
   if (!parse_array_dims(v.array_dims) || !parse_semantics(v)) return false;
@@ -147,7 +147,7 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
     f->storage = storage;
     f->return_type = std::move(type);
     f->attributes = std::move(attributes);
-    f->name = std::string(tok().text);
+    f->name.assign(tok().text);
     f->name_range = tok().range();
     advance();
     if (!parse_function(*f)) return;
@@ -235,7 +235,7 @@ bool Parser::parse_function(ast::Function& f) {
       error_here("expected-semantic", "expected a semantic after ':', found " + describe(tok()));
       return false;
     }
-    f.semantic = std::string(advance().text);
+    f.semantic.assign(advance().text);
   }
   if (at(TokenKind::l_brace)) return skip_braced(f.body, "function body");
   return expect_semi("after function declaration");
@@ -249,7 +249,7 @@ bool Parser::parse_parameter(ast::Variable& p) {
     error_here("expected-identifier", "expected a parameter name, found " + describe(tok()));
     return false;
   }
-  p.name = std::string(tok().text);
+  p.name.assign(tok().text);
   p.name_range = tok().range();
   advance();
   if (!parse_array_dims(p.array_dims) || !parse_semantics(p)) return false;
@@ -315,7 +315,7 @@ void Parser::parse_struct(std::vector<ast::Decl>& out) {
     error_here("expected-identifier", "expected a struct name, found " + describe(tok()));
     return;
   }
-  s->name = std::string(tok().text);
+  s->name.assign(tok().text);
   s->name_range = tok().range();
   advance();
   if (!parse_member_list(s->members, "struct")) return;
@@ -342,7 +342,7 @@ void Parser::parse_typedef(std::vector<ast::Decl>& out) {
       error_here("expected-identifier", "expected a typedef name, found " + describe(tok()));
       return;
     }
-    t->name = std::string(advance().text);
+    t->name.assign(advance().text);
     if (!parse_array_dims(t->array_dims)) return;
     ast::Decl d;
     d.kind = ast::DeclKind::type_alias;
@@ -361,7 +361,7 @@ void Parser::parse_constant_buffer(std::vector<ast::Decl>& out) {
   uint32_t first = pos_;
   auto cb = std::make_unique<ast::ConstantBuffer>();
   cb->texture_buffer = advance().text == "tbuffer";
-  cb->name = std::string(tok().text);
+  cb->name.assign(tok().text);
   cb->name_range = tok().range();
   advance();
   ast::Variable binding;

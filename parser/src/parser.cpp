@@ -218,7 +218,7 @@ void Parser::parse_top_level(std::vector<ast::Decl>& out) {
       ast::Decl d;
       d.kind = ast::DeclKind::directive;
       d.directive = std::make_unique<ast::Directive>();
-      d.directive->text = std::string(t.text);
+      d.directive->text.assign(t.text);
       d.directive->range = t.range();
       advance();
       d.directive->tokens = span_from(first);
@@ -291,7 +291,7 @@ void Parser::parse_glsl_block(std::vector<ast::Decl>& out) {
   advance();  // GLSLShader
   auto block = std::make_unique<ast::GlslBlock>();
   if (at(TokenKind::identifier)) {
-    block->name = std::string(tok().text);
+    block->name.assign(tok().text);
     block->name_range = tok().range();
     advance();
   }
