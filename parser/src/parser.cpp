@@ -1,4 +1,6 @@
 // Parser core: the token cursor, error reporting and recovery, and file-scope dispatch.
+#include <array>
+#include <bit>
 #include <utility>
 
 #include "fx/lexer.h"
@@ -322,19 +324,21 @@ bool is_storage_keyword(std::string_view word, uint32_t& bit) {
       {"line", ast::kLine},             {"triangle", ast::kTriangle},
       {"lineadj", ast::kLineAdj},       {"triangleadj", ast::kTriangleAdj},
   };
-  // Most words are not modifiers: reject by first letter before comparing spellings.
-  constexpr uint32_t kFirstLetters = [] {
-    uint32_t mask = 0;
-    for (char c : std::string_view("sucevrgionlpt")) mask |= 1u << (c - 'a');
-    return mask;
+  // Most words are not modifiers: the first letter picks the few rows to compare (a bit
+  // per row of kWords), and most letters pick none.
+  static constexpr std::array<uint32_t, 26> kRowsByLetter = [] {
+    std::array<uint32_t, 26> rows{};
+    for (size_t i = 0; i < std::size(kWords); ++i) rows[kWords[i].word[0] - 'a'] |= 1u << i;
+    return rows;
   }();
-  if (word.empty() || word[0] < 'a' || word[0] > 'z' || !(kFirstLetters >> (word[0] - 'a') & 1))
-    return false;
-  for (const auto& w : kWords)
-    if (w.word[0] == word[0] && w.word == word) {
+  if (word.empty() || word[0] < 'a' || word[0] > 'z') return false;
+  for (uint32_t rows = kRowsByLetter[word[0] - 'a']; rows != 0; rows &= rows - 1) {
+    const auto& w = kWords[std::countr_zero(rows)];
+    if (w.word == word) {
       bit = w.bit;
       return true;
     }
+  }
   return false;
 }
 
