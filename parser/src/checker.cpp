@@ -16,8 +16,13 @@ int numeric_components(std::string_view type) {
   static constexpr std::string_view kScalars[] = {
       "bool", "int", "uint", "dword", "half", "float", "double", "min16float", "min10float",
       "min16int", "min12int", "min16uint"};
+  if (type.empty()) return 0;
+  const char first = ascii_lower(type[0]);
   for (std::string_view scalar : kScalars) {
-    if (type.size() < scalar.size() || !iequals(type.substr(0, scalar.size()), scalar)) continue;
+    // The first letter rules out most rows before a case-folding compare.
+    if (scalar[0] != first || type.size() < scalar.size() ||
+        !iequals(type.substr(0, scalar.size()), scalar))
+      continue;
     std::string_view rest = type.substr(scalar.size());
     if (rest.empty()) return 1;
     if (rest.size() == 1 && rest[0] >= '1' && rest[0] <= '4') return rest[0] - '0';

@@ -460,8 +460,11 @@ void Checker::check_compile(const StateInfo& info, std::string_view profile,
                             SourceRange profile_range, std::string_view function,
                             SourceRange range) {
   const std::vector<std::string>& profiles = shader_profiles();
-  if (std::none_of(profiles.begin(), profiles.end(),
-                   [&](const std::string& p) { return iequals(p, profile); })) {
+  // The profiles are lower case: the first letter rules out most before a case-folding compare.
+  const char first = profile.empty() ? '\0' : ascii_lower(profile[0]);
+  if (std::none_of(profiles.begin(), profiles.end(), [&](const std::string& p) {
+        return p[0] == first && iequals(p, profile);
+      })) {
     std::vector<std::string_view> names(profiles.begin(), profiles.end());
     std::string guess = closest_match(profile, names);
     std::string message = "unknown shader profile " + quote(profile);
