@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "fx/diagnostic.h"
+#include "fx/name_filter.h"
 #include "fx/source_manager.h"
 #include "fx/token.h"
 
@@ -18,11 +19,11 @@ class Lexer {
   // The next token; TokenKind::eof at the end (repeatedly).
   Token next();
   // Writes up to `max` tokens to `out` and returns how many, stopping after a `#` that
-  // starts a line (a directive reads the raw line after it), after eof, or after the first
-  // token that reported a diagnostic (so the caller can forward it with that token).
-  // Lexing does not depend on macros, so reading ahead like this yields exactly the
-  // tokens next() would.
-  size_t next_batch(Token* out, size_t max);
+  // starts a line (a directive reads the raw line after it), after eof, after the first
+  // token that reported a diagnostic (so the caller can forward it with that token), and
+  // after an identifier `stop_after` may contain (a possible macro name). Lexing does not
+  // depend on macros, so reading ahead like this yields exactly the tokens next() would.
+  size_t next_batch(Token* out, size_t max, const NameFilter* stop_after = nullptr);
   // After `#include`: reads a `<path>` header name if one follows on this line.
   std::optional<Token> header_name();
   // Skips the rest of the current line (an unknown or skipped directive) and returns it.

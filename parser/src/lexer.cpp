@@ -329,7 +329,7 @@ inline Token Lexer::next_token() {
   return lex_punct(begin);
 }
 
-size_t Lexer::next_batch(Token* out, size_t max) {
+size_t Lexer::next_batch(Token* out, size_t max, const NameFilter* stop_after) {
   // Counts, not the stored list: they grow even past an error limit.
   auto reported = [&] { return diags_.error_count() + diags_.warning_count(); };
   const size_t before = reported();
@@ -338,6 +338,8 @@ size_t Lexer::next_batch(Token* out, size_t max) {
   // so a '\0' follows it: the loops stop there without bounds checks. Anything else
   // (comments, continuations, strings, unknown characters, eof) goes through
   // next_token() from the token's first character, which is always exact.
+  static const NameFilter kNoStops;
+  const NameFilter& stops = stop_after ? *stop_after : kNoStops;
   const char* const text = text_.data();
   const char* const end = text + text_.size();
   const char* p = text + pos_;
@@ -359,10 +361,14 @@ size_t Lexer::next_batch(Token* out, size_t max) {
     }
     const char* begin = p;
     TokenKind kind = TokenKind::unknown;
+    bool last = false;  // the batch ends after this token
     switch (kStart[static_cast<unsigned char>(*p)]) {
       case Start::identifier:
         p = identifier_end(p + 1, end);
-        if (*p != '\\') kind = TokenKind::identifier;
+        if (*p != '\\') {
+          kind = TokenKind::identifier;
+          last = stops.may_contain(std::string_view(begin, static_cast<size_t>(p - begin)));
+        }
         break;
       case Start::period:
         if (!is_digit(p[1])) {
@@ -393,6 +399,7 @@ size_t Lexer::next_batch(Token* out, size_t max) {
       }
       case Start::punct:
         kind = punctuator(p);
+        last = kind == TokenKind::hash && (flags & kAtLineStart);
         break;
       case Start::other:
         break;
@@ -404,7 +411,8 @@ size_t Lexer::next_batch(Token* out, size_t max) {
       p = text + pos_;
       flags = pending_flags_;
       if ((t.kind == TokenKind::hash && t.at_line_start()) || t.kind == TokenKind::eof ||
-          reported() != before)
+          reported() != before ||
+          (t.kind == TokenKind::identifier && stops.may_contain(t.text)))
         break;
       continue;
     }
@@ -413,11 +421,8 @@ size_t Lexer::next_batch(Token* out, size_t max) {
     t.flags = flags;
     t.loc = SourceLocation{base_ + static_cast<uint32_t>(begin - text)};
     t.text = std::string_view(begin, static_cast<size_t>(p - begin));
-    if (kind == TokenKind::hash && (flags & kAtLineStart)) {
-      flags = 0;
-      break;
-    }
     flags = 0;
+    if (last) break;
   }
   pos_ = static_cast<size_t>(p - text);
   pending_flags_ = flags;

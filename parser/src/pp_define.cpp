@@ -1,6 +1,4 @@
 // #define parsing, the macro table and the run's work budget.
-#include <algorithm>
-#include <iterator>
 #include <string>
 
 #include "pp_internal.h"
@@ -131,8 +129,7 @@ std::unique_ptr<Macro> parse_macro_definition(std::span<const Token> line,
 }
 
 Macro* MacroTable::define(std::unique_ptr<Macro> m) {
-  size_t slot = filter_slot(m->name);
-  filter_[slot / 64] |= uint64_t{1} << (slot % 64);
+  names_.add(m->name);
   Macro* previous = find(m->name);
   map_[m->name] = m.get();
   storage_.push_back(std::move(m));
@@ -140,7 +137,7 @@ Macro* MacroTable::define(std::unique_ptr<Macro> m) {
 }
 
 void MacroTable::clear() {
-  std::fill(std::begin(filter_), std::end(filter_), 0);
+  names_.clear();
   map_.clear();
   storage_.clear();
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fx/diagnostic.h"
+#include "fx/name_filter.h"
 #include "fx/preprocessor.h"
 #include "fx/source_manager.h"
 #include "fx/token.h"
@@ -46,27 +47,20 @@ std::unique_ptr<Macro> parse_macro_definition(std::span<const Token> line,
 class MacroTable {
  public:
   Macro* find(std::string_view name) const {
-    // Most identifiers are not macros: a one-bit-per-bucket filter answers "no" before
-    // hashing the whole name.
-    if (name.empty() || !(filter_[filter_slot(name) / 64] >> (filter_slot(name) % 64) & 1))
-      return nullptr;
+    // Most identifiers are not macros: the filter answers "no" before hashing the name.
+    if (!names_.may_contain(name)) return nullptr;
     auto it = map_.find(name);
     return it == map_.end() ? nullptr : it->second;
   }
+  // Every name defined since clear() (undefined ones too) may be in it.
+  const NameFilter& names() const { return names_; }
   // Installs `m` and returns the definition it replaces (or nullptr).
   Macro* define(std::unique_ptr<Macro> m);
   bool undefine(std::string_view name) { return map_.erase(name) != 0; }
   void clear();
 
  private:
-  // The first character picks the bit (its low six bits tell letters and '_' apart), the
-  // length and last character the word: two loads beside the length, no multiply.
-  static size_t filter_slot(std::string_view n) {
-    return (n.size() * 8 + static_cast<unsigned char>(n.back())) % kFilterWords * 64 +
-           static_cast<unsigned char>(n[0]) % 64;
-  }
-  static constexpr size_t kFilterWords = 64;
-  uint64_t filter_[kFilterWords] = {};
+  NameFilter names_;
   std::unordered_map<std::string_view, Macro*> map_;
   std::vector<std::unique_ptr<Macro>> storage_;
 };

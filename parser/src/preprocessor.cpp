@@ -35,7 +35,7 @@ class Preprocessor::Impl final : public pp::FileTokenSource {
   Token next_file_token() override;
   [[gnu::noinline]] Token next_file_token_slow();
   // Appends up to `limit` tokens from the middle of the current batch to `out` in one
-  // copy, stopping before a macro name; returns how many. Only while no macro expands.
+  // copy; returns how many. Only while no macro expands.
   size_t copy_plain_tokens(std::vector<Token>& out, uint64_t limit);
 
   std::vector<std::string> files_;
@@ -155,7 +155,7 @@ Token Preprocessor::Impl::next_file_token_slow() {
     if (frames_.empty() || budget_.exhausted() || diags_.error_limit_reached()) return Token{};
     Frame& f = *frames_.back();
     if (f.ahead_next == f.ahead_size) {
-      f.ahead_size = f.lexer.next_batch(f.ahead.data(), kLexBatch);
+      f.ahead_size = f.lexer.next_batch(f.ahead.data(), kLexBatch, &macros_.names());
       f.ahead_next = 0;
     }
     Token t = f.ahead[f.ahead_next++];
@@ -176,17 +176,15 @@ Token Preprocessor::Impl::next_file_token_slow() {
 
 size_t Preprocessor::Impl::copy_plain_tokens(std::vector<Token>& out, uint64_t limit) {
   // The tokens next_file_token() would return one by one on its hot path: no directive,
-  // no eof, no diagnostics among them, so nothing can happen between two of them.
+  // no eof, no diagnostics among them, so nothing can happen between two of them. Nor a
+  // macro name: a batch ends after an identifier the macro table's filter may contain, and
+  // only a directive (which ends a batch too) defines macros.
   if (frames_.empty() || budget_.exhausted() || diags_.error_limit_reached()) return 0;
   Frame& f = *frames_.back();
   if (f.ahead_next + 1 >= f.ahead_size) return 0;
   const Token* first = f.ahead.data() + f.ahead_next;
-  const Token* end = f.ahead.data() + f.ahead_size - 1;
-  if (static_cast<uint64_t>(end - first) > limit) end = first + limit;
-  const Token* t = first;
-  while (t != end && !(t->kind == TokenKind::identifier && !(t->flags & kNoExpand) &&
-                       macros_.find(t->text)))
-    ++t;
+  const Token* t = f.ahead.data() + f.ahead_size - 1;
+  if (static_cast<uint64_t>(t - first) > limit) t = first + limit;
   size_t n = static_cast<size_t>(t - first);
   // Included files make the output outgrow any first estimate. Growing 4x instead of 2x
   // writes the tokens into fresh memory 1.33 times instead of 2 on average; page faults

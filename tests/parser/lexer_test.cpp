@@ -195,7 +195,8 @@ TEST(Lexer, RestOfLineReturnsRawTextAndEndsTheLine) {
 }
 
 // next_batch lexes common tokens on a path of its own; it must give exactly what next()
-// gives, flags, locations and diagnostics included, whatever the batch size.
+// gives, flags, locations and diagnostics included, whatever the batch size, and end a
+// batch after each identifier its stop filter may contain (spliced ones too).
 TEST(Lexer, BatchesYieldTheTokensOfNext) {
   std::vector<std::string> texts = {
       "float4 x = {0.577, -0.577, .5e+3f, 0x1Fu, 1.h}; a->b; c::d; e <<= f >>= g != h ## i",
@@ -220,14 +221,20 @@ TEST(Lexer, BatchesYieldTheTokensOfNext) {
     std::vector<Token> expected;
     do expected.push_back(one.next());
     while (!expected.back().is(K::eof));
-    for (size_t max : {1, 3, 256}) {
+    NameFilter stops;
+    for (std::string_view name : {"b", "abcd", "define", "float4", "VS_OUTPUT"}) stops.add(name);
+    for (auto [max, filter] : {std::pair<size_t, const NameFilter*>{1, nullptr}, {3, nullptr},
+                               {256, nullptr}, {256, &stops}}) {
       DiagnosticSink diags;
       Lexer batched(sm, id, diags);
       std::vector<Token> got;
       Token batch[256];
       while (got.empty() || !got.back().is(K::eof)) {
-        size_t n = batched.next_batch(batch, max);
+        size_t n = batched.next_batch(batch, max, filter);
         ASSERT_GE(n, 1u);
+        for (size_t i = 0; filter && i + 1 < n; ++i)
+          EXPECT_FALSE(batch[i].is(K::identifier) && filter->may_contain(batch[i].text))
+              << batch[i].text;
         got.insert(got.end(), batch, batch + n);
       }
       ASSERT_EQ(got.size(), expected.size()) << text;

@@ -121,6 +121,19 @@ TEST(PreprocessorMacros, SelfReferenceDoesNotRecurse) {
   EXPECT_EQ(p.run("#define id(x) x\n#define loop id(loop)\nloop\n"), "loop");
 }
 
+// Macro names anywhere in a long run of plain tokens expand, a name spliced by a
+// continuation included, whatever the lexer's batches look like.
+TEST(PreprocessorMacros, NamesAmongManyPlainTokensExpand) {
+  Pp p;
+  std::string plain;
+  for (int i = 0; i < 300; ++i) plain += "a" + std::to_string(i) + " ";
+  const std::string& expected = plain;
+  EXPECT_EQ(p.run("#define N 4\n#define SCALE(x) (x)\n" + plain + "N " + plain + "SC\\\nALE(1) " +
+                  plain + "N\n"),
+            expected + "4 " + expected + "( 1 ) " + expected + "4");
+  EXPECT_TRUE(p.ok);
+}
+
 TEST(PreprocessorMacros, FunctionLikeNameWithoutParensIsAnIdentifier) {
   Pp p;
   EXPECT_EQ(p.run("#define f(x) [x]\nf; f\n(1) f ( 2 )\n#define g (y)\ng\n"),
