@@ -3,7 +3,9 @@
 #include "fx/checker.h"
 
 #include <algorithm>
+#include <array>
 
+#include "fx/name_filter.h"
 #include "checker_internal.h"
 
 namespace fx {
@@ -374,12 +376,28 @@ EffectProfile infer_profile(const ast::Effect& effect) {
       return *p;
   EffectProfile needed = EffectProfile::fx_2_0;
   auto need = [&](EffectProfile p) { needed = std::max(needed, p); };
+  // Only D3D10/11 pass states raise the profile. Their names, folded to lower case, are in a
+  // filter: a state it rules out (any D3D9 state, mostly) needs no table lookup here.
+  static const NameFilter kNewerPassStates = [] {
+    NameFilter f;
+    for (const StateInfo& s : all_states())
+      if (s.block == StateBlock::pass && s.api != StateApi::d3d9) f.add(ascii_lower(s.name));
+    return f;
+  }();
+  auto newer_pass_state = [](std::string_view name) -> const StateInfo* {
+    std::array<char, 64> folded;
+    if (name.size() <= folded.size()) {
+      for (size_t i = 0; i < name.size(); ++i) folded[i] = ascii_lower(name[i]);
+      if (!kNewerPassStates.may_contain({folded.data(), name.size()})) return nullptr;
+    }
+    return find_state(name, StateBlock::pass);
+  };
   auto technique = [&](const ast::Technique& t) {
     if (t.version == 11) need(EffectProfile::fx_5_0);
     if (t.version == 10) need(EffectProfile::fx_4_0);
     for (const ast::Pass& p : t.passes)
       for (const ast::StateAssignment& s : p.states)
-        if (const StateInfo* info = find_state(s.name, StateBlock::pass))
+        if (const StateInfo* info = newer_pass_state(s.name))
           need(info->api == StateApi::d3d11   ? EffectProfile::fx_5_0
                : info->api == StateApi::d3d10 ? EffectProfile::fx_4_0
                                               : EffectProfile::fx_2_0);

@@ -334,6 +334,9 @@ TEST(Checker, InfersTheProfileFromWhatTheEffectUses) {
   EXPECT_EQ(infer("RasterizerState r { CullMode = NONE; }; technique t { pass p {} }"),
             EffectProfile::fx_4_0);
   EXPECT_EQ(infer("technique t { pass p { SetComputeShader(NULL); } }"), EffectProfile::fx_5_0);
+  // State names are matched ignoring case, here too.
+  EXPECT_EQ(infer("technique t { pass p { setcomputeshader(NULL); } }"), EffectProfile::fx_5_0);
+  EXPECT_EQ(infer("technique t { pass p { SETGEOMETRYSHADER(NULL); } }"), EffectProfile::fx_4_0);
   EXPECT_EQ(infer("fxgroup g { technique11 t { pass p {} } }"), EffectProfile::fx_5_0);
   EXPECT_EQ(parse_effect_profile("fx.2.0"), EffectProfile::fx_2_0);
   EXPECT_EQ(parse_effect_profile("FX_4_1"), EffectProfile::fx_4_0);
