@@ -21,6 +21,28 @@ uint32_t default_element_stride(const Type& t, uint32_t matrix_stride) {
   return 16;
 }
 
+// Stores a row-stored 4x4 matrix (16 words) at `to` as four column registers (HLSL's
+// default float4x4). The per-object matrices take this path on every draw.
+inline void write_columns4x4(uint8_t* to, const uint32_t* from) {
+#if defined(__SSE2__)
+  __m128 r0 = _mm_loadu_ps(reinterpret_cast<const float*>(from));
+  __m128 r1 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 4));
+  __m128 r2 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 8));
+  __m128 r3 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 12));
+  _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+  float* column = reinterpret_cast<float*>(to);
+  _mm_storeu_ps(column, r0);
+  _mm_storeu_ps(column + 4, r1);
+  _mm_storeu_ps(column + 8, r2);
+  _mm_storeu_ps(column + 12, r3);
+#else
+  uint32_t columns[16];
+  for (uint32_t c = 0; c < 4; ++c)
+    for (uint32_t row = 0; row < 4; ++row) columns[c * 4 + row] = from[row * 4 + c];
+  std::memcpy(to, columns, sizeof columns);
+#endif
+}
+
 }  // namespace
 
 uint32_t ParameterStore::Impl::find_path(std::string_view path) const {
@@ -163,7 +185,11 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
   }
   for (const auto& [top, runs] : per_top) {
     const auto group = static_cast<uint32_t>(b.groups.size());
-    b.groups.push_back({top, static_cast<uint32_t>(b.runs.size()), static_cast<uint32_t>(runs.size()), s.versions[top]});
+    const Impl::Node& n = s.nodes[top];
+    const bool whole4x4 = !n.pooled && n.all_float && n.type.cls == TypeClass::matrix && n.type.rows == 4 &&
+                          n.type.cols == 4 && runs.size() == 1 && runs[0].src == n.offset && runs[0].words == 16 &&
+                          (runs[0].kind == Impl::RunKind::columns4x4 || runs[0].kind == Impl::RunKind::copy);
+    b.groups.push_back({top, static_cast<uint32_t>(b.runs.size()), static_cast<uint32_t>(runs.size()), s.versions[top], whole4x4});
     b.runs.insert(b.runs.end(), runs.begin(), runs.end());
     if (s.nodes[top].pooled) b.pooled.push_back({s.nodes[top].pool_entry, group, 0});
   }
@@ -174,6 +200,8 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
   s.pack(b, 0, static_cast<uint32_t>(b.runs.size()));
   for (Impl::PooledRuns& p : b.pooled) p.packed_version = s.pool->entries_[p.entry].version;
   s.blocks[slot] = std::move(b);
+  for (Impl::HotGroup& h : s.hot)
+    if (h.block == slot) h = {};
   if (!skipped.empty())
     return fail(ParamStatus::not_found, "no parameter (or a struct without member paths) for: " + skipped);
   return {};
@@ -193,40 +221,47 @@ inline void ParameterStore::Impl::pack(Block& b, uint32_t first, uint32_t count)
       case RunKind::gather:
         for (uint32_t k = 0; k < r.words; ++k) std::memcpy(to + r.dst + k * 4, from + k * r.stride, sizeof(uint32_t));
         break;
-      case RunKind::columns4x4: {
-#if defined(__SSE2__)
-        // The per-object matrices (World, WorldViewProjection) take this path on every draw.
-        __m128 r0 = _mm_loadu_ps(reinterpret_cast<const float*>(from));
-        __m128 r1 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 4));
-        __m128 r2 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 8));
-        __m128 r3 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 12));
-        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-        float* column = reinterpret_cast<float*>(to + r.dst);
-        _mm_storeu_ps(column, r0);
-        _mm_storeu_ps(column + 4, r1);
-        _mm_storeu_ps(column + 8, r2);
-        _mm_storeu_ps(column + 12, r3);
-#else
-        uint32_t columns[16];
-        for (uint32_t c = 0; c < 4; ++c)
-          for (uint32_t row = 0; row < 4; ++row) columns[c * 4 + row] = from[row * 4 + c];
-        std::memcpy(to + r.dst, columns, sizeof columns);
-#endif
+      case RunKind::columns4x4:
+        write_columns4x4(to + r.dst, from);
         break;
-      }
     }
   }
 }
 
-bool ParameterStore::Impl::refresh(Block& b) const {
-  bool changed = !b.written;
+void ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
+  const HotGroup& h = hot[top];
+  uint32_t* held = words.data() + h.words;
+  if (!copy_words(held, v, 16)) return;
+  // touch() for a parameter that is never pooled: logged for the blocks other than the hot one.
+  const uint64_t version = ++versions[top];
+  touched[changes % kTouchLog] = top;
+  ++changes;
+  Block& b = blocks[h.block];
+  RunGroup& g = b.groups[h.group];
+  if (g.packed_version != version - 1) return;  // the block missed a change: its refresh re-packs
+  if (h.kind == RunKind::columns4x4) write_columns4x4(b.packed.data() + h.dst, held);
+  else std::memcpy(b.packed.data() + h.dst, held, 16 * sizeof(uint32_t));
+  g.packed_version = version;
+  b.fresh = true;
+  // A block that had taken every earlier change has now taken this one too: its next
+  // refresh has no logged change to look at.
+  if (b.seen_changes == changes - 1) b.seen_changes = changes;
+}
+
+bool ParameterStore::Impl::refresh(Block& b) {
+  bool changed = !b.written || b.fresh;
   b.written = true;
+  b.fresh = false;
   auto repack = [&](RunGroup& g) {
     const uint64_t version = versions[g.top];
-    if (version == g.packed_version) return;  // unchanged, or a parameter touched twice
+    if (version == g.packed_version) return;  // unchanged, written by store_hot, or touched twice
     pack(b, g.first, g.count);
     g.packed_version = version;
     changed = true;
+    if (g.whole4x4) {
+      const WordRun& r = b.runs[g.first];
+      hot[g.top] = {static_cast<uint32_t>(&b - blocks.data()), static_cast<uint32_t>(&g - b.groups.data()), r.src, r.dst, r.kind};
+    }
   };
   if (changes - b.seen_changes <= kTouchLog) {
     for (uint64_t k = b.seen_changes; k < changes; ++k)
@@ -275,7 +310,14 @@ std::span<const uint8_t> ParameterStore::update_block(BlockHandle block, bool& c
   changed = false;
   if (block.slot >= s.blocks.size()) return {};
   Impl::Block& b = s.blocks[block.slot];
-  changed = s.refresh(b);
+  if (b.written && b.seen_changes == s.changes && b.pooled.empty()) {
+    // Nothing logged since the last refresh (set_matrix wrote into this block, or nothing
+    // changed): the per-draw case.
+    changed = b.fresh;
+    b.fresh = false;
+  } else {
+    changed = s.refresh(b);
+  }
   return {b.packed.data(), b.size};
 }
 

@@ -18,6 +18,7 @@ ParameterStore::ParameterStore(const EffectModel& model, ParameterPool* pool, Di
   s.top_count = static_cast<uint32_t>(model.parameters.size());
   s.nodes.resize(s.top_count);
   s.versions.assign(s.top_count, 1);
+  s.hot.assign(s.top_count, {});
   for (uint32_t i = 0; i < s.top_count; ++i) {
     const Parameter& p = model.parameters[i];
     Impl::Node& n = s.nodes[i];
@@ -177,11 +178,18 @@ ParamStatus ParameterStore::set_matrix(Param p, std::span<const float> v, HostMa
   Impl& s = *impl_;
   // The per-object call (a current handle, row-major floats of the right count) checks the
   // handle once; anything else takes the path that says what is wrong.
-  if (order == HostMatrixOrder::row_major && p.generation == s.generation && p.index < s.nodes.size()) {
-    const Impl::Node& n = s.nodes[p.index];
-    if (n.type.cls == TypeClass::matrix && n.all_float && v.size() == n.words) {
-      s.store_floats(n, v.data());
+  if (order == HostMatrixOrder::row_major && p.generation == s.generation) {
+    // A hot block implies a top-level float4x4 (see Impl::HotGroup).
+    if (p.index < s.top_count && s.hot[p.index].block != kNoIndex && v.size() == 16) {
+      s.store_hot(p.index, v.data());
       return {};
+    }
+    if (p.index < s.nodes.size()) {
+      const Impl::Node& n = s.nodes[p.index];
+      if (n.type.cls == TypeClass::matrix && n.all_float && v.size() == n.words) {
+        s.store_floats(n, v.data());
+        return {};
+      }
     }
   }
   // Out of line, so the call above stays a small leaf (no stack frame for the messages).

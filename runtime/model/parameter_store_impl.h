@@ -84,6 +84,7 @@ struct ParameterStore::Impl {
   struct RunGroup {
     uint32_t top = 0, first = 0, count = 0;
     uint64_t packed_version = 0;
+    bool whole4x4 = false;  // one run holding a whole 4x4 float matrix: set_matrix may write it
   };
   // A pooled parameter's group in a block and the pool version it was packed from: a write
   // through another store is packed at the next write_block.
@@ -103,8 +104,9 @@ struct ParameterStore::Impl {
     std::vector<uint32_t> group_of;  // per top-level parameter: its group here, or kNoIndex
     uint64_t seen_changes = 0;       // Impl::changes when the groups were last brought up to date
     std::vector<PooledRuns> pooled;
+    bool fresh = false;  // set_matrix wrote into `packed` (store_hot) since it was handed out
     bool changed(const std::vector<uint64_t>& versions, const ParameterPool* pool) const {
-      if (!written) return true;
+      if (!written || fresh) return true;
       for (const RunGroup& g : groups)
         if (versions[g.top] != g.packed_version) return true;
       for (const PooledRuns& p : pooled)
@@ -112,9 +114,20 @@ struct ParameterStore::Impl {
       return false;
     }
   };
+  // The per-object matrices (World, WorldViewProjection): when a block re-packs a whole4x4
+  // group, that block becomes its parameter's hot block, and set_matrix writes the next
+  // value straight into the hot block's packed bytes (store_hot), so drawing object after
+  // object with one pass re-packs nothing. Other blocks re-pack from the change log.
+  struct HotGroup {
+    uint32_t block = kNoIndex, group = 0;
+    uint32_t words = 0;  // the parameter's first word (Node::offset)
+    uint32_t dst = 0;    // its run's first byte in the block
+    RunKind kind = RunKind::copy;
+  };
+  void store_hot(uint32_t top, const float* v);
   // Re-packs the runs of `b` whose parameter changed since they were packed; true when
   // anything was re-packed or the block was never handed out.
-  bool refresh(Block& b) const;
+  bool refresh(Block& b);
   static void plan_runs(const Node& n, const BlockMemberLayout& m, uint32_t block_size, std::vector<WordRun>& runs);
   // Copies runs [first, first + count) of `b` from the words into b.packed.
   [[gnu::always_inline]] inline void pack(Block& b, uint32_t first, uint32_t count) const;
@@ -141,6 +154,7 @@ struct ParameterStore::Impl {
   uint64_t changes = 0;
   uint32_t touched[kTouchLog] = {};
   std::vector<Block> blocks;
+  std::vector<HotGroup> hot;  // per top-level node
   std::unordered_map<uint32_t, uint32_t> block_slot;
   std::unordered_map<std::string, uint32_t> by_name;
   std::unordered_map<std::string, uint32_t> by_semantic;  // lower-cased
@@ -225,14 +239,17 @@ struct ParameterStore::Impl {
 
   // Copies n.words floats into node `n` (all float-like: held as float bits, half and
   // double included) and dirties its blocks only when a bit changed (the same matrix set
-  // every frame leaves them clean). One pass, no branch per word.
+  // every frame leaves them clean).
   void store_floats(const Node& n, const float* v) {
-    uint32_t* d = data(n);
+    if (copy_words(data(n), v, n.words)) touch(n);
+  }
+  // The copy of store_floats: true when a bit changed. One pass, no branch per word.
+  [[gnu::always_inline]] static bool copy_words(uint32_t* d, const float* v, uint32_t words) {
     uint32_t w = 0;
     bool changed = false;
 #if defined(__SSE2__)
     __m128i diff = _mm_setzero_si128();
-    for (; w + 4 <= n.words; w += 4) {
+    for (; w + 4 <= words; w += 4) {
       const __m128i now = _mm_loadu_si128(reinterpret_cast<const __m128i*>(d + w));
       const __m128i next = _mm_loadu_si128(reinterpret_cast<const __m128i*>(v + w));
       diff = _mm_or_si128(diff, _mm_xor_si128(now, next));
@@ -240,13 +257,13 @@ struct ParameterStore::Impl {
     }
     changed = _mm_movemask_epi8(_mm_cmpeq_epi32(diff, _mm_setzero_si128())) != 0xFFFF;
 #endif
-    for (; w < n.words; ++w) {
+    for (; w < words; ++w) {
       uint32_t word;
       std::memcpy(&word, v + w, sizeof word);
       changed = changed || d[w] != word;
       d[w] = word;
     }
-    if (changed) touch(n);
+    return changed;
   }
 
   BaseType base_at(const Node& n, uint32_t word) const { return bases[n.base_offset + word]; }

@@ -298,6 +298,78 @@ TEST(ParameterStore, UpdateBlockThroughHandle) {
   EXPECT_TRUE(changed);
 }
 
+// set_matrix writes a 4x4 matrix that blocks hold whole straight into the packed bytes of
+// the block that last re-packed it (no re-pack at that block's next update_block). Checked
+// against a second store given the same values through set(), which re-packs from the
+// recent-change log: the bytes must match after every step, in two blocks holding World
+// in different places and orders, when only one block is being handed out, mixed with
+// set() on the same matrix, more changes than the log holds, and after a third block holds
+// World with another register stride (World then takes the logged path everywhere).
+TEST(ParameterStore, SetMatrixPacksBoundMatricesInPlace) {
+  auto b = test::build("float4x4 World; float4x4 Wvp; float c; float e[20];");
+  ParameterStore direct(b->model), logged(b->model);
+  const BlockMemberLayout one[] = {{"World", 0, 64, 0, 16, MatrixOrder::column_major},
+                                   {"Wvp", 64, 64, 0, 16, MatrixOrder::row_major},
+                                   {"c", 128, 4, 0, 16, MatrixOrder::column_major}};
+  const BlockMemberLayout two[] = {{"c", 0, 4, 0, 16, MatrixOrder::column_major},
+                                   {"World", 16, 64, 0, 16, MatrixOrder::row_major}};
+  const BlockMemberLayout strided[] = {{"World", 0, 128, 0, 32, MatrixOrder::column_major}};
+  for (ParameterStore* s : {&direct, &logged}) {
+    ASSERT_TRUE(s->bind_layout(1, one, 144));
+    ASSERT_TRUE(s->bind_layout(2, two, 80));
+  }
+  const Param world = direct.find("World"), wvp = direct.find("Wvp"), c = direct.find("c"), e = direct.find("e");
+  auto expect_same = [&](const char* step, int k) {
+    for (uint32_t id : {1u, 2u, 3u}) {
+      const BlockHandle h = direct.block(id);
+      if (!h.valid()) continue;
+      const bool was_dirty = direct.dirty(id);
+      bool changed = false;
+      std::span<const uint8_t> got = direct.update_block(h, changed);
+      EXPECT_EQ(changed, was_dirty) << step << " " << k << " block " << id;
+      std::vector<uint8_t> want(got.size(), 0xCD);
+      ASSERT_TRUE(logged.write_block(id, want));
+      EXPECT_TRUE(std::equal(got.begin(), got.end(), want.begin())) << step << " " << k << " block " << id;
+    }
+  };
+  float m[16], n[16];
+  for (int k = 0; k < 40; ++k) {
+    for (int i = 0; i < 16; ++i) m[i] = float(k * 16 + i), n[i] = -float(k * 16 + i) * 0.5f;
+    ASSERT_TRUE(direct.set_matrix(world, m));
+    ASSERT_TRUE(direct.set_matrix(wvp, n));
+    ASSERT_TRUE(logged.set(world, std::span<const float>(m)));
+    ASSERT_TRUE(logged.set(wvp, std::span<const float>(n)));
+    if (k % 4 == 1) {  // block 1 drawn with, block 2 not: it must re-pack when it is
+      bool changed = false;
+      direct.update_block(direct.block(1), changed);
+      logged.update_block(logged.block(1), changed);
+      for (int i = 0; i < 16; ++i) m[i] += 0.25f;
+      ASSERT_TRUE(direct.set_matrix(world, m));
+      ASSERT_TRUE(logged.set(world, std::span<const float>(m)));
+    }
+    expect_same("set_matrix", k);
+    ASSERT_TRUE(direct.set_matrix(world, m)) << "the same value: the blocks stay clean";
+    EXPECT_FALSE(direct.dirty(1));
+    EXPECT_FALSE(direct.dirty(2));
+    if (k % 3 == 0) {  // set() on a matrix that set_matrix writes in place
+      for (ParameterStore* s : {&direct, &logged}) ASSERT_TRUE(s->set(world, std::span<const float>(n)));
+      expect_same("set", k);
+    }
+    if (k % 5 == 0) {  // more changes than the log holds, then one in place
+      for (ParameterStore* s : {&direct, &logged}) {
+        for (int j = 0; j < 20; ++j) ASSERT_TRUE(s->set(s->element(e, uint32_t(j)), float(k + j)));
+        ASSERT_TRUE(s->set(c, float(k)));
+      }
+      ASSERT_TRUE(direct.set_matrix(world, m));
+      ASSERT_TRUE(logged.set(world, std::span<const float>(m)));
+    }
+    expect_same("log", k);
+    if (k == 20) {
+      for (ParameterStore* s : {&direct, &logged}) ASSERT_TRUE(s->bind_layout(3, strided, 128));
+    }
+  }
+}
+
 TEST(ParameterStore, SharedPool) {
   auto one = test::build("shared float4x4 ViewProj; shared float Time = 1; float local = 2;");
   auto two = test::build("shared float Time = 5; shared float4x4 ViewProj; shared int Time2;");
