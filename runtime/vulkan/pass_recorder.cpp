@@ -54,26 +54,6 @@ bool PassRecorder::apply(const PassDesc& pass, DiagnosticSink& sink) {
   return true;
 }
 
-bool PassRecorder::reapply(const PassResources& r, std::span<const uint32_t> offsets, bool moved) {
-  if (&r != applied_ || r.images_changed_ || offsets.size() != offsets_.size()) return false;
-  if (!moved) {
-    ++stats_.passes;
-    return true;
-  }
-  // A plain loop: for one or two offsets a memcmp / memcpy call costs more than the work.
-  bool same = true;
-  for (size_t i = 0; i < offsets.size(); ++i) same = same && offsets[i] == offsets_[i];
-  if (!same) {
-    if (r.program().descriptor_mode() == DescriptorMode::push || !frames_->still_valid(r.set_frame_)) return false;
-    vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, uint32_t(offsets.size()),
-                            offsets.data());
-    ++stats_.descriptor_binds;
-    for (size_t i = 0; i < offsets.size(); ++i) offsets_[i] = offsets[i];
-  }
-  ++stats_.passes;
-  return true;
-}
-
 void PassRecorder::record_dynamic_state(const PipelineState& s, bool all) {
   const PipelineState* p = all ? nullptr : &*state_;
   uint64_t& calls = stats_.dynamic_state_calls;

@@ -59,11 +59,23 @@ class PassRecorder {
   bool apply(const PassDesc& pass, DiagnosticSink& sink);
   // Applies again the pass applied last (nothing else applied since), whose caller-written
   // uniforms moved to `uniform_offsets`: pipeline, dynamic state and textures are bound
-  // already, so only the descriptor offsets can change. `moved` false promises the offsets
-  // are the ones applied last (nothing to compare or bind). False (nothing recorded) when
+  // already, so only the descriptor offsets are bound again. `moved` false promises the
+  // offsets are the ones applied last (nothing to bind). False (nothing recorded) when
   // `resources` is not that pass's, its textures changed or it pushes descriptors: call
-  // apply() then.
-  bool reapply(const PassResources& resources, std::span<const uint32_t> uniform_offsets, bool moved = true);
+  // apply() then. Inline: it runs once per object.
+  bool reapply(const PassResources& r, std::span<const uint32_t> uniform_offsets, bool moved = true) {
+    if (&r != applied_ || r.images_changed_ || uniform_offsets.size() != offsets_.size()) return false;
+    if (moved) {
+      if (r.program().descriptor_mode() == DescriptorMode::push || !frames_->still_valid(r.set_frame_)) return false;
+      vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_,
+                              uint32_t(uniform_offsets.size()), uniform_offsets.data());
+      ++stats_.descriptor_binds;
+      // A plain loop: for one or two offsets a memcpy call costs more than the work.
+      for (size_t i = 0; i < uniform_offsets.size(); ++i) offsets_[i] = uniform_offsets[i];
+    }
+    ++stats_.passes;
+    return true;
+  }
   // Ends the sequence; the next begin() assumes nothing is bound.
   void end();
   // Reserves `bytes` of the frame's uniform ring, lets `fill(uint8_t*)` write them in place
