@@ -219,10 +219,11 @@ int bench_apply(const BenchArgs& args) {
         const Group& G = groups[g];
         ok = G.binding->begin(cmd, G.technique, formats, viewport, scissor, sink) && ok;
         vkCmdBindVertexBuffers(cmd, 0, 2, vbs, offs);
+        const uint32_t passes = G.binding->pass_count(G.technique);
         for (uint32_t i = uint32_t(g) * per_group; i < uint32_t(g + 1) * per_group; ++i) {
           G.effect->params->set_matrix(G.world, std::span<const float>(glm::value_ptr(world[i]), 16));
           G.effect->params->set_matrix(G.wvp, std::span<const float>(glm::value_ptr(wvp[i]), 16));
-          for (uint32_t p = 0; p < G.binding->pass_count(G.technique); ++p) {
+          for (uint32_t p = 0; p < passes; ++p) {
             ok = G.binding->apply(p, G.layout, sink) && ok;
             vkCmdDraw(cmd, vertex_count, 1, 0, 0);
           }
