@@ -26,7 +26,8 @@ ast::Effect parse_effect(std::vector<Token> tokens, const SourceManager& sm,
                          DiagnosticSink& diags, const ParseOptions& options = {});
 
 // Lexes a whole buffer without preprocessing (tests, tools that skip the preprocessor).
-// The result ends with the eof token.
+// The result ends with the eof token. Characters that start no token are reported and left
+// out, as the preprocessor leaves them out: the parser would only report them again.
 std::vector<Token> lex_all(SourceManager& sm, BufferId buffer, DiagnosticSink& diags);
 
 }  // namespace fx

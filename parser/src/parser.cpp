@@ -15,8 +15,10 @@ std::vector<Token> lex_all(SourceManager& sm, BufferId buffer, DiagnosticSink& d
   // regrowth on large files.
   tokens.reserve(sm.buffer_text(buffer).size() / 4 + 1);
   for (;;) {
-    tokens.push_back(lexer.next());
-    if (tokens.back().is(TokenKind::eof)) return tokens;
+    Token t = lexer.next();
+    if (t.is(TokenKind::unknown)) continue;  // reported by the lexer; as in the preprocessor
+    tokens.push_back(t);
+    if (t.is(TokenKind::eof)) return tokens;
   }
 }
 

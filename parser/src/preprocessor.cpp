@@ -566,6 +566,9 @@ bool Preprocessor::Impl::run(const std::string& name, std::optional<std::string>
       t = engine_.next();
     }
     if (t.kind == TokenKind::eof) break;
+    // A character that starts no token was reported where it was lexed; passing it on
+    // would only make the parser report the same mistake again.
+    if (t.kind == TokenKind::unknown) continue;
     if (++emitted > options_.limits.max_tokens) {
       budget_.fail(t.range(), "more than " + std::to_string(options_.limits.max_tokens) +
                                   " output tokens");

@@ -36,6 +36,21 @@ TEST(ParserErrors, StrayBrace) {
              "^\n");
 }
 
+// A character that starts no token is the lexer's one diagnostic: the parser does not see
+// it again, at file scope or in shader code, and what follows still parses (through the
+// preprocessor too: PreprocessorMacros.StrayCharacterInAMacroIsReportedOnce).
+TEST(ParserErrors, StrayCharacterIsOneDiagnostic) {
+  auto p = parse("float a;\n@ float b;\n");
+  EXPECT_EQ(p->text(),
+            "test.fx:2:1: error: unexpected character in source [unknown-character]\n"
+            "@ float b;\n"
+            "^\n");
+  EXPECT_EQ(p->effect.decls.size(), 2u);  // b is still parsed
+  auto q = parse("float4 PS() : COLOR { return 1 ` 2; }\n");
+  ASSERT_EQ(q->diags.diagnostics().size(), 1u) << q->text();
+  EXPECT_EQ(q->diags.diagnostics()[0].id, "unknown-character");
+}
+
 TEST(ParserErrors, BadStateValueRecoversAtSemicolon) {
   auto p = parse("technique t { pass p { ZEnable = ; CullMode = None; } }\nfloat x;\n");
   EXPECT_EQ(p->text(),

@@ -22,6 +22,14 @@ TEST(PreprocessorMacros, ObjectAndFunctionLike) {
   EXPECT_EQ(p.ids(), "");
 }
 
+// A character that starts no token is reported once, where it is lexed (here in a macro
+// body), and is not passed on: the parser would only report it again.
+TEST(PreprocessorMacros, StrayCharacterInAMacroIsReportedOnce) {
+  Pp p;
+  EXPECT_EQ(p.run("#define BAD $\nfloat x = BAD BAD 1;\n@ float y;\n"), spelled("float x = 1; float y;"));
+  EXPECT_EQ(p.ids(), "unknown-character unknown-character");
+}
+
 // C11 6.10.3.5 EXAMPLE 3: rescanning, nested invocations, empty arguments.
 TEST(PreprocessorMacros, StandardExampleRescanning) {
   Pp p;
