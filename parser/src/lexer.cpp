@@ -54,6 +54,23 @@ inline const char* identifier_end(const char* p, const char* end) {
   return p;
 }
 
+// The pp-number rule, one character at a time, shared by lex_number and next_batch's fast
+// path: digits, letters, '.', and a sign after an exponent letter continue a number; '.',
+// an exponent or a float suffix makes it floating (hex digits 'e' and 'f' do not). `p` is
+// inside a number (not at its first character) when it is a sign, so p[-1] exists then.
+enum class NumberChar : uint8_t { end, part, floating };
+inline bool starts_hex(const char* p) { return p[0] == '0' && (p[1] == 'x' || p[1] == 'X'); }
+inline NumberChar number_char(const char* p, bool hex) {
+  const char c = *p;
+  if (c == '.') return NumberChar::floating;
+  if (c == '+' || c == '-')
+    return !hex && (p[-1] == 'e' || p[-1] == 'E') ? NumberChar::floating : NumberChar::end;
+  if (!is_ident_char(c)) return NumberChar::end;
+  if (!hex && (c == 'e' || c == 'E' || c == 'f' || c == 'F' || c == 'h' || c == 'H'))
+    return NumberChar::floating;
+  return NumberChar::part;
+}
+
 // The flags a blank character gives the next token (0: not a blank), so that skipping
 // blanks is one load and one test per character.
 constexpr std::array<uint8_t, 256> kBlankFlags = [] {
@@ -377,23 +394,10 @@ size_t Lexer::next_batch(Token* out, size_t max, const NameFilter* stop_after) {
         }
         [[fallthrough]];
       case Start::digit: {
-        // lex_number's pp-number rule.
-        const bool hex = p[0] == '0' && (p[1] == 'x' || p[1] == 'X');
+        const bool hex = starts_hex(p);
         bool floating = false;
-        for (;; ++p) {
-          char c = *p;
-          if (c == '.') {
-            floating = true;
-          } else if ((c == '+' || c == '-') && !hex) {
-            if (p[-1] != 'e' && p[-1] != 'E') break;
-            floating = true;
-          } else if (!is_ident_char(c)) {
-            break;
-          } else if (!hex && (c == 'e' || c == 'E' || c == 'f' || c == 'F' || c == 'h' ||
-                              c == 'H')) {
-            floating = true;
-          }
-        }
+        for (NumberChar c; (c = number_char(p, hex)) != NumberChar::end; ++p)
+          floating = floating || c == NumberChar::floating;
         if (*p != '\\') kind = floating ? TokenKind::floating : TokenKind::integer;
         break;
       }
@@ -432,22 +436,11 @@ size_t Lexer::next_batch(Token* out, size_t max, const NameFilter* stop_after) {
 // A pp-number: digits, letters, '.', and signs after an exponent letter. It is classified
 // here and validated by parse_number when a value is needed.
 Token Lexer::lex_number(size_t begin) {
-  bool is_hex = peek() == '0' && (peek(1) == 'x' || peek(1) == 'X');
+  const bool hex = starts_hex(text_.data() + pos_);
   bool floating = false;
-  for (;;) {
-    char c = peek();
-    if (c == '.') {
-      floating = true;
-    } else if ((c == '+' || c == '-') && !is_hex) {
-      char prev = text_[pos_ - 1];
-      if (prev != 'e' && prev != 'E') break;
-      floating = true;
-    } else if (!is_ident_char(c)) {
-      break;
-    } else if (!is_hex && (c == 'e' || c == 'E' || c == 'f' || c == 'F' || c == 'h' ||
-                           c == 'H')) {
-      floating = true;
-    }
+  // text_ is a std::string's: a '\0' (NumberChar::end) follows it.
+  for (NumberChar c; (c = number_char(text_.data() + pos_, hex)) != NumberChar::end;) {
+    floating = floating || c == NumberChar::floating;
     ++pos_;
     skip_splices();
   }
