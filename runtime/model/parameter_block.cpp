@@ -232,10 +232,8 @@ void ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
   const HotGroup& h = hot[top];
   uint32_t* held = words.data() + h.words;
   if (!copy_words(held, v, 16)) return;
-  // touch() for a parameter that is never pooled: logged for the blocks other than the hot one.
-  const uint64_t version = ++versions[top];
-  touched[changes % kTouchLog] = top;
-  ++changes;
+  // Never pooled (see whole4x4); logged for the blocks other than the hot one.
+  const uint64_t version = log_change(top);
   Block& b = blocks[h.block];
   RunGroup& g = b.groups[h.group];
   if (g.packed_version != version - 1) return;  // the block missed a change: its refresh re-packs

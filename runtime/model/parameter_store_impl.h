@@ -231,10 +231,15 @@ struct ParameterStore::Impl {
   }
 
   void touch(const Node& n) {
-    ++versions[n.top];
-    touched[changes % kTouchLog] = n.top;
-    ++changes;
+    log_change(n.top);
     if (n.pooled) ++pool->entries_[n.pool_entry].version;
+  }
+  // touch() without the pool: bumps top-level parameter `top`'s version, logs the change
+  // and returns the new version.
+  uint64_t log_change(uint32_t top) {
+    touched[changes % kTouchLog] = top;
+    ++changes;
+    return ++versions[top];
   }
 
   // Copies n.words floats into node `n` (all float-like: held as float bits, half and
