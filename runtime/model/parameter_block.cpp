@@ -2,9 +2,6 @@
 // and remap() across reloads.
 #include <algorithm>
 #include <cstring>
-#if defined(__SSE2__)
-#include <xmmintrin.h>
-#endif
 
 #include "parameter_store_impl.h"
 
@@ -19,28 +16,6 @@ uint32_t default_element_stride(const Type& t, uint32_t matrix_stride) {
     return registers * matrix_stride;
   }
   return 16;
-}
-
-// Stores a row-stored 4x4 matrix (16 words) at `to` as four column registers (HLSL's
-// default float4x4). The per-object matrices take this path on every draw.
-inline void write_columns4x4(uint8_t* to, const uint32_t* from) {
-#if defined(__SSE2__)
-  __m128 r0 = _mm_loadu_ps(reinterpret_cast<const float*>(from));
-  __m128 r1 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 4));
-  __m128 r2 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 8));
-  __m128 r3 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 12));
-  _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-  float* column = reinterpret_cast<float*>(to);
-  _mm_storeu_ps(column, r0);
-  _mm_storeu_ps(column + 4, r1);
-  _mm_storeu_ps(column + 8, r2);
-  _mm_storeu_ps(column + 12, r3);
-#else
-  uint32_t columns[16];
-  for (uint32_t c = 0; c < 4; ++c)
-    for (uint32_t row = 0; row < 4; ++row) columns[c * 4 + row] = from[row * 4 + c];
-  std::memcpy(to, columns, sizeof columns);
-#endif
 }
 
 }  // namespace
@@ -226,24 +201,6 @@ inline void ParameterStore::Impl::pack(Block& b, uint32_t first, uint32_t count)
         break;
     }
   }
-}
-
-void ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
-  const HotGroup& h = hot[top];
-  uint32_t* held = words.data() + h.words;
-  if (!copy_words(held, v, 16)) return;
-  // Never pooled (see whole4x4); logged for the blocks other than the hot one.
-  const uint64_t version = log_change(top);
-  Block& b = blocks[h.block];
-  RunGroup& g = b.groups[h.group];
-  if (g.packed_version != version - 1) return;  // the block missed a change: its refresh re-packs
-  if (h.kind == RunKind::columns4x4) write_columns4x4(b.packed.data() + h.dst, held);
-  else std::memcpy(b.packed.data() + h.dst, held, 16 * sizeof(uint32_t));
-  g.packed_version = version;
-  b.fresh = true;
-  // A block that had taken every earlier change has now taken this one too: its next
-  // refresh has no logged change to look at.
-  if (b.seen_changes == changes - 1) b.seen_changes = changes;
 }
 
 bool ParameterStore::Impl::refresh(Block& b) {

@@ -4,6 +4,7 @@
 #include <string>
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#include <xmmintrin.h>
 #endif
 #include <unordered_map>
 #include <vector>
@@ -12,6 +13,35 @@
 #include "model_internal.h"
 
 namespace fx::param_detail {
+
+#if defined(__SSE2__)
+// Stores four 16-byte registers one after another at `to` (16 words, any alignment).
+inline void store_registers(void* to, __m128 r0, __m128 r1, __m128 r2, __m128 r3) {
+  float* f = static_cast<float*>(to);
+  _mm_storeu_ps(f, r0);
+  _mm_storeu_ps(f + 4, r1);
+  _mm_storeu_ps(f + 8, r2);
+  _mm_storeu_ps(f + 12, r3);
+}
+#endif
+
+// Stores a row-stored 4x4 matrix (16 words) at `to` as four column registers (HLSL's
+// default float4x4). The per-object matrices take this path on every draw.
+inline void write_columns4x4(uint8_t* to, const uint32_t* from) {
+#if defined(__SSE2__)
+  __m128 r0 = _mm_loadu_ps(reinterpret_cast<const float*>(from));
+  __m128 r1 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 4));
+  __m128 r2 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 8));
+  __m128 r3 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 12));
+  _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+  store_registers(to, r0, r1, r2, r3);
+#else
+  uint32_t columns[16];
+  for (uint32_t c = 0; c < 4; ++c)
+    for (uint32_t row = 0; row < 4; ++row) columns[c * 4 + row] = from[row * 4 + c];
+  std::memcpy(to, columns, sizeof columns);
+#endif
+}
 
 inline bool float_like(BaseType b) { return b == BaseType::half || b == BaseType::float32 || b == BaseType::float64; }
 inline bool int_like(BaseType b) { return !float_like(b); }
@@ -124,7 +154,10 @@ struct ParameterStore::Impl {
     uint32_t dst = 0;    // its run's first byte in the block
     RunKind kind = RunKind::copy;
   };
-  void store_hot(uint32_t top, const float* v);
+  // set_matrix's per-object path: the new value of a top-level float4x4 `top` that has a
+  // hot block. Inline into set_matrix, and loaded once: the same four registers are compared
+  // with the held words, stored as them and (transposed) into the hot block.
+  [[gnu::always_inline]] inline void store_hot(uint32_t top, const float* v);
   // Re-packs the runs of `b` whose parameter changed since they were packed; true when
   // anything was re-packed or the block was never handed out.
   bool refresh(Block& b);
@@ -293,5 +326,40 @@ struct ParameterStore::Impl {
 
   std::string describe(uint32_t i) const { return "'" + path(i) + "' (" + nodes[i].type.to_string() + ")"; }
 };
+
+inline void ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
+  const HotGroup& h = hot[top];
+  uint32_t* held = words.data() + h.words;
+#if defined(__SSE2__)
+  __m128 r0 = _mm_loadu_ps(v), r1 = _mm_loadu_ps(v + 4), r2 = _mm_loadu_ps(v + 8), r3 = _mm_loadu_ps(v + 12);
+  const __m128i diff = _mm_or_si128(
+      _mm_or_si128(_mm_xor_si128(_mm_castps_si128(r0), _mm_loadu_si128(reinterpret_cast<const __m128i*>(held))),
+                   _mm_xor_si128(_mm_castps_si128(r1), _mm_loadu_si128(reinterpret_cast<const __m128i*>(held + 4)))),
+      _mm_or_si128(_mm_xor_si128(_mm_castps_si128(r2), _mm_loadu_si128(reinterpret_cast<const __m128i*>(held + 8))),
+                   _mm_xor_si128(_mm_castps_si128(r3), _mm_loadu_si128(reinterpret_cast<const __m128i*>(held + 12)))));
+  if (_mm_movemask_epi8(_mm_cmpeq_epi32(diff, _mm_setzero_si128())) == 0xFFFF) return;  // no bit changed
+  store_registers(held, r0, r1, r2, r3);
+#else
+  if (!copy_words(held, v, 16)) return;
+#endif
+  // Never pooled (see whole4x4); logged for the blocks other than the hot one.
+  const uint64_t version = log_change(top);
+  Block& b = blocks[h.block];
+  RunGroup& g = b.groups[h.group];
+  if (g.packed_version != version - 1) return;  // the block missed a change: its refresh re-packs
+  uint8_t* to = b.packed.data() + h.dst;
+#if defined(__SSE2__)
+  if (h.kind == RunKind::columns4x4) _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+  store_registers(to, r0, r1, r2, r3);
+#else
+  if (h.kind == RunKind::columns4x4) param_detail::write_columns4x4(to, held);
+  else std::memcpy(to, held, 16 * sizeof(uint32_t));
+#endif
+  g.packed_version = version;
+  b.fresh = true;
+  // A block that had taken every earlier change has now taken this one too: its next
+  // refresh has no logged change to look at.
+  if (b.seen_changes == changes - 1) b.seen_changes = changes;
+}
 
 }  // namespace fx
