@@ -174,30 +174,26 @@ ParamStatus ParameterStore::set(Param p, std::span<const int32_t> v) {
   return {};
 }
 
-ParamStatus ParameterStore::set_matrix(Param p, std::span<const float> v, HostMatrixOrder order) {
+bool ParameterStore::set_matrix_fast(Param p, const float* v, size_t count) {
   Impl& s = *impl_;
-  // The per-object call (a current handle, row-major floats of the right count) checks the
-  // handle once; anything else takes the path that says what is wrong.
-  if (order == HostMatrixOrder::row_major && p.generation == s.generation) {
-    // A hot block implies a top-level float4x4 (see Impl::HotGroup).
-    if (p.index < s.top_count && s.hot[p.index].block != kNoIndex && v.size() == 16) {
-      s.store_hot(p.index, v.data());
-      return {};
-    }
-    if (p.index < s.nodes.size()) {
-      const Impl::Node& n = s.nodes[p.index];
-      if (n.type.cls == TypeClass::matrix && n.all_float && v.size() == n.words) {
-        s.store_floats(n, v.data());
-        return {};
-      }
+  // The handle is checked once; a hot block implies a top-level float4x4 (see Impl::HotGroup).
+  if (p.generation != s.generation) return false;
+  if (p.index < s.top_count && s.hot[p.index].block != kNoIndex && count == 16) {
+    s.store_hot(p.index, v);
+    return true;
+  }
+  if (p.index < s.nodes.size()) {
+    const Impl::Node& n = s.nodes[p.index];
+    if (n.type.cls == TypeClass::matrix && n.all_float && count == n.words) {
+      s.store_floats(n, v);
+      return true;
     }
   }
-  // Out of line, so the call above stays a small leaf (no stack frame for the messages).
-  return s.set_matrix_checked(p, v, order);
+  return false;
 }
 
-ParamStatus ParameterStore::Impl::set_matrix_checked(Param p, std::span<const float> v, HostMatrixOrder order) {
-  Impl& s = *this;
+ParamStatus ParameterStore::set_matrix_checked(Param p, std::span<const float> v, HostMatrixOrder order) {
+  Impl& s = *impl_;
   uint32_t i;
   if (ParamStatus st = s.resolve(p, i); !st) return st;
   const Impl::Node& n = s.nodes[i];

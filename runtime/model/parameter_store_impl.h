@@ -167,8 +167,6 @@ struct ParameterStore::Impl {
   // Stores `count` floats into node `i` (all float-like components); dirties its blocks only
   // when a bit changes.
   ParamStatus write_floats(uint32_t i, const float* v, size_t count);
-  // set_matrix for what its fast path does not take: old handles, column-major input, errors.
-  [[gnu::noinline]] ParamStatus set_matrix_checked(Param p, std::span<const float> v, HostMatrixOrder order);
 
   const EffectModel* model = nullptr;
   ParameterPool* pool = nullptr;
