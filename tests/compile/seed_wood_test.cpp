@@ -12,12 +12,14 @@
 namespace fx {
 namespace {
 
-constexpr const char* kSeed = FXKIT_SEEDS_DIR "/d3dx-effects-and-per-pixel-lighting.txt";
+// The wood effect as the seed document lists it (tests/parser/data/wood.fx: verbatim, its two
+// code fences joined), so the test needs only this checkout.
+constexpr const char* kWood = FXKIT_SOURCE_DIR "/tests/parser/data/wood.fx";
 
-// The wood effect's code: from "float ringscale" to the end of Wood(), with the markdown
-// fences between its two parts dropped. Returns (first line number, text).
+// The wood effect's code: from "float ringscale" to the end of Wood(). Returns (first line
+// number, text).
 std::pair<uint32_t, std::string> wood_body() {
-  std::ifstream in(kSeed);
+  std::ifstream in(kWood);
   std::string line, body;
   uint32_t number = 0, first = 0;
   bool inside = false, in_wood = false;
@@ -25,8 +27,7 @@ std::pair<uint32_t, std::string> wood_body() {
     ++number;
     if (!inside && line.rfind("float ringscale", 0) == 0) inside = true, first = number;
     if (!inside) continue;
-    // Fence lines become blank so line numbers stay those of the seed file.
-    body += line.rfind("```", 0) == 0 ? "" : line;
+    body += line;
     body += '\n';
     in_wood = in_wood || line.rfind("PS_OUTPUT Wood", 0) == 0;
     if (in_wood && line == "};") break;  // Wood() ends with "};" (structs do too)
@@ -37,7 +38,7 @@ std::pair<uint32_t, std::string> wood_body() {
 TranslationUnit wood_unit(const std::string& body, uint32_t first_line) {
   TranslationUnit u;
   u.source = std::string(pre_release_hlsl_prelude()) + "#line " + std::to_string(first_line) +
-             " \"d3dx-effects-and-per-pixel-lighting.txt\"\n" + body;
+             " \"wood.fx\"\n" + body;
   u.stage = ShaderStage::fragment;
   u.entry_point = "Wood";
   u.profile = "ps_2_0";
@@ -46,13 +47,13 @@ TranslationUnit wood_unit(const std::string& body, uint32_t first_line) {
 
 TEST(SeedWood, AsWrittenReportsWhatCannotBeMapped) {
   auto [first, body] = wood_body();
-  ASSERT_GT(first, 0u) << "seed not found at " << kSeed;
+  ASSERT_GT(first, 0u) << "wood effect not found at " << kWood;
   // The prelude cannot repair source errors: the missing semicolon after diffuse()'s return
-  // and reading .a of the vec3 COLOR0 input. glslang reports them at the seed's own lines.
+  // and reading .a of the vec3 COLOR0 input. glslang reports them at the file's own lines.
   CompiledShader r = ShaderCompiler().compile(wood_unit(body, first));
   EXPECT_FALSE(r.ok);
   std::string log = test::messages_of(r);
-  EXPECT_NE(log.find("d3dx-effects-and-per-pixel-lighting.txt:343:0: ';' : Expected"), std::string::npos) << log;
+  EXPECT_NE(log.find("wood.fx:47:0: ';' : Expected"), std::string::npos) << log;
   // What the prelude maps only approximately is reported by the scan.
   std::vector<CompatIssue> issues = pre_release_hlsl_issues(body);
   std::vector<std::string> names;
