@@ -174,20 +174,26 @@ ParamStatus ParameterStore::set(Param p, std::span<const int32_t> v) {
   return {};
 }
 
-bool ParameterStore::set_matrix_fast(Param p, const float* v, size_t count) {
+bool ParameterStore::set_matrix_fast(Param p, const float* v, size_t count, HostMatrixOrder order) {
   Impl& s = *impl_;
   // The handle is checked once; a hot block implies a top-level float4x4 (see Impl::HotGroup).
   if (p.generation != s.generation) return false;
+  const bool columns = order == HostMatrixOrder::column_major;
   if (p.index < s.top_count && s.hot[p.index].block != kNoIndex && count == 16) {
-    s.store_hot(p.index, v);
+    if (columns) s.store_hot<true>(p.index, v);
+    else s.store_hot<false>(p.index, v);
     return true;
   }
   if (p.index < s.nodes.size()) {
     const Impl::Node& n = s.nodes[p.index];
-    if (n.type.cls == TypeClass::matrix && n.all_float && count == n.words) {
+    if (n.type.cls != TypeClass::matrix || !n.all_float || count != n.words) return false;
+    if (!columns) {
       s.store_floats(n, v);
       return true;
     }
+    if (count != 16 || n.type.rows != 4 || n.type.cols != 4) return false;  // arrays, other shapes: the checked path
+    s.store_columns4x4(n, v);
+    return true;
   }
   return false;
 }

@@ -155,8 +155,10 @@ struct ParameterStore::Impl {
     RunKind kind = RunKind::copy;
   };
   // set_matrix's per-object path: the new value of a top-level float4x4 `top` that has a
-  // hot block. Inline into set_matrix, and loaded once: the same four registers are compared
-  // with the held words, stored as them and (transposed) into the hot block.
+  // hot block, 16 floats row by row (`v_columns`: column by column). Inline into
+  // set_matrix, and loaded once: the same four registers are compared with the held words
+  // (rows), stored as them and into the hot block in the order its registers hold.
+  template <bool v_columns>
   [[gnu::always_inline]] inline void store_hot(uint32_t top, const float* v);
   // Re-packs the runs of `b` whose parameter changed since they were packed; true when
   // anything was re-packed or the block was never handed out.
@@ -279,6 +281,14 @@ struct ParameterStore::Impl {
   void store_floats(const Node& n, const float* v) {
     if (copy_words(data(n), v, n.words)) touch(n);
   }
+  // store_floats for one 4x4 matrix given column by column. Out of line, so set_matrix's
+  // per-object path keeps no stack frame for the transposed copy.
+  [[gnu::noinline]] void store_columns4x4(const Node& n, const float* v) {
+    float rows[16];
+    for (uint32_t r = 0; r < 4; ++r)
+      for (uint32_t c = 0; c < 4; ++c) rows[r * 4 + c] = v[c * 4 + r];
+    store_floats(n, rows);
+  }
   // The copy of store_floats: true when a bit changed. One pass, no branch per word.
   [[gnu::always_inline]] static bool copy_words(uint32_t* d, const float* v, uint32_t words) {
     uint32_t w = 0;
@@ -325,11 +335,15 @@ struct ParameterStore::Impl {
   std::string describe(uint32_t i) const { return "'" + path(i) + "' (" + nodes[i].type.to_string() + ")"; }
 };
 
+template <bool v_columns>
 inline void ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
   const HotGroup& h = hot[top];
   uint32_t* held = words.data() + h.words;
+  const bool to_columns = h.kind == RunKind::columns4x4;
 #if defined(__SSE2__)
-  __m128 r0 = _mm_loadu_ps(v), r1 = _mm_loadu_ps(v + 4), r2 = _mm_loadu_ps(v + 8), r3 = _mm_loadu_ps(v + 12);
+  __m128 v0 = _mm_loadu_ps(v), v1 = _mm_loadu_ps(v + 4), v2 = _mm_loadu_ps(v + 8), v3 = _mm_loadu_ps(v + 12);
+  __m128 r0 = v0, r1 = v1, r2 = v2, r3 = v3;
+  if constexpr (v_columns) _MM_TRANSPOSE4_PS(r0, r1, r2, r3);  // rows, as held
   const __m128i diff = _mm_or_si128(
       _mm_or_si128(_mm_xor_si128(_mm_castps_si128(r0), _mm_loadu_si128(reinterpret_cast<const __m128i*>(held))),
                    _mm_xor_si128(_mm_castps_si128(r1), _mm_loadu_si128(reinterpret_cast<const __m128i*>(held + 4)))),
@@ -338,6 +352,12 @@ inline void ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
   if (_mm_movemask_epi8(_mm_cmpeq_epi32(diff, _mm_setzero_si128())) == 0xFFFF) return;  // no bit changed
   store_registers(held, r0, r1, r2, r3);
 #else
+  float rows[16];
+  if constexpr (v_columns) {
+    for (uint32_t r = 0; r < 4; ++r)
+      for (uint32_t c = 0; c < 4; ++c) rows[r * 4 + c] = v[c * 4 + r];
+    v = rows;
+  }
   if (!copy_words(held, v, 16)) return;
 #endif
   // Never pooled (see whole4x4); logged for the blocks other than the hot one.
@@ -347,10 +367,11 @@ inline void ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
   if (g.packed_version != version - 1) return;  // the block missed a change: its refresh re-packs
   uint8_t* to = b.packed.data() + h.dst;
 #if defined(__SSE2__)
-  if (h.kind == RunKind::columns4x4) _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-  store_registers(to, r0, r1, r2, r3);
+  // The hot block's registers are the app's own order or its transpose.
+  if (to_columns != v_columns) _MM_TRANSPOSE4_PS(v0, v1, v2, v3);
+  store_registers(to, v0, v1, v2, v3);
 #else
-  if (h.kind == RunKind::columns4x4) param_detail::write_columns4x4(to, held);
+  if (to_columns) param_detail::write_columns4x4(to, held);
   else std::memcpy(to, held, 16 * sizeof(uint32_t));
 #endif
   g.packed_version = version;

@@ -370,6 +370,39 @@ TEST(ParameterStore, SetMatrixPacksBoundMatricesInPlace) {
   }
 }
 
+// A column-major host matrix takes the same paths as a row-major one (no allocation, the
+// hot block written in place): checked against a store given the transposed floats
+// row-major, into a block with column registers and one with row registers, before the
+// block is hot (the plain store) and after.
+TEST(ParameterStore, SetMatrixTakesColumnMajorInput) {
+  auto b = test::build("float4x4 World; float4x4 Wvp;");
+  ParameterStore cols(b->model), rows(b->model);
+  const BlockMemberLayout layout[] = {{"World", 0, 64, 0, 16, MatrixOrder::column_major},
+                                      {"Wvp", 64, 64, 0, 16, MatrixOrder::row_major}};
+  for (ParameterStore* s : {&cols, &rows}) ASSERT_TRUE(s->bind_layout(1, layout, 128));
+  const Param world = cols.find("World"), wvp = cols.find("Wvp");
+  float m[16], mt[16];
+  for (int k = 0; k < 6; ++k) {
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) m[r * 4 + c] = float(k * 100 + r * 10 + c), mt[c * 4 + r] = m[r * 4 + c];
+    ASSERT_TRUE(cols.set_matrix(world, mt, HostMatrixOrder::column_major));
+    ASSERT_TRUE(cols.set_matrix(wvp, mt, HostMatrixOrder::column_major));
+    ASSERT_TRUE(rows.set_matrix(world, m));
+    ASSERT_TRUE(rows.set_matrix(wvp, m));
+    bool cols_changed = false, rows_changed = false;
+    std::span<const uint8_t> got = cols.update_block(cols.block(1), cols_changed);
+    std::span<const uint8_t> want = rows.update_block(rows.block(1), rows_changed);
+    EXPECT_TRUE(cols_changed) << k;
+    EXPECT_TRUE(rows_changed) << k;
+    ASSERT_TRUE(std::equal(got.begin(), got.end(), want.begin(), want.end())) << k;
+    float back[16];
+    ASSERT_TRUE(cols.get_matrix(world, back));
+    EXPECT_TRUE(std::equal(back, back + 16, m)) << k;
+    ASSERT_TRUE(cols.set_matrix(world, mt, HostMatrixOrder::column_major)) << "the same value again";
+    EXPECT_FALSE(cols.dirty(1)) << k;
+  }
+}
+
 TEST(ParameterStore, SharedPool) {
   auto one = test::build("shared float4x4 ViewProj; shared float Time = 1; float local = 2;");
   auto two = test::build("shared float Time = 5; shared float4x4 ViewProj; shared int Time2;");

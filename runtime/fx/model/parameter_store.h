@@ -114,10 +114,10 @@ class ParameterStore {
   ParamStatus set(Param p, std::span<const float> v);
   ParamStatus set(Param p, std::span<const int32_t> v);
   // A matrix (or matrix array) given as 16-float host matrices (or rows*cols). Inline so
-  // that the per-object call (a current handle, row-major floats of the right count)
-  // returns without building a status: the caller's empty ParamStatus folds away.
+  // that the per-object call (a current handle, one matrix of the right count, either
+  // order) returns without building a status: the caller's empty ParamStatus folds away.
   ParamStatus set_matrix(Param p, std::span<const float> v, HostMatrixOrder order = HostMatrixOrder::row_major) {
-    if (order == HostMatrixOrder::row_major && set_matrix_fast(p, v.data(), v.size())) return {};
+    if (set_matrix_fast(p, v.data(), v.size(), order)) return {};
     return set_matrix_checked(p, v, order);
   }
   ParamStatus set_string(Param p, std::string_view v);
@@ -155,7 +155,7 @@ class ParameterStore {
  private:
   friend void remap(const ParameterStore& old_store, ParameterStore& new_store);
   // set_matrix's per-object path: true when it stored the value (nothing to report).
-  bool set_matrix_fast(Param p, const float* v, size_t count);
+  bool set_matrix_fast(Param p, const float* v, size_t count, HostMatrixOrder order);
   // Everything else, with the status that says what is wrong.
   ParamStatus set_matrix_checked(Param p, std::span<const float> v, HostMatrixOrder order);
   struct Impl;
