@@ -8,8 +8,10 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
+#include "fx/node_blocks.h"
 #include "fx/source_location.h"
 #include "fx/token.h"
 
@@ -95,8 +97,7 @@ class ExprPool {
   }
 
  private:
-  std::vector<std::unique_ptr<Expr[]>> nodes_;
-  size_t nodes_used_ = 0, nodes_capacity_ = 0;  // of nodes_.back()
+  NodeBlocks<Expr> nodes_;
   std::vector<std::unique_ptr<ExprPtr[]>> lists_;
   size_t lists_used_ = 0, lists_capacity_ = 0;  // of lists_.back()
 };
@@ -233,25 +234,45 @@ enum class DeclKind : uint8_t {
   group, glsl_block, directive,
 };
 
-// One top-level declaration; exactly the member matching `kind` is set.
+// Owns an effect's declarations (the nodes a Decl points to), each type in blocks of its
+// own: parsing makes no allocation per declaration, teardown frees blocks rather than
+// nodes, and the checker's walks over a type's nodes read memory in source order.
+class DeclPool {
+ public:
+  // A new value-initialized node of type T (Variable, Function, Technique, ...).
+  template <class T>
+  T* make() {
+    return std::get<NodeBlocks<T>>(nodes_).make();
+  }
+
+ private:
+  std::tuple<NodeBlocks<Variable>, NodeBlocks<Struct>, NodeBlocks<Typedef>, NodeBlocks<Function>,
+             NodeBlocks<Technique>, NodeBlocks<StateObject>, NodeBlocks<ConstantBuffer>,
+             NodeBlocks<FxGroup>, NodeBlocks<GlslBlock>, NodeBlocks<Directive>>
+      nodes_;
+};
+
+// One top-level declaration; exactly the member matching `kind` is set. The nodes are
+// owned by the effect's DeclPool.
 struct Decl {
   DeclKind kind{};
-  std::unique_ptr<Variable> variable;
-  std::unique_ptr<Struct> structure;
-  std::unique_ptr<Typedef> type_alias;
-  std::unique_ptr<Function> function;
-  std::unique_ptr<Technique> technique;
-  std::unique_ptr<StateObject> state_object;
-  std::unique_ptr<ConstantBuffer> constant_buffer;
-  std::unique_ptr<FxGroup> group;
-  std::unique_ptr<GlslBlock> glsl_block;
-  std::unique_ptr<Directive> directive;
+  Variable* variable = nullptr;
+  Struct* structure = nullptr;
+  Typedef* type_alias = nullptr;
+  Function* function = nullptr;
+  Technique* technique = nullptr;
+  StateObject* state_object = nullptr;
+  ConstantBuffer* constant_buffer = nullptr;
+  FxGroup* group = nullptr;
+  GlslBlock* glsl_block = nullptr;
+  Directive* directive = nullptr;
 };
 
 struct Effect {
   std::string profile_header;  // from a leading `fx.2.0`-style line, if any
   std::vector<Token> tokens;   // the preprocessed token stream the spans index
   std::vector<Decl> decls;     // in source order
+  DeclPool declarations;       // every node the decls point to
   ExprPool expressions;        // every Expr the declarations point to
 };
 

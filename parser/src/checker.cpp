@@ -174,7 +174,7 @@ void Checker::collect_symbols() {
                "GLSL block");
         break;
       case ast::DeclKind::function:
-        functions_.emplace_back(d.function->name, d.function.get());
+        functions_.emplace_back(d.function->name, d.function);
         break;
       default: break;
     }

@@ -1,4 +1,4 @@
-// ExprPool: block storage for expression nodes and argument lists.
+// ExprPool: block storage for expression nodes (NodeBlocks) and argument lists.
 #include <algorithm>
 
 #include "fx/ast.h"
@@ -6,20 +6,14 @@
 namespace fx::ast {
 namespace {
 
-// Blocks start small, so a small effect does not pay for a big block, and double up to a
-// size that keeps a 10 MB effect (about a million nodes) at a few hundred allocations.
-constexpr size_t kFirstNodes = 64, kMaxNodes = 1024;
+// List blocks start small, so a small effect does not pay for a big block, and double up
+// to a size that keeps a 10 MB effect at a few hundred allocations (as NodeBlocks does).
 constexpr size_t kFirstList = 256, kMaxList = 4096;
 
 }  // namespace
 
 ExprPtr ExprPool::make(ExprKind kind) {
-  if (nodes_.empty() || nodes_used_ == nodes_capacity_) {
-    nodes_capacity_ = nodes_.empty() ? kFirstNodes : std::min(2 * nodes_capacity_, kMaxNodes);
-    nodes_.push_back(std::make_unique<Expr[]>(nodes_capacity_));
-    nodes_used_ = 0;
-  }
-  ExprPtr e = &nodes_.back()[nodes_used_++];
+  ExprPtr e = nodes_.make();
   e->kind = kind;
   return e;
 }

@@ -143,7 +143,7 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
   ast::TypeRef type;
   if (!parse_type(type)) return;
   if (at(TokenKind::identifier) && peek().is(TokenKind::l_paren)) {
-    auto f = std::make_unique<ast::Function>();
+    ast::Function* f = declarations_.make<ast::Function>();
     f->storage = storage;
     f->return_type = std::move(type);
     f->attributes = std::move(attributes);
@@ -155,8 +155,8 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
     f->tokens = span_from(first);
     ast::Decl d;
     d.kind = ast::DeclKind::function;
-    d.function = std::move(f);
-    out.push_back(std::move(d));
+    d.function = f;
+    out.push_back(d);
     return;
   }
   if (!attributes.empty()) {
@@ -168,7 +168,7 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
   bool state_object_kind = is_state_object_kind(type.name);
   for (;;) {
     uint32_t start = out.size() == first_decl ? first : pos_;
-    auto v = std::make_unique<ast::Variable>();
+    ast::Variable* v = declarations_.make<ast::Variable>();
     v->storage = storage;
     v->type = type;
     if (!parse_declarator_head(*v)) return;
@@ -180,8 +180,8 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
     v->range = range_from(start);
     ast::Decl d;
     d.kind = ast::DeclKind::variable;
-    d.variable = std::move(v);
-    out.push_back(std::move(d));
+    d.variable = v;
+    out.push_back(d);
     if (!accept(TokenKind::comma)) break;
   }
   if (!expect_semi("after declaration")) return;
@@ -192,7 +192,7 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
 
 void Parser::finish_state_object(std::vector<ast::Decl>& out, ast::Variable& head,
                                  uint32_t first) {
-  auto so = std::make_unique<ast::StateObject>();
+  ast::StateObject* so = declarations_.make<ast::StateObject>();
   so->kind = head.type.name;
   so->name = std::move(head.name);
   so->name_range = head.name_range;
@@ -204,8 +204,8 @@ void Parser::finish_state_object(std::vector<ast::Decl>& out, ast::Variable& hea
   so->range = range_from(first);
   ast::Decl d;
   d.kind = ast::DeclKind::state_object;
-  d.state_object = std::move(so);
-  out.push_back(std::move(d));
+  d.state_object = so;
+  out.push_back(d);
 }
 
 bool Parser::parse_function(ast::Function& f) {
@@ -310,7 +310,7 @@ bool Parser::parse_member_list(std::vector<ast::Variable>& members, std::string_
 void Parser::parse_struct(std::vector<ast::Decl>& out) {
   uint32_t first = pos_;
   advance();  // struct
-  auto s = std::make_unique<ast::Struct>();
+  ast::Struct* s = declarations_.make<ast::Struct>();
   if (!at(TokenKind::identifier)) {
     error_here("expected-identifier", "expected a struct name, found " + describe(tok()));
     return;
@@ -324,8 +324,8 @@ void Parser::parse_struct(std::vector<ast::Decl>& out) {
   s->tokens = span_from(first);
   ast::Decl d;
   d.kind = ast::DeclKind::structure;
-  d.structure = std::move(s);
-  out.push_back(std::move(d));
+  d.structure = s;
+  out.push_back(d);
 }
 
 void Parser::parse_typedef(std::vector<ast::Decl>& out) {
@@ -336,7 +336,7 @@ void Parser::parse_typedef(std::vector<ast::Decl>& out) {
   if (!parse_type(type)) return;
   size_t first_decl = out.size();
   for (;;) {
-    auto t = std::make_unique<ast::Typedef>();
+    ast::Typedef* t = declarations_.make<ast::Typedef>();
     t->type = type;
     if (!at(TokenKind::identifier)) {
       error_here("expected-identifier", "expected a typedef name, found " + describe(tok()));
@@ -346,8 +346,8 @@ void Parser::parse_typedef(std::vector<ast::Decl>& out) {
     if (!parse_array_dims(t->array_dims)) return;
     ast::Decl d;
     d.kind = ast::DeclKind::type_alias;
-    d.type_alias = std::move(t);
-    out.push_back(std::move(d));
+    d.type_alias = t;
+    out.push_back(d);
     if (!accept(TokenKind::comma)) break;
   }
   if (!expect_semi("after typedef")) return;
@@ -359,7 +359,7 @@ void Parser::parse_typedef(std::vector<ast::Decl>& out) {
 
 void Parser::parse_constant_buffer(std::vector<ast::Decl>& out) {
   uint32_t first = pos_;
-  auto cb = std::make_unique<ast::ConstantBuffer>();
+  ast::ConstantBuffer* cb = declarations_.make<ast::ConstantBuffer>();
   cb->texture_buffer = advance().text == "tbuffer";
   cb->name.assign(tok().text);
   cb->name_range = tok().range();
@@ -373,8 +373,8 @@ void Parser::parse_constant_buffer(std::vector<ast::Decl>& out) {
   cb->tokens = span_from(first);
   ast::Decl d;
   d.kind = ast::DeclKind::constant_buffer;
-  d.constant_buffer = std::move(cb);
-  out.push_back(std::move(d));
+  d.constant_buffer = cb;
+  out.push_back(d);
 }
 
 }  // namespace fx::detail

@@ -138,6 +138,7 @@ class Parser {
   void leave_nesting() { --nesting_; }
 
   std::vector<Token> tokens_;
+  ast::DeclPool declarations_;
   ast::ExprPool expressions_;
   // Arguments and list elements being parsed, innermost list last: each list is stored
   // in the pool once complete, so none needs a vector of its own.

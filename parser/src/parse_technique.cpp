@@ -180,7 +180,7 @@ bool Parser::parse_state(ast::StateAssignment& s) {
 void Parser::parse_group(std::vector<ast::Decl>& out) {
   uint32_t first = pos_;
   advance();  // fxgroup
-  auto g = std::make_unique<ast::FxGroup>();
+  ast::FxGroup* g = declarations_.make<ast::FxGroup>();
   if (!at(TokenKind::identifier)) {
     error_here("expected-identifier", "expected a group name, found " + describe(tok()));
     return;
@@ -217,8 +217,8 @@ void Parser::parse_group(std::vector<ast::Decl>& out) {
   g->range = range_from(first);
   ast::Decl d;
   d.kind = ast::DeclKind::group;
-  d.group = std::move(g);
-  out.push_back(std::move(d));
+  d.group = g;
+  out.push_back(d);
 }
 
 }  // namespace fx::detail

@@ -200,6 +200,7 @@ ast::Effect Parser::run() {
   }
   effect.profile_header = std::move(profile_header_);
   effect.tokens = std::move(tokens_);
+  effect.declarations = std::move(declarations_);
   effect.expressions = std::move(expressions_);
   return effect;
 }
@@ -221,12 +222,12 @@ void Parser::parse_top_level(std::vector<ast::Decl>& out) {
     case TokenKind::directive: {
       ast::Decl d;
       d.kind = ast::DeclKind::directive;
-      d.directive = std::make_unique<ast::Directive>();
+      d.directive = declarations_.make<ast::Directive>();
       d.directive->text.assign(t.text);
       d.directive->range = t.range();
       advance();
       d.directive->tokens = span_from(first);
-      out.push_back(std::move(d));
+      out.push_back(d);
       return;
     }
     case TokenKind::semi:  // empty declaration, e.g. the `};` after a function body
@@ -247,8 +248,8 @@ void Parser::parse_top_level(std::vector<ast::Decl>& out) {
   if (word == "technique" || word == "technique10" || word == "technique11") {
     ast::Decl d;
     d.kind = ast::DeclKind::technique;
-    d.technique = std::make_unique<ast::Technique>();
-    if (parse_technique(*d.technique)) out.push_back(std::move(d));
+    d.technique = declarations_.make<ast::Technique>();
+    if (parse_technique(*d.technique)) out.push_back(d);
   } else if (word == "fxgroup") {
     parse_group(out);
   } else if ((word == "cbuffer" || word == "tbuffer") && peek().is(TokenKind::identifier)) {
@@ -293,7 +294,7 @@ bool Parser::parse_attributes(std::vector<std::string>& out) {
 void Parser::parse_glsl_block(std::vector<ast::Decl>& out) {
   uint32_t first = pos_;
   advance();  // GLSLShader
-  auto block = std::make_unique<ast::GlslBlock>();
+  ast::GlslBlock* block = declarations_.make<ast::GlslBlock>();
   if (at(TokenKind::identifier)) {
     block->name.assign(tok().text);
     block->name_range = tok().range();
@@ -304,8 +305,8 @@ void Parser::parse_glsl_block(std::vector<ast::Decl>& out) {
   accept(TokenKind::semi);
   ast::Decl d;
   d.kind = ast::DeclKind::glsl_block;
-  d.glsl_block = std::move(block);
-  out.push_back(std::move(d));
+  d.glsl_block = block;
+  out.push_back(d);
 }
 
 bool is_storage_keyword(std::string_view word, uint32_t& bit) {

@@ -177,8 +177,8 @@ class EffectUnitBuilder {
  private:
   void index_declarations() {
     for (const ast::Decl& d : effect_.decls) {
-      if (d.kind == ast::DeclKind::function) functions_.push_back(d.function.get());
-      if (d.kind == ast::DeclKind::variable) variables_.push_back(d.variable.get());
+      if (d.kind == ast::DeclKind::function) functions_.push_back(d.function);
+      if (d.kind == ast::DeclKind::variable) variables_.push_back(d.variable);
       if (d.kind == ast::DeclKind::glsl_block) glsl_names_.push_back(d.glsl_block->name);
     }
   }

@@ -46,7 +46,7 @@ std::string rendered(const Loaded& l) { return fx::render_text(l.diags.diagnosti
 std::vector<const fx::ast::Technique*> techniques(const fx::ast::Effect& e) {
   std::vector<const fx::ast::Technique*> out;
   for (const auto& d : e.decls)
-    if (d.kind == fx::ast::DeclKind::technique) out.push_back(d.technique.get());
+    if (d.kind == fx::ast::DeclKind::technique) out.push_back(d.technique);
   return out;
 }
 

@@ -358,7 +358,7 @@ TEST(Checker, PartialHandBuiltTreesDoNotCrash) {
   ast::Effect fx;
   ast::Decl d;
   d.kind = ast::DeclKind::technique;
-  d.technique = std::make_unique<ast::Technique>();
+  d.technique = fx.declarations.make<ast::Technique>();
   ast::Pass p;
   ast::StateAssignment no_value;
   no_value.name = "ZEnable";
@@ -378,7 +378,7 @@ TEST(Checker, PartialHandBuiltTreesDoNotCrash) {
   d.technique->passes.push_back(std::move(p));
   d.technique->passes.emplace_back();
   d.technique->passes.emplace_back();  // two unnamed passes are not duplicates
-  fx.decls.push_back(std::move(d));
+  fx.decls.push_back(d);
   SourceManager sm;
   DiagnosticSink diags;
   check_effect(fx, sm, diags, {.profile = EffectProfile::fx_4_0});
