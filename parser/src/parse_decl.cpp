@@ -24,8 +24,11 @@ bool Parser::parse_type(ast::TypeRef& type) {
     return false;
   }
   uint32_t first = pos_;
-  type.name.assign(advance().text);
-  if ((type.name == "unsigned" || type.name == "signed") && at(TokenKind::identifier))
+  // Compared as the token's string_view, which tests the length first: std::string's
+  // compare with a literal calls memcmp for every type name.
+  std::string_view word = advance().text;
+  type.name.assign(word);
+  if ((word == "unsigned" || word == "signed") && at(TokenKind::identifier))
     (type.name += ' ') += advance().text;
   if (at(TokenKind::less) && !parse_template_args(type.template_arg)) return false;
   type.range = range_from(first);
