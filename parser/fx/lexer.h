@@ -76,5 +76,7 @@ std::optional<NumberValue> parse_number(std::string_view spelling, std::string* 
 
 // The contents of a string literal with escapes resolved.
 std::string unquote(std::string_view spelling);
+// The same, appended to `out` (adjacent literals join without a temporary string).
+void append_unquoted(std::string& out, std::string_view spelling);
 
 }  // namespace fx

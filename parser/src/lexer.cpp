@@ -538,10 +538,19 @@ std::optional<NumberValue> parse_number(std::string_view s, std::string* error) 
 }
 
 std::string unquote(std::string_view s) {
+  std::string out;
+  append_unquoted(out, s);
+  return out;
+}
+
+void append_unquoted(std::string& out, std::string_view s) {
   if (s.size() >= 2 && (s.front() == '"' || s.front() == '\'' || s.front() == '<'))
     s = s.substr(1, s.size() - 2);
-  std::string out;
-  out.reserve(s.size());
+  // Most literals have no escape: one append instead of a push_back per character.
+  size_t plain = s.find('\\');
+  out.append(s.substr(0, plain));
+  if (plain == std::string_view::npos) return;
+  s = s.substr(plain);
   for (size_t i = 0; i < s.size(); ++i) {
     if (s[i] != '\\' || i + 1 == s.size()) {
       out.push_back(s[i]);
@@ -555,7 +564,6 @@ std::string unquote(std::string_view s) {
       default: out.push_back(c); break;
     }
   }
-  return out;
 }
 
 }  // namespace fx

@@ -236,7 +236,7 @@ ast::ExprPtr Parser::parse_primary() {
     }
     case TokenKind::string: {
       auto e = make(ast::ExprKind::string_literal, first);
-      while (at(TokenKind::string)) e->text += unquote(advance().text);  // "a" "b" joins
+      while (at(TokenKind::string)) append_unquoted(e->text, advance().text);  // "a" "b" joins
       e->range = range_from(first);
       return e;
     }

@@ -98,6 +98,17 @@ TEST(Lexer, StringsAndCharacters) {
   EXPECT_TRUE(l.diags.diagnostics().empty());
 }
 
+// Adjacent literals join: each is appended after the text so far, with or without escapes.
+TEST(Lexer, AppendUnquotedKeepsTheTextBefore) {
+  std::string out = "ab";
+  append_unquoted(out, R"("plain")");
+  EXPECT_EQ(out, "abplain");
+  append_unquoted(out, R"("x\ty\\")");  // escapes after plain characters
+  EXPECT_EQ(out, "abplainx\ty\\");
+  append_unquoted(out, R"("")");
+  EXPECT_EQ(out, "abplainx\ty\\");
+}
+
 TEST(Lexer, CommentsSetLeadingSpaceAndNewlinesSetLineStart) {
   Lexed l("a/*c*/b // line\nc/* multi\nline */d\n  e");
   EXPECT_EQ(l.spellings(), (S{"a", "b", "c", "d", "e"}));
