@@ -218,9 +218,11 @@ bool Parser::parse_function(ast::Function& f) {
   if (!accept(TokenKind::r_paren)) {
     f.params.reserve(4);
     for (;;) {
-      ast::Variable p;
-      if (!parse_parameter(p)) return false;
-      f.params.push_back(std::move(p));
+      ast::Variable& p = f.params.emplace_back();  // in place, see parse_annotations
+      if (!parse_parameter(p)) {
+        f.params.pop_back();
+        return false;
+      }
       if (accept(TokenKind::comma)) continue;
       if (!at(TokenKind::r_paren)) {
         if (Diagnostic* d = error_here("expected-token",
@@ -290,12 +292,14 @@ bool Parser::parse_member_list(std::vector<ast::Variable>& members, std::string_
     ast::TypeRef type;
     if (parse_type(type)) {
       for (;;) {
-        ast::Variable v;
+        ast::Variable& v = members.emplace_back();  // in place, see parse_annotations
         v.storage = storage;
         v.type = type;
-        if (!parse_declarator_head(v) || !parse_initializer(v)) break;
+        if (!parse_declarator_head(v) || !parse_initializer(v)) {
+          members.pop_back();
+          break;
+        }
         v.range = range_from(first);
-        members.push_back(std::move(v));
         if (!accept(TokenKind::comma)) {
           if (expect_semi("after member declaration"))
             for (size_t i = first_member; i < members.size(); ++i)
