@@ -25,6 +25,14 @@ inline void store_registers(void* to, __m128 r0, __m128 r1, __m128 r2, __m128 r3
 }
 #endif
 
+// `to` = the transpose of the 4x4 matrix at `from` (16 elements each, not overlapping):
+// rows stored as columns, or columns as rows.
+template <class T>
+inline void transpose4x4(const T* from, T* to) {
+  for (uint32_t r = 0; r < 4; ++r)
+    for (uint32_t c = 0; c < 4; ++c) to[r * 4 + c] = from[c * 4 + r];
+}
+
 // Stores a row-stored 4x4 matrix (16 words) at `to` as four column registers (HLSL's
 // default float4x4). The per-object matrices take this path on every draw.
 inline void write_columns4x4(uint8_t* to, const uint32_t* from) {
@@ -37,8 +45,7 @@ inline void write_columns4x4(uint8_t* to, const uint32_t* from) {
   store_registers(to, r0, r1, r2, r3);
 #else
   uint32_t columns[16];
-  for (uint32_t c = 0; c < 4; ++c)
-    for (uint32_t row = 0; row < 4; ++row) columns[c * 4 + row] = from[row * 4 + c];
+  transpose4x4(from, columns);
   std::memcpy(to, columns, sizeof columns);
 #endif
 }
@@ -285,8 +292,7 @@ struct ParameterStore::Impl {
   // per-object path keeps no stack frame for the transposed copy.
   [[gnu::noinline]] void store_columns4x4(const Node& n, const float* v) {
     float rows[16];
-    for (uint32_t r = 0; r < 4; ++r)
-      for (uint32_t c = 0; c < 4; ++c) rows[r * 4 + c] = v[c * 4 + r];
+    transpose4x4(v, rows);
     store_floats(n, rows);
   }
   // The copy of store_floats: true when a bit changed. One pass, no branch per word.
@@ -354,8 +360,7 @@ inline void ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
 #else
   float rows[16];
   if constexpr (v_columns) {
-    for (uint32_t r = 0; r < 4; ++r)
-      for (uint32_t c = 0; c < 4; ++c) rows[r * 4 + c] = v[c * 4 + r];
+    transpose4x4(v, rows);
     v = rows;
   }
   if (!copy_words(held, v, 16)) return;
