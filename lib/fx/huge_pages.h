@@ -1,6 +1,6 @@
 // Transparent huge pages for the front end's large, freshly written arrays (the token
 // stream of a 10 MB effect is 56 MB). Each 4 KB page written for the first time costs a
-// page fault that zeroes it; on a 10 MB effect those faults were a third of the
+// page fault that zeroes it; on a 10 MB effect those faults were about half of the
 // preprocessor's wall time. With 2 MB pages there are 512 times fewer.
 #pragma once
 #include <cstddef>
