@@ -12,6 +12,7 @@ struct BenchArgs {
   bool json = false;
   std::string effects_dir = "effects";  // compile: the effects to load
   std::string fxh;  // accuracy: write technique cost/error annotations here
+  int processes = 1;  // > 1: the benchmark in that many fresh processes, median ratio
 };
 
 int bench_frontend(const BenchArgs& args);
@@ -23,5 +24,7 @@ int bench_reload(const BenchArgs& args);
 int bench_apply(const BenchArgs& args);
 // `fxkit bench accuracy`: error vs double reference and GPU ns/pixel per approximation.
 int bench_accuracy(const BenchArgs& args);
+// `fxkit bench MODE --processes N`: MODE in N fresh processes, the median of their ratios.
+int bench_processes(const BenchArgs& args);
 
 }  // namespace fxkit

@@ -1,4 +1,4 @@
-// `fxkit bench frontend [--size-mb N] [--repeats N] [--json]`
+// `fxkit bench MODE [--size-mb N] [--repeats N] [--processes N] [--json]`
 #include <cstdio>
 
 #include "bench.h"
@@ -19,8 +19,17 @@ void register_bench(CLI::App& app, Runner& run) {
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--fxh", args->fxh, "accuracy: write technique cost/error annotations to FILE");
+  cmd->add_option("--processes", args->processes,
+                  "Run the benchmark in N fresh processes and report the median ratio (one process "
+                  "measures one memory layout)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
   cmd->add_flag("--json", args->json, "Print the results as JSON");
   cmd->callback([args, &run] {
+    if (args->processes > 1) {
+      run = [args] { return bench_processes(*args); };
+      return;
+    }
 #ifdef FXKIT_HAS_RUNTIME
     if (args->mode == "apply") {
       run = [args] { return bench_apply(*args); };
