@@ -64,6 +64,10 @@ enum class VulkanArea : uint8_t {
 };
 std::string_view to_string(VulkanArea area);
 
+// A pipeline stage, in D3D names: the stage a shader state or a shader object sets.
+enum class PassStage : uint8_t { vertex, pixel, geometry, hull, domain, compute };
+std::string_view to_string(PassStage stage);
+
 // One named value of an enumeration; several names may share a value (D3D9 and D3D10
 // spellings).
 struct EnumValue {
@@ -92,6 +96,7 @@ struct StateInfo {
   VulkanMeaning vulkan = VulkanMeaning::maps_to_vulkan;
   VulkanArea area = VulkanArea::none;
   std::string_view object_kind;  // state_object: the block the argument must be
+  std::optional<PassStage> stage;  // shader states: the stage whose code they name
 };
 
 // Every row, grouped by block.
@@ -100,6 +105,18 @@ std::span<const StateInfo> all_states();
 const StateInfo* find_state(std::string_view name, StateBlock block);
 // The value of an enumeration name for a state with enums (see EnumSet for spellings).
 std::optional<int64_t> find_enum(const StateInfo& state, std::string_view name);
+// The stage a pass state naming shader code sets, from its row (any case): VertexShader,
+// PixelShader, GeometryShader, HullShader, DomainShader, ComputeShader, the D3D10/11 calls
+// SetVertexShader ... SetComputeShader, and the GLSL blocks' FragmentShader with the nvFX
+// spellings VertexProgram, FragmentProgram, GeometryProgram, ComputeProgram. nullopt for
+// any other name.
+std::optional<PassStage> shader_state_stage(std::string_view state);
+// The stage a shader object type holds (`VertexShader vs = compile vs_2_0 VS();`): the
+// six D3D types, any case; nullopt for other types.
+std::optional<PassStage> shader_type_stage(std::string_view type);
+// A stage's shader type as D3D spells it ("VertexShader") and its profile prefix ("vs").
+std::string_view shader_type_name(PassStage stage);
+std::string_view profile_prefix(PassStage stage);
 // The state names of a block (for did-you-mean).
 std::vector<std::string_view> state_names(StateBlock block);
 // The value names a state accepts (for did-you-mean), in the table's spelling.

@@ -11,9 +11,6 @@ namespace {
 bool starts_with_i(std::string_view s, std::string_view prefix) {
   return s.size() >= prefix.size() && iequals(s.substr(0, prefix.size()), prefix);
 }
-bool ends_with_i(std::string_view s, std::string_view suffix) {
-  return s.size() >= suffix.size() && iequals(s.substr(s.size() - suffix.size()), suffix);
-}
 
 bool is_object_type(StateValueType t) {
   return t == StateValueType::texture || t == StateValueType::sampler ||
@@ -52,16 +49,6 @@ const std::vector<std::string>& shader_profiles() {
     return p;
   }();
   return profiles;
-}
-
-// The profile prefix a shader state needs: VertexShader / SetVertexShader -> "vs".
-std::string_view expected_stage(std::string_view state) {
-  static constexpr std::pair<std::string_view, std::string_view> kStages[] = {
-      {"VertexShader", "vs"}, {"PixelShader", "ps"}, {"GeometryShader", "gs"},
-      {"HullShader", "hs"}, {"DomainShader", "ds"}, {"ComputeShader", "cs"}};
-  for (auto [suffix, stage] : kStages)
-    if (ends_with_i(state, suffix)) return stage;
-  return {};
 }
 
 bool is_compile_call(const ast::Expr& e) {
@@ -414,7 +401,7 @@ void Checker::check_symbol_type(const StateInfo& info, const Symbol& s, const as
     case StateValueType::texture: ok = variable && starts_with_i(s.type, "texture"); break;
     case StateValueType::sampler: ok = variable && starts_with_i(s.type, "sampler"); break;
     case StateValueType::shader:
-      ok = s.kind == Symbol::glsl_block || (variable && ends_with_i(s.type, "shader"));
+      ok = s.kind == Symbol::glsl_block || (variable && shader_type_stage(s.type));
       break;
     case StateValueType::state_object:
       ok = (s.kind == Symbol::state_object || variable) &&
@@ -423,7 +410,7 @@ void Checker::check_symbol_type(const StateInfo& info, const Symbol& s, const as
     default: {
       std::string type = ascii_lower(s.type);
       bool object_var = type.rfind("texture", 0) == 0 || type.rfind("sampler", 0) == 0 ||
-                        type == "string" || ends_with_i(type, "shader");
+                        type == "string" || shader_type_stage(type);
       ok = variable && !object_var;
       break;
     }
@@ -473,7 +460,7 @@ void Checker::check_compile(const StateInfo& info, std::string_view profile,
     if (!guess.empty())
       if (std::optional<SourceRange> at = word_in(sm_, profile_range, profile))
         d.fixits.push_back({*at, guess});
-  } else if (std::string_view stage = expected_stage(info.name);
+  } else if (std::string_view stage = info.stage ? profile_prefix(*info.stage) : std::string_view();
              !stage.empty() && !starts_with_i(profile, stage)) {
     diags_.error("shader-stage-mismatch", profile_range,
                  "state " + quote(info.name) + " needs a " + std::string(stage) +

@@ -157,7 +157,6 @@ class Parser {
 // Keyword tests shared by the parts.
 bool is_storage_keyword(std::string_view word, uint32_t& bit);
 bool is_state_object_kind(std::string_view word);
-bool is_shader_state(std::string_view state_name);
 std::string quote(std::string_view text);  // 'text' for messages
 std::string describe(const Token& t);      // 'text', or "end of file"
 // Appends a token's spelling to text rebuilt from tokens, with a space between words.

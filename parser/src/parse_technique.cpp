@@ -1,6 +1,7 @@
 // Effect blocks: annotations, techniques, passes, state assignments and fxgroups.
 #include <utility>
 
+#include "fx/state_table.h"
 #include "parse_internal.h"
 
 namespace fx::detail {
@@ -165,7 +166,7 @@ bool Parser::parse_state(ast::StateAssignment& s) {
   advance();
   s.value = parse_assignment();
   if (failed_) return false;
-  if (s.value->kind == ast::ExprKind::init_list && is_shader_state(s.name) &&
+  if (s.value->kind == ast::ExprKind::init_list && shader_state_stage(s.name) &&
       !s.value->args.empty()) {
     // `VertexShader = { Common, Lighting };` names GLSL blocks joined into one stage.
     bool names_only = true;

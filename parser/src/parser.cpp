@@ -351,12 +351,5 @@ bool is_state_object_kind(std::string_view word) {
          iequals(word, "SamplerComparisonState");
 }
 
-bool is_shader_state(std::string_view name) {
-  for (std::string_view s : {"VertexShader", "PixelShader", "GeometryShader", "HullShader",
-                             "DomainShader", "ComputeShader", "FragmentShader"})
-    if (iequals(name, s)) return true;
-  return false;
-}
-
 }  // namespace detail
 }  // namespace fx

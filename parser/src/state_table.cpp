@@ -195,6 +195,34 @@ const StateInfo* find_state(std::string_view name, StateBlock block) {
   return state_index().find(name, block);
 }
 
+namespace {
+constexpr std::string_view kShaderTypes[] = {"VertexShader", "PixelShader", "GeometryShader",
+                                             "HullShader",   "DomainShader", "ComputeShader"};
+}  // namespace
+
+std::string_view to_string(PassStage stage) {
+  static constexpr std::string_view kNames[] = {"vertex", "pixel", "geometry", "hull", "domain", "compute"};
+  return kNames[static_cast<size_t>(stage)];
+}
+
+std::optional<PassStage> shader_state_stage(std::string_view state) {
+  const StateInfo* row = find_state(state, StateBlock::pass);
+  return row ? row->stage : std::nullopt;
+}
+
+std::optional<PassStage> shader_type_stage(std::string_view type) {
+  for (size_t s = 0; s < std::size(kShaderTypes); ++s)
+    if (iequals(type, kShaderTypes[s])) return static_cast<PassStage>(s);
+  return std::nullopt;
+}
+
+std::string_view shader_type_name(PassStage stage) { return kShaderTypes[static_cast<size_t>(stage)]; }
+
+std::string_view profile_prefix(PassStage stage) {
+  static constexpr std::string_view kPrefixes[] = {"vs", "ps", "gs", "hs", "ds", "cs"};
+  return kPrefixes[static_cast<size_t>(stage)];
+}
+
 std::optional<int64_t> find_enum(const StateInfo& state, std::string_view name) {
   const EnumSet* set = state.enums;
   if (!set && state.type == StateValueType::boolean) set = &state_data::kBoolean;

@@ -47,6 +47,14 @@ constexpr StateInfo call(std::string_view name, T type, A area, uint8_t args,
   return s;
 }
 
+// A pass call or assignment that binds the shader of `stage`.
+constexpr StateInfo shader_call(std::string_view name, PassStage stage, uint8_t args,
+                                StateApi api = StateApi::d3d10) {
+  StateInfo s = call(name, T::shader, A::shader_stage, args, api);
+  s.stage = stage;
+  return s;
+}
+
 }  // namespace
 
 std::span<const StateInfo> d3d10_states() {
@@ -100,12 +108,12 @@ std::span<const StateInfo> d3d10_states() {
       sampler("MaxLOD", T::floating),
       field("Texture", StateBlock::sampler_object, T::texture, A::resource_binding),
 
-      call("SetVertexShader", T::shader, A::shader_stage, 1),
-      call("SetPixelShader", T::shader, A::shader_stage, 1),
-      call("SetGeometryShader", T::shader, A::shader_stage, 1),
-      call("SetHullShader", T::shader, A::shader_stage, 1, StateApi::d3d11),
-      call("SetDomainShader", T::shader, A::shader_stage, 1, StateApi::d3d11),
-      call("SetComputeShader", T::shader, A::shader_stage, 1, StateApi::d3d11),
+      shader_call("SetVertexShader", PassStage::vertex, 1),
+      shader_call("SetPixelShader", PassStage::pixel, 1),
+      shader_call("SetGeometryShader", PassStage::geometry, 1),
+      shader_call("SetHullShader", PassStage::hull, 1, StateApi::d3d11),
+      shader_call("SetDomainShader", PassStage::domain, 1, StateApi::d3d11),
+      shader_call("SetComputeShader", PassStage::compute, 1, StateApi::d3d11),
       // (state, blend factor float4, sample mask)
       call("SetBlendState", T::state_object, A::color_blend, 3, StateApi::d3d10, "BlendState"),
       // (state, stencil reference)
@@ -114,10 +122,10 @@ std::span<const StateInfo> d3d10_states() {
       call("SetRasterizerState", T::state_object, A::rasterization, 1, StateApi::d3d10,
            "RasterizerState"),
       // FX10/FX11 also accept the assignment form of the pass calls (EffectStates11.h).
-      call("GeometryShader", T::shader, A::shader_stage, 0),
-      call("HullShader", T::shader, A::shader_stage, 0, StateApi::d3d11),
-      call("DomainShader", T::shader, A::shader_stage, 0, StateApi::d3d11),
-      call("ComputeShader", T::shader, A::shader_stage, 0, StateApi::d3d11),
+      shader_call("GeometryShader", PassStage::geometry, 0),
+      shader_call("HullShader", PassStage::hull, 0, StateApi::d3d11),
+      shader_call("DomainShader", PassStage::domain, 0, StateApi::d3d11),
+      shader_call("ComputeShader", PassStage::compute, 0, StateApi::d3d11),
       call("BlendState", T::state_object, A::color_blend, 0, StateApi::d3d10, "BlendState"),
       call("DepthStencilState", T::state_object, A::depth_stencil, 0, StateApi::d3d10,
            "DepthStencilState"),

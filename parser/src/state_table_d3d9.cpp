@@ -37,6 +37,12 @@ constexpr StateInfo rsi(std::string_view name, T type, M meaning, A area, uint16
                         const EnumSet* enums = nullptr, bool required = false) {
   return row(name, StateBlock::pass, type, meaning, area, enums, count, required);
 }
+// A shader state: the code of `stage` (`compile ps_2_0 PS()`, `asm { }`, GLSL blocks).
+constexpr StateInfo shader(std::string_view name, PassStage stage) {
+  StateInfo s = rs(name, T::shader, M::maps_to_vulkan, A::shader_stage);
+  s.stage = stage;
+  return s;
+}
 // Fixed-function state (texture stages, fog, lighting, transforms): parsed, never applied.
 constexpr StateInfo ff(std::string_view name, T type, const EnumSet* enums = nullptr,
                        uint16_t count = 0) {
@@ -112,8 +118,14 @@ std::span<const StateInfo> d3d9_pass_states() {
       rs("MultiSampleAntialias", T::boolean, M::maps_to_vulkan, A::multisample),
       rs("MultiSampleMask", T::integer, M::maps_to_vulkan, A::multisample),
       // Shaders, constants and resources.
-      rs("VertexShader", T::shader, M::maps_to_vulkan, A::shader_stage),
-      rs("PixelShader", T::shader, M::maps_to_vulkan, A::shader_stage),
+      shader("VertexShader", PassStage::vertex),
+      shader("PixelShader", PassStage::pixel),
+      // The GLSL blocks' spellings (`FragmentShader = { Common, HairFS };`), and nvFX's.
+      shader("FragmentShader", PassStage::pixel),
+      shader("VertexProgram", PassStage::vertex),
+      shader("FragmentProgram", PassStage::pixel),
+      shader("GeometryProgram", PassStage::geometry),
+      shader("ComputeProgram", PassStage::compute),
       constants("VertexShaderConstant", 256), constants("VertexShaderConstantF", 256),
       constants("VertexShaderConstantB", 16), constants("VertexShaderConstantI", 16),
       constants("VertexShaderConstant1", 256), constants("VertexShaderConstant2", 256),

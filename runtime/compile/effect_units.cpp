@@ -6,6 +6,7 @@
 #include "effect_shader_text.h"
 #include "fx/ascii_case.h"
 #include "fx/compile/hlsl_compat.h"
+#include "fx/state_table.h"
 
 namespace fx {
 
@@ -27,38 +28,30 @@ const StageUnit* EffectPass::find(ShaderStage stage) const {
 
 namespace {
 
-// The pipeline stage a pass state sets: D3D9 assignments, D3D10/11 calls, nvFX names.
+// The pipeline stage a pass state sets (the state table's rows: D3D9 assignments, D3D10/11
+// calls, the GLSL and nvFX spellings), in the compiler's names.
 std::optional<ShaderStage> stage_of_state(std::string_view name) {
-  if (name.size() > 3 && iequals(name.substr(0, 3), "set")) name.remove_prefix(3);
-  struct Row { std::string_view name; ShaderStage stage; };
-  static constexpr Row kRows[] = {
-      {"VertexShader", ShaderStage::vertex},       {"VertexProgram", ShaderStage::vertex},
-      {"PixelShader", ShaderStage::fragment},      {"FragmentShader", ShaderStage::fragment},
-      {"FragmentProgram", ShaderStage::fragment},  {"GeometryShader", ShaderStage::geometry},
-      {"GeometryProgram", ShaderStage::geometry},  {"HullShader", ShaderStage::tess_control},
-      {"DomainShader", ShaderStage::tess_evaluation}, {"ComputeShader", ShaderStage::compute},
-      {"ComputeProgram", ShaderStage::compute},
-  };
-  for (const Row& r : kRows)
-    if (iequals(name, r.name)) return r.stage;
+  const std::optional<PassStage> stage = shader_state_stage(name);
+  if (!stage) return std::nullopt;
+  switch (*stage) {
+    case PassStage::vertex: return ShaderStage::vertex;
+    case PassStage::pixel: return ShaderStage::fragment;
+    case PassStage::geometry: return ShaderStage::geometry;
+    case PassStage::hull: return ShaderStage::tess_control;
+    case PassStage::domain: return ShaderStage::tess_evaluation;
+    case PassStage::compute: return ShaderStage::compute;
+  }
   return std::nullopt;
 }
 
 // Effect-only variable types: glslang has no such HLSL types (D3D9 texture objects,
 // strings, shader objects). D3D10's `Texture2D` is real HLSL and stays.
 bool is_effect_only_type(std::string_view type) {
-  for (std::string_view t : {"texture", "string", "VertexShader", "PixelShader", "GeometryShader",
-                             "HullShader", "DomainShader", "ComputeShader", "stateblock"})
+  if (shader_type_stage(type)) return true;
+  for (std::string_view t : {"texture", "string", "stateblock"})
     if (iequals(type, t)) return true;
   for (std::string_view t : {"texture1D", "texture2D", "texture3D", "textureCUBE"})
     if (type == t) return true;
-  return false;
-}
-
-bool is_shader_object_type(std::string_view type) {
-  for (std::string_view t : {"VertexShader", "PixelShader", "GeometryShader", "HullShader",
-                             "DomainShader", "ComputeShader"})
-    if (iequals(type, t)) return true;
   return false;
 }
 
@@ -407,7 +400,7 @@ class EffectUnitBuilder {
 
   const ast::Variable* shader_variable(std::string_view name) const {
     for (const ast::Variable* v : variables_)
-      if (v->name == name && is_shader_object_type(v->type.name)) return v;
+      if (v->name == name && shader_type_stage(v->type.name)) return v;
     return nullptr;
   }
 

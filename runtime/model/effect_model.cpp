@@ -271,18 +271,6 @@ const Annotation* find_annotation(const std::vector<Annotation>& list, std::stri
   return nullptr;
 }
 
-std::string_view to_string(PassStage stage) {
-  switch (stage) {
-    case PassStage::vertex: return "vertex";
-    case PassStage::pixel: return "pixel";
-    case PassStage::geometry: return "geometry";
-    case PassStage::hull: return "hull";
-    case PassStage::domain: return "domain";
-    case PassStage::compute: return "compute";
-  }
-  return "?";
-}
-
 const ShaderBinding* PassInfo::shader(PassStage stage) const {
   for (const ShaderBinding& s : shaders)
     if (s.stage == stage) return &s;

@@ -12,18 +12,6 @@
 namespace fx::model_detail {
 namespace {
 
-std::optional<PassStage> stage_of(std::string_view state) {
-  std::string n = ascii_lower(state);
-  if (n.starts_with("set")) n = n.substr(3);
-  if (n == "vertexshader" || n == "vertexprogram") return PassStage::vertex;
-  if (n == "pixelshader" || n == "fragmentshader" || n == "fragmentprogram") return PassStage::pixel;
-  if (n == "geometryshader") return PassStage::geometry;
-  if (n == "hullshader") return PassStage::hull;
-  if (n == "domainshader") return PassStage::domain;
-  if (n == "computeshader") return PassStage::compute;
-  return std::nullopt;
-}
-
 // `(.5f, .5f, .5f, .5f)` parses as a comma expression: collect its operands in order.
 void flatten_comma(const ast::Expr& e, std::vector<const ast::Expr*>& out) {
   if (e.kind == ast::ExprKind::binary && e.text == "," && e.args.size() == 2 && e.args[0] && e.args[1]) {
@@ -331,7 +319,7 @@ bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveConte
       return true;
     }
     case StateValueType::shader: {
-      auto stage = stage_of(info->name);
+      const std::optional<PassStage> stage = info->stage;
       if (!stage) return false;
       ShaderBinding b = shader_from(*value, *stage, ctx);
       out.kind = b.source == ShaderSource::null && is_null(*value) ? StateValueKind::null : StateValueKind::shader;

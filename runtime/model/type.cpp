@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "fx/model/value.h"
+#include "fx/state_table.h"
 #include "model_internal.h"
 
 namespace fx {
@@ -93,10 +94,8 @@ std::optional<Type> object_name(std::string_view name, std::string_view template
       t.sampler = shape;
       return t;
     }
-  static const char* shaders[] = {"VertexShader", "PixelShader", "GeometryShader", "HullShader", "DomainShader",
-                                  "ComputeShader"};
-  for (const char* s : shaders)
-    if (iequals(n, s)) return object_type(TypeClass::shader, s);
+  if (std::optional<PassStage> stage = shader_type_stage(n))
+    return object_type(TypeClass::shader, std::string(shader_type_name(*stage)));
   static const char* objects[] = {"BlendState", "DepthStencilState", "RasterizerState"};
   for (const char* s : objects)
     if (iequals(n, s)) return object_type(TypeClass::state_object, s);

@@ -10,6 +10,7 @@
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/spirv_cache.h"
 #include "fx/diagnostic_render.h"
+#include "fx/state_table.h"
 
 namespace fxkit {
 namespace {
@@ -36,11 +37,6 @@ bool is_texture_type(std::string_view type) {
 bool is_sampler_type(std::string_view type) {
   std::string t = lower(type);
   return t.rfind("sampler", 0) == 0 && t != "sampler_state";
-}
-bool is_shader_type(std::string_view type) {
-  std::string t = lower(type);
-  return t == "vertexshader" || t == "pixelshader" || t == "geometryshader" || t == "hullshader" ||
-         t == "domainshader" || t == "computeshader";
 }
 
 std::string type_name(const fx::ast::TypeRef& t) {
@@ -232,7 +228,7 @@ int run_info(const InfoArgs& args) {
   for (const fx::ast::Decl& d : parsed.ast.decls) {
     if (d.kind == fx::ast::DeclKind::variable) {
       const fx::ast::Variable& v = *d.variable;
-      if (is_shader_type(v.type.name)) continue;
+      if (fx::shader_type_stage(v.type.name)) continue;
       if (is_texture_type(v.type.name)) {
         textures.push_back({{"name", v.name}, {"type", type_name(v.type)}, {"semantic", v.semantic},
                             {"annotations", annotations(v.annotations)}, {"location", location(sm, v.name_range)}});

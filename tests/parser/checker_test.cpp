@@ -353,6 +353,28 @@ TEST(Checker, GlslBlocksAsShaders) {
             "use of undefined GLSL block 'Lightning'; did you mean 'Lighting'?");
 }
 
+// docs/effect-format.md's GLSL example, and every stage spelling the state table gives.
+TEST(Checker, GlslBlocksTakeEveryStageSpelling) {
+  auto c = check(
+      "GLSLShader Common { uniform vec3 LightDir; varying vec3 T, V; }\n"
+      "GLSLShader HairVS { void main() { gl_Position = vec4(0.0); } }\n"
+      "GLSLShader HairFS { void main() { gl_FragColor = vec4(LightDir, 1.0); } }\n"
+      "technique Hair { pass p0 { VertexShader = HairVS; FragmentShader = { Common, HairFS }; } }\n"
+      "technique nvfx { pass p0 { VertexProgram = HairVS; FragmentProgram = { Common, HairFS }; } }\n");
+  EXPECT_EQ(c->ids(), Ids{}) << c->text();
+}
+
+TEST(Checker, CompileProfileMatchesTheStageOfEverySpelling) {
+  auto c = check(
+      "float4 VS() : POSITION { return 0; }\n"
+      "float4 PS() : COLOR { return 0; }\n"
+      "technique a { pass p { VertexShader = compile vs_2_0 VS(); FragmentShader = compile vs_2_0 PS(); } }\n"
+      "technique b { pass p { VertexProgram = compile ps_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n");
+  ASSERT_EQ(c->ids(), (Ids{"shader-stage-mismatch", "shader-stage-mismatch"})) << c->text();
+  EXPECT_EQ(c->diags.diagnostics()[0].message, "state 'FragmentShader' needs a ps_* profile, found 'vs_2_0'");
+  EXPECT_EQ(c->diags.diagnostics()[1].message, "state 'VertexProgram' needs a vs_* profile, found 'ps_2_0'");
+}
+
 // The checker must take whatever a failed parse leaves: missing values, names, indices.
 TEST(Checker, PartialHandBuiltTreesDoNotCrash) {
   ast::Effect fx;

@@ -6,6 +6,9 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <tuple>
+
+#include "fx/ascii_case.h"
 
 namespace fx {
 namespace {
@@ -174,6 +177,43 @@ TEST(StateTable, StateObjectBlocks) {
   EXPECT_EQ(state_object_block("samplercomparisonstate"), StateBlock::sampler_object);
   EXPECT_EQ(state_object_block("Texture2D"), std::nullopt);
   for (int b = 0; b < kStateBlockCount; ++b) EXPECT_FALSE(state_names(StateBlock(b)).empty());
+}
+
+// One table says which states name shader code and for which stage: the checker's profile
+// rule, the parser's GLSL lists and the runtime's stage resolution all read it.
+TEST(StateTable, ShaderStatesCarryTheirStage) {
+  const std::pair<std::string_view, PassStage> cases[] = {
+      {"VertexShader", PassStage::vertex},      {"pixelshader", PassStage::pixel},
+      {"FragmentShader", PassStage::pixel},     {"VERTEXPROGRAM", PassStage::vertex},
+      {"FragmentProgram", PassStage::pixel},    {"GeometryProgram", PassStage::geometry},
+      {"ComputeProgram", PassStage::compute},   {"SetVertexShader", PassStage::vertex},
+      {"SetPixelShader", PassStage::pixel},     {"setgeometryshader", PassStage::geometry},
+      {"SetHullShader", PassStage::hull},       {"SetDomainShader", PassStage::domain},
+      {"SetComputeShader", PassStage::compute}, {"GeometryShader", PassStage::geometry},
+      {"HullShader", PassStage::hull},          {"DomainShader", PassStage::domain},
+      {"ComputeShader", PassStage::compute}};
+  for (auto [name, stage] : cases) EXPECT_EQ(shader_state_stage(name), stage) << name;
+  for (std::string_view name : {"ZEnable", "VertexShaderConstant", "SetBlendState", "Shader", ""})
+    EXPECT_EQ(shader_state_stage(name), std::nullopt) << name;
+  // Every row naming shader code has a stage, and only those rows.
+  for (const StateInfo& s : all_states())
+    EXPECT_EQ(s.stage.has_value(), s.type == StateValueType::shader) << s.name;
+}
+
+TEST(StateTable, ShaderObjectTypesAndProfilePrefixes) {
+  const std::tuple<PassStage, std::string_view, std::string_view> stages[] = {
+      {PassStage::vertex, "VertexShader", "vs"}, {PassStage::pixel, "PixelShader", "ps"},
+      {PassStage::geometry, "GeometryShader", "gs"}, {PassStage::hull, "HullShader", "hs"},
+      {PassStage::domain, "DomainShader", "ds"},   {PassStage::compute, "ComputeShader", "cs"}};
+  for (auto [stage, type, prefix] : stages) {
+    EXPECT_EQ(shader_type_name(stage), type);
+    EXPECT_EQ(profile_prefix(stage), prefix);
+    EXPECT_EQ(shader_type_stage(type), stage);
+    EXPECT_EQ(shader_type_stage(ascii_lower(type)), stage);
+  }
+  EXPECT_EQ(to_string(PassStage::pixel), "pixel");
+  for (std::string_view type : {"FragmentShader", "texture", "shader", "VertexShaders"})
+    EXPECT_EQ(shader_type_stage(type), std::nullopt) << type;
 }
 
 TEST(StateTable, DocIsCurrent) {

@@ -80,9 +80,6 @@ struct SamplerInfo {
 
 // Where a shader binding comes from.
 enum class ShaderSource : uint8_t { hlsl_compile, glsl_blocks, asm_block, null };
-// Pipeline stage, in D3D names.
-enum class PassStage : uint8_t { vertex, pixel, geometry, hull, domain, compute };
-std::string_view to_string(PassStage stage);
 
 // One shader a pass binds: `compile ps_2_0 PS(true, 3)`, `SetPixelShader(CompileShader(
 // ps_4_0, PS()))`, `PixelShader = asm {...}`, `VertexShader = { Common, VS }` (GLSL
