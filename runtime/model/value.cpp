@@ -1,4 +1,5 @@
 // Values and D3D initializer conversions.
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -24,10 +25,13 @@ std::string number_text(double v, BaseType base) {
   char buf[64];
   if (base == BaseType::int32 || base == BaseType::uint32) {
     std::snprintf(buf, sizeof buf, "%.0f", v);
-  } else {
-    std::snprintf(buf, sizeof buf, "%.9g", v);
+    return buf;
   }
-  return buf;
+  // The shortest spelling that reads back as the same value: a float parameter's 0.8 is
+  // held as 0.800000011920929 and prints as 0.8, a double's as 0.8 only if it is 0.8.
+  const std::to_chars_result r = base == BaseType::float64 ? std::to_chars(buf, buf + sizeof buf, v)
+                                                           : std::to_chars(buf, buf + sizeof buf, static_cast<float>(v));
+  return std::string(buf, r.ptr);
 }
 
 }  // namespace

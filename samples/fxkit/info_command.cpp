@@ -10,6 +10,7 @@
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/spirv_cache.h"
 #include "fx/diagnostic_render.h"
+#include "fx/model/effect_model.h"
 #include "fx/state_table.h"
 
 namespace fxkit {
@@ -145,8 +146,9 @@ std::optional<Placement> find_placement(const std::vector<const fx::PassProgram*
   return std::nullopt;
 }
 
+// `model`: the effect model's parameter for `v` (its folded default), or null.
 json parameter_json(const fx::ast::Variable& v, const std::string& cbuffer, const fx::SourceManager& sm,
-                    const std::vector<const fx::PassProgram*>& programs) {
+                    const std::vector<const fx::PassProgram*>& programs, const fx::Parameter* model) {
   json dims = json::array();
   for (const fx::ast::ExprPtr& d : v.array_dims) dims.push_back(d ? fx::spell_expression(*d) : "");
   json j = {{"name", v.name},
@@ -157,6 +159,10 @@ json parameter_json(const fx::ast::Variable& v, const std::string& cbuffer, cons
             {"annotations", annotations(v.annotations)},
             {"location", location(sm, v.name_range)}};
   j["default"] = v.initializer ? json(fx::spell_expression(*v.initializer)) : json(nullptr);
+  const std::optional<fx::Value>* folded = model ? &model->default_value : nullptr;
+  const bool numeric = folded && *folded && (*folded)->is_numeric();
+  j["value"] = numeric ? json((*folded)->components) : json(nullptr);
+  j["value_text"] = folded && *folded ? json((*folded)->to_string()) : json(nullptr);
   j["cbuffer"] = cbuffer.empty() ? json(nullptr) : json(cbuffer);
   std::optional<Placement> at = find_placement(programs, v.name);
   j["block"] = at ? json(at->block) : json(nullptr);
@@ -187,6 +193,14 @@ int run_info(const InfoArgs& args) {
   fx::EffectPrograms programs(units, compiler, sm);
   std::vector<const fx::PassProgram*> compiled;
   for (const fx::EffectPass& p : units.passes()) compiled.push_back(&programs.program(p));
+  // Folded defaults. The model's own diagnostics repeat the front end's, which are reported.
+  fx::DiagnosticSink model_diags;
+  const fx::EffectModel model = fx::build_effect_model(parsed.ast, sm, model_diags);
+  auto model_parameter = [&](const fx::ast::Variable& v) -> const fx::Parameter* {
+    for (const fx::Parameter& p : model.parameters)
+      if (p.decl == &v) return &p;
+    return nullptr;
+  };
 
   json parameters = json::array(), textures = json::array(), samplers = json::array();
   json techniques = json::array();
@@ -242,11 +256,11 @@ int run_info(const InfoArgs& args) {
         }
         samplers.push_back(std::move(j));
       } else {
-        parameters.push_back(parameter_json(v, "", sm, compiled));
+        parameters.push_back(parameter_json(v, "", sm, compiled, model_parameter(v)));
       }
     } else if (d.kind == fx::ast::DeclKind::constant_buffer) {
       for (const fx::ast::Variable& m : d.constant_buffer->members)
-        parameters.push_back(parameter_json(m, d.constant_buffer->name, sm, compiled));
+        parameters.push_back(parameter_json(m, d.constant_buffer->name, sm, compiled, model_parameter(m)));
     } else if (d.kind == fx::ast::DeclKind::state_object && lower(d.state_object->kind).rfind("sampler", 0) == 0) {
       const fx::ast::StateObject& so = *d.state_object;
       samplers.push_back({{"name", so.name}, {"type", so.kind}, {"annotations", annotations(so.annotations)},

@@ -129,6 +129,19 @@ TEST(FxkitInfo, JsonMatchesTheSchemaAndReflectsTheEffect) {
       EXPECT_EQ(p["annotations"].size(), 3u);
     }
   EXPECT_TRUE(gloss);
+  // Defaults as written and folded to the parameter's type.
+  auto parameter = [&](const std::string& name) {
+    for (const json& p : doc["parameters"])
+      if (p["name"] == name) return p;
+    return json();
+  };
+  const json dir = parameter("g_LightDir"), range = parameter("g_Range"), lights = parameter("g_nNumLights");
+  EXPECT_EQ(dir["default"], "{0.577f, (-0.577f), 0.577f}");  // spell_expression brackets unary operands
+  EXPECT_EQ(dir["value"].get<std::vector<double>>(), (std::vector<double>{double(0.577f), double(-0.577f), double(0.577f)}));
+  EXPECT_EQ(range["value"].get<std::vector<double>>(), (std::vector<double>{0, 1, 0, 2}));
+  EXPECT_EQ(lights["value"].get<std::vector<double>>(), std::vector<double>{1});
+  EXPECT_EQ(lights["value_text"], "1");
+  EXPECT_TRUE(parameter("g_mWorld")["value"].is_null());
   ASSERT_EQ(doc["samplers"].size(), 2u);
   EXPECT_EQ(doc["samplers"][0]["texture"], "g_MeshTexture");
   ASSERT_EQ(doc["techniques"].size(), 3u);

@@ -125,5 +125,27 @@ TEST(ModelFold, DirectFolderApi) {
   EXPECT_EQ(as_float->to_string(), "float2(20, 20)");
 }
 
+// Values print as the shortest text that reads back as the value held: a float's 0.8 is
+// 0.800000011920929 in a double and still prints 0.8. A double prints all the digits its
+// value needs: `0.1 + 0.2` adds two float literals (HLSL's unsuffixed literals are float),
+// so the double holds the float sum exactly.
+TEST(ModelFold, ValuesPrintTheirShortestRoundTripSpelling) {
+  auto b = test::build("float f = 0.8; float3 d = {0.577, -0.577, 1e-7}; double x = 0.1 + 0.2; "
+                       "half h = 0.1; int i = 7.9; bool t = 2; float big = 3e38;");
+  EXPECT_EQ(test::param(*b, "f").default_value->to_string(), "0.8");
+  EXPECT_EQ(test::param(*b, "d").default_value->to_string(), "float3(0.577, -0.577, 1e-07)");
+  EXPECT_EQ(test::param(*b, "x").default_value->to_string(), "0.30000001192092896");
+  EXPECT_EQ(test::param(*b, "i").default_value->to_string(), "7");
+  EXPECT_EQ(test::param(*b, "t").default_value->to_string(), "true");
+  EXPECT_EQ(test::param(*b, "big").default_value->to_string(), "3e+38");
+  // Every spelling reads back as the value held, in the parameter's own precision.
+  for (const char* name : {"f", "h", "big"}) {
+    const Value& v = *test::param(*b, name).default_value;
+    EXPECT_EQ(std::stof(v.to_string()), static_cast<float>(v.number())) << name;
+  }
+  const Value& x = *test::param(*b, "x").default_value;
+  EXPECT_EQ(std::stod(x.to_string()), x.number());
+}
+
 }  // namespace
 }  // namespace fx
