@@ -60,6 +60,13 @@ class SourceManager {
 
   // Follows macro expansions to where the characters are written (the macro body).
   SourceLocation spelling_location(SourceLocation loc) const;
+  // The macro definition a macro-expanded location's characters are written in: the last
+  // expansion spelling_location() follows, with `spelled` set to where it leads. nullptr
+  // when `loc` is no expansion location, or when the preprocessor made the characters (a
+  // pasted or stringized token lives in scratch space, which no user wrote).
+  const MacroExpansion* written_in_macro(SourceLocation loc, SourceLocation& spelled) const;
+  // True for text the preprocessor made (add_scratch): pasted and stringized tokens.
+  bool is_scratch(SourceLocation loc) const;
   // Follows macro expansions to where the user wrote the invocation (file text).
   SourceLocation file_location(SourceLocation loc) const;
   // File, line and column of loc's file location, honouring #line.
@@ -88,6 +95,7 @@ class SourceManager {
     std::unique_ptr<MacroExpansion> expansion;  // non-null for expansions
     mutable std::vector<uint32_t> line_starts;  // computed on demand
     std::vector<LineDirective> line_directives;
+    bool scratch = false;  // preprocessor-made text (add_scratch)
   };
   const Entry* entry(SourceLocation loc) const;
   const Entry& entry_checked(BufferId id) const;

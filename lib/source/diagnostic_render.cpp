@@ -1,6 +1,7 @@
 #include "fx/diagnostic_render.h"
 
 #include <algorithm>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 namespace fx {
@@ -31,10 +32,29 @@ void append_source_line(std::string& out, const SourceManager& sm, SourceRange r
   out.append(caret).push_back('\n');
 }
 
+// Where a fix-it edits: the characters it replaces as the user wrote them. Inside a macro
+// expansion that is the macro's definition (the invocation is not what to replace); text
+// the preprocessor made has no place to edit, so such a fix-it is left out.
+std::optional<SourceRange> editable_range(const FixIt& f, const SourceManager& sm) {
+  auto written = [&](SourceLocation loc, SourceLocation& out) {
+    if (!sm.is_expansion(loc)) return out = loc, !sm.is_scratch(loc);
+    return sm.written_in_macro(loc, out) != nullptr;
+  };
+  SourceLocation begin, end;
+  if (!written(f.range.begin, begin)) return std::nullopt;
+  if (!f.range.end.valid() || f.range.end == f.range.begin) return SourceRange{begin, begin};
+  if (!written(f.range.end, end) || sm.buffer_of(end) != sm.buffer_of(begin) || end.raw < begin.raw)
+    return std::nullopt;
+  return SourceRange{begin, end};
+}
+
 }  // namespace
 
 std::vector<DiagnosticNote> context_notes(SourceLocation loc, const SourceManager& sm) {
   std::vector<DiagnosticNote> notes;
+  SourceLocation spelled;
+  if (const MacroExpansion* m = sm.written_in_macro(loc, spelled))
+    notes.push_back({spelled, "spelled in the definition of macro '" + m->macro_name + "'"});
   // Bounded by the expansion depth the preprocessor allows.
   for (const MacroExpansion* m = sm.expansion_of(loc); m; m = sm.expansion_of(loc)) {
     notes.push_back({m->expansion.begin, "in expansion of macro '" + m->macro_name + "'"});
@@ -56,8 +76,10 @@ std::string render_text(const Diagnostic& d, const SourceManager& sm,
   out.push_back('\n');
   if (options.show_source_line && d.range.valid()) append_source_line(out, sm, d.range);
   for (const FixIt& f : d.fixits) {
-    bool insertion = !f.range.end.valid() || f.range.end == f.range.begin;
-    out += position(sm, f.range.begin) + ": note: fix-it: " +
+    const std::optional<SourceRange> range = editable_range(f, sm);
+    if (!range) continue;
+    bool insertion = !range->end.valid() || range->end == range->begin;
+    out += position(sm, range->begin) + ": note: fix-it: " +
            (insertion ? "insert '" : "replace with '") + f.replacement + "'\n";
   }
   std::vector<DiagnosticNote> notes = d.notes;
@@ -101,7 +123,11 @@ nlohmann::json render_json(const Diagnostic& d, const SourceManager& sm) {
   j["notes"] = std::move(notes);
   nlohmann::json fixits = nlohmann::json::array();
   for (const FixIt& f : d.fixits) {
-    nlohmann::json fix = place(sm, f.range.begin);
+    const std::optional<SourceRange> range = editable_range(f, sm);
+    if (!range) continue;
+    nlohmann::json fix = place(sm, range->begin);
+    nlohmann::json fix_end = place(sm, range->end.valid() ? range->end : range->begin);
+    fix["end"] = {{"line", fix_end["line"]}, {"column", fix_end["column"]}};
     fix["replacement"] = f.replacement;
     fixits.push_back(std::move(fix));
   }

@@ -36,6 +36,7 @@ SourceLocation SourceManager::add_scratch(std::string_view text, SourceLocation 
     Entry e;
     e.size = std::max<uint32_t>(kScratchChunk, static_cast<uint32_t>(text.size()) + 1);
     e.name = "<scratch space>";
+    e.scratch = true;
     e.text = std::make_unique<std::string>();
     e.text->reserve(e.size);
     scratch_ = append(std::move(e));
@@ -116,6 +117,22 @@ SourceLocation SourceManager::spelling_location(SourceLocation loc) const {
   for (const Entry* e = entry(loc); e && e->expansion; e = entry(loc))
     loc = e->expansion->spelling.offset(loc.raw - e->base);
   return loc;
+}
+
+bool SourceManager::is_scratch(SourceLocation loc) const {
+  const Entry* e = entry(loc);
+  return e && e->scratch;
+}
+
+const MacroExpansion* SourceManager::written_in_macro(SourceLocation loc, SourceLocation& spelled) const {
+  const MacroExpansion* macro = nullptr;
+  for (const Entry* e = entry(loc); e && e->expansion; e = entry(loc)) {
+    macro = e->expansion.get();
+    loc = e->expansion->spelling.offset(loc.raw - e->base);
+  }
+  if (!macro || is_scratch(loc)) return nullptr;
+  spelled = loc;
+  return macro;
 }
 
 SourceLocation SourceManager::file_location(SourceLocation loc) const {

@@ -33,6 +33,7 @@ TEST(Diagnostic, IncludeAndMacroNotes) {
   sink.error("syntax", {exp, exp.offset(4)}, "expected declaration");
   std::string text = render_text(sink.diagnostics(), sm);
   EXPECT_NE(text.find("a.fxh:1:1: error: expected declaration [syntax]"), std::string::npos) << text;
+  EXPECT_NE(text.find("main.fx:1:13: note: spelled in the definition of macro 'BAD'"), std::string::npos) << text;
   EXPECT_NE(text.find("a.fxh:1:1: note: in expansion of macro 'BAD'"), std::string::npos) << text;
   EXPECT_NE(text.find("main.fx:2:1: note: included from here"), std::string::npos) << text;
 
@@ -42,9 +43,39 @@ TEST(Diagnostic, IncludeAndMacroNotes) {
   EXPECT_EQ(j[0]["line"], 1);
   EXPECT_EQ(j[0]["severity"], "error");
   EXPECT_EQ(j[0]["id"], "syntax");
-  ASSERT_EQ(j[0]["notes"].size(), 2u);
-  EXPECT_EQ(j[0]["notes"][1]["file"], "main.fx");
-  EXPECT_EQ(j[0]["notes"][1]["line"], 2);
+  ASSERT_EQ(j[0]["notes"].size(), 3u);
+  EXPECT_EQ(j[0]["notes"][0]["line"], 1);  // the definition
+  EXPECT_EQ(j[0]["notes"][0]["column"], 13);
+  EXPECT_EQ(j[0]["notes"][2]["file"], "main.fx");
+  EXPECT_EQ(j[0]["notes"][2]["line"], 2);
+}
+
+// A fix-it for a token a macro produced edits the macro's definition, where the token is
+// written, not the invocation; one for a token the preprocessor made (a paste) is left out,
+// since no file holds its characters.
+TEST(Diagnostic, FixItsInMacroExpansionsEditTheDefinition) {
+  SourceManager sm;
+  BufferId main = sm.add_buffer("main.fx", "#define S CullMod = None;\npass { S }\n");
+  SourceLocation use = sm.location(main, 33);  // `S` on line 2
+  SourceLocation exp = sm.add_expansion({"S", sm.location(main, 10), {use, use.offset(1)}}, 15);
+  SourceLocation pasted = sm.add_scratch("CullMod", use);
+  DiagnosticSink sink;
+  Diagnostic& d = sink.error("unknown-state", {exp, exp.offset(7)}, "unknown state 'CullMod'");
+  d.fixits.push_back({{exp, exp.offset(7)}, "CullMode"});
+  Diagnostic& p = sink.error("unknown-state", {pasted, pasted.offset(7)}, "unknown state 'CullMod'");
+  p.fixits.push_back({{pasted, pasted.offset(7)}, "CullMode"});
+  const std::string text = render_text(sink.diagnostics()[0], sm);
+  EXPECT_NE(text.find("main.fx:2:8: error: unknown state 'CullMod' [unknown-state]"), std::string::npos) << text;
+  EXPECT_NE(text.find("main.fx:1:11: note: fix-it: replace with 'CullMode'"), std::string::npos) << text;
+  EXPECT_EQ(text.find("main.fx:2:8: note: fix-it"), std::string::npos) << text;
+  nlohmann::json j = render_json(sink.diagnostics(), sm);
+  ASSERT_EQ(j[0]["fixits"].size(), 1u);
+  EXPECT_EQ(j[0]["fixits"][0]["line"], 1);
+  EXPECT_EQ(j[0]["fixits"][0]["column"], 11);
+  EXPECT_EQ(j[0]["fixits"][0]["end"]["column"], 18);  // CullMod spans columns 11-17
+  EXPECT_EQ(j[0]["fixits"][0]["replacement"], "CullMode");
+  EXPECT_EQ(j[1]["fixits"].size(), 0u);
+  EXPECT_EQ(render_text(sink.diagnostics()[1], sm).find("fix-it"), std::string::npos);
 }
 
 TEST(Diagnostic, WerrorAndErrorLimit) {

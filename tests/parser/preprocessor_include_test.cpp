@@ -109,6 +109,7 @@ TEST(PreprocessorIncludes, IncludeNotesInRenderedDiagnostics) {
             "[invalid-paste]\n"
             "P(+)\n"
             "^\n"
+            "inc.fxh:1:19: note: spelled in the definition of macro 'P'\n"
             "inc.fxh:2:1: note: in expansion of macro 'P'\n"
             "main.fx:1:1: note: included from here\n"
             "inc.fxh:3:1: error: stop [error-directive]\n"
