@@ -1,6 +1,6 @@
 // The effect syntax tree. Every node carries its source range. Shader code (function
 // bodies, structs, GLSL blocks, asm) is kept as token ranges for the shader compiler,
-// not interpreted here.
+// not interpreted here. Names and other texts are ast::Text, views into the effect's Arena.
 #pragma once
 #include <cstdint>
 #include <initializer_list>
@@ -11,6 +11,7 @@
 #include <tuple>
 #include <vector>
 
+#include "fx/arena.h"
 #include "fx/node_blocks.h"
 #include "fx/source_location.h"
 #include "fx/token.h"
@@ -39,8 +40,8 @@ enum StorageClass : uint32_t {
 // A type as written: `float4x4`, `texture2D`, `Texture2D<float4>`, `sampler_state`, a
 // struct or typedef name. Resolution to a semantic type is the compiler's job.
 struct TypeRef {
-  std::string name;
-  std::string template_arg;  // `Texture2D<float4>` -> "float4" (empty if none)
+  Text name;
+  Text template_arg;  // `Texture2D<float4>` -> "float4" (empty if none)
   SourceRange range;
 };
 
@@ -74,8 +75,8 @@ enum class ExprKind : uint8_t {
 struct Expr {
   ExprKind kind{};
   SourceRange range;
-  std::string text;
-  std::string callee;       // compile: the entry function
+  Text text;
+  Text callee;              // compile: the entry function
   double number = 0;        // numeric literals
   std::span<const ExprPtr> args;  // stored in the effect's ExprPool
   std::vector<StateAssignment> states;  // state_block
@@ -104,14 +105,14 @@ class ExprPool {
 
 struct Annotation {
   TypeRef type;  // string, float, float2, int, bool, ... (may carry array dims below)
-  std::string name;
+  Text name;
   std::vector<ExprPtr> array_dims;
   ExprPtr value = nullptr;
   SourceRange range;
 };
 
 struct StateAssignment {
-  std::string name;           // as written; the state table is case-insensitive
+  Text name;                  // as written; the state table is case-insensitive
   SourceRange name_range;
   ExprPtr index = nullptr;    // `Texture[3]` (null if not indexed)
   ExprPtr value = nullptr;
@@ -124,12 +125,12 @@ struct StateAssignment {
 struct Variable {
   uint32_t storage = 0;       // StorageClass bits
   TypeRef type;
-  std::string name;
+  Text name;
   SourceRange name_range;
   std::vector<ExprPtr> array_dims;  // `float4 a[4][2]`: {4, 2}; an empty dim is null
-  std::string semantic;       // `: POSITION` (empty if none)
-  std::string register_binding;  // `: register(c0)` (empty if none)
-  std::string packoffset;     // `: packoffset(c0.y)` -> "c0.y" (empty if none)
+  Text semantic;              // `: POSITION` (empty if none)
+  Text register_binding;  // `: register(c0)` (empty if none)
+  Text packoffset;            // `: packoffset(c0.y)` -> "c0.y" (empty if none)
   std::vector<Annotation> annotations;
   ExprPtr initializer = nullptr;
   SourceRange range;
@@ -137,7 +138,7 @@ struct Variable {
 };
 
 struct Struct {
-  std::string name;
+  Text name;
   SourceRange name_range;
   std::vector<Variable> members;
   SourceRange range;
@@ -146,7 +147,7 @@ struct Struct {
 
 struct Typedef {
   TypeRef type;
-  std::string name;
+  Text name;
   std::vector<ExprPtr> array_dims;
   SourceRange range;
   TokenSpan tokens;
@@ -155,10 +156,10 @@ struct Typedef {
 struct Function {
   TypeRef return_type;
   uint32_t storage = 0;       // `inline`, `static` etc. in front of it
-  std::string name;
+  Text name;
   SourceRange name_range;
   std::vector<Variable> params;  // storage carries in/out/inout/uniform
-  std::string semantic;
+  Text semantic;
   std::vector<std::string> attributes;  // `[numthreads(8,8,1)]` as written
   TokenSpan body;             // tokens between the braces (empty for a prototype)
   SourceRange range;
@@ -166,7 +167,7 @@ struct Function {
 };
 
 struct Pass {
-  std::string name;           // may be empty
+  Text name;                  // may be empty
   SourceRange name_range;
   std::vector<Annotation> annotations;
   std::vector<StateAssignment> states;
@@ -175,7 +176,7 @@ struct Pass {
 
 struct Technique {
   int version = 9;            // 9: technique, 10: technique10, 11: technique11
-  std::string name;           // may be empty
+  Text name;                  // may be empty
   SourceRange name_range;
   std::vector<Annotation> annotations;
   std::vector<Pass> passes;
@@ -184,29 +185,29 @@ struct Technique {
 
 // D3D10/11 state objects: `BlendState name { ... };`, also arrays `SamplerState s[2] {...}`.
 struct StateObject {
-  std::string kind;           // BlendState, DepthStencilState, RasterizerState, SamplerState,
+  Text kind;                  // BlendState, DepthStencilState, RasterizerState, SamplerState,
                               // SamplerComparisonState (as written)
-  std::string name;
+  Text name;
   SourceRange name_range;
   std::vector<ExprPtr> array_dims;
   std::vector<Annotation> annotations;
   std::vector<StateAssignment> states;
-  std::string register_binding;
+  Text register_binding;
   SourceRange range;
 };
 
 struct ConstantBuffer {
   bool texture_buffer = false;  // tbuffer
-  std::string name;
+  Text name;
   SourceRange name_range;
-  std::string register_binding;
+  Text register_binding;
   std::vector<Variable> members;
   SourceRange range;
   TokenSpan tokens;
 };
 
 struct FxGroup {
-  std::string name;
+  Text name;
   SourceRange name_range;
   std::vector<Annotation> annotations;
   std::vector<Technique> techniques;
@@ -216,7 +217,7 @@ struct FxGroup {
 // A named block of GLSL source: `GLSLShader Name { ...GLSL... }` (nvFX style). Passes
 // name one or a list of blocks per stage: `VertexShader = Name;` or `= { Common, Name };`.
 struct GlslBlock {
-  std::string name;
+  Text name;
   SourceRange name_range;
   TokenSpan code;
   SourceRange range;
@@ -224,7 +225,7 @@ struct GlslBlock {
 
 // A kept preprocessor directive at file scope (#pragma ...), in order among declarations.
 struct Directive {
-  std::string text;
+  Text text;
   SourceRange range;
   TokenSpan tokens;
 };
@@ -274,6 +275,7 @@ struct Effect {
   std::vector<Decl> decls;     // in source order
   DeclPool declarations;       // every node the decls point to
   ExprPool expressions;        // every Expr the declarations point to
+  Arena arena;                 // the texts inside those nodes
 };
 
 }  // namespace fx::ast

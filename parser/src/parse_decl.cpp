@@ -27,10 +27,18 @@ bool Parser::parse_type(ast::TypeRef& type) {
   // Compared as the token's string_view, which tests the length first: std::string's
   // compare with a literal calls memcmp for every type name.
   std::string_view word = advance().text;
-  type.name.assign(word);
-  if ((word == "unsigned" || word == "signed") && at(TokenKind::identifier))
-    (type.name += ' ') += advance().text;
-  if (at(TokenKind::less) && !parse_template_args(type.template_arg)) return false;
+  if ((word == "unsigned" || word == "signed") && at(TokenKind::identifier)) {
+    std::string name(word);
+    (name += ' ') += advance().text;
+    type.name = keep(name);
+  } else {
+    type.name = keep(word);
+  }
+  if (at(TokenKind::less)) {
+    std::string args;
+    if (!parse_template_args(args)) return false;
+    type.template_arg = keep(args);
+  }
   type.range = range_from(first);
   return true;
 }
@@ -96,10 +104,10 @@ bool Parser::parse_semantics(ast::Variable& v) {
     }
     std::string_view word = tok().text;
     if ((word == "register" || word == "packoffset") && peek().is(TokenKind::l_paren)) {
-      std::string& target = word == "register" ? v.register_binding : v.packoffset;
+      ast::Text& kept = word == "register" ? v.register_binding : v.packoffset;
+      std::string target;
       Token open = advance();
       advance();
-      target.clear();
       while (!at(TokenKind::r_paren)) {
         if (at_eof() || at(TokenKind::semi) || at(TokenKind::l_brace)) {
           if (Diagnostic* d = error_here("expected-token",
@@ -112,8 +120,9 @@ bool Parser::parse_semantics(ast::Variable& v) {
         advance();
       }
       advance();
+      kept = keep(target);
     } else {
-      v.semantic.assign(word);
+      v.semantic = keep(word);
       advance();
     }
   }
@@ -126,7 +135,7 @@ bool Parser::parse_declarator_head(ast::Variable& v) {
                "expected a name for the declaration, found " + describe(tok()));
     return false;
   }
-  v.name.assign(tok().text);
+  v.name = keep(tok().text);
   v.name_range = tok().range();
   advance();
   if (!parse_array_dims(v.array_dims) || !parse_semantics(v)) return false;
@@ -150,7 +159,7 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
     f->storage = storage;
     f->return_type = std::move(type);
     f->attributes = std::move(attributes);
-    f->name.assign(tok().text);
+    f->name = keep(tok().text);
     f->name_range = tok().range();
     advance();
     if (!parse_function(*f)) return;
@@ -240,7 +249,7 @@ bool Parser::parse_function(ast::Function& f) {
       error_here("expected-semantic", "expected a semantic after ':', found " + describe(tok()));
       return false;
     }
-    f.semantic.assign(advance().text);
+    f.semantic = keep(advance().text);
   }
   if (at(TokenKind::l_brace)) return skip_braced(f.body, "function body");
   return expect_semi("after function declaration");
@@ -254,7 +263,7 @@ bool Parser::parse_parameter(ast::Variable& p) {
     error_here("expected-identifier", "expected a parameter name, found " + describe(tok()));
     return false;
   }
-  p.name.assign(tok().text);
+  p.name = keep(tok().text);
   p.name_range = tok().range();
   advance();
   if (!parse_array_dims(p.array_dims) || !parse_semantics(p)) return false;
@@ -322,7 +331,7 @@ void Parser::parse_struct(std::vector<ast::Decl>& out) {
     error_here("expected-identifier", "expected a struct name, found " + describe(tok()));
     return;
   }
-  s->name.assign(tok().text);
+  s->name = keep(tok().text);
   s->name_range = tok().range();
   advance();
   if (!parse_member_list(s->members, "struct")) return;
@@ -349,7 +358,7 @@ void Parser::parse_typedef(std::vector<ast::Decl>& out) {
       error_here("expected-identifier", "expected a typedef name, found " + describe(tok()));
       return;
     }
-    t->name.assign(advance().text);
+    t->name = keep(advance().text);
     if (!parse_array_dims(t->array_dims)) return;
     ast::Decl d;
     d.kind = ast::DeclKind::type_alias;
@@ -368,7 +377,7 @@ void Parser::parse_constant_buffer(std::vector<ast::Decl>& out) {
   uint32_t first = pos_;
   ast::ConstantBuffer* cb = declarations_.make<ast::ConstantBuffer>();
   cb->texture_buffer = advance().text == "tbuffer";
-  cb->name.assign(tok().text);
+  cb->name = keep(tok().text);
   cb->name_range = tok().range();
   advance();
   ast::Variable binding;

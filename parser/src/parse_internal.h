@@ -66,6 +66,8 @@ class Parser {
     return r;
   }
   ast::TokenSpan span_from(uint32_t first) const { return {first, pos_}; }
+  // A copy of `text` in the effect's arena, for the nodes' names and texts.
+  ast::Text keep(std::string_view text) { return arena_.text(text); }
 
   // --- errors and recovery (parser.cpp) ---
   // Reports unless an error is already being recovered from; marks the parse failed.
@@ -140,6 +142,7 @@ class Parser {
   std::vector<Token> tokens_;
   ast::DeclPool declarations_;
   ast::ExprPool expressions_;
+  ast::Arena arena_;  // the nodes' texts
   // Arguments and list elements being parsed, innermost list last: each list is stored
   // in the pool once complete, so none needs a vector of its own.
   std::vector<ast::ExprPtr> pending_args_;

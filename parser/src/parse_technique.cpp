@@ -48,7 +48,7 @@ bool Parser::parse_annotation(ast::Annotation& a) {
     error_here("expected-identifier", "expected an annotation name, found " + describe(tok()));
     return false;
   }
-  a.name.assign(advance().text);
+  a.name = keep(advance().text);
   if (!parse_array_dims(a.array_dims)) return false;
   if (!expect(TokenKind::equal, "after annotation name")) return false;
   a.value = parse_assignment();
@@ -62,7 +62,7 @@ bool Parser::parse_technique(ast::Technique& t) {
   std::string_view keyword = advance().text;
   t.version = keyword == "technique11" ? 11 : keyword == "technique10" ? 10 : 9;
   if (at(TokenKind::identifier)) {
-    t.name.assign(tok().text);
+    t.name = keep(tok().text);
     t.name_range = tok().range();
     advance();
   }
@@ -100,7 +100,7 @@ bool Parser::parse_pass(ast::Pass& p) {
   uint32_t first = pos_;
   advance();  // pass
   if (at(TokenKind::identifier)) {
-    p.name.assign(tok().text);
+    p.name = keep(tok().text);
     p.name_range = tok().range();
     advance();
   }
@@ -143,7 +143,7 @@ bool Parser::parse_state(ast::StateAssignment& s) {
     error_here("expected-state", "expected a state assignment, found " + describe(tok()));
     return false;
   }
-  s.name.assign(tok().text);
+  s.name = keep(tok().text);
   s.name_range = tok().range();
   advance();
   if (at(TokenKind::l_paren)) {
@@ -185,7 +185,7 @@ void Parser::parse_group(std::vector<ast::Decl>& out) {
     error_here("expected-identifier", "expected a group name, found " + describe(tok()));
     return;
   }
-  g->name.assign(tok().text);
+  g->name = keep(tok().text);
   g->name_range = tok().range();
   advance();
   if (at(TokenKind::less) && !parse_annotations(g->annotations)) return;
