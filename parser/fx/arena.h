@@ -11,6 +11,7 @@
 #include <cstring>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -119,6 +120,9 @@ class List {
   bool empty() const { return size_ == 0; }
   T& operator[](size_t i) { return data_[i]; }
   const T& operator[](size_t i) const { return data_[i]; }
+  // Bounds-checked, as std::vector::at: throws std::out_of_range.
+  T& at(size_t i) { return i < size_ ? data_[i] : out_of_range(); }
+  const T& at(size_t i) const { return i < size_ ? data_[i] : out_of_range(); }
   T& front() { return data_[0]; }
   const T& front() const { return data_[0]; }
   T& back() { return data_[size_ - 1]; }
@@ -146,6 +150,8 @@ class List {
     data_ = data;
     capacity_ = static_cast<uint32_t>(capacity);
   }
+
+  [[noreturn]] static T& out_of_range() { throw std::out_of_range("ast::List::at"); }
 
   T* data_ = nullptr;
   uint32_t size_ = 0, capacity_ = 0;

@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "fx/arena.h"
@@ -79,7 +80,7 @@ struct Expr {
   Text callee;              // compile: the entry function
   double number = 0;        // numeric literals
   std::span<const ExprPtr> args;  // stored in the effect's ExprPool
-  std::vector<StateAssignment> states;  // state_block
+  List<StateAssignment> states;  // state_block
   TokenSpan code;           // asm_block: tokens between the braces
   TokenSpan decl_code;      // asm_block: `decl { }` tokens (empty if absent)
 };
@@ -106,7 +107,7 @@ class ExprPool {
 struct Annotation {
   TypeRef type;  // string, float, float2, int, bool, ... (may carry array dims below)
   Text name;
-  std::vector<ExprPtr> array_dims;
+  List<ExprPtr> array_dims;
   ExprPtr value = nullptr;
   SourceRange range;
 };
@@ -127,11 +128,11 @@ struct Variable {
   TypeRef type;
   Text name;
   SourceRange name_range;
-  std::vector<ExprPtr> array_dims;  // `float4 a[4][2]`: {4, 2}; an empty dim is null
+  List<ExprPtr> array_dims;  // `float4 a[4][2]`: {4, 2}; an empty dim is null
   Text semantic;              // `: POSITION` (empty if none)
   Text register_binding;  // `: register(c0)` (empty if none)
   Text packoffset;            // `: packoffset(c0.y)` -> "c0.y" (empty if none)
-  std::vector<Annotation> annotations;
+  List<Annotation> annotations;
   ExprPtr initializer = nullptr;
   SourceRange range;
   TokenSpan tokens;           // the whole declaration, for the shader compiler
@@ -140,7 +141,7 @@ struct Variable {
 struct Struct {
   Text name;
   SourceRange name_range;
-  std::vector<Variable> members;
+  List<Variable> members;
   SourceRange range;
   TokenSpan tokens;
 };
@@ -148,7 +149,7 @@ struct Struct {
 struct Typedef {
   TypeRef type;
   Text name;
-  std::vector<ExprPtr> array_dims;
+  List<ExprPtr> array_dims;
   SourceRange range;
   TokenSpan tokens;
 };
@@ -158,9 +159,9 @@ struct Function {
   uint32_t storage = 0;       // `inline`, `static` etc. in front of it
   Text name;
   SourceRange name_range;
-  std::vector<Variable> params;  // storage carries in/out/inout/uniform
+  List<Variable> params;  // storage carries in/out/inout/uniform
   Text semantic;
-  std::vector<std::string> attributes;  // `[numthreads(8,8,1)]` as written
+  List<Text> attributes;  // `[numthreads(8,8,1)]` as written
   TokenSpan body;             // tokens between the braces (empty for a prototype)
   SourceRange range;
   TokenSpan tokens;           // the whole definition
@@ -169,8 +170,8 @@ struct Function {
 struct Pass {
   Text name;                  // may be empty
   SourceRange name_range;
-  std::vector<Annotation> annotations;
-  std::vector<StateAssignment> states;
+  List<Annotation> annotations;
+  List<StateAssignment> states;
   SourceRange range;
 };
 
@@ -178,8 +179,8 @@ struct Technique {
   int version = 9;            // 9: technique, 10: technique10, 11: technique11
   Text name;                  // may be empty
   SourceRange name_range;
-  std::vector<Annotation> annotations;
-  std::vector<Pass> passes;
+  List<Annotation> annotations;
+  List<Pass> passes;
   SourceRange range;
 };
 
@@ -189,9 +190,9 @@ struct StateObject {
                               // SamplerComparisonState (as written)
   Text name;
   SourceRange name_range;
-  std::vector<ExprPtr> array_dims;
-  std::vector<Annotation> annotations;
-  std::vector<StateAssignment> states;
+  List<ExprPtr> array_dims;
+  List<Annotation> annotations;
+  List<StateAssignment> states;
   Text register_binding;
   SourceRange range;
 };
@@ -201,7 +202,7 @@ struct ConstantBuffer {
   Text name;
   SourceRange name_range;
   Text register_binding;
-  std::vector<Variable> members;
+  List<Variable> members;
   SourceRange range;
   TokenSpan tokens;
 };
@@ -209,8 +210,8 @@ struct ConstantBuffer {
 struct FxGroup {
   Text name;
   SourceRange name_range;
-  std::vector<Annotation> annotations;
-  std::vector<Technique> techniques;
+  List<Annotation> annotations;
+  List<Technique> techniques;
   SourceRange range;
 };
 
@@ -269,13 +270,22 @@ struct Decl {
   Directive* directive = nullptr;
 };
 
+// Every node is trivially destructible (its texts and lists live in the Arena), so an
+// effect's teardown frees blocks and destroys no node.
+static_assert(std::is_trivially_destructible_v<Expr> && std::is_trivially_destructible_v<Variable> &&
+              std::is_trivially_destructible_v<Function> &&
+              std::is_trivially_destructible_v<Technique> &&
+              std::is_trivially_destructible_v<StateObject> &&
+              std::is_trivially_destructible_v<FxGroup> &&
+              std::is_trivially_destructible_v<Directive>);
+
 struct Effect {
   std::string profile_header;  // from a leading `fx.2.0`-style line, if any
   std::vector<Token> tokens;   // the preprocessed token stream the spans index
   std::vector<Decl> decls;     // in source order
   DeclPool declarations;       // every node the decls point to
   ExprPool expressions;        // every Expr the declarations point to
-  Arena arena;                 // the texts inside those nodes
+  Arena arena;                 // the texts and lists inside those nodes
 };
 
 }  // namespace fx::ast

@@ -80,16 +80,16 @@ bool Parser::parse_template_args(std::string& out) {
   }
 }
 
-bool Parser::parse_array_dims(std::vector<ast::ExprPtr>& dims) {
+bool Parser::parse_array_dims(ast::List<ast::ExprPtr>& dims) {
   while (at(TokenKind::l_square)) {
     advance();
     if (accept(TokenKind::r_square)) {
-      dims.push_back(nullptr);  // `float a[] = {...}`: size from the initializer
+      dims.push_back(arena_, nullptr);  // `float a[] = {...}`: size from the initializer
       continue;
     }
     ast::ExprPtr size = parse_expression();
     if (failed_) return false;
-    dims.push_back(std::move(size));
+    dims.push_back(arena_, size);
     if (!expect(TokenKind::r_square, "after array size")) return false;
   }
   return true;
@@ -157,8 +157,9 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
   if (at(TokenKind::identifier) && peek().is(TokenKind::l_paren)) {
     ast::Function* f = declarations_.make<ast::Function>();
     f->storage = storage;
-    f->return_type = std::move(type);
-    f->attributes = std::move(attributes);
+    f->return_type = type;
+    f->attributes.reserve(arena_, attributes.size());
+    for (const std::string& a : attributes) f->attributes.push_back(arena_, keep(a));
     f->name = keep(tok().text);
     f->name_range = tok().range();
     advance();
@@ -206,11 +207,11 @@ void Parser::finish_state_object(std::vector<ast::Decl>& out, ast::Variable& hea
                                  uint32_t first) {
   ast::StateObject* so = declarations_.make<ast::StateObject>();
   so->kind = head.type.name;
-  so->name = std::move(head.name);
+  so->name = head.name;
   so->name_range = head.name_range;
-  so->array_dims = std::move(head.array_dims);
-  so->annotations = std::move(head.annotations);
-  so->register_binding = std::move(head.register_binding);
+  so->array_dims = head.array_dims;
+  so->annotations = head.annotations;
+  so->register_binding = head.register_binding;
   if (!parse_state_list(so->states, "state object")) return;
   accept(TokenKind::semi);
   so->range = range_from(first);
@@ -225,9 +226,9 @@ bool Parser::parse_function(ast::Function& f) {
   advance();  // (
   if (at_ident("void") && peek().is(TokenKind::r_paren)) advance();
   if (!accept(TokenKind::r_paren)) {
-    f.params.reserve(4);
+    f.params.reserve(arena_, 4);
     for (;;) {
-      ast::Variable& p = f.params.emplace_back();  // in place, see parse_annotations
+      ast::Variable& p = f.params.emplace_back(arena_);  // in place, see parse_annotations
       if (!parse_parameter(p)) {
         f.params.pop_back();
         return false;
@@ -276,7 +277,7 @@ bool Parser::parse_parameter(ast::Variable& p) {
   return true;
 }
 
-bool Parser::parse_member_list(std::vector<ast::Variable>& members, std::string_view what) {
+bool Parser::parse_member_list(ast::List<ast::Variable>& members, std::string_view what) {
   if (!at(TokenKind::l_brace)) {
     std::string context = "to begin ";
     context.append(what);
@@ -284,7 +285,7 @@ bool Parser::parse_member_list(std::vector<ast::Variable>& members, std::string_
   }
   Token open = tok();
   advance();
-  members.reserve(4);
+  members.reserve(arena_, 4);
   while (!at(TokenKind::r_brace)) {
     if (at_eof()) {
       unterminated(open, what);
@@ -301,7 +302,7 @@ bool Parser::parse_member_list(std::vector<ast::Variable>& members, std::string_
     ast::TypeRef type;
     if (parse_type(type)) {
       for (;;) {
-        ast::Variable& v = members.emplace_back();  // in place, see parse_annotations
+        ast::Variable& v = members.emplace_back(arena_);  // in place, see parse_annotations
         v.storage = storage;
         v.type = type;
         if (!parse_declarator_head(v) || !parse_initializer(v)) {
@@ -382,7 +383,7 @@ void Parser::parse_constant_buffer(std::vector<ast::Decl>& out) {
   advance();
   ast::Variable binding;
   if (!parse_semantics(binding)) return;
-  cb->register_binding = std::move(binding.register_binding);
+  cb->register_binding = binding.register_binding;
   if (!parse_member_list(cb->members, "constant buffer")) return;
   accept(TokenKind::semi);
   cb->range = range_from(first);
