@@ -1,6 +1,6 @@
 // The effect syntax tree. Every node carries its source range. Shader code (function
 // bodies, structs, GLSL blocks, asm) is kept as token ranges for the shader compiler,
-// not interpreted here.
+// not interpreted here. Names and other texts are ast::Text, views into the effect's Arena.
 #pragma once
 #include <cstdint>
 #include <initializer_list>
@@ -9,8 +9,10 @@
 #include <string>
 #include <string_view>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
+#include "fx/arena.h"
 #include "fx/node_blocks.h"
 #include "fx/source_location.h"
 #include "fx/token.h"
@@ -39,8 +41,8 @@ enum StorageClass : uint32_t {
 // A type as written: `float4x4`, `texture2D`, `Texture2D<float4>`, `sampler_state`, a
 // struct or typedef name. Resolution to a semantic type is the compiler's job.
 struct TypeRef {
-  std::string name;
-  std::string template_arg;  // `Texture2D<float4>` -> "float4" (empty if none)
+  Text name;
+  Text template_arg;  // `Texture2D<float4>` -> "float4" (empty if none)
   SourceRange range;
 };
 
@@ -74,11 +76,11 @@ enum class ExprKind : uint8_t {
 struct Expr {
   ExprKind kind{};
   SourceRange range;
-  std::string text;
-  std::string callee;       // compile: the entry function
+  Text text;
+  Text callee;              // compile: the entry function
   double number = 0;        // numeric literals
   std::span<const ExprPtr> args;  // stored in the effect's ExprPool
-  std::vector<StateAssignment> states;  // state_block
+  List<StateAssignment> states;  // state_block
   TokenSpan code;           // asm_block: tokens between the braces
   TokenSpan decl_code;      // asm_block: `decl { }` tokens (empty if absent)
 };
@@ -104,14 +106,14 @@ class ExprPool {
 
 struct Annotation {
   TypeRef type;  // string, float, float2, int, bool, ... (may carry array dims below)
-  std::string name;
-  std::vector<ExprPtr> array_dims;
+  Text name;
+  List<ExprPtr> array_dims;
   ExprPtr value = nullptr;
   SourceRange range;
 };
 
 struct StateAssignment {
-  std::string name;           // as written; the state table is case-insensitive
+  Text name;                  // as written; the state table is case-insensitive
   SourceRange name_range;
   ExprPtr index = nullptr;    // `Texture[3]` (null if not indexed)
   ExprPtr value = nullptr;
@@ -124,30 +126,30 @@ struct StateAssignment {
 struct Variable {
   uint32_t storage = 0;       // StorageClass bits
   TypeRef type;
-  std::string name;
+  Text name;
   SourceRange name_range;
-  std::vector<ExprPtr> array_dims;  // `float4 a[4][2]`: {4, 2}; an empty dim is null
-  std::string semantic;       // `: POSITION` (empty if none)
-  std::string register_binding;  // `: register(c0)` (empty if none)
-  std::string packoffset;     // `: packoffset(c0.y)` -> "c0.y" (empty if none)
-  std::vector<Annotation> annotations;
+  List<ExprPtr> array_dims;  // `float4 a[4][2]`: {4, 2}; an empty dim is null
+  Text semantic;              // `: POSITION` (empty if none)
+  Text register_binding;  // `: register(c0)` (empty if none)
+  Text packoffset;            // `: packoffset(c0.y)` -> "c0.y" (empty if none)
+  List<Annotation> annotations;
   ExprPtr initializer = nullptr;
   SourceRange range;
   TokenSpan tokens;           // the whole declaration, for the shader compiler
 };
 
 struct Struct {
-  std::string name;
+  Text name;
   SourceRange name_range;
-  std::vector<Variable> members;
+  List<Variable> members;
   SourceRange range;
   TokenSpan tokens;
 };
 
 struct Typedef {
   TypeRef type;
-  std::string name;
-  std::vector<ExprPtr> array_dims;
+  Text name;
+  List<ExprPtr> array_dims;
   SourceRange range;
   TokenSpan tokens;
 };
@@ -155,68 +157,68 @@ struct Typedef {
 struct Function {
   TypeRef return_type;
   uint32_t storage = 0;       // `inline`, `static` etc. in front of it
-  std::string name;
+  Text name;
   SourceRange name_range;
-  std::vector<Variable> params;  // storage carries in/out/inout/uniform
-  std::string semantic;
-  std::vector<std::string> attributes;  // `[numthreads(8,8,1)]` as written
+  List<Variable> params;  // storage carries in/out/inout/uniform
+  Text semantic;
+  List<Text> attributes;  // `[numthreads(8,8,1)]` as written
   TokenSpan body;             // tokens between the braces (empty for a prototype)
   SourceRange range;
   TokenSpan tokens;           // the whole definition
 };
 
 struct Pass {
-  std::string name;           // may be empty
+  Text name;                  // may be empty
   SourceRange name_range;
-  std::vector<Annotation> annotations;
-  std::vector<StateAssignment> states;
+  List<Annotation> annotations;
+  List<StateAssignment> states;
   SourceRange range;
 };
 
 struct Technique {
   int version = 9;            // 9: technique, 10: technique10, 11: technique11
-  std::string name;           // may be empty
+  Text name;                  // may be empty
   SourceRange name_range;
-  std::vector<Annotation> annotations;
-  std::vector<Pass> passes;
+  List<Annotation> annotations;
+  List<Pass> passes;
   SourceRange range;
 };
 
 // D3D10/11 state objects: `BlendState name { ... };`, also arrays `SamplerState s[2] {...}`.
 struct StateObject {
-  std::string kind;           // BlendState, DepthStencilState, RasterizerState, SamplerState,
+  Text kind;                  // BlendState, DepthStencilState, RasterizerState, SamplerState,
                               // SamplerComparisonState (as written)
-  std::string name;
+  Text name;
   SourceRange name_range;
-  std::vector<ExprPtr> array_dims;
-  std::vector<Annotation> annotations;
-  std::vector<StateAssignment> states;
-  std::string register_binding;
+  List<ExprPtr> array_dims;
+  List<Annotation> annotations;
+  List<StateAssignment> states;
+  Text register_binding;
   SourceRange range;
 };
 
 struct ConstantBuffer {
   bool texture_buffer = false;  // tbuffer
-  std::string name;
+  Text name;
   SourceRange name_range;
-  std::string register_binding;
-  std::vector<Variable> members;
+  Text register_binding;
+  List<Variable> members;
   SourceRange range;
   TokenSpan tokens;
 };
 
 struct FxGroup {
-  std::string name;
+  Text name;
   SourceRange name_range;
-  std::vector<Annotation> annotations;
-  std::vector<Technique> techniques;
+  List<Annotation> annotations;
+  List<Technique> techniques;
   SourceRange range;
 };
 
 // A named block of GLSL source: `GLSLShader Name { ...GLSL... }` (nvFX style). Passes
 // name one or a list of blocks per stage: `VertexShader = Name;` or `= { Common, Name };`.
 struct GlslBlock {
-  std::string name;
+  Text name;
   SourceRange name_range;
   TokenSpan code;
   SourceRange range;
@@ -224,7 +226,7 @@ struct GlslBlock {
 
 // A kept preprocessor directive at file scope (#pragma ...), in order among declarations.
 struct Directive {
-  std::string text;
+  Text text;
   SourceRange range;
   TokenSpan tokens;
 };
@@ -268,12 +270,22 @@ struct Decl {
   Directive* directive = nullptr;
 };
 
+// Every node is trivially destructible (its texts and lists live in the Arena), so an
+// effect's teardown frees blocks and destroys no node.
+static_assert(std::is_trivially_destructible_v<Expr> && std::is_trivially_destructible_v<Variable> &&
+              std::is_trivially_destructible_v<Function> &&
+              std::is_trivially_destructible_v<Technique> &&
+              std::is_trivially_destructible_v<StateObject> &&
+              std::is_trivially_destructible_v<FxGroup> &&
+              std::is_trivially_destructible_v<Directive>);
+
 struct Effect {
   std::string profile_header;  // from a leading `fx.2.0`-style line, if any
   std::vector<Token> tokens;   // the preprocessed token stream the spans index
   std::vector<Decl> decls;     // in source order
   DeclPool declarations;       // every node the decls point to
   ExprPool expressions;        // every Expr the declarations point to
+  Arena arena;                 // the texts and lists inside those nodes
 };
 
 }  // namespace fx::ast

@@ -292,7 +292,7 @@ void Checker::check_value_type(std::string_view type_name, size_t array_dims,
                      std::to_string(*leaves));
 }
 
-void Checker::check_annotations(const std::vector<ast::Annotation>& annotations) {
+void Checker::check_annotations(const ast::List<ast::Annotation>& annotations) {
   FirstSeen<std::string_view> seen;
   for (const ast::Annotation& a : annotations) {
     if (const SourceRange* previous = seen.insert(a.name, a.range))

@@ -83,7 +83,7 @@ class Checker {
   void define(std::string_view name, SourceRange range, Symbol symbol, std::string_view what);
   void check_functions();
   void check_profile_rules();
-  void check_annotations(const std::vector<ast::Annotation>& annotations);
+  void check_annotations(const ast::List<ast::Annotation>& annotations);
   void check_variable(const ast::Variable& v);
   void check_technique(const ast::Technique& t);
   void check_value_type(std::string_view type_name, size_t array_dims, const ast::Expr& value,
@@ -92,7 +92,7 @@ class Checker {
                         SourceRange previous);
 
   // --- checker_states.cpp ---
-  void check_states(const std::vector<ast::StateAssignment>& states, StateBlock block,
+  void check_states(const ast::List<ast::StateAssignment>& states, StateBlock block,
                     int technique_version);
   void check_state(const ast::StateAssignment& a, StateBlock block, int technique_version,
                    FirstSeen<StateSlot, StateSlotHash>& seen);

@@ -107,7 +107,7 @@ bool Checker::profile_allows(StateApi api) const {
   return true;
 }
 
-void Checker::check_states(const std::vector<ast::StateAssignment>& states, StateBlock block,
+void Checker::check_states(const ast::List<ast::StateAssignment>& states, StateBlock block,
                            int technique_version) {
   FirstSeen<StateSlot, StateSlotHash> seen;
   for (const ast::StateAssignment& a : states) check_state(a, block, technique_version, seen);

@@ -27,10 +27,18 @@ bool Parser::parse_type(ast::TypeRef& type) {
   // Compared as the token's string_view, which tests the length first: std::string's
   // compare with a literal calls memcmp for every type name.
   std::string_view word = advance().text;
-  type.name.assign(word);
-  if ((word == "unsigned" || word == "signed") && at(TokenKind::identifier))
-    (type.name += ' ') += advance().text;
-  if (at(TokenKind::less) && !parse_template_args(type.template_arg)) return false;
+  if ((word == "unsigned" || word == "signed") && at(TokenKind::identifier)) {
+    std::string name(word);
+    (name += ' ') += advance().text;
+    type.name = keep(name);
+  } else {
+    type.name = keep(word);
+  }
+  if (at(TokenKind::less)) {
+    std::string args;
+    if (!parse_template_args(args)) return false;
+    type.template_arg = keep(args);
+  }
   type.range = range_from(first);
   return true;
 }
@@ -72,16 +80,16 @@ bool Parser::parse_template_args(std::string& out) {
   }
 }
 
-bool Parser::parse_array_dims(std::vector<ast::ExprPtr>& dims) {
+bool Parser::parse_array_dims(ast::List<ast::ExprPtr>& dims) {
   while (at(TokenKind::l_square)) {
     advance();
     if (accept(TokenKind::r_square)) {
-      dims.push_back(nullptr);  // `float a[] = {...}`: size from the initializer
+      dims.push_back(arena_, nullptr);  // `float a[] = {...}`: size from the initializer
       continue;
     }
     ast::ExprPtr size = parse_expression();
     if (failed_) return false;
-    dims.push_back(std::move(size));
+    dims.push_back(arena_, size);
     if (!expect(TokenKind::r_square, "after array size")) return false;
   }
   return true;
@@ -96,10 +104,10 @@ bool Parser::parse_semantics(ast::Variable& v) {
     }
     std::string_view word = tok().text;
     if ((word == "register" || word == "packoffset") && peek().is(TokenKind::l_paren)) {
-      std::string& target = word == "register" ? v.register_binding : v.packoffset;
+      ast::Text& kept = word == "register" ? v.register_binding : v.packoffset;
+      std::string target;
       Token open = advance();
       advance();
-      target.clear();
       while (!at(TokenKind::r_paren)) {
         if (at_eof() || at(TokenKind::semi) || at(TokenKind::l_brace)) {
           if (Diagnostic* d = error_here("expected-token",
@@ -112,8 +120,9 @@ bool Parser::parse_semantics(ast::Variable& v) {
         advance();
       }
       advance();
+      kept = keep(target);
     } else {
-      v.semantic.assign(word);
+      v.semantic = keep(word);
       advance();
     }
   }
@@ -126,7 +135,7 @@ bool Parser::parse_declarator_head(ast::Variable& v) {
                "expected a name for the declaration, found " + describe(tok()));
     return false;
   }
-  v.name.assign(tok().text);
+  v.name = keep(tok().text);
   v.name_range = tok().range();
   advance();
   if (!parse_array_dims(v.array_dims) || !parse_semantics(v)) return false;
@@ -148,9 +157,10 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
   if (at(TokenKind::identifier) && peek().is(TokenKind::l_paren)) {
     ast::Function* f = declarations_.make<ast::Function>();
     f->storage = storage;
-    f->return_type = std::move(type);
-    f->attributes = std::move(attributes);
-    f->name.assign(tok().text);
+    f->return_type = type;
+    f->attributes.reserve(arena_, attributes.size());
+    for (const std::string& a : attributes) f->attributes.push_back(arena_, keep(a));
+    f->name = keep(tok().text);
     f->name_range = tok().range();
     advance();
     if (!parse_function(*f)) return;
@@ -197,11 +207,11 @@ void Parser::finish_state_object(std::vector<ast::Decl>& out, ast::Variable& hea
                                  uint32_t first) {
   ast::StateObject* so = declarations_.make<ast::StateObject>();
   so->kind = head.type.name;
-  so->name = std::move(head.name);
+  so->name = head.name;
   so->name_range = head.name_range;
-  so->array_dims = std::move(head.array_dims);
-  so->annotations = std::move(head.annotations);
-  so->register_binding = std::move(head.register_binding);
+  so->array_dims = head.array_dims;
+  so->annotations = head.annotations;
+  so->register_binding = head.register_binding;
   if (!parse_state_list(so->states, "state object")) return;
   accept(TokenKind::semi);
   so->range = range_from(first);
@@ -216,9 +226,9 @@ bool Parser::parse_function(ast::Function& f) {
   advance();  // (
   if (at_ident("void") && peek().is(TokenKind::r_paren)) advance();
   if (!accept(TokenKind::r_paren)) {
-    f.params.reserve(4);
+    f.params.reserve(arena_, 4);
     for (;;) {
-      ast::Variable& p = f.params.emplace_back();  // in place, see parse_annotations
+      ast::Variable& p = f.params.emplace_back(arena_);  // in place, see parse_annotations
       if (!parse_parameter(p)) {
         f.params.pop_back();
         return false;
@@ -240,7 +250,7 @@ bool Parser::parse_function(ast::Function& f) {
       error_here("expected-semantic", "expected a semantic after ':', found " + describe(tok()));
       return false;
     }
-    f.semantic.assign(advance().text);
+    f.semantic = keep(advance().text);
   }
   if (at(TokenKind::l_brace)) return skip_braced(f.body, "function body");
   return expect_semi("after function declaration");
@@ -254,7 +264,7 @@ bool Parser::parse_parameter(ast::Variable& p) {
     error_here("expected-identifier", "expected a parameter name, found " + describe(tok()));
     return false;
   }
-  p.name.assign(tok().text);
+  p.name = keep(tok().text);
   p.name_range = tok().range();
   advance();
   if (!parse_array_dims(p.array_dims) || !parse_semantics(p)) return false;
@@ -267,7 +277,7 @@ bool Parser::parse_parameter(ast::Variable& p) {
   return true;
 }
 
-bool Parser::parse_member_list(std::vector<ast::Variable>& members, std::string_view what) {
+bool Parser::parse_member_list(ast::List<ast::Variable>& members, std::string_view what) {
   if (!at(TokenKind::l_brace)) {
     std::string context = "to begin ";
     context.append(what);
@@ -275,7 +285,7 @@ bool Parser::parse_member_list(std::vector<ast::Variable>& members, std::string_
   }
   Token open = tok();
   advance();
-  members.reserve(4);
+  members.reserve(arena_, 4);
   while (!at(TokenKind::r_brace)) {
     if (at_eof()) {
       unterminated(open, what);
@@ -292,7 +302,7 @@ bool Parser::parse_member_list(std::vector<ast::Variable>& members, std::string_
     ast::TypeRef type;
     if (parse_type(type)) {
       for (;;) {
-        ast::Variable& v = members.emplace_back();  // in place, see parse_annotations
+        ast::Variable& v = members.emplace_back(arena_);  // in place, see parse_annotations
         v.storage = storage;
         v.type = type;
         if (!parse_declarator_head(v) || !parse_initializer(v)) {
@@ -322,7 +332,7 @@ void Parser::parse_struct(std::vector<ast::Decl>& out) {
     error_here("expected-identifier", "expected a struct name, found " + describe(tok()));
     return;
   }
-  s->name.assign(tok().text);
+  s->name = keep(tok().text);
   s->name_range = tok().range();
   advance();
   if (!parse_member_list(s->members, "struct")) return;
@@ -349,7 +359,7 @@ void Parser::parse_typedef(std::vector<ast::Decl>& out) {
       error_here("expected-identifier", "expected a typedef name, found " + describe(tok()));
       return;
     }
-    t->name.assign(advance().text);
+    t->name = keep(advance().text);
     if (!parse_array_dims(t->array_dims)) return;
     ast::Decl d;
     d.kind = ast::DeclKind::type_alias;
@@ -368,12 +378,12 @@ void Parser::parse_constant_buffer(std::vector<ast::Decl>& out) {
   uint32_t first = pos_;
   ast::ConstantBuffer* cb = declarations_.make<ast::ConstantBuffer>();
   cb->texture_buffer = advance().text == "tbuffer";
-  cb->name.assign(tok().text);
+  cb->name = keep(tok().text);
   cb->name_range = tok().range();
   advance();
   ast::Variable binding;
   if (!parse_semantics(binding)) return;
-  cb->register_binding = std::move(binding.register_binding);
+  cb->register_binding = binding.register_binding;
   if (!parse_member_list(cb->members, "constant buffer")) return;
   accept(TokenKind::semi);
   cb->range = range_from(first);

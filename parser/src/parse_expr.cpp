@@ -129,7 +129,7 @@ ast::ExprPtr Parser::parse_binary(int min_precedence) {
     int precedence = binary_precedence(tok().kind);
     if (precedence == 0 || precedence < min_precedence) return lhs;
     auto e = make(ast::ExprKind::binary, first);
-    e->text.assign(advance().text);
+    e->text = keep(advance().text);
     ast::ExprPtr rhs = parse_binary(precedence + 1);
     if (failed_) return nullptr;
     e->args = expressions_.list({lhs, rhs});
@@ -150,7 +150,7 @@ ast::ExprPtr Parser::parse_unary() {
     case TokenKind::plusplus:
     case TokenKind::minusminus: {
       result = make(ast::ExprKind::unary, first);
-      result->text.assign(advance().text);
+      result->text = keep(advance().text);
       ast::ExprPtr operand = parse_unary();
       if (failed_) {
         result = nullptr;
@@ -166,7 +166,7 @@ ast::ExprPtr Parser::parse_unary() {
           starts_operand(peek(3).kind)) {
         result = make(ast::ExprKind::cast, first);
         advance();
-        result->text.assign(advance().text);
+        result->text = keep(advance().text);
         advance();
         ast::ExprPtr operand = parse_unary();
         if (failed_) {
@@ -200,7 +200,7 @@ ast::ExprPtr Parser::parse_postfix_operators(ast::ExprPtr e, uint32_t first) {
     } else if (at(TokenKind::period) && peek().is(TokenKind::identifier)) {
       advance();
       auto member = make(ast::ExprKind::member, first);
-      member->text.assign(advance().text);
+      member->text = keep(advance().text);
       member->args = expressions_.list({e});
       member->range = range_from(first);
       e = std::move(member);
@@ -219,7 +219,7 @@ ast::ExprPtr Parser::parse_primary() {
       auto e = make(t.is(TokenKind::integer) ? ast::ExprKind::int_literal
                                              : ast::ExprKind::float_literal,
                     first);
-      e->text.assign(t.text);
+      e->text = keep(t.text);
       bool fast = t.is(TokenKind::integer) ? decimal_value(t.text, e->number)
                                            : simple_float_value(t.text, e->number);
       if (!fast) {
@@ -236,7 +236,9 @@ ast::ExprPtr Parser::parse_primary() {
     }
     case TokenKind::string: {
       auto e = make(ast::ExprKind::string_literal, first);
-      while (at(TokenKind::string)) append_unquoted(e->text, advance().text);  // "a" "b" joins
+      std::string text;
+      while (at(TokenKind::string)) append_unquoted(text, advance().text);  // "a" "b" joins
+      e->text = keep(text);
       e->range = range_from(first);
       return e;
     }
@@ -265,7 +267,7 @@ ast::ExprPtr Parser::parse_primary() {
         return nullptr;
       }
       auto e = make(ast::ExprKind::reference, first);
-      e->text.assign(advance().text);
+      e->text = keep(advance().text);
       split_greater();
       if (!expect(TokenKind::greater, "to close the parameter reference")) return nullptr;
       e->range = range_from(first);
@@ -283,14 +285,14 @@ ast::ExprPtr Parser::parse_identifier_expr() {
   bool braces_follow = peek().is(TokenKind::l_brace);
   if (iequals(word, "true") || iequals(word, "false")) {
     auto e = make(ast::ExprKind::bool_literal, first);
-    e->text.assign(word);
+    e->text = keep(word);
     e->number = iequals(word, "true") ? 1 : 0;
     advance();
     return e;
   }
   if (iequals(word, "NULL")) {
     auto e = make(ast::ExprKind::null, first);
-    e->text.assign(word);
+    e->text = keep(word);
     advance();
     return e;
   }
@@ -298,7 +300,7 @@ ast::ExprPtr Parser::parse_identifier_expr() {
   if (braces_follow && (iequals(word, "asm") || iequals(word, "decl"))) return parse_asm();
   if (braces_follow && (word == "sampler_state" || word == "stateblock_state")) {
     auto e = make(ast::ExprKind::state_block, first);
-    e->text.assign(advance().text);
+    e->text = keep(advance().text);
     if (!parse_state_list(e->states, e->text)) return nullptr;
     e->range = range_from(first);
     return e;
@@ -306,13 +308,13 @@ ast::ExprPtr Parser::parse_identifier_expr() {
   advance();
   if (at(TokenKind::l_paren)) {
     auto e = make(ast::ExprKind::call, first);
-    e->text.assign(word);
+    e->text = keep(word);
     if (!parse_call_args(e->args)) return nullptr;
     e->range = range_from(first);
     return e;
   }
   auto e = make(ast::ExprKind::identifier, first);
-  e->text.assign(word);
+  e->text = keep(word);
   return e;
 }
 
@@ -325,13 +327,13 @@ ast::ExprPtr Parser::parse_compile() {
                "expected a shader profile after 'compile', found " + describe(tok()));
     return nullptr;
   }
-  e->text.assign(advance().text);
+  e->text = keep(advance().text);
   if (!at(TokenKind::identifier)) {
     error_here("expected-identifier",
                "expected a shader function after the profile, found " + describe(tok()));
     return nullptr;
   }
-  e->callee.assign(advance().text);
+  e->callee = keep(advance().text);
   if (at(TokenKind::l_paren) && !parse_call_args(e->args)) return nullptr;
   e->range = range_from(first);
   return e;

@@ -66,6 +66,8 @@ class Parser {
     return r;
   }
   ast::TokenSpan span_from(uint32_t first) const { return {first, pos_}; }
+  // A copy of `text` in the effect's arena, for the nodes' names and texts.
+  ast::Text keep(std::string_view text) { return arena_.text(text); }
 
   // --- errors and recovery (parser.cpp) ---
   // Reports unless an error is already being recovered from; marks the parse failed.
@@ -89,7 +91,7 @@ class Parser {
   uint32_t parse_storage();
   bool parse_type(ast::TypeRef& type);
   bool parse_template_args(std::string& out);
-  bool parse_array_dims(std::vector<ast::ExprPtr>& dims);
+  bool parse_array_dims(ast::List<ast::ExprPtr>& dims);
   bool parse_semantics(ast::Variable& v);
   bool parse_declarator_head(ast::Variable& v);
   bool parse_initializer(ast::Variable& v);
@@ -97,19 +99,19 @@ class Parser {
                                   std::vector<std::string> attributes);
   bool parse_function(ast::Function& f);
   bool parse_parameter(ast::Variable& p);
-  bool parse_member_list(std::vector<ast::Variable>& members, std::string_view what);
+  bool parse_member_list(ast::List<ast::Variable>& members, std::string_view what);
   void parse_struct(std::vector<ast::Decl>& out);
   void parse_typedef(std::vector<ast::Decl>& out);
   void parse_constant_buffer(std::vector<ast::Decl>& out);
   void finish_state_object(std::vector<ast::Decl>& out, ast::Variable& head, uint32_t first);
 
   // --- effect blocks (parse_technique.cpp) ---
-  bool parse_annotations(std::vector<ast::Annotation>& out);
+  bool parse_annotations(ast::List<ast::Annotation>& out);
   bool parse_annotation(ast::Annotation& a);
   bool parse_technique(ast::Technique& t);
   bool parse_pass(ast::Pass& p);
   // `{ State = value; ... }` (pass bodies, state objects, sampler_state).
-  bool parse_state_list(std::vector<ast::StateAssignment>& out, std::string_view what);
+  bool parse_state_list(ast::List<ast::StateAssignment>& out, std::string_view what);
   bool parse_state(ast::StateAssignment& s);
   void parse_group(std::vector<ast::Decl>& out);
 
@@ -140,6 +142,7 @@ class Parser {
   std::vector<Token> tokens_;
   ast::DeclPool declarations_;
   ast::ExprPool expressions_;
+  ast::Arena arena_;  // the nodes' texts and lists
   // Arguments and list elements being parsed, innermost list last: each list is stored
   // in the pool once complete, so none needs a vector of its own.
   std::vector<ast::ExprPtr> pending_args_;

@@ -202,6 +202,7 @@ ast::Effect Parser::run() {
   effect.tokens = std::move(tokens_);
   effect.declarations = std::move(declarations_);
   effect.expressions = std::move(expressions_);
+  effect.arena = std::move(arena_);
   return effect;
 }
 
@@ -223,7 +224,7 @@ void Parser::parse_top_level(std::vector<ast::Decl>& out) {
       ast::Decl d;
       d.kind = ast::DeclKind::directive;
       d.directive = declarations_.make<ast::Directive>();
-      d.directive->text.assign(t.text);
+      d.directive->text = keep(t.text);
       d.directive->range = t.range();
       advance();
       d.directive->tokens = span_from(first);
@@ -296,7 +297,7 @@ void Parser::parse_glsl_block(std::vector<ast::Decl>& out) {
   advance();  // GLSLShader
   ast::GlslBlock* block = declarations_.make<ast::GlslBlock>();
   if (at(TokenKind::identifier)) {
-    block->name.assign(tok().text);
+    block->name = keep(tok().text);
     block->name_range = tok().range();
     advance();
   }

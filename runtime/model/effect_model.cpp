@@ -98,7 +98,7 @@ class Builder {
   }
 
  private:
-  std::vector<Annotation> annotations(const std::vector<ast::Annotation>& list) {
+  std::vector<Annotation> annotations(const ast::List<ast::Annotation>& list) {
     std::vector<Annotation> out;
     for (const ast::Annotation& a : list) {
       if (!a.value) continue;
@@ -191,7 +191,7 @@ class Builder {
     model_.textures.push_back(std::move(t));
   }
 
-  void add_sampler(std::string name, const std::vector<ast::StateAssignment>& states, uint32_t parameter,
+  void add_sampler(std::string name, const ast::List<ast::StateAssignment>& states, uint32_t parameter,
                    uint32_t object, SourceRange range, bool d3d10) {
     std::vector<ResolvedState> resolved;
     StateBlock block = d3d10 ? StateBlock::sampler_object : StateBlock::sampler_state;

@@ -262,7 +262,7 @@ Type TypeTable::lookup(std::string_view name) const {
   return {};
 }
 
-Type TypeTable::resolve(const ast::TypeRef& ref, uint32_t storage, const std::vector<ast::ExprPtr>& dims,
+Type TypeTable::resolve(const ast::TypeRef& ref, uint32_t storage, const ast::List<ast::ExprPtr>& dims,
                         DiagnosticSink& diags, const ConstantScope* scope) const {
   Type t;
   std::string_view name = ref.name;

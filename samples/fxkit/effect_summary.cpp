@@ -20,7 +20,7 @@ nlohmann::json literal(const fx::ast::Expr* e) {
   }
 }
 
-nlohmann::json annotations(const std::vector<fx::ast::Annotation>& list) {
+nlohmann::json annotations(const fx::ast::List<fx::ast::Annotation>& list) {
   nlohmann::json out = nlohmann::json::array();
   for (const fx::ast::Annotation& a : list)
     out.push_back({{"type", a.type.name}, {"name", a.name}, {"value", literal(a.value)}});

@@ -50,7 +50,7 @@ json location(const fx::SourceManager& sm, fx::SourceRange range) {
   return {{"file", std::string(p.file)}, {"line", p.line}, {"column", p.column}};
 }
 
-json annotations(const std::vector<fx::ast::Annotation>& list) {
+json annotations(const fx::ast::List<fx::ast::Annotation>& list) {
   json out = json::array();
   for (const fx::ast::Annotation& a : list)
     out.push_back({{"name", a.name},
@@ -59,7 +59,7 @@ json annotations(const std::vector<fx::ast::Annotation>& list) {
   return out;
 }
 
-json states(const std::vector<fx::ast::StateAssignment>& list) {
+json states(const fx::ast::List<fx::ast::StateAssignment>& list) {
   json out = json::array();
   for (const fx::ast::StateAssignment& s : list) {
     json j = {{"name", s.name}, {"value", s.value ? fx::spell_expression(*s.value) : ""}};

@@ -384,22 +384,22 @@ TEST(Checker, PartialHandBuiltTreesDoNotCrash) {
   ast::Pass p;
   ast::StateAssignment no_value;
   no_value.name = "ZEnable";
-  p.states.push_back(std::move(no_value));
+  p.states.push_back(fx.arena, no_value);
   ast::StateAssignment call;
   call.name = "SetBlendState";
   call.call_style = true;
   call.value = fx.expressions.make(ast::ExprKind::call);
   call.value->args = fx.expressions.list({nullptr});
-  p.states.push_back(std::move(call));
+  p.states.push_back(fx.arena, call);
   ast::StateAssignment binary;
   binary.name = "ColorArg1";
   binary.value = fx.expressions.make(ast::ExprKind::binary);
   binary.value->text = "|";
   binary.value->args = fx.expressions.list({nullptr});
-  p.states.push_back(std::move(binary));
-  d.technique->passes.push_back(std::move(p));
-  d.technique->passes.emplace_back();
-  d.technique->passes.emplace_back();  // two unnamed passes are not duplicates
+  p.states.push_back(fx.arena, binary);
+  d.technique->passes.push_back(fx.arena, p);
+  d.technique->passes.emplace_back(fx.arena);
+  d.technique->passes.emplace_back(fx.arena);  // two unnamed passes are not duplicates
   fx.decls.push_back(d);
   SourceManager sm;
   DiagnosticSink diags;

@@ -190,7 +190,9 @@ TEST(Parser, Functions) {
   // The body is shader code: kept verbatim, even without the ';' HLSL would need.
   EXPECT_EQ(p->spelled(vs.body), "if ( x > 0 ) { return pos * scale }");
   EXPECT_TRUE(p->decl(1).function->body.empty());
-  EXPECT_EQ(p->decl(2).function->attributes, std::vector<std::string>{"numthreads(8,8,1)"});
+  const auto& attributes = p->decl(2).function->attributes;
+  EXPECT_EQ(std::vector<std::string>(attributes.begin(), attributes.end()),
+            std::vector<std::string>{"numthreads(8,8,1)"});
   EXPECT_EQ(p->decl(3).function->storage, uint32_t(ast::kInline));
   EXPECT_TRUE(p->decl(3).function->params.empty());
 }

@@ -111,7 +111,7 @@ class TypeTable {
   // Resolves a type as written plus the declaration's storage (row_major/column_major)
   // and array dimensions. Unknown names -> `unknown-type` with a did-you-mean;
   // bad dimensions -> `bad-array-size`. Returns TypeClass::error after a diagnostic.
-  Type resolve(const ast::TypeRef& ref, uint32_t storage, const std::vector<ast::ExprPtr>& dims,
+  Type resolve(const ast::TypeRef& ref, uint32_t storage, const ast::List<ast::ExprPtr>& dims,
                DiagnosticSink& diags, const ConstantScope* scope = nullptr) const;
   // Resolves a name alone (no diagnostics); TypeClass::error if unknown.
   Type lookup(std::string_view name) const;
