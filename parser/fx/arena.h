@@ -87,7 +87,8 @@ class Arena {
  private:
   // Blocks start small, so a small effect does not pay for a big block, and double up to
   // kMaxBlock; a request larger than that gets a block of its own.
-  static constexpr size_t kFirstBlock = 4096, kMaxBlock = 256 * 1024;
+  static constexpr size_t kFirstBlock = 4096, kMaxBlock = size_t(8) << 20;
+  static constexpr size_t kHugeBlock = size_t(4) << 20;  // advised for huge pages from here
   void* allocate_slow(size_t bytes, size_t align);
 
   std::vector<std::unique_ptr<std::byte[]>> blocks_;

@@ -5,38 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
-#include <fstream>
 #include <numeric>
-#include <sstream>
 #include <string>
+
+#include "vm_flags.h"
 
 namespace {
 
-// The VmFlags of the mapping of this process that holds `address`, or "" if none was found.
-std::string vm_flags_at(const void* address) {
-  std::ifstream smaps("/proc/self/smaps");
-  const auto a = reinterpret_cast<uintptr_t>(address);
-  std::string line;
-  bool inside = false;
-  while (std::getline(smaps, line)) {
-    uintptr_t begin = 0, end = 0;
-    char dash = 0;
-    std::istringstream head(line);
-    if (head >> std::hex >> begin >> dash >> end && dash == '-') {
-      inside = a >= begin && a < end;
-    } else if (inside && line.rfind("VmFlags:", 0) == 0) {
-      return line;
-    }
-  }
-  return "";
-}
-
-bool kernel_has_transparent_huge_pages() {
-  std::ifstream f("/sys/kernel/mm/transparent_hugepage/enabled");
-  std::string s;
-  std::getline(f, s);
-  return !s.empty() && s.find("[never]") == std::string::npos;
-}
+using fxkit_test::kernel_has_transparent_huge_pages;
+using fxkit_test::vm_flags_at;
 
 TEST(HugePages, ReserveKeepsTheElementsInOrder) {
   std::vector<uint64_t> v(1000);

@@ -1,6 +1,7 @@
 // ast::Arena and ast::List (fx/arena.h), the storage of the nodes' texts and lists: texts
 // are copies, lists keep their elements as they grow across blocks, a move hands the
-// storage over, and requests larger than a block get one of their own.
+// storage over, requests larger than a block get one of their own, and the large blocks of a
+// large effect are advised for huge pages.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #include <utility>
 
 #include "fx/arena.h"
+#include "vm_flags.h"
 
 namespace {
 
@@ -60,6 +62,29 @@ TEST(Arena, LargeRequestsAndMovesKeepStorage) {
   EXPECT_EQ(more[0], 1.5);
   EXPECT_EQ(afresh[0], 2.5);
   EXPECT_NE(more.data(), afresh.data());
+}
+
+// A 10 MB effect fills tens of MB of blocks, each page written once: the blocks of 4 MB
+// and up are advised for 2 MB pages, as the token stream is (fx/huge_pages.h).
+TEST(Arena, LargeBlocksAreAdvisedForHugePages) {
+  if (!fxkit_test::kernel_has_transparent_huge_pages()) GTEST_SKIP() << "transparent huge pages are off on this kernel";
+  Arena arena;
+  constexpr size_t kPiece = 64 << 10;
+  std::byte* run = nullptr;  // first piece of the current block's contiguous run
+  std::byte* last = nullptr;
+  for (int i = 0; i < 1024 && !(run && last + kPiece - run >= (6u << 20)); ++i) {
+    auto* p = static_cast<std::byte*>(arena.allocate(kPiece, 16));
+    if (p != last + kPiece) run = p;  // a new block
+    last = p;
+  }
+  ASSERT_GE(last + kPiece - run, std::ptrdiff_t(6) << 20) << "no block of 6 MB or more";
+  // 3 MB into a block of 8 MB lies inside one of its whole 2 MB pages.
+  const std::string flags = fxkit_test::vm_flags_at(run + (3u << 20));
+  ASSERT_FALSE(flags.empty());
+  EXPECT_NE(flags.find(" hg"), std::string::npos) << flags;
+  // A small effect's first block is left alone.
+  Arena small;
+  EXPECT_EQ(fxkit_test::vm_flags_at(small.allocate(16, 16)).find(" hg"), std::string::npos);
 }
 
 }  // namespace
