@@ -72,12 +72,18 @@ TEST(Arena, LargeBlocksAreAdvisedForHugePages) {
   constexpr size_t kPiece = 64 << 10;
   std::byte* run = nullptr;  // first piece of the current block's contiguous run
   std::byte* last = nullptr;
-  for (int i = 0; i < 1024 && !(run && last + kPiece - run >= (6u << 20)); ++i) {
+  size_t run_bytes = 0;
+  for (int i = 0; i < 1024 && run_bytes < (size_t(6) << 20); ++i) {
     auto* p = static_cast<std::byte*>(arena.allocate(kPiece, 16));
-    if (p != last + kPiece) run = p;  // a new block
+    if (last && p == last + kPiece) {
+      run_bytes += kPiece;
+    } else {  // a new block
+      run = p;
+      run_bytes = kPiece;
+    }
     last = p;
   }
-  ASSERT_GE(last + kPiece - run, std::ptrdiff_t(6) << 20) << "no block of 6 MB or more";
+  ASSERT_GE(run_bytes, size_t(6) << 20) << "no block of 6 MB or more";
   // 3 MB into a block of 8 MB lies inside one of its whole 2 MB pages.
   const std::string flags = fxkit_test::vm_flags_at(run + (3u << 20));
   ASSERT_FALSE(flags.empty());
