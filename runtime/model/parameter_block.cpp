@@ -131,6 +131,7 @@ void ParameterStore::Impl::plan_runs(const Node& n, const BlockMemberLayout& m, 
 
 ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMemberLayout> members, uint32_t block_size) {
   Impl& s = *impl_;
+  s.sync_all();  // the block being laid out again may be a hot one
   Impl::Block b;
   b.id = block;
   b.size = block_size;
@@ -182,6 +183,17 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
   return {};
 }
 
+void ParameterStore::Impl::sync_words(uint32_t top) const {
+  HotGroup& h = hot[top];
+  const uint8_t* from = blocks[h.block].packed.data() + h.dst;
+  uint32_t* held = words.data() + h.words;
+  uint32_t bytes[16];
+  std::memcpy(bytes, from, sizeof bytes);
+  if (h.kind == RunKind::columns4x4) transpose4x4(bytes, held);  // column registers back to rows
+  else std::memcpy(held, bytes, sizeof bytes);
+  h.stale = false;
+}
+
 inline void ParameterStore::Impl::pack(Block& b, uint32_t first, uint32_t count) const {
   const uint32_t* own = words.data();
   const uint32_t* pooled = pool ? pool->words_.data() : nullptr;
@@ -210,6 +222,7 @@ bool ParameterStore::Impl::refresh(Block& b) {
   auto repack = [&](RunGroup& g) {
     const uint64_t version = versions[g.top];
     if (version == g.packed_version) return;  // unchanged, written by store_hot, or touched twice
+    sync(g.top);  // another block may hold its value
     pack(b, g.first, g.count);
     g.packed_version = version;
     changed = true;
@@ -288,6 +301,7 @@ void remap(const ParameterStore& old_store, ParameterStore& new_store) {
     auto& b = n.nodes[j];
     if (a.string_slot != kNoIndex && b.string_slot != kNoIndex) n.strings[b.string_slot] = o.strings[a.string_slot];
     if (b.pooled || a.words != b.words || a.words == 0) continue;
+    o.sync(i);
     std::memcpy(n.data(b), o.data(a), a.words * sizeof(uint32_t));
     n.touch(b);
   }

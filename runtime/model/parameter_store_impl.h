@@ -160,13 +160,29 @@ struct ParameterStore::Impl {
     uint32_t words = 0;  // the parameter's first word (Node::offset)
     uint32_t dst = 0;    // its run's first byte in the block
     RunKind kind = RunKind::copy;
+    // The value is in the hot block's bytes only: store_hot leaves the words behind, as
+    // D3DX effects keep a constant buffer's shadow as the one copy. sync() brings them back
+    // before anything else reads or partly writes them.
+    bool stale = false;
   };
   // set_matrix's per-object path: the new value of a top-level float4x4 `top` that has a
   // hot block, 16 floats row by row (`v_columns`: column by column). Inline into
-  // set_matrix, and loaded once: the same four registers are compared with the held words
-  // (rows), stored as them and into the hot block in the order its registers hold.
+  // set_matrix: the four registers are compared with the hot block's bytes and stored
+  // there in the order its registers hold (no transpose when the app's order is the
+  // block's); the words are left stale.
   template <bool v_columns>
   [[gnu::always_inline]] inline void store_hot(uint32_t top, const float* v);
+  // The words of top-level `top` made current again after store_hot left them stale.
+  void sync(uint32_t top) const {
+    if (hot[top].stale) [[unlikely]] sync_words(top);
+  }
+  [[gnu::noinline]] void sync_words(uint32_t top) const;
+  // store_hot's way when its block missed a change: into the words, logged.
+  template <bool v_columns>
+  [[gnu::noinline]] void store_hot_words(uint32_t top, const float* v);
+  void sync_all() const {
+    for (uint32_t top = 0; top < top_count; ++top) sync(top);
+  }
   // Re-packs the runs of `b` whose parameter changed since they were packed; true when
   // anything was re-packed or the block was never handed out.
   bool refresh(Block& b);
@@ -181,7 +197,7 @@ struct ParameterStore::Impl {
   ParameterPool* pool = nullptr;
   std::vector<Node> nodes;
   uint32_t top_count = 0;            // nodes [0, top_count) are the model's parameters
-  std::vector<uint32_t> words;
+  mutable std::vector<uint32_t> words;  // mutable: sync() refreshes the stale words of a hot matrix
   std::vector<BaseType> bases;       // per component, see Node::base_offset
   std::vector<std::string> strings;
   // Per top-level node, bumped on every change: a block compares it with what it packed,
@@ -194,7 +210,7 @@ struct ParameterStore::Impl {
   uint64_t changes = 0;
   uint32_t touched[kTouchLog] = {};
   std::vector<Block> blocks;
-  std::vector<HotGroup> hot;  // per top-level node
+  mutable std::vector<HotGroup> hot;  // per top-level node
   std::unordered_map<uint32_t, uint32_t> block_slot;
   std::unordered_map<std::string, uint32_t> by_name;
   std::unordered_map<std::string, uint32_t> by_semantic;  // lower-cased
@@ -263,10 +279,12 @@ struct ParameterStore::Impl {
                                               "' was removed by a reload; the call did nothing");
       }
       out = table[p.index];
+      sync(nodes[out].top);
       return {};
     }
     if (p.index >= nodes.size()) return fail(ParamStatus::invalid_handle, "invalid parameter handle");
     out = p.index;
+    sync(nodes[out].top);  // every call through a handle sees current words
     return {};
   }
 
@@ -343,47 +361,50 @@ struct ParameterStore::Impl {
 
 template <bool v_columns>
 inline void ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
-  const HotGroup& h = hot[top];
-  uint32_t* held = words.data() + h.words;
-  const bool to_columns = h.kind == RunKind::columns4x4;
-#if defined(__SSE2__)
-  __m128 v0 = _mm_loadu_ps(v), v1 = _mm_loadu_ps(v + 4), v2 = _mm_loadu_ps(v + 8), v3 = _mm_loadu_ps(v + 12);
-  __m128 r0 = v0, r1 = v1, r2 = v2, r3 = v3;
-  if constexpr (v_columns) _MM_TRANSPOSE4_PS(r0, r1, r2, r3);  // rows, as held
-  const __m128i diff = _mm_or_si128(
-      _mm_or_si128(_mm_xor_si128(_mm_castps_si128(r0), _mm_loadu_si128(reinterpret_cast<const __m128i*>(held))),
-                   _mm_xor_si128(_mm_castps_si128(r1), _mm_loadu_si128(reinterpret_cast<const __m128i*>(held + 4)))),
-      _mm_or_si128(_mm_xor_si128(_mm_castps_si128(r2), _mm_loadu_si128(reinterpret_cast<const __m128i*>(held + 8))),
-                   _mm_xor_si128(_mm_castps_si128(r3), _mm_loadu_si128(reinterpret_cast<const __m128i*>(held + 12)))));
-  if (_mm_movemask_epi8(_mm_cmpeq_epi32(diff, _mm_setzero_si128())) == 0xFFFF) return;  // no bit changed
-  store_registers(held, r0, r1, r2, r3);
-#else
-  float rows[16];
-  if constexpr (v_columns) {
-    transpose4x4(v, rows);
-    v = rows;
-  }
-  if (!copy_words(held, v, 16)) return;
-#endif
-  // Never pooled (see whole4x4); logged for the blocks other than the hot one.
-  const uint64_t version = log_change(top);
+  HotGroup& h = hot[top];
   Block& b = blocks[h.block];
   RunGroup& g = b.groups[h.group];
-  if (g.packed_version != version - 1) return;  // the block missed a change: its refresh re-packs
+  if (g.packed_version != versions[top]) [[unlikely]] {
+    // The block missed a change (a set through the words, never stale then): store the
+    // words and let its refresh re-pack.
+    sync(top);
+    store_hot_words<v_columns>(top, v);
+    return;
+  }
+  const bool to_columns = h.kind == RunKind::columns4x4;
   uint8_t* to = b.packed.data() + h.dst;
 #if defined(__SSE2__)
+  __m128 v0 = _mm_loadu_ps(v), v1 = _mm_loadu_ps(v + 4), v2 = _mm_loadu_ps(v + 8), v3 = _mm_loadu_ps(v + 12);
   // The hot block's registers are the app's own order or its transpose.
   if (to_columns != v_columns) _MM_TRANSPOSE4_PS(v0, v1, v2, v3);
+  const __m128i diff = _mm_or_si128(
+      _mm_or_si128(_mm_xor_si128(_mm_castps_si128(v0), _mm_loadu_si128(reinterpret_cast<const __m128i*>(to))),
+                   _mm_xor_si128(_mm_castps_si128(v1), _mm_loadu_si128(reinterpret_cast<const __m128i*>(to + 16)))),
+      _mm_or_si128(_mm_xor_si128(_mm_castps_si128(v2), _mm_loadu_si128(reinterpret_cast<const __m128i*>(to + 32))),
+                   _mm_xor_si128(_mm_castps_si128(v3), _mm_loadu_si128(reinterpret_cast<const __m128i*>(to + 48)))));
+  if (_mm_movemask_epi8(_mm_cmpeq_epi32(diff, _mm_setzero_si128())) == 0xFFFF) return;  // no bit changed
   store_registers(to, v0, v1, v2, v3);
 #else
-  if (to_columns) param_detail::write_columns4x4(to, held);
-  else std::memcpy(to, held, 16 * sizeof(uint32_t));
+  float ordered[16];
+  if (to_columns != v_columns) transpose4x4(v, ordered);
+  else std::memcpy(ordered, v, sizeof ordered);
+  if (std::memcmp(to, ordered, sizeof ordered) == 0) return;  // no bit changed
+  std::memcpy(to, ordered, sizeof ordered);
 #endif
-  g.packed_version = version;
+  h.stale = true;
+  // Logged for the blocks other than the hot one, which sync() before they re-pack.
+  g.packed_version = log_change(top);
   b.fresh = true;
   // A block that had taken every earlier change has now taken this one too: its next
   // refresh has no logged change to look at.
   if (b.seen_changes == changes - 1) b.seen_changes = changes;
+}
+
+template <bool v_columns>
+void ParameterStore::Impl::store_hot_words(uint32_t top, const float* v) {
+  const Node& n = nodes[top];
+  if constexpr (v_columns) store_columns4x4(n, v);
+  else store_floats(n, v);
 }
 
 }  // namespace fx

@@ -403,6 +403,64 @@ TEST(ParameterStore, SetMatrixTakesColumnMajorInput) {
   }
 }
 
+// Once a block is hot, set_matrix writes only that block's bytes and leaves the stored
+// words behind. Every other reader must see the value the block holds: get_matrix, a block
+// laid out later, a second block re-packing, remap(), and a set() of the value the words
+// still hold (which is a change, not a no-op).
+TEST(ParameterStore, MatrixWrittenInPlaceIsTheOneValue) {
+  auto b = test::build("float4x4 World; float Gloss;");
+  ParameterStore s(b->model);
+  const BlockMemberLayout columns[] = {{"World", 0, 64, 0, 16, MatrixOrder::column_major}};
+  const BlockMemberLayout rows[] = {{"World", 16, 64, 0, 16, MatrixOrder::row_major}, {"Gloss", 0, 4, 0, 16, MatrixOrder::column_major}};
+  ASSERT_TRUE(s.bind_layout(1, columns, 64));
+  const Param world = s.find("World"), gloss = s.find("Gloss");
+  float a[16], c[16], back[16];
+  for (int i = 0; i < 16; ++i) a[i] = float(i + 1), c[i] = -float(i + 1);
+  auto drawn = [&](uint32_t block) {
+    bool changed = false;
+    std::span<const uint8_t> bytes = s.update_block(s.block(block), changed);
+    return std::vector<uint8_t>(bytes.begin(), bytes.end());
+  };
+  auto as_columns = [](const float* m) {
+    std::vector<uint8_t> out(64);
+    for (int col = 0; col < 4; ++col)
+      for (int r = 0; r < 4; ++r) std::memcpy(out.data() + (col * 4 + r) * 4, &m[r * 4 + col], 4);
+    return out;
+  };
+  ASSERT_TRUE(s.set_matrix(world, a));
+  EXPECT_EQ(drawn(1), as_columns(a)) << "the first draw packs the words and makes block 1 hot";
+  ASSERT_TRUE(s.set_matrix(world, c));  // in place: the words still hold `a`
+  EXPECT_TRUE(s.dirty(1));
+  EXPECT_EQ(drawn(1), as_columns(c));
+  EXPECT_FALSE(s.dirty(1));
+  ASSERT_TRUE(s.get_matrix(world, back));
+  EXPECT_TRUE(std::equal(back, back + 16, c)) << "get_matrix reads the block's value";
+
+  ASSERT_TRUE(s.set_matrix(world, a));
+  ASSERT_TRUE(s.bind_layout(2, rows, 80)) << "a block laid out now packs the current value";
+  std::vector<uint8_t> two = drawn(2);
+  EXPECT_EQ(0, std::memcmp(two.data() + 16, a, 64));
+  EXPECT_EQ(drawn(1), as_columns(a));
+
+  ASSERT_TRUE(s.set_matrix(world, c));  // in place into block 1 again, logged for block 2
+  EXPECT_TRUE(s.dirty(2));
+  ASSERT_TRUE(s.set(gloss, 0.5f));
+  two = drawn(2);
+  EXPECT_EQ(0, std::memcmp(two.data() + 16, c, 64)) << "block 2 re-packs the value block 1 holds";
+
+  ASSERT_TRUE(s.set_matrix(world, a));
+  EXPECT_EQ(drawn(1), as_columns(a));
+  ASSERT_TRUE(s.set_matrix(world, c));  // in place: the words hold `a` until synced
+  ASSERT_TRUE(s.set(world, std::span<const float>(a))) << "a set() of the stale words' value";
+  EXPECT_EQ(drawn(1), as_columns(a)) << "is a change";
+  ASSERT_TRUE(s.set_matrix(world, c));
+
+  ParameterStore reloaded(b->model);
+  remap(s, reloaded);
+  ASSERT_TRUE(reloaded.get_matrix(world, back));
+  EXPECT_TRUE(std::equal(back, back + 16, c)) << "remap carries the in-place value";
+}
+
 TEST(ParameterStore, SharedPool) {
   auto one = test::build("shared float4x4 ViewProj; shared float Time = 1; float local = 2;");
   auto two = test::build("shared float Time = 5; shared float4x4 ViewProj; shared int Time2;");
