@@ -29,11 +29,19 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr uint32_t kObjects = 2000;
 
+// A per-object matrix as both paths get it: the app's array, in the layout the shader's
+// registers read (see the object transforms below), and that layout for fxkit.
+struct AppMatrix {
+  fx::Param param;
+  const glm::mat4* values = nullptr;
+  fx::HostMatrixOrder order = fx::HostMatrixOrder::row_major;
+};
+
 struct Group {
   fx::vk::EffectFile* effect;
   fx::vk::EffectBinding* binding;
   uint32_t technique, layout;
-  fx::Param world, wvp;
+  AppMatrix world, wvp;
 };
 
 // What the hand-written path keeps per pass: pipeline, layout, its own descriptor set and
@@ -108,22 +116,33 @@ int bench_apply(const BenchArgs& args) {
         }
         auto inputs = fx::vk::technique_vertex_inputs(*e->model, *e->programs, t);
         groups.push_back({e.get(), b.get(), t, b->add_vertex_layout(preview->vertex_layout(inputs)),
-                          e->params->by_semantic("WORLD"), e->params->by_semantic("WORLDVIEWPROJECTION")});
+                          {e->params->by_semantic("WORLD")}, {e->params->by_semantic("WORLDVIEWPROJECTION")}});
       }
       effects.push_back(std::move(e));
       bindings.push_back(std::move(b));
     }
     const fx::vk::RenderingFormats formats = preview->formats();
     const fx::vk::SceneView scene = preview->scene();
-    // Object transforms: a grid, the same for both paths.
-    // The hand-written path keeps them in the layout its shaders read as well (the
-    // transpose for column_major registers), as an engine choosing its own math would.
+    // Object transforms: a grid, the same for both paths. The app keeps them in the layout
+    // its shaders' registers read, as an engine choosing its own math would: the transpose
+    // for column_major registers. Both paths read the same arrays; fxkit is told their
+    // order (HostMatrixOrder), the hand-written path copies them as they are.
     std::vector<glm::mat4> world(kObjects), wvp(kObjects), world_t(kObjects), wvp_t(kObjects);
     for (uint32_t i = 0; i < kObjects; ++i) {
       world[i] = glm::translate(glm::mat4(1.0f), glm::vec3(float(i % 50) * 0.02f - 0.5f, float(i / 50) * 0.02f - 0.4f, 0.0f));
       wvp[i] = scene.projection * scene.view * world[i];
       world_t[i] = glm::transpose(world[i]);
       wvp_t[i] = glm::transpose(wvp[i]);
+    }
+    for (Group& G : groups) {
+      auto layout = [&](AppMatrix& m, const std::vector<glm::mat4>& rows, const std::vector<glm::mat4>& columns) {
+        const fx::Type* type = G.effect->params->type(m.param);
+        const bool registers_are_columns = !type || type->order == fx::MatrixOrder::column_major;
+        m.values = registers_are_columns ? columns.data() : rows.data();
+        m.order = registers_are_columns ? fx::HostMatrixOrder::column_major : fx::HostMatrixOrder::row_major;
+      };
+      layout(G.world, world, world_t);
+      layout(G.wvp, wvp, wvp_t);
     }
     const uint32_t per_group = kObjects / uint32_t(groups.size());
 
@@ -221,8 +240,8 @@ int bench_apply(const BenchArgs& args) {
         vkCmdBindVertexBuffers(cmd, 0, 2, vbs, offs);
         const uint32_t passes = G.binding->pass_count(G.technique);
         for (uint32_t i = uint32_t(g) * per_group; i < uint32_t(g + 1) * per_group; ++i) {
-          G.effect->params->set_matrix(G.world, std::span<const float>(glm::value_ptr(world[i]), 16));
-          G.effect->params->set_matrix(G.wvp, std::span<const float>(glm::value_ptr(wvp[i]), 16));
+          G.effect->params->set_matrix(G.world.param, std::span<const float>(glm::value_ptr(G.world.values[i]), 16), G.world.order);
+          G.effect->params->set_matrix(G.wvp.param, std::span<const float>(glm::value_ptr(G.wvp.values[i]), 16), G.wvp.order);
           for (uint32_t p = 0; p < passes; ++p) {
             ok = G.binding->apply(p, G.layout, sink) && ok;
             vkCmdDraw(cmd, vertex_count, 1, 0, 0);
