@@ -176,8 +176,7 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
   s.pack(b, 0, static_cast<uint32_t>(b.runs.size()));
   for (Impl::PooledRuns& p : b.pooled) p.packed_version = s.pool->entries_[p.entry].version;
   s.blocks[slot] = std::move(b);
-  for (Impl::HotGroup& h : s.hot)
-    if (h.block == slot) h = {};
+  s.hot.assign(s.top_count, {});  // `blocks` may have moved
   if (!skipped.empty())
     return fail(ParamStatus::not_found, "no parameter (or a struct without member paths) for: " + skipped);
   return {};
@@ -185,7 +184,7 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
 
 void ParameterStore::Impl::sync_words(uint32_t top) const {
   HotGroup& h = hot[top];
-  const uint8_t* from = blocks[h.block].packed.data() + h.dst;
+  const uint8_t* from = h.to;
   uint32_t* held = words.data() + h.words;
   uint32_t bytes[16];
   std::memcpy(bytes, from, sizeof bytes);
@@ -228,7 +227,7 @@ bool ParameterStore::Impl::refresh(Block& b) {
     changed = true;
     if (g.whole4x4) {
       const WordRun& r = b.runs[g.first];
-      hot[g.top] = {static_cast<uint32_t>(&b - blocks.data()), static_cast<uint32_t>(&g - b.groups.data()), r.src, r.dst, r.kind};
+      hot[g.top] = {&b, &g, b.packed.data() + r.dst, r.src, r.kind};
     }
   };
   if (changes - b.seen_changes <= kTouchLog) {

@@ -179,23 +179,24 @@ bool ParameterStore::set_matrix_fast(Param p, const float* v, size_t count, Host
   // The handle is checked once; a hot block implies a top-level float4x4 (see Impl::HotGroup).
   if (p.generation != s.generation) return false;
   const bool columns = order == HostMatrixOrder::column_major;
-  if (p.index < s.top_count && s.hot[p.index].block != kNoIndex && count == 16) {
-    if (columns) s.store_hot<true>(p.index, v);
-    else s.store_hot<false>(p.index, v);
+  if (p.index < s.top_count && s.hot[p.index].block && count == 16) {
+    return columns ? s.store_hot<true>(p.index, v) : s.store_hot<false>(p.index, v);
+  }
+  return s.store_matrix(p.index, v, count, columns);
+}
+
+bool ParameterStore::Impl::store_matrix(uint32_t i, const float* v, size_t count, bool columns) {
+  if (i >= nodes.size()) return false;
+  const Node& n = nodes[i];
+  if (n.type.cls != TypeClass::matrix || !n.all_float || count != n.words) return false;
+  sync(n.top);
+  if (!columns) {
+    store_floats(n, v);
     return true;
   }
-  if (p.index < s.nodes.size()) {
-    const Impl::Node& n = s.nodes[p.index];
-    if (n.type.cls != TypeClass::matrix || !n.all_float || count != n.words) return false;
-    if (!columns) {
-      s.store_floats(n, v);
-      return true;
-    }
-    if (count != 16 || n.type.rows != 4 || n.type.cols != 4) return false;  // arrays, other shapes: the checked path
-    s.store_columns4x4(n, v);
-    return true;
-  }
-  return false;
+  if (count != 16 || n.type.rows != 4 || n.type.cols != 4) return false;  // arrays, other shapes: the checked path
+  store_columns4x4(n, v);
+  return true;
 }
 
 ParamStatus ParameterStore::set_matrix_checked(Param p, std::span<const float> v, HostMatrixOrder order) {

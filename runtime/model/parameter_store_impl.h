@@ -155,10 +155,13 @@ struct ParameterStore::Impl {
   // group, that block becomes its parameter's hot block, and set_matrix writes the next
   // value straight into the hot block's packed bytes (store_hot), so drawing object after
   // object with one pass re-packs nothing. Other blocks re-pack from the change log.
+  // The pointers are into `blocks`, so bind_layout, which may move them, clears every
+  // HotGroup; the next re-pack makes one again.
   struct HotGroup {
-    uint32_t block = kNoIndex, group = 0;
-    uint32_t words = 0;  // the parameter's first word (Node::offset)
-    uint32_t dst = 0;    // its run's first byte in the block
+    Block* block = nullptr;  // none when null
+    RunGroup* group = nullptr;
+    uint8_t* to = nullptr;   // its run's first byte in block->packed
+    uint32_t words = 0;      // the parameter's first word (Node::offset)
     RunKind kind = RunKind::copy;
     // The value is in the hot block's bytes only: store_hot leaves the words behind, as
     // D3DX effects keep a constant buffer's shadow as the one copy. sync() brings them back
@@ -171,15 +174,20 @@ struct ParameterStore::Impl {
   // there in the order its registers hold (no transpose when the app's order is the
   // block's); the words are left stale.
   template <bool v_columns>
-  [[gnu::always_inline]] inline void store_hot(uint32_t top, const float* v);
+  [[gnu::always_inline]] inline bool store_hot(uint32_t top, const float* v);
   // The words of top-level `top` made current again after store_hot left them stale.
   void sync(uint32_t top) const {
     if (hot[top].stale) [[unlikely]] sync_words(top);
   }
   [[gnu::noinline]] void sync_words(uint32_t top) const;
-  // store_hot's way when its block missed a change: into the words, logged.
+  // set_matrix's path for a current handle `i` without a hot block: into the words when the
+  // floats fit the node as they are; false sends the call to the checked path. Out of line,
+  // so the per-object path keeps no stack frame.
+  [[gnu::noinline]] bool store_matrix(uint32_t i, const float* v, size_t count, bool columns);
+  // store_hot's way when its block missed a change: into the words, logged. True, so that
+  // store_hot ends in a tail call and its fast path needs no stack frame.
   template <bool v_columns>
-  [[gnu::noinline]] void store_hot_words(uint32_t top, const float* v);
+  [[gnu::noinline]] bool store_hot_words(uint32_t top, const float* v);
   void sync_all() const {
     for (uint32_t top = 0; top < top_count; ++top) sync(top);
   }
@@ -360,19 +368,17 @@ struct ParameterStore::Impl {
 };
 
 template <bool v_columns>
-inline void ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
+inline bool ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
   HotGroup& h = hot[top];
-  Block& b = blocks[h.block];
-  RunGroup& g = b.groups[h.group];
+  Block& b = *h.block;
+  RunGroup& g = *h.group;
   if (g.packed_version != versions[top]) [[unlikely]] {
     // The block missed a change (a set through the words, never stale then): store the
     // words and let its refresh re-pack.
-    sync(top);
-    store_hot_words<v_columns>(top, v);
-    return;
+    return store_hot_words<v_columns>(top, v);
   }
   const bool to_columns = h.kind == RunKind::columns4x4;
-  uint8_t* to = b.packed.data() + h.dst;
+  uint8_t* to = h.to;
 #if defined(__SSE2__)
   __m128 v0 = _mm_loadu_ps(v), v1 = _mm_loadu_ps(v + 4), v2 = _mm_loadu_ps(v + 8), v3 = _mm_loadu_ps(v + 12);
   // The hot block's registers are the app's own order or its transpose.
@@ -382,13 +388,13 @@ inline void ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
                    _mm_xor_si128(_mm_castps_si128(v1), _mm_loadu_si128(reinterpret_cast<const __m128i*>(to + 16)))),
       _mm_or_si128(_mm_xor_si128(_mm_castps_si128(v2), _mm_loadu_si128(reinterpret_cast<const __m128i*>(to + 32))),
                    _mm_xor_si128(_mm_castps_si128(v3), _mm_loadu_si128(reinterpret_cast<const __m128i*>(to + 48)))));
-  if (_mm_movemask_epi8(_mm_cmpeq_epi32(diff, _mm_setzero_si128())) == 0xFFFF) return;  // no bit changed
+  if (_mm_movemask_epi8(_mm_cmpeq_epi32(diff, _mm_setzero_si128())) == 0xFFFF) return true;  // no bit changed
   store_registers(to, v0, v1, v2, v3);
 #else
   float ordered[16];
   if (to_columns != v_columns) transpose4x4(v, ordered);
   else std::memcpy(ordered, v, sizeof ordered);
-  if (std::memcmp(to, ordered, sizeof ordered) == 0) return;  // no bit changed
+  if (std::memcmp(to, ordered, sizeof ordered) == 0) return true;  // no bit changed
   std::memcpy(to, ordered, sizeof ordered);
 #endif
   h.stale = true;
@@ -398,13 +404,16 @@ inline void ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
   // A block that had taken every earlier change has now taken this one too: its next
   // refresh has no logged change to look at.
   if (b.seen_changes == changes - 1) b.seen_changes = changes;
+  return true;
 }
 
 template <bool v_columns>
-void ParameterStore::Impl::store_hot_words(uint32_t top, const float* v) {
+bool ParameterStore::Impl::store_hot_words(uint32_t top, const float* v) {
+  sync(top);
   const Node& n = nodes[top];
   if constexpr (v_columns) store_columns4x4(n, v);
   else store_floats(n, v);
+  return true;
 }
 
 }  // namespace fx
