@@ -179,9 +179,9 @@ bool ParameterStore::set_matrix_fast(Param p, const float* v, size_t count, Host
   // The handle is checked once; a hot block implies a top-level float4x4 (see Impl::HotGroup).
   if (p.generation != s.generation) return false;
   const bool columns = order == HostMatrixOrder::column_major;
-  if (p.index < s.top_count && s.hot[p.index].block && count == 16) {
-    return columns ? s.store_hot<true>(p.index, v) : s.store_hot<false>(p.index, v);
-  }
+  if (p.index < s.top_count && count == 16) [[likely]]
+    if (s.hot[p.index].block) [[likely]]
+      return columns ? s.store_hot<true>(p.index, v) : s.store_hot<false>(p.index, v);
   return s.store_matrix(p.index, v, count, columns);
 }
 

@@ -372,7 +372,8 @@ inline bool ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
   HotGroup& h = hot[top];
   Block& b = *h.block;
   RunGroup& g = *h.group;
-  if (g.packed_version != versions[top]) [[unlikely]] {
+  uint64_t& version = versions[top];
+  if (g.packed_version != version) [[unlikely]] {
     // The block missed a change (a set through the words, never stale then): store the
     // words and let its refresh re-pack.
     return store_hot_words<v_columns>(top, v);
@@ -398,12 +399,17 @@ inline bool ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
   std::memcpy(to, ordered, sizeof ordered);
 #endif
   h.stale = true;
-  // Logged for the blocks other than the hot one, which sync() before they re-pack.
-  g.packed_version = log_change(top);
   b.fresh = true;
+  // Logged for the blocks other than the hot one, which sync() before they re-pack (as
+  // log_change does, with the counters read once: nothing here aliases them).
+  const uint64_t change = changes, next = g.packed_version + 1;
+  touched[change % kTouchLog] = top;
+  changes = change + 1;
+  version = next;
+  g.packed_version = next;
   // A block that had taken every earlier change has now taken this one too: its next
   // refresh has no logged change to look at.
-  if (b.seen_changes == changes - 1) b.seen_changes = changes;
+  if (b.seen_changes == change) b.seen_changes = change + 1;
   return true;
 }
 
