@@ -33,6 +33,13 @@ int binary_precedence(TokenKind k) {
   }
 }
 
+// A token after which no expression continues: what follows most state, annotation and
+// argument values (`ZEnable = true;`, `{0, 1}`, `f(a, b)`).
+bool ends_expression(TokenKind k) {
+  return k == TokenKind::semi || k == TokenKind::comma || k == TokenKind::r_paren ||
+         k == TokenKind::r_brace || k == TokenKind::r_square;
+}
+
 bool starts_operand(TokenKind k) {
   return k == TokenKind::identifier || k == TokenKind::integer || k == TokenKind::floating ||
          k == TokenKind::l_paren || k == TokenKind::string;
@@ -107,6 +114,12 @@ ast::ExprPtr Parser::parse_expression() {
 }
 
 ast::ExprPtr Parser::parse_assignment() {
+  // A lone name or number is what parse_binary would return after climbing every level:
+  // with nothing that continues an expression after it, its primary is the whole value.
+  const TokenKind kind = tok().kind;
+  if ((kind == TokenKind::identifier || kind == TokenKind::integer || kind == TokenKind::floating) &&
+      ends_expression(peek().kind))
+    return parse_primary();
   uint32_t first = pos_;
   ast::ExprPtr cond = parse_binary(1);
   if (failed_ || !at(TokenKind::question)) return cond;
