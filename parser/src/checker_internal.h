@@ -108,6 +108,7 @@ class Checker {
   void undefined(std::string_view what, std::string_view name, SourceRange range,
                  const std::vector<std::string_view>& candidates);
   bool profile_allows(StateApi api) const;
+  EffectProfile profile() const;
 
   const Symbol* lookup(std::string_view name) const;
   std::vector<std::string_view> names_of(std::initializer_list<Symbol::Kind> kinds) const;
@@ -116,7 +117,12 @@ class Checker {
   const SourceManager& sm_;
   DiagnosticSink& diags_;
   CheckOptions options_;
-  EffectProfile profile_ = EffectProfile::fx_2_0;
+  // Given by the options or the effect's header; otherwise inferred on first use (profile()).
+  // An inferred profile is at least what each technique, fxgroup, state object, cbuffer
+  // and technique pass state needs, since inference reads exactly those: none of them can
+  // mismatch it, so most effects never need it, and its walk over every pass is saved.
+  mutable std::optional<EffectProfile> profile_;
+  size_t techniques_ = 0;  // in the effect, fxgroups' included
   // Keys view names owned by the effect, which outlives the checker.
   NameTable<Symbol> globals_;
   // Every function by name, overloads in source order (sorted once collected).

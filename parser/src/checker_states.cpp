@@ -101,8 +101,8 @@ std::optional<int64_t> literal_int(const ast::Expr& e) {
 bool Checker::profile_allows(StateApi api) const {
   switch (api) {
     case StateApi::d3d9: return true;
-    case StateApi::d3d10: return profile_ >= EffectProfile::fx_4_0;
-    case StateApi::d3d11: return profile_ >= EffectProfile::fx_5_0;
+    case StateApi::d3d10: return profile() >= EffectProfile::fx_4_0;
+    case StateApi::d3d11: return profile() >= EffectProfile::fx_5_0;
   }
   return true;
 }
@@ -158,7 +158,7 @@ void Checker::check_state(const ast::StateAssignment& a, StateBlock block, int t
     diags_.error("profile-mismatch", a.name_range,
                  "state " + quote(info->name) + " needs effect profile " +
                      (info->api == StateApi::d3d11 ? "fx_5_0" : "fx_4_0") + " or later; the effect is " +
-                     std::string(to_string(profile_)));
+                     std::string(to_string(profile())));
   }
   if (block == StateBlock::pass && technique_version >= 10 && info->api == StateApi::d3d9 &&
       info->area != VulkanArea::shader_stage) {

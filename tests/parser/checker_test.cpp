@@ -315,6 +315,40 @@ TEST(Checker, ProfileRules) {
   EXPECT_EQ(calls9->ids(), (Ids{"profile-mismatch"}));
 }
 
+// The checker infers the profile only when a state needs it (see Checker::profile_): with
+// `automatic` it must report what it reports when given the inferred profile, except the
+// d3d9-technique warning, which only a given profile raises.
+TEST(Checker, AnInferredProfileChecksAsTheSameProfileGiven) {
+  const std::string_view effects[] = {
+      "technique t { pass p { ZEnable = TRUE; } }\n",
+      "technique11 t { pass p { SetHullShader(NULL); } }\n",
+      "technique10 t { pass p { SetGeometryShader(NULL); } }\n",
+      "technique t { pass p { SetComputeShader(NULL); } }\n",
+      "BlendState B { BlendEnable[0] = FALSE; };\ntechnique t { pass p {} }\n",
+      "cbuffer C { float4 c; };\ntbuffer T { float4 t; };\ntechnique t { pass p {} }\n",
+      "fxgroup g { technique11 t { pass p {} } }\n",
+      // Inference reads no stateblock_state, so its D3D10 state is too new for fx_2_0.
+      "stateblock S = stateblock_state { SetPixelShader(NULL); };\ntechnique t { pass p {} }\n",
+      "stateblock S = stateblock_state { SetHullShader(NULL); };\n"
+      "technique10 t { pass p { SetGeometryShader(NULL); } }\n",
+  };
+  auto findings = [](const Checked& c) {
+    std::vector<std::string> out;
+    for (const Diagnostic& d : c.diags.diagnostics())
+      if (d.id != "d3d9-technique") out.push_back(d.id + ": " + d.message);
+    return out;
+  };
+  for (std::string_view source : effects) {
+    SourceManager sm;
+    DiagnosticSink diags;
+    BufferId b = sm.add_buffer("t.fx", std::string(source));
+    EffectProfile inferred = infer_profile(parse_effect(lex_all(sm, b, diags), sm, diags));
+    EXPECT_EQ(findings(*check(source)), findings(*check(source, {.profile = inferred}))) << source;
+  }
+  EXPECT_EQ(check(effects[7])->ids(), (Ids{"profile-mismatch"}));
+  EXPECT_EQ(check(effects[8])->ids(), (Ids{"profile-mismatch"}));
+}
+
 TEST(Checker, NoTechniqueIsAWarningUnlessTheEffectIsALibrary) {
   EXPECT_EQ(check("float4 c;\n")->ids(), (Ids{"no-technique"}));
   EXPECT_EQ(check("float4 c;\n")->diags.diagnostics()[0].severity, Severity::warning);
