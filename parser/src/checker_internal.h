@@ -2,11 +2,12 @@
 // split over checker.cpp (symbols, duplicates, annotations, profile rules) and
 // checker_states.cpp (state assignments against the state table). Private to fxkit_parser.
 #pragma once
-#include <array>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -32,20 +33,29 @@ class FirstSeen {
       return fresh ? nullptr : &it->second;
     }
     for (size_t i = 0; i < count_; ++i)
-      if (small_[i].first == key) return &small_[i].second;
+      if (small_.entries[i].first == key) return &small_.entries[i].second;
     if (count_ < kSmall) {
-      small_[count_++] = {key, value};
+      std::construct_at(&small_.entries[count_++], key, value);
       return nullptr;
     }
     overflow_.reserve(2 * kSmall);
-    for (size_t i = 0; i < count_; ++i) overflow_.emplace(small_[i].first, small_[i].second);
+    for (size_t i = 0; i < count_; ++i)
+      overflow_.emplace(small_.entries[i].first, small_.entries[i].second);
     overflow_.emplace(key, value);
     return nullptr;
   }
 
  private:
   static constexpr size_t kSmall = 16;
-  std::array<std::pair<Key, SourceRange>, kSmall> small_{};
+  using Entry = std::pair<Key, SourceRange>;
+  static_assert(std::is_trivially_destructible_v<Entry>);
+  // Entries [0, count_) are constructed, the rest left raw: one FirstSeen is made per
+  // annotation list and state block, mostly of a few keys, and clearing all 16 entries
+  // was most of the stores of check_annotations and check_states.
+  union Storage {
+    Storage() {}
+    Entry entries[kSmall];
+  } small_;
   size_t count_ = 0;
   std::unordered_map<Key, SourceRange, Hash> overflow_;
 };
