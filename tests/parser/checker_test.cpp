@@ -222,6 +222,22 @@ TEST(Checker, ShaderProfilesAndStages) {
             "state 'PixelShader' needs a ps_* profile, found 'vs_2_0'");
 }
 
+// Profiles match in any case, and only whole: the longest, a prefix or an extension of one,
+// and one past the 16 characters the lookup packs are told apart.
+TEST(Checker, ShaderProfileNamesMatchWhole) {
+  auto profile_ids = [](std::string_view profile) {
+    return check("float4 PS() : COLOR { return 0; }\n"
+                 "technique t { pass p { PixelShader = compile " + std::string(profile) +
+                 " PS(); } }\n")
+        ->ids();
+  };
+  for (std::string_view known : {"ps_2_0", "PS_3_0", "ps_4_0_level_9_3", "Ps_2_Sw", "ps_5_0"})
+    EXPECT_EQ(profile_ids(known), Ids{}) << known;
+  for (std::string_view unknown : {"ps", "ps_", "ps_2", "ps_2_00", "ps_4_0_level_9_31",
+                                   "ps_4_0_level_9_3x", "ps_2_0_", "xps_2_0", "ps_9_0"})
+    EXPECT_EQ(profile_ids(unknown), (Ids{"unknown-shader-profile"})) << unknown;
+}
+
 TEST(Checker, AnnotationAndParameterValueTypes) {
   auto c = check(
       "float4 c < string UIName = 3; float UIMin = \"zero\"; float3 Axis = {1, 2};\n"
