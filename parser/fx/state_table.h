@@ -104,6 +104,7 @@ std::span<const StateInfo> all_states();
 // The row for `name` (case-insensitive) in `block`, or nullptr. O(1): hashed lookup.
 const StateInfo* find_state(std::string_view name, StateBlock block);
 // The value of an enumeration name for a state with enums (see EnumSet for spellings).
+// `state` is a row of the table or a copy of one: the table's sets are hashed once.
 std::optional<int64_t> find_enum(const StateInfo& state, std::string_view name);
 // The stage a pass state naming shader code sets, from its row (any case): VertexShader,
 // PixelShader, GeometryShader, HullShader, DomainShader, ComputeShader, the D3D10/11 calls

@@ -82,6 +82,14 @@ std::string signature(const ast::Function& f) {
   return s;
 }
 
+// The profile an effect's `fx.N.0` header names, if it has one.
+std::optional<EffectProfile> header_profile(const ast::Effect& effect) {
+  if (effect.profile_header.empty()) return std::nullopt;
+  std::optional<EffectProfile> p = parse_effect_profile(effect.profile_header);
+  if (p == EffectProfile::automatic) return std::nullopt;
+  return p;
+}
+
 }  // namespace
 
 std::string quote(std::string_view text) { return "'" + std::string(text) + "'"; }
@@ -89,7 +97,12 @@ std::string quote(std::string_view text) { return "'" + std::string(text) + "'";
 Checker::Checker(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& diags,
                  const CheckOptions& options)
     : effect_(effect), sm_(sm), diags_(diags), options_(options) {
-  profile_ = options.profile == EffectProfile::automatic ? infer_profile(effect) : options.profile;
+  profile_ = options.profile == EffectProfile::automatic ? header_profile(effect) : options.profile;
+}
+
+EffectProfile Checker::profile() const {
+  if (!profile_) profile_ = infer_profile(effect_);
+  return *profile_;
 }
 
 void Checker::run() {
@@ -176,6 +189,8 @@ void Checker::collect_symbols() {
       case ast::DeclKind::function:
         functions_.emplace_back(d.function->name, d.function);
         break;
+      case ast::DeclKind::technique: ++techniques_; break;
+      case ast::DeclKind::group: techniques_ += d.group->techniques.size(); break;
       default: break;
     }
   }
@@ -216,48 +231,50 @@ void Checker::check_functions() {
 }
 
 void Checker::check_profile_rules() {
-  size_t techniques = 0;
-  auto require = [&](EffectProfile needed, SourceRange range, std::string_view what) {
-    if (profile_ >= needed) return;
-    diags_.error("profile-mismatch", range,
-                 std::string(what) + " needs effect profile " + std::string(to_string(needed)) +
-                     " or later; the effect is " + std::string(to_string(profile_)));
-  };
-  auto technique = [&](const ast::Technique& t) {
-    ++techniques;
-    SourceRange at = t.name_range.valid() ? t.name_range : t.range;
-    if (t.version == 11) require(EffectProfile::fx_5_0, at, "technique11");
-    if (t.version == 10) require(EffectProfile::fx_4_0, at, "technique10");
-    // An inferred profile comes from the newest forms in the file; D3D9 techniques beside
-    // them mean the file targets both runtimes (as SDK samples did), which is no mistake.
-    bool explicit_profile = options_.profile != EffectProfile::automatic;
-    if (t.version == 9 && profile_ >= EffectProfile::fx_4_0 && explicit_profile)
-      diags_.warning("d3d9-technique", at,
-                     "a Direct3D 9 'technique' in an " + std::string(to_string(profile_)) +
-                         " effect; use technique" +
-                         (profile_ == EffectProfile::fx_5_0 ? "11" : "10"));
-  };
-  for (const ast::Decl& d : effect_.decls) {
-    switch (d.kind) {
-      case ast::DeclKind::technique: technique(*d.technique); break;
-      case ast::DeclKind::group:
-        require(EffectProfile::fx_5_0, d.group->name_range, "fxgroup");
-        for (const ast::Technique& t : d.group->techniques) technique(t);
-        break;
-      case ast::DeclKind::state_object:
-        require(EffectProfile::fx_4_0, d.state_object->name_range.valid()
-                                           ? d.state_object->name_range
-                                           : d.state_object->range,
-                d.state_object->kind);
-        break;
-      case ast::DeclKind::constant_buffer:
-        require(EffectProfile::fx_4_0, d.constant_buffer->range,
-                d.constant_buffer->texture_buffer ? "tbuffer" : "cbuffer");
-        break;
-      default: break;
+  // Only a given profile can be too old for a construct here (see profile_).
+  if (profile_) {
+    const EffectProfile profile = *profile_;
+    auto require = [&](EffectProfile needed, SourceRange range, std::string_view what) {
+      if (profile >= needed) return;
+      diags_.error("profile-mismatch", range,
+                   std::string(what) + " needs effect profile " + std::string(to_string(needed)) +
+                       " or later; the effect is " + std::string(to_string(profile)));
+    };
+    auto technique = [&](const ast::Technique& t) {
+      SourceRange at = t.name_range.valid() ? t.name_range : t.range;
+      if (t.version == 11) require(EffectProfile::fx_5_0, at, "technique11");
+      if (t.version == 10) require(EffectProfile::fx_4_0, at, "technique10");
+      // An inferred profile comes from the newest forms in the file; D3D9 techniques beside
+      // them mean the file targets both runtimes (as SDK samples did), which is no mistake.
+      bool explicit_profile = options_.profile != EffectProfile::automatic;
+      if (t.version == 9 && profile >= EffectProfile::fx_4_0 && explicit_profile)
+        diags_.warning("d3d9-technique", at,
+                       "a Direct3D 9 'technique' in an " + std::string(to_string(profile)) +
+                           " effect; use technique" +
+                           (profile == EffectProfile::fx_5_0 ? "11" : "10"));
+    };
+    for (const ast::Decl& d : effect_.decls) {
+      switch (d.kind) {
+        case ast::DeclKind::technique: technique(*d.technique); break;
+        case ast::DeclKind::group:
+          require(EffectProfile::fx_5_0, d.group->name_range, "fxgroup");
+          for (const ast::Technique& t : d.group->techniques) technique(t);
+          break;
+        case ast::DeclKind::state_object:
+          require(EffectProfile::fx_4_0, d.state_object->name_range.valid()
+                                             ? d.state_object->name_range
+                                             : d.state_object->range,
+                  d.state_object->kind);
+          break;
+        case ast::DeclKind::constant_buffer:
+          require(EffectProfile::fx_4_0, d.constant_buffer->range,
+                  d.constant_buffer->texture_buffer ? "tbuffer" : "cbuffer");
+          break;
+        default: break;
+      }
     }
   }
-  if (techniques == 0 && options_.require_technique) {
+  if (techniques_ == 0 && options_.require_technique) {
     SourceRange at;
     if (!effect_.tokens.empty()) at = effect_.tokens.front().range();
     // D3DX creates such effects (shader libraries, parameter pools); warn, do not fail.
@@ -370,10 +387,9 @@ std::optional<EffectProfile> parse_effect_profile(std::string_view text) {
 }
 
 EffectProfile infer_profile(const ast::Effect& effect) {
-  if (!effect.profile_header.empty())
-    if (std::optional<EffectProfile> p = parse_effect_profile(effect.profile_header);
-        p && *p != EffectProfile::automatic)
-      return *p;
+  if (std::optional<EffectProfile> p = check::header_profile(effect)) return *p;
+  // The checker relies on this reading every construct whose profile it checks (see
+  // Checker::profile_): techniques, fxgroups, state objects, cbuffers, pass states.
   EffectProfile needed = EffectProfile::fx_2_0;
   auto need = [&](EffectProfile p) { needed = std::max(needed, p); };
   // Only D3D10/11 pass states raise the profile. Their names, folded to lower case, are in a

@@ -2,11 +2,12 @@
 // split over checker.cpp (symbols, duplicates, annotations, profile rules) and
 // checker_states.cpp (state assignments against the state table). Private to fxkit_parser.
 #pragma once
-#include <array>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -32,20 +33,29 @@ class FirstSeen {
       return fresh ? nullptr : &it->second;
     }
     for (size_t i = 0; i < count_; ++i)
-      if (small_[i].first == key) return &small_[i].second;
+      if (small_.entries[i].first == key) return &small_.entries[i].second;
     if (count_ < kSmall) {
-      small_[count_++] = {key, value};
+      std::construct_at(&small_.entries[count_++], key, value);
       return nullptr;
     }
     overflow_.reserve(2 * kSmall);
-    for (size_t i = 0; i < count_; ++i) overflow_.emplace(small_[i].first, small_[i].second);
+    for (size_t i = 0; i < count_; ++i)
+      overflow_.emplace(small_.entries[i].first, small_.entries[i].second);
     overflow_.emplace(key, value);
     return nullptr;
   }
 
  private:
   static constexpr size_t kSmall = 16;
-  std::array<std::pair<Key, SourceRange>, kSmall> small_{};
+  using Entry = std::pair<Key, SourceRange>;
+  static_assert(std::is_trivially_destructible_v<Entry>);
+  // Entries [0, count_) are constructed, the rest left raw: one FirstSeen is made per
+  // annotation list and state block, mostly of a few keys, and clearing all 16 entries
+  // was most of the stores of check_annotations and check_states.
+  union Storage {
+    Storage() {}
+    Entry entries[kSmall];
+  } small_;
   size_t count_ = 0;
   std::unordered_map<Key, SourceRange, Hash> overflow_;
 };
@@ -108,6 +118,7 @@ class Checker {
   void undefined(std::string_view what, std::string_view name, SourceRange range,
                  const std::vector<std::string_view>& candidates);
   bool profile_allows(StateApi api) const;
+  EffectProfile profile() const;
 
   const Symbol* lookup(std::string_view name) const;
   std::vector<std::string_view> names_of(std::initializer_list<Symbol::Kind> kinds) const;
@@ -116,7 +127,12 @@ class Checker {
   const SourceManager& sm_;
   DiagnosticSink& diags_;
   CheckOptions options_;
-  EffectProfile profile_ = EffectProfile::fx_2_0;
+  // Given by the options or the effect's header; otherwise inferred on first use (profile()).
+  // An inferred profile is at least what each technique, fxgroup, state object, cbuffer
+  // and technique pass state needs, since inference reads exactly those: none of them can
+  // mismatch it, so most effects never need it, and its walk over every pass is saved.
+  mutable std::optional<EffectProfile> profile_;
+  size_t techniques_ = 0;  // in the effect, fxgroups' included
   // Keys view names owned by the effect, which outlives the checker.
   NameTable<Symbol> globals_;
   // Every function by name, overloads in source order (sorted once collected).

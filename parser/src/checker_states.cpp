@@ -1,7 +1,9 @@
 // State assignments against the state table: names, call forms, indices, value types,
 // enumeration values, references to parameters, shaders and state objects.
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <cstring>
 
 #include "checker_internal.h"
 
@@ -49,6 +51,32 @@ const std::vector<std::string>& shader_profiles() {
     return p;
   }();
   return profiles;
+}
+
+// A profile folded to lower case into two words, zero-padded: profiles are at most 16
+// characters, so telling one apart is a few integer compares, not a case-folding compare
+// per row of the list.
+using PackedProfile = std::array<uint64_t, 2>;
+std::optional<PackedProfile> pack_profile(std::string_view profile) {
+  std::array<char, sizeof(PackedProfile)> folded{};
+  // A trailing '\0' would pack as the padding does (a string literal may hold one).
+  if (profile.size() > folded.size() || (!profile.empty() && profile.back() == '\0'))
+    return std::nullopt;
+  for (size_t i = 0; i < profile.size(); ++i) folded[i] = ascii_lower(profile[i]);
+  PackedProfile packed;
+  std::memcpy(packed.data(), folded.data(), folded.size());
+  return packed;
+}
+
+bool is_shader_profile(std::string_view profile) {
+  static const std::vector<PackedProfile> sorted = [] {
+    std::vector<PackedProfile> packed;
+    for (const std::string& p : shader_profiles()) packed.push_back(*pack_profile(p));
+    std::sort(packed.begin(), packed.end());
+    return packed;
+  }();
+  std::optional<PackedProfile> packed = pack_profile(profile);
+  return packed && std::binary_search(sorted.begin(), sorted.end(), *packed);
 }
 
 bool is_compile_call(const ast::Expr& e) {
@@ -101,8 +129,8 @@ std::optional<int64_t> literal_int(const ast::Expr& e) {
 bool Checker::profile_allows(StateApi api) const {
   switch (api) {
     case StateApi::d3d9: return true;
-    case StateApi::d3d10: return profile_ >= EffectProfile::fx_4_0;
-    case StateApi::d3d11: return profile_ >= EffectProfile::fx_5_0;
+    case StateApi::d3d10: return profile() >= EffectProfile::fx_4_0;
+    case StateApi::d3d11: return profile() >= EffectProfile::fx_5_0;
   }
   return true;
 }
@@ -158,7 +186,7 @@ void Checker::check_state(const ast::StateAssignment& a, StateBlock block, int t
     diags_.error("profile-mismatch", a.name_range,
                  "state " + quote(info->name) + " needs effect profile " +
                      (info->api == StateApi::d3d11 ? "fx_5_0" : "fx_4_0") + " or later; the effect is " +
-                     std::string(to_string(profile_)));
+                     std::string(to_string(profile())));
   }
   if (block == StateBlock::pass && technique_version >= 10 && info->api == StateApi::d3d9 &&
       info->area != VulkanArea::shader_stage) {
@@ -446,12 +474,8 @@ void Checker::check_shader(const StateInfo& info, const ast::Expr& e) {
 void Checker::check_compile(const StateInfo& info, std::string_view profile,
                             SourceRange profile_range, std::string_view function,
                             SourceRange range) {
-  const std::vector<std::string>& profiles = shader_profiles();
-  // The profiles are lower case: the first letter rules out most before a case-folding compare.
-  const char first = profile.empty() ? '\0' : ascii_lower(profile[0]);
-  if (std::none_of(profiles.begin(), profiles.end(), [&](const std::string& p) {
-        return p[0] == first && iequals(p, profile);
-      })) {
+  if (!is_shader_profile(profile)) {
+    const std::vector<std::string>& profiles = shader_profiles();
     std::vector<std::string_view> names(profiles.begin(), profiles.end());
     std::string guess = closest_match(profile, names);
     std::string message = "unknown shader profile " + quote(profile);

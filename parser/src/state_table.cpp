@@ -96,20 +96,99 @@ bool normalize(std::string_view in, std::array<char, 96>& out, size_t& size) {
   return true;
 }
 
-bool matches_normalized(std::string_view normalized, std::string_view name) {
-  size_t i = 0;
-  for (char c : name) {
-    if (c == '_') continue;
-    if (i == normalized.size() || normalized[i] != ascii_lower(c)) return false;
-    ++i;
-  }
-  return i == normalized.size();
+// The same, for the table's own names, which are far shorter than the buffer.
+std::string normalized(std::string_view name) {
+  std::array<char, 96> out;
+  size_t size = 0;
+  normalize(name, out, size);
+  return std::string(out.data(), size);
 }
 
-const EnumValue* find_value(const EnumSet& set, std::string_view normalized) {
-  for (const EnumValue& v : set.values)
-    if (matches_normalized(normalized, v.name)) return &v;
-  return nullptr;
+// The set a state's values come from: its own, or TRUE/FALSE for a boolean state.
+const EnumSet* value_set(const StateInfo& state) {
+  if (!state.enums && state.type == StateValueType::boolean) return &state_data::kBoolean;
+  return state.enums;
+}
+
+// Every value name of every set the table uses, normalized, once bare and once after each
+// of its set's prefixes, in one open-addressing hash on (set, name): a lookup is one probe
+// sequence instead of a scan of the set per prefix, which mispredicted on every character.
+class EnumIndex {
+ public:
+  EnumIndex() {
+    std::vector<const EnumSet*> sets = {&state_data::kBoolean};
+    for (const StateInfo& s : state_index().rows())
+      if (s.enums && std::find(sets.begin(), sets.end(), s.enums) == sets.end())
+        sets.push_back(s.enums);
+    // Keys already present keep their value, so a bare name wins over a prefixed one, and
+    // earlier prefixes and values over later ones, as in a scan in the table's order.
+    for (const EnumSet* set : sets) {
+      for (const EnumValue& v : set->values) add(set, normalized(v.name), v.value);
+      for (std::string_view prefix : set->prefixes) {
+        std::string p = normalized(prefix);
+        if (p.empty()) continue;
+        for (const EnumValue& v : set->values)
+          if (std::string name = normalized(v.name); !name.empty()) add(set, p + name, v.value);
+      }
+    }
+  }
+
+  std::optional<int64_t> find(const EnumSet* set, std::string_view normalized) const {
+    uint32_t hash = key_hash(set, normalized);
+    for (size_t slot = hash & mask_; slots_[slot].entry >= 0; slot = (slot + 1) & mask_) {
+      if (slots_[slot].hash != hash) continue;
+      const Entry& e = entries_[static_cast<size_t>(slots_[slot].entry)];
+      if (e.set == set && e.name == normalized) return e.value;
+    }
+    return std::nullopt;
+  }
+
+ private:
+  struct Entry {
+    const EnumSet* set;
+    std::string name;  // normalized
+    int64_t value;
+  };
+  struct Slot {
+    uint32_t hash = 0;
+    int32_t entry = -1;  // index into entries_, or -1 for an empty slot
+  };
+
+  // FNV-1a over the name, seeded by the set.
+  static uint32_t key_hash(const EnumSet* set, std::string_view name) {
+    uint64_t h = reinterpret_cast<uintptr_t>(set) * 0x9E3779B97F4A7C15ull;
+    for (char c : name) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    return static_cast<uint32_t>(h ^ (h >> 32));
+  }
+
+  void add(const EnumSet* set, std::string name, int64_t value) {
+    if (find(set, name)) return;
+    entries_.push_back({set, std::move(name), value});
+    if (2 * entries_.size() > slots_.size()) rehash(4 * entries_.size());
+    else place(entries_.size() - 1);
+  }
+  void rehash(size_t capacity_at_least) {
+    size_t capacity = 16;
+    while (capacity < capacity_at_least) capacity *= 2;
+    slots_.assign(capacity, Slot{});
+    mask_ = capacity - 1;
+    for (size_t i = 0; i < entries_.size(); ++i) place(i);
+  }
+  void place(size_t i) {
+    uint32_t hash = key_hash(entries_[i].set, entries_[i].name);
+    size_t slot = hash & mask_;
+    while (slots_[slot].entry >= 0) slot = (slot + 1) & mask_;
+    slots_[slot] = {hash, static_cast<int32_t>(i)};
+  }
+
+  std::vector<Entry> entries_;
+  std::vector<Slot> slots_ = std::vector<Slot>(16);  // load factor <= 1/2
+  size_t mask_ = 15;
+};
+
+const EnumIndex& enum_index() {
+  static const EnumIndex index;
+  return index;
 }
 
 }  // namespace
@@ -224,22 +303,12 @@ std::string_view profile_prefix(PassStage stage) {
 }
 
 std::optional<int64_t> find_enum(const StateInfo& state, std::string_view name) {
-  const EnumSet* set = state.enums;
-  if (!set && state.type == StateValueType::boolean) set = &state_data::kBoolean;
+  const EnumSet* set = value_set(state);
   if (!set) return std::nullopt;
   std::array<char, 96> buffer;
   size_t size = 0;
   if (!normalize(name, buffer, size)) return std::nullopt;
-  std::string_view normalized(buffer.data(), size);
-  if (const EnumValue* v = find_value(*set, normalized)) return v->value;
-  for (std::string_view prefix : set->prefixes) {
-    std::array<char, 96> p;
-    size_t psize = 0;
-    if (prefix.empty() || !normalize(prefix, p, psize)) continue;
-    if (normalized.size() > psize && normalized.substr(0, psize) == std::string_view(p.data(), psize))
-      if (const EnumValue* v = find_value(*set, normalized.substr(psize))) return v->value;
-  }
-  return std::nullopt;
+  return enum_index().find(set, std::string_view(buffer.data(), size));
 }
 
 std::vector<std::string_view> state_names(StateBlock block) {
@@ -251,9 +320,7 @@ std::vector<std::string_view> state_names(StateBlock block) {
 
 std::vector<std::string_view> enum_names(const StateInfo& state) {
   std::vector<std::string_view> names;
-  const EnumSet* set = state.enums;
-  if (!set && state.type == StateValueType::boolean) set = &state_data::kBoolean;
-  if (set)
+  if (const EnumSet* set = value_set(state))
     for (const EnumValue& v : set->values) names.push_back(v.name);
   return names;
 }

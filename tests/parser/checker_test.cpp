@@ -222,6 +222,22 @@ TEST(Checker, ShaderProfilesAndStages) {
             "state 'PixelShader' needs a ps_* profile, found 'vs_2_0'");
 }
 
+// Profiles match in any case, and only whole: the longest, a prefix or an extension of one,
+// and one past the 16 characters the lookup packs are told apart.
+TEST(Checker, ShaderProfileNamesMatchWhole) {
+  auto profile_ids = [](std::string_view profile) {
+    return check("float4 PS() : COLOR { return 0; }\n"
+                 "technique t { pass p { PixelShader = compile " + std::string(profile) +
+                 " PS(); } }\n")
+        ->ids();
+  };
+  for (std::string_view known : {"ps_2_0", "PS_3_0", "ps_4_0_level_9_3", "Ps_2_Sw", "ps_5_0"})
+    EXPECT_EQ(profile_ids(known), Ids{}) << known;
+  for (std::string_view unknown : {"ps", "ps_", "ps_2", "ps_2_00", "ps_4_0_level_9_31",
+                                   "ps_4_0_level_9_3x", "ps_2_0_", "xps_2_0", "ps_9_0"})
+    EXPECT_EQ(profile_ids(unknown), (Ids{"unknown-shader-profile"})) << unknown;
+}
+
 TEST(Checker, AnnotationAndParameterValueTypes) {
   auto c = check(
       "float4 c < string UIName = 3; float UIMin = \"zero\"; float3 Axis = {1, 2};\n"
@@ -313,6 +329,40 @@ TEST(Checker, ProfileRules) {
   auto calls9 = check("technique t { pass p { SetPixelShader(NULL); } }\n",
                       {.profile = EffectProfile::fx_2_0});
   EXPECT_EQ(calls9->ids(), (Ids{"profile-mismatch"}));
+}
+
+// The checker infers the profile only when a state needs it (see Checker::profile_): with
+// `automatic` it must report what it reports when given the inferred profile, except the
+// d3d9-technique warning, which only a given profile raises.
+TEST(Checker, AnInferredProfileChecksAsTheSameProfileGiven) {
+  const std::string_view effects[] = {
+      "technique t { pass p { ZEnable = TRUE; } }\n",
+      "technique11 t { pass p { SetHullShader(NULL); } }\n",
+      "technique10 t { pass p { SetGeometryShader(NULL); } }\n",
+      "technique t { pass p { SetComputeShader(NULL); } }\n",
+      "BlendState B { BlendEnable[0] = FALSE; };\ntechnique t { pass p {} }\n",
+      "cbuffer C { float4 c; };\ntbuffer T { float4 t; };\ntechnique t { pass p {} }\n",
+      "fxgroup g { technique11 t { pass p {} } }\n",
+      // Inference reads no stateblock_state, so its D3D10 state is too new for fx_2_0.
+      "stateblock S = stateblock_state { SetPixelShader(NULL); };\ntechnique t { pass p {} }\n",
+      "stateblock S = stateblock_state { SetHullShader(NULL); };\n"
+      "technique10 t { pass p { SetGeometryShader(NULL); } }\n",
+  };
+  auto findings = [](const Checked& c) {
+    std::vector<std::string> out;
+    for (const Diagnostic& d : c.diags.diagnostics())
+      if (d.id != "d3d9-technique") out.push_back(d.id + ": " + d.message);
+    return out;
+  };
+  for (std::string_view source : effects) {
+    SourceManager sm;
+    DiagnosticSink diags;
+    BufferId b = sm.add_buffer("t.fx", std::string(source));
+    EffectProfile inferred = infer_profile(parse_effect(lex_all(sm, b, diags), sm, diags));
+    EXPECT_EQ(findings(*check(source)), findings(*check(source, {.profile = inferred}))) << source;
+  }
+  EXPECT_EQ(check(effects[7])->ids(), (Ids{"profile-mismatch"}));
+  EXPECT_EQ(check(effects[8])->ids(), (Ids{"profile-mismatch"}));
 }
 
 TEST(Checker, NoTechniqueIsAWarningUnlessTheEffectIsALibrary) {

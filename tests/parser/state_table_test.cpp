@@ -158,6 +158,48 @@ TEST(StateTable, EnumSpellingsOfD3D9AndD3D10) {
   EXPECT_TRUE(enum_names(*find_state("FogStart", StateBlock::pass)).empty());
 }
 
+TEST(StateTable, EnumLookupEdgeCases) {
+  const StateInfo& src = *find_state("SrcBlend", StateBlock::pass);
+  EXPECT_EQ(find_enum(src, ""), std::nullopt);
+  EXPECT_EQ(find_enum(src, "___"), std::nullopt);
+  // A prefix alone, or a prefix of a prefix, names no value.
+  EXPECT_EQ(find_enum(src, "D3D10_BLEND"), std::nullopt);
+  EXPECT_EQ(find_enum(src, "d3dblend"), std::nullopt);
+  EXPECT_EQ(find_enum(src, "D3DBLEND_D3DBLEND_SRCALPHA"), std::nullopt);
+  // Case and underscores are ignored everywhere, prefix boundaries included.
+  EXPECT_EQ(find_enum(src, "s_R_c_A_l_P_h_A"), 5);
+  EXPECT_EQ(find_enum(src, "_D3D_BLEND_SRCALPHA_"), 5);
+  EXPECT_EQ(find_enum(src, "d3d11blendsrcalpha"), 5);
+  EXPECT_EQ(find_enum(src, std::string(200, '_') + "SrcAlpha"), 5);  // underscores do not count
+  EXPECT_EQ(find_enum(src, "SrcAlphaX"), std::nullopt);
+  EXPECT_EQ(find_enum(src, "SrcAlph"), std::nullopt);
+  // Names shared by two values of one set, and another set's prefix.
+  EXPECT_EQ(find_enum(src, "SrcColor2"), 16);
+  EXPECT_EQ(find_enum(src, "Src1Color"), 16);
+  EXPECT_EQ(find_enum(src, "D3DCMP_LESS"), std::nullopt);
+  EXPECT_EQ(find_enum(*find_state("CullMode", StateBlock::pass), "D3D10_CULL_BACK"), std::nullopt);
+  // Booleans have TRUE/FALSE without a prefix; ZEnable's own set has D3DZB_.
+  const StateInfo& zwrite = *find_state("ZWriteEnable", StateBlock::pass);
+  EXPECT_EQ(find_enum(zwrite, "tRuE"), 1);
+  EXPECT_EQ(find_enum(zwrite, "D3DZB_TRUE"), std::nullopt);
+  EXPECT_EQ(find_enum(*find_state("ZEnable", StateBlock::pass), "D3DZB_TRUE"), 1);
+  // No set: neither enums nor a boolean.
+  EXPECT_EQ(find_enum(*find_state("FogStart", StateBlock::pass), "Linear"), std::nullopt);
+}
+
+TEST(StateTable, EveryEnumSpellingIsFound) {
+  for (const StateInfo& s : all_states()) {
+    if (!s.enums) continue;
+    for (const EnumValue& v : s.enums->values) {
+      std::optional<int64_t> bare = find_enum(s, v.name);
+      ASSERT_TRUE(bare) << s.name << " " << v.name;
+      for (std::string_view prefix : s.enums->prefixes)
+        EXPECT_EQ(find_enum(s, std::string(prefix) + std::string(v.name)), bare)
+            << s.name << " " << prefix << v.name;
+    }
+  }
+}
+
 TEST(StateTable, VulkanMeaning) {
   EXPECT_EQ(find_state("ZFunc", StateBlock::pass)->vulkan, VulkanMeaning::maps_to_vulkan);
   EXPECT_EQ(find_state("ZFunc", StateBlock::pass)->area, VulkanArea::depth_stencil);
