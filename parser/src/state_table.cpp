@@ -15,10 +15,17 @@ namespace {
 // and the few collisions are settled by the stored hash and one iequals.
 uint64_t name_hash(std::string_view name, StateBlock block) {
   uint64_t h = (name.size() * 1099511628211ull) ^ static_cast<uint64_t>(block);
-  if (!name.empty()) {
-    size_t n = name.size();
-    for (size_t i : {size_t(0), size_t(1), n / 2, n - 2, n - 1})
-      if (i < n) h = (h ^ static_cast<unsigned char>(ascii_lower(name[i]))) * 1099511628211ull;
+  auto mix = [&](char c) { h = (h ^ static_cast<unsigned char>(ascii_lower(c))) * 1099511628211ull; };
+  // Written out rather than looped over an index list, which cost more than the mixing.
+  const size_t n = name.size();
+  if (n >= 2) {
+    mix(name[0]);
+    mix(name[1]);
+    mix(name[n / 2]);
+    mix(name[n - 2]);
+    mix(name[n - 1]);
+  } else if (n == 1) {
+    mix(name[0]);
   }
   return h;
 }
