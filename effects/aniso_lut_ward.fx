@@ -8,6 +8,7 @@
 //    across the tangent direction (Ward's anisotropic exponent with one roughness).
 // The seed evaluates both per vertex; per-pixel techniques are added ("just softer edges").
 #include "common.fxh"
+#include "generated/costs.fxh"  // COST_<technique>: measured cost/error, scripts/accuracy-report
 
 #define LN_HN_SIZE 128
 
@@ -131,7 +132,7 @@ float4 VertexColorPS(AnisoVertexLit IN) : COLOR0
 }
 
 technique gaussian_per_pixel
-< string Requires = "vs_2_0 ps_2_0"; string Scheme = "gaussian"; float MaxDistance = 30.0; string Fallback = "gaussian_per_vertex"; string UIName = "Gaussian exp(-e*e), per pixel"; >
+< string Requires = "vs_2_0 ps_2_0"; string Scheme = "gaussian"; float MaxDistance = 30.0; string Fallback = "gaussian_per_vertex"; string UIName = "Gaussian exp(-e*e), per pixel";  COST_gaussian_per_pixel >
 {
     pass p0
     {

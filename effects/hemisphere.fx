@@ -165,7 +165,7 @@ technique hemisphere_two_term
 }
 
 technique hemisphere_seed_form
-< string Requires = "vs_2_0 ps_2_0"; string Scheme = "measurement"; float MaxDistance = 50.0; string UIName = "Three-term hemisphere + sun, the seed's 1 - 0.5 sin q form"; >
+< string Requires = "vs_2_0 ps_2_0"; string Scheme = "measurement"; float MaxDistance = 50.0; string UIName = "Three-term hemisphere + sun, the seed's 1 - 0.5 sin q form";  COST_hemisphere_seed_form >
 {
     pass p0
     {

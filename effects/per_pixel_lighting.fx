@@ -5,6 +5,7 @@
 // Schemes: "diffuse" (N.L only) and "specular" (N.L plus a (N.H)^n highlight).
 // Fixed-function techniques parse and check now; they run once legacy emulation exists.
 #include "common.fxh"
+#include "generated/costs.fxh"  // COST_<technique>: measured cost/error, scripts/accuracy-report
 
 float4 CameraPosition : CAMERAPOSITION < string UIWidget = "None"; >;
 float3 LightDirection : DIRECTION < string UIName = "Light direction"; string Object = "DirectionalLight0"; string Space = "World"; > = {0.45, -0.55, -0.7};
@@ -249,7 +250,7 @@ technique specular_table_ps20
 }
 
 technique specular_squaring_ps20
-< string Requires = "vs_2_0 ps_2_0"; string Scheme = "specular"; string UIName = "Specular, x^16 by squaring, HLSL ps_2_0"; >
+< string Requires = "vs_2_0 ps_2_0"; string Scheme = "specular"; string UIName = "Specular, x^16 by squaring, HLSL ps_2_0";  COST_specular_squaring_ps20 >
 {
     pass p0
     {
@@ -321,7 +322,7 @@ technique specular_table_ps11
 // The seed's multiply-based exponent: four squarings give x^16 in 8-bit registers (the
 // banding in its Figure 5). Half vector in oD1, biased.
 technique specular_squaring_ps11
-< string Requires = "vs_1_1 ps_1_1"; string Scheme = "specular"; string Fallback = "specular_emboss"; string UIName = "Specular, x^16 by squaring, ps.1.1 (DirectX 8)"; >
+< string Requires = "vs_1_1 ps_1_1"; string Scheme = "specular"; string Fallback = "specular_emboss"; string UIName = "Specular, x^16 by squaring, ps.1.1 (DirectX 8)";  COST_specular_squaring_ps11 >
 {
     pass p0
     {

@@ -5,11 +5,19 @@
 #ifndef FXKIT_GENERATED_COSTS_FXH
 #define FXKIT_GENERATED_COSTS_FXH
 // COST_strand_analytic: strand_analytic/stable/specular
-#define COST_strand_analytic float CostNsPerPixel = 4.499; float MaxError = 0.00;
+#define COST_strand_analytic float CostNsPerPixel = 2.383; float MaxError = 0.00;
 // COST_strand_lut_seed_wrap: strand_mapping/seed_wrap/specular/s256
-#define COST_strand_lut_seed_wrap float CostNsPerPixel = 4.938; float MaxError = 120.50;
+#define COST_strand_lut_seed_wrap float CostNsPerPixel = 1.632; float MaxError = 120.50;
 // COST_strand_per_vertex: per_vertex/rings24
 #define COST_strand_per_vertex float CostNsPerPixel = 0.000; float MaxError = 14.41;
 // COST_hemisphere_two_term: hemisphere/cosine_float
-#define COST_hemisphere_two_term float CostNsPerPixel = 1.540; float MaxError = 0.08;
+#define COST_hemisphere_two_term float CostNsPerPixel = 0.065; float MaxError = 0.08;
+// COST_hemisphere_seed_form: hemisphere/seed_float
+#define COST_hemisphere_seed_form float CostNsPerPixel = 0.386; float MaxError = 52.82;
+// COST_specular_squaring_ps20: specular/squaring_float
+#define COST_specular_squaring_ps20 float CostNsPerPixel = 0.729; float MaxError = 0.00;
+// COST_specular_squaring_ps11: specular/squaring_8bit
+#define COST_specular_squaring_ps11 float CostNsPerPixel = 1.054; float MaxError = 7.89;
+// COST_gaussian_per_pixel: gaussian/float
+#define COST_gaussian_per_pixel float CostNsPerPixel = 1.372; float MaxError = 0.00;
 #endif

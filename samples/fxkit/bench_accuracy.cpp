@@ -48,6 +48,10 @@ const TechniqueSource kTechniques[] = {
     {"COST_strand_lut_seed_wrap", "strand_mapping/seed_wrap/specular/s256"},
     {"COST_strand_per_vertex", "per_vertex/rings24"},
     {"COST_hemisphere_two_term", "hemisphere/cosine_float"},
+    {"COST_hemisphere_seed_form", "hemisphere/seed_float"},
+    {"COST_specular_squaring_ps20", "specular/squaring_float"},
+    {"COST_specular_squaring_ps11", "specular/squaring_8bit"},
+    {"COST_gaussian_per_pixel", "gaussian/float"},  // the effect's default k = 4, as measured
 };
 
 nlohmann::json stats_json(const fx::shading::ErrorStats& s) {

@@ -262,7 +262,7 @@ TEST(Effects, SchemesDistancesAndVariantsSteerTheChoice) {
 // device; without a limit the best-ranked technique wins (docs/selection.md).
 TEST(Effects, ErrorLimitPicksTheCheapestMeasuredTechnique) {
   int limits = 0;
-  for (const char* name : {"strand_aniso.fx", "hemisphere.fx"}) {
+  for (const char* name : {"strand_aniso.fx", "hemisphere.fx", "per_pixel_lighting.fx", "aniso_lut_ward.fx"}) {
     SCOPED_TRACE(name);
     auto l = load(name);
     std::vector<fx::TechniqueCandidate> list = candidates(l->effect.ast);
@@ -289,5 +289,5 @@ TEST(Effects, ErrorLimitPicksTheCheapestMeasuredTechnique) {
       }
     }
   }
-  EXPECT_GE(limits, 4);  // every generated annotation was exercised
+  EXPECT_GE(limits, 8);  // every generated annotation was exercised
 }
