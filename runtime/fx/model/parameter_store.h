@@ -2,6 +2,8 @@
 // lookup by name and semantic, defaults applied at creation, dirty tracking per uniform
 // block and packing into block bytes with D3D matrix rules; `shared` parameters live in a
 // ParameterPool several stores reference (as D3DX effect pools). See docs/parameters.md.
+// One thread at a time, getters included: a getter may copy back a matrix that set_matrix
+// wrote only into its hot block (docs/rendering.md, uniform blocks).
 // Stable: Param, ParamStatus, ParameterStore's public functions, ParameterPool, remap.
 #pragma once
 #include <cstdint>
