@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "fx/ascii_case.h"
+#include "name_hash.h"
 #include "state_table_data.h"
 
 namespace fx {
@@ -13,7 +14,7 @@ namespace {
 // Hashes the length and five characters (the first two, the middle, the last two): that
 // tells the table's names apart (MinFilter/MagFilter, AddressU/AddressV) at a fixed cost,
 // and the few collisions are settled by the stored hash and one iequals.
-uint64_t name_hash(std::string_view name, StateBlock block) {
+uint64_t state_hash(std::string_view name, StateBlock block) {
   uint64_t h = (name.size() * 1099511628211ull) ^ static_cast<uint64_t>(block);
   auto mix = [&](char c) { h = (h ^ static_cast<unsigned char>(ascii_lower(c))) * 1099511628211ull; };
   // Written out rather than looped over an index list, which cost more than the mixing.
@@ -55,7 +56,7 @@ class StateIndex {
     slots_.assign(capacity, Slot{});
     mask_ = capacity - 1;
     for (size_t i = 0; i < rows_.size(); ++i) {
-      uint64_t hash = name_hash(rows_[i].name, rows_[i].block);
+      uint64_t hash = state_hash(rows_[i].name, rows_[i].block);
       size_t slot = hash & mask_;
       while (slots_[slot].row >= 0) slot = (slot + 1) & mask_;
       slots_[slot] = {hash, static_cast<int32_t>(i)};
@@ -63,7 +64,7 @@ class StateIndex {
   }
 
   const StateInfo* find(std::string_view name, StateBlock block) const {
-    uint64_t hash = name_hash(name, block);
+    uint64_t hash = state_hash(name, block);
     for (size_t slot = hash & mask_; slots_[slot].row >= 0; slot = (slot + 1) & mask_) {
       // The stored hash rejects colliding rows without comparing their names.
       if (slots_[slot].hash != hash) continue;
@@ -161,10 +162,9 @@ class EnumIndex {
     int32_t entry = -1;  // index into entries_, or -1 for an empty slot
   };
 
-  // FNV-1a over the name, seeded by the set.
+  // The name's hash (mixed into every bit), told apart per set by the set's address.
   static uint32_t key_hash(const EnumSet* set, std::string_view name) {
-    uint64_t h = reinterpret_cast<uintptr_t>(set) * 0x9E3779B97F4A7C15ull;
-    for (char c : name) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    const uint64_t h = name_hash(name) ^ reinterpret_cast<uintptr_t>(set) * 0x9E3779B97F4A7C15ull;
     return static_cast<uint32_t>(h ^ (h >> 32));
   }
 
