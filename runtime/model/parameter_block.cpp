@@ -171,12 +171,13 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
   }
   b.group_of.assign(s.top_count, kNoIndex);
   for (uint32_t g = 0; g < b.groups.size(); ++g) b.group_of[b.groups[g].top] = g;
-  b.seen_changes = s.changes;
   b.packed.assign(block_size, 0);
   s.pack(b, 0, static_cast<uint32_t>(b.runs.size()));
   for (Impl::PooledRuns& p : b.pooled) p.packed_version = s.pool->entries_[p.entry].version;
   s.blocks[slot] = std::move(b);
-  s.hot.assign(s.top_count, {});  // `blocks` may have moved
+  s.draw.blocks.resize(s.blocks.size());
+  s.draw.blocks[slot] = {s.blocks[slot].packed.data(), block_size, false, false, s.draw.changes};
+  s.hot.assign(s.top_count, {});  // `blocks` and `draw.blocks` may have moved
   if (!skipped.empty())
     return fail(ParamStatus::not_found, "no parameter (or a struct without member paths) for: " + skipped);
   return {};
@@ -214,10 +215,11 @@ inline void ParameterStore::Impl::pack(Block& b, uint32_t first, uint32_t count)
   }
 }
 
-bool ParameterStore::Impl::refresh(Block& b) {
-  bool changed = !b.written || b.fresh;
+bool ParameterStore::Impl::refresh(Block& b, DrawBlock& d) {
+  bool changed = !b.written || d.fresh;
   b.written = true;
-  b.fresh = false;
+  d.quiet = b.pooled.empty();
+  d.fresh = false;
   auto repack = [&](RunGroup& g) {
     const uint64_t version = versions[g.top];
     if (version == g.packed_version) return;  // unchanged, written by store_hot, or touched twice
@@ -227,16 +229,17 @@ bool ParameterStore::Impl::refresh(Block& b) {
     changed = true;
     if (g.whole4x4) {
       const WordRun& r = b.runs[g.first];
-      hot[g.top] = {&b, &g, b.packed.data() + r.dst, r.src, r.kind};
+      hot[g.top] = {&d, &g, b.packed.data() + r.dst, r.src, r.kind};
     }
   };
-  if (changes - b.seen_changes <= kTouchLog) {
-    for (uint64_t k = b.seen_changes; k < changes; ++k)
+  const uint64_t changes = draw.changes;
+  if (changes - d.seen_changes <= kTouchLog) {
+    for (uint64_t k = d.seen_changes; k < changes; ++k)
       if (const uint32_t group = b.group_of[touched[k % kTouchLog]]; group != kNoIndex) repack(b.groups[group]);
   } else {
     for (RunGroup& g : b.groups) repack(g);
   }
-  b.seen_changes = changes;
+  d.seen_changes = changes;
   for (PooledRuns& p : b.pooled) {
     const uint64_t version = pool->entries_[p.entry].version;
     if (version == p.packed_version) continue;
@@ -256,7 +259,7 @@ bool ParameterStore::dirty(uint32_t block) const {
   const Impl& s = *impl_;
   auto it = s.block_slot.find(block);
   if (it == s.block_slot.end()) return false;
-  return s.blocks[it->second].changed(s.versions, s.pool);
+  return s.blocks[it->second].changed(s.draw.blocks[it->second], s.versions, s.pool);
 }
 
 ParamStatus ParameterStore::write_block(uint32_t block, std::span<uint8_t> out) {
@@ -267,24 +270,17 @@ ParamStatus ParameterStore::write_block(uint32_t block, std::span<uint8_t> out) 
   if (out.size() < b.size)
     return fail(ParamStatus::size_mismatch, "block " + std::to_string(block) + " needs " + std::to_string(b.size) +
                                                 " bytes, the buffer has " + std::to_string(out.size()));
-  s.refresh(b);
+  s.refresh(b, s.draw.blocks[it->second]);
   std::memcpy(out.data(), b.packed.data(), b.size);
   return {};
 }
 
-std::span<const uint8_t> ParameterStore::update_block(BlockHandle block, bool& changed) {
+std::span<const uint8_t> ParameterStore::update_block_slow(BlockHandle block, bool& changed) {
   Impl& s = *impl_;
   changed = false;
   if (block.slot >= s.blocks.size()) return {};
   Impl::Block& b = s.blocks[block.slot];
-  if (b.written && b.seen_changes == s.changes && b.pooled.empty()) {
-    // Nothing logged since the last refresh (set_matrix wrote into this block, or nothing
-    // changed): the per-draw case.
-    changed = b.fresh;
-    b.fresh = false;
-  } else {
-    changed = s.refresh(b);
-  }
+  changed = s.refresh(b, s.draw.blocks[block.slot]);
   return {b.packed.data(), b.size};
 }
 

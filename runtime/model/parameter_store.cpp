@@ -4,6 +4,7 @@
 // set updates (parameter_block.cpp).
 #include <algorithm>
 #include <cstring>
+#include <utility>
 
 #include "parameter_store_impl.h"
 
@@ -11,7 +12,7 @@ namespace fx {
 
 
 ParameterStore::ParameterStore(const EffectModel& model, ParameterPool* pool, DiagnosticSink* diags)
-    : impl_(std::make_unique<Impl>()) {
+    : impl_(std::make_unique<Impl>()), draw_(&impl_->draw) {
   Impl& s = *impl_;
   s.model = &model;
   s.pool = pool;
@@ -78,8 +79,13 @@ ParameterStore::ParameterStore(const EffectModel& model, ParameterPool* pool, Di
   }
 }
 
-ParameterStore::ParameterStore(ParameterStore&&) noexcept = default;
-ParameterStore& ParameterStore::operator=(ParameterStore&&) noexcept = default;
+ParameterStore::ParameterStore(ParameterStore&& other) noexcept
+    : impl_(std::move(other.impl_)), draw_(std::exchange(other.draw_, nullptr)) {}
+ParameterStore& ParameterStore::operator=(ParameterStore&& other) noexcept {
+  impl_ = std::move(other.impl_);
+  draw_ = std::exchange(other.draw_, nullptr);
+  return *this;
+}
 ParameterStore::~ParameterStore() = default;
 
 Param ParameterStore::find(std::string_view name) const {

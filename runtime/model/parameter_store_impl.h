@@ -137,13 +137,12 @@ struct ParameterStore::Impl {
     std::vector<WordRun> runs;  // planned by plan_runs, grouped by top-level parameter
     std::vector<RunGroup> groups;
     std::vector<uint8_t> packed;
-    bool written = false;  // by write_block since bind_layout
+    bool written = false;  // by write_block or update_block since bind_layout
     std::vector<uint32_t> group_of;  // per top-level parameter: its group here, or kNoIndex
-    uint64_t seen_changes = 0;       // Impl::changes when the groups were last brought up to date
     std::vector<PooledRuns> pooled;
-    bool fresh = false;  // set_matrix wrote into `packed` (store_hot) since it was handed out
-    bool changed(const std::vector<uint64_t>& versions, const ParameterPool* pool) const {
-      if (!written || fresh) return true;
+    // `draw`: this block's DrawBlock (its seen_changes and fresh flag).
+    bool changed(const DrawBlock& draw, const std::vector<uint64_t>& versions, const ParameterPool* pool) const {
+      if (!written || draw.fresh) return true;
       for (const RunGroup& g : groups)
         if (versions[g.top] != g.packed_version) return true;
       for (const PooledRuns& p : pooled)
@@ -158,7 +157,7 @@ struct ParameterStore::Impl {
   // The pointers are into `blocks`, so bind_layout, which may move them, clears every
   // HotGroup; the next re-pack makes one again.
   struct HotGroup {
-    Block* block = nullptr;  // none when null
+    DrawBlock* block = nullptr;  // the hot block's; none when null
     RunGroup* group = nullptr;
     uint8_t* to = nullptr;   // its run's first byte in block->packed
     uint32_t words = 0;      // the parameter's first word (Node::offset)
@@ -193,7 +192,7 @@ struct ParameterStore::Impl {
   }
   // Re-packs the runs of `b` whose parameter changed since they were packed; true when
   // anything was re-packed or the block was never handed out.
-  bool refresh(Block& b);
+  bool refresh(Block& b, DrawBlock& draw);
   static void plan_runs(const Node& n, const BlockMemberLayout& m, uint32_t block_size, std::vector<WordRun>& runs);
   // Copies runs [first, first + count) of `b` from the words into b.packed.
   [[gnu::always_inline]] inline void pack(Block& b, uint32_t first, uint32_t count) const;
@@ -212,10 +211,10 @@ struct ParameterStore::Impl {
   // so a set costs the same however many blocks hold the parameter.
   std::vector<uint64_t> versions;
   // The last kTouchLog changes: touched[k % kTouchLog] is the top-level parameter of change
-  // k (`changes` so far), so a block refreshed a few changes ago re-packs just those
+  // k (`draw.changes` so far), so a block refreshed a few changes ago re-packs just those
   // instead of comparing every parameter's version (World and WorldViewProjection per draw).
   static constexpr uint32_t kTouchLog = 16;
-  uint64_t changes = 0;
+  DrawState draw;  // update_block's per-draw view of `blocks` (parallel), and the change count
   uint32_t touched[kTouchLog] = {};
   std::vector<Block> blocks;
   mutable std::vector<HotGroup> hot;  // per top-level node
@@ -303,8 +302,8 @@ struct ParameterStore::Impl {
   // touch() without the pool: bumps top-level parameter `top`'s version, logs the change
   // and returns the new version.
   uint64_t log_change(uint32_t top) {
-    touched[changes % kTouchLog] = top;
-    ++changes;
+    touched[draw.changes % kTouchLog] = top;
+    ++draw.changes;
     return ++versions[top];
   }
 
@@ -370,7 +369,7 @@ struct ParameterStore::Impl {
 template <bool v_columns>
 inline bool ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
   HotGroup& h = hot[top];
-  Block& b = *h.block;
+  DrawBlock& b = *h.block;
   RunGroup& g = *h.group;
   uint64_t& version = versions[top];
   if (g.packed_version != version) [[unlikely]] {
@@ -402,9 +401,9 @@ inline bool ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
   b.fresh = true;
   // Logged for the blocks other than the hot one, which sync() before they re-pack (as
   // log_change does, with the counters read once: nothing here aliases them).
-  const uint64_t change = changes, next = g.packed_version + 1;
+  const uint64_t change = draw.changes, next = g.packed_version + 1;
   touched[change % kTouchLog] = top;
-  changes = change + 1;
+  draw.changes = change + 1;
   version = next;
   g.packed_version = next;
   // A block that had taken every earlier change has now taken this one too: its next

@@ -339,11 +339,14 @@ bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, Diagnosti
   if (!active_ || pass_index >= active_->passes.size()) return unknown_pass(pass_index, sink);
   Pass& pass = *active_->passes[pass_index];
   bool moved = false;  // a block was written to a new ring offset
-  for (size_t i = 0; i < pass.blocks.size(); ++i) {
-    BlockSlot& block = pass.blocks[i];
+  uint32_t* ring_offset = pass.ring_offsets.data();  // parallel to pass.blocks
+  for (BlockSlot& block : pass.blocks) {
     bool changed;
     const std::span<const uint8_t> bytes = params_->update_block(block.handle, changed);
-    if (!changed && frames_->still_valid(block.frame)) continue;
+    if (!changed && frames_->still_valid(block.frame)) {
+      ++ring_offset;
+      continue;
+    }
     std::optional<uint32_t> offset = recorder_->write_uniform(
         block.size,
         [&](uint8_t* ring) {
@@ -353,7 +356,7 @@ bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, Diagnosti
         },
         sink);
     if (!offset) return false;
-    pass.ring_offsets[i] = *offset;
+    *ring_offset++ = *offset;
     block.frame = frames_->frame();
     moved = true;
   }

@@ -51,6 +51,8 @@ bool PassRecorder::apply(const PassDesc& pass, DiagnosticSink& sink) {
   }
   if (!bind_descriptors(pass, sink)) return false;
   applied_ = pass.resources;
+  applied_frame_ = frames_->frame();
+  rebind_set_ = pass.program->descriptor_mode() != DescriptorMode::push;
   return true;
 }
 

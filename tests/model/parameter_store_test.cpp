@@ -298,6 +298,49 @@ TEST(ParameterStore, UpdateBlockThroughHandle) {
   EXPECT_TRUE(changed);
 }
 
+// The per-draw path (World written into its hot block, update_block's inline check) keeps
+// working on the store a move leaves the values in, by construction and by assignment,
+// and a second block that holds World re-packs it from the change log.
+TEST(ParameterStore, MovedStoreKeepsItsBlocks) {
+  auto b = test::build("float4x4 World; float4 a;");
+  ParameterStore first(b->model);
+  const BlockMemberLayout object[] = {{"World", 0, 64, 0, 16, MatrixOrder::column_major}};
+  const BlockMemberLayout material[] = {{"World", 0, 64, 0, 16, MatrixOrder::row_major},
+                                        {"a", 64, 16, 0, 16, MatrixOrder::column_major}};
+  ASSERT_TRUE(first.bind_layout(0, object, 64));
+  ASSERT_TRUE(first.bind_layout(1, material, 80));
+  ParameterStore store(std::move(first));
+  const BlockHandle h = store.block(0), other = store.block(1);
+  bool changed = false;
+  float m[16];
+  for (int draw = 0; draw < 3; ++draw) {
+    for (int i = 0; i < 16; ++i) m[i] = float(draw * 16 + i);
+    ASSERT_TRUE(store.set_matrix(store.find("World"), m));
+    const std::span<const uint8_t> bytes = store.update_block(h, changed);
+    ASSERT_EQ(bytes.size(), 64u);
+    EXPECT_TRUE(changed) << "draw " << draw;
+    float at;
+    std::memcpy(&at, bytes.data() + 4, 4);
+    EXPECT_EQ(at, float(draw * 16 + 4)) << "column_major: register 0 is column 0, m[1][0]";
+    store.update_block(h, changed);
+    EXPECT_FALSE(changed) << "nothing set since";
+  }
+  const std::span<const uint8_t> bytes = store.update_block(other, changed);
+  EXPECT_TRUE(changed);
+  float at;
+  std::memcpy(&at, bytes.data() + 4, 4);
+  EXPECT_EQ(at, 33.0f) << "row_major: register 0 is row 0, m[0][1] of the last draw";
+  ParameterStore assigned(b->model);
+  assigned = std::move(store);
+  for (int i = 0; i < 16; ++i) m[i] = float(100 + i);
+  ASSERT_TRUE(assigned.set_matrix(assigned.find("World"), m));
+  EXPECT_EQ(assigned.update_block(h, changed).size(), 64u);
+  EXPECT_TRUE(changed);
+  float back[16];
+  ASSERT_TRUE(assigned.get_matrix(assigned.find("World"), back));
+  EXPECT_EQ(back[5], 105.0f);
+}
+
 // set_matrix writes a 4x4 matrix that blocks hold whole straight into the packed bytes of
 // the block that last re-packed it (no re-pack at that block's next update_block). Checked
 // against a second store given the same values through set(), which re-packs from the

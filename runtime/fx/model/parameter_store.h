@@ -150,7 +150,19 @@ class ParameterStore {
   // (its bound size, padding zero; valid until the next call on this store), `changed`
   // telling whether they differ from what the last update or write returned. Empty for
   // an invalid handle.
-  std::span<const uint8_t> update_block(BlockHandle block, bool& changed);
+  // Inline: a renderer calls it per block and draw, and a block nothing was logged for
+  // since its last update (its set_matrix values were written into it) needs no call.
+  std::span<const uint8_t> update_block(BlockHandle block, bool& changed) {
+    if (block.slot < draw_->blocks.size()) [[likely]] {
+      DrawBlock& b = draw_->blocks[block.slot];
+      if (b.quiet && b.seen_changes == draw_->changes) [[likely]] {
+        changed = b.fresh;
+        b.fresh = false;
+        return {b.bytes, b.size};
+      }
+    }
+    return update_block_slow(block, changed);
+  }
 
   uint32_t generation() const;
 
@@ -160,8 +172,27 @@ class ParameterStore {
   bool set_matrix_fast(Param p, const float* v, size_t count, HostMatrixOrder order);
   // Everything else, with the status that says what is wrong.
   ParamStatus set_matrix_checked(Param p, std::span<const float> v, HostMatrixOrder order);
+  // update_block's way for a block with logged changes or pooled parameters (re-packed),
+  // or an invalid handle (empty).
+  std::span<const uint8_t> update_block_slow(BlockHandle block, bool& changed);
+
+  // What update_block's inline check reads of each bound block. Impl owns it (draw_ points
+  // into *impl_, so a move keeps it) and keeps it current.
+  struct alignas(32) DrawBlock {  // 32 bytes: a slot's address is a shift
+    const uint8_t* bytes = nullptr;  // the block's packed bytes (Impl::Block::packed)
+    uint32_t size = 0;
+    bool quiet = false;  // written since bind_layout, no pooled parameter: only logged changes or
+                         // set_matrix's writes into `bytes` (fresh) can change it
+    bool fresh = false;  // set_matrix wrote into `bytes` since they were last handed out
+    uint64_t seen_changes = 0;  // DrawState::changes when the block was last brought up to date
+  };
+  struct DrawState {
+    std::vector<DrawBlock> blocks;  // by BlockHandle::slot
+    uint64_t changes = 0;           // changes logged so far (Impl's change log)
+  };
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  DrawState* draw_ = nullptr;
 };
 
 // After a reload: copies every value of `old_store` whose parameter still exists in

@@ -61,12 +61,13 @@ class PassRecorder {
   // uniforms moved to `uniform_offsets`: pipeline, dynamic state and textures are bound
   // already, so only the descriptor offsets are bound again. `moved` false promises the
   // offsets are the ones applied last (nothing to bind). False (nothing recorded) when
-  // `resources` is not that pass's, its textures changed or it pushes descriptors: call
-  // apply() then. Inline: it runs once per object.
+  // `resources` is not that pass's, its textures changed, it pushes descriptors or the
+  // frame moved on since: call apply() then. Inline: it runs once per object.
   bool reapply(const PassResources& r, std::span<const uint32_t> uniform_offsets, bool moved = true) {
     if (&r != applied_ || r.images_changed_ || uniform_offsets.size() != offsets_.size()) return false;
     if (moved) {
-      if (r.program().descriptor_mode() == DescriptorMode::push || !frames_->still_valid(r.set_frame_)) return false;
+      // apply() left a set valid for its frame bound; a pushed set is pushed by apply().
+      if (!rebind_set_ || frames_->frame() != applied_frame_) return false;
       vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_,
                               uint32_t(uniform_offsets.size()), uniform_offsets.data());
       ++stats_.descriptor_binds;
@@ -118,7 +119,11 @@ class PassRecorder {
   std::vector<VkDescriptorImageInfo> image_infos_;
   std::vector<VkWriteDescriptorSet> writes_;
   const PassResources* pushed_ = nullptr;
-  const PassResources* applied_ = nullptr;  // of the last successful apply()
+  // The last successful apply(): its resources, frame, and whether reapply() may bind its
+  // set with other offsets (a set, not a push).
+  const PassResources* applied_ = nullptr;
+  uint64_t applied_frame_ = 0;
+  bool rebind_set_ = false;
   ApplyStats stats_;
 };
 
