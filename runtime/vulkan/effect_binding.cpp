@@ -63,7 +63,7 @@ const EffectPass* find_pass(const EffectUnits& units, uint32_t technique, uint32
 void make_names_unique(ProgramLayout& layout) {
   std::map<std::string, int> seen;
   for (ProgramBinding& b : layout.bindings)
-    if (seen[b.name]++ > 0) b.name += "@" + std::to_string(b.binding);
+    if (seen[b.name]++ > 0) b.name.append("@").append(std::to_string(b.binding));
 }
 
 // The parameter the reflected member path ("light.dir", "bones[3]") starts with.
