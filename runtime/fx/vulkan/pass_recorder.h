@@ -30,7 +30,7 @@ struct PassDesc {
   // When not empty: the ring offsets (from write_uniform) of every uniform block, in
   // program.uniform_blocks() order, written by the caller; the resources' block shadows
   // are then not read.
-  std::span<const uint32_t> uniform_offsets;
+  std::span<const uint32_t> uniform_offsets = {};
 };
 
 // What the recorder recorded (and skipped), for tests and benchmarks.
