@@ -165,7 +165,7 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
     const bool whole4x4 = !n.pooled && n.all_float && n.type.cls == TypeClass::matrix && n.type.rows == 4 &&
                           n.type.cols == 4 && runs.size() == 1 && runs[0].src == n.offset && runs[0].words == 16 &&
                           (runs[0].kind == Impl::RunKind::columns4x4 || runs[0].kind == Impl::RunKind::copy);
-    b.groups.push_back({top, static_cast<uint32_t>(b.runs.size()), static_cast<uint32_t>(runs.size()), s.versions[top], whole4x4});
+    b.groups.push_back({top, static_cast<uint32_t>(b.runs.size()), static_cast<uint32_t>(runs.size()), s.draw.versions[top], whole4x4});
     b.runs.insert(b.runs.end(), runs.begin(), runs.end());
     if (s.nodes[top].pooled) b.pooled.push_back({s.nodes[top].pool_entry, group, 0});
   }
@@ -177,19 +177,19 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
   s.blocks[slot] = std::move(b);
   s.draw.blocks.resize(s.blocks.size());
   s.draw.blocks[slot] = {s.blocks[slot].packed.data(), block_size, false, false, s.draw.changes};
-  s.hot.assign(s.top_count, {});  // `blocks` and `draw.blocks` may have moved
+  s.draw.hot.assign(s.top_count, {});  // `blocks` and `draw.blocks` may have moved
   if (!skipped.empty())
     return fail(ParamStatus::not_found, "no parameter (or a struct without member paths) for: " + skipped);
   return {};
 }
 
 void ParameterStore::Impl::sync_words(uint32_t top) const {
-  HotGroup& h = hot[top];
+  HotMatrix& h = draw.hot[top];
   const uint8_t* from = h.to;
   uint32_t* held = words.data() + h.words;
   uint32_t bytes[16];
   std::memcpy(bytes, from, sizeof bytes);
-  if (h.kind == RunKind::columns4x4) transpose4x4(bytes, held);  // column registers back to rows
+  if (h.columns) transpose4x4(bytes, held);  // column registers back to rows
   else std::memcpy(held, bytes, sizeof bytes);
   h.stale = false;
 }
@@ -221,7 +221,7 @@ bool ParameterStore::Impl::refresh(Block& b, DrawBlock& d) {
   d.quiet = b.pooled.empty();
   d.fresh = false;
   auto repack = [&](RunGroup& g) {
-    const uint64_t version = versions[g.top];
+    const uint64_t version = draw.versions[g.top];
     if (version == g.packed_version) return;  // unchanged, written by store_hot, or touched twice
     sync(g.top);  // another block may hold its value
     pack(b, g.first, g.count);
@@ -229,13 +229,13 @@ bool ParameterStore::Impl::refresh(Block& b, DrawBlock& d) {
     changed = true;
     if (g.whole4x4) {
       const WordRun& r = b.runs[g.first];
-      hot[g.top] = {&d, &g, b.packed.data() + r.dst, r.src, r.kind};
+      draw.hot[g.top] = {&d, &g.packed_version, b.packed.data() + r.dst, r.src, r.kind == RunKind::columns4x4};
     }
   };
   const uint64_t changes = draw.changes;
   if (changes - d.seen_changes <= kTouchLog) {
     for (uint64_t k = d.seen_changes; k < changes; ++k)
-      if (const uint32_t group = b.group_of[touched[k % kTouchLog]]; group != kNoIndex) repack(b.groups[group]);
+      if (const uint32_t group = b.group_of[draw.touched[k % kTouchLog]]; group != kNoIndex) repack(b.groups[group]);
   } else {
     for (RunGroup& g : b.groups) repack(g);
   }
@@ -259,7 +259,7 @@ bool ParameterStore::dirty(uint32_t block) const {
   const Impl& s = *impl_;
   auto it = s.block_slot.find(block);
   if (it == s.block_slot.end()) return false;
-  return s.blocks[it->second].changed(s.draw.blocks[it->second], s.versions, s.pool);
+  return s.blocks[it->second].changed(s.draw.blocks[it->second], s.draw.versions, s.pool);
 }
 
 ParamStatus ParameterStore::write_block(uint32_t block, std::span<uint8_t> out) {
@@ -300,10 +300,10 @@ void remap(const ParameterStore& old_store, ParameterStore& new_store) {
     std::memcpy(n.data(b), o.data(a), a.words * sizeof(uint32_t));
     n.touch(b);
   }
-  n.generation = o.generation + 1;
-  n.translate.assign(n.generation, {});
+  n.draw.generation = o.draw.generation + 1;
+  n.translate.assign(n.draw.generation, {});
   n.removed.clear();
-  for (uint32_t g = 0; g < o.generation; ++g) {
+  for (uint32_t g = 0; g < o.draw.generation; ++g) {
     const auto& older = o.translate[g];
     auto& t = n.translate[g];
     t.resize(older.size(), kNoIndex);
@@ -316,9 +316,9 @@ void remap(const ParameterStore& old_store, ParameterStore& new_store) {
       }
     }
   }
-  n.translate[o.generation] = map;
+  n.translate[o.draw.generation] = map;
   for (size_t k = 0; k < map.size(); ++k)
-    if (map[k] == kNoIndex) n.removed[static_cast<uint64_t>(o.generation) << 32 | k] = o.path(static_cast<uint32_t>(k));
+    if (map[k] == kNoIndex) n.removed[static_cast<uint64_t>(o.draw.generation) << 32 | k] = o.path(static_cast<uint32_t>(k));
 }
 
 }  // namespace fx

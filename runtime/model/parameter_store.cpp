@@ -18,8 +18,8 @@ ParameterStore::ParameterStore(const EffectModel& model, ParameterPool* pool, Di
   s.pool = pool;
   s.top_count = static_cast<uint32_t>(model.parameters.size());
   s.nodes.resize(s.top_count);
-  s.versions.assign(s.top_count, 1);
-  s.hot.assign(s.top_count, {});
+  s.draw.versions.assign(s.top_count, 1);
+  s.draw.hot.assign(s.top_count, {});
   for (uint32_t i = 0; i < s.top_count; ++i) {
     const Parameter& p = model.parameters[i];
     Impl::Node& n = s.nodes[i];
@@ -90,12 +90,12 @@ ParameterStore::~ParameterStore() = default;
 
 Param ParameterStore::find(std::string_view name) const {
   auto it = impl_->by_name.find(std::string(name));
-  return it == impl_->by_name.end() ? Param{} : Param{it->second, impl_->generation};
+  return it == impl_->by_name.end() ? Param{} : Param{it->second, impl_->draw.generation};
 }
 
 Param ParameterStore::by_semantic(std::string_view semantic) const {
   auto it = impl_->by_semantic.find(ascii_lower(semantic));
-  return it == impl_->by_semantic.end() ? Param{} : Param{it->second, impl_->generation};
+  return it == impl_->by_semantic.end() ? Param{} : Param{it->second, impl_->draw.generation};
 }
 
 Param ParameterStore::member(Param p, std::string_view name) const {
@@ -104,7 +104,7 @@ Param ParameterStore::member(Param p, std::string_view name) const {
   const Impl::Node& n = impl_->nodes[i];
   if (n.type.is_array() || n.type.cls != TypeClass::structure) return {};
   for (uint32_t k = 0; k < n.child_count; ++k)
-    if (impl_->nodes[n.first_child + k].member == name) return {n.first_child + k, impl_->generation};
+    if (impl_->nodes[n.first_child + k].member == name) return {n.first_child + k, impl_->draw.generation};
   return {};
 }
 
@@ -113,12 +113,12 @@ Param ParameterStore::element(Param p, uint32_t e) const {
   if (!impl_->resolve(p, i)) return {};
   const Impl::Node& n = impl_->nodes[i];
   if (!n.type.is_array() || e >= n.child_count) return {};
-  return {n.first_child + e, impl_->generation};
+  return {n.first_child + e, impl_->draw.generation};
 }
 
 Param ParameterStore::current(Param p) const {
   uint32_t i;
-  return impl_->resolve(p, i) ? Param{i, impl_->generation} : Param{};
+  return impl_->resolve(p, i) ? Param{i, impl_->draw.generation} : Param{};
 }
 
 const Type* ParameterStore::type(Param p) const {
@@ -132,7 +132,7 @@ std::string ParameterStore::name(Param p) const {
 }
 
 size_t ParameterStore::parameter_count() const { return impl_->top_count; }
-uint32_t ParameterStore::generation() const { return impl_->generation; }
+uint32_t ParameterStore::generation() const { return impl_->draw.generation; }
 
 ParamStatus ParameterStore::set(Param p, float v) { return set(p, std::span<const float>(&v, 1)); }
 
@@ -182,13 +182,8 @@ ParamStatus ParameterStore::set(Param p, std::span<const int32_t> v) {
 
 bool ParameterStore::set_matrix_fast(Param p, const float* v, size_t count, HostMatrixOrder order) {
   Impl& s = *impl_;
-  // The handle is checked once; a hot block implies a top-level float4x4 (see Impl::HotGroup).
-  if (p.generation != s.generation) return false;
-  const bool columns = order == HostMatrixOrder::column_major;
-  if (p.index < s.top_count && count == 16) [[likely]]
-    if (s.hot[p.index].block) [[likely]]
-      return columns ? s.store_hot<true>(p.index, v) : s.store_hot<false>(p.index, v);
-  return s.store_matrix(p.index, v, count, columns);
+  if (p.generation != s.draw.generation) return false;
+  return s.store_matrix(p.index, v, count, order == HostMatrixOrder::column_major);
 }
 
 bool ParameterStore::Impl::store_matrix(uint32_t i, const float* v, size_t count, bool columns) {

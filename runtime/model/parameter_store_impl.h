@@ -2,28 +2,14 @@
 #pragma once
 #include <cstring>
 #include <string>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#include <xmmintrin.h>
-#endif
 #include <unordered_map>
 #include <vector>
 
+#include "fx/model/matrix_registers.h"
 #include "fx/model/parameter_store.h"
 #include "model_internal.h"
 
 namespace fx::param_detail {
-
-#if defined(__SSE2__)
-// Stores four 16-byte registers one after another at `to` (16 words, any alignment).
-inline void store_registers(void* to, __m128 r0, __m128 r1, __m128 r2, __m128 r3) {
-  float* f = static_cast<float*>(to);
-  _mm_storeu_ps(f, r0);
-  _mm_storeu_ps(f + 4, r1);
-  _mm_storeu_ps(f + 8, r2);
-  _mm_storeu_ps(f + 12, r3);
-}
-#endif
 
 // `to` = the transpose of the 4x4 matrix at `from` (16 elements each, not overlapping):
 // rows stored as columns, or columns as rows.
@@ -42,7 +28,7 @@ inline void write_columns4x4(uint8_t* to, const uint32_t* from) {
   __m128 r2 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 8));
   __m128 r3 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 12));
   _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-  store_registers(to, r0, r1, r2, r3);
+  matrix_registers::store(to, r0, r1, r2, r3);
 #else
   uint32_t columns[16];
   transpose4x4(from, columns);
@@ -150,43 +136,15 @@ struct ParameterStore::Impl {
       return false;
     }
   };
-  // The per-object matrices (World, WorldViewProjection): when a block re-packs a whole4x4
-  // group, that block becomes its parameter's hot block, and set_matrix writes the next
-  // value straight into the hot block's packed bytes (store_hot), so drawing object after
-  // object with one pass re-packs nothing. Other blocks re-pack from the change log.
-  // The pointers are into `blocks`, so bind_layout, which may move them, clears every
-  // HotGroup; the next re-pack makes one again.
-  struct HotGroup {
-    DrawBlock* block = nullptr;  // the hot block's; none when null
-    RunGroup* group = nullptr;
-    uint8_t* to = nullptr;   // its run's first byte in block->packed
-    uint32_t words = 0;      // the parameter's first word (Node::offset)
-    RunKind kind = RunKind::copy;
-    // The value is in the hot block's bytes only: store_hot leaves the words behind, as
-    // D3DX effects keep a constant buffer's shadow as the one copy. sync() brings them back
-    // before anything else reads or partly writes them.
-    bool stale = false;
-  };
-  // set_matrix's per-object path: the new value of a top-level float4x4 `top` that has a
-  // hot block, 16 floats row by row (`v_columns`: column by column). Inline into
-  // set_matrix: the four registers are compared with the hot block's bytes and stored
-  // there in the order its registers hold (no transpose when the app's order is the
-  // block's); the words are left stale.
-  template <bool v_columns>
-  [[gnu::always_inline]] inline bool store_hot(uint32_t top, const float* v);
   // The words of top-level `top` made current again after store_hot left them stale.
   void sync(uint32_t top) const {
-    if (hot[top].stale) [[unlikely]] sync_words(top);
+    if (draw.hot[top].stale) [[unlikely]] sync_words(top);
   }
   [[gnu::noinline]] void sync_words(uint32_t top) const;
   // set_matrix's path for a current handle `i` without a hot block: into the words when the
   // floats fit the node as they are; false sends the call to the checked path. Out of line,
   // so the per-object path keeps no stack frame.
   [[gnu::noinline]] bool store_matrix(uint32_t i, const float* v, size_t count, bool columns);
-  // store_hot's way when its block missed a change: into the words, logged. True, so that
-  // store_hot ends in a tail call and its fast path needs no stack frame.
-  template <bool v_columns>
-  [[gnu::noinline]] bool store_hot_words(uint32_t top, const float* v);
   void sync_all() const {
     for (uint32_t top = 0; top < top_count; ++top) sync(top);
   }
@@ -207,21 +165,14 @@ struct ParameterStore::Impl {
   mutable std::vector<uint32_t> words;  // mutable: sync() refreshes the stale words of a hot matrix
   std::vector<BaseType> bases;       // per component, see Node::base_offset
   std::vector<std::string> strings;
-  // Per top-level node, bumped on every change: a block compares it with what it packed,
-  // so a set costs the same however many blocks hold the parameter.
-  std::vector<uint64_t> versions;
-  // The last kTouchLog changes: touched[k % kTouchLog] is the top-level parameter of change
-  // k (`draw.changes` so far), so a block refreshed a few changes ago re-packs just those
-  // instead of comparing every parameter's version (World and WorldViewProjection per draw).
-  static constexpr uint32_t kTouchLog = 16;
-  DrawState draw;  // update_block's per-draw view of `blocks` (parallel), and the change count
-  uint32_t touched[kTouchLog] = {};
+  // The per-object state (the header's DrawState): `blocks`' DrawBlocks (parallel), the hot
+  // matrices, versions, change log and generation. Mutable: sync() clears a stale flag.
+  mutable DrawState draw;
+  static constexpr uint32_t kTouchLog = DrawState::kTouchLog;
   std::vector<Block> blocks;
-  mutable std::vector<HotGroup> hot;  // per top-level node
   std::unordered_map<uint32_t, uint32_t> block_slot;
   std::unordered_map<std::string, uint32_t> by_name;
   std::unordered_map<std::string, uint32_t> by_semantic;  // lower-cased
-  uint32_t generation = 0;
   std::vector<std::vector<uint32_t>> translate;           // [old generation][old index] -> index
   std::unordered_map<uint64_t, std::string> removed;      // (generation << 32 | index) -> name
 
@@ -275,8 +226,8 @@ struct ParameterStore::Impl {
 
   // Resolves `p` to a node index, or reports why not.
   ParamStatus resolve(Param p, uint32_t& out) const {
-    if (p.generation != generation) {
-      if (p.generation > generation || p.generation >= translate.size())
+    if (p.generation != draw.generation) {
+      if (p.generation > draw.generation || p.generation >= translate.size())
         return fail(ParamStatus::invalid_handle, "handle from another store or generation");
       const auto& table = translate[p.generation];
       if (p.index >= table.size()) return fail(ParamStatus::invalid_handle, "invalid parameter handle");
@@ -302,9 +253,9 @@ struct ParameterStore::Impl {
   // touch() without the pool: bumps top-level parameter `top`'s version, logs the change
   // and returns the new version.
   uint64_t log_change(uint32_t top) {
-    touched[draw.changes % kTouchLog] = top;
+    draw.touched[draw.changes % kTouchLog] = top;
     ++draw.changes;
-    return ++versions[top];
+    return ++draw.versions[top];
   }
 
   // Copies n.words floats into node `n` (all float-like: held as float bits, half and
@@ -365,60 +316,5 @@ struct ParameterStore::Impl {
 
   std::string describe(uint32_t i) const { return "'" + path(i) + "' (" + nodes[i].type.to_string() + ")"; }
 };
-
-template <bool v_columns>
-inline bool ParameterStore::Impl::store_hot(uint32_t top, const float* v) {
-  HotGroup& h = hot[top];
-  DrawBlock& b = *h.block;
-  RunGroup& g = *h.group;
-  uint64_t& version = versions[top];
-  if (g.packed_version != version) [[unlikely]] {
-    // The block missed a change (a set through the words, never stale then): store the
-    // words and let its refresh re-pack.
-    return store_hot_words<v_columns>(top, v);
-  }
-  const bool to_columns = h.kind == RunKind::columns4x4;
-  uint8_t* to = h.to;
-#if defined(__SSE2__)
-  __m128 v0 = _mm_loadu_ps(v), v1 = _mm_loadu_ps(v + 4), v2 = _mm_loadu_ps(v + 8), v3 = _mm_loadu_ps(v + 12);
-  // The hot block's registers are the app's own order or its transpose.
-  if (to_columns != v_columns) _MM_TRANSPOSE4_PS(v0, v1, v2, v3);
-  const __m128i diff = _mm_or_si128(
-      _mm_or_si128(_mm_xor_si128(_mm_castps_si128(v0), _mm_loadu_si128(reinterpret_cast<const __m128i*>(to))),
-                   _mm_xor_si128(_mm_castps_si128(v1), _mm_loadu_si128(reinterpret_cast<const __m128i*>(to + 16)))),
-      _mm_or_si128(_mm_xor_si128(_mm_castps_si128(v2), _mm_loadu_si128(reinterpret_cast<const __m128i*>(to + 32))),
-                   _mm_xor_si128(_mm_castps_si128(v3), _mm_loadu_si128(reinterpret_cast<const __m128i*>(to + 48)))));
-  if (_mm_movemask_epi8(_mm_cmpeq_epi32(diff, _mm_setzero_si128())) == 0xFFFF) return true;  // no bit changed
-  store_registers(to, v0, v1, v2, v3);
-#else
-  float ordered[16];
-  if (to_columns != v_columns) transpose4x4(v, ordered);
-  else std::memcpy(ordered, v, sizeof ordered);
-  if (std::memcmp(to, ordered, sizeof ordered) == 0) return true;  // no bit changed
-  std::memcpy(to, ordered, sizeof ordered);
-#endif
-  h.stale = true;
-  b.fresh = true;
-  // Logged for the blocks other than the hot one, which sync() before they re-pack (as
-  // log_change does, with the counters read once: nothing here aliases them).
-  const uint64_t change = draw.changes, next = g.packed_version + 1;
-  touched[change % kTouchLog] = top;
-  draw.changes = change + 1;
-  version = next;
-  g.packed_version = next;
-  // A block that had taken every earlier change has now taken this one too: its next
-  // refresh has no logged change to look at.
-  if (b.seen_changes == change) b.seen_changes = change + 1;
-  return true;
-}
-
-template <bool v_columns>
-bool ParameterStore::Impl::store_hot_words(uint32_t top, const float* v) {
-  sync(top);
-  const Node& n = nodes[top];
-  if constexpr (v_columns) store_columns4x4(n, v);
-  else store_floats(n, v);
-  return true;
-}
 
 }  // namespace fx

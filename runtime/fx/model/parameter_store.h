@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "fx/model/effect_model.h"
+#include "fx/model/matrix_registers.h"
 
 namespace fx {
 
@@ -119,7 +120,7 @@ class ParameterStore {
   // that the per-object call (a current handle, one matrix of the right count, either
   // order) returns without building a status: the caller's empty ParamStatus folds away.
   ParamStatus set_matrix(Param p, std::span<const float> v, HostMatrixOrder order = HostMatrixOrder::row_major) {
-    if (set_matrix_fast(p, v.data(), v.size(), order)) return {};
+    if (store_hot(p, v, order) || set_matrix_fast(p, v.data(), v.size(), order)) return {};
     return set_matrix_checked(p, v, order);
   }
   ParamStatus set_string(Param p, std::string_view v);
@@ -168,7 +169,10 @@ class ParameterStore {
 
  private:
   friend void remap(const ParameterStore& old_store, ParameterStore& new_store);
-  // set_matrix's per-object path: true when it stored the value (nothing to report).
+  // set_matrix's per-object path, inline: a current handle of a float4x4 with a hot block
+  // (below), 16 floats. True when it stored the value (nothing to report).
+  bool store_hot(Param p, std::span<const float> v, HostMatrixOrder order);
+  // The other matrices set_matrix can store as given (nothing to report), out of line.
   bool set_matrix_fast(Param p, const float* v, size_t count, HostMatrixOrder order);
   // Everything else, with the status that says what is wrong.
   ParamStatus set_matrix_checked(Param p, std::span<const float> v, HostMatrixOrder order);
@@ -176,8 +180,9 @@ class ParameterStore {
   // or an invalid handle (empty).
   std::span<const uint8_t> update_block_slow(BlockHandle block, bool& changed);
 
-  // What update_block's inline check reads of each bound block. Impl owns it (draw_ points
-  // into *impl_, so a move keeps it) and keeps it current.
+  // The state the per-object calls (store_hot, update_block) read, declared here so that
+  // they inline into a renderer's loop. Impl owns it (draw_ points into *impl_, so a move
+  // keeps it) and keeps it current; docs/rendering.md tells the whole story.
   struct alignas(32) DrawBlock {  // 32 bytes: a slot's address is a shift
     const uint8_t* bytes = nullptr;  // the block's packed bytes (Impl::Block::packed)
     uint32_t size = 0;
@@ -186,14 +191,65 @@ class ParameterStore {
     bool fresh = false;  // set_matrix wrote into `bytes` since they were last handed out
     uint64_t seen_changes = 0;  // DrawState::changes when the block was last brought up to date
   };
+  // A per-object matrix (World, WorldViewProjection): when a block re-packs a whole 4x4
+  // float group, that block becomes its parameter's hot block, and set_matrix writes the
+  // next value straight into the block's bytes, so drawing object after object with one
+  // pass re-packs nothing. Other blocks re-pack from the change log. The pointers are into
+  // Impl's blocks, so bind_layout, which may move them, clears every HotMatrix; the next
+  // re-pack makes one again.
+  struct HotMatrix {
+    DrawBlock* block = nullptr;          // the hot block's; none when null
+    uint64_t* packed_version = nullptr;  // the version its bytes hold (Impl::RunGroup's)
+    uint8_t* to = nullptr;               // the matrix's first byte in the block
+    uint32_t words = 0;                  // the parameter's first word (Impl::Node::offset)
+    bool columns = false;                // the block holds column registers (HLSL's default)
+    // The value is in the hot block's bytes only: store_hot leaves the words behind, as
+    // D3DX effects keep a constant buffer's shadow as the one copy. Impl::sync() brings
+    // them back before anything else reads or partly writes them.
+    bool stale = false;
+  };
   struct DrawState {
-    std::vector<DrawBlock> blocks;  // by BlockHandle::slot
-    uint64_t changes = 0;           // changes logged so far (Impl's change log)
+    std::vector<DrawBlock> blocks;   // by BlockHandle::slot
+    std::vector<HotMatrix> hot;      // per top-level parameter
+    // Per top-level parameter, bumped on every change: a block compares it with what it
+    // packed, so a set costs the same however many blocks hold the parameter.
+    std::vector<uint64_t> versions;
+    // The last kTouchLog changes: touched[k % kTouchLog] is the top-level parameter of
+    // change k (`changes` so far), so a block refreshed a few changes ago re-packs just
+    // those instead of comparing every parameter's version.
+    static constexpr uint32_t kTouchLog = 16;
+    uint64_t changes = 0;
+    uint32_t touched[kTouchLog] = {};
+    uint32_t generation = 0;  // of the handles the store issues now
   };
   struct Impl;
   std::unique_ptr<Impl> impl_;
   DrawState* draw_ = nullptr;
 };
+
+inline bool ParameterStore::store_hot(Param p, std::span<const float> v, HostMatrixOrder order) {
+  DrawState& d = *draw_;
+  if (p.generation != d.generation || p.index >= d.hot.size() || v.size() != 16) [[unlikely]] return false;
+  HotMatrix& h = d.hot[p.index];
+  uint64_t& version = d.versions[p.index];
+  // No hot block, or it missed a change (a set through the words): the out-of-line path.
+  if (!h.block || *h.packed_version != version) [[unlikely]] return false;
+  if (!matrix_registers::store_if_changed(h.to, v.data(), h.columns != (order == HostMatrixOrder::column_major)))
+    return true;  // no bit changed
+  h.stale = true;
+  DrawBlock& b = *h.block;
+  b.fresh = true;
+  // Logged for the blocks other than the hot one, which sync() before they re-pack.
+  const uint64_t change = d.changes, next = version + 1;
+  d.touched[change % DrawState::kTouchLog] = p.index;
+  d.changes = change + 1;
+  version = next;
+  *h.packed_version = next;
+  // A block that had taken every earlier change has now taken this one too: its next
+  // update has no logged change to look at.
+  if (b.seen_changes == change) b.seen_changes = change + 1;
+  return true;
+}
 
 // After a reload: copies every value of `old_store` whose parameter still exists in
 // `new_store` with the same name and type, and makes handles issued by `old_store`
