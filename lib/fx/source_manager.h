@@ -1,7 +1,9 @@
-// Owns every source buffer (files, include instances, scratch text) and macro expansion
-// record, and maps compact SourceLocations back to file, line and column.
+// Owns every source buffer (files, include instances, scratch text), macro expansion
+// record and view of a token spelling too long for fx::Token to hold, and maps compact
+// SourceLocations back to file, line and column.
 #pragma once
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -43,6 +45,10 @@ class SourceManager {
   SourceLocation add_scratch(std::string_view text, SourceLocation origin);
   // Records a macro expansion covering `length` characters of the macro body.
   SourceLocation add_expansion(MacroExpansion expansion, uint32_t length);
+  // Keeps a view of a token spelling (text this SourceManager owns) too long for the
+  // 16-bit length fx::Token holds; the view stays at its address for the SourceManager's
+  // lifetime, so the token can point at it.
+  const std::string_view* keep_long_spelling(std::string_view spelling);
   // Remaps following lines of a buffer, as `#line line "file"` does (`file` empty keeps it).
   void add_line_directive(SourceLocation at_next_line, uint32_t line, std::string file);
 
@@ -105,6 +111,7 @@ class SourceManager {
   std::vector<Entry> entries_;  // entries_[0] is a sentinel
   uint32_t next_base_ = 1;
   BufferId scratch_ = 0;
+  std::deque<std::string_view> long_spellings_;  // a deque never moves its elements
 };
 
 }  // namespace fx

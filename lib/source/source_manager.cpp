@@ -49,6 +49,10 @@ SourceLocation SourceManager::add_scratch(std::string_view text, SourceLocation 
   return {s.base + offset};
 }
 
+const std::string_view* SourceManager::keep_long_spelling(std::string_view spelling) {
+  return &long_spellings_.emplace_back(spelling);
+}
+
 SourceLocation SourceManager::add_expansion(MacroExpansion expansion, uint32_t length) {
   Entry e;
   e.size = length;

@@ -50,7 +50,7 @@ class Lexer {
   bool skip_comment_or_splice();
   Token next_token();
   Token make(TokenKind kind, size_t begin);
-  std::string_view clean_spelling(const Token& t);
+  std::string_view clean_spelling(std::string_view raw, SourceLocation loc);
   Token lex_number(size_t begin);
   Token lex_quoted(size_t begin, char quote);
   Token lex_punct(size_t begin);

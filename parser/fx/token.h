@@ -3,10 +3,13 @@
 #pragma once
 #include <cstdint>
 #include <string_view>
+#include <type_traits>
 
 #include "fx/source_location.h"
 
 namespace fx {
+
+class SourceManager;
 
 enum class TokenKind : uint8_t {
   eof,
@@ -38,19 +41,58 @@ enum TokenFlags : uint8_t {
   kFromMacro = 1 << 3,      // produced by a macro expansion
 };
 
+// 16 bytes, since a 10 MB effect makes over 3 million tokens and the parser walks them
+// all: the spelling is a pointer and a 16-bit length. A spelling too long for that (a huge
+// string literal or #pragma line, a pathological identifier) has its view kept by the
+// SourceManager, and the token points at that view instead (set_text).
 struct Token {
   TokenKind kind = TokenKind::eof;
   uint8_t flags = 0;
-  SourceLocation loc;     // where the token starts (may be an expansion location)
-  std::string_view text;  // spelling, owned by the SourceManager
+
+ private:
+  uint16_t text_size_ = 0;  // kLongText: text_ points at a view the SourceManager keeps
+
+ public:
+  SourceLocation loc;  // where the token starts (may be an expansion location)
+
+  // Spellings this long or longer are kept by the SourceManager.
+  static constexpr size_t kLongText = UINT16_MAX;
+
+  // The spelling, owned by the SourceManager.
+  std::string_view text() const {
+    if (text_size_ != kLongText) [[likely]] return {text_.data, text_size_};
+    return *text_.long_view;
+  }
+  // Sets the spelling to text the SourceManager owns (a buffer's or scratch space's).
+  void set_text(std::string_view text, SourceManager& sm) {
+    if (text.size() < kLongText) [[likely]] set_short_text(text);
+    else set_long_text(text, sm);
+  }
+  // The same for a spelling shorter than kLongText, such as a punctuator's or a part of
+  // one, which needs no SourceManager.
+  void set_short_text(std::string_view text) {
+    text_.data = text.data();
+    text_size_ = static_cast<uint16_t>(text.size());
+  }
 
   bool is(TokenKind k) const { return kind == k; }
   bool is_identifier(std::string_view name) const {
-    return kind == TokenKind::identifier && text == name;
+    return kind == TokenKind::identifier && text() == name;
   }
   bool at_line_start() const { return flags & kAtLineStart; }
   bool leading_space() const { return flags & kLeadingSpace; }
-  SourceRange range() const { return {loc, loc.offset(static_cast<uint32_t>(text.size()))}; }
+  SourceRange range() const {
+    return {loc, loc.offset(static_cast<uint32_t>(text().size()))};
+  }
+
+ private:
+  [[gnu::noinline]] void set_long_text(std::string_view text, SourceManager& sm);
+
+  union {
+    const char* data = nullptr;         // text_size_ characters
+    const std::string_view* long_view;  // when text_size_ == kLongText
+  } text_;
 };
+static_assert(sizeof(Token) == 16 && std::is_trivially_copyable_v<Token>);
 
 }  // namespace fx

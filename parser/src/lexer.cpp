@@ -297,16 +297,17 @@ Token Lexer::make(TokenKind kind, size_t begin) {
   t.flags = pending_flags_;
   pending_flags_ = 0;
   t.loc = at(begin);
-  t.text = std::string_view(text_.data() + begin, pos_ - begin);
+  std::string_view text(text_.data() + begin, pos_ - begin);
   if (spliced_ && kind != TokenKind::string && kind != TokenKind::character) [[unlikely]]
-    t.text = clean_spelling(t);
+    text = clean_spelling(text, t.loc);
+  t.set_text(text, sm_);
   return t;
 }
 
 // Out of line so that make(), which runs for every token, needs no stack frame.
-[[gnu::noinline]] std::string_view Lexer::clean_spelling(const Token& t) {
+[[gnu::noinline]] std::string_view Lexer::clean_spelling(std::string_view raw,
+                                                         SourceLocation loc) {
   // The token was split by continuations: give it its clean spelling.
-  std::string_view raw = t.text;
   std::string clean;
   for (size_t i = 0; i < raw.size(); ++i) {
     if (raw[i] == '\\' && i + 1 < raw.size() && (raw[i + 1] == '\n' || raw[i + 1] == '\r')) {
@@ -315,7 +316,7 @@ Token Lexer::make(TokenKind kind, size_t begin) {
     }
     clean.push_back(raw[i]);
   }
-  return sm_.text_at(sm_.add_scratch(clean, t.loc)).substr(0, clean.size());
+  return sm_.text_at(sm_.add_scratch(clean, loc)).substr(0, clean.size());
 }
 
 Token Lexer::next() { return next_token(); }
@@ -353,8 +354,9 @@ size_t Lexer::next_batch(Token* out, size_t max, const NameFilter* stop_after) {
   // The common tokens are lexed here with the position and flags in registers (a member
   // would be reloaded after every byte stored into a Token). The text is a std::string's,
   // so a '\0' follows it: the loops stop there without bounds checks. Anything else
-  // (comments, continuations, strings, unknown characters, eof) goes through
-  // next_token() from the token's first character, which is always exact.
+  // (comments, continuations, strings, unknown characters, eof, and spellings too long
+  // for a Token to hold their length) goes through next_token() from the token's first
+  // character, which is always exact.
   static const NameFilter kNoStops;
   const NameFilter& stops = stop_after ? *stop_after : kNoStops;
   const char* const text = text_.data();
@@ -377,12 +379,13 @@ size_t Lexer::next_batch(Token* out, size_t max, const NameFilter* stop_after) {
       if (!skipped) break;
     }
     const char* begin = p;
+    auto short_spelling = [&] { return static_cast<size_t>(p - begin) < Token::kLongText; };
     TokenKind kind = TokenKind::unknown;
     bool last = false;  // the batch ends after this token
     switch (kStart[static_cast<unsigned char>(*p)]) {
       case Start::identifier:
         p = identifier_end(p + 1, end);
-        if (*p != '\\') {
+        if (*p != '\\' && short_spelling()) {
           kind = TokenKind::identifier;
           last = stops.may_contain(std::string_view(begin, static_cast<size_t>(p - begin)));
         }
@@ -398,7 +401,8 @@ size_t Lexer::next_batch(Token* out, size_t max, const NameFilter* stop_after) {
         bool floating = false;
         for (NumberChar c; (c = number_char(p, hex)) != NumberChar::end; ++p)
           floating = floating || c == NumberChar::floating;
-        if (*p != '\\') kind = floating ? TokenKind::floating : TokenKind::integer;
+        if (*p != '\\' && short_spelling())
+          kind = floating ? TokenKind::floating : TokenKind::integer;
         break;
       }
       case Start::punct:
@@ -416,7 +420,7 @@ size_t Lexer::next_batch(Token* out, size_t max, const NameFilter* stop_after) {
       flags = pending_flags_;
       if ((t.kind == TokenKind::hash && t.at_line_start()) || t.kind == TokenKind::eof ||
           reported() != before ||
-          (t.kind == TokenKind::identifier && stops.may_contain(t.text)))
+          (t.kind == TokenKind::identifier && stops.may_contain(t.text())))
         break;
       continue;
     }
@@ -424,7 +428,7 @@ size_t Lexer::next_batch(Token* out, size_t max, const NameFilter* stop_after) {
     t.kind = kind;
     t.flags = flags;
     t.loc = SourceLocation{base_ + static_cast<uint32_t>(begin - text)};
-    t.text = std::string_view(begin, static_cast<size_t>(p - begin));
+    t.set_short_text(std::string_view(begin, static_cast<size_t>(p - begin)));
     flags = 0;
     if (last) break;
   }

@@ -11,7 +11,7 @@ uint32_t Parser::parse_storage() {
   // A modifier is always followed by the type name; the look-ahead keeps a type or
   // variable that happens to be called `line` or `sample` from being swallowed.
   while (at(TokenKind::identifier) && peek().is(TokenKind::identifier) &&
-         is_storage_keyword(tok().text, bit)) {
+         is_storage_keyword(tok().text(), bit)) {
     bits |= bit;
     advance();
   }
@@ -26,10 +26,10 @@ bool Parser::parse_type(ast::TypeRef& type) {
   uint32_t first = pos_;
   // Compared as the token's string_view, which tests the length first: std::string's
   // compare with a literal calls memcmp for every type name.
-  std::string_view word = advance().text;
+  std::string_view word = advance().text();
   if ((word == "unsigned" || word == "signed") && at(TokenKind::identifier)) {
     std::string name(word);
-    (name += ' ') += advance().text;
+    (name += ' ') += advance().text();
     type.name = keep(name);
   } else {
     type.name = keep(word);
@@ -102,7 +102,7 @@ bool Parser::parse_semantics(ast::Variable& v) {
                  "expected a semantic or register after ':', found " + describe(tok()));
       return false;
     }
-    std::string_view word = tok().text;
+    std::string_view word = tok().text();
     if ((word == "register" || word == "packoffset") && peek().is(TokenKind::l_paren)) {
       ast::Text& kept = word == "register" ? v.register_binding : v.packoffset;
       std::string target;
@@ -135,7 +135,7 @@ bool Parser::parse_declarator_head(ast::Variable& v) {
                "expected a name for the declaration, found " + describe(tok()));
     return false;
   }
-  v.name = keep(tok().text);
+  v.name = keep(tok().text());
   v.name_range = tok().range();
   advance();
   if (!parse_array_dims(v.array_dims) || !parse_semantics(v)) return false;
@@ -160,7 +160,7 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
     f->return_type = type;
     f->attributes.reserve(arena_, attributes.size());
     for (const std::string& a : attributes) f->attributes.push_back(arena_, keep(a));
-    f->name = keep(tok().text);
+    f->name = keep(tok().text());
     f->name_range = tok().range();
     advance();
     if (!parse_function(*f)) return;
@@ -250,7 +250,7 @@ bool Parser::parse_function(ast::Function& f) {
       error_here("expected-semantic", "expected a semantic after ':', found " + describe(tok()));
       return false;
     }
-    f.semantic = keep(advance().text);
+    f.semantic = keep(advance().text());
   }
   if (at(TokenKind::l_brace)) return skip_braced(f.body, "function body");
   return expect_semi("after function declaration");
@@ -264,7 +264,7 @@ bool Parser::parse_parameter(ast::Variable& p) {
     error_here("expected-identifier", "expected a parameter name, found " + describe(tok()));
     return false;
   }
-  p.name = keep(tok().text);
+  p.name = keep(tok().text());
   p.name_range = tok().range();
   advance();
   if (!parse_array_dims(p.array_dims) || !parse_semantics(p)) return false;
@@ -332,7 +332,7 @@ void Parser::parse_struct(std::vector<ast::Decl>& out) {
     error_here("expected-identifier", "expected a struct name, found " + describe(tok()));
     return;
   }
-  s->name = keep(tok().text);
+  s->name = keep(tok().text());
   s->name_range = tok().range();
   advance();
   if (!parse_member_list(s->members, "struct")) return;
@@ -359,7 +359,7 @@ void Parser::parse_typedef(std::vector<ast::Decl>& out) {
       error_here("expected-identifier", "expected a typedef name, found " + describe(tok()));
       return;
     }
-    t->name = keep(advance().text);
+    t->name = keep(advance().text());
     if (!parse_array_dims(t->array_dims)) return;
     ast::Decl d;
     d.kind = ast::DeclKind::type_alias;
@@ -377,8 +377,8 @@ void Parser::parse_typedef(std::vector<ast::Decl>& out) {
 void Parser::parse_constant_buffer(std::vector<ast::Decl>& out) {
   uint32_t first = pos_;
   ast::ConstantBuffer* cb = declarations_.make<ast::ConstantBuffer>();
-  cb->texture_buffer = advance().text == "tbuffer";
-  cb->name = keep(tok().text);
+  cb->texture_buffer = advance().text() == "tbuffer";
+  cb->name = keep(tok().text());
   cb->name_range = tok().range();
   advance();
   ast::Variable binding;

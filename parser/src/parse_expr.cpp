@@ -142,7 +142,7 @@ ast::ExprPtr Parser::parse_binary(int min_precedence) {
     int precedence = binary_precedence(tok().kind);
     if (precedence == 0 || precedence < min_precedence) return lhs;
     auto e = make(ast::ExprKind::binary, first);
-    e->text = keep(advance().text);
+    e->text = keep(advance().text());
     ast::ExprPtr rhs = parse_binary(precedence + 1);
     if (failed_) return nullptr;
     e->args = expressions_.list({lhs, rhs});
@@ -163,7 +163,7 @@ ast::ExprPtr Parser::parse_unary() {
     case TokenKind::plusplus:
     case TokenKind::minusminus: {
       result = make(ast::ExprKind::unary, first);
-      result->text = keep(advance().text);
+      result->text = keep(advance().text());
       ast::ExprPtr operand = parse_unary();
       if (failed_) {
         result = nullptr;
@@ -179,7 +179,7 @@ ast::ExprPtr Parser::parse_unary() {
           starts_operand(peek(3).kind)) {
         result = make(ast::ExprKind::cast, first);
         advance();
-        result->text = keep(advance().text);
+        result->text = keep(advance().text());
         advance();
         ast::ExprPtr operand = parse_unary();
         if (failed_) {
@@ -213,7 +213,7 @@ ast::ExprPtr Parser::parse_postfix_operators(ast::ExprPtr e, uint32_t first) {
     } else if (at(TokenKind::period) && peek().is(TokenKind::identifier)) {
       advance();
       auto member = make(ast::ExprKind::member, first);
-      member->text = keep(advance().text);
+      member->text = keep(advance().text());
       member->args = expressions_.list({e});
       member->range = range_from(first);
       e = std::move(member);
@@ -232,14 +232,14 @@ ast::ExprPtr Parser::parse_primary() {
       auto e = make(t.is(TokenKind::integer) ? ast::ExprKind::int_literal
                                              : ast::ExprKind::float_literal,
                     first);
-      e->text = keep(t.text);
-      bool fast = t.is(TokenKind::integer) ? decimal_value(t.text, e->number)
-                                           : simple_float_value(t.text, e->number);
+      e->text = keep(t.text());
+      bool fast = t.is(TokenKind::integer) ? decimal_value(t.text(), e->number)
+                                           : simple_float_value(t.text(), e->number);
       if (!fast) {
         std::string why;
-        std::optional<NumberValue> value = parse_number(t.text, &why);
+        std::optional<NumberValue> value = parse_number(t.text(), &why);
         if (!value) {
-          error_here("invalid-number", why + " " + quote(t.text));
+          error_here("invalid-number", why + " " + quote(t.text()));
           return nullptr;
         }
         e->number = value->as_double();
@@ -250,7 +250,7 @@ ast::ExprPtr Parser::parse_primary() {
     case TokenKind::string: {
       auto e = make(ast::ExprKind::string_literal, first);
       std::string text;
-      while (at(TokenKind::string)) append_unquoted(text, advance().text);  // "a" "b" joins
+      while (at(TokenKind::string)) append_unquoted(text, advance().text());  // "a" "b" joins
       e->text = keep(text);
       e->range = range_from(first);
       return e;
@@ -280,7 +280,7 @@ ast::ExprPtr Parser::parse_primary() {
         return nullptr;
       }
       auto e = make(ast::ExprKind::reference, first);
-      e->text = keep(advance().text);
+      e->text = keep(advance().text());
       split_greater();
       if (!expect(TokenKind::greater, "to close the parameter reference")) return nullptr;
       e->range = range_from(first);
@@ -294,7 +294,7 @@ ast::ExprPtr Parser::parse_primary() {
 
 ast::ExprPtr Parser::parse_identifier_expr() {
   uint32_t first = pos_;
-  std::string_view word = tok().text;
+  std::string_view word = tok().text();
   bool braces_follow = peek().is(TokenKind::l_brace);
   if (iequals(word, "true") || iequals(word, "false")) {
     auto e = make(ast::ExprKind::bool_literal, first);
@@ -313,7 +313,7 @@ ast::ExprPtr Parser::parse_identifier_expr() {
   if (braces_follow && (iequals(word, "asm") || iequals(word, "decl"))) return parse_asm();
   if (braces_follow && (word == "sampler_state" || word == "stateblock_state")) {
     auto e = make(ast::ExprKind::state_block, first);
-    e->text = keep(advance().text);
+    e->text = keep(advance().text());
     if (!parse_state_list(e->states, e->text)) return nullptr;
     e->range = range_from(first);
     return e;
@@ -340,13 +340,13 @@ ast::ExprPtr Parser::parse_compile() {
                "expected a shader profile after 'compile', found " + describe(tok()));
     return nullptr;
   }
-  e->text = keep(advance().text);
+  e->text = keep(advance().text());
   if (!at(TokenKind::identifier)) {
     error_here("expected-identifier",
                "expected a shader function after the profile, found " + describe(tok()));
     return nullptr;
   }
-  e->callee = keep(advance().text);
+  e->callee = keep(advance().text());
   if (at(TokenKind::l_paren) && !parse_call_args(e->args)) return nullptr;
   e->range = range_from(first);
   return e;
@@ -355,10 +355,10 @@ ast::ExprPtr Parser::parse_compile() {
 ast::ExprPtr Parser::parse_asm() {
   uint32_t first = pos_;
   auto e = make(ast::ExprKind::asm_block, first);
-  if (iequals(tok().text, "decl")) {
+  if (iequals(tok().text(), "decl")) {
     advance();
     if (!skip_braced(e->decl_code, "decl block")) return nullptr;
-    if (!tok().is(TokenKind::identifier) || !iequals(tok().text, "asm") ||
+    if (!tok().is(TokenKind::identifier) || !iequals(tok().text(), "asm") ||
         !peek().is(TokenKind::l_brace)) {
       error_here("expected-token", "expected 'asm { }' after 'decl { }', found " +
                                        describe(tok()));

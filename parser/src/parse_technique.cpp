@@ -49,7 +49,7 @@ bool Parser::parse_annotation(ast::Annotation& a) {
     error_here("expected-identifier", "expected an annotation name, found " + describe(tok()));
     return false;
   }
-  a.name = keep(advance().text);
+  a.name = keep(advance().text());
   if (!parse_array_dims(a.array_dims)) return false;
   if (!expect(TokenKind::equal, "after annotation name")) return false;
   a.value = parse_assignment();
@@ -60,10 +60,10 @@ bool Parser::parse_annotation(ast::Annotation& a) {
 
 bool Parser::parse_technique(ast::Technique& t) {
   uint32_t first = pos_;
-  std::string_view keyword = advance().text;
+  std::string_view keyword = advance().text();
   t.version = keyword == "technique11" ? 11 : keyword == "technique10" ? 10 : 9;
   if (at(TokenKind::identifier)) {
-    t.name = keep(tok().text);
+    t.name = keep(tok().text());
     t.name_range = tok().range();
     advance();
   }
@@ -83,7 +83,7 @@ bool Parser::parse_technique(ast::Technique& t) {
     }
     uint32_t depth = depth_;
     // `Pass` appears in the wild; only passes can start here, so case does not matter.
-    if (tok().is(TokenKind::identifier) && iequals(tok().text, "pass")) {
+    if (tok().is(TokenKind::identifier) && iequals(tok().text(), "pass")) {
       if (!parse_pass(t.passes.emplace_back(arena_))) t.passes.pop_back();  // in place, see parse_annotations
     } else {
       error_here("expected-pass",
@@ -101,7 +101,7 @@ bool Parser::parse_pass(ast::Pass& p) {
   uint32_t first = pos_;
   advance();  // pass
   if (at(TokenKind::identifier)) {
-    p.name = keep(tok().text);
+    p.name = keep(tok().text());
     p.name_range = tok().range();
     advance();
   }
@@ -144,7 +144,7 @@ bool Parser::parse_state(ast::StateAssignment& s) {
     error_here("expected-state", "expected a state assignment, found " + describe(tok()));
     return false;
   }
-  s.name = keep(tok().text);
+  s.name = keep(tok().text());
   s.name_range = tok().range();
   advance();
   if (at(TokenKind::l_paren)) {
@@ -186,7 +186,7 @@ void Parser::parse_group(std::vector<ast::Decl>& out) {
     error_here("expected-identifier", "expected a group name, found " + describe(tok()));
     return;
   }
-  g->name = keep(tok().text);
+  g->name = keep(tok().text());
   g->name_range = tok().range();
   advance();
   if (at(TokenKind::less) && !parse_annotations(g->annotations)) return;
@@ -203,7 +203,7 @@ void Parser::parse_group(std::vector<ast::Decl>& out) {
     }
     if (accept(TokenKind::semi)) continue;
     uint32_t depth = depth_;
-    std::string_view word = tok().is(TokenKind::identifier) ? tok().text : std::string_view();
+    std::string_view word = tok().is(TokenKind::identifier) ? tok().text() : std::string_view();
     if (word == "technique" || word == "technique10" || word == "technique11") {
       ast::Technique t;
       if (parse_technique(t)) g->techniques.push_back(arena_, t);

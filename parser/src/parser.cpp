@@ -37,7 +37,7 @@ std::string quote(std::string_view text) {
 }
 
 std::string describe(const Token& t) {
-  return t.is(TokenKind::eof) ? std::string("end of file") : quote(t.text);
+  return t.is(TokenKind::eof) ? std::string("end of file") : quote(t.text());
 }
 
 void append_spelling(std::string& out, const Token& t) {
@@ -45,10 +45,10 @@ void append_spelling(std::string& out, const Token& t) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
            c == '_' || c == '"' || c == '.';
   };
-  if (!out.empty() && !t.text.empty() && wordy(out.back()) && wordy(t.text.front()) &&
+  if (!out.empty() && !t.text().empty() && wordy(out.back()) && wordy(t.text().front()) &&
       t.leading_space())
     out.push_back(' ');
-  out.append(t.text);
+  out.append(t.text());
 }
 
 Parser::Parser(std::vector<Token> tokens, const SourceManager& sm, DiagnosticSink& diags,
@@ -92,16 +92,16 @@ bool Parser::missing_semi(std::string_view context) {
 
 void Parser::split_greater() {
   Token& t = tokens_[pos_];
-  if (t.kind == TokenKind::greater || t.text.size() < 2) return;
+  if (t.kind == TokenKind::greater || t.text().size() < 2) return;
   Token rest = t;
   rest.loc = t.loc.offset(1);
-  rest.text = t.text.substr(1);
+  rest.set_short_text(t.text().substr(1));
   rest.flags = 0;
   rest.kind = t.kind == TokenKind::greatergreater        ? TokenKind::greater
               : t.kind == TokenKind::greatergreaterequal ? TokenKind::greaterequal
                                                          : TokenKind::equal;
   t.kind = TokenKind::greater;
-  t.text = t.text.substr(0, 1);
+  t.set_short_text(t.text().substr(0, 1));
   // Only nested template arguments get here, so the O(n) insert stays rare. No span
   // handed out so far ends after pos_, so every stored index remains valid.
   tokens_.insert(tokens_.begin() + pos_ + 1, rest);
@@ -208,12 +208,12 @@ ast::Effect Parser::run() {
 
 void Parser::parse_profile_header() {
   // `fx.2.0` lexes as the identifier `fx` glued to the pp-number `.2.0`.
-  if (!tok().is(TokenKind::identifier) || !iequals(tok().text, "fx")) return;
+  if (!tok().is(TokenKind::identifier) || !iequals(tok().text(), "fx")) return;
   const Token& next = peek();
-  if (!next.is(TokenKind::floating) || next.leading_space() || next.text.front() != '.') return;
-  profile_header_.append(tok().text);
+  if (!next.is(TokenKind::floating) || next.leading_space() || next.text().front() != '.') return;
+  profile_header_.append(tok().text());
   advance();
-  while (!at_eof() && !tok().at_line_start()) profile_header_.append(advance().text);
+  while (!at_eof() && !tok().at_line_start()) profile_header_.append(advance().text());
 }
 
 void Parser::parse_top_level(std::vector<ast::Decl>& out) {
@@ -224,7 +224,7 @@ void Parser::parse_top_level(std::vector<ast::Decl>& out) {
       ast::Decl d;
       d.kind = ast::DeclKind::directive;
       d.directive = declarations_.make<ast::Directive>();
-      d.directive->text = keep(t.text);
+      d.directive->text = keep(t.text());
       d.directive->range = t.range();
       advance();
       d.directive->tokens = span_from(first);
@@ -245,7 +245,7 @@ void Parser::parse_top_level(std::vector<ast::Decl>& out) {
       error_here("expected-declaration", "expected a declaration, found " + describe(t));
       return;
   }
-  std::string_view word = t.text;
+  std::string_view word = t.text();
   if (word == "technique" || word == "technique10" || word == "technique11") {
     ast::Decl d;
     d.kind = ast::DeclKind::technique;
@@ -297,7 +297,7 @@ void Parser::parse_glsl_block(std::vector<ast::Decl>& out) {
   advance();  // GLSLShader
   ast::GlslBlock* block = declarations_.make<ast::GlslBlock>();
   if (at(TokenKind::identifier)) {
-    block->name = keep(tok().text);
+    block->name = keep(tok().text());
     block->name_range = tok().range();
     advance();
   }

@@ -19,7 +19,7 @@ bool Macro::same_definition(const Macro& o) const {
       body.size() != o.body.size())
     return false;
   for (size_t i = 0; i < body.size(); ++i) {
-    if (body[i].kind != o.body[i].kind || body[i].text != o.body[i].text) return false;
+    if (body[i].kind != o.body[i].kind || body[i].text() != o.body[i].text()) return false;
     // Whitespace between tokens matters (C 6.10.3p2), its amount does not.
     if (i > 0 && body[i].leading_space() != o.body[i].leading_space()) return false;
   }
@@ -34,12 +34,12 @@ std::unique_ptr<Macro> parse_macro_definition(std::span<const Token> line,
                 "macro name must be an identifier");
     return nullptr;
   }
-  if (line[0].text == "defined") {
+  if (line[0].text() == "defined") {
     diags.error("invalid-macro-name", line[0].range(), "'defined' cannot be used as a macro name");
     return nullptr;
   }
   auto m = std::make_unique<Macro>();
-  m->name = line[0].text;
+  m->name = line[0].text();
   m->name_loc = line[0].loc;
   size_t i = 1;
   // Function-like only when '(' touches the name: `#define F (x)` is object-like.
@@ -58,17 +58,17 @@ std::unique_ptr<Macro> parse_macro_definition(std::span<const Token> line,
         i += 3;
       } else if (line[i].is(TokenKind::identifier)) {
         for (std::string_view p : m->params)
-          if (p == line[i].text) {
+          if (p == line[i].text()) {
             diags.error("macro-definition", line[i].range(),
                         "duplicate macro parameter '" + std::string(p) + "'");
             return nullptr;
           }
-        if (line[i].text == "__VA_ARGS__") {
+        if (line[i].text() == "__VA_ARGS__") {
           diags.error("macro-definition", line[i].range(),
                       "__VA_ARGS__ can only appear in the body of a variadic macro");
           return nullptr;
         }
-        m->params.push_back(line[i].text);
+        m->params.push_back(line[i].text());
         ++i;
       } else {
         break;
@@ -95,8 +95,8 @@ std::unique_ptr<Macro> parse_macro_definition(std::span<const Token> line,
     int32_t param = -1;
     if (t.is(TokenKind::identifier)) {
       for (size_t p = 0; p < m->params.size(); ++p)
-        if (m->params[p] == t.text) param = static_cast<int32_t>(p);
-      if (param < 0 && t.text == "__VA_ARGS__") {
+        if (m->params[p] == t.text()) param = static_cast<int32_t>(p);
+      if (param < 0 && t.text() == "__VA_ARGS__") {
         diags.error("macro-definition", t.range(),
                     "__VA_ARGS__ can only appear in the body of a variadic macro");
         return nullptr;
@@ -122,7 +122,7 @@ std::unique_ptr<Macro> parse_macro_definition(std::span<const Token> line,
   }
   if (!body.empty()) {
     m->body_start = body.front().loc;
-    m->body_length = body.back().loc.raw + static_cast<uint32_t>(body.back().text.size()) -
+    m->body_length = body.back().loc.raw + static_cast<uint32_t>(body.back().text().size()) -
                      body.front().loc.raw;
   }
   return m;

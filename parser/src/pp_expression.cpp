@@ -48,7 +48,7 @@ class Evaluator {
     }
     Value v = comma(true);
     if (!failed_ && pos_ < t_.size()) {
-      error(t_[pos_].range(), "token '" + std::string(t_[pos_].text) +
+      error(t_[pos_].range(), "token '" + std::string(t_[pos_].text()) +
                                   "' is not a valid binary operator in a preprocessor expression");
     }
     return !failed_ && v.truth();
@@ -202,27 +202,27 @@ class Evaluator {
       }
       case TokenKind::integer: {
         std::string why;
-        std::optional<NumberValue> n = parse_number(t->text, &why);
+        std::optional<NumberValue> n = parse_number(t->text(), &why);
         if (!n) {
           error(t->range(), why);
           return {};
         }
         int64_t v = std::get<int64_t>(n->value);
-        bool u = v < 0 || t->text.find_first_of("uU") != std::string_view::npos;
+        bool u = v < 0 || t->text().find_first_of("uU") != std::string_view::npos;
         return {v, u};
       }
       case TokenKind::character: {
-        std::string c = unquote(t->text);
+        std::string c = unquote(t->text());
         return signed_value(c.empty() ? 0 : static_cast<unsigned char>(c[0]));
       }
       case TokenKind::identifier:
         // C: identifiers left after expansion are 0. HLSL is C++-like, so true/false count.
-        return signed_value(t->text == "true" ? 1 : 0);
+        return signed_value(t->text() == "true" ? 1 : 0);
       case TokenKind::floating:
         error(t->range(), "floating-point literal in preprocessor expression");
         return {};
       default:
-        error(t->range(), "unexpected '" + std::string(t->text) + "' in preprocessor expression");
+        error(t->range(), "unexpected '" + std::string(t->text()) + "' in preprocessor expression");
         return {};
     }
   }

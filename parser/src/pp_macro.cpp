@@ -30,7 +30,7 @@ Token scratch_token(SourceManager& sm, Budget& budget, TokenKind kind, std::stri
   t.kind = kind;
   t.flags = flags;
   t.loc = loc;
-  t.text = sm.text_at(at).substr(0, text.size());
+  t.set_text(sm.text_at(at).substr(0, text.size()), sm);
   return t;
 }
 
@@ -108,7 +108,7 @@ MacroEngine::Context& MacroEngine::push_context(Level& l, Macro* m) {
 
 void MacroEngine::paint(Token& t) const {
   if (disabled_ == 0 || t.kind != TokenKind::identifier || (t.flags & kNoExpand)) return;
-  if (Macro* m = macros_.find(t.text); m && m->disabled) t.flags |= kNoExpand;
+  if (Macro* m = macros_.find(t.text()); m && m->disabled) t.flags |= kNoExpand;
 }
 
 Token MacroEngine::next_raw(Level& l) {
@@ -140,7 +140,7 @@ Token MacroEngine::next() {
   // pushback exactly as if it had come from the files).
   if (l.pushback.empty() && l.active == 0 && files_ && !budget_.exhausted()) {
     Token t = files_->next_file_token();
-    if (t.kind != TokenKind::identifier || (t.flags & kNoExpand) || !macros_.find(t.text))
+    if (t.kind != TokenKind::identifier || (t.flags & kNoExpand) || !macros_.find(t.text()))
       return t;
     l.pushback.push_back(t);
   }
@@ -157,7 +157,7 @@ Token MacroEngine::next_expanded(Level& l) {
   for (;;) {
     Token t = next_raw(l);
     if (t.kind != TokenKind::identifier || (t.flags & kNoExpand)) return t;
-    Macro* m = macros_.find(t.text);
+    Macro* m = macros_.find(t.text());
     if (!m) return t;
     if (m->disabled) {
       t.flags |= kNoExpand;
@@ -295,7 +295,7 @@ std::span<const Token> MacroEngine::expanded_argument(Level& l, size_t i) {
   if (l.expanded_begin[i] == kNotExpanded) {
     bool any_macro = false;
     for (const Token& t : raw)
-      if (t.kind == TokenKind::identifier && !(t.flags & kNoExpand) && macros_.find(t.text)) {
+      if (t.kind == TokenKind::identifier && !(t.flags & kNoExpand) && macros_.find(t.text())) {
         any_macro = true;
         break;
       }
@@ -319,7 +319,7 @@ Token MacroEngine::stringize(std::span<const Token> arg, SourceLocation loc, uin
   for (size_t i = 0; i < arg.size(); ++i) {
     if (i > 0 && arg[i].leading_space()) scratch_.push_back(' ');
     bool quoted = arg[i].is(TokenKind::string) || arg[i].is(TokenKind::character);
-    for (char c : arg[i].text) {
+    for (char c : arg[i].text()) {
       if (quoted && (c == '"' || c == '\\')) scratch_.push_back('\\');
       scratch_.push_back(c);
     }
@@ -374,7 +374,7 @@ void MacroEngine::substitute(Level& l, const Token& name, Macro& m, SourceLocati
       size_t first = 0;
       if (paste) {
         Token& lhs = out.back();
-        scratch_.assign(lhs.text).append(toks[0].text);
+        scratch_.assign(lhs.text()).append(toks[0].text());
         if (std::optional<TokenKind> kind = classify_token(scratch_)) {
           lhs = scratch_token(sm_, budget_, *kind, scratch_, lhs.loc,
                               static_cast<uint8_t>(lhs.flags & ~kNoExpand));

@@ -107,7 +107,7 @@ Token number_token(std::string_view text, SourceLocation loc) {
   Token t;
   t.kind = TokenKind::integer;
   t.loc = loc;
-  t.text = text;
+  t.set_short_text(text);
   return t;
 }
 }  // namespace
@@ -201,7 +201,7 @@ std::optional<Token> Preprocessor::Impl::directive(Frame& f, const Token& hash) 
   if (f.lexer.at_line_end()) return std::nullopt;  // the null directive: a lone '#'
   Token name = f.lexer.next();
   forward(f, true);
-  std::string_view n = name.is(TokenKind::identifier) ? name.text : std::string_view();
+  std::string_view n = name.is(TokenKind::identifier) ? name.text() : std::string_view();
   if (name.is(TokenKind::integer)) {
     // GNU line marker `# 12 "file"`, as other preprocessors write it.
     line_directive(f, name);
@@ -222,7 +222,7 @@ std::optional<Token> Preprocessor::Impl::directive(Frame& f, const Token& hash) 
     }
     if (line_.size() > 1)
       diags_.warning("extra-tokens", line_[1].range(), "extra tokens at end of #" + std::string(n));
-    bool defined = macros_.find(line_[0].text) != nullptr;
+    bool defined = macros_.find(line_[0].text()) != nullptr;
     open_conditional(f, hash, n == "ifdef" ? defined : !defined);
   } else if (n == "elif" || n == "else") {
     // Reached from an emitted group: the chain is decided, skip to its #endif.
@@ -253,17 +253,17 @@ std::optional<Token> Preprocessor::Impl::directive(Frame& f, const Token& hash) 
     return kept_directive(f, hash, name);
   } else {
     diags_.error("unknown-directive", {hash.loc, name.range().end},
-                 "unknown preprocessing directive '#" + std::string(name.text) + "'");
+                 "unknown preprocessing directive '#" + std::string(name.text()) + "'");
     skip_line(f);
   }
   return std::nullopt;
 }
 
 Token Preprocessor::Impl::kept_directive(Frame& f, const Token& hash, const Token& name) {
-  text_.assign("#").append(name.text);
+  text_.assign("#").append(name.text());
   for (size_t i = 0; i < line_.size(); ++i) {
     if (i == 0 || line_[i].leading_space()) text_.push_back(' ');
-    text_.append(line_[i].text);
+    text_.append(line_[i].text());
   }
   return pp::scratch_token(sm_, budget_, TokenKind::directive, text_, hash.loc, hash.flags);
 }
@@ -293,10 +293,10 @@ void Preprocessor::Impl::undefine(Frame& f) {
     return;
   }
   if (line_.size() > 1) diags_.warning("extra-tokens", line_[1].range(), "extra tokens at end of #undef");
-  if (Macro* m = macros_.find(line_[0].text); m && m->builtin != pp::Builtin::none)
+  if (Macro* m = macros_.find(line_[0].text()); m && m->builtin != pp::Builtin::none)
     diags_.warning("builtin-macro-redefined", line_[0].range(),
                    "undefining builtin macro '" + std::string(m->name) + "'");
-  macros_.undefine(line_[0].text);
+  macros_.undefine(line_[0].text());
 }
 
 void Preprocessor::Impl::include(Frame& f, const Token& hash) {
@@ -308,7 +308,7 @@ void Preprocessor::Impl::include(Frame& f, const Token& hash) {
   size_t extra = 0;
   if (header) {
     read_line(f);
-    name = header->text.substr(1, header->text.size() - 2);
+    name = header->text().substr(1, header->text().size() - 2);
     angled = true;
     spelled = header->range();
   } else {
@@ -322,14 +322,14 @@ void Preprocessor::Impl::include(Frame& f, const Token& hash) {
     }
     if (!toks->empty() && (*toks)[0].is(TokenKind::string)) {
       // No escape processing: `"shaders\common.fxh"` is a Windows path, not an escape.
-      name = (*toks)[0].text.substr(1, (*toks)[0].text.size() - 2);
+      name = (*toks)[0].text().substr(1, (*toks)[0].text().size() - 2);
       spelled = (*toks)[0].range();
       extra = 1;
     } else if (!toks->empty() && (*toks)[0].is(TokenKind::less)) {
       size_t i = 1;
       for (; i < toks->size() && !(*toks)[i].is(TokenKind::greater); ++i) {
         if (i > 1 && (*toks)[i].leading_space()) name.push_back(' ');
-        name.append((*toks)[i].text);
+        name.append((*toks)[i].text());
       }
       if (i == toks->size()) name.clear();
       angled = true;
@@ -389,16 +389,16 @@ void Preprocessor::Impl::line_directive(Frame& f, const Token& name) {
   auto digits = [](std::string_view s) {
     return !s.empty() && s.find_first_not_of("0123456789") == std::string_view::npos;
   };
-  if (expanded_.empty() || !digits(expanded_[0].text) || expanded_[0].text.size() > 9 ||
+  if (expanded_.empty() || !digits(expanded_[0].text()) || expanded_[0].text().size() > 9 ||
       (expanded_.size() > 1 && !expanded_[1].is(TokenKind::string))) {
     diags_.error("invalid-directive", expanded_.empty() ? name.range() : expanded_[0].range(),
                  "#line expects a line number and an optional \"file name\"");
     return;
   }
-  uint32_t line = static_cast<uint32_t>(std::stoul(std::string(expanded_[0].text)));
-  std::string file = expanded_.size() > 1 ? unquote(expanded_[1].text) : "";
+  uint32_t line = static_cast<uint32_t>(std::stoul(std::string(expanded_[0].text())));
+  std::string file = expanded_.size() > 1 ? unquote(expanded_[1].text()) : "";
   std::string_view text = sm_.buffer_text(f.buffer);
-  size_t newline = text.find('\n', sm_.offset_in_buffer(last.loc) + last.text.size());
+  size_t newline = text.find('\n', sm_.offset_in_buffer(last.loc) + last.text().size());
   if (newline == std::string_view::npos) return;  // nothing follows to renumber
   sm_.add_line_directive(sm_.location(f.buffer, static_cast<uint32_t>(newline + 1)), line,
                          std::move(file));
@@ -412,9 +412,9 @@ void Preprocessor::Impl::message_directive(Frame& f, const Token& hash, const To
   while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
   while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t' || rest.back() == '\r'))
     rest.remove_suffix(1);
-  std::string message = rest.empty() ? "#" + std::string(name.text) : std::string(rest);
+  std::string message = rest.empty() ? "#" + std::string(name.text()) : std::string(rest);
   SourceRange range{hash.loc, name.range().end};
-  if (name.text == "error") diags_.error("error-directive", range, std::move(message));
+  if (name.text() == "error") diags_.error("error-directive", range, std::move(message));
   else diags_.warning("warning-directive", range, std::move(message));
 }
 
@@ -434,7 +434,7 @@ bool Preprocessor::Impl::condition(Frame& f, const Token& name) {
       diags_.error("pp-expression", line_[i].range(), "macro name missing after 'defined'");
       return false;
     }
-    work_.push_back(number_token(macros_.find(line_[id].text) ? "1" : "0", line_[i].loc));
+    work_.push_back(number_token(macros_.find(line_[id].text()) ? "1" : "0", line_[i].loc));
     i = id + (paren ? 1 : 0);
   }
   expanded_.clear();
@@ -451,8 +451,8 @@ void Preprocessor::Impl::open_conditional(Frame& f, const Token& hash, bool valu
 Preprocessor::Impl::Conditional* Preprocessor::Impl::current_conditional(Frame& f,
                                                                          const Token& name) {
   if (conditionals_.size() > f.conditional_base) return &conditionals_.back();
-  diags_.error(name.text == "endif" ? "unmatched-endif" : "unmatched-conditional", name.range(),
-               "#" + std::string(name.text) + " without #if");
+  diags_.error(name.text() == "endif" ? "unmatched-endif" : "unmatched-conditional", name.range(),
+               "#" + std::string(name.text()) + " without #if");
   return nullptr;
 }
 
@@ -468,7 +468,7 @@ void Preprocessor::Impl::skip_group(Frame& f) {
     if (!t.is(TokenKind::hash) || !t.at_line_start() || f.lexer.at_line_end()) continue;
     Token name = f.lexer.next();
     forward(f, false);
-    std::string_view n = name.is(TokenKind::identifier) ? name.text : std::string_view();
+    std::string_view n = name.is(TokenKind::identifier) ? name.text() : std::string_view();
     if (n == "if" || n == "ifdef" || n == "ifndef") {
       ++nested;
     } else if (n == "endif") {
@@ -561,7 +561,7 @@ bool Preprocessor::Impl::run(const std::string& name, std::optional<std::string>
     if (engine_.idle() && !budget_.exhausted()) {
       // MacroEngine::next's hot path, with the file read inlined here.
       t = next_file_token();
-      if (t.kind == TokenKind::identifier && !(t.flags & kNoExpand) && macros_.find(t.text))
+      if (t.kind == TokenKind::identifier && !(t.flags & kNoExpand) && macros_.find(t.text()))
         t = engine_.expand_file_token(t);
     } else {
       t = engine_.next();

@@ -81,14 +81,14 @@ void ShaderTextWriter::token(const Token& t) {
   if (p.valid() && column_ < p.column && !directive) {
     out_.append(p.column - column_, ' ');
     column_ = p.column;
-  } else if (column_ > 1 && (t.leading_space() || (is_word_char(last_) && !t.text.empty() &&
-                                                   is_word_char(t.text.front())))) {
+  } else if (column_ > 1 && (t.leading_space() || (is_word_char(last_) && !t.text().empty() &&
+                                                   is_word_char(t.text().front())))) {
     out_.push_back(' ');
     ++column_;
   }
-  out_.append(t.text);
-  column_ += static_cast<uint32_t>(t.text.size());
-  if (!t.text.empty()) last_ = t.text.back();
+  out_.append(t.text());
+  column_ += static_cast<uint32_t>(t.text().size());
+  if (!t.text().empty()) last_ = t.text().back();
   if (directive) {
     out_.push_back('\n');
     column_ = 1;

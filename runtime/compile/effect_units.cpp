@@ -130,10 +130,10 @@ std::string join_tokens(const std::vector<Token>& toks, ast::TokenSpan span) {
   for (uint32_t i = span.first; i < span.last && i < toks.size(); ++i) {
     const Token& t = toks[i];
     if (!out.empty() && (t.leading_space() || (std::isalnum(static_cast<unsigned char>(out.back())) &&
-                                               !t.text.empty() &&
-                                               std::isalnum(static_cast<unsigned char>(t.text[0])))))
+                                               !t.text().empty() &&
+                                               std::isalnum(static_cast<unsigned char>(t.text()[0])))))
       out.push_back(' ');
-    out.append(t.text);
+    out.append(t.text());
   }
   return out;
 }
@@ -262,7 +262,7 @@ class EffectUnitBuilder {
       if (!in_init && t.is(TokenKind::equal)) {
         const Token* next = i + 1 < span.last ? &toks_[i + 1] : nullptr;
         if (next && next->is(TokenKind::identifier) &&
-            (iequals(next->text, "sampler_state") || iequals(next->text, "stateblock_state"))) {
+            (iequals(next->text(), "sampler_state") || iequals(next->text(), "stateblock_state"))) {
           uint32_t open = i + 2;
           i = open < span.last && toks_[open].is(TokenKind::l_brace) ? matching_close(open, span.last) : i + 1;
           continue;
@@ -314,20 +314,20 @@ class EffectUnitBuilder {
       text.name = b.name;
       ast::TokenSpan code = b.code;
       if (!code.empty() && toks_[code.first].is(TokenKind::directive) &&
-          toks_[code.first].text.rfind("#version", 0) == 0) {
-        text.version = std::string(toks_[code.first].text);
+          toks_[code.first].text().rfind("#version", 0) == 0) {
+        text.version = std::string(toks_[code.first].text());
         ++code.first;
       } else if (code.last - code.first >= 3 && toks_[code.first].is(TokenKind::hash) &&
                  toks_[code.first + 1].is_identifier("version") &&
                  toks_[code.first + 2].is(TokenKind::integer)) {
         // `GLSLShader X { #version 450` : not at a line start, so the preprocessor left it as
         // tokens; a profile word (`core`, `es`) may follow on the same line.
-        text.version = "#version " + std::string(toks_[code.first + 2].text);
+        text.version = "#version " + std::string(toks_[code.first + 2].text());
         code.first += 3;
         PresumedLocation at = sm_.presumed(toks_[code.first - 1].loc);
         while (code.first < code.last && toks_[code.first].is(TokenKind::identifier) &&
                sm_.presumed(toks_[code.first].loc).line == at.line)
-          text.version += " " + std::string(toks_[code.first++].text);
+          text.version += " " + std::string(toks_[code.first++].text());
       }
       detail::ShaderTextWriter w(sm_);
       emit_tokens(w, code);

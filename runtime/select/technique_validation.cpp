@@ -42,7 +42,7 @@ std::string first_line(const ast::Effect& effect, ast::TokenSpan span) {
   for (uint32_t i = span.first; i < span.last && i < effect.tokens.size(); ++i) {
     const Token& t = effect.tokens[i];
     if (i != span.first && t.at_line_start()) break;
-    out += t.text;
+    out += t.text();
   }
   return out;
 }
@@ -123,7 +123,7 @@ class TechniqueValidator {
         if (d.kind != ast::DeclKind::glsl_block || d.glsl_block->name != name) continue;
         const ast::TokenSpan code = d.glsl_block->code;
         for (uint32_t i = code.first; i < code.last && i < model_.ast->tokens.size(); ++i) {
-          std::string_view t = model_.ast->tokens[i].text;
+          std::string_view t = model_.ast->tokens[i].text();
           if (model_.ast->tokens[i].kind != TokenKind::directive || t.find("version") == std::string_view::npos)
             continue;
           size_t digit = t.find_first_of("0123456789");
@@ -174,10 +174,11 @@ class TechniqueValidator {
   void count_texture_registers(const ShaderBinding& b) {
     for (uint32_t i = b.asm_code.first; i < b.asm_code.last && i < model_.ast->tokens.size(); ++i) {
       const Token& t = model_.ast->tokens[i];
-      if (t.kind != TokenKind::identifier || t.text.size() < 2 || t.text[0] != 't') continue;
+      std::string_view word = t.text();
+      if (t.kind != TokenKind::identifier || word.size() < 2 || word[0] != 't') continue;
       uint32_t n = 0;
-      auto [end, ec] = std::from_chars(t.text.data() + 1, t.text.data() + t.text.size(), n);
-      if (ec != std::errc() || end != t.text.data() + t.text.size() || n >= 16) continue;
+      auto [end, ec] = std::from_chars(word.data() + 1, word.data() + word.size(), n);
+      if (ec != std::errc() || end != word.data() + word.size() || n >= 16) continue;
       note_texture_stage(n, b.range);
     }
   }

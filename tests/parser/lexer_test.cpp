@@ -22,7 +22,7 @@ struct Lexed {
   }
   std::vector<std::string> spellings() const {
     std::vector<std::string> s;
-    for (const Token& t : tokens) s.emplace_back(t.text);
+    for (const Token& t : tokens) s.emplace_back(t.text());
     return s;
   }
   std::vector<TokenKind> kinds() const {
@@ -90,11 +90,11 @@ TEST(Lexer, StringsAndCharacters) {
   Lexed l(R"("a \"quoted\" \\ word" 'x' '\n' "")");
   ASSERT_EQ(l.tokens.size(), 4u);
   EXPECT_EQ(l.tokens[0].kind, K::string);
-  EXPECT_EQ(l.tokens[0].text, R"("a \"quoted\" \\ word")");
-  EXPECT_EQ(unquote(l.tokens[0].text), R"(a "quoted" \ word)");
+  EXPECT_EQ(l.tokens[0].text(), R"("a \"quoted\" \\ word")");
+  EXPECT_EQ(unquote(l.tokens[0].text()), R"(a "quoted" \ word)");
   EXPECT_EQ(l.tokens[1].kind, K::character);
-  EXPECT_EQ(unquote(l.tokens[2].text), "\n");
-  EXPECT_EQ(l.tokens[3].text, "\"\"");
+  EXPECT_EQ(unquote(l.tokens[2].text()), "\n");
+  EXPECT_EQ(l.tokens[3].text(), "\"\"");
   EXPECT_TRUE(l.diags.diagnostics().empty());
 }
 
@@ -158,7 +158,7 @@ TEST(Lexer, UnterminatedStringStopsAtEndOfLine) {
 TEST(Lexer, UnknownCharacterIsOneDiagnosticPerUtf8Sequence) {
   Lexed l("a \xC3\xA9 $ b");
   EXPECT_EQ(l.kinds(), (std::vector<K>{K::identifier, K::unknown, K::unknown, K::identifier}));
-  EXPECT_EQ(l.tokens[1].text, "\xC3\xA9");
+  EXPECT_EQ(l.tokens[1].text(), "\xC3\xA9");
   EXPECT_EQ(l.diags.error_count(), 2u);
   EXPECT_EQ(l.diags.diagnostics()[0].id, "unknown-character");
 }
@@ -183,7 +183,7 @@ TEST(Lexer, HeaderNameOnlyOnTheSameLine) {
   lexer.next();
   std::optional<Token> h = lexer.header_name();
   ASSERT_TRUE(h);
-  EXPECT_EQ(h->text, "<a/b.fxh>");
+  EXPECT_EQ(h->text(), "<a/b.fxh>");
   EXPECT_FALSE(lexer.at_line_end());
   EXPECT_TRUE(lexer.next().is_identifier("x"));
   EXPECT_TRUE(lexer.at_line_end());
@@ -244,8 +244,8 @@ TEST(Lexer, BatchesYieldTheTokensOfNext) {
         size_t n = batched.next_batch(batch, max, filter);
         ASSERT_GE(n, 1u);
         for (size_t i = 0; filter && i + 1 < n; ++i)
-          EXPECT_FALSE(batch[i].is(K::identifier) && filter->may_contain(batch[i].text))
-              << batch[i].text;
+          EXPECT_FALSE(batch[i].is(K::identifier) && filter->may_contain(batch[i].text()))
+              << batch[i].text();
         got.insert(got.end(), batch, batch + n);
       }
       ASSERT_EQ(got.size(), expected.size()) << text;
@@ -253,7 +253,7 @@ TEST(Lexer, BatchesYieldTheTokensOfNext) {
         EXPECT_EQ(got[i].kind, expected[i].kind) << text << " token " << i;
         EXPECT_EQ(got[i].flags, expected[i].flags) << text << " token " << i;
         EXPECT_EQ(got[i].loc, expected[i].loc) << text << " token " << i;
-        EXPECT_EQ(got[i].text, expected[i].text) << text << " token " << i;
+        EXPECT_EQ(got[i].text(), expected[i].text()) << text << " token " << i;
       }
       ASSERT_EQ(diags.diagnostics().size(), one_diags.diagnostics().size()) << text;
       for (size_t i = 0; i < diags.diagnostics().size(); ++i) {

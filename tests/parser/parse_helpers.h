@@ -22,7 +22,7 @@ struct Parsed {
     std::string out;
     for (uint32_t i = span.first; i < span.last; ++i) {
       if (!out.empty()) out += ' ';
-      out += effect.tokens.at(i).text;
+      out += effect.tokens.at(i).text();
     }
     return out;
   }

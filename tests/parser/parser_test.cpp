@@ -359,7 +359,7 @@ TEST(Parser, ProfileHeaderAndDirectives) {
   Token directive;
   directive.kind = TokenKind::directive;
   directive.loc = sm.location(b, 0);
-  directive.text = sm.buffer_text(b).substr(0, 30);
+  directive.set_short_text(sm.buffer_text(b).substr(0, 30));
   tokens.push_back(directive);
   Lexer lexer(sm, b, diags);
   lexer.rest_of_line();

@@ -57,7 +57,7 @@ struct Pp {
     for (const Token& t : ts) {
       if (t.is(TokenKind::eof)) break;
       if (!s.empty()) s.push_back(' ');
-      s.append(t.text);
+      s.append(t.text());
     }
     return s;
   }
