@@ -1,6 +1,9 @@
 // `fxkit bench MODE`: benchmarks that measure fxkit against a baseline in the same run and
 // print both and their ratio.
 #pragma once
+#include <algorithm>
+#include <vector>
+
 #include "command.h"
 
 namespace fxkit {
@@ -14,6 +17,13 @@ struct BenchArgs {
   std::string fxh;  // accuracy: write technique cost/error annotations here
   int processes = 1;  // > 1: the benchmark in that many fresh processes, median ratio
 };
+
+// The middle sample after sorting (the upper of the two for an even count); 0 for none.
+inline double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
 
 int bench_frontend(const BenchArgs& args);
 // `fxkit bench compile`: effect load time by phase, overhead vs glslang, cached reload.

@@ -56,7 +56,8 @@ VkShaderModule module_from(VkDevice device, const fx::CompiledShader& s) {
   return m;
 }
 
-double median(std::vector<double> v) {
+// The mean of the middle two samples for an even count.
+double interpolated_median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
@@ -269,7 +270,7 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
   }
   if (ok) {
     for (size_t i = 0; i < objects.size(); ++i) {
-      GpuTiming t{kernels[i].id, median(ms[i])};
+      GpuTiming t{kernels[i].id, interpolated_median(ms[i])};
       run.timings.push_back(t);
     }
     for (size_t i = 0; i < objects.size(); ++i) {

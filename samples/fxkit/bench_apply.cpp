@@ -64,11 +64,6 @@ struct RawPass {
 // The parameter a reflected member path ("light.dir", "bones[3]") starts with.
 std::string_view root_name(std::string_view path) { return path.substr(0, path.find_first_of(".[")); }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
 void report(const fx::DiagnosticSink& sink) {
   for (const fx::Diagnostic& d : sink.diagnostics()) std::fprintf(stderr, "fxkit bench apply: %s [%s]\n", d.message.c_str(), d.id.c_str());
 }

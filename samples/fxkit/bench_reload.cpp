@@ -37,11 +37,6 @@ struct Sample {
   fx::ReloadTimings ms;      // first_frame filled in here: the render thread draws it
 };
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 double maximum(const std::vector<double>& v) { return v.empty() ? 0 : *std::max_element(v.begin(), v.end()); }
 
 std::string read(const fs::path& p) {
