@@ -15,7 +15,7 @@ struct GpuKernel {
   std::string id;        // "strand_lut/dot/unorm8/s256"
   std::string vs;        // HLSL vertex shader body; empty = full-screen triangle
   std::string ps;        // HLSL pixel shader (entry PS)
-  fx::shading::Table table;  // bound at t0 (a 2x2 dummy when empty)
+  fx::shading::Table table = {};  // bound at t0 (a 2x2 dummy when empty)
   bool wrap = false;     // sampler address mode (clamp otherwise)
   int grid_px = 0;       // >0: draw a grid of cells this many pixels wide instead
   std::string baseline = "empty";  // kernel whose time is subtracted
