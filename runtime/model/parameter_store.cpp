@@ -182,21 +182,16 @@ ParamStatus ParameterStore::set(Param p, std::span<const int32_t> v) {
 
 bool ParameterStore::set_matrix_fast(Param p, const float* v, size_t count, HostMatrixOrder order) {
   Impl& s = *impl_;
-  if (p.generation != s.draw.generation) return false;
-  return s.store_matrix(p.index, v, count, order == HostMatrixOrder::column_major);
-}
-
-bool ParameterStore::Impl::store_matrix(uint32_t i, const float* v, size_t count, bool columns) {
-  if (i >= nodes.size()) return false;
-  const Node& n = nodes[i];
+  if (p.generation != s.draw.generation || p.index >= s.nodes.size()) return false;
+  const Impl::Node& n = s.nodes[p.index];
   if (n.type.cls != TypeClass::matrix || !n.all_float || count != n.words) return false;
-  sync(n.top);
-  if (!columns) {
-    store_floats(n, v);
+  s.sync(n.top);
+  if (order == HostMatrixOrder::row_major) {
+    s.store_floats(n, v);
     return true;
   }
   if (count != 16 || n.type.rows != 4 || n.type.cols != 4) return false;  // arrays, other shapes: the checked path
-  store_columns4x4(n, v);
+  s.store_columns4x4(n, v);
   return true;
 }
 

@@ -141,10 +141,6 @@ struct ParameterStore::Impl {
     if (draw.hot[top].stale) [[unlikely]] sync_words(top);
   }
   [[gnu::noinline]] void sync_words(uint32_t top) const;
-  // set_matrix's path for a current handle `i` without a hot block: into the words when the
-  // floats fit the node as they are; false sends the call to the checked path. Out of line,
-  // so the per-object path keeps no stack frame.
-  [[gnu::noinline]] bool store_matrix(uint32_t i, const float* v, size_t count, bool columns);
   void sync_all() const {
     for (uint32_t top = 0; top < top_count; ++top) sync(top);
   }
@@ -264,9 +260,8 @@ struct ParameterStore::Impl {
   void store_floats(const Node& n, const float* v) {
     if (copy_words(data(n), v, n.words)) touch(n);
   }
-  // store_floats for one 4x4 matrix given column by column. Out of line, so set_matrix's
-  // per-object path keeps no stack frame for the transposed copy.
-  [[gnu::noinline]] void store_columns4x4(const Node& n, const float* v) {
+  // store_floats for one 4x4 matrix given column by column.
+  void store_columns4x4(const Node& n, const float* v) {
     float rows[16];
     transpose4x4(v, rows);
     store_floats(n, rows);

@@ -172,7 +172,9 @@ class ParameterStore {
   // set_matrix's per-object path, inline: a current handle of a float4x4 with a hot block
   // (below), 16 floats. True when it stored the value (nothing to report).
   bool store_hot(Param p, std::span<const float> v, HostMatrixOrder order);
-  // The other matrices set_matrix can store as given (nothing to report), out of line.
+  // set_matrix's out-of-line path for a current handle without a hot block (or whose hot
+  // block missed a change): into the words when the floats fit the node as they are; false
+  // sends the call to the checked path.
   bool set_matrix_fast(Param p, const float* v, size_t count, HostMatrixOrder order);
   // Everything else, with the status that says what is wrong.
   ParamStatus set_matrix_checked(Param p, std::span<const float> v, HostMatrixOrder order);
