@@ -1,6 +1,7 @@
 // Tokens of the effect language (HLSL tokens plus the preprocessor's), as the lexer and
 // preprocessor produce them and the parser consumes them.
 #pragma once
+#include <cassert>
 #include <cstdint>
 #include <string_view>
 #include <type_traits>
@@ -71,6 +72,7 @@ struct Token {
   // The same for a spelling shorter than kLongText, such as a punctuator's or a part of
   // one, which needs no SourceManager.
   void set_short_text(std::string_view text) {
+    assert(text.size() < kLongText && "a long spelling needs set_text and the SourceManager");
     text_.data = text.data();
     text_size_ = static_cast<uint16_t>(text.size());
   }

@@ -232,14 +232,15 @@ ast::ExprPtr Parser::parse_primary() {
       auto e = make(t.is(TokenKind::integer) ? ast::ExprKind::int_literal
                                              : ast::ExprKind::float_literal,
                     first);
-      e->text = keep(t.text());
-      bool fast = t.is(TokenKind::integer) ? decimal_value(t.text(), e->number)
-                                           : simple_float_value(t.text(), e->number);
+      const std::string_view spelling = t.text();
+      e->text = keep(spelling);
+      bool fast = t.is(TokenKind::integer) ? decimal_value(spelling, e->number)
+                                           : simple_float_value(spelling, e->number);
       if (!fast) {
         std::string why;
-        std::optional<NumberValue> value = parse_number(t.text(), &why);
+        std::optional<NumberValue> value = parse_number(spelling, &why);
         if (!value) {
-          error_here("invalid-number", why + " " + quote(t.text()));
+          error_here("invalid-number", why + " " + quote(spelling));
           return nullptr;
         }
         e->number = value->as_double();

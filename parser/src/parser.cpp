@@ -45,10 +45,10 @@ void append_spelling(std::string& out, const Token& t) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
            c == '_' || c == '"' || c == '.';
   };
-  if (!out.empty() && !t.text().empty() && wordy(out.back()) && wordy(t.text().front()) &&
-      t.leading_space())
+  const std::string_view spelling = t.text();
+  if (!out.empty() && !spelling.empty() && wordy(out.back()) && wordy(spelling.front()) && t.leading_space())
     out.push_back(' ');
-  out.append(t.text());
+  out.append(spelling);
 }
 
 Parser::Parser(std::vector<Token> tokens, const SourceManager& sm, DiagnosticSink& diags,
