@@ -189,8 +189,8 @@ void Checker::collect_symbols() {
       case ast::DeclKind::function:
         functions_.emplace_back(d.function->name, d.function);
         break;
-      case ast::DeclKind::technique: ++techniques_; break;
-      case ast::DeclKind::group: techniques_ += d.group->techniques.size(); break;
+      case ast::DeclKind::technique: has_technique_ = true; break;
+      case ast::DeclKind::group: has_technique_ |= !d.group->techniques.empty(); break;
       default: break;
     }
   }
@@ -232,54 +232,55 @@ void Checker::check_functions() {
 
 void Checker::check_profile_rules() {
   // Only a given profile can be too old for a construct here (see profile_).
-  if (profile_) {
-    const EffectProfile profile = *profile_;
-    auto require = [&](EffectProfile needed, SourceRange range, std::string_view what) {
-      if (profile >= needed) return;
-      diags_.error("profile-mismatch", range,
-                   std::string(what) + " needs effect profile " + std::string(to_string(needed)) +
-                       " or later; the effect is " + std::string(to_string(profile)));
-    };
-    auto technique = [&](const ast::Technique& t) {
-      SourceRange at = t.name_range.valid() ? t.name_range : t.range;
-      if (t.version == 11) require(EffectProfile::fx_5_0, at, "technique11");
-      if (t.version == 10) require(EffectProfile::fx_4_0, at, "technique10");
-      // An inferred profile comes from the newest forms in the file; D3D9 techniques beside
-      // them mean the file targets both runtimes (as SDK samples did), which is no mistake.
-      bool explicit_profile = options_.profile != EffectProfile::automatic;
-      if (t.version == 9 && profile >= EffectProfile::fx_4_0 && explicit_profile)
-        diags_.warning("d3d9-technique", at,
-                       "a Direct3D 9 'technique' in an " + std::string(to_string(profile)) +
-                           " effect; use technique" +
-                           (profile == EffectProfile::fx_5_0 ? "11" : "10"));
-    };
-    for (const ast::Decl& d : effect_.decls) {
-      switch (d.kind) {
-        case ast::DeclKind::technique: technique(*d.technique); break;
-        case ast::DeclKind::group:
-          require(EffectProfile::fx_5_0, d.group->name_range, "fxgroup");
-          for (const ast::Technique& t : d.group->techniques) technique(t);
-          break;
-        case ast::DeclKind::state_object:
-          require(EffectProfile::fx_4_0, d.state_object->name_range.valid()
-                                             ? d.state_object->name_range
-                                             : d.state_object->range,
-                  d.state_object->kind);
-          break;
-        case ast::DeclKind::constant_buffer:
-          require(EffectProfile::fx_4_0, d.constant_buffer->range,
-                  d.constant_buffer->texture_buffer ? "tbuffer" : "cbuffer");
-          break;
-        default: break;
-      }
-    }
-  }
-  if (techniques_ == 0 && options_.require_technique) {
+  if (profile_) check_against_profile(*profile_);
+  if (!has_technique_ && options_.require_technique) {
     SourceRange at;
     if (!effect_.tokens.empty()) at = effect_.tokens.front().range();
     // D3DX creates such effects (shader libraries, parameter pools); warn, do not fail.
     diags_.warning("no-technique", at,
                    "the effect defines no technique, so it has nothing to apply");
+  }
+}
+
+void Checker::check_against_profile(EffectProfile profile) {
+  auto require = [&](EffectProfile needed, SourceRange range, std::string_view what) {
+    if (profile >= needed) return;
+    diags_.error("profile-mismatch", range,
+                 std::string(what) + " needs effect profile " + std::string(to_string(needed)) +
+                     " or later; the effect is " + std::string(to_string(profile)));
+  };
+  auto technique = [&](const ast::Technique& t) {
+    SourceRange at = t.name_range.valid() ? t.name_range : t.range;
+    if (t.version == 11) require(EffectProfile::fx_5_0, at, "technique11");
+    if (t.version == 10) require(EffectProfile::fx_4_0, at, "technique10");
+    // An inferred profile comes from the newest forms in the file; D3D9 techniques beside
+    // them mean the file targets both runtimes (as SDK samples did), which is no mistake.
+    bool explicit_profile = options_.profile != EffectProfile::automatic;
+    if (t.version == 9 && profile >= EffectProfile::fx_4_0 && explicit_profile)
+      diags_.warning("d3d9-technique", at,
+                     "a Direct3D 9 'technique' in an " + std::string(to_string(profile)) +
+                         " effect; use technique" +
+                         (profile == EffectProfile::fx_5_0 ? "11" : "10"));
+  };
+  for (const ast::Decl& d : effect_.decls) {
+    switch (d.kind) {
+      case ast::DeclKind::technique: technique(*d.technique); break;
+      case ast::DeclKind::group:
+        require(EffectProfile::fx_5_0, d.group->name_range, "fxgroup");
+        for (const ast::Technique& t : d.group->techniques) technique(t);
+        break;
+      case ast::DeclKind::state_object:
+        require(EffectProfile::fx_4_0, d.state_object->name_range.valid()
+                                           ? d.state_object->name_range
+                                           : d.state_object->range,
+                d.state_object->kind);
+        break;
+      case ast::DeclKind::constant_buffer:
+        require(EffectProfile::fx_4_0, d.constant_buffer->range,
+                d.constant_buffer->texture_buffer ? "tbuffer" : "cbuffer");
+        break;
+      default: break;
+    }
   }
 }
 

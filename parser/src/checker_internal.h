@@ -93,6 +93,7 @@ class Checker {
   void define(std::string_view name, SourceRange range, Symbol symbol, std::string_view what);
   void check_functions();
   void check_profile_rules();
+  void check_against_profile(EffectProfile profile);
   void check_annotations(const ast::List<ast::Annotation>& annotations);
   void check_variable(const ast::Variable& v);
   void check_technique(const ast::Technique& t);
@@ -132,7 +133,7 @@ class Checker {
   // and technique pass state needs, since inference reads exactly those: none of them can
   // mismatch it, so most effects never need it, and its walk over every pass is saved.
   mutable std::optional<EffectProfile> profile_;
-  size_t techniques_ = 0;  // in the effect, fxgroups' included
+  bool has_technique_ = false;  // in the effect or one of its fxgroups
   // Keys view names owned by the effect, which outlives the checker.
   NameTable<Symbol> globals_;
   // Every function by name, overloads in source order (sorted once collected).

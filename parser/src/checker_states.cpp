@@ -18,6 +18,11 @@ bool is_object_type(StateValueType t) {
   return t == StateValueType::texture || t == StateValueType::sampler ||
          t == StateValueType::shader || t == StateValueType::state_object;
 }
+// A state whose values have names: its enumeration's, or TRUE/FALSE for a boolean (the
+// sets find_enum and enum_names read).
+bool takes_value_names(const StateInfo& info) {
+  return info.enums || info.type == StateValueType::boolean;
+}
 bool takes_vector(StateValueType t) {
   return t == StateValueType::color || t == StateValueType::float4 ||
          t == StateValueType::matrix || t == StateValueType::shader_constant;
@@ -384,7 +389,8 @@ void Checker::check_leaf(const StateInfo& info, const ast::Expr& e) {
 
 void Checker::check_name(const StateInfo& info, const ast::Expr& e) {
   StateValueType t = info.type;
-  if ((info.enums || t == StateValueType::boolean) && find_enum(info, e.text)) return;
+  const bool named_values = takes_value_names(info);
+  if (named_values && find_enum(info, e.text)) return;
   if (const Symbol* s = lookup(e.text)) {
     check_symbol_type(info, *s, e);
     return;
@@ -392,7 +398,7 @@ void Checker::check_name(const StateInfo& info, const ast::Expr& e) {
   if (iequals(e.text, "NULL") && is_object_type(t)) return;
   if ((iequals(e.text, "TRUE") || iequals(e.text, "FALSE")) && !info.enums && !is_object_type(t))
     return;
-  if (info.enums || t == StateValueType::boolean) {
+  if (named_values) {
     std::string guess = closest_match(e.text, enum_names(info));
     std::string message = "unknown value " + quote(e.text) + " for state " + quote(info.name);
     if (!guess.empty()) message += "; did you mean " + quote(guess) + "?";
