@@ -24,6 +24,13 @@ inline double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
 }
+// The median with an even count's two middle samples averaged; 0 for none.
+inline double interpolated_median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
 
 int bench_frontend(const BenchArgs& args);
 // `fxkit bench compile`: effect load time by phase, overhead vs glslang, cached reload.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "bench.h"
 #include "bench_accuracy.h"
 #include "fx/compile/shader_compiler.h"
 #include "fx/vulkan/context.h"
@@ -54,13 +55,6 @@ VkShaderModule module_from(VkDevice device, const fx::CompiledShader& s) {
   VkShaderModule m = VK_NULL_HANDLE;
   vkCreateShaderModule(device, &ci, nullptr, &m);
   return m;
-}
-
-// The mean of the middle two samples for an even count.
-double interpolated_median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 }  // namespace

@@ -85,20 +85,18 @@ int bench_processes(const BenchArgs& args) {
       status = kInputErrors;
     runs.push_back(std::move(j));
   }
-  std::vector<double> sorted = ratios;
-  std::sort(sorted.begin(), sorted.end());
-  const size_t mid = sorted.size() / 2;
-  const double median = sorted.size() % 2 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
+  const double median = interpolated_median(ratios);
+  const auto [lowest, highest] = std::minmax_element(ratios.begin(), ratios.end());
   if (args.json) {
     nlohmann::json j = {{"benchmark", args.mode},          {"processes", args.processes}, {key, median},
-                        {std::string(key) + "_min", sorted.front()}, {std::string(key) + "_max", sorted.back()},
+                        {std::string(key) + "_min", *lowest}, {std::string(key) + "_max", *highest},
                         {"ratios", ratios},                {"runs", runs}};
     std::printf("%s\n", json_text(j).c_str());
     return status;
   }
   std::printf("fxkit bench %s in %d fresh processes (the ratio moves with each process's memory layout)\n",
               args.mode.c_str(), args.processes);
-  std::printf("  %s: median %.3f, min %.3f, max %.3f", key, median, sorted.front(), sorted.back());
+  std::printf("  %s: median %.3f, min %.3f, max %.3f", key, median, *lowest, *highest);
   if (runs.front().contains("target_ratio")) std::printf(" (target <= %.2f)", runs.front()["target_ratio"].get<double>());
   std::printf("\n  per process:");
   for (double r : ratios) std::printf(" %.3f", r);
