@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <numeric>
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
@@ -94,22 +95,19 @@ int bench_frontend(const BenchArgs& args) {
   constexpr int kFrontRunsPerBlock = 2;
   const int rounds = std::max(1, args.repeats / 2);
   std::vector<PhaseTimes> runs;
-  std::vector<double> front_times, glslang_times, block_means, round_ratios;
+  std::vector<double> front_times, glslang_times, round_ratios;
   auto front_block = [&] {
-    double sum = 0;
-    for (int i = 0; i < kFrontRunsPerBlock; ++i) {
-      double t = seconds([&] { runs.push_back(run_front_end(g)); });
-      front_times.push_back(t);
-      sum += t;
-    }
-    block_means.push_back(sum / kFrontRunsPerBlock);
+    for (int i = 0; i < kFrontRunsPerBlock; ++i)
+      front_times.push_back(seconds([&] { runs.push_back(run_front_end(g)); }));
   };
   bool glslang_ok = true;
   front_block();
   for (int r = 0; r < rounds; ++r) {
     glslang_times.push_back(seconds([&] { glslang_ok = glslang_parse(g.shader_code, "PS0") && glslang_ok; }));
     front_block();
-    double round_front = (block_means[r] + block_means[r + 1]) / 2;
+    // The mean of the block before this glslang run and the block after it.
+    auto around = front_times.end() - 2 * kFrontRunsPerBlock;
+    double round_front = std::accumulate(around, front_times.end(), 0.0) / (2 * kFrontRunsPerBlock);
     round_ratios.push_back((mb / round_front) / (shader_mb / glslang_times.back()));
   }
   glslang::FinalizeProcess();
