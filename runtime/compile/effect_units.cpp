@@ -48,10 +48,21 @@ std::optional<ShaderStage> stage_of_state(std::string_view name) {
 // strings, shader objects). D3D10's `Texture2D` is real HLSL and stays.
 bool is_effect_only_type(std::string_view type) {
   if (shader_type_stage(type)) return true;
-  for (std::string_view t : {"texture", "string", "stateblock"})
+  // D3D10 effects may declare views for the application to set; shaders never read them.
+  for (std::string_view t : {"texture", "string", "stateblock", "RenderTargetView", "DepthStencilView"})
     if (iequals(type, t)) return true;
   for (std::string_view t : {"texture1D", "texture2D", "texture3D", "textureCUBE"})
     if (type == t) return true;
+  return false;
+}
+
+// Types that are resources rather than constants (samplers, textures, buffers): their
+// `register(s0)`/`register(t0)` becomes a binding, which glslang keeps per kind.
+bool is_shader_object_type(std::string_view type) {
+  for (std::string_view prefix : {"sampler", "texture", "buffer", "rwbuffer", "rwtexture", "byteaddressbuffer",
+                                  "rwbyteaddressbuffer", "structuredbuffer", "rwstructuredbuffer",
+                                  "appendstructuredbuffer", "consumestructuredbuffer"})
+    if (type.size() >= prefix.size() && iequals(type.substr(0, prefix.size()), prefix)) return true;
   return false;
 }
 
@@ -189,7 +200,7 @@ class EffectUnitBuilder {
           const ast::Variable& v = *d.variable;
           if (v.tokens.first == last_span || v.tokens.empty()) break;  // declarators share a span
           last_span = v.tokens.first;
-          if (!is_effect_only_type(v.type.name)) emit_filtered(w, v.tokens);
+          if (!is_effect_only_type(v.type.name)) emit_filtered(w, v.tokens, !is_shader_object_type(v.type.name));
           break;
         }
         case ast::DeclKind::type_alias:
@@ -245,14 +256,34 @@ class EffectUnitBuilder {
     return last;
   }
 
+  // The index of the `)` closing a `: register(...)` that starts at the `:` at `colon`, or
+  // 0 when no register binding starts there.
+  uint32_t register_end(uint32_t colon, uint32_t last) const {
+    if (colon + 2 >= last || !toks_[colon + 1].is_identifier("register") || !toks_[colon + 2].is(TokenKind::l_paren))
+      return 0;
+    uint32_t close = matching_close(colon + 2, last);
+    return close < last ? close : 0;
+  }
+
   // A global or cbuffer declaration without its effect-only parts: annotations,
   // `= sampler_state { }` initializers and cbuffer member initializers (which glslang
-  // ignores with a warning; the effect model keeps them as defaults).
-  void emit_filtered(detail::ShaderTextWriter& w, ast::TokenSpan span) {
+  // ignores with a warning; the effect model keeps them as defaults). With
+  // `drop_constant_registers`, a global constant's `: register(c0)` / `register(vs, c0)` goes
+  // too: D3D9 assigns constant registers per shader profile, so two constants may share c0
+  // (one for vs, one for ps), and glslang would turn both into the same offset of one
+  // $Global block, which SPIR-V validation rejects. Parameters are matched by name, so
+  // glslang's own packing loses nothing.
+  void emit_filtered(detail::ShaderTextWriter& w, ast::TokenSpan span, bool drop_constant_registers = false) {
     int depth = 0, init_depth = -1;
     for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) {
       const Token& t = toks_[i];
       bool in_init = init_depth >= 0;
+      if (drop_constant_registers && !in_init && depth == 0 && t.is(TokenKind::colon)) {
+        if (uint32_t end = register_end(i, span.last)) {
+          i = end;
+          continue;
+        }
+      }
       if (!in_init && t.is(TokenKind::less)) {
         if (uint32_t end = annotation_end(i, span.last)) {
           i = end;
@@ -265,6 +296,12 @@ class EffectUnitBuilder {
             (iequals(next->text(), "sampler_state") || iequals(next->text(), "stateblock_state"))) {
           uint32_t open = i + 2;
           i = open < span.last && toks_[open].is(TokenKind::l_brace) ? matching_close(open, span.last) : i + 1;
+          continue;
+        }
+        // `sampler s[2] = { sampler_state {...}, sampler_state {...} };`: an array of them.
+        if (next && next->is(TokenKind::l_brace) && i + 2 < span.last && toks_[i + 2].is(TokenKind::identifier) &&
+            iequals(toks_[i + 2].text(), "sampler_state")) {
+          i = matching_close(i + 1, span.last);
           continue;
         }
         if (depth > 0) {  // cbuffer member initializer: skip to its ';'
@@ -534,7 +571,7 @@ class EffectUnitBuilder {
     std::string text;
     PresumedLocation at = sm_.presumed(f.name_range.begin);
     if (at.valid()) text += detail::line_directive(at.line, at.file) + "\n";
-    for (const std::string& a : f.attributes) text += "[" + a + "] ";
+    for (const ast::Text& a : f.attributes) text += "[" + a + "] ";
     text += f.return_type.name;
     if (!f.return_type.template_arg.empty()) text += "<" + f.return_type.template_arg + ">";
     text += " " + f.name + "__fx_args(";

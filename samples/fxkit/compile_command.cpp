@@ -67,13 +67,16 @@ int run_compile(const CompileArgs& args) {
   bool matched = args.technique.empty();
   nlohmann::json shaders = nlohmann::json::array();
   std::vector<fx::Diagnostic> all = diags.diagnostics();
+  std::vector<fx::Diagnostic> effect_level = diags.diagnostics();  // the front end's and linking's
   for (const fx::EffectPass& pass : units.passes()) {
     if (!args.technique.empty() && pass.technique != args.technique) continue;
     matched = true;
     const fx::PassProgram& program = programs.program(pass);
     for (const fx::StageProgram& s : program.stages) {
       const fx::StageUnit* stage = pass.find(s.stage);
-      bool ok = s.shader.ok && program.compiled;
+      // A stage that compiled is not blamed for another stage's failure (the pass as a
+      // whole still fails, and the exit status says so).
+      bool ok = s.shader.ok;
       failed = failed || !ok;
       all.insert(all.end(), s.diagnostics.begin(), s.diagnostics.end());
       std::string spv;
@@ -108,6 +111,7 @@ int run_compile(const CompileArgs& args) {
       }
     }
     all.insert(all.end(), program.diagnostics.begin(), program.diagnostics.end());
+    effect_level.insert(effect_level.end(), program.diagnostics.begin(), program.diagnostics.end());
     if (!program.compiled && !program.stages.empty()) failed = true;
     for (const std::string& reason : program.unsupported) {
       if (args.json) {
@@ -127,7 +131,7 @@ int run_compile(const CompileArgs& args) {
   if (args.json) {
     nlohmann::json out = {{"file", args.file},
                           {"shaders", std::move(shaders)},
-                          {"diagnostics", fx::render_json(diags.diagnostics(), sm)},
+                          {"diagnostics", fx::render_json(effect_level, sm)},
                           {"ok", !failed}};
     std::puts(json_text(out).c_str());
   } else {

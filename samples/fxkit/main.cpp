@@ -6,8 +6,10 @@
 namespace fxkit {
 
 void FrontEndFlags::add_to(CLI::App& command) {
-  command.add_option("-I", include_dirs, "Add a folder to the include search path");
-  command.add_option("-D", defines, "Define a macro: NAME or NAME=VALUE");
+  // One value per flag, as in fxc and clang (`-I a -I b`, `-Ia`, `-DNAME=V`): otherwise the
+  // FILE after `-I DIR` would be read as a second folder.
+  command.add_option("-I", include_dirs, "Add a folder to the include search path")->allow_extra_args(false);
+  command.add_option("-D", defines, "Define a macro: NAME or NAME=VALUE")->allow_extra_args(false);
   command.add_option("--profile", profile, "Effect profile: fx_2_0, fx_4_0, fx_5_0 or auto")
       ->capture_default_str();
 }

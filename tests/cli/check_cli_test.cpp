@@ -19,7 +19,7 @@ const std::string kData = std::string(FXKIT_SOURCE_DIR) + "/tests/parser/data/";
 // A file in a fresh temporary folder, for includes and broken copies.
 std::string write_temp(const std::string& name, const std::string& text) {
   fs::path dir = fs::path(::testing::TempDir()) / ("fxkit_check_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  fs::create_directories((dir / name).parent_path());
   std::ofstream(dir / name) << text;
   return (dir / name).string();
 }
@@ -54,6 +54,26 @@ TEST(CheckCli, IncludeDirsDefinesAndIncludeNotes) {
       << missing.err;
   EXPECT_NE(missing.err.find("main.fx:1:1: note: included from here"), std::string::npos) << missing.err;
   EXPECT_EQ(run_fxkit("check -D LIGHTS=4 " + main).status, 0);
+}
+
+// -I and -D take one value each, as in fxc and clang: FILE may come after them, options
+// after FILE, and the value may be attached (-IDIR, -DNAME=V).
+TEST(CheckCli, IncludeAndDefineTakeOneValueEach) {
+  std::string header = write_temp("inc/both.fxh", "");
+  fs::path inc = fs::path(header).parent_path();
+  std::string main = write_temp("needs.fx",
+                                "#include \"both.fxh\"\n#if !defined(A) || B != 2\n#error A and B=2 needed\n#endif\n"
+                                "technique T { pass P {} }\n");
+  for (const std::string& args : {"check -I " + inc.string() + " -D A -D B=2 " + main + " --json",
+                                  "check -I" + inc.string() + " -DA -DB=2 " + main,
+                                  "check " + main + " -I " + inc.string() + " -D A -D B=2",
+                                  "info -I " + inc.string() + " -D A -D B=2 " + main + " --json",
+                                  "compile -I " + inc.string() + " -D A -D B=2 " + main + " --json"}) {
+    auto r = run_fxkit(args, true);
+    EXPECT_NE(r.status, 2) << args << "\n" << r.err;
+    EXPECT_EQ(r.err.find("error"), std::string::npos) << args << "\n" << r.err;
+  }
+  EXPECT_EQ(run_fxkit("check -I " + inc.string() + " -D A " + main).status, 1);
 }
 
 TEST(CheckCli, WerrorTurnsWarningsIntoFailures) {

@@ -194,4 +194,22 @@ TEST(FxkitCompile, ExitsOneWhenAShaderFails) {
   fs::remove(bad);
 }
 
+TEST(FxkitCompile, AStageIsNotBlamedForTheOtherStagesError) {
+  fs::path bad = fs::temp_directory_path() / ("fxkit_cli_blame_" + std::to_string(::getpid()) + ".fx");
+  // Derivatives exist only in pixel shaders: the vertex stage alone fails.
+  std::ofstream(bad) << "float4 VS(float4 p : POSITION) : POSITION { return ddx(p); }\n"
+                        "float4 PS() : COLOR0 { return 1; }\n"
+                        "technique T { pass P { VertexShader = compile vs_2_0 VS();\n"
+                        "                       PixelShader = compile ps_2_0 PS(); } }\n";
+  CliRun r = run("compile --json " + bad.string());
+  EXPECT_EQ(r.exit_code, 1);
+  json doc = json::parse(r.out);
+  ASSERT_EQ(doc["shaders"].size(), 2u);
+  EXPECT_EQ(doc["shaders"][0]["stage"], "vertex");
+  EXPECT_FALSE(doc["shaders"][0]["ok"].get<bool>());
+  EXPECT_EQ(doc["shaders"][1]["stage"], "fragment");
+  EXPECT_TRUE(doc["shaders"][1]["ok"].get<bool>()) << r.out;
+  fs::remove(bad);
+}
+
 }  // namespace
