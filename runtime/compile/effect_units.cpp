@@ -176,6 +176,20 @@ class EffectUnitBuilder {
     emit_hlsl();
     collect_glsl();
     collect_passes();
+    mark_uncalled_functions();
+  }
+
+  // Functions that no HLSL stage of any pass reaches go into every unit (see hlsl_code_for).
+  void mark_uncalled_functions() {
+    std::vector<bool> reached(u_.functions_.size(), false);
+    for (const EffectPass& pass : u_.passes_)
+      for (const StageUnit& stage : pass.stages)
+        if (stage.kind == StageSourceKind::hlsl) {
+          std::vector<bool> r = u_.reached_from(stage.function);
+          for (size_t i = 0; i < r.size(); ++i) reached[i] = reached[i] || r[i];
+        }
+    for (size_t i = 0; i < reached.size(); ++i)
+      u_.functions_[i].in_every_unit = !reached[i] && !u_.functions_[i].stage_only;
   }
 
  private:
@@ -209,7 +223,7 @@ class EffectUnitBuilder {
           emit_tokens(w, d.type_alias->tokens);
           break;
         case ast::DeclKind::structure: emit_tokens(w, d.structure->tokens); break;
-        case ast::DeclKind::function: emit_tokens(w, d.function->tokens); break;
+        case ast::DeclKind::function: emit_function(w, *d.function); break;
         case ast::DeclKind::constant_buffer: emit_filtered(w, d.constant_buffer->tokens); break;
         case ast::DeclKind::state_object: emit_sampler_object(w, *d.state_object); break;
         case ast::DeclKind::directive:
@@ -223,6 +237,44 @@ class EffectUnitBuilder {
     }
     w.end_line();
     u_.hlsl_ = std::move(w.out());
+    for (const ast::Decl& d : effect_.decls) {
+      ast::TokenSpan span = d.kind == ast::DeclKind::variable          ? d.variable->tokens
+                            : d.kind == ast::DeclKind::structure       ? d.structure->tokens
+                            : d.kind == ast::DeclKind::constant_buffer ? d.constant_buffer->tokens
+                                                                        : ast::TokenSpan{};
+      for (std::string& name : calls_in(span)) u_.called_outside_functions_.push_back(std::move(name));
+    }
+  }
+
+  // A function as a range of the text that can be left out: it starts with its own #line,
+  // and what follows it starts with one too.
+  void emit_function(detail::ShaderTextWriter& w, const ast::Function& f) {
+    w.end_line();
+    w.desync();
+    EffectUnits::FunctionText text;
+    text.name = f.name;
+    text.begin = w.out().size();
+    emit_tokens(w, f.tokens);
+    w.end_line();
+    w.desync();
+    text.end = w.out().size();
+    text.calls = calls_in(f.tokens);
+    for (const ast::Variable& param : f.params)
+      for (std::string_view t : {"PointStream", "LineStream", "TriangleStream", "InputPatch", "OutputPatch"})
+        text.stage_only = text.stage_only || param.type.name == t;
+    u_.functions_.push_back(std::move(text));
+  }
+
+  // The names called in a span: identifiers followed by `(` (constructors and intrinsics
+  // too, which name no function of the effect and so reach nothing).
+  std::vector<std::string> calls_in(ast::TokenSpan span) const {
+    std::vector<std::string> out;
+    for (uint32_t i = span.first; i + 1 < span.last && i + 1 < toks_.size(); ++i)
+      if (toks_[i].is(TokenKind::identifier) && toks_[i + 1].is(TokenKind::l_paren)) {
+        std::string name(toks_[i].text());
+        if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(std::move(name));
+      }
+    return out;
   }
 
   void emit_tokens(detail::ShaderTextWriter& w, ast::TokenSpan span) {
@@ -624,6 +676,39 @@ const EffectPass* EffectUnits::find(std::string_view technique, std::string_view
   return nullptr;
 }
 
+std::vector<bool> EffectUnits::reached_from(std::string_view entry) const {
+  std::vector<bool> reached(functions_.size(), false);
+  std::vector<std::string_view> pending(called_outside_functions_.begin(), called_outside_functions_.end());
+  pending.push_back(entry);
+  for (const FunctionText& f : functions_)
+    if (f.in_every_unit) pending.push_back(f.name);
+  while (!pending.empty()) {
+    std::string_view name = pending.back();
+    pending.pop_back();
+    // Every overload of a name: glslang resolves the call.
+    for (size_t i = 0; i < functions_.size(); ++i)
+      if (!reached[i] && functions_[i].name == name) {
+        reached[i] = true;
+        pending.insert(pending.end(), functions_[i].calls.begin(), functions_[i].calls.end());
+      }
+  }
+  return reached;
+}
+
+std::string EffectUnits::hlsl_code_for(std::string_view entry) const {
+  std::vector<bool> reached = reached_from(entry);
+  std::string out;
+  out.reserve(hlsl_.size());
+  size_t from = 0;
+  for (size_t i = 0; i < functions_.size(); ++i) {
+    if (reached[i]) continue;
+    out.append(hlsl_, from, functions_[i].begin - from);
+    from = functions_[i].end;
+  }
+  out.append(hlsl_, from, std::string::npos);
+  return out;
+}
+
 std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
   TranslationUnit u;
   u.stage = stage.stage;
@@ -633,7 +718,7 @@ std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
   if (stage.kind == StageSourceKind::hlsl) {
     u.language = ShaderLanguage::hlsl;
     u.profile = normalize_profile(stage.profile);
-    u.source = hlsl_;
+    u.source = hlsl_code_for(stage.function);
     if (!stage.arguments.empty())
       for (const Wrapper& w : wrappers_)
         if (w.function == stage.function && w.arguments == stage.arguments) u.source += w.text;

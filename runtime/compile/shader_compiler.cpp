@@ -1,6 +1,7 @@
 #include "fx/compile/shader_compiler.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <map>
 #include <cstdlib>
@@ -75,6 +76,27 @@ void apply_d3d_output_semantics(CompiledShader& out, const ShaderProfile& profil
   spirv::remap_locations(out.spirv, spirv::Interface::output, remap);
   std::sort(r.outputs.begin(), r.outputs.end(),
             [](const InterfaceVariable& a, const InterfaceVariable& b) { return a.location < b.location; });
+}
+
+// Whether HLSL source calls a D3D9 sampler intrinsic (tex1D, tex2Dlod, texCUBEbias, ...).
+// Code written for D3D9 is often compiled with an SM4 profile (`ps_4_0_level_9_1`, fxc's
+// backwards-compatibility mode): glslang reads its sampler2D as a combined image sampler only
+// in DX9 compatibility mode, and otherwise writes SPIR-V that samples a bare image. That mode
+// also makes a plain `sampler` combined, which breaks D3D10 `Texture.Sample(sampler, uv)`, so
+// it is chosen only for code that needs it.
+bool uses_d3d9_sampler_intrinsics(std::string_view hlsl) {
+  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (size_t at = hlsl.find("tex"); at != std::string_view::npos; at = hlsl.find("tex", at + 3)) {
+    if (at > 0 && ident(hlsl[at - 1])) continue;
+    std::string_view rest = hlsl.substr(at + 3);
+    size_t dim = rest.rfind("CUBE", 0) == 0 ? 4 : rest.size() >= 2 && rest[0] >= '1' && rest[0] <= '3' && rest[1] == 'D' ? 2 : 0;
+    if (dim == 0) continue;
+    size_t end = dim;
+    while (end < rest.size() && ident(rest[end])) ++end;  // lod, bias, proj, grad
+    while (end < rest.size() && (rest[end] == ' ' || rest[end] == '\t')) ++end;
+    if (end < rest.size() && rest[end] == '(') return true;
+  }
+  return false;
 }
 
 CompiledShader rejected(std::string text) {
@@ -165,7 +187,7 @@ CompiledShader ShaderCompiler::run_glslang(const TranslationUnit& unit, const Sh
 
   int messages = EShMsgSpvRules | EShMsgVulkanRules | EShMsgCascadingErrors;
   if (hlsl) messages |= EShMsgReadHlsl | EShMsgHlslOffsets | EShMsgHlslLegalization;
-  if (hlsl && profile.dx9()) messages |= EShMsgHlslDX9Compatible;
+  if (hlsl && (profile.dx9() || uses_d3d9_sampler_intrinsics(unit.source))) messages |= EShMsgHlslDX9Compatible;
   if (options_.debug_info) messages |= EShMsgDebugInfo;
   const EShMessages flags = static_cast<EShMessages>(messages);
   // GLSL sources carry their own #version; 450 is the fallback when they do not.

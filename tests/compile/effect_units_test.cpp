@@ -72,6 +72,41 @@ TEST(EffectUnits, LeavesOutEffectSyntaxAndKeepsShaderCode) {
   EXPECT_TRUE(p2.unsupported.empty());
 }
 
+TEST(EffectUnits, AStageUnitHoldsTheFunctionsItsEntryReaches) {
+  fs::path dir = temp_dir("reach");
+  write(dir / "reach.fx", R"(struct V { float4 pos : SV_Position; };
+float Scale(float x) { return x * 2; }
+static const float kScale = Scale(1);
+float3 Shade(float3 n) { return n * kScale; }
+float3 Shade(float x) { return x; }
+float Unused() { return 1; }
+V VS(float4 p : POSITION) { V v; v.pos = float4(Shade(p.xyz), 1); return v; }
+float4 PS(V v) : SV_Target { return ddx(v.pos); }
+[maxvertexcount(1)] void GS(point V i[1], inout PointStream<V> s) { s.Append(i[0]); }
+[maxvertexcount(1)] void UnusedGS(point V i[1], inout PointStream<V> s) { s.Append(i[0]); }
+technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometryShader(CompileShader(gs_4_0, GS()));
+                         SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)");
+  auto l = load((dir / "reach.fx").string());
+  const EffectPass& pass = l->units->passes().at(0);
+  auto source = [&](ShaderStage stage) { return l->units->unit(*pass.find(stage))->source; };
+  auto has = [](const std::string& code, const char* text) { return code.find(text) != std::string::npos; };
+  const std::string vs = source(ShaderStage::vertex);
+  // The entry, both overloads of what it calls, what a global initializer calls, and the
+  // function nothing calls (its errors are still reported, as fxc reports them).
+  for (const char* kept : {"V VS(", "float3 Shade(float3", "float3 Shade(float x", "float Scale(", "float Unused()"})
+    EXPECT_TRUE(has(vs, kept)) << kept << " missing in\n" << vs;
+  // Other stages' functions, and a stream function nothing calls.
+  for (const char* gone : {"float4 PS(", "void GS(", "void UnusedGS("})
+    EXPECT_FALSE(has(vs, gone)) << gone << " in\n" << vs;
+  const std::string gs = source(ShaderStage::geometry);
+  EXPECT_TRUE(has(gs, "void GS(")) << gs;
+  EXPECT_FALSE(has(gs, "void UnusedGS(")) << gs;
+  EXPECT_FALSE(has(gs, "V VS(")) << gs;
+  // The whole text still holds every function, each after its own #line.
+  EXPECT_TRUE(has(l->units->hlsl_code(), "void UnusedGS("));
+}
+
 TEST(EffectPrograms, SdkSampleCompilesAndLinks) {
   auto l = load(data("tests/parser/data/sdk_sample.fx"));
   ShaderCompiler compiler;
@@ -184,24 +219,31 @@ technique T2 { pass P { PixelShader = compile ps_2_0 PS2(); } }
   auto l = load((dir / "main.fx").string());
   ShaderCompiler compiler;
   EffectPrograms programs(*l->units, compiler, l->sm);
-  // Every pass has the include's error (the shared code holds all functions).
+  // T1's unit holds PS and what it calls: the include's error is its own.
   const StageProgram* s1 = programs.program("T1", "P")->find(ShaderStage::fragment);
   ASSERT_TRUE(s1);
   EXPECT_FALSE(s1->shader.ok);
   PresumedLocation inc = first_error(s1->diagnostics, l->sm);
   EXPECT_EQ(fs::path(std::string(inc.file)).filename(), "lib.fxh") << render_text(s1->diagnostics, l->sm);
   EXPECT_EQ(inc.line, 4u);
-  // The macro's error is reported at the line that invokes it, in main.fx.
+  // PS2 is another pass's function: its error is not T1's ...
+  for (const Diagnostic& d : s1->diagnostics)
+    EXPECT_EQ(d.message.find("missing_in_macro"), std::string::npos) << render_text(s1->diagnostics, l->sm);
+  // ... but T2's, reported at the line that invokes the macro, in main.fx.
+  const StageProgram* s2 = programs.program("T2", "P")->find(ShaderStage::fragment);
+  ASSERT_TRUE(s2);
+  EXPECT_FALSE(s2->shader.ok);
   bool macro_line = false;
-  for (const Diagnostic& d : s1->diagnostics) {
+  for (const Diagnostic& d : s2->diagnostics) {
     PresumedLocation p = l->sm.presumed(d.range.begin);
+    EXPECT_NE(fs::path(std::string(p.file)).filename(), "lib.fxh") << "PS2 does not call Helper";
     if (d.message.find("missing_in_macro") != std::string::npos) {
       EXPECT_EQ(fs::path(std::string(p.file)).filename(), "main.fx");
       EXPECT_EQ(p.line, 11u);
       macro_line = true;
     }
   }
-  EXPECT_TRUE(macro_line) << render_text(s1->diagnostics, l->sm);
+  EXPECT_TRUE(macro_line) << render_text(s2->diagnostics, l->sm);
 }
 
 TEST(EffectErrors, HlslGrammarErrorKeepsItsColumn) {

@@ -125,14 +125,30 @@ TEST(ShaderCompiler, DefinesReachThePreprocessor) {
 }
 
 TEST(ShaderCompiler, InvalidSpirvFromGlslangBecomesAnError) {
-  // D3D9 samplers under an SM4 profile: glslang accepts it but emits invalid SPIR-V.
-  const char* src = "sampler2D S;\nfloat4 PS(float2 uv : TEXCOORD0) : SV_Target { return tex2D(S, uv); }\n";
+  // A derivative in a vertex shader: glslang accepts it but emits SPIR-V that is invalid there.
+  const char* src = "float4 VS(float4 p : POSITION) : POSITION { return ddx(p); }\n";
   ShaderCompiler compiler;
-  CompiledShader ps = compiler.compile(test::unit(src, ShaderStage::fragment, "PS", "ps_4_0"));
-  EXPECT_FALSE(ps.ok);
-  EXPECT_TRUE(ps.spirv.empty());
-  EXPECT_NE(test::messages_of(ps).find("SPIR-V"), std::string::npos) << ps.info_log;
-  EXPECT_TRUE(compiler.compile(test::unit(src, ShaderStage::fragment, "PS", "ps_3_0")).ok);
+  CompiledShader vs = compiler.compile(test::unit(src, ShaderStage::vertex, "VS", "vs_3_0"));
+  EXPECT_FALSE(vs.ok);
+  EXPECT_TRUE(vs.spirv.empty());
+  EXPECT_NE(test::messages_of(vs).find("SPIR-V"), std::string::npos) << vs.info_log;
+}
+
+TEST(ShaderCompiler, D3D9SamplersUnderAnSm4ProfileCompile) {
+  // fxc's backwards-compatibility mode: D3D9 sampler syntax with ps_4_0_level_9_1 (the
+  // MonoGame templates) or ps_4_0. glslang alone wrote SPIR-V sampling a bare image here.
+  const char* d3d9 = "sampler2D S;\nsamplerCUBE C;\n"
+                     "float4 PS(float2 uv : TEXCOORD0) : SV_Target { return tex2D(S, uv) + texCUBElod(C, uv.xyxy); }\n";
+  // D3D10 syntax with a plain `sampler` must stay separate image and sampler.
+  const char* d3d10 = "Texture2D<float4> T : register(t0);\nsampler TS : register(s0);\n"
+                      "float4 PS(float2 uv : TEXCOORD0) : SV_Target { return T.Sample(TS, uv); }\n";
+  ShaderCompiler compiler;
+  for (const char* src : {d3d9, d3d10})
+    for (const char* profile : {"ps_4_0_level_9_1", "ps_4_0", "ps_5_0"}) {
+      CompiledShader ps = compiler.compile(test::unit(src, ShaderStage::fragment, "PS", profile));
+      ASSERT_TRUE(ps.ok) << profile << "\n" << src << ps.info_log;
+      EXPECT_EQ(test::spirv_val(ps.spirv), "") << profile << "\n" << src;
+    }
 }
 
 TEST(ShaderCompiler, RejectsMismatchedProfilesWithoutRunningGlslang) {

@@ -1,7 +1,8 @@
 // libFuzzer target: arbitrary bytes as an effect file through preprocessor, parser,
-// checker and (when the runtime is built) the semantic model: types, constant folding,
-// resolved states. One virtual include; rendered diagnostics included. Any crash, hang,
-// sanitizer report or out-of-memory is a bug.
+// checker and (when the runtime is built) the semantic model (types, constant folding,
+// resolved states) and the translation unit of every pass stage (filtered declarations,
+// each entry's reachable functions). One virtual include; rendered diagnostics included.
+// Any crash, hang, sanitizer report or out-of-memory is a bug.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -11,6 +12,7 @@
 #include "fx/diagnostic_render.h"
 #include "fx/frontend.h"
 #ifdef FXKIT_FUZZ_MODEL
+#include "fx/compile/effect_units.h"
 #include "fx/model/effect_model.h"
 #endif
 
@@ -37,6 +39,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // The model must cope with partial trees from inputs that failed to parse, too.
   fx::EffectModel model = fx::build_effect_model(parsed, sm, diags);
   (void)model;
+  fx::EffectUnits units(parsed.ast, sm, diags);
+  for (const fx::EffectPass& pass : units.passes())
+    for (const fx::StageUnit& stage : pass.stages) (void)units.unit(stage);
 #endif
   std::string rendered = fx::render_text(diags.diagnostics(), sm);
   // As the CLI prints it: invalid UTF-8 from the input is replaced, never thrown.

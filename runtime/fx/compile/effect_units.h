@@ -79,8 +79,17 @@ class EffectUnits {
   // The unit for one stage; nullopt when the stage is not compiled (see stage.unsupported).
   std::optional<TranslationUnit> unit(const StageUnit& stage) const;
 
-  // The effect's shader code shared by every HLSL stage (prelude and #line included).
+  // The effect's whole shader code (prelude and #line included). An HLSL stage's unit holds
+  // it without the functions its entry point never calls (`hlsl_code_for`).
   const std::string& hlsl_code() const { return hlsl_; }
+  // hlsl_code() without the functions of other stages: a stage's unit holds what its entry
+  // calls, what is called from outside any function (global initializers, struct methods)
+  // and the functions no stage calls, so their errors are still reported, as fxc does. A
+  // function only another stage calls may not compile for this one at all (a geometry
+  // shader's stream Append, a derivative in a vertex shader), and its errors are not this
+  // stage's. An uncalled function with a stream or patch parameter compiles only as its
+  // stage's entry, so it is left out too.
+  std::string hlsl_code_for(std::string_view entry) const;
   // True when the pre-release HLSL prelude is prepended (an `fx.2.0`-style header).
   bool pre_release() const { return pre_release_; }
 
@@ -91,6 +100,19 @@ class EffectUnits {
     std::string body;     // with #line directives, the #version line left out
   };
   std::string hlsl_;
+  // Each function definition or prototype as a range of hlsl_ (starting with its own #line),
+  // with the names it calls.
+  struct FunctionText {
+    std::string name;
+    size_t begin = 0, end = 0;
+    std::vector<std::string> calls;
+    bool stage_only = false;     // has a stream or patch parameter (geometry, hull, domain)
+    bool in_every_unit = false;  // no stage calls it
+  };
+  std::vector<FunctionText> functions_;
+  std::vector<std::string> called_outside_functions_;
+  // Which functions `entry`'s unit holds (indices into functions_).
+  std::vector<bool> reached_from(std::string_view entry) const;
   bool pre_release_ = false;
   std::vector<EffectPass> passes_;
   std::vector<GlslBlockText> glsl_blocks_;
