@@ -67,7 +67,33 @@ void ShaderTextWriter::sync(std::string_view file, uint32_t line) {
   last_ = '\n';
 }
 
-void ShaderTextWriter::token(const Token& t) {
+// Appended to a renamed word; reflection strips it again.
+constexpr std::string_view kRenamed = "__fx";
+
+std::string glslang_safe_name(std::string_view word, bool identifier_follows) {
+  if (identifier_follows) return {};
+  for (std::string_view w : {"point", "line", "triangle", "lineadj", "triangleadj", "linear", "centroid",
+                             "nointerpolation", "noperspective", "precise", "snorm", "unorm"})
+    if (word == w) return std::string(word) + std::string(kRenamed);
+  return {};
+}
+
+std::string effect_name(std::string_view name) {
+  std::string out;
+  for (size_t i = 0; i < name.size(); ++i) {
+    if (name.compare(i, kRenamed.size(), kRenamed) == 0 &&
+        (i + kRenamed.size() == name.size() || !is_word_char(name[i + kRenamed.size()])) && i > 0 &&
+        is_word_char(name[i - 1])) {
+      i += kRenamed.size() - 1;
+      continue;
+    }
+    out.push_back(name[i]);
+  }
+  return out;
+}
+
+void ShaderTextWriter::token(const Token& t, std::string_view spelling) {
+  const std::string_view text = spelling.empty() ? t.text() : spelling;
   PresumedLocation p = t.loc.valid() ? sm_.presumed(t.loc) : PresumedLocation{};
   bool directive = t.kind == TokenKind::directive;
   if (p.valid()) sync(p.file, p.line);
@@ -81,14 +107,14 @@ void ShaderTextWriter::token(const Token& t) {
   if (p.valid() && column_ < p.column && !directive) {
     out_.append(p.column - column_, ' ');
     column_ = p.column;
-  } else if (column_ > 1 && (t.leading_space() || (is_word_char(last_) && !t.text().empty() &&
-                                                   is_word_char(t.text().front())))) {
+  } else if (column_ > 1 && (t.leading_space() || (is_word_char(last_) && !text.empty() &&
+                                                   is_word_char(text.front())))) {
     out_.push_back(' ');
     ++column_;
   }
-  out_.append(t.text());
-  column_ += static_cast<uint32_t>(t.text().size());
-  if (!t.text().empty()) last_ = t.text().back();
+  out_.append(text);
+  column_ += static_cast<uint32_t>(text.size());
+  if (!text.empty()) last_ = text.back();
   if (directive) {
     out_.push_back('\n');
     column_ = 1;

@@ -16,8 +16,8 @@ class ShaderTextWriter {
   // GLSL needs GL_GOOGLE_cpp_style_line_directive for `#line N "file"`: the caller writes it.
   explicit ShaderTextWriter(const SourceManager& sm) : sm_(sm) {}
 
-  // Appends a token at its presumed position.
-  void token(const Token& t);
+  // Appends a token at its presumed position, spelled as written or as `spelling`.
+  void token(const Token& t, std::string_view spelling = {});
   // Appends a line of generated text (no position): the next token re-syncs with #line.
   void line(std::string_view text);
   // Appends text on the current line; used for generated fragments between tokens.
@@ -42,5 +42,13 @@ class ShaderTextWriter {
 
 // Escapes a file name for a `#line N "name"` directive.
 std::string line_directive(uint32_t line, std::string_view file);
+
+// Words glslang's HLSL front end reserves that fxc takes as names when they are not used as
+// modifiers (`float point = 1;`, but `point V input[1]`): a geometry primitive, an
+// interpolation or precision modifier. Given an identifier and whether an identifier follows
+// it (a type: the modifier use), the spelling for glslang ("point__fx"), or "" to keep it.
+std::string glslang_safe_name(std::string_view word, bool identifier_follows);
+// The name as the effect wrote it, for reflection: "light.point__fx" -> "light.point".
+std::string effect_name(std::string_view glslang_name);
 
 }  // namespace fx::detail

@@ -135,16 +135,20 @@ bool spell(const ast::Expr* e, std::string& out) {
   return false;
 }
 
-// Tokens joined with single spaces where the source had space: a one-line spelling.
+// HLSL tokens joined with single spaces where the source had space: a one-line spelling,
+// with the names glslang reserves renamed as in the unit's text.
 std::string join_tokens(const std::vector<Token>& toks, ast::TokenSpan span) {
   std::string out;
   for (uint32_t i = span.first; i < span.last && i < toks.size(); ++i) {
     const Token& t = toks[i];
+    std::string safe;
+    if (t.is(TokenKind::identifier))
+      safe = detail::glslang_safe_name(t.text(), i + 1 < span.last && toks[i + 1].is(TokenKind::identifier));
+    const std::string_view text = safe.empty() ? t.text() : std::string_view(safe);
     if (!out.empty() && (t.leading_space() || (std::isalnum(static_cast<unsigned char>(out.back())) &&
-                                               !t.text().empty() &&
-                                               std::isalnum(static_cast<unsigned char>(t.text()[0])))))
+                                               !text.empty() && std::isalnum(static_cast<unsigned char>(text[0])))))
       out.push_back(' ');
-    out.append(t.text());
+    out.append(text);
   }
   return out;
 }
@@ -277,8 +281,18 @@ class EffectUnitBuilder {
     return out;
   }
 
+  // Writes the token at `i` as HLSL: a name glslang reserves is renamed (reflection maps
+  // it back).
+  void put_hlsl(detail::ShaderTextWriter& w, uint32_t i, uint32_t last) {
+    const Token& t = toks_[i];
+    if (!t.is(TokenKind::identifier)) return w.token(t);
+    bool identifier_follows = i + 1 < last && toks_[i + 1].is(TokenKind::identifier);
+    std::string safe = detail::glslang_safe_name(t.text(), identifier_follows);
+    w.token(t, safe);
+  }
+
   void emit_tokens(detail::ShaderTextWriter& w, ast::TokenSpan span) {
-    for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) w.token(toks_[i]);
+    for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) put_hlsl(w, i, span.last);
   }
 
   // The index of the `>` closing an annotation opened at `open`, or 0 when the `<` is not an
@@ -374,7 +388,7 @@ class EffectUnitBuilder {
       if (t.is(TokenKind::r_brace) || t.is(TokenKind::r_paren) || t.is(TokenKind::r_square)) --depth;
       if ((t.is(TokenKind::semi) || t.is(TokenKind::comma)) && depth == init_depth) init_depth = -1;
       if (t.is(TokenKind::l_brace) && !in_init) init_depth = -1;
-      w.token(t);
+      put_hlsl(w, i, span.last);
     }
   }
 
@@ -419,7 +433,7 @@ class EffectUnitBuilder {
           text.version += " " + std::string(toks_[code.first++].text());
       }
       detail::ShaderTextWriter w(sm_);
-      emit_tokens(w, code);
+      for (uint32_t i = code.first; i < code.last && i < toks_.size(); ++i) w.token(toks_[i]);
       w.end_line();
       text.body = std::move(w.out());
       u_.glsl_blocks_.push_back(std::move(text));
@@ -640,7 +654,8 @@ class EffectUnitBuilder {
       if (!first_param) text += ", ";
       first_param = false;
       text += join_tokens(toks_, p.tokens);
-      call += p.name;
+      std::string safe = detail::glslang_safe_name(p.name, false);
+      call += safe.empty() ? std::string(p.name) : safe;
     }
     text += ")";
     if (!f.semantic.empty()) text += " : " + f.semantic;

@@ -6,6 +6,7 @@
 #include <glslang/Include/Types.h>
 #include <glslang/MachineIndependent/localintermediate.h>
 
+#include "effect_shader_text.h"
 #include "spirv_words.h"
 
 namespace fx {
@@ -66,7 +67,7 @@ ImageDim image_dim(glslang::TSamplerDim d) {
 
 UniformBlock make_block(const glslang::TObjectReflection& b) {
   UniformBlock block;
-  block.name = b.name;
+  block.name = detail::effect_name(b.name);
   block.size = static_cast<uint32_t>(std::max(0, b.size));
   if (const glslang::TType* t = b.getType()) {
     block.set = set_of(*t);
@@ -78,7 +79,7 @@ UniformBlock make_block(const glslang::TObjectReflection& b) {
 BlockMember make_member(const glslang::TObjectReflection& u, const UniformBlock& block,
                         const glslang::TType* block_type) {
   BlockMember m;
-  m.name = u.name;
+  m.name = detail::effect_name(u.name);
   m.offset = static_cast<uint32_t>(std::max(0, u.offset));
   m.array_stride = static_cast<uint32_t>(std::max(0, u.arrayStride));
   const glslang::TType* t = u.getType();
@@ -137,7 +138,7 @@ ShaderReflection reflect_program(const glslang::TProgram& program, EShLanguage s
     if (!t || t->getBasicType() != glslang::EbtSampler) continue;
     const glslang::TSampler& s = t->getSampler();
     ImageBinding img;
-    img.name = u.name;
+    img.name = detail::effect_name(u.name);
     img.kind = s.isPureSampler() ? ImageBinding::Kind::sampler
                : s.isImage()     ? ImageBinding::Kind::storage_image
                : s.isCombined()  ? ImageBinding::Kind::combined_image_sampler
@@ -173,7 +174,7 @@ ShaderReflection reflect_program(const glslang::TProgram& program, EShLanguage s
       const glslang::TType* t = io.getType();
       if (!t || t->getQualifier().builtIn != glslang::EbvNone) continue;
       InterfaceVariable v;
-      v.name = io.name;
+      v.name = detail::effect_name(io.name);
       v.location = location_of(*t);
       v.type = reflected_type(*t);
       if (auto it = semantics.find(v.location); it != semantics.end()) v.semantic = it->second;

@@ -114,13 +114,18 @@ int run_compile(const CompileArgs& args) {
     effect_level.insert(effect_level.end(), program.diagnostics.begin(), program.diagnostics.end());
     if (!program.compiled && !program.stages.empty()) failed = true;
     for (const std::string& reason : program.unsupported) {
+      // Located at the pass, so an editor or CI log points at what is not compiled.
+      fx::DiagnosticSink located;
+      located.warning("shader-not-compiled", pass.range,
+                      "pass '" + pass.technique + "." + pass.pass + "' is not compiled to SPIR-V: " + reason);
       if (args.json) {
         shaders.push_back({{"technique", pass.technique}, {"pass", pass.pass}, {"stage", nullptr},
                            {"entry", nullptr}, {"profile", nullptr}, {"ok", false}, {"ms", 0},
-                           {"unsupported", reason}, {"diagnostics", nlohmann::json::array()}});
+                           {"unsupported", reason}, {"diagnostics", fx::render_json(located.diagnostics(), sm)}});
       } else {
         std::fprintf(stderr, "%s.%s: not compiled: %s\n", pass.technique.c_str(), pass.pass.c_str(),
                      reason.c_str());
+        all.insert(all.end(), located.diagnostics().begin(), located.diagnostics().end());
       }
     }
   }

@@ -190,6 +190,14 @@ TEST(FxkitCompile, ExitsOneWhenAShaderFails) {
   EXPECT_FALSE(ps["ok"].get<bool>());
   ASSERT_FALSE(ps["diagnostics"].empty());
   EXPECT_EQ(ps["diagnostics"][0]["line"], 1);
+  // The fixed-function vertex stage says why it is not compiled, at the pass.
+  const json& ff = doc["shaders"][1];
+  EXPECT_TRUE(ff["stage"].is_null());
+  ASSERT_EQ(ff["diagnostics"].size(), 1u) << r.out;
+  EXPECT_EQ(ff["diagnostics"][0]["line"], 2);
+  EXPECT_EQ(ff["diagnostics"][0]["column"], 15);
+  EXPECT_NE(ff["diagnostics"][0]["message"].get<std::string>().find("fixed-function vertex processing"),
+            std::string::npos);
   EXPECT_EQ(run("compile --json --technique Missing " + bad.string()).exit_code, 2);
   fs::remove(bad);
 }

@@ -44,6 +44,13 @@ TEST_P(FxcAccepts, ChecksCleanAndEveryStageCompilesToValidSpirv) {
       ASSERT_TRUE(s.shader.ok) << pass.technique << "." << pass.pass << " " << to_string(s.stage) << "\n"
                                << render_text(s.diagnostics, sm) << "\n" << s.unit.source;
       EXPECT_EQ(test::spirv_val(s.shader.spirv), "") << pass.technique << "." << pass.pass;
+      // Reflection names what the effect declares, whatever the unit renamed for glslang.
+      std::vector<std::string> names;
+      for (const UniformBlock& b : s.shader.reflection.uniform_blocks)
+        for (const BlockMember& m : b.members) names.push_back(m.name);
+      for (const ImageBinding& i : s.shader.reflection.images) names.push_back(i.name);
+      for (const InterfaceVariable& v : s.shader.reflection.inputs) names.push_back(v.name);
+      for (const std::string& n : names) EXPECT_EQ(n.find("__fx"), std::string::npos) << n;
     }
     EXPECT_TRUE(p.compiled) << pass.technique << "." << pass.pass << "\n" << render_text(p.diagnostics, sm);
   }
