@@ -462,7 +462,21 @@ void Checker::check_shader(const StateInfo& info, const ast::Expr& e) {
           check_compile(info, e.args[0]->text, e.args[0]->range, e.args[1]->text,
                         e.args[1]->range);
       } else if (!e.args.empty() && e.args[0]) {
-        check_value(info, *e.args[0]);  // ConstructGSWithSO(shader, ...)
+        // ConstructGSWithSO(shader, ...): the shader may be a vertex shader, whose output is
+        // then streamed out with no geometry stage.
+        const ast::Expr& shader = *e.args[0];
+        std::string_view profile = shader.kind == K::compile ? std::string_view(shader.text)
+                                   : shader.kind == K::call && iequals(shader.text, "CompileShader") &&
+                                           !shader.args.empty() && shader.args[0]
+                                       ? std::string_view(shader.args[0]->text)
+                                       : std::string_view();
+        if (iequals(e.text, "ConstructGSWithSO") && starts_with_i(profile, profile_prefix(PassStage::vertex))) {
+          StateInfo vertex = info;
+          vertex.stage = PassStage::vertex;
+          check_value(vertex, shader);
+        } else {
+          check_value(info, shader);
+        }
       }
       return;
     case K::glsl_list:

@@ -474,6 +474,14 @@ class EffectUnitBuilder {
           null_pixel = null_pixel || *stage == ShaderStage::fragment;
           continue;
         }
+        // `SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "..."))`: stream
+        // output straight from a vertex shader, with no geometry stage. It is that pass's
+        // vertex shader unless the pass sets one itself.
+        if (ps.stage == ShaderStage::geometry && ps.kind == StageSourceKind::hlsl &&
+            ascii_lower(ps.profile).rfind("vs_", 0) == 0) {
+          if (pass.find(ShaderStage::vertex)) continue;
+          ps.stage = ShaderStage::vertex;
+        }
         // A later assignment of the same stage wins, as in D3D.
         std::erase_if(pass.stages, [&](const StageUnit& o) { return o.stage == ps.stage; });
         pass.stages.push_back(std::move(ps));

@@ -222,6 +222,19 @@ TEST(Checker, ShaderProfilesAndStages) {
             "state 'PixelShader' needs a ps_* profile, found 'vs_2_0'");
 }
 
+// Stream output may capture a vertex shader (no geometry stage); any other stage is still
+// a mismatch there.
+TEST(Checker, StreamOutputTakesAVertexOrGeometryShader) {
+  auto c = check(
+      "float4 VS() : SV_Position { return 0; }\n"
+      "technique10 t {\n"
+      "  pass a { SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), \"SV_POSITION.xyzw\")); }\n"
+      "  pass b { SetGeometryShader(ConstructGSWithSO(CompileShader(ps_4_0, VS()), \"SV_POSITION.xyzw\")); }\n"
+      "}\n");
+  ASSERT_EQ(c->ids(), (Ids{"shader-stage-mismatch"})) << c->text();
+  EXPECT_EQ(c->diags.diagnostics()[0].message, "state 'SetGeometryShader' needs a gs_* profile, found 'ps_4_0'");
+}
+
 // Profiles match in any case, and only whole: the longest, a prefix or an extension of one,
 // and one past the 16 characters the lookup packs are told apart.
 TEST(Checker, ShaderProfileNamesMatchWhole) {
