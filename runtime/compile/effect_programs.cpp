@@ -64,6 +64,12 @@ StageProgram EffectPrograms::compile_stage(const StageUnit& stage, TranslationUn
   return out;
 }
 
+std::optional<StageProgram> EffectPrograms::compile_alone(const StageUnit& stage) {
+  std::optional<TranslationUnit> unit = units_.unit(stage);
+  if (!unit) return std::nullopt;
+  return compile_stage(stage, std::move(*unit));
+}
+
 const PassProgram& EffectPrograms::program(const EffectPass& pass) {
   size_t index = static_cast<size_t>(&pass - units_.passes().data());
   std::unique_ptr<PassProgram>& slot = programs_.at(index);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 
 #include "effect_shader_text.h"
 #include "fx/ascii_case.h"
@@ -186,12 +187,16 @@ class EffectUnitBuilder {
   // Functions that no HLSL stage of any pass reaches go into every unit (see hlsl_code_for).
   void mark_uncalled_functions() {
     std::vector<bool> reached(u_.functions_.size(), false);
+    auto reach = [&](const StageUnit& stage) {
+      if (stage.kind != StageSourceKind::hlsl) return;
+      std::vector<bool> r = u_.reached_from(stage.function);
+      for (size_t i = 0; i < r.size(); ++i) reached[i] = reached[i] || r[i];
+    };
     for (const EffectPass& pass : u_.passes_)
-      for (const StageUnit& stage : pass.stages)
-        if (stage.kind == StageSourceKind::hlsl) {
-          std::vector<bool> r = u_.reached_from(stage.function);
-          for (size_t i = 0; i < r.size(); ++i) reached[i] = reached[i] || r[i];
-        }
+      for (const StageUnit& stage : pass.stages) {
+        reach(stage);
+        for (const StageUnit& choice : stage.choices) reach(choice);
+      }
     for (size_t i = 0; i < reached.size(); ++i)
       u_.functions_[i].in_every_unit = !reached[i] && !u_.functions_[i].stage_only;
   }
@@ -557,9 +562,70 @@ class EffectUnitBuilder {
         stage.kind = StageSourceKind::assembly;
         stage.unsupported = "shader model 1 assembly (asm { }) is not compiled; the legacy path emulates it";
         return true;
-      case ast::ExprKind::index:
-        return invalid(stage, "shader arrays indexed in a pass are not supported");
+      case ast::ExprKind::index: return shader_array(e, stage, depth);
       default: return invalid(stage, "the value does not name a shader");
+    }
+  }
+
+  // `VSArray[VSIndices[ShaderIndex]]`: every element of a shader array becomes a choice,
+  // the one the index selects with the initial parameter values the stage itself.
+  bool shader_array(const ast::Expr& e, StageUnit& stage, int depth) {
+    const ast::Expr* base = e.args.size() == 2 ? e.args[0] : nullptr;
+    const ast::Variable* array =
+        base && (base->kind == ast::ExprKind::identifier || base->kind == ast::ExprKind::reference)
+            ? shader_variable(base->text)
+            : nullptr;
+    if (!array || array->array_dims.empty() || !array->initializer ||
+        array->initializer->kind != ast::ExprKind::init_list)
+      return invalid(stage, "an indexed shader must be an element of a shader array with an initializer");
+    std::vector<StageUnit> choices;
+    for (const ast::ExprPtr& element : array->initializer->args) {
+      StageUnit c;
+      c.stage = stage.stage;
+      c.range = element ? element->range : stage.range;
+      if (!element || !resolve(*element, c, depth + 1)) invalid(c, "the array element is NULL");
+      choices.push_back(std::move(c));
+    }
+    if (choices.empty()) return invalid(stage, "the shader array '" + base->text + "' is empty");
+    std::optional<int64_t> index = initial_value(*e.args[1], 0);
+    size_t choice = index && *index >= 0 && static_cast<size_t>(*index) < choices.size() ? static_cast<size_t>(*index) : 0;
+    SourceRange range = stage.range;
+    stage = choices[choice];
+    stage.range = range;
+    stage.choice = choice;
+    spell(e.args[1], stage.selector);
+    stage.choices = std::move(choices);
+    return true;
+  }
+
+  // An integer expression's value with every parameter at its initial value: literals,
+  // parameters and elements of parameter arrays (`VSIndices[ShaderIndex]`). nullopt when it
+  // depends on anything else.
+  std::optional<int64_t> initial_value(const ast::Expr& e, int depth) const {
+    if (depth > 8) return std::nullopt;
+    auto variable = [&](std::string_view name) -> const ast::Variable* {
+      for (const ast::Variable* v : variables_)
+        if (v->name == name && v->initializer) return v;
+      return nullptr;
+    };
+    switch (e.kind) {
+      case ast::ExprKind::int_literal:
+      case ast::ExprKind::float_literal: return static_cast<int64_t>(e.number);
+      case ast::ExprKind::identifier:
+      case ast::ExprKind::reference:
+        if (const ast::Variable* v = variable(e.text); v && v->array_dims.empty())
+          return initial_value(*v->initializer, depth + 1);
+        return std::nullopt;
+      case ast::ExprKind::index: {
+        if (e.args.size() != 2 || !e.args[0] || !e.args[1]) return std::nullopt;
+        const ast::Variable* v = variable(e.args[0]->text);
+        std::optional<int64_t> i = initial_value(*e.args[1], depth + 1);
+        if (!v || !i || v->initializer->kind != ast::ExprKind::init_list || *i < 0 ||
+            static_cast<size_t>(*i) >= v->initializer->args.size() || !v->initializer->args[*i])
+          return std::nullopt;
+        return initial_value(*v->initializer->args[*i], depth + 1);
+      }
+      default: return std::nullopt;
     }
   }
 

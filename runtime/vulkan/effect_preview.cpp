@@ -52,6 +52,17 @@ uint32_t depth_bits(VkFormat format) {
   }
 }
 
+// The zero stream's format for an input the mesh does not have: integer inputs
+// (BLENDINDICES as uint4) must be read as integers, or Vulkan reports a type mismatch.
+VkFormat zero_stream_format(const InterfaceVariable& in) {
+  switch (in.type.scalar) {
+    case ScalarKind::int32: return VK_FORMAT_R32G32B32A32_SINT;
+    case ScalarKind::uint32:
+    case ScalarKind::boolean: return VK_FORMAT_R32G32B32A32_UINT;
+    default: return VK_FORMAT_R32G32B32A32_SFLOAT;
+  }
+}
+
 }  // namespace
 
 std::unique_ptr<EffectPreview> EffectPreview::create(const Context& ctx, const Mesh& mesh,
@@ -120,13 +131,13 @@ VertexLayout EffectPreview::vertex_layout(std::span<const InterfaceVariable> inp
       if (listed) continue;
       const MeshAttribute* a = guess_attribute(in.name);
       if (a) layout.attributes.push_back({in.name, a->format, a->offset, 0});
-      else layout.attributes.push_back({in.name, VK_FORMAT_R32G32B32A32_SFLOAT, 0, 1});
+      else layout.attributes.push_back({in.name, zero_stream_format(in), 0, 1});
       continue;
     }
     const std::string sem = canonical_semantic(in.semantic);
     bool known = false;
     for (const VertexAttribute& a : layout.attributes) known = known || canonical_semantic(a.semantic) == sem;
-    if (!known) layout.attributes.push_back({sem, VK_FORMAT_R32G32B32A32_SFLOAT, 0, 1});
+    if (!known) layout.attributes.push_back({sem, zero_stream_format(in), 0, 1});
   }
   return layout;
 }

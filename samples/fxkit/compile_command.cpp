@@ -14,6 +14,27 @@
 namespace fxkit {
 namespace {
 
+// One compiled stage as `fxkit compile --json` lists it. A stage of a shader array also
+// names the index expression that chooses among its elements.
+nlohmann::json shader_json(const fx::EffectPass& pass, const fx::StageProgram& s, const fx::StageUnit* stage,
+                           const fx::SourceManager& sm) {
+  nlohmann::json j = {{"technique", pass.technique},
+                      {"pass", pass.pass},
+                      {"stage", fx::to_string(s.stage)},
+                      {"entry", s.unit.entry_point},
+                      {"function", stage ? stage->function : ""},
+                      {"profile", stage ? stage->profile : s.unit.profile},
+                      {"language", fx::to_string(s.unit.language)},
+                      {"ok", s.shader.ok},
+                      {"ms", s.ms},
+                      {"cached", s.shader.from_cache || s.reused},
+                      {"words", s.shader.spirv.size()},
+                      {"diagnostics", fx::render_json(s.diagnostics, sm)}};
+  for (const fx::StageUnit& p : pass.stages)
+    if (p.stage == s.stage && !p.choices.empty()) j["selector"] = p.selector;
+  return j;
+}
+
 struct CompileArgs {
   FrontEndFlags front_end;
   std::string file;
@@ -90,18 +111,8 @@ int run_compile(const CompileArgs& args) {
         spv = path.string();
       }
       if (args.json) {
-        nlohmann::json j = {{"technique", pass.technique},
-                            {"pass", pass.pass},
-                            {"stage", fx::to_string(s.stage)},
-                            {"entry", s.unit.entry_point},
-                            {"function", stage ? stage->function : ""},
-                            {"profile", stage ? stage->profile : s.unit.profile},
-                            {"language", fx::to_string(s.unit.language)},
-                            {"ok", ok},
-                            {"ms", s.ms},
-                            {"cached", s.shader.from_cache || s.reused},
-                            {"words", s.shader.spirv.size()},
-                            {"diagnostics", fx::render_json(s.diagnostics, sm)}};
+        nlohmann::json j = shader_json(pass, s, stage, sm);
+        if (stage && !stage->choices.empty()) j["choice"] = stage->choice;
         if (!spv.empty()) j["spirv"] = spv;
         shaders.push_back(std::move(j));
       } else {
@@ -110,6 +121,24 @@ int run_compile(const CompileArgs& args) {
                      ok ? "ok" : "FAILED", spv.empty() ? "" : (" -> " + spv).c_str());
       }
     }
+    // The other elements of a shader array the pass indexes: each is a shader of the effect.
+    for (const fx::StageUnit& stage : pass.stages)
+      for (size_t i = 0; i < stage.choices.size(); ++i) {
+        if (i == stage.choice) continue;
+        std::optional<fx::StageProgram> s = programs.compile_alone(stage.choices[i]);
+        if (!s) continue;
+        failed = failed || !s->shader.ok;
+        all.insert(all.end(), s->diagnostics.begin(), s->diagnostics.end());
+        if (args.json) {
+          nlohmann::json j = shader_json(pass, *s, &stage.choices[i], sm);
+          j["choice"] = i;
+          shaders.push_back(std::move(j));
+        } else {
+          std::fprintf(stderr, "%s.%s %s, choice %zu of [%s] (%s %s): %s\n", pass.technique.c_str(), pass.pass.c_str(),
+                       fx::to_string(s->stage), i, stage.selector.c_str(), s->unit.profile.c_str(),
+                       s->unit.entry_point.c_str(), s->shader.ok ? "ok" : "FAILED");
+        }
+      }
     all.insert(all.end(), program.diagnostics.begin(), program.diagnostics.end());
     effect_level.insert(effect_level.end(), program.diagnostics.begin(), program.diagnostics.end());
     if (!program.compiled && !program.stages.empty()) failed = true;

@@ -107,6 +107,25 @@ technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeomet
   EXPECT_TRUE(has(l->units->hlsl_code(), "void UnusedGS("));
 }
 
+TEST(EffectUnits, AShaderArrayIndexedInAPassOffersEveryElement) {
+  auto l = load(data("tests/compile/data/fxc_accepts/shader_array_chosen_by_a_parameter.fx"));
+  ASSERT_EQ(l->units->passes().size(), 1u);
+  const EffectPass& pass = l->units->passes()[0];
+  const StageUnit* vs = pass.find(ShaderStage::vertex);
+  const StageUnit* ps = pass.find(ShaderStage::fragment);
+  ASSERT_TRUE(vs && ps);
+  ASSERT_EQ(vs->choices.size(), 3u);
+  ASSERT_EQ(ps->choices.size(), 2u);
+  // ShaderIndex = 3: VSIndices[3] = 1, PSIndices[3] = 1.
+  EXPECT_EQ(vs->choice, 1u);
+  EXPECT_EQ(vs->function, "VSFog");
+  EXPECT_EQ(ps->choice, 1u);
+  EXPECT_EQ(ps->function, "PSFog");
+  EXPECT_EQ(vs->selector, "VSIndices[ShaderIndex]");
+  EXPECT_EQ(vs->choices[2].function, "VSVertexColor");
+  EXPECT_EQ(vs->choices[2].profile, "vs_2_0");
+}
+
 TEST(EffectPrograms, SdkSampleCompilesAndLinks) {
   auto l = load(data("tests/parser/data/sdk_sample.fx"));
   ShaderCompiler compiler;

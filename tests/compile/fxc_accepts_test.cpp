@@ -53,6 +53,13 @@ TEST_P(FxcAccepts, ChecksCleanAndEveryStageCompilesToValidSpirv) {
       for (const std::string& n : names) EXPECT_EQ(n.find("__fx"), std::string::npos) << n;
     }
     EXPECT_TRUE(p.compiled) << pass.technique << "." << pass.pass << "\n" << render_text(p.diagnostics, sm);
+    // The other elements of a shader array the pass indexes.
+    for (const StageUnit& stage : pass.stages)
+      for (const StageUnit& choice : stage.choices) {
+        std::optional<StageProgram> s = programs.compile_alone(choice);
+        ASSERT_TRUE(s) << choice.unsupported;
+        EXPECT_TRUE(s->shader.ok) << choice.function << "\n" << render_text(s->diagnostics, sm);
+      }
   }
 }
 

@@ -3,6 +3,7 @@
 // asked for, then linked into one program layout.
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -65,6 +66,10 @@ class EffectPrograms {
   const PassProgram& program(const EffectPass& pass);
   // The program of the named pass, or nullptr when there is no such pass.
   const PassProgram* program(std::string_view technique, std::string_view pass);
+  // One stage compiled on its own, not linked into a pass: the other choices of a shader
+  // array (StageUnit::choices), for tools that check every shader an effect holds. nullopt
+  // when the stage has no unit (assembly, invalid).
+  std::optional<StageProgram> compile_alone(const StageUnit& stage);
   // Whether `pass` has been compiled already (no compile happens).
   bool is_compiled(const EffectPass& pass) const;
 

@@ -36,6 +36,13 @@ struct StageUnit {
   std::string entry_point;              // the unit's entry: "PS", "PS__fx_args" or "main"
   std::string unsupported;              // why no unit is built (assembly, invalid)
   SourceRange range;                    // the state assignment naming the shader
+  // A shader array indexed in the pass (`VertexShader = (VSArray[VSIndices[ShaderIndex]]);`,
+  // as the XNA stock effects choose their shader permutations): every element in order, and
+  // which one the index selects with the parameters' initial values. The stage's own fields
+  // are that element's, so the pass compiles and draws it.
+  std::vector<StageUnit> choices;
+  size_t choice = 0;
+  std::string selector;                 // the index expression, spelled
 };
 
 // One pass of one technique with the stages it names, in pipeline order.
