@@ -11,6 +11,8 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
+#include <glslang/SPIRV/SpvTools.h>
+#include <spirv-tools/optimizer.hpp>
 
 #include "fx/compile/spirv_cache.h"
 #include "glslang_reflect.h"
@@ -97,6 +99,23 @@ bool uses_d3d9_sampler_intrinsics(std::string_view hlsl) {
     if (end < rest.size() && rest[end] == '(') return true;
   }
   return false;
+}
+
+// fxc unrolls `[unroll]` loops and then needs every texture offset to be an immediate;
+// glslang's legalization unrolls nothing, so an offset stepped by the loop stays a variable,
+// which Vulkan allows only for gathers. Full unrolling and constant folding make it a
+// ConstOffset (the folder rewrites the operand once it is constant).
+void unroll_and_fold(std::vector<uint32_t>& spirv, spv_target_env env) {
+  spvtools::Optimizer optimizer(env);
+  optimizer.RegisterPass(spvtools::CreateLoopUnrollPass(true))
+      .RegisterPass(spvtools::CreateCCPPass())
+      .RegisterPass(spvtools::CreateSimplificationPass())
+      .RegisterPass(spvtools::CreateAggressiveDCEPass());
+  // The input is invalid until these passes ran (that is why they run): no validation first.
+  spvtools::OptimizerOptions options;
+  options.set_run_validator(false);
+  std::vector<uint32_t> out;
+  if (optimizer.Run(spirv.data(), spirv.size(), &out, options)) spirv = std::move(out);
 }
 
 CompiledShader rejected(std::string text) {
@@ -217,8 +236,13 @@ CompiledShader ShaderCompiler::run_glslang(const TranslationUnit& unit, const Sh
     spv::SpvBuildLogger logger;
     // glslang can emit invalid SPIR-V for code it accepts (D3D9 sampler2D/tex2D under an SM4
     // profile): SPIRV-Tools' validator turns that into an error instead of a driver crash.
-    spv.validate = options_.validate;
+    // Validation runs after fxkit's own passes, not inside GlslangToSpv, before them.
+    spv.validate = false;
     glslang::GlslangToSpv(*program->getIntermediate(stage), out.spirv, &logger, &spv);
+    if (hlsl && spirv::variable_image_offsets(out.spirv))
+      unroll_and_fold(out.spirv, glslang::MapToSpirvToolsEnv(program->getIntermediate(stage)->getSpv(), &logger));
+    if (options_.validate && !out.spirv.empty())
+      glslang::SpirvToolsValidate(*program->getIntermediate(stage), out.spirv, &logger, false);
     std::string spv_log = logger.getAllMessages();
     for (size_t pos = 0; pos < spv_log.size();) {
       size_t nl = spv_log.find('\n', pos);

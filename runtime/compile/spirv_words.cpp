@@ -141,6 +141,36 @@ bool strip_hlsl_semantics(std::vector<uint32_t>& w) {
   return true;
 }
 
+size_t variable_image_offsets(const std::vector<uint32_t>& w) {
+  constexpr uint32_t kOpConstant = 43, kOpConstantComposite = 44, kOpConstantNull = 46;
+  constexpr uint32_t kImageOperandsOffset = 0x10;
+  std::vector<bool> constant;
+  // The word of the image operands mask, by opcode: after result type, result, image,
+  // coordinate (and the depth reference where there is one). Gathers may keep Offset.
+  auto mask_word = [](uint32_t op) -> uint32_t {
+    switch (op) {
+      case 87: case 88: case 91: case 92: case 95: return 5;  // Sample(Proj)(Implicit|Explicit)Lod, Fetch
+      case 89: case 90: case 93: case 94: return 6;            // Sample(Proj)Dref...
+      default: return 0;
+    }
+  };
+  size_t found = 0;
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t count) {
+    if ((op == kOpConstant || op == kOpConstantComposite || op == kOpConstantNull) && count >= 3) {
+      if (constant.size() <= w[i + 2]) constant.resize(w[i + 2] + 1, false);
+      constant[w[i + 2]] = true;
+      return;
+    }
+    const uint32_t at = mask_word(op);
+    if (!at || count <= at || !(w[i + at] & kImageOperandsOffset)) return;
+    // Operands follow the mask in bit order: Bias, Lod, Grad (two ids), then Offset.
+    const uint32_t mask = w[i + at];
+    const uint32_t operand = at + 1 + ((mask & 0x1) ? 1 : 0) + ((mask & 0x2) ? 1 : 0) + ((mask & 0x4) ? 2 : 0);
+    if (operand < count && !(w[i + operand] < constant.size() && constant[w[i + operand]])) ++found;
+  });
+  return found;
+}
+
 std::map<uint32_t, SetBinding> variable_bindings(const std::vector<uint32_t>& w) {
   std::map<uint32_t, SetBinding> out;
   std::map<uint32_t, bool> has_binding;

@@ -30,6 +30,10 @@ size_t remap_locations(std::vector<uint32_t>& words, Interface side, const std::
 // module needs no device extension. Returns false when `words` is not a SPIR-V module.
 bool strip_hlsl_semantics(std::vector<uint32_t>& words);
 
+// How many image samples or fetches take a non-constant Offset operand, which Vulkan allows
+// only for gathers (HLSL's `t.Sample(s, uv, int2(i, 0))` in an [unroll] loop).
+size_t variable_image_offsets(const std::vector<uint32_t>& words);
+
 // (set, binding) pair of a descriptor.
 using SetBinding = std::pair<uint32_t, uint32_t>;
 // Rewrites DescriptorSet/Binding decorations of every variable whose current pair is a key
