@@ -135,6 +135,7 @@ bool Parser::parse_declarator_head(ast::Variable& v) {
                "expected a name for the declaration, found " + describe(tok()));
     return false;
   }
+  if (!check_name(tok(), "a variable")) return false;
   v.name = keep(tok().text());
   v.name_range = tok().range();
   advance();
@@ -160,6 +161,7 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
     f->return_type = type;
     f->attributes.reserve(arena_, attributes.size());
     for (const std::string& a : attributes) f->attributes.push_back(arena_, keep(a));
+    if (!check_name(tok(), "a function")) return;
     f->name = keep(tok().text());
     f->name_range = tok().range();
     advance();
@@ -264,6 +266,7 @@ bool Parser::parse_parameter(ast::Variable& p) {
     error_here("expected-identifier", "expected a parameter name, found " + describe(tok()));
     return false;
   }
+  if (!check_name(tok(), "a parameter")) return false;
   p.name = keep(tok().text());
   p.name_range = tok().range();
   advance();
@@ -332,6 +335,7 @@ void Parser::parse_struct(std::vector<ast::Decl>& out) {
     error_here("expected-identifier", "expected a struct name, found " + describe(tok()));
     return;
   }
+  if (!check_name(tok(), "a struct")) return;
   s->name = keep(tok().text());
   s->name_range = tok().range();
   advance();
@@ -359,6 +363,7 @@ void Parser::parse_typedef(std::vector<ast::Decl>& out) {
       error_here("expected-identifier", "expected a typedef name, found " + describe(tok()));
       return;
     }
+    if (!check_name(tok(), "a type")) return;
     t->name = keep(advance().text());
     if (!parse_array_dims(t->array_dims)) return;
     ast::Decl d;

@@ -310,9 +310,9 @@ ast::ExprPtr Parser::parse_identifier_expr() {
     advance();
     return e;
   }
-  if (word == "compile") return parse_compile();
+  if (iequals(word, "compile")) return parse_compile();
   if (braces_follow && (iequals(word, "asm") || iequals(word, "decl"))) return parse_asm();
-  if (braces_follow && (word == "sampler_state" || word == "stateblock_state")) {
+  if (braces_follow && (iequals(word, "sampler_state") || iequals(word, "stateblock_state"))) {
     auto e = make(ast::ExprKind::state_block, first);
     e->text = keep(advance().text());
     if (!parse_state_list(e->states, e->text)) return nullptr;

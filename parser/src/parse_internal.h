@@ -86,6 +86,8 @@ class Parser {
   void parse_top_level(std::vector<ast::Decl>& out);
   bool parse_attributes(std::vector<std::string>& out);
   void parse_glsl_block(std::vector<ast::Decl>& out);
+  // Reports `keyword-as-name` when `name` is an effect keyword: "cannot name <what>".
+  bool check_name(const Token& name, std::string_view what);
 
   // --- declarations (parse_decl.cpp) ---
   uint32_t parse_storage();
@@ -160,6 +162,10 @@ class Parser {
 // Keyword tests shared by the parts.
 bool is_storage_keyword(std::string_view word, uint32_t& bit);
 bool is_state_object_kind(std::string_view word);
+// 9, 10 or 11 for `technique`, `technique10`, `technique11` in any case; 0 otherwise.
+int technique_version(std::string_view word);
+// An effect keyword, which the D3DX lexer matches in any case (`Pass`, `COMPILE`).
+bool is_effect_keyword(std::string_view word);
 std::string quote(std::string_view text);  // 'text' for messages
 std::string describe(const Token& t);      // 'text', or "end of file"
 // Appends a token's spelling to text rebuilt from tokens, with a space between words.
