@@ -36,6 +36,8 @@ enum StorageClass : uint32_t {
   // Geometry shader input primitives in front of a parameter (`triangle VSOut v[3]`).
   kPoint = 1u << 19, kLine = 1u << 20, kTriangle = 1u << 21, kLineAdj = 1u << 22,
   kTriangleAdj = 1u << 23,
+  // Resource element normalisation (`unorm float4`), for typed buffers and textures.
+  kUnorm = 1u << 24, kSnorm = 1u << 25,
 };
 
 // A type as written: `float4x4`, `texture2D`, `Texture2D<float4>`, `sampler_state`, a
@@ -199,6 +201,7 @@ struct StateObject {
 
 struct ConstantBuffer {
   bool texture_buffer = false;  // tbuffer
+  bool shared = false;          // `shared cbuffer`: in the effect pool (fx_4_0/fx_5_0)
   Text name;
   SourceRange name_range;
   Text register_binding;

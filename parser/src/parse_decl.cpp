@@ -379,9 +379,10 @@ void Parser::parse_typedef(std::vector<ast::Decl>& out) {
   }
 }
 
-void Parser::parse_constant_buffer(std::vector<ast::Decl>& out) {
-  uint32_t first = pos_;
+void Parser::parse_constant_buffer(std::vector<ast::Decl>& out, uint32_t first) {
+  uint32_t keyword = pos_;
   ast::ConstantBuffer* cb = declarations_.make<ast::ConstantBuffer>();
+  cb->shared = keyword != first;
   cb->texture_buffer = advance().text() == "tbuffer";
   cb->name = keep(tok().text());
   cb->name_range = tok().range();
@@ -392,7 +393,7 @@ void Parser::parse_constant_buffer(std::vector<ast::Decl>& out) {
   if (!parse_member_list(cb->members, "constant buffer")) return;
   accept(TokenKind::semi);
   cb->range = range_from(first);
-  cb->tokens = span_from(first);
+  cb->tokens = span_from(keyword);
   ast::Decl d;
   d.kind = ast::DeclKind::constant_buffer;
   d.constant_buffer = cb;

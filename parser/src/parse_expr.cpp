@@ -280,8 +280,17 @@ ast::ExprPtr Parser::parse_primary() {
                    "expected a parameter name after '<', found " + describe(tok()));
         return nullptr;
       }
-      auto e = make(ast::ExprKind::reference, first);
+      ast::ExprPtr e = make(ast::ExprKind::reference, first);
       e->text = keep(advance().text());
+      // `<g_vLightPos[0]>` is an element: an index node over the reference, as `a[0]`.
+      while (at(TokenKind::l_square)) {
+        advance();
+        auto index = make(ast::ExprKind::index, first);
+        ast::ExprPtr subscript = parse_expression();
+        if (failed_ || !expect(TokenKind::r_square, "after index")) return nullptr;
+        index->args = expressions_.list({e, subscript});
+        e = index;
+      }
       split_greater();
       if (!expect(TokenKind::greater, "to close the parameter reference")) return nullptr;
       e->range = range_from(first);

@@ -104,7 +104,8 @@ class Parser {
   bool parse_member_list(ast::List<ast::Variable>& members, std::string_view what);
   void parse_struct(std::vector<ast::Decl>& out);
   void parse_typedef(std::vector<ast::Decl>& out);
-  void parse_constant_buffer(std::vector<ast::Decl>& out);
+  // At `cbuffer`/`tbuffer`; `first` is the declaration's first token (`shared`, if any).
+  void parse_constant_buffer(std::vector<ast::Decl>& out, uint32_t first);
   void finish_state_object(std::vector<ast::Decl>& out, ast::Variable& head, uint32_t first);
 
   // --- effect blocks (parse_technique.cpp) ---

@@ -254,7 +254,11 @@ void Parser::parse_top_level(std::vector<ast::Decl>& out) {
   } else if (word == "fxgroup") {
     parse_group(out);
   } else if ((word == "cbuffer" || word == "tbuffer") && peek().is(TokenKind::identifier)) {
-    parse_constant_buffer(out);
+    parse_constant_buffer(out, first);
+  } else if (word == "shared" && (peek().is_identifier("cbuffer") || peek().is_identifier("tbuffer")) &&
+             peek(2).is(TokenKind::identifier)) {
+    advance();  // shared: kept as a flag, the buffer's tokens start at `cbuffer`
+    parse_constant_buffer(out, first);
   } else if (word == "struct") {
     parse_struct(out);
   } else if (word == "typedef") {
@@ -327,6 +331,7 @@ bool is_storage_keyword(std::string_view word, uint32_t& bit) {
       {"inline", ast::kInline},         {"point", ast::kPoint},
       {"line", ast::kLine},             {"triangle", ast::kTriangle},
       {"lineadj", ast::kLineAdj},       {"triangleadj", ast::kTriangleAdj},
+      {"unorm", ast::kUnorm},           {"snorm", ast::kSnorm},
   };
   // Most words are not modifiers: the first letter picks the few rows to compare (a bit
   // per row of kWords), and most letters pick none.

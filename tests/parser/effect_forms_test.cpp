@@ -1,0 +1,88 @@
+// Forms that fxc accepts in real effect files (issue 17): each must preprocess, parse and
+// check with no diagnostic, and come out as the syntax tree says.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "fx/diagnostic_render.h"
+#include "fx/frontend.h"
+
+namespace fx {
+namespace {
+
+struct FrontEnd {
+  SourceManager sm;
+  DiagnosticSink diags;
+  ParsedEffect parsed;
+  std::string text() const { return render_text(diags.diagnostics(), sm); }
+  const ast::Decl& decl(size_t i) const { return parsed.ast.decls.at(i); }
+};
+
+std::unique_ptr<FrontEnd> run(std::string source, EffectProfile profile = EffectProfile::automatic) {
+  auto f = std::make_unique<FrontEnd>();
+  FrontEndOptions options;
+  options.check.profile = profile;
+  f->parsed = parse_effect_text("t.fx", std::move(source), f->sm, f->diags, options);
+  return f;
+}
+
+#define EXPECT_CLEAN(f) EXPECT_EQ((f)->text(), "") << "unexpected diagnostics"
+
+TEST(EffectForms, SharedConstantBuffer) {
+  auto f = run(
+      "shared cbuffer Pool { float4 Shared; };\n"
+      "cbuffer Own { float4 Mine; }\n"
+      "technique10 T { pass P { } }\n");
+  EXPECT_CLEAN(f);
+  ASSERT_EQ(f->decl(0).kind, ast::DeclKind::constant_buffer);
+  const ast::ConstantBuffer& pool = *f->decl(0).constant_buffer;
+  EXPECT_TRUE(pool.shared);
+  EXPECT_EQ(pool.name, "Pool");
+  // The shader compiler's tokens start at `cbuffer`; the range covers `shared`.
+  EXPECT_EQ(f->parsed.ast.tokens.at(pool.tokens.first).text(), "cbuffer");
+  EXPECT_EQ(f->sm.presumed(pool.range.begin).column, 1u);
+  EXPECT_FALSE(f->decl(1).constant_buffer->shared);
+}
+
+TEST(EffectForms, NormalisedResourceElements) {
+  auto f = run(
+      "struct S { snorm float a; unorm float4 b; };\n"
+      "Buffer<unorm float4> Colours;\n"
+      "technique10 T { pass P { } }\n");
+  EXPECT_CLEAN(f);
+  const ast::Struct& s = *f->decl(0).structure;
+  EXPECT_EQ(s.members[0].storage, uint32_t(ast::kSnorm));
+  EXPECT_EQ(s.members[1].storage, uint32_t(ast::kUnorm));
+  EXPECT_EQ(s.members[1].type.name, "float4");
+}
+
+TEST(EffectForms, IndexedParameterReference) {
+  auto f = run(
+      "float4 g_vLightPos[2]; float4x4 m[2];\n"
+      "technique T { pass P { LightPosition[0] = <g_vLightPos[1]>;\n"
+      "  VertexShaderConstant4[0] = <m[0]>; } }\n");
+  EXPECT_CLEAN(f);
+  const ast::Expr& value = *f->decl(2).technique->passes[0].states[0].value;
+  ASSERT_EQ(value.kind, ast::ExprKind::index);
+  ASSERT_EQ(value.args.size(), 2u);
+  EXPECT_EQ(value.args[0]->kind, ast::ExprKind::reference);
+  EXPECT_EQ(value.args[0]->text, "g_vLightPos");
+  EXPECT_EQ(value.args[1]->number, 1);
+  auto g = run("technique T { pass P { LightPosition[0] = <missing[0]>; } }\n");
+  ASSERT_EQ(g->diags.diagnostics().size(), 1u) << g->text();
+  EXPECT_EQ(g->diags.diagnostics()[0].id, "undefined-reference");
+}
+
+TEST(EffectForms, StateBlockInAPass) {
+  auto f = run(
+      "stateblock Opaque = stateblock_state { CullMode = None; ZWriteEnable = false; };\n"
+      "technique T { pass { StateBlock = <Opaque>; } }\n");
+  EXPECT_CLEAN(f);
+  // Only a stateblock variable will do.
+  auto g = run("float4 c;\ntechnique T { pass { StateBlock = <c>; } }\n");
+  ASSERT_EQ(g->diags.diagnostics().size(), 1u) << g->text();
+  EXPECT_EQ(g->diags.diagnostics()[0].id, "state-type-mismatch");
+}
+
+}  // namespace
+}  // namespace fx
