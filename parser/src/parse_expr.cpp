@@ -203,13 +203,9 @@ ast::ExprPtr Parser::parse_unary() {
 ast::ExprPtr Parser::parse_postfix_operators(ast::ExprPtr e, uint32_t first) {
   for (;;) {
     if (at(TokenKind::l_square)) {
-      advance();
-      auto index = make(ast::ExprKind::index, first);
-      ast::ExprPtr subscript = parse_expression();
-      if (failed_ || !expect(TokenKind::r_square, "after index")) return nullptr;
-      index->args = expressions_.list({e, subscript});
-      index->range = range_from(first);
-      e = std::move(index);
+      e = parse_index(e, first);
+      if (!e) return nullptr;
+      e->range = range_from(first);
     } else if (at(TokenKind::period) && peek().is(TokenKind::identifier)) {
       advance();
       auto member = make(ast::ExprKind::member, first);
@@ -221,6 +217,15 @@ ast::ExprPtr Parser::parse_postfix_operators(ast::ExprPtr e, uint32_t first) {
       return e;
     }
   }
+}
+
+ast::ExprPtr Parser::parse_index(ast::ExprPtr e, uint32_t first) {
+  advance();  // [
+  auto index = make(ast::ExprKind::index, first);
+  ast::ExprPtr subscript = parse_expression();
+  if (failed_ || !expect(TokenKind::r_square, "after index")) return nullptr;
+  index->args = expressions_.list({e, subscript});
+  return index;
 }
 
 ast::ExprPtr Parser::parse_primary() {
@@ -283,14 +288,8 @@ ast::ExprPtr Parser::parse_primary() {
       ast::ExprPtr e = make(ast::ExprKind::reference, first);
       e->text = keep(advance().text());
       // `<g_vLightPos[0]>` is an element: an index node over the reference, as `a[0]`.
-      while (at(TokenKind::l_square)) {
-        advance();
-        auto index = make(ast::ExprKind::index, first);
-        ast::ExprPtr subscript = parse_expression();
-        if (failed_ || !expect(TokenKind::r_square, "after index")) return nullptr;
-        index->args = expressions_.list({e, subscript});
-        e = index;
-      }
+      while (at(TokenKind::l_square))
+        if (!(e = parse_index(e, first))) return nullptr;
       split_greater();
       if (!expect(TokenKind::greater, "to close the parameter reference")) return nullptr;
       e->range = range_from(first);

@@ -128,6 +128,8 @@ class Parser {
     return at(TokenKind::l_square) || at(TokenKind::period) ? parse_postfix_operators(e, first) : e;
   }
   ast::ExprPtr parse_postfix_operators(ast::ExprPtr e, uint32_t first);
+  // `[subscript]` after `e` (at the '['): the index node, its range still to be set.
+  ast::ExprPtr parse_index(ast::ExprPtr e, uint32_t first);
   ast::ExprPtr parse_primary();
   ast::ExprPtr parse_identifier_expr();
   ast::ExprPtr parse_compile();
