@@ -195,6 +195,9 @@ struct StateObject {
   List<ExprPtr> array_dims;
   List<Annotation> annotations;
   List<StateAssignment> states;
+  // An array written with one `{ ... }` per element (`BlendState B[2] { { ... }, { ... } };`):
+  // each element's states, and `states` is empty.
+  List<List<StateAssignment>> element_states;
   Text register_binding;
   SourceRange range;
 };

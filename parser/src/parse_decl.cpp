@@ -214,13 +214,29 @@ void Parser::finish_state_object(std::vector<ast::Decl>& out, ast::Variable& hea
   so->array_dims = head.array_dims;
   so->annotations = head.annotations;
   so->register_binding = head.register_binding;
-  if (!parse_state_list(so->states, "state object")) return;
+  if (peek().is(TokenKind::l_brace) ? !parse_element_states(so->element_states)
+                                    : !parse_state_list(so->states, "state object"))
+    return;
   accept(TokenKind::semi);
   so->range = range_from(first);
   ast::Decl d;
   d.kind = ast::DeclKind::state_object;
   d.state_object = so;
   out.push_back(d);
+}
+
+bool Parser::parse_element_states(ast::List<ast::List<ast::StateAssignment>>& out) {
+  Token open = advance();  // {
+  while (!accept(TokenKind::r_brace)) {
+    if (!parse_state_list(out.emplace_back(arena_), "state object element")) return false;
+    if (accept(TokenKind::comma) || at(TokenKind::r_brace)) continue;
+    if (Diagnostic* d = error_here("expected-token",
+                                   "expected ',' or '}' after a state object element, found " +
+                                       describe(tok())))
+      d->notes.push_back({open.loc, "to match this '{'"});
+    return false;
+  }
+  return true;
 }
 
 bool Parser::parse_function(ast::Function& f) {

@@ -107,6 +107,8 @@ class Parser {
   // At `cbuffer`/`tbuffer`; `first` is the declaration's first token (`shared`, if any).
   void parse_constant_buffer(std::vector<ast::Decl>& out, uint32_t first);
   void finish_state_object(std::vector<ast::Decl>& out, ast::Variable& head, uint32_t first);
+  // `{ { states }, { states } }`: one state list per array element.
+  bool parse_element_states(ast::List<ast::List<ast::StateAssignment>>& out);
 
   // --- effect blocks (parse_technique.cpp) ---
   bool parse_annotations(ast::List<ast::Annotation>& out);

@@ -84,5 +84,29 @@ TEST(EffectForms, StateBlockInAPass) {
   EXPECT_EQ(g->diags.diagnostics()[0].id, "state-type-mismatch");
 }
 
+// An array of state objects with one initializer per element, each checked on its own:
+// the same state in two elements is no duplicate, a wrong value in one still is an error.
+TEST(EffectForms, StateObjectArrayWithElementInitializers) {
+  auto f = run(
+      "int i;\n"
+      "BlendState Blends[3] { { BlendOp = Add; }, { BlendOp = Subtract; }, { BlendOp = Rev_Subtract; } };\n"
+      "DepthStencilState Depths[2] { { DepthFunc = 1; }, { DepthFunc = i + 2; }, };\n"
+      "technique10 T { pass P { SetBlendState(Blends[i * 2 + 1], float4(0, 0, 0, 0), 0xFFFFFFFF);\n"
+      "  SetDepthStencilState(Depths[i], 0); } }\n");
+  EXPECT_CLEAN(f);
+  const ast::StateObject& blends = *f->decl(1).state_object;
+  EXPECT_TRUE(blends.states.empty());
+  ASSERT_EQ(blends.element_states.size(), 3u);
+  EXPECT_EQ(blends.element_states[2][0].name, "BlendOp");
+  EXPECT_EQ(blends.element_states[2][0].value->text, "Rev_Subtract");
+  EXPECT_EQ(f->decl(2).state_object->element_states.size(), 2u);
+  auto g = run("BlendState B[2] { { BlendOp = Add; }, { BlendOp = Sum; } };\n"
+               "technique10 T { pass P { } }\n");
+  ASSERT_EQ(g->diags.diagnostics().size(), 1u) << g->text();
+  EXPECT_EQ(g->diags.diagnostics()[0].id, "unknown-state-value");
+  auto h = run("BlendState B[2] { { BlendOp = Add; } { BlendOp = Add; } };\nfloat after;\n");
+  EXPECT_EQ(h->diags.diagnostics().at(0).id, "expected-token") << h->text();
+}
+
 }  // namespace
 }  // namespace fx
