@@ -42,10 +42,13 @@ enum StorageClass : uint32_t {
 
 // A type as written: `float4x4`, `texture2D`, `Texture2D<float4>`, `sampler_state`, a
 // struct or typedef name. Resolution to a semantic type is the compiler's job.
+struct Struct;
 struct TypeRef {
-  Text name;
+  Text name;          // empty for an anonymous `struct { ... } member;`
   Text template_arg;  // `Texture2D<float4>` -> "float4" (empty if none)
   SourceRange range;
+  // A struct defined in place, as the type of a member: `struct [Name] { ... } member;`.
+  const Struct* definition = nullptr;
 };
 
 struct Expr;

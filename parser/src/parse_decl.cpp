@@ -24,6 +24,8 @@ bool Parser::parse_type(ast::TypeRef& type) {
     return false;
   }
   uint32_t first = pos_;
+  // `struct InnerStruct member;`: the C spelling of a struct type names the same type.
+  if (at_ident("struct") && peek().is(TokenKind::identifier)) advance();
   // Compared as the token's string_view, which tests the length first: std::string's
   // compare with a literal calls memcmp for every type name.
   std::string_view word = advance().text();
@@ -319,7 +321,10 @@ bool Parser::parse_member_list(ast::List<ast::Variable>& members, std::string_vi
     size_t first_member = members.size();
     uint32_t storage = parse_storage();
     ast::TypeRef type;
-    if (parse_type(type)) {
+    const bool defines_struct =
+        at_ident("struct") && (peek().is(TokenKind::l_brace) ||
+                               (peek().is(TokenKind::identifier) && peek(2).is(TokenKind::l_brace)));
+    if (defines_struct ? parse_member_struct(type) : parse_type(type)) {
       for (;;) {
         ast::Variable& v = members.emplace_back(arena_);  // in place, see parse_annotations
         v.storage = storage;
@@ -340,6 +345,28 @@ bool Parser::parse_member_list(ast::List<ast::Variable>& members, std::string_vi
     if (failed_) recover(depth);
   }
   advance();
+  return true;
+}
+
+bool Parser::parse_member_struct(ast::TypeRef& type) {
+  uint32_t first = pos_;
+  advance();  // struct
+  ast::Struct* s = declarations_.make<ast::Struct>();
+  if (at(TokenKind::identifier)) {
+    if (!check_name(tok(), "a struct")) return false;
+    s->name = keep(tok().text());
+    s->name_range = tok().range();
+    advance();
+  }
+  if (!enter_nesting()) return false;  // structs in structs recurse
+  bool ok = parse_member_list(s->members, "struct");
+  leave_nesting();
+  if (!ok) return false;
+  s->range = range_from(first);
+  s->tokens = span_from(first);
+  type.name = s->name;
+  type.range = s->range;
+  type.definition = s;
   return true;
 }
 

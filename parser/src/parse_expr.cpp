@@ -174,12 +174,14 @@ ast::ExprPtr Parser::parse_unary() {
       break;
     }
     case TokenKind::l_paren:
-      // `(float3)x` is a cast when a lone name in parentheses is followed by an operand.
-      if (peek(1).is(TokenKind::identifier) && peek(2).is(TokenKind::r_paren) &&
-          starts_operand(peek(3).kind)) {
+      // `(float3)x` is a cast when a lone name in parentheses is followed by an operand;
+      // so is `(float2[32])x`, with constant array sizes.
+      if (size_t close = cast_close(); close != 0) {
         result = make(ast::ExprKind::cast, first);
         advance();
-        result->text = keep(advance().text());
+        std::string type;
+        while (pos_ < first + close) append_spelling(type, advance());
+        result->text = keep(type);
         advance();
         ast::ExprPtr operand = parse_unary();
         if (failed_) {
@@ -198,6 +200,15 @@ ast::ExprPtr Parser::parse_unary() {
   }
   leave_nesting();
   return failed_ ? nullptr : std::move(result);
+}
+
+size_t Parser::cast_close() const {
+  if (!peek(1).is(TokenKind::identifier)) return 0;
+  size_t i = 2;
+  while (peek(i).is(TokenKind::l_square) && peek(i + 1).is(TokenKind::integer) &&
+         peek(i + 2).is(TokenKind::r_square))
+    i += 3;
+  return peek(i).is(TokenKind::r_paren) && starts_operand(peek(i + 1).kind) ? i : 0;
 }
 
 ast::ExprPtr Parser::parse_postfix_operators(ast::ExprPtr e, uint32_t first) {

@@ -103,6 +103,8 @@ class Parser {
   bool parse_parameter(ast::Variable& p);
   bool parse_member_list(ast::List<ast::Variable>& members, std::string_view what);
   void parse_struct(std::vector<ast::Decl>& out);
+  // `struct [Name] { members }` as a member's type (at `struct`).
+  bool parse_member_struct(ast::TypeRef& type);
   void parse_typedef(std::vector<ast::Decl>& out);
   // At `cbuffer`/`tbuffer`; `first` is the declaration's first token (`shared`, if any).
   void parse_constant_buffer(std::vector<ast::Decl>& out, uint32_t first);
@@ -130,6 +132,9 @@ class Parser {
     return at(TokenKind::l_square) || at(TokenKind::period) ? parse_postfix_operators(e, first) : e;
   }
   ast::ExprPtr parse_postfix_operators(ast::ExprPtr e, uint32_t first);
+  // At '(': how far ahead the ')' of a cast's type (`(float3)`, `(float2[32])`) is, when
+  // an operand follows it; 0 when this is no cast.
+  size_t cast_close() const;
   // `[subscript]` after `e` (at the '['): the index node, its range still to be set.
   ast::ExprPtr parse_index(ast::ExprPtr e, uint32_t first);
   ast::ExprPtr parse_primary();

@@ -108,5 +108,51 @@ TEST(EffectForms, StateObjectArrayWithElementInitializers) {
   EXPECT_EQ(h->diags.diagnostics().at(0).id, "expected-token") << h->text();
 }
 
+// Structs written in place as a member's type, named or anonymous, nested, in a struct or
+// a cbuffer; and the C spelling `struct Name` of a struct type.
+TEST(EffectForms, StructsDefinedInPlace) {
+  auto f = run(
+      "struct Inner { float a; };\n"
+      "struct Outer {\n"
+      "  struct { float foo; float bar; } anonymous;\n"
+      "  struct Named { float baz; struct Inner deeper; } named[2];\n"
+      "};\n"
+      "cbuffer B { struct { float2 v1; float2 v2; } block; float after; };\n"
+      "struct Inner top;\n"
+      "technique10 T { pass P { } }\n");
+  EXPECT_CLEAN(f);
+  const ast::Struct& outer = *f->decl(1).structure;
+  ASSERT_EQ(outer.members.size(), 2u);
+  const ast::TypeRef& anonymous = outer.members[0].type;
+  EXPECT_EQ(anonymous.name, "");
+  ASSERT_NE(anonymous.definition, nullptr);
+  EXPECT_EQ(anonymous.definition->members.size(), 2u);
+  const ast::Variable& named = outer.members[1];
+  EXPECT_EQ(named.name, "named");
+  EXPECT_EQ(named.type.name, "Named");
+  EXPECT_EQ(named.array_dims.size(), 1u);
+  EXPECT_EQ(named.type.definition->members[1].type.name, "Inner");
+  EXPECT_EQ(f->decl(2).constant_buffer->members.size(), 2u);
+  ASSERT_EQ(f->decl(3).kind, ast::DeclKind::variable);
+  EXPECT_EQ(f->decl(3).variable->type.name, "Inner");
+}
+
+TEST(EffectForms, ArrayCasts) {
+  auto f = run(
+      "float4 source[16];\n"
+      "static float2 packed[32] = (float2[32])source;\n"
+      "float2 two[2] = (float2[2])float4(1, 2, 3, 4);\n"
+      "technique T { pass P { } }\n");
+  EXPECT_CLEAN(f);
+  const ast::Expr& cast = *f->decl(1).variable->initializer;
+  ASSERT_EQ(cast.kind, ast::ExprKind::cast);
+  EXPECT_EQ(cast.text, "float2[32]");
+  EXPECT_EQ(cast.args[0]->text, "source");
+  // A parenthesised index is still no cast.
+  auto g = run("float a[2]; float b = (a[1]) + 1;\ntechnique T { pass P { } }\n");
+  EXPECT_CLEAN(g);
+  EXPECT_EQ(g->decl(1).variable->initializer->kind, ast::ExprKind::binary);
+}
+
 }  // namespace
 }  // namespace fx
