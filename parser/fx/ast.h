@@ -36,14 +36,19 @@ enum StorageClass : uint32_t {
   // Geometry shader input primitives in front of a parameter (`triangle VSOut v[3]`).
   kPoint = 1u << 19, kLine = 1u << 20, kTriangle = 1u << 21, kLineAdj = 1u << 22,
   kTriangleAdj = 1u << 23,
+  // Resource element normalisation (`unorm float4`), for typed buffers and textures.
+  kUnorm = 1u << 24, kSnorm = 1u << 25,
 };
 
 // A type as written: `float4x4`, `texture2D`, `Texture2D<float4>`, `sampler_state`, a
 // struct or typedef name. Resolution to a semantic type is the compiler's job.
+struct Struct;
 struct TypeRef {
-  Text name;
+  Text name;          // empty for an anonymous `struct { ... } member;`
   Text template_arg;  // `Texture2D<float4>` -> "float4" (empty if none)
   SourceRange range;
+  // A struct defined in place, as the type of a member: `struct [Name] { ... } member;`.
+  const Struct* definition = nullptr;
 };
 
 struct Expr;
@@ -193,12 +198,16 @@ struct StateObject {
   List<ExprPtr> array_dims;
   List<Annotation> annotations;
   List<StateAssignment> states;
+  // An array written with one `{ ... }` per element (`BlendState B[2] { { ... }, { ... } };`):
+  // each element's states, and `states` is empty.
+  List<List<StateAssignment>> element_states;
   Text register_binding;
   SourceRange range;
 };
 
 struct ConstantBuffer {
   bool texture_buffer = false;  // tbuffer
+  bool shared = false;          // `shared cbuffer`: in the effect pool (fx_4_0/fx_5_0)
   Text name;
   SourceRange name_range;
   Text register_binding;

@@ -127,8 +127,11 @@ void Checker::run() {
       case ast::DeclKind::state_object: {
         const ast::StateObject& o = *d.state_object;
         check_annotations(o.annotations);
-        if (std::optional<StateBlock> block = state_object_block(o.kind))
+        if (std::optional<StateBlock> block = state_object_block(o.kind)) {
           check_states(o.states, *block, 10);
+          for (const ast::List<ast::StateAssignment>& element : o.element_states)
+            check_states(element, *block, 10);
+        }
         break;
       }
       case ast::DeclKind::group: {

@@ -340,7 +340,8 @@ void Checker::check_value(const StateInfo& info, const ast::Expr& e) {
       return;
     case K::index:
       // `Blends[1]`, `Textures[i]`: the array must exist; element types are not tracked.
-      if (!e.args.empty() && e.args[0] && e.args[0]->kind == K::identifier &&
+      if (!e.args.empty() && e.args[0] &&
+          (e.args[0]->kind == K::identifier || e.args[0]->kind == K::reference) &&
           !lookup(e.args[0]->text))
         undefined("parameter", e.args[0]->text, e.args[0]->range,
                   names_of({Symbol::variable, Symbol::state_object}));
@@ -437,10 +438,13 @@ void Checker::check_symbol_type(const StateInfo& info, const Symbol& s, const as
     case StateValueType::shader:
       ok = s.kind == Symbol::glsl_block || (variable && shader_type_stage(s.type));
       break;
-    case StateValueType::state_object:
+    case StateValueType::state_object: {
+      // A D3D10/11 state object of the row's block, or a D3D9 `stateblock` variable.
+      std::optional<StateBlock> block = state_object_block(info.object_kind);
       ok = (s.kind == Symbol::state_object || variable) &&
-           state_object_block(s.type) == state_object_block(info.object_kind);
+           (block ? state_object_block(s.type) == block : iequals(s.type, info.object_kind));
       break;
+    }
     default: {
       std::string type = ascii_lower(s.type);
       bool object_var = type.rfind("texture", 0) == 0 || type.rfind("sampler", 0) == 0 ||

@@ -208,6 +208,9 @@ Lexer::Lexer(SourceManager& sm, BufferId buffer, DiagnosticSink& diags)
     : sm_(sm), diags_(diags), buffer_(buffer), text_(sm.buffer_text(buffer)),
       base_(sm.location(buffer, 0).raw) {
   if (!text_.data()) text_ = "";  // an invalid buffer: still a '\0' after the text
+  // Windows editors save effects (and their .fxh includes) with a UTF-8 byte-order mark,
+  // which fxc skips. Its bytes stay in the buffer, so line 1 columns still count them.
+  if (text_.starts_with("\xEF\xBB\xBF")) pos_ = 3;
 }
 
 // Removes backslash-newline pairs at the current position (translation phase 2).

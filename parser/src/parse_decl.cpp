@@ -24,6 +24,8 @@ bool Parser::parse_type(ast::TypeRef& type) {
     return false;
   }
   uint32_t first = pos_;
+  // `struct InnerStruct member;`: the C spelling of a struct type names the same type.
+  if (at_ident("struct") && peek().is(TokenKind::identifier)) advance();
   // Compared as the token's string_view, which tests the length first: std::string's
   // compare with a literal calls memcmp for every type name.
   std::string_view word = advance().text();
@@ -135,6 +137,7 @@ bool Parser::parse_declarator_head(ast::Variable& v) {
                "expected a name for the declaration, found " + describe(tok()));
     return false;
   }
+  if (!check_name(tok(), "a variable")) return false;
   v.name = keep(tok().text());
   v.name_range = tok().range();
   advance();
@@ -160,6 +163,7 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
     f->return_type = type;
     f->attributes.reserve(arena_, attributes.size());
     for (const std::string& a : attributes) f->attributes.push_back(arena_, keep(a));
+    if (!check_name(tok(), "a function")) return;
     f->name = keep(tok().text());
     f->name_range = tok().range();
     advance();
@@ -212,13 +216,29 @@ void Parser::finish_state_object(std::vector<ast::Decl>& out, ast::Variable& hea
   so->array_dims = head.array_dims;
   so->annotations = head.annotations;
   so->register_binding = head.register_binding;
-  if (!parse_state_list(so->states, "state object")) return;
+  if (peek().is(TokenKind::l_brace) ? !parse_element_states(so->element_states)
+                                    : !parse_state_list(so->states, "state object"))
+    return;
   accept(TokenKind::semi);
   so->range = range_from(first);
   ast::Decl d;
   d.kind = ast::DeclKind::state_object;
   d.state_object = so;
   out.push_back(d);
+}
+
+bool Parser::parse_element_states(ast::List<ast::List<ast::StateAssignment>>& out) {
+  Token open = advance();  // {
+  while (!accept(TokenKind::r_brace)) {
+    if (!parse_state_list(out.emplace_back(arena_), "state object element")) return false;
+    if (accept(TokenKind::comma) || at(TokenKind::r_brace)) continue;
+    if (Diagnostic* d = error_here("expected-token",
+                                   "expected ',' or '}' after a state object element, found " +
+                                       describe(tok())))
+      d->notes.push_back({open.loc, "to match this '{'"});
+    return false;
+  }
+  return true;
 }
 
 bool Parser::parse_function(ast::Function& f) {
@@ -264,6 +284,7 @@ bool Parser::parse_parameter(ast::Variable& p) {
     error_here("expected-identifier", "expected a parameter name, found " + describe(tok()));
     return false;
   }
+  if (!check_name(tok(), "a parameter")) return false;
   p.name = keep(tok().text());
   p.name_range = tok().range();
   advance();
@@ -300,7 +321,10 @@ bool Parser::parse_member_list(ast::List<ast::Variable>& members, std::string_vi
     size_t first_member = members.size();
     uint32_t storage = parse_storage();
     ast::TypeRef type;
-    if (parse_type(type)) {
+    const bool defines_struct =
+        at_ident("struct") && (peek().is(TokenKind::l_brace) ||
+                               (peek().is(TokenKind::identifier) && peek(2).is(TokenKind::l_brace)));
+    if (defines_struct ? parse_member_struct(type) : parse_type(type)) {
       for (;;) {
         ast::Variable& v = members.emplace_back(arena_);  // in place, see parse_annotations
         v.storage = storage;
@@ -324,6 +348,28 @@ bool Parser::parse_member_list(ast::List<ast::Variable>& members, std::string_vi
   return true;
 }
 
+bool Parser::parse_member_struct(ast::TypeRef& type) {
+  uint32_t first = pos_;
+  advance();  // struct
+  ast::Struct* s = declarations_.make<ast::Struct>();
+  if (at(TokenKind::identifier)) {
+    if (!check_name(tok(), "a struct")) return false;
+    s->name = keep(tok().text());
+    s->name_range = tok().range();
+    advance();
+  }
+  if (!enter_nesting()) return false;  // structs in structs recurse
+  bool ok = parse_member_list(s->members, "struct");
+  leave_nesting();
+  if (!ok) return false;
+  s->range = range_from(first);
+  s->tokens = span_from(first);
+  type.name = s->name;
+  type.range = s->range;
+  type.definition = s;
+  return true;
+}
+
 void Parser::parse_struct(std::vector<ast::Decl>& out) {
   uint32_t first = pos_;
   advance();  // struct
@@ -332,6 +378,7 @@ void Parser::parse_struct(std::vector<ast::Decl>& out) {
     error_here("expected-identifier", "expected a struct name, found " + describe(tok()));
     return;
   }
+  if (!check_name(tok(), "a struct")) return;
   s->name = keep(tok().text());
   s->name_range = tok().range();
   advance();
@@ -359,6 +406,7 @@ void Parser::parse_typedef(std::vector<ast::Decl>& out) {
       error_here("expected-identifier", "expected a typedef name, found " + describe(tok()));
       return;
     }
+    if (!check_name(tok(), "a type")) return;
     t->name = keep(advance().text());
     if (!parse_array_dims(t->array_dims)) return;
     ast::Decl d;
@@ -374,9 +422,10 @@ void Parser::parse_typedef(std::vector<ast::Decl>& out) {
   }
 }
 
-void Parser::parse_constant_buffer(std::vector<ast::Decl>& out) {
-  uint32_t first = pos_;
+void Parser::parse_constant_buffer(std::vector<ast::Decl>& out, uint32_t first) {
+  uint32_t keyword = pos_;
   ast::ConstantBuffer* cb = declarations_.make<ast::ConstantBuffer>();
+  cb->shared = keyword != first;
   cb->texture_buffer = advance().text() == "tbuffer";
   cb->name = keep(tok().text());
   cb->name_range = tok().range();
@@ -387,7 +436,7 @@ void Parser::parse_constant_buffer(std::vector<ast::Decl>& out) {
   if (!parse_member_list(cb->members, "constant buffer")) return;
   accept(TokenKind::semi);
   cb->range = range_from(first);
-  cb->tokens = span_from(first);
+  cb->tokens = span_from(keyword);
   ast::Decl d;
   d.kind = ast::DeclKind::constant_buffer;
   d.constant_buffer = cb;

@@ -174,12 +174,14 @@ ast::ExprPtr Parser::parse_unary() {
       break;
     }
     case TokenKind::l_paren:
-      // `(float3)x` is a cast when a lone name in parentheses is followed by an operand.
-      if (peek(1).is(TokenKind::identifier) && peek(2).is(TokenKind::r_paren) &&
-          starts_operand(peek(3).kind)) {
+      // `(float3)x` is a cast when a lone name in parentheses is followed by an operand;
+      // so is `(float2[32])x`, with constant array sizes.
+      if (size_t close = cast_close(); close != 0) {
         result = make(ast::ExprKind::cast, first);
         advance();
-        result->text = keep(advance().text());
+        std::string type;
+        while (pos_ < first + close) append_spelling(type, advance());
+        result->text = keep(type);
         advance();
         ast::ExprPtr operand = parse_unary();
         if (failed_) {
@@ -200,16 +202,21 @@ ast::ExprPtr Parser::parse_unary() {
   return failed_ ? nullptr : std::move(result);
 }
 
+size_t Parser::cast_close() const {
+  if (!peek(1).is(TokenKind::identifier)) return 0;
+  size_t i = 2;
+  while (peek(i).is(TokenKind::l_square) && peek(i + 1).is(TokenKind::integer) &&
+         peek(i + 2).is(TokenKind::r_square))
+    i += 3;
+  return peek(i).is(TokenKind::r_paren) && starts_operand(peek(i + 1).kind) ? i : 0;
+}
+
 ast::ExprPtr Parser::parse_postfix_operators(ast::ExprPtr e, uint32_t first) {
   for (;;) {
     if (at(TokenKind::l_square)) {
-      advance();
-      auto index = make(ast::ExprKind::index, first);
-      ast::ExprPtr subscript = parse_expression();
-      if (failed_ || !expect(TokenKind::r_square, "after index")) return nullptr;
-      index->args = expressions_.list({e, subscript});
-      index->range = range_from(first);
-      e = std::move(index);
+      e = parse_index(e, first);
+      if (!e) return nullptr;
+      e->range = range_from(first);
     } else if (at(TokenKind::period) && peek().is(TokenKind::identifier)) {
       advance();
       auto member = make(ast::ExprKind::member, first);
@@ -221,6 +228,15 @@ ast::ExprPtr Parser::parse_postfix_operators(ast::ExprPtr e, uint32_t first) {
       return e;
     }
   }
+}
+
+ast::ExprPtr Parser::parse_index(ast::ExprPtr e, uint32_t first) {
+  advance();  // [
+  auto index = make(ast::ExprKind::index, first);
+  ast::ExprPtr subscript = parse_expression();
+  if (failed_ || !expect(TokenKind::r_square, "after index")) return nullptr;
+  index->args = expressions_.list({e, subscript});
+  return index;
 }
 
 ast::ExprPtr Parser::parse_primary() {
@@ -280,8 +296,11 @@ ast::ExprPtr Parser::parse_primary() {
                    "expected a parameter name after '<', found " + describe(tok()));
         return nullptr;
       }
-      auto e = make(ast::ExprKind::reference, first);
+      ast::ExprPtr e = make(ast::ExprKind::reference, first);
       e->text = keep(advance().text());
+      // `<g_vLightPos[0]>` is an element: an index node over the reference, as `a[0]`.
+      while (at(TokenKind::l_square))
+        if (!(e = parse_index(e, first))) return nullptr;
       split_greater();
       if (!expect(TokenKind::greater, "to close the parameter reference")) return nullptr;
       e->range = range_from(first);
@@ -310,9 +329,9 @@ ast::ExprPtr Parser::parse_identifier_expr() {
     advance();
     return e;
   }
-  if (word == "compile") return parse_compile();
+  if (iequals(word, "compile")) return parse_compile();
   if (braces_follow && (iequals(word, "asm") || iequals(word, "decl"))) return parse_asm();
-  if (braces_follow && (word == "sampler_state" || word == "stateblock_state")) {
+  if (braces_follow && (iequals(word, "sampler_state") || iequals(word, "stateblock_state"))) {
     auto e = make(ast::ExprKind::state_block, first);
     e->text = keep(advance().text());
     if (!parse_state_list(e->states, e->text)) return nullptr;

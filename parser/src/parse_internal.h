@@ -86,6 +86,8 @@ class Parser {
   void parse_top_level(std::vector<ast::Decl>& out);
   bool parse_attributes(std::vector<std::string>& out);
   void parse_glsl_block(std::vector<ast::Decl>& out);
+  // Reports `keyword-as-name` when `name` is an effect keyword: "cannot name <what>".
+  bool check_name(const Token& name, std::string_view what);
 
   // --- declarations (parse_decl.cpp) ---
   uint32_t parse_storage();
@@ -101,9 +103,14 @@ class Parser {
   bool parse_parameter(ast::Variable& p);
   bool parse_member_list(ast::List<ast::Variable>& members, std::string_view what);
   void parse_struct(std::vector<ast::Decl>& out);
+  // `struct [Name] { members }` as a member's type (at `struct`).
+  bool parse_member_struct(ast::TypeRef& type);
   void parse_typedef(std::vector<ast::Decl>& out);
-  void parse_constant_buffer(std::vector<ast::Decl>& out);
+  // At `cbuffer`/`tbuffer`; `first` is the declaration's first token (`shared`, if any).
+  void parse_constant_buffer(std::vector<ast::Decl>& out, uint32_t first);
   void finish_state_object(std::vector<ast::Decl>& out, ast::Variable& head, uint32_t first);
+  // `{ { states }, { states } }`: one state list per array element.
+  bool parse_element_states(ast::List<ast::List<ast::StateAssignment>>& out);
 
   // --- effect blocks (parse_technique.cpp) ---
   bool parse_annotations(ast::List<ast::Annotation>& out);
@@ -125,6 +132,11 @@ class Parser {
     return at(TokenKind::l_square) || at(TokenKind::period) ? parse_postfix_operators(e, first) : e;
   }
   ast::ExprPtr parse_postfix_operators(ast::ExprPtr e, uint32_t first);
+  // At '(': how far ahead the ')' of a cast's type (`(float3)`, `(float2[32])`) is, when
+  // an operand follows it; 0 when this is no cast.
+  size_t cast_close() const;
+  // `[subscript]` after `e` (at the '['): the index node, its range still to be set.
+  ast::ExprPtr parse_index(ast::ExprPtr e, uint32_t first);
   ast::ExprPtr parse_primary();
   ast::ExprPtr parse_identifier_expr();
   ast::ExprPtr parse_compile();
@@ -160,6 +172,10 @@ class Parser {
 // Keyword tests shared by the parts.
 bool is_storage_keyword(std::string_view word, uint32_t& bit);
 bool is_state_object_kind(std::string_view word);
+// 9, 10 or 11 for `technique`, `technique10`, `technique11` in any case; 0 otherwise.
+int technique_version(std::string_view word);
+// An effect keyword, which the D3DX lexer matches in any case (`Pass`, `COMPILE`).
+bool is_effect_keyword(std::string_view word);
 std::string quote(std::string_view text);  // 'text' for messages
 std::string describe(const Token& t);      // 'text', or "end of file"
 // Appends a token's spelling to text rebuilt from tokens, with a space between words.

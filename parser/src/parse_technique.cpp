@@ -49,6 +49,7 @@ bool Parser::parse_annotation(ast::Annotation& a) {
     error_here("expected-identifier", "expected an annotation name, found " + describe(tok()));
     return false;
   }
+  if (!check_name(tok(), "an annotation")) return false;
   a.name = keep(advance().text());
   if (!parse_array_dims(a.array_dims)) return false;
   if (!expect(TokenKind::equal, "after annotation name")) return false;
@@ -60,9 +61,9 @@ bool Parser::parse_annotation(ast::Annotation& a) {
 
 bool Parser::parse_technique(ast::Technique& t) {
   uint32_t first = pos_;
-  std::string_view keyword = advance().text();
-  t.version = keyword == "technique11" ? 11 : keyword == "technique10" ? 10 : 9;
+  t.version = technique_version(advance().text());
   if (at(TokenKind::identifier)) {
+    if (!check_name(tok(), "a technique")) return false;
     t.name = keep(tok().text());
     t.name_range = tok().range();
     advance();
@@ -82,7 +83,6 @@ bool Parser::parse_technique(ast::Technique& t) {
       continue;
     }
     uint32_t depth = depth_;
-    // `Pass` appears in the wild; only passes can start here, so case does not matter.
     if (tok().is(TokenKind::identifier) && iequals(tok().text(), "pass")) {
       if (!parse_pass(t.passes.emplace_back(arena_))) t.passes.pop_back();  // in place, see parse_annotations
     } else {
@@ -101,6 +101,7 @@ bool Parser::parse_pass(ast::Pass& p) {
   uint32_t first = pos_;
   advance();  // pass
   if (at(TokenKind::identifier)) {
+    if (!check_name(tok(), "a pass")) return false;
     p.name = keep(tok().text());
     p.name_range = tok().range();
     advance();
@@ -203,8 +204,7 @@ void Parser::parse_group(std::vector<ast::Decl>& out) {
     }
     if (accept(TokenKind::semi)) continue;
     uint32_t depth = depth_;
-    std::string_view word = tok().is(TokenKind::identifier) ? tok().text() : std::string_view();
-    if (word == "technique" || word == "technique10" || word == "technique11") {
+    if (tok().is(TokenKind::identifier) && technique_version(tok().text())) {
       ast::Technique t;
       if (parse_technique(t)) g->techniques.push_back(arena_, t);
     } else {

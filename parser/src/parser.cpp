@@ -246,7 +246,7 @@ void Parser::parse_top_level(std::vector<ast::Decl>& out) {
       return;
   }
   std::string_view word = t.text();
-  if (word == "technique" || word == "technique10" || word == "technique11") {
+  if (technique_version(word)) {
     ast::Decl d;
     d.kind = ast::DeclKind::technique;
     d.technique = declarations_.make<ast::Technique>();
@@ -254,8 +254,12 @@ void Parser::parse_top_level(std::vector<ast::Decl>& out) {
   } else if (word == "fxgroup") {
     parse_group(out);
   } else if ((word == "cbuffer" || word == "tbuffer") && peek().is(TokenKind::identifier)) {
-    parse_constant_buffer(out);
-  } else if (word == "struct") {
+    parse_constant_buffer(out, first);
+  } else if (word == "shared" && (peek().is_identifier("cbuffer") || peek().is_identifier("tbuffer")) &&
+             peek(2).is(TokenKind::identifier)) {
+    advance();  // shared: kept as a flag, the buffer's tokens start at `cbuffer`
+    parse_constant_buffer(out, first);
+  } else if (word == "struct" && !(peek().is(TokenKind::identifier) && peek(2).is(TokenKind::identifier))) {
     parse_struct(out);
   } else if (word == "typedef") {
     parse_typedef(out);
@@ -327,6 +331,7 @@ bool is_storage_keyword(std::string_view word, uint32_t& bit) {
       {"inline", ast::kInline},         {"point", ast::kPoint},
       {"line", ast::kLine},             {"triangle", ast::kTriangle},
       {"lineadj", ast::kLineAdj},       {"triangleadj", ast::kTriangleAdj},
+      {"unorm", ast::kUnorm},           {"snorm", ast::kSnorm},
   };
   // Most words are not modifiers: the first letter picks the few rows to compare (a bit
   // per row of kWords), and most letters pick none.
@@ -343,6 +348,34 @@ bool is_storage_keyword(std::string_view word, uint32_t& bit) {
       return true;
     }
   }
+  return false;
+}
+
+int technique_version(std::string_view word) {
+  if (iequals(word, "technique")) return 9;
+  if (iequals(word, "technique10")) return 10;
+  if (iequals(word, "technique11")) return 11;
+  return 0;
+}
+
+bool is_effect_keyword(std::string_view word) {
+  // The D3DX effect lexer matches these in any case (the XNA stock effects write
+  // `Technique` and `Pass`); HLSL's own keywords (`float`, `struct`, `return`) are
+  // case-sensitive and stay ordinary identifiers here.
+  static constexpr std::string_view kWords[] = {
+      "technique", "technique10", "technique11", "pass", "compile", "sampler_state",
+      "stateblock", "stateblock_state", "pixelshader", "vertexshader"};
+  for (std::string_view k : kWords)
+    if (iequals(word, k)) return true;
+  return false;
+}
+
+bool Parser::check_name(const Token& name, std::string_view what) {
+  if (!is_effect_keyword(name.text())) return true;
+  std::string message = quote(name.text());
+  message += " is an effect keyword (in any case) and cannot name ";
+  message.append(what);
+  error("keyword-as-name", name.range(), std::move(message));
   return false;
 }
 

@@ -57,6 +57,13 @@ constexpr StateInfo constants(std::string_view name, uint16_t registers) {
   return row(name, StateBlock::pass, T::shader_constant, M::maps_to_vulkan,
              A::shader_constants, nullptr, registers, true);
 }
+// `StateBlock = <sb>;` applies the states of `stateblock sb = stateblock_state { ... };`,
+// which fxkit expands into the pass rather than recording a D3D9 state block.
+constexpr StateInfo state_block_row() {
+  StateInfo s = rs("StateBlock", T::state_object, M::emulated, A::none);
+  s.object_kind = "stateblock";
+  return s;
+}
 constexpr StateInfo sampler(std::string_view name, T type, M meaning,
                             const EnumSet* enums = nullptr) {
   return row(name, StateBlock::sampler_state, type, meaning, A::sampler, enums);
@@ -137,6 +144,7 @@ std::span<const StateInfo> d3d9_pass_states() {
       rsi("Texture", T::texture, M::maps_to_vulkan, A::resource_binding, kSamplerStages),
       rsi("Sampler", T::sampler, M::maps_to_vulkan, A::resource_binding, kSamplerStages),
       rs("FVF", T::integer, M::ignored, A::input_assembly),
+      state_block_row(),
       // Cylindrical texture-coordinate wrapping per coordinate set.
       ff("Wrap0", T::flags, &kWrap), ff("Wrap1", T::flags, &kWrap), ff("Wrap2", T::flags, &kWrap),
       ff("Wrap3", T::flags, &kWrap), ff("Wrap4", T::flags, &kWrap), ff("Wrap5", T::flags, &kWrap),

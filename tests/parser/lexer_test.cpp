@@ -44,6 +44,17 @@ TEST(Lexer, NumbersWithSuffixes) {
   EXPECT_TRUE(l.diags.diagnostics().empty());
 }
 
+// fxc skips a UTF-8 byte-order mark; a '#' after one still starts a directive line.
+TEST(Lexer, ByteOrderMarkIsSkipped) {
+  Lexed l("\xEF\xBB\xBF#define A\nfloat x;");
+  EXPECT_EQ(l.spellings(), (S{"#", "define", "A", "float", "x", ";"}));
+  EXPECT_TRUE(l.tokens[0].at_line_start());
+  EXPECT_TRUE(l.diags.diagnostics().empty());
+  Lexed only("\xEF\xBB\xBF");
+  EXPECT_TRUE(only.tokens.empty());
+  EXPECT_TRUE(only.diags.diagnostics().empty());
+}
+
 TEST(Lexer, HexDigitsAreNotFloatSuffixes) {
   Lexed l("0xFE 0x1e+1");
   // 0x1e+1 is 0x1e, +, 1: a sign only continues a decimal exponent.

@@ -85,6 +85,13 @@ TEST(PreprocessorIncludes, PragmaOnce) {
   EXPECT_EQ(p.edges.size(), 4u);
 }
 
+TEST(PreprocessorIncludes, ByteOrderMarkInIncludedFile) {
+  Pp p;
+  p.files["common.fxh"] = "\xEF\xBB\xBF#define SIZE 4\nfloat a[SIZE];\n";
+  EXPECT_EQ(p.run("\xEF\xBB\xBF#include \"common.fxh\"\n"), "float a [ 4 ] ;");
+  EXPECT_TRUE(p.diags.diagnostics().empty());
+}
+
 TEST(PreprocessorIncludes, DepthLimitStopsCyclesQuickly) {
   Pp p;
   p.files["a.fxh"] = "a\n#include \"b.fxh\"\n";

@@ -1,0 +1,3 @@
+﻿#include "common.fxh"
+float4 Tint = SCALE(1);
+technique T { pass P { } }

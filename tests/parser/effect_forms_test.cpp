@@ -1,0 +1,158 @@
+// Forms that fxc accepts in real effect files (issue 17): each must preprocess, parse and
+// check with no diagnostic, and come out as the syntax tree says.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "fx/diagnostic_render.h"
+#include "fx/frontend.h"
+
+namespace fx {
+namespace {
+
+struct FrontEnd {
+  SourceManager sm;
+  DiagnosticSink diags;
+  ParsedEffect parsed;
+  std::string text() const { return render_text(diags.diagnostics(), sm); }
+  const ast::Decl& decl(size_t i) const { return parsed.ast.decls.at(i); }
+};
+
+std::unique_ptr<FrontEnd> run(std::string source, EffectProfile profile = EffectProfile::automatic) {
+  auto f = std::make_unique<FrontEnd>();
+  FrontEndOptions options;
+  options.check.profile = profile;
+  f->parsed = parse_effect_text("t.fx", std::move(source), f->sm, f->diags, options);
+  return f;
+}
+
+#define EXPECT_CLEAN(f) EXPECT_EQ((f)->text(), "") << "unexpected diagnostics"
+
+TEST(EffectForms, SharedConstantBuffer) {
+  auto f = run(
+      "shared cbuffer Pool { float4 Shared; };\n"
+      "cbuffer Own { float4 Mine; }\n"
+      "technique10 T { pass P { } }\n");
+  EXPECT_CLEAN(f);
+  ASSERT_EQ(f->decl(0).kind, ast::DeclKind::constant_buffer);
+  const ast::ConstantBuffer& pool = *f->decl(0).constant_buffer;
+  EXPECT_TRUE(pool.shared);
+  EXPECT_EQ(pool.name, "Pool");
+  // The shader compiler's tokens start at `cbuffer`; the range covers `shared`.
+  EXPECT_EQ(f->parsed.ast.tokens.at(pool.tokens.first).text(), "cbuffer");
+  EXPECT_EQ(f->sm.presumed(pool.range.begin).column, 1u);
+  EXPECT_FALSE(f->decl(1).constant_buffer->shared);
+}
+
+TEST(EffectForms, NormalisedResourceElements) {
+  auto f = run(
+      "struct S { snorm float a; unorm float4 b; };\n"
+      "Buffer<unorm float4> Colours;\n"
+      "technique10 T { pass P { } }\n");
+  EXPECT_CLEAN(f);
+  const ast::Struct& s = *f->decl(0).structure;
+  EXPECT_EQ(s.members[0].storage, uint32_t(ast::kSnorm));
+  EXPECT_EQ(s.members[1].storage, uint32_t(ast::kUnorm));
+  EXPECT_EQ(s.members[1].type.name, "float4");
+}
+
+TEST(EffectForms, IndexedParameterReference) {
+  auto f = run(
+      "float4 g_vLightPos[2]; float4x4 m[2];\n"
+      "technique T { pass P { LightPosition[0] = <g_vLightPos[1]>;\n"
+      "  VertexShaderConstant4[0] = <m[0]>; } }\n");
+  EXPECT_CLEAN(f);
+  const ast::Expr& value = *f->decl(2).technique->passes[0].states[0].value;
+  ASSERT_EQ(value.kind, ast::ExprKind::index);
+  ASSERT_EQ(value.args.size(), 2u);
+  EXPECT_EQ(value.args[0]->kind, ast::ExprKind::reference);
+  EXPECT_EQ(value.args[0]->text, "g_vLightPos");
+  EXPECT_EQ(value.args[1]->number, 1);
+  auto g = run("technique T { pass P { LightPosition[0] = <missing[0]>; } }\n");
+  ASSERT_EQ(g->diags.diagnostics().size(), 1u) << g->text();
+  EXPECT_EQ(g->diags.diagnostics()[0].id, "undefined-reference");
+}
+
+TEST(EffectForms, StateBlockInAPass) {
+  auto f = run(
+      "stateblock Opaque = stateblock_state { CullMode = None; ZWriteEnable = false; };\n"
+      "technique T { pass { StateBlock = <Opaque>; } }\n");
+  EXPECT_CLEAN(f);
+  // Only a stateblock variable will do.
+  auto g = run("float4 c;\ntechnique T { pass { StateBlock = <c>; } }\n");
+  ASSERT_EQ(g->diags.diagnostics().size(), 1u) << g->text();
+  EXPECT_EQ(g->diags.diagnostics()[0].id, "state-type-mismatch");
+}
+
+// An array of state objects with one initializer per element, each checked on its own:
+// the same state in two elements is no duplicate, a wrong value in one still is an error.
+TEST(EffectForms, StateObjectArrayWithElementInitializers) {
+  auto f = run(
+      "int i;\n"
+      "BlendState Blends[3] { { BlendOp = Add; }, { BlendOp = Subtract; }, { BlendOp = Rev_Subtract; } };\n"
+      "DepthStencilState Depths[2] { { DepthFunc = 1; }, { DepthFunc = i + 2; }, };\n"
+      "technique10 T { pass P { SetBlendState(Blends[i * 2 + 1], float4(0, 0, 0, 0), 0xFFFFFFFF);\n"
+      "  SetDepthStencilState(Depths[i], 0); } }\n");
+  EXPECT_CLEAN(f);
+  const ast::StateObject& blends = *f->decl(1).state_object;
+  EXPECT_TRUE(blends.states.empty());
+  ASSERT_EQ(blends.element_states.size(), 3u);
+  EXPECT_EQ(blends.element_states[2][0].name, "BlendOp");
+  EXPECT_EQ(blends.element_states[2][0].value->text, "Rev_Subtract");
+  EXPECT_EQ(f->decl(2).state_object->element_states.size(), 2u);
+  auto g = run("BlendState B[2] { { BlendOp = Add; }, { BlendOp = Sum; } };\n"
+               "technique10 T { pass P { } }\n");
+  ASSERT_EQ(g->diags.diagnostics().size(), 1u) << g->text();
+  EXPECT_EQ(g->diags.diagnostics()[0].id, "unknown-state-value");
+  auto h = run("BlendState B[2] { { BlendOp = Add; } { BlendOp = Add; } };\nfloat after;\n");
+  EXPECT_EQ(h->diags.diagnostics().at(0).id, "expected-token") << h->text();
+}
+
+// Structs written in place as a member's type, named or anonymous, nested, in a struct or
+// a cbuffer; and the C spelling `struct Name` of a struct type.
+TEST(EffectForms, StructsDefinedInPlace) {
+  auto f = run(
+      "struct Inner { float a; };\n"
+      "struct Outer {\n"
+      "  struct { float foo; float bar; } anonymous;\n"
+      "  struct Named { float baz; struct Inner deeper; } named[2];\n"
+      "};\n"
+      "cbuffer B { struct { float2 v1; float2 v2; } block; float after; };\n"
+      "struct Inner top;\n"
+      "technique10 T { pass P { } }\n");
+  EXPECT_CLEAN(f);
+  const ast::Struct& outer = *f->decl(1).structure;
+  ASSERT_EQ(outer.members.size(), 2u);
+  const ast::TypeRef& anonymous = outer.members[0].type;
+  EXPECT_EQ(anonymous.name, "");
+  ASSERT_NE(anonymous.definition, nullptr);
+  EXPECT_EQ(anonymous.definition->members.size(), 2u);
+  const ast::Variable& named = outer.members[1];
+  EXPECT_EQ(named.name, "named");
+  EXPECT_EQ(named.type.name, "Named");
+  EXPECT_EQ(named.array_dims.size(), 1u);
+  EXPECT_EQ(named.type.definition->members[1].type.name, "Inner");
+  EXPECT_EQ(f->decl(2).constant_buffer->members.size(), 2u);
+  ASSERT_EQ(f->decl(3).kind, ast::DeclKind::variable);
+  EXPECT_EQ(f->decl(3).variable->type.name, "Inner");
+}
+
+TEST(EffectForms, ArrayCasts) {
+  auto f = run(
+      "float4 source[16];\n"
+      "static float2 packed[32] = (float2[32])source;\n"
+      "float2 two[2] = (float2[2])float4(1, 2, 3, 4);\n"
+      "technique T { pass P { } }\n");
+  EXPECT_CLEAN(f);
+  const ast::Expr& cast = *f->decl(1).variable->initializer;
+  ASSERT_EQ(cast.kind, ast::ExprKind::cast);
+  EXPECT_EQ(cast.text, "float2[32]");
+  EXPECT_EQ(cast.args[0]->text, "source");
+  // A parenthesised index is still no cast.
+  auto g = run("float a[2]; float b = (a[1]) + 1;\ntechnique T { pass P { } }\n");
+  EXPECT_CLEAN(g);
+  EXPECT_EQ(g->decl(1).variable->initializer->kind, ast::ExprKind::binary);
+}
+
+}  // namespace
+}  // namespace fx
