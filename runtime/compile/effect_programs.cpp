@@ -54,6 +54,10 @@ StageProgram EffectPrograms::compile_stage(const StageUnit& stage, TranslationUn
     if (!out.shader.ok && out.shader.messages.empty())
       sink.error("shader-compile-error", stage.range, out.shader.info_log);
     out.diagnostics = sink.diagnostics();
+    // What glslang reports with no place in the source (linking, SPIR-V validation) is the
+    // stage's as a whole: it lands on the pass state that names the shader.
+    for (Diagnostic& d : out.diagnostics)
+      if (!d.range.valid()) d.range = stage.range;
     ++stats_.stages_compiled;
     stats_.compile_ms += out.shader.total_ms;
     if (!out.shader.from_cache) stats_.glslang_ms += out.shader.parse_ms + out.shader.link_ms;

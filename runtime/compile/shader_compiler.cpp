@@ -118,6 +118,39 @@ void unroll_and_fold(std::vector<uint32_t>& spirv, spv_target_env env) {
   if (optimizer.Run(spirv.data(), spirv.size(), &out, options)) spirv = std::move(out);
 }
 
+// Appends what SPIRV-Tools said about the module to an info log, one line per problem:
+// its validator writes a header line, then each error (which may go on over lines) and the
+// instruction at fault, indented, which all go into the error's own line. True when there
+// was an error.
+bool append_spirv_log(const std::string& log, const std::string& entry, std::string& info_log) {
+  bool any_error = false;
+  std::string pending;  // the last error, waiting for its instruction
+  auto flush = [&] {
+    if (!pending.empty()) info_log += "ERROR: " + pending + "\n";
+    pending.clear();
+  };
+  for (size_t pos = 0; pos < log.size();) {
+    size_t nl = log.find('\n', pos);
+    std::string line = log.substr(pos, nl == std::string::npos ? std::string::npos : nl - pos);
+    pos = nl == std::string::npos ? log.size() : nl + 1;
+    if (line.empty() || line == "error: SPIRV-Tools Validation Errors") continue;
+    if (line.rfind("error: ", 0) == 0) {
+      flush();
+      any_error = true;
+      pending = "the SPIR-V glslang made for '" + entry + "' is invalid for Vulkan: " + line.substr(7);
+    } else if (!pending.empty() && line.rfind("  ", 0) == 0) {  // the instruction, indented
+      pending += " (at `" + line.substr(line.find_first_not_of(' ')) + "`)";
+      flush();
+    } else if (!pending.empty()) {  // the message goes on
+      pending += " " + line;
+    } else {
+      info_log += "WARNING: SPIR-V " + line + "\n";
+    }
+  }
+  flush();
+  return any_error;
+}
+
 CompiledShader rejected(std::string text) {
   CompiledShader r;
   r.info_log = "ERROR: " + text + "\n";
@@ -243,16 +276,7 @@ CompiledShader ShaderCompiler::run_glslang(const TranslationUnit& unit, const Sh
       unroll_and_fold(out.spirv, glslang::MapToSpirvToolsEnv(program->getIntermediate(stage)->getSpv(), &logger));
     if (options_.validate && !out.spirv.empty())
       glslang::SpirvToolsValidate(*program->getIntermediate(stage), out.spirv, &logger, false);
-    std::string spv_log = logger.getAllMessages();
-    for (size_t pos = 0; pos < spv_log.size();) {
-      size_t nl = spv_log.find('\n', pos);
-      std::string line = spv_log.substr(pos, nl == std::string::npos ? std::string::npos : nl - pos);
-      pos = nl == std::string::npos ? spv_log.size() : nl + 1;
-      if (line.empty()) continue;
-      bool error = line.rfind("error", 0) == 0;
-      out.info_log += (error ? "ERROR: SPIR-V " : "WARNING: SPIR-V ") + line + "\n";
-      if (error) spirv_error = true;
-    }
+    spirv_error = append_spirv_log(logger.getAllMessages(), unit.entry_point, out.info_log);
     program->buildReflection(kReflectionOptions);
     ShaderReflection reflection = reflect_program(*program, stage, out.spirv);
     reflection.stage = unit.stage;

@@ -215,6 +215,15 @@ TEST(FxkitCompile, AStageIsNotBlamedForTheOtherStagesError) {
   ASSERT_EQ(doc["shaders"].size(), 2u);
   EXPECT_EQ(doc["shaders"][0]["stage"], "vertex");
   EXPECT_FALSE(doc["shaders"][0]["ok"].get<bool>());
+  // SPIR-V validation knows no source line: the error lands on the pass state naming the
+  // shader, once, saying what is wrong and where in the module.
+  const json& d = doc["shaders"][0]["diagnostics"];
+  ASSERT_EQ(d.size(), 1u) << r.out;
+  EXPECT_EQ(d[0]["line"], 3);
+  EXPECT_EQ(d[0]["column"], 24);
+  const std::string message = d[0]["message"];
+  EXPECT_NE(message.find("'VS'"), std::string::npos) << message;
+  EXPECT_NE(message.find("Derivative"), std::string::npos) << message;
   EXPECT_EQ(doc["shaders"][1]["stage"], "fragment");
   EXPECT_TRUE(doc["shaders"][1]["ok"].get<bool>()) << r.out;
   fs::remove(bad);
