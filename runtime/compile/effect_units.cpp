@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "effect_shader_text.h"
+#include "lvalue_constructor.h"
 #include "fx/ascii_case.h"
 #include "fx/compile/hlsl_compat.h"
 #include "fx/state_table.h"
@@ -263,7 +264,7 @@ class EffectUnitBuilder {
     EffectUnits::FunctionText text;
     text.name = f.name;
     text.begin = w.out().size();
-    emit_tokens(w, f.tokens);
+    emit_function_tokens(w, f.tokens);
     w.end_line();
     w.desync();
     text.end = w.out().size();
@@ -272,6 +273,27 @@ class EffectUnitBuilder {
       for (std::string_view t : {"PointStream", "LineStream", "TriangleStream", "InputPatch", "OutputPatch"})
         text.stage_only = text.stage_only || param.type.name == t;
     u_.functions_.push_back(std::move(text));
+  }
+
+  // A function's tokens, with fxc's assignments to constructors of l-values written as a
+  // temporary and one assignment per part (`{ float4 t = v; a = t.xy; b = t.zw; }`).
+  void emit_function_tokens(detail::ShaderTextWriter& w, ast::TokenSpan span) {
+    std::vector<detail::LvalueConstructor> rewrites = detail::find_lvalue_constructors(toks_, span);
+    auto next = rewrites.begin();
+    for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) {
+      if (next == rewrites.end() || i < next->type) {
+        put_hlsl(w, i, span.last);
+      } else if (i == next->type) {
+        w.token(toks_[i], "{ " + std::string(toks_[i].text()) + " " + next->temporary);
+      } else if (i < next->equal) {
+        w.token(toks_[i], " ");  // the constructor's parts, assigned after the value
+      } else if (i < next->semi) {
+        put_hlsl(w, i, span.last);
+      } else {
+        w.token(toks_[i], ";" + next->assignments + " }");
+        ++next;
+      }
+    }
   }
 
   // The names called in a span: identifiers followed by `(` (constructors and intrinsics
