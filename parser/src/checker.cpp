@@ -282,6 +282,11 @@ void Checker::check_against_profile(EffectProfile profile) {
         require(EffectProfile::fx_4_0, d.constant_buffer->range,
                 d.constant_buffer->texture_buffer ? "tbuffer" : "cbuffer");
         break;
+      case ast::DeclKind::structure:
+        if (d.structure->kind != ast::StructKind::structure)
+          require(EffectProfile::fx_5_0, d.structure->name_range,
+                  d.structure->kind == ast::StructKind::class_type ? "class" : "interface");
+        break;
       default: break;
     }
   }
@@ -431,6 +436,9 @@ EffectProfile infer_profile(const ast::Effect& effect) {
         break;
       case ast::DeclKind::state_object:
       case ast::DeclKind::constant_buffer: need(EffectProfile::fx_4_0); break;
+      case ast::DeclKind::structure:  // dynamic linkage: interfaces and classes
+        if (d.structure->kind != ast::StructKind::structure) need(EffectProfile::fx_5_0);
+        break;
       default: break;
     }
   }

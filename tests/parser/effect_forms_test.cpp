@@ -154,5 +154,41 @@ TEST(EffectForms, ArrayCasts) {
   EXPECT_EQ(g->decl(1).variable->initializer->kind, ast::ExprKind::binary);
 }
 
+// fx_5_0 dynamic linkage: interfaces, classes implementing them, and their instances.
+TEST(EffectForms, InterfacesAndClasses) {
+  auto f = run(
+      "interface ILight { float4 Shade(float4 c); float4 Tint(float4 c); };\n"
+      "interface IScale { float Scale(); };\n"
+      "class Ambient : ILight, IScale {\n"
+      "  float4 a;\n"
+      "  float4 Shade(float4 c) { return a; }\n"
+      "  float4 Tint(float4 c) { return c * a; }\n"
+      "  float Scale() { return 2; }\n"
+      "};\n"
+      "ILight slots[4];\n"
+      "Ambient instance;\n"
+      "technique11 T { pass P { } }\n");
+  EXPECT_CLEAN(f);
+  const ast::Struct& light = *f->decl(0).structure;
+  EXPECT_EQ(light.kind, ast::StructKind::interface_type);
+  ASSERT_EQ(light.methods.size(), 2u);
+  EXPECT_TRUE(light.methods[0].body.empty());  // prototypes
+  const ast::Struct& ambient = *f->decl(2).structure;
+  EXPECT_EQ(ambient.kind, ast::StructKind::class_type);
+  ASSERT_EQ(ambient.bases.size(), 2u);
+  EXPECT_EQ(ambient.bases[1], "IScale");
+  ASSERT_EQ(ambient.members.size(), 1u);
+  EXPECT_EQ(ambient.members[0].name, "a");
+  ASSERT_EQ(ambient.methods.size(), 3u);
+  EXPECT_EQ(ambient.methods[1].name, "Tint");
+  EXPECT_FALSE(ambient.methods[1].body.empty());
+  EXPECT_EQ(infer_profile(f->parsed.ast), EffectProfile::fx_5_0);
+  // Older profiles have no dynamic linkage.
+  auto g = run("interface I { float4 F(float4 c); };\ntechnique10 T { pass P { } }\n",
+               EffectProfile::fx_4_0);
+  ASSERT_EQ(g->diags.diagnostics().size(), 1u) << g->text();
+  EXPECT_EQ(g->diags.diagnostics()[0].id, "profile-mismatch");
+}
+
 }  // namespace
 }  // namespace fx
