@@ -192,7 +192,10 @@ void Checker::collect_symbols() {
       case ast::DeclKind::function:
         functions_.emplace_back(d.function->name, d.function);
         break;
-      case ast::DeclKind::technique: has_technique_ = true; break;
+      case ast::DeclKind::technique:
+        has_technique_ = true;
+        has_d3d9_technique_ |= d.technique->version == 9;
+        break;
       case ast::DeclKind::group: has_technique_ |= !d.group->techniques.empty(); break;
       default: break;
     }
@@ -335,10 +338,8 @@ void Checker::check_variable(const ast::Variable& v) {
   const ast::Expr& init = *v.initializer;
   if (init.kind == ast::ExprKind::state_block) {
     // `sampler_state { }` initializes samplers; `stateblock_state { }` holds pass states.
-    check_states(init.states,
-                 iequals(init.text, "stateblock_state") ? StateBlock::pass
-                                                        : StateBlock::sampler_state,
-                 9);
+    if (iequals(init.text, "stateblock_state")) check_states(init.states, StateBlock::pass, 9);
+    else check_sampler_state(init.states);
     return;
   }
   check_value_type(v.type.name, v.array_dims.size(), init, "parameter", v.name,

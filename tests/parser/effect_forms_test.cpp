@@ -190,5 +190,38 @@ TEST(EffectForms, InterfacesAndClasses) {
   EXPECT_EQ(g->diags.diagnostics()[0].id, "profile-mismatch");
 }
 
+// fxc reads a `sampler_state { }` initializer with the profile's sampler states: D3D9's
+// under fx_2_0, the D3D10 SamplerState fields under fx_4_0 and later. A state of the other
+// API is unknown, with a note naming the profile that reads it; except that a file whose
+// inferred fx_4_0+ profile sits beside a D3D9 technique targets both, and takes both.
+TEST(EffectForms, SamplerStateFollowsTheProfile) {
+  auto f = run(
+      "Texture2D Tex;\n"
+      "sampler2D S = sampler_state { Texture = <Tex>; Filter = MIN_MAG_MIP_LINEAR; AddressU = WRAP; };\n"
+      "technique10 T { pass P { } }\n");
+  EXPECT_CLEAN(f);
+  auto g = run("sampler2D S = sampler_state { MinFilter = Linear; };\ntechnique10 T { pass P { } }\n",
+               EffectProfile::fx_4_0);
+  EXPECT_EQ(g->text(),
+            "t.fx:1:31: error: unknown state 'MinFilter' in a SamplerState; did you mean "
+            "'Filter'? [unknown-state]\n"
+            "sampler2D S = sampler_state { MinFilter = Linear; };\n"
+            "                              ^~~~~~~~~\n"
+            "t.fx:1:31: note: fix-it: replace with 'Filter'\n"
+            "t.fx:1:31: note: a Direct3D 9 sampler state, read in fx_2_0 only; this effect is fx_4_0\n");
+  auto h = run("sampler2D S = sampler_state { Filter = MIN_MAG_MIP_LINEAR; };\n"
+               "technique T { pass P { } }\n");
+  ASSERT_EQ(h->diags.diagnostics().size(), 1u) << h->text();
+  EXPECT_EQ(h->diags.diagnostics()[0].notes.at(0).message,
+            "a Direct3D 10 sampler state, read in fx_4_0 and later; this effect is fx_2_0");
+  auto both = run(
+      "sampler2D S = sampler_state { MinFilter = Linear; Filter = MIN_MAG_MIP_POINT; };\n"
+      "technique T9 { pass P { } }\ntechnique10 T10 { pass P { } }\n");
+  EXPECT_CLEAN(both);
+  auto d3d10_only = run("sampler2D S = sampler_state { MinFilter = Linear; };\n"
+                        "technique10 T10 { pass P { } }\n");
+  EXPECT_EQ(d3d10_only->diags.diagnostics().size(), 1u) << d3d10_only->text();
+}
+
 }  // namespace
 }  // namespace fx
