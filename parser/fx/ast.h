@@ -143,10 +143,18 @@ struct Variable {
   TokenSpan tokens;           // the whole declaration, for the shader compiler
 };
 
+// What declared a Struct: HLSL `struct`, or fx_5_0 dynamic linkage's `interface` (methods
+// only) and `class` (data members and methods, `class C : I, J`).
+enum class StructKind : uint8_t { structure, interface_type, class_type };
+
+struct Function;
 struct Struct {
+  StructKind kind = StructKind::structure;
   Text name;
   SourceRange name_range;
+  List<Text> bases;           // `class C : I, J` -> I, J: the interfaces it implements
   List<Variable> members;
+  List<Function> methods;     // interface and class member functions
   SourceRange range;
   TokenSpan tokens;
 };

@@ -192,7 +192,10 @@ void Checker::collect_symbols() {
       case ast::DeclKind::function:
         functions_.emplace_back(d.function->name, d.function);
         break;
-      case ast::DeclKind::technique: has_technique_ = true; break;
+      case ast::DeclKind::technique:
+        has_technique_ = true;
+        has_d3d9_technique_ |= d.technique->version == 9;
+        break;
       case ast::DeclKind::group: has_technique_ |= !d.group->techniques.empty(); break;
       default: break;
     }
@@ -282,6 +285,11 @@ void Checker::check_against_profile(EffectProfile profile) {
         require(EffectProfile::fx_4_0, d.constant_buffer->range,
                 d.constant_buffer->texture_buffer ? "tbuffer" : "cbuffer");
         break;
+      case ast::DeclKind::structure:
+        if (d.structure->kind != ast::StructKind::structure)
+          require(EffectProfile::fx_5_0, d.structure->name_range,
+                  d.structure->kind == ast::StructKind::class_type ? "class" : "interface");
+        break;
       default: break;
     }
   }
@@ -330,10 +338,8 @@ void Checker::check_variable(const ast::Variable& v) {
   const ast::Expr& init = *v.initializer;
   if (init.kind == ast::ExprKind::state_block) {
     // `sampler_state { }` initializes samplers; `stateblock_state { }` holds pass states.
-    check_states(init.states,
-                 iequals(init.text, "stateblock_state") ? StateBlock::pass
-                                                        : StateBlock::sampler_state,
-                 9);
+    if (iequals(init.text, "stateblock_state")) check_states(init.states, StateBlock::pass, 9);
+    else check_sampler_state(init.states);
     return;
   }
   check_value_type(v.type.name, v.array_dims.size(), init, "parameter", v.name,
@@ -431,6 +437,9 @@ EffectProfile infer_profile(const ast::Effect& effect) {
         break;
       case ast::DeclKind::state_object:
       case ast::DeclKind::constant_buffer: need(EffectProfile::fx_4_0); break;
+      case ast::DeclKind::structure:  // dynamic linkage: interfaces and classes
+        if (d.structure->kind != ast::StructKind::structure) need(EffectProfile::fx_5_0);
+        break;
       default: break;
     }
   }

@@ -103,10 +103,11 @@ class Checker {
                         SourceRange previous);
 
   // --- checker_states.cpp ---
+  // `also`: a second block whose names count too (see check_sampler_state).
   void check_states(const ast::List<ast::StateAssignment>& states, StateBlock block,
-                    int technique_version);
+                    int technique_version, std::optional<StateBlock> also = std::nullopt);
   void check_state(const ast::StateAssignment& a, StateBlock block, int technique_version,
-                   FirstSeen<StateSlot, StateSlotHash>& seen);
+                   FirstSeen<StateSlot, StateSlotHash>& seen, std::optional<StateBlock> also);
   void check_call_args(const StateInfo& info, const ast::StateAssignment& a);
   void check_value(const StateInfo& info, const ast::Expr& value);
   void check_leaf(const StateInfo& info, const ast::Expr& value);
@@ -119,6 +120,9 @@ class Checker {
   void undefined(std::string_view what, std::string_view name, SourceRange range,
                  const std::vector<std::string_view>& candidates);
   bool profile_allows(StateApi api) const;
+  // Checks a `sampler_state { }` initializer's states as fxc reads them: D3D9 sampler
+  // states under fx_2_0, the D3D10 SamplerState fields under fx_4_0 and later.
+  void check_sampler_state(const ast::List<ast::StateAssignment>& states);
   EffectProfile profile() const;
 
   const Symbol* lookup(std::string_view name) const;
@@ -134,6 +138,7 @@ class Checker {
   // mismatch it, so most effects never need it, and its walk over every pass is saved.
   mutable std::optional<EffectProfile> profile_;
   bool has_technique_ = false;  // in the effect or one of its fxgroups
+  bool has_d3d9_technique_ = false;  // a `technique` (not technique10/11) at file scope
   // Keys view names owned by the effect, which outlives the checker.
   NameTable<Symbol> globals_;
   // Every function by name, overloads in source order (sorted once collected).

@@ -140,10 +140,22 @@ bool Checker::profile_allows(StateApi api) const {
   return true;
 }
 
+void Checker::check_sampler_state(const ast::List<ast::StateAssignment>& states) {
+  if (profile() < EffectProfile::fx_4_0) {
+    check_states(states, StateBlock::sampler_state, 9);
+    return;
+  }
+  // An inferred fx_4_0+ profile beside a D3D9 technique: the file targets both runtimes
+  // (as the SDK samples did), each compiling the sampler with its own names.
+  const bool both = options_.profile == EffectProfile::automatic && has_d3d9_technique_;
+  check_states(states, StateBlock::sampler_object, 10,
+               both ? std::optional(StateBlock::sampler_state) : std::nullopt);
+}
+
 void Checker::check_states(const ast::List<ast::StateAssignment>& states, StateBlock block,
-                           int technique_version) {
+                           int technique_version, std::optional<StateBlock> also) {
   FirstSeen<StateSlot, StateSlotHash> seen;
-  for (const ast::StateAssignment& a : states) check_state(a, block, technique_version, seen);
+  for (const ast::StateAssignment& a : states) check_state(a, block, technique_version, seen, also);
 }
 
 // A fix-it replacing `word` where it is written inside `range` (not through a macro).
@@ -166,14 +178,23 @@ static std::optional<SourceRange> word_in(const SourceManager& sm, SourceRange r
 }
 
 void Checker::check_state(const ast::StateAssignment& a, StateBlock block, int technique_version,
-                          FirstSeen<StateSlot, StateSlotHash>& seen) {
+                          FirstSeen<StateSlot, StateSlotHash>& seen, std::optional<StateBlock> also) {
   const StateInfo* info = find_state(a.name, block);
+  if (!info && also) info = find_state(a.name, *also);
   if (!info) {
     std::string guess = closest_match(a.name, state_names(block));
     std::string message = "unknown state " + quote(a.name) + " in " + std::string(block_phrase(block));
     if (!guess.empty()) message += "; did you mean " + quote(guess) + "?";
     Diagnostic& d = diags_.error("unknown-state", a.name_range, std::move(message));
     if (!guess.empty()) d.fixits.push_back({a.name_range, guess});
+    // A sampler state of the other API: say which profile reads it.
+    const bool d3d9_block = block == StateBlock::sampler_state;
+    if ((d3d9_block || block == StateBlock::sampler_object) &&
+        find_state(a.name, d3d9_block ? StateBlock::sampler_object : StateBlock::sampler_state))
+      d.notes.push_back({a.name_range.begin,
+                         std::string(d3d9_block ? "a Direct3D 10 sampler state, read in fx_4_0 and later"
+                                                : "a Direct3D 9 sampler state, read in fx_2_0 only") +
+                             "; this effect is " + std::string(to_string(profile()))});
     return;
   }
   if (info->call_args && !a.call_style) {
@@ -333,7 +354,7 @@ void Checker::check_value(const StateInfo& info, const ast::Expr& e) {
       return;
     case K::state_block:
       if (t == StateValueType::sampler && iequals(e.text, "sampler_state")) {
-        check_states(e.states, StateBlock::sampler_state, 9);
+        check_sampler_state(e.states);
       } else {
         type_mismatch(info, e, "a " + quote(e.text) + " block");
       }

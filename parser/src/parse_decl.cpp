@@ -298,7 +298,8 @@ bool Parser::parse_parameter(ast::Variable& p) {
   return true;
 }
 
-bool Parser::parse_member_list(ast::List<ast::Variable>& members, std::string_view what) {
+bool Parser::parse_member_list(ast::List<ast::Variable>& members, std::string_view what,
+                               ast::List<ast::Function>* methods) {
   if (!at(TokenKind::l_brace)) {
     std::string context = "to begin ";
     context.append(what);
@@ -325,6 +326,11 @@ bool Parser::parse_member_list(ast::List<ast::Variable>& members, std::string_vi
         at_ident("struct") && (peek().is(TokenKind::l_brace) ||
                                (peek().is(TokenKind::identifier) && peek(2).is(TokenKind::l_brace)));
     if (defines_struct ? parse_member_struct(type) : parse_type(type)) {
+      if (methods && at(TokenKind::identifier) && peek().is(TokenKind::l_paren)) {
+        parse_method(*methods, storage, type, first);
+        if (failed_) recover(depth);
+        continue;
+      }
       for (;;) {
         ast::Variable& v = members.emplace_back(arena_);  // in place, see parse_annotations
         v.storage = storage;
@@ -346,6 +352,23 @@ bool Parser::parse_member_list(ast::List<ast::Variable>& members, std::string_vi
   }
   advance();
   return true;
+}
+
+void Parser::parse_method(ast::List<ast::Function>& methods, uint32_t storage,
+                          const ast::TypeRef& return_type, uint32_t first) {
+  if (!check_name(tok(), "a function")) return;
+  ast::Function& f = methods.emplace_back(arena_);  // in place, see parse_annotations
+  f.storage = storage;
+  f.return_type = return_type;
+  f.name = keep(tok().text());
+  f.name_range = tok().range();
+  advance();
+  if (!parse_function(f)) {
+    methods.pop_back();
+    return;
+  }
+  f.range = range_from(first);
+  f.tokens = span_from(first);
 }
 
 bool Parser::parse_member_struct(ast::TypeRef& type) {
@@ -372,18 +395,32 @@ bool Parser::parse_member_struct(ast::TypeRef& type) {
 
 void Parser::parse_struct(std::vector<ast::Decl>& out) {
   uint32_t first = pos_;
-  advance();  // struct
+  const std::string_view keyword = advance().text();  // struct, interface or class
   ast::Struct* s = declarations_.make<ast::Struct>();
+  s->kind = keyword == "class"       ? ast::StructKind::class_type
+            : keyword == "interface" ? ast::StructKind::interface_type
+                                     : ast::StructKind::structure;
   if (!at(TokenKind::identifier)) {
-    error_here("expected-identifier", "expected a struct name, found " + describe(tok()));
+    error_here("expected-identifier",
+               "expected a " + std::string(keyword) + " name, found " + describe(tok()));
     return;
   }
-  if (!check_name(tok(), "a struct")) return;
+  if (!check_name(tok(), "a type")) return;
   s->name = keep(tok().text());
   s->name_range = tok().range();
   advance();
-  if (!parse_member_list(s->members, "struct")) return;
-  if (!expect_semi("after struct")) return;
+  if (s->kind == ast::StructKind::class_type && accept(TokenKind::colon)) {
+    do {
+      if (!at(TokenKind::identifier)) {
+        error_here("expected-identifier", "expected an interface name, found " + describe(tok()));
+        return;
+      }
+      s->bases.push_back(arena_, keep(advance().text()));
+    } while (accept(TokenKind::comma));
+  }
+  const bool has_methods = s->kind != ast::StructKind::structure;
+  if (!parse_member_list(s->members, keyword, has_methods ? &s->methods : nullptr)) return;
+  if (!expect_semi("after " + std::string(keyword))) return;
   s->range = range_from(first);
   s->tokens = span_from(first);
   ast::Decl d;

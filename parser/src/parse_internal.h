@@ -101,7 +101,14 @@ class Parser {
                                   std::vector<std::string> attributes);
   bool parse_function(ast::Function& f);
   bool parse_parameter(ast::Variable& p);
-  bool parse_member_list(ast::List<ast::Variable>& members, std::string_view what);
+  // `{ members }` of a struct or buffer; with `methods`, member functions too (class,
+  // interface).
+  bool parse_member_list(ast::List<ast::Variable>& members, std::string_view what,
+                         ast::List<ast::Function>* methods = nullptr);
+  // A member function, at its name after the return type.
+  void parse_method(ast::List<ast::Function>& methods, uint32_t storage,
+                    const ast::TypeRef& return_type, uint32_t first);
+  // `struct`, `interface` or `class` at file scope.
   void parse_struct(std::vector<ast::Decl>& out);
   // `struct [Name] { members }` as a member's type (at `struct`).
   bool parse_member_struct(ast::TypeRef& type);

@@ -261,6 +261,8 @@ void Parser::parse_top_level(std::vector<ast::Decl>& out) {
     parse_constant_buffer(out, first);
   } else if (word == "struct" && !(peek().is(TokenKind::identifier) && peek(2).is(TokenKind::identifier))) {
     parse_struct(out);
+  } else if ((word == "interface" || word == "class") && peek().is(TokenKind::identifier)) {
+    parse_struct(out);
   } else if (word == "typedef") {
     parse_typedef(out);
   } else if (word == "GLSLShader") {

@@ -154,5 +154,74 @@ TEST(EffectForms, ArrayCasts) {
   EXPECT_EQ(g->decl(1).variable->initializer->kind, ast::ExprKind::binary);
 }
 
+// fx_5_0 dynamic linkage: interfaces, classes implementing them, and their instances.
+TEST(EffectForms, InterfacesAndClasses) {
+  auto f = run(
+      "interface ILight { float4 Shade(float4 c); float4 Tint(float4 c); };\n"
+      "interface IScale { float Scale(); };\n"
+      "class Ambient : ILight, IScale {\n"
+      "  float4 a;\n"
+      "  float4 Shade(float4 c) { return a; }\n"
+      "  float4 Tint(float4 c) { return c * a; }\n"
+      "  float Scale() { return 2; }\n"
+      "};\n"
+      "ILight slots[4];\n"
+      "Ambient instance;\n"
+      "technique11 T { pass P { } }\n");
+  EXPECT_CLEAN(f);
+  const ast::Struct& light = *f->decl(0).structure;
+  EXPECT_EQ(light.kind, ast::StructKind::interface_type);
+  ASSERT_EQ(light.methods.size(), 2u);
+  EXPECT_TRUE(light.methods[0].body.empty());  // prototypes
+  const ast::Struct& ambient = *f->decl(2).structure;
+  EXPECT_EQ(ambient.kind, ast::StructKind::class_type);
+  ASSERT_EQ(ambient.bases.size(), 2u);
+  EXPECT_EQ(ambient.bases[1], "IScale");
+  ASSERT_EQ(ambient.members.size(), 1u);
+  EXPECT_EQ(ambient.members[0].name, "a");
+  ASSERT_EQ(ambient.methods.size(), 3u);
+  EXPECT_EQ(ambient.methods[1].name, "Tint");
+  EXPECT_FALSE(ambient.methods[1].body.empty());
+  EXPECT_EQ(infer_profile(f->parsed.ast), EffectProfile::fx_5_0);
+  // Older profiles have no dynamic linkage.
+  auto g = run("interface I { float4 F(float4 c); };\ntechnique10 T { pass P { } }\n",
+               EffectProfile::fx_4_0);
+  ASSERT_EQ(g->diags.diagnostics().size(), 1u) << g->text();
+  EXPECT_EQ(g->diags.diagnostics()[0].id, "profile-mismatch");
+}
+
+// fxc reads a `sampler_state { }` initializer with the profile's sampler states: D3D9's
+// under fx_2_0, the D3D10 SamplerState fields under fx_4_0 and later. A state of the other
+// API is unknown, with a note naming the profile that reads it; except that a file whose
+// inferred fx_4_0+ profile sits beside a D3D9 technique targets both, and takes both.
+TEST(EffectForms, SamplerStateFollowsTheProfile) {
+  auto f = run(
+      "Texture2D Tex;\n"
+      "sampler2D S = sampler_state { Texture = <Tex>; Filter = MIN_MAG_MIP_LINEAR; AddressU = WRAP; };\n"
+      "technique10 T { pass P { } }\n");
+  EXPECT_CLEAN(f);
+  auto g = run("sampler2D S = sampler_state { MinFilter = Linear; };\ntechnique10 T { pass P { } }\n",
+               EffectProfile::fx_4_0);
+  EXPECT_EQ(g->text(),
+            "t.fx:1:31: error: unknown state 'MinFilter' in a SamplerState; did you mean "
+            "'Filter'? [unknown-state]\n"
+            "sampler2D S = sampler_state { MinFilter = Linear; };\n"
+            "                              ^~~~~~~~~\n"
+            "t.fx:1:31: note: fix-it: replace with 'Filter'\n"
+            "t.fx:1:31: note: a Direct3D 9 sampler state, read in fx_2_0 only; this effect is fx_4_0\n");
+  auto h = run("sampler2D S = sampler_state { Filter = MIN_MAG_MIP_LINEAR; };\n"
+               "technique T { pass P { } }\n");
+  ASSERT_EQ(h->diags.diagnostics().size(), 1u) << h->text();
+  EXPECT_EQ(h->diags.diagnostics()[0].notes.at(0).message,
+            "a Direct3D 10 sampler state, read in fx_4_0 and later; this effect is fx_2_0");
+  auto both = run(
+      "sampler2D S = sampler_state { MinFilter = Linear; Filter = MIN_MAG_MIP_POINT; };\n"
+      "technique T9 { pass P { } }\ntechnique10 T10 { pass P { } }\n");
+  EXPECT_CLEAN(both);
+  auto d3d10_only = run("sampler2D S = sampler_state { MinFilter = Linear; };\n"
+                        "technique10 T10 { pass P { } }\n");
+  EXPECT_EQ(d3d10_only->diags.diagnostics().size(), 1u) << d3d10_only->text();
+}
+
 }  // namespace
 }  // namespace fx
