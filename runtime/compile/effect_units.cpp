@@ -183,9 +183,32 @@ class EffectUnitBuilder {
     collect_glsl();
     collect_passes();
     mark_uncalled_functions();
+    mark_dynamic_linkage();
   }
 
-  // Functions that no HLSL stage of any pass reaches go into every unit (see hlsl_code_for).
+  // A stage whose code calls through an interface needs the class bound to each instance
+  // per pass (BindInterfaces), which fxkit does not compile: the stage says so, at the pass
+  // state, instead of glslang's parse error on `interface`.
+  void mark_dynamic_linkage() {
+    auto check = [&](StageUnit& stage) {
+      if (stage.kind != StageSourceKind::hlsl) return;
+      std::vector<bool> r = u_.reached_from(stage.function);
+      for (size_t i = 0; i < r.size(); ++i)
+        if (r[i] && !u_.functions_[i].dynamic_linkage.empty()) {
+          invalid(stage, "fx_5_0 dynamic linkage: '" + u_.functions_[i].name + "' uses " +
+                             u_.functions_[i].dynamic_linkage + ", and fxkit does not compile interfaces to SPIR-V");
+          return;
+        }
+    };
+    for (EffectPass& pass : u_.passes_)
+      for (StageUnit& stage : pass.stages) {
+        check(stage);
+        for (StageUnit& choice : stage.choices) check(choice);
+      }
+  }
+
+  // Functions that no HLSL stage of any pass reaches go into every unit (see hlsl_code_for),
+  // unless they cannot compile in any (stream or patch parameters, interfaces).
   void mark_uncalled_functions() {
     std::vector<bool> reached(u_.functions_.size(), false);
     auto reach = [&](const StageUnit& stage) {
@@ -199,7 +222,8 @@ class EffectUnitBuilder {
         for (const StageUnit& choice : stage.choices) reach(choice);
       }
     for (size_t i = 0; i < reached.size(); ++i)
-      u_.functions_[i].in_every_unit = !reached[i] && !u_.functions_[i].stage_only;
+      u_.functions_[i].in_every_unit =
+          !reached[i] && !u_.functions_[i].stage_only && u_.functions_[i].dynamic_linkage.empty();
   }
 
  private:
@@ -222,6 +246,11 @@ class EffectUnitBuilder {
       switch (d.kind) {
         case ast::DeclKind::variable: {
           const ast::Variable& v = *d.variable;
+          // An interface instance is bound per pass (BindInterfaces): no shader declaration.
+          if (std::find(interfaces_.begin(), interfaces_.end(), std::string_view(v.type.name)) != interfaces_.end()) {
+            interface_instances_.push_back(v.name);
+            break;
+          }
           if (v.tokens.first == last_span || v.tokens.empty()) break;  // declarators share a span
           last_span = v.tokens.first;
           if (!is_effect_only_type(v.type.name)) emit_filtered(w, v.tokens, !is_shader_object_type(v.type.name));
@@ -232,7 +261,7 @@ class EffectUnitBuilder {
           last_span = d.type_alias->tokens.first;
           emit_tokens(w, d.type_alias->tokens);
           break;
-        case ast::DeclKind::structure: emit_tokens(w, d.structure->tokens); break;
+        case ast::DeclKind::structure: emit_structure(w, *d.structure); break;
         case ast::DeclKind::function: emit_function(w, *d.function); break;
         case ast::DeclKind::constant_buffer: emit_filtered(w, d.constant_buffer->tokens); break;
         case ast::DeclKind::state_object: emit_sampler_object(w, *d.state_object); break;
@@ -256,6 +285,42 @@ class EffectUnitBuilder {
     }
   }
 
+  // fx_5_0 dynamic linkage: glslang has no interfaces, so an interface declaration is left
+  // out, and a class is written as the struct with methods it otherwise is (`class C : I {`
+  // -> `struct C {`). Functions that use an interface fail their stages (see
+  // mark_dynamic_linkage).
+  void emit_structure(detail::ShaderTextWriter& w, const ast::Struct& s) {
+    if (s.kind == ast::StructKind::interface_type) {
+      interfaces_.push_back(s.name);
+      return;
+    }
+    if (s.kind == ast::StructKind::structure) return emit_tokens(w, s.tokens);
+    bool in_bases = false, body = false;
+    for (uint32_t i = s.tokens.first; i < s.tokens.last && i < toks_.size(); ++i) {
+      const Token& t = toks_[i];
+      if (i == s.tokens.first && t.is(TokenKind::identifier)) {
+        w.token(t, "struct");
+        continue;
+      }
+      if (!body && t.is(TokenKind::colon)) in_bases = true;
+      if (t.is(TokenKind::l_brace)) body = true, in_bases = false;
+      if (!in_bases) put_hlsl(w, i, s.tokens.last);
+    }
+  }
+
+  // The first interface or interface instance a function's tokens name ("" for none).
+  std::string dynamic_linkage_in(ast::TokenSpan span) const {
+    for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) {
+      if (!toks_[i].is(TokenKind::identifier)) continue;
+      const std::string_view word = toks_[i].text();
+      for (const std::string& name : interfaces_)
+        if (word == name) return "interface '" + name + "'";
+      for (const std::string& name : interface_instances_)
+        if (word == name) return "interface instance '" + name + "'";
+    }
+    return {};
+  }
+
   // A function as a range of the text that can be left out: it starts with its own #line,
   // and what follows it starts with one too.
   void emit_function(detail::ShaderTextWriter& w, const ast::Function& f) {
@@ -269,6 +334,7 @@ class EffectUnitBuilder {
     w.desync();
     text.end = w.out().size();
     text.calls = calls_in(f.tokens);
+    text.dynamic_linkage = dynamic_linkage_in(f.tokens);
     for (const ast::Variable& param : f.params)
       for (std::string_view t : {"PointStream", "LineStream", "TriangleStream", "InputPatch", "OutputPatch"})
         text.stage_only = text.stage_only || param.type.name == t;
@@ -560,7 +626,9 @@ class EffectUnitBuilder {
           for (const ast::ExprPtr& a : e.args[1]->args) args.push_back(a);
           return hlsl(stage, e.args[0]->text, e.args[1]->text, args, e.range);
         }
-        if ((iequals(e.text, "ConstructGSWithSO") || stage_of_state(e.text)) && !e.args.empty() && e.args[0])
+        // ConstructGSWithSO(shader, ...), BindInterfaces(shader, instances...), SetXShader(shader).
+        if ((iequals(e.text, "ConstructGSWithSO") || iequals(e.text, "BindInterfaces") || stage_of_state(e.text)) &&
+            !e.args.empty() && e.args[0])
           return resolve(*e.args[0], stage, depth + 1);
         return invalid(stage, "'" + e.text + "(...)' does not name a shader");
       }
@@ -767,6 +835,8 @@ class EffectUnitBuilder {
   std::vector<const ast::Function*> functions_;
   std::vector<const ast::Variable*> variables_;
   std::vector<std::string> glsl_names_;
+  std::vector<std::string> interfaces_;           // fx_5_0 interface type names
+  std::vector<std::string> interface_instances_;  // globals of an interface type
 };
 
 std::string spell_expression(const ast::Expr& e) {

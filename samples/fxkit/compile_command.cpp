@@ -142,21 +142,31 @@ int run_compile(const CompileArgs& args) {
     all.insert(all.end(), program.diagnostics.begin(), program.diagnostics.end());
     effect_level.insert(effect_level.end(), program.diagnostics.begin(), program.diagnostics.end());
     if (!program.compiled && !program.stages.empty()) failed = true;
-    for (const std::string& reason : program.unsupported) {
-      // Located at the pass, so an editor or CI log points at what is not compiled.
+    // What is not compiled, located so an editor or CI log points at it: fixed-function
+    // processing at the pass; a stage's own reason (assembly, for the legacy path; a shader
+    // fxkit cannot compile, an error) at the state that names it, with its profile.
+    auto not_compiled = [&](const fx::StageUnit* stage, const std::string& reason, fx::SourceRange range) {
+      const bool error = stage && stage->kind == fx::StageSourceKind::invalid;
+      failed = failed || error;
       fx::DiagnosticSink located;
-      located.warning("shader-not-compiled", pass.range,
-                      "pass '" + pass.technique + "." + pass.pass + "' is not compiled to SPIR-V: " + reason);
+      located.report(error ? fx::Severity::error : fx::Severity::warning, "shader-not-compiled", range,
+                     "pass '" + pass.technique + "." + pass.pass + "' is not compiled to SPIR-V: " + reason);
       if (args.json) {
-        shaders.push_back({{"technique", pass.technique}, {"pass", pass.pass}, {"stage", nullptr},
-                           {"entry", nullptr}, {"profile", nullptr}, {"ok", false}, {"ms", 0},
-                           {"unsupported", reason}, {"diagnostics", fx::render_json(located.diagnostics(), sm)}});
+        shaders.push_back({{"technique", pass.technique}, {"pass", pass.pass},
+                           {"stage", stage ? nlohmann::json(fx::to_string(stage->stage)) : nlohmann::json()},
+                           {"entry", nullptr}, {"function", stage ? stage->function : ""},
+                           {"profile", stage && !stage->profile.empty() ? nlohmann::json(stage->profile) : nlohmann::json()},
+                           {"ok", false}, {"ms", 0}, {"unsupported", reason},
+                           {"diagnostics", fx::render_json(located.diagnostics(), sm)}});
       } else {
-        std::fprintf(stderr, "%s.%s: not compiled: %s\n", pass.technique.c_str(), pass.pass.c_str(),
-                     reason.c_str());
+        std::fprintf(stderr, "%s.%s: not compiled: %s\n", pass.technique.c_str(), pass.pass.c_str(), reason.c_str());
         all.insert(all.end(), located.diagnostics().begin(), located.diagnostics().end());
       }
-    }
+    };
+    for (const std::string& reason : pass.unsupported) not_compiled(nullptr, reason, pass.range);
+    for (const fx::StageUnit& stage : pass.stages)
+      if (stage.kind == fx::StageSourceKind::assembly || stage.kind == fx::StageSourceKind::invalid)
+        not_compiled(&stage, std::string(fx::to_string(stage.stage)) + " stage: " + stage.unsupported, stage.range);
   }
   if (!matched) {
     std::fprintf(stderr, "fxkit compile: no technique named '%s'\n", args.technique.c_str());

@@ -126,6 +126,39 @@ TEST(EffectUnits, AShaderArrayIndexedInAPassOffersEveryElement) {
   EXPECT_EQ(vs->choices[2].profile, "vs_2_0");
 }
 
+// fx_5_0 dynamic linkage: classes compile as the structs with methods they are; a stage
+// that calls through an interface is not compiled and says why; other stages are unaffected.
+TEST(EffectUnits, InterfacesFailOnlyTheStagesThatUseThem) {
+  fs::path dir = temp_dir("interfaces");
+  write(dir / "linkage.fx", R"(interface ILight { float3 Shade(float3 n); };
+class Ambient : ILight { float3 color; float3 Shade(float3 n) { return color; } };
+ILight g_light;
+float4 Through(float3 n : NORMAL) : SV_Target { return float4(g_light.Shade(n), 1); }
+float4 Direct(float3 n : NORMAL) : SV_Target { Ambient a; a.color = n; return float4(a.Shade(n), 1); }
+float4 VS(float4 p : POSITION, inout float3 n : NORMAL) : SV_Position { return p; }
+technique11 T {
+  pass Interface { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(BindInterfaces(CompileShader(ps_5_0, Through()), g_light)); }
+  pass Class { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, Direct())); }
+}
+)");
+  auto l = load((dir / "linkage.fx").string());
+  ASSERT_FALSE(l->diags.has_errors()) << render_text(l->diags.diagnostics(), l->sm);
+  const StageUnit* through = l->units->find("T", "Interface")->find(ShaderStage::fragment);
+  ASSERT_TRUE(through);
+  EXPECT_EQ(through->kind, StageSourceKind::invalid);
+  EXPECT_EQ(through->unsupported,
+            "fx_5_0 dynamic linkage: 'Through' uses interface instance 'g_light', and fxkit does not compile interfaces "
+            "to SPIR-V");
+  ShaderCompiler compiler;
+  EffectPrograms programs(*l->units, compiler, l->sm);
+  const PassProgram* with_class = programs.program("T", "Class");
+  ASSERT_TRUE(with_class);
+  for (const StageProgram& s : with_class->stages)
+    EXPECT_TRUE(s.shader.ok) << to_string(s.stage) << "\n" << render_text(s.diagnostics, l->sm) << s.unit.source;
+  EXPECT_TRUE(with_class->ok());
+  EXPECT_TRUE(programs.program("T", "Interface")->find(ShaderStage::vertex)->shader.ok);
+}
+
 TEST(EffectPrograms, SdkSampleCompilesAndLinks) {
   auto l = load(data("tests/parser/data/sdk_sample.fx"));
   ShaderCompiler compiler;

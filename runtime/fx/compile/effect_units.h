@@ -114,6 +114,7 @@ class EffectUnits {
     size_t begin = 0, end = 0;
     std::vector<std::string> calls;
     bool stage_only = false;     // has a stream or patch parameter (geometry, hull, domain)
+    std::string dynamic_linkage; // the interface (instance) it uses, "" for none
     bool in_every_unit = false;  // no stage calls it
   };
   std::vector<FunctionText> functions_;
