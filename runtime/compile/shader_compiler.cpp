@@ -232,6 +232,13 @@ CompiledShader ShaderCompiler::run_glslang(const TranslationUnit& unit, const Sh
   shader->setAutoMapBindings(true);
   shader->setAutoMapLocations(true);
   if (hlsl) {
+    // D3D registers are counted per class (t0, s0, b0 and u0 are four slots), a Vulkan set
+    // has one binding space: each class starts at its own base so `register(t0)` and
+    // `register(s0)` never share a binding. link_program renumbers them densely afterwards.
+    for (auto [resource, base] : {std::pair{glslang::EResTexture, 0u}, {glslang::EResSampler, 128u},
+                                  {glslang::EResUbo, 256u}, {glslang::EResImage, 384u},
+                                  {glslang::EResUav, 384u}, {glslang::EResSsbo, 512u}})
+      shader->setShiftBinding(resource, base);
     shader->setHlslIoMapping(true);
     // Semantics (POSITION, TEXCOORD0) reach reflection through UserSemantic decorations.
     shader->setEnvTargetHlslFunctionality1();

@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,30 @@ inline std::string spirv_val(const std::vector<uint32_t>& words, const std::stri
   std::filesystem::remove(stem + ".spv");
   std::filesystem::remove(stem + ".log");
   return rc == 0 ? std::string() : (text.empty() ? "spirv-val failed" : text);
+}
+
+// Variable name -> Binding decoration, read from spirv-dis: what the module itself says,
+// whatever reflection says.
+inline std::map<std::string, uint32_t> spirv_bindings(const std::vector<uint32_t>& words) {
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / "fxkit_spirv_val";
+  std::filesystem::create_directories(dir);
+  std::string stem = (dir / (std::to_string(::getpid()) + "_bindings")).string();
+  std::ofstream(stem + ".spv", std::ios::binary)
+      .write(reinterpret_cast<const char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
+  std::string cmd = "spirv-dis " + stem + ".spv > " + stem + ".txt 2>&1";
+  std::map<std::string, uint32_t> out;
+  if (std::system(cmd.c_str()) == 0) {
+    std::ifstream text(stem + ".txt");
+    std::string op, name, decoration;
+    for (std::string line; std::getline(text, line);) {
+      std::istringstream in(line);
+      uint32_t binding = 0;
+      if (in >> op >> name >> decoration >> binding && op == "OpDecorate" && decoration == "Binding") out[name] = binding;
+    }
+  }
+  std::filesystem::remove(stem + ".spv");
+  std::filesystem::remove(stem + ".txt");
+  return out;
 }
 
 inline std::string messages_of(const CompiledShader& s) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 
 #include "compile_test_util.h"
 #include "fx/compile/effect_programs.h"
@@ -51,6 +52,12 @@ TEST_P(FxcAccepts, ChecksCleanAndEveryStageCompilesToValidSpirv) {
       for (const ImageBinding& i : s.shader.reflection.images) names.push_back(i.name);
       for (const InterfaceVariable& v : s.shader.reflection.inputs) names.push_back(v.name);
       for (const std::string& n : names) EXPECT_EQ(n.find("__fx"), std::string::npos) << n;
+      // Every resource has a binding of its own in the module (D3D counts t#, s#, b#, u# apart).
+      std::map<uint32_t, std::string> owner;
+      for (const auto& [name, binding] : test::spirv_bindings(s.shader.spirv)) {
+        auto [it, fresh] = owner.emplace(binding, name);
+        EXPECT_TRUE(fresh) << name << " and " << it->second << " share binding " << binding;
+      }
     }
     EXPECT_TRUE(p.compiled) << pass.technique << "." << pass.pass << "\n" << render_text(p.diagnostics, sm);
     // The other elements of a shader array the pass indexes.
