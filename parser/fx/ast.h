@@ -110,6 +110,7 @@ class ExprPool {
 };
 
 struct Annotation {
+  uint32_t storage = 0;  // StorageClass bits written in front (fxc allows none of `static`)
   TypeRef type;  // string, float, float2, int, bool, ... (may carry array dims below)
   Text name;
   List<ExprPtr> array_dims;

@@ -35,6 +35,26 @@ int numeric_components(std::string_view type) {
   return 0;
 }
 
+// A type an annotation may have: numeric (scalars, vectors, matrices, `vector`/`matrix`
+// templates), bool or string.
+bool annotation_type(std::string_view type) {
+  return numeric_components(type) > 0 || iequals(type, "string") || type == "vector" ||
+         type == "matrix";
+}
+
+// The first identifier in `e` that names one of `annotations`, or nullptr.
+const ast::Expr* annotation_named_in(const ast::Expr& e, const ast::List<ast::Annotation>& annotations) {
+  if (e.kind == ast::ExprKind::identifier) {
+    for (const ast::Annotation& a : annotations)
+      if (a.name == e.text) return &e;
+    return nullptr;
+  }
+  for (const ast::ExprPtr& arg : e.args)
+    if (arg)
+      if (const ast::Expr* found = annotation_named_in(*arg, annotations)) return found;
+  return nullptr;
+}
+
 // Leaves of a (possibly nested) initializer list; nullopt if any is not a literal.
 std::optional<size_t> literal_leaves(const ast::Expr& e) {
   if (e.kind != ast::ExprKind::init_list) {
@@ -181,6 +201,7 @@ void Checker::collect_symbols() {
         break;
       case ast::DeclKind::structure:
         define(d.structure->name, d.structure->name_range, {Symbol::structure, {}, {}}, "struct");
+        structs_.emplace(d.structure->name, d.structure);
         break;
       case ast::DeclKind::type_alias:
         define(d.type_alias->name, d.type_alias->range, {Symbol::type_alias, {}, {}}, "typedef");
@@ -242,9 +263,13 @@ void Checker::check_profile_rules() {
   if (!has_technique_ && options_.require_technique) {
     SourceRange at;
     if (!effect_.tokens.empty()) at = effect_.tokens.front().range();
-    // D3DX creates such effects (shader libraries, parameter pools); warn, do not fail.
-    diags_.warning("no-technique", at,
-                   "the effect defines no technique, so it has nothing to apply");
+    // fxc refuses an fx_2_0 effect without a technique; FX10/11 effects without one are
+    // pools and libraries. Only a profile the caller gives says the file is compiled as an
+    // fx_2_0 effect: many .fx files are shaders for ps_2_0 and the like, or libraries, and
+    // the pre-release `fx.2.0` header of the seed listings (wood.fx) comes without one.
+    const bool refused = options_.profile == EffectProfile::fx_2_0;
+    diags_.report(refused ? Severity::error : Severity::warning, "no-technique", at,
+                  "the effect defines no technique, so it has nothing to apply");
   }
 }
 
@@ -326,14 +351,49 @@ void Checker::check_annotations(const ast::List<ast::Annotation>& annotations) {
   for (const ast::Annotation& a : annotations) {
     if (const SourceRange* previous = seen.insert(a.name, a.range))
       report_duplicate("annotation", a.name, a.range, *previous);
-    if (a.value)
-      check_value_type(a.type.name, a.array_dims.size(), *a.value, "annotation", a.name,
-                       "annotation-type-mismatch");
+    // fxc's rules for annotations: literal values of numeric, bool or string type.
+    if (a.storage & ast::kStatic)
+      diags_.error("annotation-static", a.range,
+                   "annotation " + quote(a.name) + " cannot be 'static'");
+    if (!annotation_type(a.type.name))
+      diags_.error("annotation-type", a.type.range,
+                   "annotation " + quote(a.name) + " has type " + quote(a.type.name) +
+                       "; annotations take numeric, bool and string types");
+    if (!a.value) continue;
+    if (const ast::Expr* other = annotation_named_in(*a.value, annotations))
+      diags_.error("annotation-reference", other->range,
+                   "annotation " + quote(a.name) + " refers to annotation " + quote(other->text) +
+                       "; an annotation's value cannot use another annotation");
+    check_value_type(a.type.name, a.array_dims.size(), *a.value, "annotation", a.name,
+                     "annotation-type-mismatch");
   }
+}
+
+std::string Checker::object_member(const ast::TypeRef& type, int depth) const {
+  const ast::Struct* s = type.definition;
+  if (!s)
+    if (const ast::Struct* const* named = structs_.find(type.name)) s = *named;
+  if (!s || depth > 32) return {};  // struct types nest only this deep in real effects
+  for (const ast::Variable& m : s->members) {
+    std::string_view t = m.type.name;
+    if (starts_with_i(t, "texture") || starts_with_i(t, "sampler") || shader_type_stage(t) ||
+        state_object_block(t))
+      return std::string(m.name) + " (" + std::string(t) + ")";
+    if (std::string inner = object_member(m.type, depth + 1); !inner.empty())
+      return std::string(m.name) + "." + inner;
+  }
+  return {};
 }
 
 void Checker::check_variable(const ast::Variable& v) {
   check_annotations(v.annotations);
+  // fxc keeps objects (textures, samplers, shaders, state objects) out of the constants a
+  // struct parameter is laid out in.
+  if (!(v.storage & ast::kStatic))
+    if (std::string member = object_member(v.type, 0); !member.empty())
+      diags_.error("object-in-struct", v.name_range,
+                   "parameter " + quote(v.name) + " is a struct holding the object member " +
+                       member + "; an effect parameter's struct cannot hold objects");
   if (!v.initializer) return;
   const ast::Expr& init = *v.initializer;
   if (init.kind == ast::ExprKind::state_block) {

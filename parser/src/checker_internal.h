@@ -78,6 +78,10 @@ struct Symbol {
 
 // 'text' for messages.
 std::string quote(std::string_view text);
+// True if `s` begins with `prefix`, ignoring ASCII case (`Texture2D` is a "texture").
+inline bool starts_with_i(std::string_view s, std::string_view prefix) {
+  return s.size() >= prefix.size() && iequals(s.substr(0, prefix.size()), prefix);
+}
 // The value of an integer-valued literal expression (`3`, `-1`, `1 << 4`, `TRUE`), if any.
 std::optional<int64_t> literal_int(const ast::Expr& e);
 
@@ -96,6 +100,9 @@ class Checker {
   void check_against_profile(EffectProfile profile);
   void check_annotations(const ast::List<ast::Annotation>& annotations);
   void check_variable(const ast::Variable& v);
+  // The first object-typed member of a struct type (nested structs too), as "a.b (texture)";
+  // empty when there is none or `type` is no struct.
+  std::string object_member(const ast::TypeRef& type, int depth) const;
   void check_technique(const ast::Technique& t);
   void check_value_type(std::string_view type_name, size_t array_dims, const ast::Expr& value,
                         std::string_view what, std::string_view name, std::string_view id);
@@ -141,6 +148,7 @@ class Checker {
   bool has_d3d9_technique_ = false;  // a `technique` (not technique10/11) at file scope
   // Keys view names owned by the effect, which outlives the checker.
   NameTable<Symbol> globals_;
+  NameTable<const ast::Struct*> structs_;  // struct, class and interface types by name
   // Every function by name, overloads in source order (sorted once collected).
   std::vector<std::pair<std::string_view, const ast::Function*>> functions_;
   NameTable<const ast::Function*> function_names_;  // the first overload of each name

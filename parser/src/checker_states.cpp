@@ -10,10 +10,6 @@
 namespace fx::check {
 namespace {
 
-bool starts_with_i(std::string_view s, std::string_view prefix) {
-  return s.size() >= prefix.size() && iequals(s.substr(0, prefix.size()), prefix);
-}
-
 bool is_object_type(StateValueType t) {
   return t == StateValueType::texture || t == StateValueType::sampler ||
          t == StateValueType::shader || t == StateValueType::state_object;

@@ -121,7 +121,8 @@ class Parser {
 
   // --- effect blocks (parse_technique.cpp) ---
   bool parse_annotations(ast::List<ast::Annotation>& out);
-  bool parse_annotation(ast::Annotation& a);
+  // One annotation declaration: a type and one or more `name = value` declarators.
+  void parse_annotation(ast::List<ast::Annotation>& out);
   bool parse_technique(ast::Technique& t);
   bool parse_pass(ast::Pass& p);
   // `{ State = value; ... }` (pass bodies, state objects, sampler_state).

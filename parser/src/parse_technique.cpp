@@ -33,30 +33,45 @@ bool Parser::parse_annotations(ast::List<ast::Annotation>& out) {
       default: break;
     }
     uint32_t depth = depth_;
-    // Elements of annotation, state, pass, member and parameter lists are parsed in place
-    // and dropped if they fail: building one aside and copying it in would copy every
-    // element (a Variable is 176 bytes).
-    if (!parse_annotation(out.emplace_back(arena_))) out.pop_back();
+    parse_annotation(out);
     if (failed_) recover(depth, /*stop_at_greater=*/true);
   }
 }
 
-bool Parser::parse_annotation(ast::Annotation& a) {
+void Parser::parse_annotation(ast::List<ast::Annotation>& out) {
   uint32_t first = pos_;
-  parse_storage();
-  if (!parse_type(a.type)) return false;
-  if (!at(TokenKind::identifier)) {
-    error_here("expected-identifier", "expected an annotation name, found " + describe(tok()));
-    return false;
-  }
-  if (!check_name(tok(), "an annotation")) return false;
-  a.name = keep(advance().text());
-  if (!parse_array_dims(a.array_dims)) return false;
-  if (!expect(TokenKind::equal, "after annotation name")) return false;
-  a.value = parse_assignment();
-  if (failed_) return false;
-  a.range = range_from(first);
-  return expect_semi("after annotation");
+  const uint32_t storage = parse_storage();
+  ast::TypeRef type;
+  if (!parse_type(type)) return;
+  // `int a = 1, b = 2;` declares two annotations of one type, as a parameter list does;
+  // the first one's range starts at the type, the others' at their names.
+  uint32_t start = first;
+  do {
+    if (!at(TokenKind::identifier)) {
+      error_here("expected-identifier", "expected an annotation name, found " + describe(tok()));
+      return;
+    }
+    if (!check_name(tok(), "an annotation")) return;
+    // Elements of annotation, state, pass, member and parameter lists are parsed in place
+    // and dropped if they fail: building one aside and copying it in would copy every
+    // element (a Variable is 176 bytes).
+    ast::Annotation& a = out.emplace_back(arena_);
+    a.storage = storage;
+    a.type = type;
+    a.name = keep(advance().text());
+    if (!parse_array_dims(a.array_dims) || !expect(TokenKind::equal, "after annotation name")) {
+      out.pop_back();
+      return;
+    }
+    a.value = parse_assignment();
+    if (failed_) {
+      out.pop_back();
+      return;
+    }
+    a.range = range_from(start);
+    start = pos_ + 1;  // past the ',' that continues the declaration
+  } while (accept(TokenKind::comma));
+  expect_semi("after annotation");
 }
 
 bool Parser::parse_technique(ast::Technique& t) {

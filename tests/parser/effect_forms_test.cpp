@@ -4,32 +4,17 @@
 
 #include <string>
 
-#include "fx/diagnostic_render.h"
-#include "fx/frontend.h"
+#include "front_end_helpers.h"
 
 namespace fx {
 namespace {
 
-struct FrontEnd {
-  SourceManager sm;
-  DiagnosticSink diags;
-  ParsedEffect parsed;
-  std::string text() const { return render_text(diags.diagnostics(), sm); }
-  const ast::Decl& decl(size_t i) const { return parsed.ast.decls.at(i); }
-};
-
-std::unique_ptr<FrontEnd> run(std::string source, EffectProfile profile = EffectProfile::automatic) {
-  auto f = std::make_unique<FrontEnd>();
-  FrontEndOptions options;
-  options.check.profile = profile;
-  f->parsed = parse_effect_text("t.fx", std::move(source), f->sm, f->diags, options);
-  return f;
-}
+using fxtest::run_front_end;
 
 #define EXPECT_CLEAN(f) EXPECT_EQ((f)->text(), "") << "unexpected diagnostics"
 
 TEST(EffectForms, SharedConstantBuffer) {
-  auto f = run(
+  auto f = run_front_end(
       "shared cbuffer Pool { float4 Shared; };\n"
       "cbuffer Own { float4 Mine; }\n"
       "technique10 T { pass P { } }\n");
@@ -45,7 +30,7 @@ TEST(EffectForms, SharedConstantBuffer) {
 }
 
 TEST(EffectForms, NormalisedResourceElements) {
-  auto f = run(
+  auto f = run_front_end(
       "struct S { snorm float a; unorm float4 b; };\n"
       "Buffer<unorm float4> Colours;\n"
       "technique10 T { pass P { } }\n");
@@ -57,7 +42,7 @@ TEST(EffectForms, NormalisedResourceElements) {
 }
 
 TEST(EffectForms, IndexedParameterReference) {
-  auto f = run(
+  auto f = run_front_end(
       "float4 g_vLightPos[2]; float4x4 m[2];\n"
       "technique T { pass P { LightPosition[0] = <g_vLightPos[1]>;\n"
       "  VertexShaderConstant4[0] = <m[0]>; } }\n");
@@ -68,18 +53,18 @@ TEST(EffectForms, IndexedParameterReference) {
   EXPECT_EQ(value.args[0]->kind, ast::ExprKind::reference);
   EXPECT_EQ(value.args[0]->text, "g_vLightPos");
   EXPECT_EQ(value.args[1]->number, 1);
-  auto g = run("technique T { pass P { LightPosition[0] = <missing[0]>; } }\n");
+  auto g = run_front_end("technique T { pass P { LightPosition[0] = <missing[0]>; } }\n");
   ASSERT_EQ(g->diags.diagnostics().size(), 1u) << g->text();
   EXPECT_EQ(g->diags.diagnostics()[0].id, "undefined-reference");
 }
 
 TEST(EffectForms, StateBlockInAPass) {
-  auto f = run(
+  auto f = run_front_end(
       "stateblock Opaque = stateblock_state { CullMode = None; ZWriteEnable = false; };\n"
       "technique T { pass { StateBlock = <Opaque>; } }\n");
   EXPECT_CLEAN(f);
   // Only a stateblock variable will do.
-  auto g = run("float4 c;\ntechnique T { pass { StateBlock = <c>; } }\n");
+  auto g = run_front_end("float4 c;\ntechnique T { pass { StateBlock = <c>; } }\n");
   ASSERT_EQ(g->diags.diagnostics().size(), 1u) << g->text();
   EXPECT_EQ(g->diags.diagnostics()[0].id, "state-type-mismatch");
 }
@@ -87,7 +72,7 @@ TEST(EffectForms, StateBlockInAPass) {
 // An array of state objects with one initializer per element, each checked on its own:
 // the same state in two elements is no duplicate, a wrong value in one still is an error.
 TEST(EffectForms, StateObjectArrayWithElementInitializers) {
-  auto f = run(
+  auto f = run_front_end(
       "int i;\n"
       "BlendState Blends[3] { { BlendOp = Add; }, { BlendOp = Subtract; }, { BlendOp = Rev_Subtract; } };\n"
       "DepthStencilState Depths[2] { { DepthFunc = 1; }, { DepthFunc = i + 2; }, };\n"
@@ -100,18 +85,18 @@ TEST(EffectForms, StateObjectArrayWithElementInitializers) {
   EXPECT_EQ(blends.element_states[2][0].name, "BlendOp");
   EXPECT_EQ(blends.element_states[2][0].value->text, "Rev_Subtract");
   EXPECT_EQ(f->decl(2).state_object->element_states.size(), 2u);
-  auto g = run("BlendState B[2] { { BlendOp = Add; }, { BlendOp = Sum; } };\n"
+  auto g = run_front_end("BlendState B[2] { { BlendOp = Add; }, { BlendOp = Sum; } };\n"
                "technique10 T { pass P { } }\n");
   ASSERT_EQ(g->diags.diagnostics().size(), 1u) << g->text();
   EXPECT_EQ(g->diags.diagnostics()[0].id, "unknown-state-value");
-  auto h = run("BlendState B[2] { { BlendOp = Add; } { BlendOp = Add; } };\nfloat after;\n");
+  auto h = run_front_end("BlendState B[2] { { BlendOp = Add; } { BlendOp = Add; } };\nfloat after;\n");
   EXPECT_EQ(h->diags.diagnostics().at(0).id, "expected-token") << h->text();
 }
 
 // Structs written in place as a member's type, named or anonymous, nested, in a struct or
 // a cbuffer; and the C spelling `struct Name` of a struct type.
 TEST(EffectForms, StructsDefinedInPlace) {
-  auto f = run(
+  auto f = run_front_end(
       "struct Inner { float a; };\n"
       "struct Outer {\n"
       "  struct { float foo; float bar; } anonymous;\n"
@@ -138,7 +123,7 @@ TEST(EffectForms, StructsDefinedInPlace) {
 }
 
 TEST(EffectForms, ArrayCasts) {
-  auto f = run(
+  auto f = run_front_end(
       "float4 source[16];\n"
       "static float2 packed[32] = (float2[32])source;\n"
       "float2 two[2] = (float2[2])float4(1, 2, 3, 4);\n"
@@ -149,14 +134,14 @@ TEST(EffectForms, ArrayCasts) {
   EXPECT_EQ(cast.text, "float2[32]");
   EXPECT_EQ(cast.args[0]->text, "source");
   // A parenthesised index is still no cast.
-  auto g = run("float a[2]; float b = (a[1]) + 1;\ntechnique T { pass P { } }\n");
+  auto g = run_front_end("float a[2]; float b = (a[1]) + 1;\ntechnique T { pass P { } }\n");
   EXPECT_CLEAN(g);
   EXPECT_EQ(g->decl(1).variable->initializer->kind, ast::ExprKind::binary);
 }
 
 // fx_5_0 dynamic linkage: interfaces, classes implementing them, and their instances.
 TEST(EffectForms, InterfacesAndClasses) {
-  auto f = run(
+  auto f = run_front_end(
       "interface ILight { float4 Shade(float4 c); float4 Tint(float4 c); };\n"
       "interface IScale { float Scale(); };\n"
       "class Ambient : ILight, IScale {\n"
@@ -184,7 +169,7 @@ TEST(EffectForms, InterfacesAndClasses) {
   EXPECT_FALSE(ambient.methods[1].body.empty());
   EXPECT_EQ(infer_profile(f->parsed.ast), EffectProfile::fx_5_0);
   // Older profiles have no dynamic linkage.
-  auto g = run("interface I { float4 F(float4 c); };\ntechnique10 T { pass P { } }\n",
+  auto g = run_front_end("interface I { float4 F(float4 c); };\ntechnique10 T { pass P { } }\n",
                EffectProfile::fx_4_0);
   ASSERT_EQ(g->diags.diagnostics().size(), 1u) << g->text();
   EXPECT_EQ(g->diags.diagnostics()[0].id, "profile-mismatch");
@@ -195,12 +180,12 @@ TEST(EffectForms, InterfacesAndClasses) {
 // API is unknown, with a note naming the profile that reads it; except that a file whose
 // inferred fx_4_0+ profile sits beside a D3D9 technique targets both, and takes both.
 TEST(EffectForms, SamplerStateFollowsTheProfile) {
-  auto f = run(
+  auto f = run_front_end(
       "Texture2D Tex;\n"
       "sampler2D S = sampler_state { Texture = <Tex>; Filter = MIN_MAG_MIP_LINEAR; AddressU = WRAP; };\n"
       "technique10 T { pass P { } }\n");
   EXPECT_CLEAN(f);
-  auto g = run("sampler2D S = sampler_state { MinFilter = Linear; };\ntechnique10 T { pass P { } }\n",
+  auto g = run_front_end("sampler2D S = sampler_state { MinFilter = Linear; };\ntechnique10 T { pass P { } }\n",
                EffectProfile::fx_4_0);
   EXPECT_EQ(g->text(),
             "t.fx:1:31: error: unknown state 'MinFilter' in a SamplerState; did you mean "
@@ -209,16 +194,16 @@ TEST(EffectForms, SamplerStateFollowsTheProfile) {
             "                              ^~~~~~~~~\n"
             "t.fx:1:31: note: fix-it: replace with 'Filter'\n"
             "t.fx:1:31: note: a Direct3D 9 sampler state, read in fx_2_0 only; this effect is fx_4_0\n");
-  auto h = run("sampler2D S = sampler_state { Filter = MIN_MAG_MIP_LINEAR; };\n"
+  auto h = run_front_end("sampler2D S = sampler_state { Filter = MIN_MAG_MIP_LINEAR; };\n"
                "technique T { pass P { } }\n");
   ASSERT_EQ(h->diags.diagnostics().size(), 1u) << h->text();
   EXPECT_EQ(h->diags.diagnostics()[0].notes.at(0).message,
             "a Direct3D 10 sampler state, read in fx_4_0 and later; this effect is fx_2_0");
-  auto both = run(
+  auto both = run_front_end(
       "sampler2D S = sampler_state { MinFilter = Linear; Filter = MIN_MAG_MIP_POINT; };\n"
       "technique T9 { pass P { } }\ntechnique10 T10 { pass P { } }\n");
   EXPECT_CLEAN(both);
-  auto d3d10_only = run("sampler2D S = sampler_state { MinFilter = Linear; };\n"
+  auto d3d10_only = run_front_end("sampler2D S = sampler_state { MinFilter = Linear; };\n"
                         "technique10 T10 { pass P { } }\n");
   EXPECT_EQ(d3d10_only->diags.diagnostics().size(), 1u) << d3d10_only->text();
 }
