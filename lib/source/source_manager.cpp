@@ -3,6 +3,10 @@
 #include <algorithm>
 
 namespace fx {
+
+namespace {
+constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+}  // namespace
 namespace {
 constexpr uint32_t kScratchChunk = 64 * 1024;
 }
@@ -147,8 +151,9 @@ SourceLocation SourceManager::file_location(SourceLocation loc) const {
 
 const std::vector<uint32_t>& SourceManager::line_starts(const Entry& e) const {
   if (e.line_starts.empty() && e.text) {
-    e.line_starts.push_back(0);
     const std::string& t = *e.text;
+    // A UTF-8 byte-order mark is not part of line 1: columns count from after it.
+    e.line_starts.push_back(t.starts_with(kByteOrderMark) ? static_cast<uint32_t>(kByteOrderMark.size()) : 0);
     for (uint32_t i = 0; i < t.size(); ++i)
       if (t[i] == '\n') e.line_starts.push_back(i + 1);
   }
@@ -161,6 +166,7 @@ PresumedLocation SourceManager::physical(SourceLocation loc) const {
   if (!e || !e->text) return {};
   uint32_t offset = loc.raw - e->base;
   const auto& starts = line_starts(*e);
+  offset = std::max(offset, starts.front());  // inside a byte-order mark: where line 1 starts
   auto it = std::upper_bound(starts.begin(), starts.end(), offset);
   uint32_t line = static_cast<uint32_t>(it - starts.begin());
   return {e->name, line, offset - starts[line - 1] + 1};
@@ -194,7 +200,7 @@ std::string_view SourceManager::line_text(SourceLocation loc) const {
   std::string_view text = *e->text;
   size_t offset = loc.raw - e->base;
   size_t newline = offset == 0 ? std::string_view::npos : text.rfind('\n', offset - 1);
-  size_t begin = newline == std::string_view::npos ? 0 : newline + 1;
+  size_t begin = newline == std::string_view::npos ? line_starts(*e).front() : newline + 1;
   size_t end = text.find('\n', offset);
   if (end == std::string_view::npos) end = text.size();
   std::string_view line = text.substr(begin, end - begin);

@@ -16,6 +16,18 @@ TEST(SourceManager, MapsOffsetsToLineAndColumn) {
   EXPECT_EQ(sm.line_text(sm.location(f, 0)), "float x;");
 }
 
+// Windows editors start files with a UTF-8 byte-order mark; it is no column of line 1.
+TEST(SourceManager, ColumnsOnLine1CountFromAfterAByteOrderMark) {
+  SourceManager sm;
+  BufferId f = sm.add_buffer("bom.fx", "\xEF\xBB\xBF" "float x;\nint y;\n");
+  PresumedLocation p = sm.presumed(sm.location(f, 9));  // 'x'
+  EXPECT_EQ(p.line, 1u);
+  EXPECT_EQ(p.column, 7u);
+  EXPECT_EQ(sm.line_text(sm.location(f, 9)), "float x;");
+  EXPECT_EQ(sm.presumed(sm.location(f, 16)).column, 5u);  // 'y' on line 2
+  EXPECT_EQ(sm.presumed(sm.location(f, 1)).column, 1u);   // inside the mark
+}
+
 TEST(SourceManager, EndOfBufferBelongsToBuffer) {
   SourceManager sm;
   BufferId a = sm.add_buffer("a.fx", "abc");
