@@ -134,10 +134,11 @@ VertexLayout EffectPreview::vertex_layout(std::span<const InterfaceVariable> inp
       else layout.attributes.push_back({in.name, zero_stream_format(in), 0, 1});
       continue;
     }
-    const std::string sem = canonical_semantic(in.semantic);
-    bool known = false;
-    for (const VertexAttribute& a : layout.attributes) known = known || canonical_semantic(a.semantic) == sem;
-    if (!known) layout.attributes.push_back({sem, zero_stream_format(in), 0, 1});
+    for (const std::string& sem : input_semantics(in)) {
+      bool known = false;
+      for (const VertexAttribute& a : layout.attributes) known = known || canonical_semantic(a.semantic) == sem;
+      if (!known) layout.attributes.push_back({sem, zero_stream_format(in), 0, 1});
+    }
   }
   return layout;
 }

@@ -18,6 +18,19 @@ std::string canonical_semantic(std::string_view semantic) {
   return s;
 }
 
+std::vector<std::string> input_semantics(const InterfaceVariable& input) {
+  const std::string semantic = input.semantic.empty() ? input.name : input.semantic;
+  const uint32_t slots = input.type.rows > 1 ? std::max<uint32_t>(1, input.type.columns) : 1;
+  if (slots == 1) return {canonical_semantic(semantic)};
+  size_t digits = semantic.size();
+  while (digits > 0 && semantic[digits - 1] >= '0' && semantic[digits - 1] <= '9') --digits;
+  const uint32_t first = digits < semantic.size() ? uint32_t(std::stoul(semantic.substr(digits))) : 0;
+  std::vector<std::string> out;
+  for (uint32_t k = 0; k < slots; ++k)
+    out.push_back(canonical_semantic(semantic.substr(0, digits) + std::to_string(first + k)));
+  return out;
+}
+
 std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout,
                                                const std::vector<InterfaceVariable>& inputs,
                                                DiagnosticSink& sink) {
@@ -25,31 +38,34 @@ std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout,
   bool ok = true;
   std::vector<bool> binding_used(layout.bindings.size(), false);
   for (const InterfaceVariable& in : inputs) {
-    const std::string want = canonical_semantic(in.semantic.empty() ? in.name : in.semantic);
-    auto it = std::find_if(layout.attributes.begin(), layout.attributes.end(),
-                           [&](const VertexAttribute& a) { return canonical_semantic(a.semantic) == want; });
-    if (it == layout.attributes.end()) {
-      std::string offered;
-      for (const VertexAttribute& a : layout.attributes)
-        offered += (offered.empty() ? "" : ", ") + a.semantic;
-      sink.error("vk-vertex-attribute-missing", {},
-                 "the vertex shader reads " + want + " ('" + in.name + "', location " +
-                     std::to_string(in.location) + ") but the vertex layout provides " +
-                     (offered.empty() ? std::string("no attributes") : offered));
-      ok = false;
-      continue;
+    const std::vector<std::string> slots = input_semantics(in);
+    for (uint32_t slot = 0; slot < slots.size(); ++slot) {
+      const std::string& want = slots[slot];
+      auto it = std::find_if(layout.attributes.begin(), layout.attributes.end(),
+                             [&](const VertexAttribute& a) { return canonical_semantic(a.semantic) == want; });
+      if (it == layout.attributes.end()) {
+        std::string offered;
+        for (const VertexAttribute& a : layout.attributes)
+          offered += (offered.empty() ? "" : ", ") + a.semantic;
+        sink.error("vk-vertex-attribute-missing", {},
+                   "the vertex shader reads " + want + " ('" + in.name + "', location " +
+                       std::to_string(in.location + slot) + ") but the vertex layout provides " +
+                       (offered.empty() ? std::string("no attributes") : offered));
+        ok = false;
+        continue;
+      }
+      auto b = std::find_if(layout.bindings.begin(), layout.bindings.end(),
+                            [&](const VertexBinding& vb) { return vb.binding == it->binding; });
+      if (b == layout.bindings.end()) {
+        sink.error("vk-vertex-binding-missing", {},
+                   "attribute " + it->semantic + " uses vertex binding " +
+                       std::to_string(it->binding) + " which the layout does not declare");
+        ok = false;
+        continue;
+      }
+      binding_used[size_t(b - layout.bindings.begin())] = true;
+      out.attributes.push_back({in.location + slot, it->binding, it->format, it->offset});
     }
-    auto b = std::find_if(layout.bindings.begin(), layout.bindings.end(),
-                          [&](const VertexBinding& vb) { return vb.binding == it->binding; });
-    if (b == layout.bindings.end()) {
-      sink.error("vk-vertex-binding-missing", {},
-                 "attribute " + it->semantic + " uses vertex binding " +
-                     std::to_string(it->binding) + " which the layout does not declare");
-      ok = false;
-      continue;
-    }
-    binding_used[size_t(b - layout.bindings.begin())] = true;
-    out.attributes.push_back({in.location, it->binding, it->format, it->offset});
   }
   if (!ok) return std::nullopt;
   for (size_t i = 0; i < layout.bindings.size(); ++i)

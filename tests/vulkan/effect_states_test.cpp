@@ -148,6 +148,25 @@ TEST_F(EffectStatesTest, SamplerAddressModes) {
 
 // A vertex input the mesh does not have comes from a zero stream in the input's own type:
 // an integer BLENDINDICES read as float is a validation error (the fixture fails on it).
+// A matrix vertex input (an instanced world matrix) takes four locations: the zero stream
+// feeds each, or validation reports the columns past the first as not provided.
+TEST_F(EffectStatesTest, MissingMatrixVertexInputsFeedEveryColumn) {
+  auto r = bind_text(ctx(), "instanced.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+struct V { float4 pos : POSITION; float4 color : COLOR0; };
+V VS(float4 p : POSITION, float4x4 instance : TEXCOORD4) {
+  V o; o.pos = mul(p, WorldViewProjection); o.color = float4(1, 1, 1, 1) + instance[3]; return o;
+}
+float4 PS(float4 c : COLOR0) : COLOR0 { return c; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                    "t");
+  ASSERT_TRUE(r);
+  auto image = r->render();
+  ASSERT_TRUE(image);
+  EXPECT_EQ(centre(*image), (std::array<int, 4>{255, 255, 255, 255}));
+}
+
 TEST_F(EffectStatesTest, MissingIntegerVertexInputsReadZeroAsIntegers) {
   auto r = bind_text(ctx(), "skin_inputs.fx", R"(
 float4x4 WorldViewProjection : WORLDVIEWPROJECTION;

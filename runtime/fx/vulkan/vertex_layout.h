@@ -43,6 +43,11 @@ struct VertexInput {
 // Canonical semantic: upper case, a trailing index of 0 dropped ("texcoord0" -> "TEXCOORD").
 std::string canonical_semantic(std::string_view semantic);
 
+// The semantics a vertex input reads, one per location it takes: a matrix input
+// (`float4x4 World : TEXCOORD4`, instancing) takes one location per column and, as in D3D,
+// one semantic index each (TEXCOORD4..TEXCOORD7). Canonical spellings.
+std::vector<std::string> input_semantics(const InterfaceVariable& input);
+
 // Matches every shader input to an attribute by semantic (GLSL inputs, which have none,
 // match by variable name). A shader input with no attribute is "vk-vertex-attribute-missing"
 // naming the semantic and the attributes on offer; attributes the shader does not read are
