@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "fx/compile/spirv_cache.h"
+#include "shader_diagnostics.h"
 
 namespace fx {
 namespace {
@@ -58,6 +59,7 @@ StageProgram EffectPrograms::compile_stage(const StageUnit& stage, TranslationUn
     // stage's as a whole: it lands on the pass state that names the shader.
     for (Diagnostic& d : out.diagnostics)
       if (!d.range.valid()) d.range = stage.range;
+    detail::refine_shader_diagnostics(out.diagnostics, sm_, units_.symbols());
     ++stats_.stages_compiled;
     stats_.compile_ms += out.shader.total_ms;
     if (!out.shader.from_cache) stats_.glslang_ms += out.shader.parse_ms + out.shader.link_ms;

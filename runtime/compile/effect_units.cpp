@@ -229,10 +229,16 @@ class EffectUnitBuilder {
  private:
   void index_declarations() {
     for (const ast::Decl& d : effect_.decls) {
-      if (d.kind == ast::DeclKind::function) functions_.push_back(d.function);
-      if (d.kind == ast::DeclKind::variable) variables_.push_back(d.variable);
+      if (d.kind == ast::DeclKind::function) functions_.push_back(d.function), u_.symbols_.push_back(d.function->name);
+      if (d.kind == ast::DeclKind::variable) variables_.push_back(d.variable), u_.symbols_.push_back(d.variable->name);
       if (d.kind == ast::DeclKind::glsl_block) glsl_names_.push_back(d.glsl_block->name);
+      if (d.kind == ast::DeclKind::structure) u_.symbols_.push_back(d.structure->name);
+      if (d.kind == ast::DeclKind::type_alias) u_.symbols_.push_back(d.type_alias->name);
+      if (d.kind == ast::DeclKind::constant_buffer)
+        for (const ast::Variable& m : d.constant_buffer->members) u_.symbols_.push_back(m.name);
     }
+    std::sort(u_.symbols_.begin(), u_.symbols_.end());
+    u_.symbols_.erase(std::unique(u_.symbols_.begin(), u_.symbols_.end()), u_.symbols_.end());
   }
 
   // ---- HLSL ----------------------------------------------------------------------------

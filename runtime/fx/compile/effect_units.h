@@ -97,6 +97,9 @@ class EffectUnits {
   // stage's. An uncalled function with a stream or patch parameter compiles only as its
   // stage's entry, so it is left out too.
   std::string hlsl_code_for(std::string_view entry) const;
+  // The names the effect declares at file scope (variables, functions, types, cbuffer
+  // members), for "did you mean" on an unknown name in shader code.
+  const std::vector<std::string>& symbols() const { return symbols_; }
   // True when the pre-release HLSL prelude is prepended (an `fx.2.0`-style header).
   bool pre_release() const { return pre_release_; }
 
@@ -122,6 +125,7 @@ class EffectUnits {
   // Which functions `entry`'s unit holds (indices into functions_).
   std::vector<bool> reached_from(std::string_view entry) const;
   bool pre_release_ = false;
+  std::vector<std::string> symbols_;
   std::vector<EffectPass> passes_;
   std::vector<GlslBlockText> glsl_blocks_;
   // Wrapper entry points by (function, arguments), keyed by the stage's entry text.
