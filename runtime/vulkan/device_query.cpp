@@ -147,6 +147,10 @@ DeviceSupport query_device(VkPhysicalDevice physical_device, uint32_t index) {
   f.geometry_shader = f2.features.geometryShader;
   f.tessellation_shader = f2.features.tessellationShader;
   f.texture_compression_bc = f2.features.textureCompressionBC;
+  f.image_cube_array = f2.features.imageCubeArray;
+  f.image_gather_extended = f2.features.shaderImageGatherExtended;
+  f.fragment_stores_and_atomics = f2.features.fragmentStoresAndAtomics;
+  f.vertex_pipeline_stores_and_atomics = f2.features.vertexPipelineStoresAndAtomics;
 
   vkGetPhysicalDeviceQueueFamilyProperties(physical_device, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
@@ -172,6 +176,10 @@ FeatureChain::FeatureChain(const DeviceSupport& supported) {
   core.geometryShader = f.geometry_shader;
   core.tessellationShader = f.tessellation_shader;
   core.textureCompressionBC = f.texture_compression_bc;
+  core.imageCubeArray = f.image_cube_array;
+  core.shaderImageGatherExtended = f.image_gather_extended;
+  core.fragmentStoresAndAtomics = f.fragment_stores_and_atomics;
+  core.vertexPipelineStoresAndAtomics = f.vertex_pipeline_stores_and_atomics;
 
   v13.dynamicRendering = f.dynamic_rendering;
   v13.synchronization2 = f.synchronization2;

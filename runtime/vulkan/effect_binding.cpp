@@ -214,11 +214,11 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
             sink.warning("vk-texture-unresolved", pass_info.range,
                          "pass '" + pass_info.name + "': '" + image.name +
                              "' names no texture parameter; a white texture stands in until set_texture()");
-            slot.data = textures.resolve(model, TextureInfo{}, desc.effect_dir, image.dim, sink);
+            slot.data = textures.resolve(model, TextureInfo{}, desc.effect_dir, image.dim, image.arrayed, sink);
           } else {
             const bool first = std::find(resolved.begin(), resolved.end(), slot.texture_param) == resolved.end();
             DiagnosticSink repeat;  // the same warning for every pass sampling the texture is noise
-            slot.data = textures.resolve(model, *tex, desc.effect_dir, image.dim, first ? sink : repeat);
+            slot.data = textures.resolve(model, *tex, desc.effect_dir, image.dim, image.arrayed, first ? sink : repeat);
             if (first) resolved.push_back(slot.texture_param);
           }
           if (!slot.data) {

@@ -30,28 +30,32 @@ std::string generator_key(const TextureInfo& t) {
 }
 
 // A 1x1 texel that leaves the shading it feeds neutral: a normal map's "straight out of
-// the surface", or white for colours and masks.
-std::string stand_in_key(bool normal_map, ImageDim dim) {
-  return std::string(normal_map ? "stand-in:normal:" : "stand-in:white:") + std::to_string(int(dim));
+// the surface", or white for colours and masks. Made in the shape the shader samples.
+std::string stand_in_key(bool normal_map, ImageDim dim, bool arrayed) {
+  return std::string(normal_map ? "stand-in:normal:" : "stand-in:white:") + std::to_string(int(dim)) +
+         (arrayed ? ":array" : "");
 }
 
-EffectTextureData stand_in(bool normal_map, ImageDim dim) {
+EffectTextureData stand_in(bool normal_map, ImageDim dim, bool arrayed) {
   EffectTextureData d;
-  d.key = stand_in_key(normal_map, dim);
+  d.key = stand_in_key(normal_map, dim, arrayed);
   d.dim = dim;
+  d.arrayed = arrayed;
   d.stand_in = true;
-  const uint8_t texel[4] = {uint8_t(normal_map ? 128 : 255), uint8_t(normal_map ? 128 : 255), 255, 255};
-  if (dim == ImageDim::dim_3d) {
-    // Texture::from_table makes a 3D image only for depth > 1.
-    shading::Table table = shading::Table::make(2, 2, 2, 4, shading::TableFormat::unorm8);
-    for (size_t i = 0; i < table.unorm8.size(); ++i) table.unorm8[i] = texel[i % 4];
-    d.table = std::move(table);
-    return d;
-  }
   fx::Image image = fx::Image::blank(1, 1, 4);
+  const uint8_t texel[4] = {uint8_t(normal_map ? 128 : 255), uint8_t(normal_map ? 128 : 255), 255, 255};
   std::copy(texel, texel + 4, image.pixels.begin());
   d.image = std::move(image);
   return d;
+}
+
+ImageKind image_kind(ImageDim dim) {
+  switch (dim) {
+    case ImageDim::dim_1d: return ImageKind::image1d;
+    case ImageDim::dim_3d: return ImageKind::image3d;
+    case ImageDim::cube: return ImageKind::cube;
+    default: return ImageKind::image2d;
+  }
 }
 
 }  // namespace
@@ -59,7 +63,7 @@ EffectTextureData stand_in(bool normal_map, ImageDim dim) {
 std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const EffectModel& model,
                                                                      const TextureInfo& texture,
                                                                      const std::filesystem::path& effect_dir,
-                                                                     ImageDim dim, DiagnosticSink& sink) {
+                                                                     ImageDim dim, bool arrayed, DiagnosticSink& sink) {
   const Parameter* param = texture.parameter < model.parameters.size() ? &model.parameters[texture.parameter] : nullptr;
   const bool normal_map = param && (iequals(param->semantic, "NORMALMAP") || iequals(param->semantic, "NORMAL"));
   std::string key;
@@ -79,10 +83,10 @@ std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const Effec
                    "texture file '" + file.string() + "' of '" + (param ? param->name : std::string()) +
                        "' cannot be read; a neutral " + (normal_map ? "flat normal" : "white") +
                        " texture stands in");
-      key = stand_in_key(normal_map, dim);
+      key = stand_in_key(normal_map, dim, arrayed);
     }
   } else {
-    key = stand_in_key(normal_map, dim);
+    key = stand_in_key(normal_map, dim, arrayed);
   }
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -92,7 +96,7 @@ std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const Effec
   // race to bake the same table; the first to insert wins and both get equal data.
   EffectTextureData data;
   if (key.rfind("stand-in:", 0) == 0) {
-    data = stand_in(normal_map, dim);
+    data = stand_in(normal_map, dim, arrayed);
   } else if (!texture.generator.empty()) {
     auto table = shading::bake(texture.generator, texture.generator_params, sink, texture.generator_range);
     if (!table) return nullptr;
@@ -103,7 +107,7 @@ std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const Effec
     if (!image) {
       sink.warning("vk-texture-file-missing", param ? param->range : SourceRange{},
                    "texture file '" + file.string() + "' cannot be decoded; a neutral texture stands in");
-      data = stand_in(normal_map, dim);
+      data = stand_in(normal_map, dim, arrayed);
     } else {
       data.image = std::move(*image);
     }
@@ -117,9 +121,9 @@ std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const Effec
 const Texture* EffectTextureCache::gpu(const EffectTextureData& data, DiagnosticSink& sink) {
   if (auto it = gpu_.find(data.key); it != gpu_.end()) return &it->second;
   std::optional<Texture> texture;
-  if (data.stand_in && data.dim == ImageDim::cube) {
-    const fx::Image* face = &*data.image;
-    texture = Texture::cube_from_images(*ctx_, {face, face, face, face, face, face}, ColorSpace::linear, sink);
+  if (data.stand_in) {
+    const uint8_t* p = data.image->pixels.data();
+    texture = Texture::solid(*ctx_, {p[0], p[1], p[2], p[3]}, image_kind(data.dim), data.arrayed, sink);
   } else if (data.table) texture = Texture::from_table(*ctx_, *data.table, sink);
   else if (data.image) texture = Texture::from_image(*ctx_, *data.image, ColorSpace::linear, sink);
   if (!texture) return nullptr;

@@ -83,8 +83,9 @@ std::optional<Image> Image::create(const Context& ctx, const ImageDesc& requeste
   ImageDesc desc = requested;
   const bool cube = desc.kind == ImageKind::cube;
   const bool three_d = desc.kind == ImageKind::image3d;
+  const bool one_d = desc.kind == ImageKind::image1d;
   if (desc.width == 0 || desc.height == 0 || desc.depth == 0 || desc.array_layers == 0 ||
-      (!three_d && desc.depth != 1) || (three_d && desc.array_layers != 1) ||
+      (!three_d && desc.depth != 1) || (three_d && desc.array_layers != 1) || (one_d && desc.height != 1) ||
       (cube && desc.width != desc.height)) {
     sink.error("vk-invalid-image", {},
                "invalid image shape " + std::to_string(desc.width) + "x" +
@@ -98,7 +99,7 @@ std::optional<Image> Image::create(const Context& ctx, const ImageDesc& requeste
 
   auto info = structure<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
   info.flags = cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
-  info.imageType = three_d ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
+  info.imageType = three_d ? VK_IMAGE_TYPE_3D : one_d ? VK_IMAGE_TYPE_1D : VK_IMAGE_TYPE_2D;
   info.format = desc.format;
   info.extent = {desc.width, desc.height, desc.depth};
   info.mipLevels = desc.mip_levels;
@@ -140,12 +141,15 @@ std::optional<Image> Image::create(const Context& ctx, const ImageDesc& requeste
 
   auto view = structure<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
   view.image = img.image_;
+  const bool array = desc.array_view || desc.array_layers > (cube ? 6u : 1u);
   if (three_d)
     view.viewType = VK_IMAGE_VIEW_TYPE_3D;
   else if (cube)
-    view.viewType = desc.array_layers > 6 ? VK_IMAGE_VIEW_TYPE_CUBE_ARRAY : VK_IMAGE_VIEW_TYPE_CUBE;
+    view.viewType = array ? VK_IMAGE_VIEW_TYPE_CUBE_ARRAY : VK_IMAGE_VIEW_TYPE_CUBE;
+  else if (one_d)
+    view.viewType = array ? VK_IMAGE_VIEW_TYPE_1D_ARRAY : VK_IMAGE_VIEW_TYPE_1D;
   else
-    view.viewType = desc.array_layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+    view.viewType = array ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
   view.format = desc.format;
   view.subresourceRange = img.full_range();
   if (!check(vkCreateImageView(img.device_, &view, nullptr, &img.view_), sink, "vkCreateImageView"))

@@ -88,6 +88,18 @@ std::optional<Texture> Texture::from_image(const Context& ctx, const fx::Image& 
   return upload(ctx, desc, pixels.data(), pixels.size(), sink);
 }
 
+std::optional<Texture> Texture::solid(const Context& ctx, const std::array<uint8_t, 4>& rgba, ImageKind kind,
+                                      bool array, DiagnosticSink& sink) {
+  ImageDesc desc;
+  desc.kind = kind;
+  desc.array_view = array;
+  desc.debug_name = "fxkit stand-in texture";
+  const size_t layers = kind == ImageKind::cube ? 6 : 1;
+  std::vector<uint8_t> texels;
+  for (size_t i = 0; i < layers; ++i) texels.insert(texels.end(), rgba.begin(), rgba.end());
+  return upload(ctx, desc, texels.data(), texels.size(), sink);
+}
+
 std::optional<Texture> Texture::cube_from_images(const Context& ctx,
                                                  const std::array<const fx::Image*, 6>& faces,
                                                  ColorSpace space, DiagnosticSink& sink) {

@@ -178,5 +178,30 @@ TEST_F(EffectStatesTest, MissingMatrixVertexInputsFeedEveryColumn) {
             (std::array<int, 4>{255, 255, 255, 255}));
 }
 
+// A texture the effect names but gives no data gets a white stand-in in the shape the shader
+// samples: a 2D view bound to a 1D sampler crashed lavapipe, and array samplers need array
+// views (the fixture fails on the validation error).
+TEST_F(EffectStatesTest, StandInTexturesTakeTheShapeTheShaderSamples) {
+  if (!ctx().features().image_cube_array) GTEST_SKIP() << "the device cannot sample cube arrays";
+  auto r = bind_text(ctx(), "shapes.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+texture Ramp; sampler1D RampSampler = sampler_state { Texture = <Ramp>; };
+texture Volume; sampler3D VolumeSampler = sampler_state { Texture = <Volume>; };
+Texture1D Line; Texture2DArray Layers; TextureCube Sky; TextureCubeArray Skies; SamplerState Linear;
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target {
+  return tex1D(RampSampler, 0.5) * tex3D(VolumeSampler, 0.5) * Line.Sample(Linear, 0.5) *
+         Layers.Sample(Linear, float3(0.5, 0.5, 0)) * Sky.Sample(Linear, float3(1, 0, 0)) *
+         Skies.Sample(Linear, float4(1, 0, 0, 0));
+}
+technique10 t { pass p { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)",
+                    "t");
+  ASSERT_TRUE(r);
+  auto image = r->render();
+  ASSERT_TRUE(image);
+  EXPECT_EQ(centre(*image), (std::array<int, 4>{255, 255, 255, 255}));
+}
+
 }  // namespace
 }  // namespace fx::vk::testing

@@ -77,6 +77,12 @@ struct DeviceFeatures {
   bool geometry_shader = false;
   bool tessellation_shader = false;
   bool texture_compression_bc = false;
+  // What HLSL resources need where the device has it: TextureCubeArray (SampledCubeArray),
+  // Gather with offsets, RW resources written from pixel and vertex shaders.
+  bool image_cube_array = false;
+  bool image_gather_extended = false;
+  bool fragment_stores_and_atomics = false;
+  bool vertex_pipeline_stores_and_atomics = false;
   // Vulkan 1.3 maintenance4: among others, a vertex output the next stage does not read is
   // well defined (Direct3D links stages by semantic), so the layer does not warn about it.
   bool maintenance4 = false;

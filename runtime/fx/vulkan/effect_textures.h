@@ -27,6 +27,7 @@ struct EffectTextureData {
   std::optional<shading::Table> table;  // procedural generators
   bool stand_in = false;                // a neutral texture for a missing file
   ImageDim dim = ImageDim::dim_2d;       // stand-ins take the shape the shader samples
+  bool arrayed = false;                  // ... as an array view (Texture2DArray)
 };
 
 class EffectTextureCache {
@@ -41,10 +42,12 @@ class EffectTextureCache {
   // semantics, white otherwise) and the warning "vk-texture-file-missing"; a texture with
   // neither (set by the application) gets the stand-in silently. Null only when a
   // generator fails.
-  // `dim` is how the shader samples it (stand-ins are made in that shape: 2D, 3D or cube).
+  // `dim` and `arrayed` are how the shader samples it (stand-ins are made in that shape: 1D,
+  // 2D, 3D or cube, as an array view for Texture2DArray and its kin): a view of another
+  // shape is invalid, and lavapipe crashes on a 2D view bound to a 1D sampler.
   std::shared_ptr<const EffectTextureData> resolve(const EffectModel& model, const TextureInfo& texture,
                                                    const std::filesystem::path& effect_dir, ImageDim dim,
-                                                   DiagnosticSink& sink);
+                                                   bool arrayed, DiagnosticSink& sink);
 
   // The GPU texture for `data`, uploaded on first use. Render thread only.
   const Texture* gpu(const EffectTextureData& data, DiagnosticSink& sink);

@@ -9,7 +9,7 @@
 
 namespace fx::vk {
 
-enum class ImageKind { image2d, image3d, cube };
+enum class ImageKind { image2d, image3d, cube, image1d };
 
 // What Image::create makes.
 struct ImageDesc {
@@ -18,6 +18,7 @@ struct ImageDesc {
   uint32_t width = 1, height = 1, depth = 1;  // depth > 1 only for image3d
   uint32_t mip_levels = 1;                    // 0 means the full chain
   uint32_t array_layers = 1;                  // for cube: number of cubes (6 layers each)
+  bool array_view = false;                    // view it as an array even with one layer (Texture2DArray)
   VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   const char* debug_name = nullptr;

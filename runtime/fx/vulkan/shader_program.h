@@ -38,6 +38,7 @@ struct ProgramImage {
   ImageDim dim = ImageDim::dim_2d;
   uint32_t binding = 0;
   uint32_t count = 1;
+  bool arrayed = false;  // Texture2DArray, TextureCubeArray, Texture1DArray
 };
 
 class ShaderProgram {

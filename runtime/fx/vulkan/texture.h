@@ -32,6 +32,10 @@ class Texture {
   // sample the format with linear filtering.
   static std::optional<Texture> from_table(const Context& ctx, const fx::shading::Table& table,
                                            DiagnosticSink& sink);
+  // A one-texel texture of one colour in the shape a shader samples (1D, 2D, 3D, cube; as an
+  // array view when `array`): what stands in for a texture the effect names but has no data for.
+  static std::optional<Texture> solid(const Context& ctx, const std::array<uint8_t, 4>& rgba, ImageKind kind,
+                                      bool array, DiagnosticSink& sink);
   // Borrows the application's view: the texture never destroys it. `layout` is the layout
   // the image will be in when the pass samples it.
   static Texture wrap(VkImageView view, VkImageLayout layout, ImageKind kind);
