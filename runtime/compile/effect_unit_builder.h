@@ -1,0 +1,167 @@
+// Builds fx::EffectUnits from a parsed effect: the HLSL text (effect_unit_hlsl.cpp), the
+// GLSL blocks and the passes (effect_unit_passes.cpp), and which functions each entry reaches
+// (effect_units.cpp). Private to runtime/compile.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "effect_shader_text.h"
+#include "fx/ast.h"
+#include "fx/compile/effect_units.h"
+#include "fx/source_manager.h"
+
+namespace fx {
+namespace detail {
+
+// The pipeline stage a pass state sets (the state table's rows: D3D9 assignments, D3D10/11
+// calls, the GLSL and nvFX spellings), in the compiler's names.
+std::optional<ShaderStage> stage_of_state(std::string_view name);
+
+// Effect-only variable types: glslang has no such HLSL types (D3D9 texture objects,
+// strings, shader objects). D3D10's `Texture2D` is real HLSL and stays.
+bool is_effect_only_type(std::string_view type);
+
+// Types that are resources rather than constants (samplers, textures, buffers): their
+// `register(s0)`/`register(t0)` becomes a binding, which glslang keeps per kind.
+bool is_shader_object_type(std::string_view type);
+
+// Spells a constant expression as HLSL (compile-time arguments). False for what cannot be
+// a compile-time argument (compile expressions, state blocks, asm).
+bool spell(const ast::Expr* e, std::string& out);
+
+// HLSL tokens joined with single spaces where the source had space: a one-line spelling,
+// with the names glslang reserves renamed as in the unit's text.
+std::string join_tokens(const std::vector<Token>& toks, ast::TokenSpan span);
+
+// "ps_2_a"/"ps_2_b" -> "ps_2_x" (glslang has one SM2 extended profile); lower case.
+std::string normalize_profile(std::string_view profile);
+
+}  // namespace detail
+
+// Builds EffectUnits from the AST: the shared HLSL text, the GLSL blocks and the passes.
+class EffectUnitBuilder {
+ public:
+  EffectUnitBuilder(EffectUnits& units, const ast::Effect& effect, const SourceManager& sm,
+                    DiagnosticSink& sink)
+      : u_(units), effect_(effect), toks_(effect.tokens), sm_(sm), sink_(sink) {}
+
+  void build();
+
+ private:
+  // A stage whose code calls through an interface needs the class bound to each instance
+  // per pass (BindInterfaces), which fxkit does not compile: the stage says so, at the pass
+  // state, instead of glslang's parse error on `interface`.
+  void mark_dynamic_linkage();
+
+  // Functions that no HLSL stage of any pass reaches go into every unit (see hlsl_code_for),
+  // unless they cannot compile in any (stream or patch parameters, interfaces).
+  void mark_uncalled_functions();
+
+  void index_declarations();
+
+  void emit_hlsl();
+
+  // fx_5_0 dynamic linkage: glslang has no interfaces, so an interface declaration is left
+  // out, and a class is written as the struct with methods it otherwise is (`class C : I {`
+  // -> `struct C {`). Functions that use an interface fail their stages (see
+  // mark_dynamic_linkage).
+  void emit_structure(detail::ShaderTextWriter& w, const ast::Struct& s);
+
+  // The first interface or interface instance a function's tokens name ("" for none).
+  std::string dynamic_linkage_in(ast::TokenSpan span) const;
+
+  // A function as a range of the text that can be left out: it starts with its own #line,
+  // and what follows it starts with one too.
+  void emit_function(detail::ShaderTextWriter& w, const ast::Function& f);
+
+  // A function's tokens, with fxc's assignments to constructors of l-values written as a
+  // temporary and one assignment per part (`{ float4 t = v; a = t.xy; b = t.zw; }`).
+  void emit_function_tokens(detail::ShaderTextWriter& w, ast::TokenSpan span);
+
+  // The names called in a span: identifiers followed by `(` (constructors and intrinsics
+  // too, which name no function of the effect and so reach nothing).
+  std::vector<std::string> calls_in(ast::TokenSpan span) const;
+
+  // Writes the token at `i` as HLSL: a name glslang reserves is renamed (reflection maps
+  // it back).
+  void put_hlsl(detail::ShaderTextWriter& w, uint32_t i, uint32_t last);
+
+  void emit_tokens(detail::ShaderTextWriter& w, ast::TokenSpan span);
+
+  // The index of the `>` closing an annotation opened at `open`, or 0 when the `<` is not an
+  // annotation (a template argument such as Texture2D<float4> never contains a ';').
+  uint32_t annotation_end(uint32_t open, uint32_t last) const;
+
+  // The index of the token closing the bracket at `open` (or `last` if unbalanced).
+  uint32_t matching_close(uint32_t open, uint32_t last) const;
+
+  // The index of the `)` closing a `: register(...)` that starts at the `:` at `colon`, or
+  // 0 when no register binding starts there.
+  uint32_t register_end(uint32_t colon, uint32_t last) const;
+
+  // A global or cbuffer declaration without its effect-only parts: annotations,
+  // `= sampler_state { }` initializers and cbuffer member initializers (which glslang
+  // ignores with a warning; the effect model keeps them as defaults). With
+  // `drop_constant_registers`, a global constant's `: register(c0)` / `register(vs, c0)` goes
+  // too: D3D9 assigns constant registers per shader profile, so two constants may share c0
+  // (one for vs, one for ps), and glslang would turn both into the same offset of one
+  // $Global block, which SPIR-V validation rejects. Parameters are matched by name, so
+  // glslang's own packing loses nothing.
+  void emit_filtered(detail::ShaderTextWriter& w, ast::TokenSpan span, bool drop_constant_registers = false);
+
+  // D3D10 `SamplerState s { Filter = ...; };` -> `SamplerState s;` (the states are ours).
+  void emit_sampler_object(detail::ShaderTextWriter& w, const ast::StateObject& so);
+
+  void collect_glsl();
+
+  void collect_passes();
+
+  void add_technique(const ast::Technique& t, const std::string& group, uint32_t index);
+
+  // D3D9 passes without a vertex or pixel shader use the fixed-function pipeline there.
+  static void add_fixed_function_reasons(const ast::Technique& t, EffectPass& pass, bool null_pixel);
+
+  const ast::Variable* shader_variable(std::string_view name) const;
+
+  // Fills `stage` from a shader value. False when the value names no shader (NULL).
+  bool resolve(const ast::Expr& e, StageUnit& stage, int depth);
+
+  // `VSArray[VSIndices[ShaderIndex]]`: every element of a shader array becomes a choice,
+  // the one the index selects with the initial parameter values the stage itself.
+  bool shader_array(const ast::Expr& e, StageUnit& stage, int depth);
+
+  // An integer expression's value with every parameter at its initial value: literals,
+  // parameters and elements of parameter arrays (`VSIndices[ShaderIndex]`). nullopt when it
+  // depends on anything else.
+  std::optional<int64_t> initial_value(const ast::Expr& e, int depth) const;
+
+  static bool invalid(StageUnit& stage, std::string reason);
+
+  bool glsl(StageUnit& stage, std::vector<std::string> names);
+
+  // The overload of `name` that takes `args` compile-time arguments (D3D picks the same way).
+  const ast::Function* function(std::string_view name, size_t args) const;
+
+  bool hlsl(StageUnit& stage, const std::string& profile, const std::string& name,
+            const std::vector<const ast::Expr*>& args, SourceRange range);
+
+  // `R F__fx_args(varying params) : SEM { return F(varying..., literal...); }`, placed at the
+  // function's own line so errors in the wrapper point at the function.
+  std::string wrapper(const ast::Function& f, const std::vector<std::string>& args) const;
+
+  EffectUnits& u_;
+  const ast::Effect& effect_;
+  const std::vector<Token>& toks_;
+  const SourceManager& sm_;
+  DiagnosticSink& sink_;
+  std::vector<const ast::Function*> functions_;
+  std::vector<const ast::Variable*> variables_;
+  std::vector<std::string> glsl_names_;
+  std::vector<std::string> interfaces_;           // fx_5_0 interface type names
+  std::vector<std::string> interface_instances_;  // globals of an interface type
+};
+
+}  // namespace fx

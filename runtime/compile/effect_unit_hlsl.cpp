@@ -1,0 +1,282 @@
+// The HLSL text and GLSL blocks of an effect's units: declarations re-spelled from the
+// preprocessed tokens without effect-only syntax, each function a range a unit can leave out.
+#include <algorithm>
+#include <cctype>
+
+#include "effect_unit_builder.h"
+#include "fx/ascii_case.h"
+#include "fx/compile/hlsl_compat.h"
+#include "lvalue_constructor.h"
+
+namespace fx {
+
+using namespace detail;
+
+void EffectUnitBuilder::emit_hlsl() {
+  detail::ShaderTextWriter w(sm_);
+  u_.pre_release_ = !effect_.profile_header.empty();
+  if (u_.pre_release_) w.out() += pre_release_hlsl_prelude();
+  uint32_t last_span = UINT32_MAX;
+  for (const ast::Decl& d : effect_.decls) {
+    switch (d.kind) {
+      case ast::DeclKind::variable: {
+        const ast::Variable& v = *d.variable;
+        // An interface instance is bound per pass (BindInterfaces): no shader declaration.
+        if (std::find(interfaces_.begin(), interfaces_.end(), std::string_view(v.type.name)) != interfaces_.end()) {
+          interface_instances_.push_back(v.name);
+          break;
+        }
+        if (v.tokens.first == last_span || v.tokens.empty()) break;  // declarators share a span
+        last_span = v.tokens.first;
+        if (!is_effect_only_type(v.type.name)) emit_filtered(w, v.tokens, !is_shader_object_type(v.type.name));
+        break;
+      }
+      case ast::DeclKind::type_alias:
+        if (d.type_alias->tokens.first == last_span) break;
+        last_span = d.type_alias->tokens.first;
+        emit_tokens(w, d.type_alias->tokens);
+        break;
+      case ast::DeclKind::structure: emit_structure(w, *d.structure); break;
+      case ast::DeclKind::function: emit_function(w, *d.function); break;
+      case ast::DeclKind::constant_buffer: emit_filtered(w, d.constant_buffer->tokens); break;
+      case ast::DeclKind::state_object: emit_sampler_object(w, *d.state_object); break;
+      case ast::DeclKind::directive:
+        // #version/#extension belong to GLSL; HLSL gets the #pragma lines (pack_matrix, ...).
+        if (d.directive->text.rfind("#pragma", 0) == 0) emit_tokens(w, d.directive->tokens);
+        break;
+      case ast::DeclKind::technique:
+      case ast::DeclKind::group:
+      case ast::DeclKind::glsl_block: break;
+    }
+  }
+  w.end_line();
+  u_.hlsl_ = std::move(w.out());
+  for (const ast::Decl& d : effect_.decls) {
+    ast::TokenSpan span = d.kind == ast::DeclKind::variable          ? d.variable->tokens
+                          : d.kind == ast::DeclKind::structure       ? d.structure->tokens
+                          : d.kind == ast::DeclKind::constant_buffer ? d.constant_buffer->tokens
+                                                                      : ast::TokenSpan{};
+    for (std::string& name : calls_in(span)) u_.called_outside_functions_.push_back(std::move(name));
+  }
+}
+
+void EffectUnitBuilder::emit_structure(detail::ShaderTextWriter& w, const ast::Struct& s) {
+  if (s.kind == ast::StructKind::interface_type) {
+    interfaces_.push_back(s.name);
+    return;
+  }
+  if (s.kind == ast::StructKind::structure) return emit_tokens(w, s.tokens);
+  bool in_bases = false, body = false;
+  for (uint32_t i = s.tokens.first; i < s.tokens.last && i < toks_.size(); ++i) {
+    const Token& t = toks_[i];
+    if (i == s.tokens.first && t.is(TokenKind::identifier)) {
+      w.token(t, "struct");
+      continue;
+    }
+    if (!body && t.is(TokenKind::colon)) in_bases = true;
+    if (t.is(TokenKind::l_brace)) body = true, in_bases = false;
+    if (!in_bases) put_hlsl(w, i, s.tokens.last);
+  }
+}
+
+std::string EffectUnitBuilder::dynamic_linkage_in(ast::TokenSpan span) const {
+  for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) {
+    if (!toks_[i].is(TokenKind::identifier)) continue;
+    const std::string_view word = toks_[i].text();
+    for (const std::string& name : interfaces_)
+      if (word == name) return "interface '" + name + "'";
+    for (const std::string& name : interface_instances_)
+      if (word == name) return "interface instance '" + name + "'";
+  }
+  return {};
+}
+
+void EffectUnitBuilder::emit_function(detail::ShaderTextWriter& w, const ast::Function& f) {
+  w.end_line();
+  w.desync();
+  EffectUnits::FunctionText text;
+  text.name = f.name;
+  text.begin = w.out().size();
+  emit_function_tokens(w, f.tokens);
+  w.end_line();
+  w.desync();
+  text.end = w.out().size();
+  text.calls = calls_in(f.tokens);
+  text.dynamic_linkage = dynamic_linkage_in(f.tokens);
+  for (const ast::Variable& param : f.params)
+    for (std::string_view t : {"PointStream", "LineStream", "TriangleStream", "InputPatch", "OutputPatch"})
+      text.stage_only = text.stage_only || param.type.name == t;
+  u_.functions_.push_back(std::move(text));
+}
+
+void EffectUnitBuilder::emit_function_tokens(detail::ShaderTextWriter& w, ast::TokenSpan span) {
+  std::vector<detail::LvalueConstructor> rewrites = detail::find_lvalue_constructors(toks_, span);
+  auto next = rewrites.begin();
+  for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) {
+    if (next == rewrites.end() || i < next->type) {
+      put_hlsl(w, i, span.last);
+    } else if (i == next->type) {
+      w.token(toks_[i], "{ " + std::string(toks_[i].text()) + " " + next->temporary);
+    } else if (i < next->equal) {
+      w.token(toks_[i], " ");  // the constructor's parts, assigned after the value
+    } else if (i < next->semi) {
+      put_hlsl(w, i, span.last);
+    } else {
+      w.token(toks_[i], ";" + next->assignments + " }");
+      ++next;
+    }
+  }
+}
+
+std::vector<std::string> EffectUnitBuilder::calls_in(ast::TokenSpan span) const {
+  std::vector<std::string> out;
+  for (uint32_t i = span.first; i + 1 < span.last && i + 1 < toks_.size(); ++i)
+    if (toks_[i].is(TokenKind::identifier) && toks_[i + 1].is(TokenKind::l_paren)) {
+      std::string name(toks_[i].text());
+      if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(std::move(name));
+    }
+  return out;
+}
+
+void EffectUnitBuilder::put_hlsl(detail::ShaderTextWriter& w, uint32_t i, uint32_t last) {
+  const Token& t = toks_[i];
+  if (!t.is(TokenKind::identifier)) return w.token(t);
+  bool identifier_follows = i + 1 < last && toks_[i + 1].is(TokenKind::identifier);
+  std::string safe = detail::glslang_safe_name(t.text(), identifier_follows);
+  w.token(t, safe);
+}
+
+void EffectUnitBuilder::emit_tokens(detail::ShaderTextWriter& w, ast::TokenSpan span) {
+  for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) put_hlsl(w, i, span.last);
+}
+
+uint32_t EffectUnitBuilder::annotation_end(uint32_t open, uint32_t last) const {
+  bool semi = false;
+  int depth = 0;
+  for (uint32_t i = open + 1; i < last; ++i) {
+    const Token& t = toks_[i];
+    if (t.is(TokenKind::l_brace) || t.is(TokenKind::l_paren)) ++depth;
+    if (t.is(TokenKind::r_brace) || t.is(TokenKind::r_paren)) --depth;
+    if (t.is(TokenKind::semi)) semi = true;
+    if (t.is(TokenKind::greater) && depth == 0) return semi || i == open + 1 ? i : 0;
+  }
+  return 0;
+}
+
+uint32_t EffectUnitBuilder::matching_close(uint32_t open, uint32_t last) const {
+  int depth = 0;
+  for (uint32_t i = open; i < last; ++i) {
+    TokenKind k = toks_[i].kind;
+    if (k == TokenKind::l_brace || k == TokenKind::l_paren || k == TokenKind::l_square) ++depth;
+    if (k == TokenKind::r_brace || k == TokenKind::r_paren || k == TokenKind::r_square) --depth;
+    if (depth == 0) return i;
+  }
+  return last;
+}
+
+uint32_t EffectUnitBuilder::register_end(uint32_t colon, uint32_t last) const {
+  if (colon + 2 >= last || !toks_[colon + 1].is_identifier("register") || !toks_[colon + 2].is(TokenKind::l_paren))
+    return 0;
+  uint32_t close = matching_close(colon + 2, last);
+  return close < last ? close : 0;
+}
+
+void EffectUnitBuilder::emit_filtered(detail::ShaderTextWriter& w, ast::TokenSpan span, bool drop_constant_registers) {
+  int depth = 0, init_depth = -1;
+  for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) {
+    const Token& t = toks_[i];
+    bool in_init = init_depth >= 0;
+    if (drop_constant_registers && !in_init && depth == 0 && t.is(TokenKind::colon)) {
+      if (uint32_t end = register_end(i, span.last)) {
+        i = end;
+        continue;
+      }
+    }
+    if (!in_init && t.is(TokenKind::less)) {
+      if (uint32_t end = annotation_end(i, span.last)) {
+        i = end;
+        continue;
+      }
+    }
+    if (!in_init && t.is(TokenKind::equal)) {
+      const Token* next = i + 1 < span.last ? &toks_[i + 1] : nullptr;
+      if (next && next->is(TokenKind::identifier) &&
+          (iequals(next->text(), "sampler_state") || iequals(next->text(), "stateblock_state"))) {
+        uint32_t open = i + 2;
+        i = open < span.last && toks_[open].is(TokenKind::l_brace) ? matching_close(open, span.last) : i + 1;
+        continue;
+      }
+      // `sampler s[2] = { sampler_state {...}, sampler_state {...} };`: an array of them.
+      if (next && next->is(TokenKind::l_brace) && i + 2 < span.last && toks_[i + 2].is(TokenKind::identifier) &&
+          iequals(toks_[i + 2].text(), "sampler_state")) {
+        i = matching_close(i + 1, span.last);
+        continue;
+      }
+      if (depth > 0) {  // cbuffer member initializer: skip to its ';'
+        int d = 0;
+        uint32_t j = i + 1;
+        for (; j < span.last; ++j) {
+          TokenKind k = toks_[j].kind;
+          if (k == TokenKind::l_brace || k == TokenKind::l_paren || k == TokenKind::l_square) ++d;
+          if (k == TokenKind::r_brace || k == TokenKind::r_paren || k == TokenKind::r_square) --d;
+          if (d == 0 && k == TokenKind::semi) break;
+        }
+        i = j - 1;
+        continue;
+      }
+      init_depth = depth;
+    }
+    if (t.is(TokenKind::l_brace) || t.is(TokenKind::l_paren) || t.is(TokenKind::l_square)) ++depth;
+    if (t.is(TokenKind::r_brace) || t.is(TokenKind::r_paren) || t.is(TokenKind::r_square)) --depth;
+    if ((t.is(TokenKind::semi) || t.is(TokenKind::comma)) && depth == init_depth) init_depth = -1;
+    if (t.is(TokenKind::l_brace) && !in_init) init_depth = -1;
+    put_hlsl(w, i, span.last);
+  }
+}
+
+void EffectUnitBuilder::emit_sampler_object(detail::ShaderTextWriter& w, const ast::StateObject& so) {
+  if (!iequals(so.kind, "SamplerState") && !iequals(so.kind, "SamplerComparisonState")) return;
+  std::string text = so.kind + " " + so.name;
+  for (const ast::ExprPtr& dim : so.array_dims) {
+    text += "[";
+    if (dim) spell(dim, text);
+    text += "]";
+  }
+  if (!so.register_binding.empty()) text += " : register(" + so.register_binding + ")";
+  PresumedLocation p = sm_.presumed(so.name_range.begin);
+  if (p.valid()) w.line(detail::line_directive(p.line, p.file));
+  w.line(text + ";");
+}
+
+void EffectUnitBuilder::collect_glsl() {
+  for (const ast::Decl& d : effect_.decls) {
+    if (d.kind != ast::DeclKind::glsl_block) continue;
+    const ast::GlslBlock& b = *d.glsl_block;
+    EffectUnits::GlslBlockText text;
+    text.name = b.name;
+    ast::TokenSpan code = b.code;
+    if (!code.empty() && toks_[code.first].is(TokenKind::directive) &&
+        toks_[code.first].text().rfind("#version", 0) == 0) {
+      text.version = std::string(toks_[code.first].text());
+      ++code.first;
+    } else if (code.last - code.first >= 3 && toks_[code.first].is(TokenKind::hash) &&
+               toks_[code.first + 1].is_identifier("version") &&
+               toks_[code.first + 2].is(TokenKind::integer)) {
+      // `GLSLShader X { #version 450` : not at a line start, so the preprocessor left it as
+      // tokens; a profile word (`core`, `es`) may follow on the same line.
+      text.version = "#version " + std::string(toks_[code.first + 2].text());
+      code.first += 3;
+      PresumedLocation at = sm_.presumed(toks_[code.first - 1].loc);
+      while (code.first < code.last && toks_[code.first].is(TokenKind::identifier) &&
+             sm_.presumed(toks_[code.first].loc).line == at.line)
+        text.version += " " + std::string(toks_[code.first++].text());
+    }
+    detail::ShaderTextWriter w(sm_);
+    for (uint32_t i = code.first; i < code.last && i < toks_.size(); ++i) w.token(toks_[i]);
+    w.end_line();
+    text.body = std::move(w.out());
+    u_.glsl_blocks_.push_back(std::move(text));
+  }
+}
+
+}  // namespace fx

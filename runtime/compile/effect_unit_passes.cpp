@@ -1,0 +1,298 @@
+// The passes of an effect's units: each stage's shader resolved from its state (compile,
+// CompileShader, shader variables and arrays, GLSL blocks, BindInterfaces, stream output),
+// compile-time argument wrappers, and the fixed-function and dynamic-linkage reasons.
+#include <algorithm>
+#include <cctype>
+#include <optional>
+
+#include "effect_unit_builder.h"
+#include "fx/ascii_case.h"
+#include "fx/state_table.h"
+
+namespace fx {
+
+using namespace detail;
+
+void EffectUnitBuilder::collect_passes() {
+  uint32_t technique_index = 0;
+  for (const ast::Decl& d : effect_.decls) {
+    if (d.kind == ast::DeclKind::technique) add_technique(*d.technique, "", technique_index++);
+    if (d.kind == ast::DeclKind::group)
+      for (const ast::Technique& t : d.group->techniques) add_technique(t, d.group->name, technique_index++);
+  }
+}
+
+void EffectUnitBuilder::add_technique(const ast::Technique& t, const std::string& group, uint32_t index) {
+  uint32_t pass_index = 0;
+  for (const ast::Pass& p : t.passes) {
+    EffectPass pass;
+    pass.group = group;
+    pass.technique = t.name.empty() ? "technique" + std::to_string(index) : t.name;
+    pass.pass = p.name.empty() ? "pass" + std::to_string(pass_index) : p.name;
+    pass.technique_index = index;
+    pass.pass_index = pass_index++;
+    pass.range = p.range;
+    bool null_pixel = false;
+    for (const ast::StateAssignment& s : p.states) {
+      std::optional<ShaderStage> stage = stage_of_state(s.name);
+      if (!stage || !s.value) continue;
+      StageUnit ps;
+      ps.stage = *stage;
+      ps.range = s.range;
+      const ast::Expr* value = s.value;
+      if (s.call_style) value = value->args.empty() ? nullptr : value->args[0];
+      if (!value || !resolve(*value, ps, 0)) {
+        null_pixel = null_pixel || *stage == ShaderStage::fragment;
+        continue;
+      }
+      // `SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "..."))`: stream
+      // output straight from a vertex shader, with no geometry stage. It is that pass's
+      // vertex shader unless the pass sets one itself.
+      if (ps.stage == ShaderStage::geometry && ps.kind == StageSourceKind::hlsl &&
+          ascii_lower(ps.profile).rfind("vs_", 0) == 0) {
+        if (pass.find(ShaderStage::vertex)) continue;
+        ps.stage = ShaderStage::vertex;
+      }
+      // A later assignment of the same stage wins, as in D3D.
+      std::erase_if(pass.stages, [&](const StageUnit& o) { return o.stage == ps.stage; });
+      pass.stages.push_back(std::move(ps));
+    }
+    std::stable_sort(pass.stages.begin(), pass.stages.end(),
+                     [](const StageUnit& a, const StageUnit& b) { return a.stage < b.stage; });
+    add_fixed_function_reasons(t, pass, null_pixel);
+    u_.passes_.push_back(std::move(pass));
+  }
+}
+
+void EffectUnitBuilder::add_fixed_function_reasons(const ast::Technique& t, EffectPass& pass, bool null_pixel) {
+  if (t.version != 9) return;  // technique10/11: no pixel shader means no fragment stage
+  bool glsl = false, compute = false;
+  for (const StageUnit& s : pass.stages) {
+    glsl = glsl || s.kind == StageSourceKind::glsl;
+    compute = compute || s.stage == ShaderStage::compute;
+  }
+  if (glsl || compute) return;
+  if (!pass.find(ShaderStage::vertex))
+    pass.unsupported.push_back("fixed-function vertex processing: the pass sets no VertexShader");
+  if (!pass.find(ShaderStage::fragment))
+    pass.unsupported.push_back(std::string("fixed-function pixel processing (texture stage states): ") +
+                               (null_pixel ? "PixelShader = NULL" : "the pass sets no PixelShader"));
+}
+
+const ast::Variable* EffectUnitBuilder::shader_variable(std::string_view name) const {
+  for (const ast::Variable* v : variables_)
+    if (v->name == name && shader_type_stage(v->type.name)) return v;
+  return nullptr;
+}
+
+bool EffectUnitBuilder::resolve(const ast::Expr& e, StageUnit& stage, int depth) {
+  if (depth > 8) return invalid(stage, "shader variables refer to each other in a cycle");
+  switch (e.kind) {
+    case ast::ExprKind::null: return false;
+    case ast::ExprKind::int_literal: return e.number != 0 && invalid(stage, "a number is not a shader");
+    case ast::ExprKind::compile: {
+      std::vector<const ast::Expr*> args;
+      for (const ast::ExprPtr& a : e.args) args.push_back(a);
+      return hlsl(stage, e.text, e.callee, args, e.range);
+    }
+    case ast::ExprKind::call: {
+      if (iequals(e.text, "CompileShader") && e.args.size() == 2 && e.args[0] && e.args[1] &&
+          e.args[1]->kind == ast::ExprKind::call) {
+        std::vector<const ast::Expr*> args;
+        for (const ast::ExprPtr& a : e.args[1]->args) args.push_back(a);
+        return hlsl(stage, e.args[0]->text, e.args[1]->text, args, e.range);
+      }
+      // ConstructGSWithSO(shader, ...), BindInterfaces(shader, instances...), SetXShader(shader).
+      if ((iequals(e.text, "ConstructGSWithSO") || iequals(e.text, "BindInterfaces") || stage_of_state(e.text)) &&
+          !e.args.empty() && e.args[0])
+        return resolve(*e.args[0], stage, depth + 1);
+      return invalid(stage, "'" + e.text + "(...)' does not name a shader");
+    }
+    case ast::ExprKind::identifier:
+    case ast::ExprKind::reference: {
+      if (iequals(e.text, "NULL")) return false;
+      for (const std::string& g : glsl_names_)
+        if (g == e.text) return glsl(stage, {e.text});
+      if (const ast::Variable* v = shader_variable(e.text)) {
+        if (v->initializer) return resolve(*v->initializer, stage, depth + 1);
+        return invalid(stage, "shader variable '" + e.text + "' has no initializer");
+      }
+      return invalid(stage, "'" + e.text + "' names no shader");
+    }
+    case ast::ExprKind::glsl_list: {
+      std::vector<std::string> names;
+      for (const ast::ExprPtr& a : e.args) names.push_back(a->text);
+      return glsl(stage, std::move(names));
+    }
+    case ast::ExprKind::asm_block:
+      stage.kind = StageSourceKind::assembly;
+      stage.unsupported = "shader model 1 assembly (asm { }) is not compiled; the legacy path emulates it";
+      return true;
+    case ast::ExprKind::index: return shader_array(e, stage, depth);
+    default: return invalid(stage, "the value does not name a shader");
+  }
+}
+
+bool EffectUnitBuilder::shader_array(const ast::Expr& e, StageUnit& stage, int depth) {
+  const ast::Expr* base = e.args.size() == 2 ? e.args[0] : nullptr;
+  const ast::Variable* array =
+      base && (base->kind == ast::ExprKind::identifier || base->kind == ast::ExprKind::reference)
+          ? shader_variable(base->text)
+          : nullptr;
+  if (!array || array->array_dims.empty() || !array->initializer ||
+      array->initializer->kind != ast::ExprKind::init_list)
+    return invalid(stage, "an indexed shader must be an element of a shader array with an initializer");
+  std::vector<StageUnit> choices;
+  for (const ast::ExprPtr& element : array->initializer->args) {
+    StageUnit c;
+    c.stage = stage.stage;
+    c.range = element ? element->range : stage.range;
+    if (!element || !resolve(*element, c, depth + 1)) invalid(c, "the array element is NULL");
+    choices.push_back(std::move(c));
+  }
+  if (choices.empty()) return invalid(stage, "the shader array '" + base->text + "' is empty");
+  std::optional<int64_t> index = initial_value(*e.args[1], 0);
+  size_t choice = index && *index >= 0 && static_cast<size_t>(*index) < choices.size() ? static_cast<size_t>(*index) : 0;
+  SourceRange range = stage.range;
+  stage = choices[choice];
+  stage.range = range;
+  stage.choice = choice;
+  spell(e.args[1], stage.selector);
+  stage.choices = std::move(choices);
+  return true;
+}
+
+std::optional<int64_t> EffectUnitBuilder::initial_value(const ast::Expr& e, int depth) const {
+  if (depth > 8) return std::nullopt;
+  auto variable = [&](std::string_view name) -> const ast::Variable* {
+    for (const ast::Variable* v : variables_)
+      if (v->name == name && v->initializer) return v;
+    return nullptr;
+  };
+  switch (e.kind) {
+    case ast::ExprKind::int_literal:
+    case ast::ExprKind::float_literal: return static_cast<int64_t>(e.number);
+    case ast::ExprKind::identifier:
+    case ast::ExprKind::reference:
+      if (const ast::Variable* v = variable(e.text); v && v->array_dims.empty())
+        return initial_value(*v->initializer, depth + 1);
+      return std::nullopt;
+    case ast::ExprKind::index: {
+      if (e.args.size() != 2 || !e.args[0] || !e.args[1]) return std::nullopt;
+      const ast::Variable* v = variable(e.args[0]->text);
+      std::optional<int64_t> i = initial_value(*e.args[1], depth + 1);
+      if (!v || !i || v->initializer->kind != ast::ExprKind::init_list || *i < 0 ||
+          static_cast<size_t>(*i) >= v->initializer->args.size() || !v->initializer->args[*i])
+        return std::nullopt;
+      return initial_value(*v->initializer->args[*i], depth + 1);
+    }
+    default: return std::nullopt;
+  }
+}
+
+bool EffectUnitBuilder::invalid(StageUnit& stage, std::string reason) {
+  stage.kind = StageSourceKind::invalid;
+  stage.unsupported = std::move(reason);
+  return true;
+}
+
+bool EffectUnitBuilder::glsl(StageUnit& stage, std::vector<std::string> names) {
+  stage.kind = StageSourceKind::glsl;
+  stage.entry_point = "main";
+  for (const std::string& n : names) {
+    bool known = false;
+    for (const std::string& g : glsl_names_) known = known || g == n;
+    // The checker reports unknown block names (undefined-reference).
+    if (!known) return invalid(stage, "no GLSL block named '" + n + "'");
+  }
+  stage.glsl_blocks = std::move(names);
+  stage.profile = "glsl";
+  for (const EffectUnits::GlslBlockText& b : u_.glsl_blocks_)
+    if (b.name == stage.glsl_blocks.front() && !b.version.empty()) {
+      std::string digits;
+      for (char c : b.version.substr(8))
+        if (std::isdigit(static_cast<unsigned char>(c))) digits.push_back(c);
+        else if (!digits.empty()) break;
+      if (!digits.empty()) stage.profile = digits;
+    }
+  return true;
+}
+
+const ast::Function* EffectUnitBuilder::function(std::string_view name, size_t args) const {
+  const ast::Function* first = nullptr;
+  for (const ast::Function* f : functions_) {
+    if (f->name != name || f->body.empty()) continue;
+    size_t uniforms = 0;
+    for (const ast::Variable& p : f->params) uniforms += (p.storage & ast::kUniform) != 0;
+    if (uniforms == args) return f;
+    if (!first && uniforms >= args) first = f;
+  }
+  return first;
+}
+
+bool EffectUnitBuilder::hlsl(StageUnit& stage, const std::string& profile, const std::string& name,
+          const std::vector<const ast::Expr*>& args, SourceRange range) {
+  stage.kind = StageSourceKind::hlsl;
+  stage.profile = profile;
+  stage.function = name;
+  stage.entry_point = name;
+  const ast::Function* f = function(name, args.size());
+  // The checker reports unknown functions (undefined-reference).
+  if (!f) return invalid(stage, "no shader function '" + name + "' with a body");
+  if (args.empty()) return true;
+  size_t uniforms = 0;
+  for (const ast::Variable& p : f->params) uniforms += (p.storage & ast::kUniform) != 0;
+  if (args.size() > uniforms) {
+    sink_.error("effect-shader-arguments", range,
+                "'" + name + "' takes " + std::to_string(uniforms) + " uniform parameter(s), but " +
+                    std::to_string(args.size()) + " compile-time argument(s) are given");
+    return invalid(stage, "too many compile-time arguments");
+  }
+  for (const ast::Expr* a : args) {
+    std::string text;
+    if (!a || a->kind == ast::ExprKind::compile || a->kind == ast::ExprKind::asm_block ||
+        a->kind == ast::ExprKind::state_block || !spell(a, text)) {
+      sink_.error("effect-shader-argument", a ? a->range : range,
+                  "a compile-time argument of '" + name + "' must be a constant expression");
+      return invalid(stage, "a compile-time argument is not a constant expression");
+    }
+    stage.arguments.push_back(std::move(text));
+  }
+  stage.entry_point = name + "__fx_args";
+  for (const EffectUnits::Wrapper& w : u_.wrappers_)
+    if (w.function == name && w.arguments == stage.arguments) return true;
+  u_.wrappers_.push_back({name, stage.arguments, wrapper(*f, stage.arguments)});
+  return true;
+}
+
+std::string EffectUnitBuilder::wrapper(const ast::Function& f, const std::vector<std::string>& args) const {
+  std::string text;
+  PresumedLocation at = sm_.presumed(f.name_range.begin);
+  if (at.valid()) text += detail::line_directive(at.line, at.file) + "\n";
+  for (const ast::Text& a : f.attributes) text += "[" + a + "] ";
+  text += f.return_type.name;
+  if (!f.return_type.template_arg.empty()) text += "<" + f.return_type.template_arg + ">";
+  text += " " + f.name + "__fx_args(";
+  std::string call = f.name + "(";
+  size_t bound = 0;
+  bool first_param = true;
+  for (size_t i = 0; i < f.params.size(); ++i) {
+    const ast::Variable& p = f.params[i];
+    if (i) call += ", ";
+    if ((p.storage & ast::kUniform) && bound < args.size()) {
+      call += args[bound++];
+      continue;
+    }
+    if (!first_param) text += ", ";
+    first_param = false;
+    text += join_tokens(toks_, p.tokens);
+    std::string safe = detail::glslang_safe_name(p.name, false);
+    call += safe.empty() ? std::string(p.name) : safe;
+  }
+  text += ")";
+  if (!f.semantic.empty()) text += " : " + f.semantic;
+  text += f.return_type.name == "void" ? " { " + call + "); }\n" : " { return " + call + "); }\n";
+  return text;
+}
+
+}  // namespace fx
