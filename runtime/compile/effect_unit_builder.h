@@ -148,6 +148,9 @@ class EffectUnitBuilder {
   bool hlsl(StageUnit& stage, const std::string& profile, const std::string& name,
             const std::vector<const ast::Expr*>& args, SourceRange range);
 
+  // Whether a pixel shader takes D3D9's VPOS or VFACE, which its wrapper turns into Vulkan's.
+  static bool has_d3d9_system_value(const ast::Function& f);
+
   // `R F__fx_args(varying params) : SEM { return F(varying..., literal...); }`, placed at the
   // function's own line so errors in the wrapper point at the function.
   std::string wrapper(const ast::Function& f, const std::vector<std::string>& args) const;

@@ -239,7 +239,7 @@ bool EffectUnitBuilder::hlsl(StageUnit& stage, const std::string& profile, const
   const ast::Function* f = function(name, args.size());
   // The checker reports unknown functions (undefined-reference).
   if (!f) return invalid(stage, "no shader function '" + name + "' with a body");
-  if (args.empty()) return true;
+  if (args.empty() && !(stage.stage == ShaderStage::fragment && has_d3d9_system_value(*f))) return true;
   size_t uniforms = 0;
   for (const ast::Variable& p : f->params) uniforms += (p.storage & ast::kUniform) != 0;
   if (args.size() > uniforms) {
@@ -265,6 +265,12 @@ bool EffectUnitBuilder::hlsl(StageUnit& stage, const std::string& profile, const
   return true;
 }
 
+bool EffectUnitBuilder::has_d3d9_system_value(const ast::Function& f) {
+  for (const ast::Variable& p : f.params)
+    if (iequals(p.semantic, "VPOS") || iequals(p.semantic, "VFACE")) return true;
+  return false;
+}
+
 std::string EffectUnitBuilder::wrapper(const ast::Function& f, const std::vector<std::string>& args) const {
   std::string text;
   PresumedLocation at = sm_.presumed(f.name_range.begin);
@@ -285,6 +291,18 @@ std::string EffectUnitBuilder::wrapper(const ast::Function& f, const std::vector
     }
     if (!first_param) text += ", ";
     first_param = false;
+    // D3D9 pixel shader system values that glslang reads as user varyings: VPOS is the
+    // pixel's integer position (SV_Position is its centre), VFACE is +1 front, -1 back.
+    if (iequals(p.semantic, "VPOS")) {
+      text += "float4 fx_vpos : SV_Position";
+      call += "(" + p.type.name + ")float4(fx_vpos.xy - 0.5, 0, 0)";
+      continue;
+    }
+    if (iequals(p.semantic, "VFACE")) {
+      text += "bool fx_front_face : SV_IsFrontFace";
+      call += "(" + p.type.name + ")(fx_front_face ? 1.0 : -1.0)";
+      continue;
+    }
     text += join_tokens(toks_, p.tokens);
     std::string safe = detail::glslang_safe_name(p.name, false);
     call += safe.empty() ? std::string(p.name) : safe;

@@ -289,7 +289,7 @@ std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
     u.language = ShaderLanguage::hlsl;
     u.profile = normalize_profile(stage.profile);
     u.source = hlsl_code_for(stage.function);
-    if (!stage.arguments.empty())
+    if (stage.entry_point != stage.function)  // a wrapper: compile-time arguments, D3D9 system values
       for (const Wrapper& w : wrappers_)
         if (w.function == stage.function && w.arguments == stage.arguments) u.source += w.text;
     return u;
