@@ -290,6 +290,9 @@ Type TypeTable::resolve(const ast::TypeRef& ref, uint32_t storage, const ast::Li
     }
   } else if (auto obj = ref.template_arg.empty() ? std::nullopt : object_name(name, ref.template_arg)) {
     t = *obj;
+  } else if (ref.definition && ref.definition->name.empty()) {  // `struct { float3 dir; } light;`
+    t.cls = TypeClass::structure;
+    t.structure = make_struct(*ref.definition, diags, scope);
   } else {
     t = lookup(name);
     if (t.cls == TypeClass::error) {
@@ -335,6 +338,14 @@ Type TypeTable::resolve(const ast::TypeRef& ref, uint32_t storage, const ast::Li
 void TypeTable::add_struct(const ast::Struct& decl, DiagnosticSink& diags, const ConstantScope* scope) {
   if (decl.name.empty()) return;
   if (structs_.count(decl.name)) return;  // redefinitions are the checker's report
+  // A named struct defined in place as a member's type is a type of its own from there on.
+  for (const ast::Variable& m : decl.members)
+    if (m.type.definition && !m.type.definition->name.empty()) add_struct(*m.type.definition, diags, scope);
+  structs_.emplace(decl.name, make_struct(decl, diags, scope));
+}
+
+std::shared_ptr<StructType> TypeTable::make_struct(const ast::Struct& decl, DiagnosticSink& diags,
+                                                   const ConstantScope* scope) const {
   auto st = std::make_shared<StructType>();
   st->name = decl.name;
   for (const ast::Variable& m : decl.members) {
@@ -348,7 +359,7 @@ void TypeTable::add_struct(const ast::Struct& decl, DiagnosticSink& diags, const
     st->components += member.type.component_count();
     st->members.push_back(std::move(member));
   }
-  structs_.emplace(decl.name, std::move(st));
+  return st;
 }
 
 void TypeTable::add_typedef(const ast::Typedef& decl, DiagnosticSink& diags, const ConstantScope* scope) {

@@ -55,6 +55,23 @@ TEST(ModelType, ArraysStructsTypedefs) {
   EXPECT_EQ(test::param(*b, "qs").type.to_string(), "float4[3][2]");
 }
 
+// Structs defined in place as member types: an anonymous one is the member's own type, a
+// named one is also a type from there on.
+TEST(ModelType, StructsDefinedInPlace) {
+  auto b = test::build(R"(
+    struct Light { struct { float3 dir; float pad; } d; struct Tint { float4 rgba; } tint; float4 color; };
+    Light light; Tint tint;
+  )");
+  ASSERT_FALSE(b->diags.has_errors()) << b->text();
+  const Type& light = test::param(*b, "light").type;
+  ASSERT_EQ(light.cls, TypeClass::structure);
+  EXPECT_EQ(light.structure->components, 12u);
+  ASSERT_EQ(light.structure->members.size(), 3u);
+  ASSERT_EQ(light.structure->members[0].type.cls, TypeClass::structure);
+  EXPECT_EQ(light.structure->members[0].type.structure->members[0].type.to_string(), "float3");
+  EXPECT_EQ(test::param(*b, "tint").type.structure->members[0].name, "rgba");
+}
+
 TEST(ModelType, ResourcesShadersStateObjects) {
   auto b = test::build(R"(
     string s; texture t; texture1D t1; texture2D t2; texture3D t3; textureCUBE tc; volumetexture vt;

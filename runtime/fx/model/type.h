@@ -118,6 +118,10 @@ class TypeTable {
   const std::map<std::string, std::shared_ptr<const StructType>, std::less<>>& structs() const { return structs_; }
 
  private:
+  // The struct type of a definition, registered or not (a member's anonymous struct).
+  std::shared_ptr<StructType> make_struct(const ast::Struct& decl, DiagnosticSink& diags,
+                                          const ConstantScope* scope) const;
+
   std::map<std::string, std::shared_ptr<const StructType>, std::less<>> structs_;
   std::map<std::string, Type, std::less<>> typedefs_;
 };
