@@ -209,24 +209,36 @@ class Builder {
     model_.samplers.push_back(std::move(s));
   }
 
+  // A state object, or an array of them written with one `{ }` per element: each element is
+  // an object of its own named `B[i]`, and `B` alone names element 0.
   void add_state_object(const ast::StateObject& o) {
+    if (o.element_states.empty()) return add_state_object(o, o.name, o.states);
+    if (model_.state_object_index.count(o.name)) return;
+    for (size_t i = 0; i < o.element_states.size(); ++i)
+      add_state_object(o, o.name + "[" + std::to_string(i) + "]", o.element_states[i]);
+    if (uint32_t first = model_.find_state_object(o.name + "[0]"); first != kNoIndex)
+      model_.state_object_index.emplace(o.name, first);
+  }
+
+  void add_state_object(const ast::StateObject& o, const std::string& name,
+                        const ast::List<ast::StateAssignment>& states) {
     auto block = state_object_block(o.kind);
-    if (!block || o.name.empty() || model_.state_object_index.count(o.name)) return;
+    if (!block || name.empty() || model_.state_object_index.count(name)) return;
     StateObjectInfo info;
     info.block = *block;
-    info.name = o.name;
+    info.name = name;
     info.range = o.range;
     info.annotations = annotations(o.annotations);
     const uint32_t index = static_cast<uint32_t>(model_.state_objects.size());
-    model_.state_object_index.emplace(o.name, index);
+    model_.state_object_index.emplace(name, index);
     model_.state_objects.push_back(std::move(info));
     if (*block == StateBlock::sampler_object) {
       model_.state_objects[index].sampler = static_cast<uint32_t>(model_.samplers.size());
-      add_sampler(o.name, o.states, kNoIndex, index, o.range, true);
+      add_sampler(name, states, kNoIndex, index, o.range, true);
       return;
     }
     std::vector<ResolvedState> resolved;
-    for (const ast::StateAssignment& a : o.states) {
+    for (const ast::StateAssignment& a : states) {
       ResolvedState r;
       if (model_detail::resolve_state(a, *block, ctx_, r, nullptr, nullptr)) resolved.push_back(std::move(r));
     }

@@ -340,9 +340,13 @@ bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveConte
         out.kind = StateValueKind::null;
         return true;
       }
-      std::string name = value->kind == ast::ExprKind::index && !value->args.empty() && value->args[0]
-                             ? value->args[0]->text : value->text;
-      uint32_t o = ctx.model.find_state_object(name);
+      // `Blends[1]`: the element, when the array was written one `{ }` per element.
+      const bool indexed = value->kind == ast::ExprKind::index && value->args.size() == 2 && value->args[0];
+      std::string name = indexed ? std::string(value->args[0]->text) : std::string(value->text);
+      uint32_t o = kNoIndex;
+      if (indexed && value->args[1] && value->args[1]->kind == ast::ExprKind::int_literal)
+        o = ctx.model.find_state_object(name + "[" + std::to_string(static_cast<int64_t>(value->args[1]->number)) + "]");
+      if (o == kNoIndex) o = ctx.model.find_state_object(name);
       if (o == kNoIndex) {
         ctx.diags.error("unknown-state-object", value->range, "no state object named '" + name + "'");
         return false;

@@ -108,5 +108,23 @@ TEST(PassState, StateObjectDefaultsApplyWhenSet) {
   EXPECT_TRUE(s.depth_write);
 }
 
+// An array of state objects written one `{ }` per element: a pass takes the element it
+// names, and the array's name alone is element 0.
+TEST(PassState, StateObjectArrayElementsAreObjectsOfTheirOwn) {
+  auto b = test::build(R"(
+    RasterizerState Cull[3] { { CullMode = NONE; }, { CullMode = FRONT; }, { CullMode = BACK; } };
+    technique10 T {
+      pass P0 { SetRasterizerState(Cull[1]); }
+      pass P1 { SetRasterizerState(Cull[0]); }
+      pass P2 { SetRasterizerState(Cull); }
+    }
+  )", true);
+  ASSERT_FALSE(b->diags.has_errors()) << b->text();
+  const auto& passes = b->model.techniques[0].passes;
+  EXPECT_EQ(passes[0].summary.cull, CullMode::front);
+  EXPECT_EQ(passes[1].summary.cull, CullMode::none);
+  EXPECT_EQ(passes[2].summary.cull, CullMode::none);
+}
+
 }  // namespace
 }  // namespace fx
