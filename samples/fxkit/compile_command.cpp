@@ -1,5 +1,6 @@
 // `fxkit compile FILE [-I DIR]... [-D NAME[=VALUE]]... [--profile P] [--technique T]
 //  [-o DIR] [--cache DIR] [--json]`: SPIR-V for every pass stage.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,41 @@
 
 namespace fxkit {
 namespace {
+
+// The diagnostics of every stage, each shown once: a function several passes' shaders call
+// reports the same error in each, which is one problem; a note lists where else it came from.
+class ShownOnce {
+ public:
+  // `where` names the pass stage the diagnostics came from ("" for the effect itself).
+  void add(const std::vector<fx::Diagnostic>& diagnostics, const std::string& where) {
+    for (const fx::Diagnostic& d : diagnostics) {
+      auto same = std::find_if(shown_.begin(), shown_.end(), [&](const Shown& s) {
+        return s.diagnostic.id == d.id && s.diagnostic.severity == d.severity &&
+               s.diagnostic.range.begin == d.range.begin && s.diagnostic.message == d.message;
+      });
+      if (same == shown_.end()) shown_.push_back({d, {}});
+      else if (!where.empty()) same->also.push_back(where);
+    }
+  }
+  std::vector<fx::Diagnostic> diagnostics() const {
+    std::vector<fx::Diagnostic> out;
+    for (const Shown& s : shown_) {
+      out.push_back(s.diagnostic);
+      if (s.also.empty()) continue;
+      std::string list;
+      for (const std::string& w : s.also) list += (list.empty() ? "" : ", ") + w;
+      out.back().notes.push_back({s.diagnostic.range.begin, "also reported for " + list});
+    }
+    return out;
+  }
+
+ private:
+  struct Shown {
+    fx::Diagnostic diagnostic;
+    std::vector<std::string> also;
+  };
+  std::vector<Shown> shown_;
+};
 
 // One compiled stage as `fxkit compile --json` lists it. A stage of a shader array also
 // names the index expression that chooses among its elements.
@@ -87,7 +123,8 @@ int run_compile(const CompileArgs& args) {
   bool failed = diags.has_errors();
   bool matched = args.technique.empty();
   nlohmann::json shaders = nlohmann::json::array();
-  std::vector<fx::Diagnostic> all = diags.diagnostics();
+  ShownOnce all;
+  all.add(diags.diagnostics(), "");
   std::vector<fx::Diagnostic> effect_level = diags.diagnostics();  // the front end's and linking's
   for (const fx::EffectPass& pass : units.passes()) {
     if (!args.technique.empty() && pass.technique != args.technique) continue;
@@ -99,7 +136,7 @@ int run_compile(const CompileArgs& args) {
       // whole still fails, and the exit status says so).
       bool ok = s.shader.ok;
       failed = failed || !ok;
-      all.insert(all.end(), s.diagnostics.begin(), s.diagnostics.end());
+      all.add(s.diagnostics, pass.technique + "." + pass.pass + " " + fx::to_string(s.stage));
       std::string spv;
       if (ok && !args.output_dir.empty()) {
         std::filesystem::path path = std::filesystem::path(args.output_dir) /
@@ -128,7 +165,8 @@ int run_compile(const CompileArgs& args) {
         std::optional<fx::StageProgram> s = programs.compile_alone(stage.choices[i]);
         if (!s) continue;
         failed = failed || !s->shader.ok;
-        all.insert(all.end(), s->diagnostics.begin(), s->diagnostics.end());
+        all.add(s->diagnostics, pass.technique + "." + pass.pass + " " + fx::to_string(s->stage) + " choice " +
+                                    std::to_string(i));
         if (args.json) {
           nlohmann::json j = shader_json(pass, *s, &stage.choices[i], sm);
           j["choice"] = i;
@@ -139,7 +177,7 @@ int run_compile(const CompileArgs& args) {
                        s->unit.entry_point.c_str(), s->shader.ok ? "ok" : "FAILED");
         }
       }
-    all.insert(all.end(), program.diagnostics.begin(), program.diagnostics.end());
+    all.add(program.diagnostics, pass.technique + "." + pass.pass);
     effect_level.insert(effect_level.end(), program.diagnostics.begin(), program.diagnostics.end());
     if (!program.compiled && !program.stages.empty()) failed = true;
     // What is not compiled, located so an editor or CI log points at it: fixed-function
@@ -160,7 +198,7 @@ int run_compile(const CompileArgs& args) {
                            {"diagnostics", fx::render_json(located.diagnostics(), sm)}});
       } else {
         std::fprintf(stderr, "%s.%s: not compiled: %s\n", pass.technique.c_str(), pass.pass.c_str(), reason.c_str());
-        all.insert(all.end(), located.diagnostics().begin(), located.diagnostics().end());
+        all.add(located.diagnostics(), "");
       }
     };
     for (const std::string& reason : pass.unsupported) not_compiled(nullptr, reason, pass.range);
@@ -179,7 +217,7 @@ int run_compile(const CompileArgs& args) {
                           {"ok", !failed}};
     std::puts(json_text(out).c_str());
   } else {
-    std::fputs(fx::render_text(all, sm).c_str(), stderr);
+    std::fputs(fx::render_text(all.diagnostics(), sm).c_str(), stderr);
   }
   return failed ? kInputErrors : kSuccess;
 }
