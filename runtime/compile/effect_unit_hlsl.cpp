@@ -102,6 +102,14 @@ void EffectUnitBuilder::emit_function(detail::ShaderTextWriter& w, const ast::Fu
   w.desync();
   text.end = w.out().size();
   text.calls = calls_in(f.tokens);
+  // A hull shader names its patch-constant function in an attribute, not a call.
+  constexpr std::string_view kPatchConstant = "patchconstantfunc";
+  for (const ast::Text& attribute : f.attributes) {
+    const std::string_view a = attribute;
+    const size_t open = a.find('"'), close = a.rfind('"');
+    if (iequals(a.substr(0, kPatchConstant.size()), kPatchConstant) && open != std::string_view::npos && close > open)
+      text.calls.emplace_back(a.substr(open + 1, close - open - 1));
+  }
   text.dynamic_linkage = dynamic_linkage_in(f.tokens);
   for (const ast::Variable& param : f.params)
     for (std::string_view t : {"PointStream", "LineStream", "TriangleStream", "InputPatch", "OutputPatch"})
