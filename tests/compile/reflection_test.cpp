@@ -72,6 +72,23 @@ float4 PS() : SV_Target { return A[0] + B[0]; }
   EXPECT_EQ(member(g, "B").offset, 64u);
 }
 
+// An array of HLSL float4x3 (a skinning palette): three 16-byte registers per element, as the
+// SPIR-V's ArrayStride says; glslang's own reflection reported the column-major 64.
+TEST(Reflection, RowMajorMatrixArrayStrideIsTheModules) {
+  const char* src = R"(float4x3 Bones[4];
+float4 After;
+float4 VS(float4 p : POSITION, uint4 i : BLENDINDICES) : POSITION { return float4(mul(p, Bones[i.x]), 1) + After; }
+)";
+  ShaderCompiler compiler;
+  CompiledShader vs = compiler.compile(test::unit(src, ShaderStage::vertex, "VS", "vs_3_0"));
+  ASSERT_TRUE(vs.ok) << vs.info_log;
+  const UniformBlock& g = vs.reflection.uniform_blocks.at(0);
+  EXPECT_EQ(member(g, "Bones").array_stride, 48u);
+  EXPECT_EQ(member(g, "Bones").size, 4u * 48u);
+  EXPECT_EQ(member(g, "After").offset, 4u * 48u);
+  EXPECT_LE(member(g, "Bones").offset + member(g, "Bones").size, member(g, "After").offset);
+}
+
 TEST(Reflection, GlslStd140Layout) {
   const char* src = R"(#version 450
 layout(set = 0, binding = 0, std140) uniform Block {

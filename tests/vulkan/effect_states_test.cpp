@@ -222,5 +222,29 @@ technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile
   EXPECT_EQ(centre(*image), (std::array<int, 4>{255, 255, 0, 16}));
 }
 
+// A skinning palette, float4x3 Bones[4]: each element three registers (48 bytes), and the
+// values set for element 1 are what the shader reads there.
+TEST_F(EffectStatesTest, MatrixArrayElementsLandWhereTheShaderReadsThem) {
+  auto r = bind_text(ctx(), "palette.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float4x3 Bones[4];
+struct V { float4 pos : POSITION; float4 color : COLOR0; };
+V VS(float4 p : POSITION) { V o; o.pos = mul(p, WorldViewProjection); o.color = float4(Bones[1][0], 1); return o; }
+float4 PS(float4 c : COLOR0) : COLOR0 { return c; }
+technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                    "t");
+  ASSERT_TRUE(r);
+  std::vector<float> bones(4 * 12, 0.0f);
+  bones[12 + 0] = 0.25f, bones[12 + 1] = 0.5f, bones[12 + 2] = 0.75f;  // element 1, row 0
+  ASSERT_TRUE(r->effect->params->set(r->effect->params->find("Bones"), std::span<const float>(bones)));
+  auto image = r->render();
+  ASSERT_TRUE(image);
+  const std::array<int, 4> c = centre(*image);
+  EXPECT_NEAR(c[0], 64, 1);
+  EXPECT_NEAR(c[1], 128, 1);
+  EXPECT_NEAR(c[2], 191, 1);
+}
+
 }  // namespace
 }  // namespace fx::vk::testing
