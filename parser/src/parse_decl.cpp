@@ -24,6 +24,8 @@ bool Parser::parse_type(ast::TypeRef& type) {
     return false;
   }
   uint32_t first = pos_;
+  // `struct { float4 color; } g;` at file scope (or in a typedef): an anonymous struct type.
+  if (at_ident("struct") && peek().is(TokenKind::l_brace)) return parse_member_struct(type);
   // `struct InnerStruct member;`: the C spelling of a struct type names the same type.
   if (at_ident("struct") && peek().is(TokenKind::identifier)) advance();
   // Compared as the token's string_view, which tests the length first: std::string's

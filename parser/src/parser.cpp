@@ -259,8 +259,9 @@ void Parser::parse_top_level(std::vector<ast::Decl>& out) {
              peek(2).is(TokenKind::identifier)) {
     advance();  // shared: kept as a flag, the buffer's tokens start at `cbuffer`
     parse_constant_buffer(out, first);
-  } else if ((word == "struct" && !(peek().is(TokenKind::identifier) &&  // not `struct S s;`
-                                     peek(2).is(TokenKind::identifier))) ||
+  } else if ((word == "struct" && !peek().is(TokenKind::l_brace) &&  // not `struct { ... } s;`
+              !(peek().is(TokenKind::identifier) &&                 // not `struct S s;`
+                peek(2).is(TokenKind::identifier))) ||
              ((word == "interface" || word == "class") && peek().is(TokenKind::identifier))) {
     parse_struct(out);
   } else if (word == "typedef") {

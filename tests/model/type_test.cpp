@@ -61,6 +61,8 @@ TEST(ModelType, StructsDefinedInPlace) {
   auto b = test::build(R"(
     struct Light { struct { float3 dir; float pad; } d; struct Tint { float4 rgba; } tint; float4 color; };
     Light light; Tint tint;
+    struct { float4 color; float scale; } material;
+    typedef struct { float3 dir; } Ray; Ray ray;
   )");
   ASSERT_FALSE(b->diags.has_errors()) << b->text();
   const Type& light = test::param(*b, "light").type;
@@ -70,6 +72,11 @@ TEST(ModelType, StructsDefinedInPlace) {
   ASSERT_EQ(light.structure->members[0].type.cls, TypeClass::structure);
   EXPECT_EQ(light.structure->members[0].type.structure->members[0].type.to_string(), "float3");
   EXPECT_EQ(test::param(*b, "tint").type.structure->members[0].name, "rgba");
+  // At file scope too, and in a typedef.
+  ASSERT_EQ(test::param(*b, "material").type.cls, TypeClass::structure);
+  EXPECT_EQ(test::param(*b, "material").type.structure->components, 5u);
+  ASSERT_EQ(test::param(*b, "ray").type.cls, TypeClass::structure);
+  EXPECT_EQ(test::param(*b, "ray").type.structure->members[0].type.to_string(), "float3");
 }
 
 TEST(ModelType, ResourcesShadersStateObjects) {
