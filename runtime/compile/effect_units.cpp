@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <optional>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "effect_unit_builder.h"
 #include "fx/ascii_case.h"
@@ -173,6 +175,7 @@ void EffectUnitBuilder::build() {
   if (u_.name_.empty()) u_.name_ = "<effect>";
   index_declarations();
   emit_hlsl();
+  for (uint32_t i = 0; i < u_.functions_.size(); ++i) u_.functions_by_name_[u_.functions_[i].name].push_back(i);
   collect_glsl();
   collect_passes();
   mark_uncalled_functions();
@@ -180,9 +183,12 @@ void EffectUnitBuilder::build() {
 }
 
 void EffectUnitBuilder::mark_dynamic_linkage() {
+  std::unordered_map<std::string, std::vector<bool>> reach;  // by entry: passes share shaders
   auto check = [&](StageUnit& stage) {
     if (stage.kind != StageSourceKind::hlsl) return;
-    std::vector<bool> r = u_.reached_from(stage.function);
+    auto [it, fresh] = reach.try_emplace(stage.function);
+    if (fresh) it->second = u_.reached_from(stage.function);
+    const std::vector<bool>& r = it->second;
     for (size_t i = 0; i < r.size(); ++i)
       if (r[i] && !u_.functions_[i].dynamic_linkage.empty()) {
         invalid(stage, "fx_5_0 dynamic linkage: '" + u_.functions_[i].name + "' uses " +
@@ -199,8 +205,9 @@ void EffectUnitBuilder::mark_dynamic_linkage() {
 
 void EffectUnitBuilder::mark_uncalled_functions() {
   std::vector<bool> reached(u_.functions_.size(), false);
+  std::unordered_set<std::string> done;  // entries already walked: passes share shaders
   auto reach = [&](const StageUnit& stage) {
-    if (stage.kind != StageSourceKind::hlsl) return;
+    if (stage.kind != StageSourceKind::hlsl || !done.insert(stage.function).second) return;
     std::vector<bool> r = u_.reached_from(stage.function);
     for (size_t i = 0; i < r.size(); ++i) reached[i] = reached[i] || r[i];
   };
@@ -256,8 +263,10 @@ std::vector<bool> EffectUnits::reached_from(std::string_view entry) const {
     std::string_view name = pending.back();
     pending.pop_back();
     // Every overload of a name: glslang resolves the call.
-    for (size_t i = 0; i < functions_.size(); ++i)
-      if (!reached[i] && functions_[i].name == name) {
+    auto overloads = functions_by_name_.find(std::string(name));
+    if (overloads == functions_by_name_.end()) continue;
+    for (uint32_t i : overloads->second)
+      if (!reached[i]) {
         reached[i] = true;
         pending.insert(pending.end(), functions_[i].calls.begin(), functions_[i].calls.end());
       }

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "fx/ast.h"
@@ -121,6 +122,8 @@ class EffectUnits {
     bool in_every_unit = false;  // no stage calls it
   };
   std::vector<FunctionText> functions_;
+  // Indices into functions_ by name (every overload), so reach costs what it visits.
+  std::unordered_map<std::string, std::vector<uint32_t>> functions_by_name_;
   std::vector<std::string> called_outside_functions_;
   // Which functions `entry`'s unit holds (indices into functions_).
   std::vector<bool> reached_from(std::string_view entry) const;
