@@ -148,8 +148,12 @@ class EffectUnitBuilder {
   bool hlsl(StageUnit& stage, const std::string& profile, const std::string& name,
             const std::vector<const ast::Expr*>& args, SourceRange range);
 
-  // Whether a pixel shader takes D3D9's VPOS or VFACE, which its wrapper turns into Vulkan's.
-  static bool has_d3d9_system_value(const ast::Function& f);
+  // Whether a pixel shader takes D3D9's VPOS or VFACE (as a parameter, or a member of an
+  // input struct), which its wrapper turns into Vulkan's.
+  bool has_d3d9_system_value(const ast::Function& f) const;
+  // The struct `p` is passed as, when its members carry VPOS/VFACE and can be passed one by
+  // one (scalars, vectors and matrices, each with a semantic); null otherwise.
+  const ast::Struct* system_value_struct(const ast::Variable& p) const;
 
   // `R F__fx_args(varying params) : SEM { return F(varying..., literal...); }`, placed at the
   // function's own line so errors in the wrapper point at the function.

@@ -265,9 +265,46 @@ bool EffectUnitBuilder::hlsl(StageUnit& stage, const std::string& profile, const
   return true;
 }
 
-bool EffectUnitBuilder::has_d3d9_system_value(const ast::Function& f) {
+namespace {
+
+bool is_d3d9_system_value(std::string_view semantic) { return iequals(semantic, "VPOS") || iequals(semantic, "VFACE"); }
+
+// D3D9 pixel shader system values that glslang reads as user varyings: VPOS is the pixel's
+// integer position (SV_Position is its centre), VFACE is +1 front, -1 back. The wrapper
+// parameter that stands for one, and the expression of type `type` it passes on.
+std::pair<std::string, std::string> system_value(std::string_view semantic, const std::string& name,
+                                                 const std::string& type) {
+  if (iequals(semantic, "VPOS"))
+    return {"float4 " + name + " : SV_Position", "(" + type + ")float4(" + name + ".xy - 0.5, 0, 0)"};
+  return {"bool " + name + " : SV_IsFrontFace", "(" + type + ")(" + name + " ? 1.0 : -1.0)"};
+}
+
+std::string safe_name(std::string_view name) {
+  std::string safe = detail::glslang_safe_name(name, false);
+  return safe.empty() ? std::string(name) : safe;
+}
+
+}  // namespace
+
+const ast::Struct* EffectUnitBuilder::system_value_struct(const ast::Variable& p) const {
+  if (p.storage & (ast::kOut | ast::kInOut | ast::kUniform)) return nullptr;
+  for (const ast::Decl& d : effect_.decls) {
+    if (d.kind != ast::DeclKind::structure || d.structure->kind != ast::StructKind::structure ||
+        d.structure->name != p.type.name)
+      continue;
+    bool any = false;
+    for (const ast::Variable& m : d.structure->members) {
+      if (!m.array_dims.empty() || m.type.definition || m.semantic.empty()) return nullptr;
+      any = any || is_d3d9_system_value(m.semantic);
+    }
+    return any ? d.structure : nullptr;
+  }
+  return nullptr;
+}
+
+bool EffectUnitBuilder::has_d3d9_system_value(const ast::Function& f) const {
   for (const ast::Variable& p : f.params)
-    if (iequals(p.semantic, "VPOS") || iequals(p.semantic, "VFACE")) return true;
+    if (is_d3d9_system_value(p.semantic) || system_value_struct(p)) return true;
   return false;
 }
 
@@ -280,6 +317,7 @@ std::string EffectUnitBuilder::wrapper(const ast::Function& f, const std::vector
   if (!f.return_type.template_arg.empty()) text += "<" + f.return_type.template_arg + ">";
   text += " " + f.name + "__fx_args(";
   std::string call = f.name + "(";
+  std::string prelude;  // builds the input structs that carry D3D9 system values
   size_t bound = 0;
   bool first_param = true;
   for (size_t i = 0; i < f.params.size(); ++i) {
@@ -291,25 +329,42 @@ std::string EffectUnitBuilder::wrapper(const ast::Function& f, const std::vector
     }
     if (!first_param) text += ", ";
     first_param = false;
-    // D3D9 pixel shader system values that glslang reads as user varyings: VPOS is the
-    // pixel's integer position (SV_Position is its centre), VFACE is +1 front, -1 back.
-    if (iequals(p.semantic, "VPOS")) {
-      text += "float4 fx_vpos : SV_Position";
-      call += "(" + p.type.name + ")float4(fx_vpos.xy - 0.5, 0, 0)";
+    const std::string param = "fx_" + std::to_string(i);
+    if (is_d3d9_system_value(p.semantic)) {
+      auto [declaration, value] = system_value(p.semantic, param, p.type.name);
+      text += declaration;
+      call += value;
       continue;
     }
-    if (iequals(p.semantic, "VFACE")) {
-      text += "bool fx_front_face : SV_IsFrontFace";
-      call += "(" + p.type.name + ")(fx_front_face ? 1.0 : -1.0)";
+    if (const ast::Struct* s = system_value_struct(p)) {  // its members one by one
+      prelude += std::string(s->name) + " " + param + "; ";
+      for (size_t m = 0; m < s->members.size(); ++m) {
+        const ast::Variable& member = s->members[m];
+        const std::string name = param + "_" + std::to_string(m);
+        std::string type = member.type.name;
+        if (!member.type.template_arg.empty()) type += "<" + std::string(member.type.template_arg) + ">";
+        if (m) text += ", ";
+        std::string value = name;
+        if (is_d3d9_system_value(member.semantic)) {
+          auto [declaration, converted] = system_value(member.semantic, name, type);
+          text += declaration;
+          value = converted;
+        } else {
+          if (member.storage & ast::kNoInterpolation) text += "nointerpolation ";
+          if (member.storage & ast::kCentroid) text += "centroid ";
+          text += type + " " + name + " : " + std::string(member.semantic);
+        }
+        prelude += param + "." + safe_name(member.name) + " = " + value + "; ";
+      }
+      call += param;
       continue;
     }
     text += join_tokens(toks_, p.tokens);
-    std::string safe = detail::glslang_safe_name(p.name, false);
-    call += safe.empty() ? std::string(p.name) : safe;
+    call += safe_name(p.name);
   }
   text += ")";
   if (!f.semantic.empty()) text += " : " + f.semantic;
-  text += f.return_type.name == "void" ? " { " + call + "); }\n" : " { return " + call + "); }\n";
+  text += " { " + prelude + (f.return_type.name == "void" ? "" : "return ") + call + "); }\n";
   return text;
 }
 

@@ -206,20 +206,27 @@ technique10 t { pass p { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelS
 // D3D9's pixel shader system values: VPOS is the pixel's integer position, VFACE is positive
 // on front faces. glslang reads both as varyings nothing writes (a validation error).
 TEST_F(EffectStatesTest, Ps30VposAndVfaceAreThePixelAndItsFacing) {
-  auto r = bind_text(ctx(), "vpos.fx", R"(
-float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
-float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
-float4 PS(float2 vpos : VPOS, float face : VFACE) : COLOR0 {
+  // As parameters, and as members of the pixel shader's input struct beside a varying.
+  for (const char* ps : {R"(float4 PS(float2 vpos : VPOS, float face : VFACE) : COLOR0 {
   return float4(all(frac(vpos) == 0) ? 1 : 0, face > 0 ? 1 : 0, face < 0 ? 1 : 0, vpos.x / 255);
-}
+})",
+                         R"(struct PSIn { float4 tint : COLOR0; float2 vpos : VPOS; float face : VFACE; };
+float4 PS(PSIn i) : COLOR0 {
+  return float4(all(frac(i.vpos) == 0) ? 1 : 0, i.face > 0 ? 1 : 0, i.face < 0 ? 1 : 0, i.vpos.x / 255) * i.tint;
+})"}) {
+    auto r = bind_text(ctx(), "vpos.fx", std::string(R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+void VS(float4 p : POSITION, out float4 pos : POSITION, out float4 tint : COLOR0) { pos = mul(p, WorldViewProjection); tint = 1; }
+)") + ps + R"(
 technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
 )",
-                    "t");
-  ASSERT_TRUE(r);
-  auto image = r->render();
-  ASSERT_TRUE(image);
-  // The centre pixel of the 32x32 image is (16, 16): alpha 16/255.
-  EXPECT_EQ(centre(*image), (std::array<int, 4>{255, 255, 0, 16}));
+                       "t");
+    ASSERT_TRUE(r) << ps;
+    auto image = r->render();
+    ASSERT_TRUE(image) << ps;
+    // The centre pixel of the 32x32 image is (16, 16): alpha 16/255.
+    EXPECT_EQ(centre(*image), (std::array<int, 4>{255, 255, 0, 16})) << ps;
+  }
 }
 
 // A skinning palette, float4x3 Bones[4]: each element three registers (48 bytes), and the
