@@ -3,13 +3,10 @@
 #include <algorithm>
 
 namespace fx {
-
 namespace {
 constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
-}  // namespace
-namespace {
 constexpr uint32_t kScratchChunk = 64 * 1024;
-}
+}  // namespace
 
 SourceManager::SourceManager() { entries_.emplace_back(); }
 

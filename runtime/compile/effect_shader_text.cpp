@@ -8,9 +8,9 @@ namespace {
 // Up to this many blank lines are written instead of a #line directive.
 constexpr uint32_t kMaxBlankLines = 8;
 
-bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 }  // namespace
+
+bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 std::string line_directive(uint32_t line, std::string_view file) {
   std::string out = "#line " + std::to_string(line) + " \"";
@@ -76,6 +76,11 @@ std::string glslang_safe_name(std::string_view word, bool identifier_follows) {
                              "nointerpolation", "noperspective", "precise", "snorm", "unorm"})
     if (word == w) return std::string(word) + std::string(kRenamed);
   return {};
+}
+
+std::string glslang_spelling(const std::vector<Token>& toks, uint32_t i, uint32_t last) {
+  if (!toks[i].is(TokenKind::identifier)) return {};
+  return glslang_safe_name(toks[i].text(), i + 1 < last && toks[i + 1].is(TokenKind::identifier));
 }
 
 std::string effect_name(std::string_view name) {

@@ -5,6 +5,7 @@
 #pragma once
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "fx/source_manager.h"
 #include "fx/token.h"
@@ -40,6 +41,9 @@ class ShaderTextWriter {
   char last_ = '\n';
 };
 
+// A character of an HLSL/GLSL identifier or number: letters, digits, '_'.
+bool is_word_char(char c);
+
 // Escapes a file name for a `#line N "name"` directive.
 std::string line_directive(uint32_t line, std::string_view file);
 
@@ -48,6 +52,9 @@ std::string line_directive(uint32_t line, std::string_view file);
 // interpolation or precision modifier. Given an identifier and whether an identifier follows
 // it (a type: the modifier use), the spelling for glslang ("point__fx"), or "" to keep it.
 std::string glslang_safe_name(std::string_view word, bool identifier_follows);
+// The spelling glslang gets for token `i` of `toks` (`last` ends its declaration): a
+// reserved name renamed, "" to keep the token as written.
+std::string glslang_spelling(const std::vector<Token>& toks, uint32_t i, uint32_t last);
 // The name as the effect wrote it, for reflection: "light.point__fx" -> "light.point".
 std::string effect_name(std::string_view glslang_name);
 

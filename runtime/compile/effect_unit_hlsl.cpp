@@ -147,11 +147,7 @@ std::vector<std::string> EffectUnitBuilder::calls_in(ast::TokenSpan span) const 
 }
 
 void EffectUnitBuilder::put_hlsl(detail::ShaderTextWriter& w, uint32_t i, uint32_t last) {
-  const Token& t = toks_[i];
-  if (!t.is(TokenKind::identifier)) return w.token(t);
-  bool identifier_follows = i + 1 < last && toks_[i + 1].is(TokenKind::identifier);
-  std::string safe = detail::glslang_safe_name(t.text(), identifier_follows);
-  w.token(t, safe);
+  w.token(toks_[i], detail::glslang_spelling(toks_, i, last));
 }
 
 void EffectUnitBuilder::emit_tokens(detail::ShaderTextWriter& w, ast::TokenSpan span) {

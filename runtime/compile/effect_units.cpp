@@ -143,9 +143,7 @@ std::string join_tokens(const std::vector<Token>& toks, ast::TokenSpan span) {
   std::string out;
   for (uint32_t i = span.first; i < span.last && i < toks.size(); ++i) {
     const Token& t = toks[i];
-    std::string safe;
-    if (t.is(TokenKind::identifier))
-      safe = detail::glslang_safe_name(t.text(), i + 1 < span.last && toks[i + 1].is(TokenKind::identifier));
+    const std::string safe = glslang_spelling(toks, i, span.last);
     const std::string_view text = safe.empty() ? t.text() : std::string_view(safe);
     if (!out.empty() && (t.leading_space() || (std::isalnum(static_cast<unsigned char>(out.back())) &&
                                                !text.empty() && std::isalnum(static_cast<unsigned char>(text[0])))))

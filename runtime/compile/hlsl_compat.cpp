@@ -1,6 +1,6 @@
 #include "fx/compile/hlsl_compat.h"
 
-#include <cctype>
+#include "effect_shader_text.h"
 
 namespace fx {
 
@@ -35,8 +35,6 @@ constexpr KnownIssue kIssues[] = {
                    "order differs from HLSL's smoothstep(min, max, x)"},
 };
 
-bool is_ident(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 }  // namespace
 
 std::vector<CompatIssue> pre_release_hlsl_issues(std::string_view src) {
@@ -54,12 +52,12 @@ std::vector<CompatIssue> pre_release_hlsl_issues(std::string_view src) {
       i += 2;
       continue;
     }
-    if (!is_ident(src[i]) || (i > 0 && is_ident(src[i - 1]))) {
+    if (!detail::is_word_char(src[i]) || (i > 0 && detail::is_word_char(src[i - 1]))) {
       ++i;
       continue;
     }
     size_t end = i;
-    while (end < src.size() && is_ident(src[end])) ++end;
+    while (end < src.size() && detail::is_word_char(src[end])) ++end;
     std::string_view word = src.substr(i, end - i);
     for (size_t k = 0; k < std::size(kIssues); ++k)
       if (!seen[k] && word == kIssues[k].name) {

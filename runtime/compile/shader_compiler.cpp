@@ -1,7 +1,6 @@
 #include "fx/compile/shader_compiler.h"
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <map>
 #include <cstdlib>
@@ -15,6 +14,7 @@
 #include <spirv-tools/optimizer.hpp>
 
 #include "fx/compile/spirv_cache.h"
+#include "effect_shader_text.h"
 #include "glslang_reflect.h"
 #include "spirv_words.h"
 
@@ -87,14 +87,13 @@ void apply_d3d_output_semantics(CompiledShader& out, const ShaderProfile& profil
 // also makes a plain `sampler` combined, which breaks D3D10 `Texture.Sample(sampler, uv)`, so
 // it is chosen only for code that needs it.
 bool uses_d3d9_sampler_intrinsics(std::string_view hlsl) {
-  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
   for (size_t at = hlsl.find("tex"); at != std::string_view::npos; at = hlsl.find("tex", at + 3)) {
-    if (at > 0 && ident(hlsl[at - 1])) continue;
+    if (at > 0 && detail::is_word_char(hlsl[at - 1])) continue;
     std::string_view rest = hlsl.substr(at + 3);
     size_t dim = rest.rfind("CUBE", 0) == 0 ? 4 : rest.size() >= 2 && rest[0] >= '1' && rest[0] <= '3' && rest[1] == 'D' ? 2 : 0;
     if (dim == 0) continue;
     size_t end = dim;
-    while (end < rest.size() && ident(rest[end])) ++end;  // lod, bias, proj, grad
+    while (end < rest.size() && detail::is_word_char(rest[end])) ++end;  // lod, bias, proj, grad
     while (end < rest.size() && (rest[end] == ' ' || rest[end] == '\t')) ++end;
     if (end < rest.size() && rest[end] == '(') return true;
   }
@@ -274,8 +273,8 @@ CompiledShader ShaderCompiler::run_glslang(const TranslationUnit& unit, const Sh
     // does with samplers); GLSL is valid as generated and skips the optimizer's cost.
     spv.disableOptimizer = !hlsl;
     spv::SpvBuildLogger logger;
-    // glslang can emit invalid SPIR-V for code it accepts (D3D9 sampler2D/tex2D under an SM4
-    // profile): SPIRV-Tools' validator turns that into an error instead of a driver crash.
+    // glslang can emit invalid SPIR-V for code it accepts (a derivative in a vertex shader):
+    // SPIRV-Tools' validator turns that into an error instead of a driver crash.
     // Validation runs after fxkit's own passes, not inside GlslangToSpv, before them.
     spv.validate = false;
     glslang::GlslangToSpv(*program->getIntermediate(stage), out.spirv, &logger, &spv);

@@ -4,10 +4,10 @@
 #include <cctype>
 #include <string_view>
 
+#include "effect_shader_text.h"
+
 namespace fx::detail {
 namespace {
-
-bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // The name a glslang message starts with: `'undefined_value' : unknown variable`.
 std::string_view quoted_word(std::string_view message) {
