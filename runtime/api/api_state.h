@@ -9,6 +9,7 @@
 #include "fx/diagnostic.h"
 #include "fx/reload/effect_library.h"
 #include "fx/source_manager.h"
+#include "fx/vulkan/buffer.h"
 #include "fx/vulkan/context.h"
 #include "fx/vulkan/effect_binding.h"
 #include "fx/vulkan/effect_textures.h"
@@ -34,11 +35,21 @@ struct DeviceState {
   std::unique_ptr<fx::vk::EffectTextureCache> textures;
   std::unique_ptr<fx::vk::ReloadBackend> backend;
   std::unique_ptr<fx::EffectLibrary> library;
+  fx::vk::Buffer default_attributes;  // (0, 0, 0, 1) for Target::default_attribute_binding
+  std::vector<std::weak_ptr<struct EffectState>> effects;  // loaded through this device
+
+  // After load() and every poll(): each effect's `store` is its live version's.
+  void refresh_stores();
 };
 
 struct EffectState {
   fx::EffectHandle handle;
+  // The live version's parameter values (null when none): the setters' one indirection,
+  // refreshed by the device where versions change (load, begin_frame, destruction).
+  fx::ParameterStore* store = nullptr;
   fx::vk::RenderingFormats formats;
+  VkBuffer default_attributes = VK_NULL_HANDLE;  // bound at default_binding by begin()
+  uint32_t default_binding = 0;
   // The binding begin() started recording with (its version kept alive until end()).
   fx::vk::EffectBinding* recording = nullptr;
   std::shared_ptr<const fx::EffectVersion> recording_version;

@@ -66,6 +66,12 @@ fx::vk::PassTargetInfo pass_target(const Target& target) {
   return info;
 }
 
+void DeviceState::refresh_stores() {
+  std::erase_if(effects, [](const std::weak_ptr<EffectState>& e) { return e.expired(); });
+  for (const std::weak_ptr<EffectState>& weak : effects)
+    if (auto e = weak.lock()) e->store = e->handle.params();
+}
+
 }  // namespace detail
 
 namespace {
@@ -86,7 +92,11 @@ std::unique_ptr<detail::DeviceState> make_state(fx::vk::Context ctx, const Devic
   s->target = options.target;
   s->formats = detail::rendering_formats(options.target.formats);
   fx::DiagnosticSink sink;
-  s->frames = fx::vk::FrameResources::create(c, {.frames_in_flight = std::max(1u, options.frames_in_flight)}, sink);
+  fx::vk::FrameResourcesDesc frames;
+  frames.frames_in_flight = std::max(1u, options.frames_in_flight);
+  frames.uniform_bytes_per_frame = options.uniform_bytes_per_frame;
+  frames.sets_per_frame = options.descriptor_sets_per_frame;
+  s->frames = fx::vk::FrameResources::create(c, frames, sink);
   if (!s->frames) {
     auto more = detail::to_messages(sink.diagnostics(), nullptr);
     errors.insert(errors.end(), more.begin(), more.end());
@@ -96,9 +106,21 @@ std::unique_ptr<detail::DeviceState> make_state(fx::vk::Context ctx, const Devic
   fx::vk::ReloadBackendDesc desc;
   desc.formats = s->formats;
   desc.binding.target = detail::pass_target(options.target);
-  desc.vertex_layout = [layout = options.target.vertex_layout](std::span<const fx::InterfaceVariable>) {
-    return layout;
+  const uint32_t defaults = options.target.default_attribute_binding;
+  desc.vertex_layout = [layout = options.target.vertex_layout, defaults](std::span<const fx::InterfaceVariable> in) {
+    return defaults == Target::kNoBinding ? layout : fx::vk::with_default_attributes(layout, in, defaults);
   };
+  if (defaults != Target::kNoBinding) {
+    const float constant[4] = {0, 0, 0, 1};
+    auto buffer = fx::vk::Buffer::create(
+        c, {16, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, fx::vk::MemoryUsage::upload, "fxkit default attributes"}, sink);
+    if (!buffer || !buffer->write(constant, 16)) {
+      auto more = detail::to_messages(sink.diagnostics(), nullptr);
+      errors.insert(errors.end(), more.begin(), more.end());
+      return nullptr;
+    }
+    s->default_attributes = std::move(*buffer);
+  }
   s->backend = std::make_unique<fx::vk::ReloadBackend>(c, *s->textures, *s->frames, std::move(desc));
   fx::EffectLibraryOptions lib;
   lib.include_dirs = options.include_dirs;
@@ -123,10 +145,12 @@ Device::Device(std::unique_ptr<detail::DeviceState> state) : state_(std::move(st
 Device::~Device() {
   if (!state_) return;
   state_->ctx->wait_idle();
-  state_->library.reset();  // versions and their bindings before what they draw with
+  state_->library.reset();
+  state_->refresh_stores();  // handles are inert now: no store  // versions and their bindings before what they draw with
   state_->backend.reset();
   state_->textures.reset();
   state_->frames.reset();
+  state_->default_attributes = {};
 }
 
 std::unique_ptr<Device> Device::create(const VulkanHandles& vulkan, const DeviceOptions& options,
@@ -166,13 +190,19 @@ Effect Device::load(const std::string& path) {
   e.state_ = std::make_shared<detail::EffectState>();
   e.state_->handle = state_->library->load(path);
   e.state_->formats = state_->formats;
+  e.state_->default_attributes = state_->default_attributes.handle();
+  e.state_->default_binding = state_->target.default_attribute_binding;
+  state_->effects.push_back(e.state_);
+  state_->refresh_stores();
   return e;
 }
 
 std::vector<Reload> Device::begin_frame() {
   state_->frames->begin_frame();
   std::vector<Reload> out;
-  for (const fx::ReloadEvent& ev : state_->library->poll(state_->frames->frame())) {
+  const std::vector<fx::ReloadEvent> events = state_->library->poll(state_->frames->frame());
+  state_->refresh_stores();
+  for (const fx::ReloadEvent& ev : events) {
     Reload r;
     r.kind = ev.kind == fx::ReloadEventKind::reloaded ? Reload::Kind::reloaded
              : ev.kind == fx::ReloadEventKind::failed ? Reload::Kind::failed
@@ -186,6 +216,7 @@ std::vector<Reload> Device::begin_frame() {
 }
 
 uint64_t Device::frame() const { return state_->frames->frame(); }
+uint64_t Device::uniform_bytes_written() const { return state_->frames->uniform_bytes_uploaded(); }
 
 bool Device::submit(const std::function<void(VkCommandBuffer)>& record) {
   fx::DiagnosticSink sink;

@@ -94,36 +94,36 @@ Param Effect::param(std::string_view name_or_semantic) const {
 }
 
 bool Effect::set(Param p, float value) {
-  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  fx::ParameterStore* store = state_ ? state_->store : nullptr;
   return store && kept(*state_, store->set(to_fx(p), value));
 }
 bool Effect::set(Param p, int32_t value) {
-  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  fx::ParameterStore* store = state_ ? state_->store : nullptr;
   return store && kept(*state_, store->set(to_fx(p), value));
 }
 bool Effect::set(Param p, bool value) {
-  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  fx::ParameterStore* store = state_ ? state_->store : nullptr;
   return store && kept(*state_, store->set(to_fx(p), value));
 }
 bool Effect::set(Param p, std::span<const float> values) {
-  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  fx::ParameterStore* store = state_ ? state_->store : nullptr;
   return store && kept(*state_, store->set(to_fx(p), values));
 }
 
 bool Effect::set_matrix(Param p, const float* m16, MatrixOrder order) {
-  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  fx::ParameterStore* store = state_ ? state_->store : nullptr;
   if (!store) return false;
   const fx::ParamStatus status = store->set_matrix(to_fx(p), std::span<const float>(m16, 16), to_fx(order));
   return status || kept(*state_, status);
 }
 
 bool Effect::get(Param p, std::span<float> out) const {
-  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  fx::ParameterStore* store = state_ ? state_->store : nullptr;
   return store && store->get(to_fx(p), out);
 }
 
 bool Effect::reset(Param p) {
-  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  fx::ParameterStore* store = state_ ? state_->store : nullptr;
   return store && kept(*state_, store->reset(to_fx(p)));
 }
 
@@ -137,6 +137,18 @@ uint32_t Effect::set_scene(const Scene& scene) {
   view.eye = {scene.eye[0], scene.eye[1], scene.eye[2]};
   view.time = scene.time;
   return fx::vk::set_standard_semantics(*version->params, *version->model, view);
+}
+
+ApplyStats Effect::stats() const {
+  auto version = state_ ? state_->handle.version() : nullptr;
+  const fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
+  return binding ? binding->stats() : ApplyStats{};
+}
+
+void Effect::reset_stats() {
+  auto version = state_ ? state_->handle.version() : nullptr;
+  if (fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr)
+    binding->reset_stats();
 }
 
 bool Effect::set_texture(std::string_view name, VkImageView view, VkImageLayout layout, VkImageViewType type) {

@@ -70,6 +70,10 @@ bool Technique::begin(VkCommandBuffer cmd, const VkViewport& viewport, const VkR
   if (!binding || t >= binding->technique_count()) return false;
   if (s.textures_serial != s.recording_version->serial) s.bind_app_textures(*s.recording_version, *binding);
   const bool ok = binding->begin(cmd, t, s.formats, viewport, scissor, s.sink);
+  if (ok && s.default_attributes) {
+    const VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(cmd, s.default_binding, 1, &s.default_attributes, &offset);
+  }
   if (!s.sink.diagnostics().empty()) s.keep_problems();
   if (ok) s.recording = binding;
   return ok;

@@ -52,17 +52,6 @@ uint32_t depth_bits(VkFormat format) {
   }
 }
 
-// The zero stream's format for an input the mesh does not have: integer inputs
-// (BLENDINDICES as uint4) must be read as integers, or Vulkan reports a type mismatch.
-VkFormat zero_stream_format(const InterfaceVariable& in) {
-  switch (in.type.scalar) {
-    case ScalarKind::int32: return VK_FORMAT_R32G32B32A32_SINT;
-    case ScalarKind::uint32:
-    case ScalarKind::boolean: return VK_FORMAT_R32G32B32A32_UINT;
-    default: return VK_FORMAT_R32G32B32A32_SFLOAT;
-  }
-}
-
 }  // namespace
 
 std::unique_ptr<EffectPreview> EffectPreview::create(const Context& ctx, const Mesh& mesh,
@@ -121,26 +110,16 @@ SceneView EffectPreview::scene() const {
 
 VertexLayout EffectPreview::vertex_layout(std::span<const InterfaceVariable> inputs) const {
   VertexLayout layout;
-  layout.bindings = {{0, uint32_t(sizeof(Vertex)), VK_VERTEX_INPUT_RATE_VERTEX},
-                     {1, 0, VK_VERTEX_INPUT_RATE_VERTEX}};
+  layout.bindings = {{0, uint32_t(sizeof(Vertex)), VK_VERTEX_INPUT_RATE_VERTEX}};
   for (const MeshAttribute& a : kMeshAttributes) layout.attributes.push_back({a.semantic, a.format, a.offset, 0});
+  // GLSL inputs (no semantics) read the mesh attribute their name suggests.
   for (const InterfaceVariable& in : inputs) {
-    if (in.semantic.empty()) {
-      bool listed = false;
-      for (const VertexAttribute& a : layout.attributes) listed = listed || a.semantic == in.name;
-      if (listed) continue;
-      const MeshAttribute* a = guess_attribute(in.name);
-      if (a) layout.attributes.push_back({in.name, a->format, a->offset, 0});
-      else layout.attributes.push_back({in.name, zero_stream_format(in), 0, 1});
-      continue;
-    }
-    for (const std::string& sem : input_semantics(in)) {
-      bool known = false;
-      for (const VertexAttribute& a : layout.attributes) known = known || canonical_semantic(a.semantic) == sem;
-      if (!known) layout.attributes.push_back({sem, zero_stream_format(in), 0, 1});
-    }
+    const MeshAttribute* a = in.semantic.empty() ? guess_attribute(in.name) : nullptr;
+    const bool listed = std::any_of(layout.attributes.begin(), layout.attributes.end(),
+                                    [&](const VertexAttribute& v) { return v.semantic == in.name; });
+    if (a && !listed) layout.attributes.push_back({in.name, a->format, a->offset, 0});
   }
-  return layout;
+  return with_default_attributes(std::move(layout), inputs, 1);
 }
 
 std::optional<fx::Image> EffectPreview::render(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,

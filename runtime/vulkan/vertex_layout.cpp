@@ -89,4 +89,33 @@ std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout,
   return out;
 }
 
+VkFormat default_attribute_format(const InterfaceVariable& input) {
+  switch (input.type.scalar) {
+    case ScalarKind::int32: return VK_FORMAT_R32G32B32A32_SINT;
+    case ScalarKind::uint32:
+    case ScalarKind::boolean: return VK_FORMAT_R32G32B32A32_UINT;
+    default: return VK_FORMAT_R32G32B32A32_SFLOAT;
+  }
+}
+
+VertexLayout with_default_attributes(VertexLayout layout, std::span<const InterfaceVariable> inputs,
+                                     uint32_t binding) {
+  const size_t declared = layout.attributes.size();
+  auto has = [&layout](const std::string& name, bool by_semantic) {
+    for (const VertexAttribute& a : layout.attributes)
+      if ((by_semantic ? canonical_semantic(a.semantic) : a.semantic) == name) return true;
+    return false;
+  };
+  for (const InterfaceVariable& in : inputs) {
+    if (in.semantic.empty()) {
+      if (!has(in.name, false)) layout.attributes.push_back({in.name, default_attribute_format(in), 0, binding});
+      continue;
+    }
+    for (const std::string& semantic : input_semantics(in))
+      if (!has(semantic, true)) layout.attributes.push_back({semantic, default_attribute_format(in), 0, binding});
+  }
+  if (layout.attributes.size() > declared) layout.bindings.push_back({binding, 0, VK_VERTEX_INPUT_RATE_VERTEX});
+  return layout;
+}
+
 }  // namespace fx::vk

@@ -213,6 +213,43 @@ TEST_F(PublicApiTest, BeginFrameSwapsInAnEditAndKeepsTheLastGoodEffectAfterABrok
   EXPECT_GT(green[1], green[0] + 40) << "the edited default tint is drawn";
 }
 
+TEST_F(PublicApiTest, InputsTheLayoutLacksReadDefaultsOnlyWhenTheTargetSaysWhere) {
+  // COLOR0 is not in the mesh layout: an error naming what is on offer, or (0, 0, 0, 1) from
+  // fxkit's buffer at the stated binding, so the sphere draws black with alpha 1 plus 0.5 red.
+  const std::string effect_text = R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+struct V { float4 pos : POSITION; float4 colour : COLOR0; };
+V VS(float4 p : POSITION, float4 c : COLOR0) { V o; o.pos = mul(p, WorldViewProjection); o.colour = c; return o; }
+float4 PS(V i) : COLOR0 { return i.colour + float4(0.5, 0, 0, 0); }
+technique coloured { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)";
+  const std::string path = write_effect("api_defaults.fx", effect_text);
+  {
+    std::vector<fxkit::Message> errors;
+    auto device = fxkit::Device::create(handles(), options(), errors);
+    ASSERT_TRUE(device) << text(errors);
+    fxkit::Effect effect = device->load(path);
+    EXPECT_FALSE(effect.ok());
+    EXPECT_NE(text(effect.messages()).find("reads COLOR"), std::string::npos) << text(effect.messages());
+  }
+  Rig r;
+  auto o = options();
+  o.target.default_attribute_binding = 1;
+  r.device = fxkit::Device::create(handles(), o, r.errors);
+  ASSERT_TRUE(r.device) << text(r.errors);
+  r.mesh = fxkit::Mesh::create(*r.device, "sphere", r.errors);
+  r.image = fxkit::Offscreen::create(*r.device, 32, 32, r.errors);
+  ASSERT_TRUE(r) << text(r.errors);
+  fxkit::Effect effect = r.device->load(path);
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  fxkit::Technique t = effect.technique("coloured");
+  const auto centre = draw(*r.device, t, *r.mesh, *r.image);
+  EXPECT_NEAR(int(centre[0]), 128, 2);
+  EXPECT_EQ(int(centre[1]), 0);
+  EXPECT_EQ(int(centre[2]), 0);
+}
+
 TEST(PublicApiHeadless, HeadlessDeviceReportsValidationThroughMessages) {
   std::vector<fxkit::Message> errors;
   fxkit::HeadlessOptions headless;

@@ -15,6 +15,7 @@
 #include "fx/vulkan/frame_resources.h"
 #include "fx/vulkan/pass_resources.h"
 #include "fx/vulkan/pipeline_cache.h"
+#include "fxkit/effect.h"
 
 namespace fx::vk {
 
@@ -34,15 +35,8 @@ struct PassDesc {
 };
 
 // What the recorder recorded (and skipped), for tests and benchmarks.
-struct ApplyStats {
-  uint64_t passes = 0;
-  uint64_t pipeline_binds = 0;
-  uint64_t dynamic_state_calls = 0;  // vkCmdSet* calls
-  uint64_t descriptor_binds = 0;     // vkCmdBindDescriptorSets
-  uint64_t descriptor_pushes = 0;    // vkCmdPushDescriptorSetKHR
-  uint64_t descriptor_writes = 0;    // vkUpdateDescriptorSets calls
-  uint64_t uniform_uploads = 0;      // blocks copied into the ring
-};
+// What apply() recorded: the public type (fxkit/effect.h).
+using ApplyStats = fxkit::ApplyStats;
 
 class PassRecorder {
  public:

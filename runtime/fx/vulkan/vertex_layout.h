@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,17 @@ std::string canonical_semantic(std::string_view semantic);
 // (`float4x4 World : TEXCOORD4`, instancing) takes one location per column and, as in D3D,
 // one semantic index each (TEXCOORD4..TEXCOORD7). Canonical spellings.
 std::vector<std::string> input_semantics(const InterfaceVariable& input);
+
+// The format an input missing from the application's layout is read with: (0, 0, 0, 1) as
+// floats, or as integers for integer inputs (BLENDINDICES as uint4), which Vulkan requires.
+VkFormat default_attribute_format(const InterfaceVariable& input);
+
+// `layout` plus, for every input it lacks, an attribute at `binding` whose buffer has stride
+// 0: each vertex reads the same (0, 0, 0, 1), as Direct3D reads elements a vertex declaration
+// lacks. Semantic inputs are matched by semantic, GLSL inputs by name. The caller binds a
+// buffer holding that constant at `binding`.
+VertexLayout with_default_attributes(VertexLayout layout, std::span<const InterfaceVariable> inputs,
+                                     uint32_t binding);
 
 // Matches every shader input to an attribute by semantic (GLSL inputs, which have none,
 // match by variable name). A shader input with no attribute is "vk-vertex-attribute-missing"

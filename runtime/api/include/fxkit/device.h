@@ -44,6 +44,10 @@ struct DeviceOptions {
   std::vector<std::string> defines;       // "NAME" or "NAME=VALUE", as -D
   bool watch = true;                      // reload effects when they or their includes change
   uint32_t frames_in_flight = 2;          // frames the GPU may still be reading
+  // Per frame in flight: uniform data fxkit writes (host-visible memory) and descriptor
+  // sets it allocates. Running out is a vk-uniform-ring-full / vk-descriptor-pool-full error.
+  uint32_t uniform_bytes_per_frame = 4u << 20;
+  uint32_t descriptor_sets_per_frame = 1024;
   std::string cache_dir;                  // SPIR-V cache on disk; "": in memory only
 };
 
@@ -85,6 +89,8 @@ class Device {
   // descriptor memory, releases effect versions no frame uses, and swaps in reloads.
   std::vector<Reload> begin_frame();
   uint64_t frame() const;
+  // Uniform bytes written into frame memory since the device was made (profiling).
+  uint64_t uniform_bytes_written() const;
 
   // Records `record` into a one-time command buffer, submits it to the queue and waits:
   // for tools, uploads and readbacks, not for the frame loop.

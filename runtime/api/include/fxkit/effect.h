@@ -58,6 +58,17 @@ struct Scene {
   static Scene framing(float radius, float aspect);
 };
 
+// What Technique::apply recorded for an effect since its last reset_stats() (profiling).
+struct ApplyStats {
+  uint64_t passes = 0;
+  uint64_t pipeline_binds = 0;
+  uint64_t dynamic_state_calls = 0;  // vkCmdSet* calls
+  uint64_t descriptor_binds = 0;     // vkCmdBindDescriptorSets
+  uint64_t descriptor_pushes = 0;    // vkCmdPushDescriptorSetKHR
+  uint64_t descriptor_writes = 0;    // vkUpdateDescriptorSets calls
+  uint64_t uniform_uploads = 0;      // uniform blocks written into the frame's memory
+};
+
 // Whether a technique can be drawn on this device, and why not.
 struct TechniqueInfo {
   std::string name;
@@ -132,6 +143,10 @@ class Effect {
   bool reset(Param p);
   // Every parameter whose semantic is a standard one; returns how many were set.
   uint32_t set_scene(const Scene& scene);
+  // Counters of the live version's recording.
+  ApplyStats stats() const;
+  void reset_stats();
+
   // Samples the application's image for texture parameter `name` (from the next begin()).
   // The view stays the application's; it must outlive the frames that use it.
   bool set_texture(std::string_view name, VkImageView view, VkImageLayout layout,
