@@ -260,9 +260,10 @@ struct ParameterStore::Impl {
     return ++draw.versions[top];
   }
 
-  // Marks node `n`'s words as the application's (set_by_app), or as defaults again.
+  // Marks node `n`'s words as the application's (set_by_app), or as defaults again. A node
+  // without words (a texture) may sit past the end of an empty set_by_app.
   void mark_set(const Node& n, bool by_app) {
-    if (!n.pooled) std::memset(set_by_app.data() + n.offset, by_app ? 1 : 0, n.words);
+    if (!n.pooled && n.words) std::memset(set_by_app.data() + n.offset, by_app ? 1 : 0, n.words);
   }
   // Copies n.words floats into node `n` (all float-like: held as float bits, half and
   // double included) as the application's value and dirties its blocks only when a bit
