@@ -227,7 +227,9 @@ bool ParameterStore::Impl::refresh(Block& b, DrawBlock& d) {
     pack(b, g.first, g.count);
     g.packed_version = version;
     changed = true;
-    if (g.whole4x4) {
+    // Hot only once the application has set the matrix: store_hot then writes nothing but
+    // the application's values and has no set_by_app to record.
+    if (g.whole4x4 && set_by_app[b.runs[g.first].src]) {
       const WordRun& r = b.runs[g.first];
       draw.hot[g.top] = {&d, &g.packed_version, b.packed.data() + r.dst, r.src, r.kind == RunKind::columns4x4};
     }
@@ -284,21 +286,43 @@ std::span<const uint8_t> ParameterStore::update_block_slow(BlockHandle block, bo
   return {b.packed.data(), b.size};
 }
 
-void remap(const ParameterStore& old_store, ParameterStore& new_store) {
+std::vector<std::string> remap(const ParameterStore& old_store, ParameterStore& new_store) {
   const ParameterStore::Impl& o = *old_store.impl_;
   ParameterStore::Impl& n = *new_store.impl_;
   std::vector<uint32_t> map = o.match_into(n);
-  // Carry values of matched top-level parameters (pooled ones live in the pool already).
+  std::vector<std::string> defaults_changed;
+  // Matched top-level parameters: the words and strings the application set carry over
+  // (and stay the application's); the others keep the new store's defaults. Pooled ones
+  // live in the pool already; a value leaving the pool is carried as the application's.
   for (uint32_t i = 0; i < o.top_count; ++i) {
     uint32_t j = map[i];
     if (j == kNoIndex) continue;
     const auto& a = o.nodes[i];
     auto& b = n.nodes[j];
-    if (a.string_slot != kNoIndex && b.string_slot != kNoIndex) n.strings[b.string_slot] = o.strings[a.string_slot];
-    if (b.pooled || a.words != b.words || a.words == 0) continue;
-    o.sync(i);
-    std::memcpy(n.data(b), o.data(a), a.words * sizeof(uint32_t));
-    n.touch(b);
+    bool default_changed = false;
+    if (a.string_slot != kNoIndex && b.string_slot != kNoIndex) {
+      if (o.string_set_by_app[a.string_slot]) {
+        n.strings[b.string_slot] = o.strings[a.string_slot];
+        n.string_set_by_app[b.string_slot] = 1;
+      } else {
+        default_changed = n.strings[b.string_slot] != o.strings[a.string_slot];
+      }
+    }
+    if (!b.pooled && a.words == b.words && a.words != 0) {
+      o.sync(i);
+      const uint32_t* from = o.data(a);
+      uint32_t* to = n.data(b);
+      for (uint32_t w = 0; w < a.words; ++w) {
+        if (a.pooled || o.set_by_app[a.offset + w]) {
+          to[w] = from[w];
+          n.set_by_app[b.offset + w] = 1;
+        } else {
+          default_changed = default_changed || to[w] != from[w];
+        }
+      }
+      n.touch(b);
+    }
+    if (default_changed) defaults_changed.push_back(o.model->parameters[i].name);
   }
   n.draw.generation = o.draw.generation + 1;
   n.translate.assign(n.draw.generation, {});
@@ -319,6 +343,7 @@ void remap(const ParameterStore& old_store, ParameterStore& new_store) {
   n.translate[o.draw.generation] = map;
   for (size_t k = 0; k < map.size(); ++k)
     if (map[k] == kNoIndex) n.removed[static_cast<uint64_t>(o.draw.generation) << 32 | k] = o.path(static_cast<uint32_t>(k));
+  return defaults_changed;
 }
 
 }  // namespace fx

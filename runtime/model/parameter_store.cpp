@@ -77,6 +77,8 @@ ParameterStore::ParameterStore(const EffectModel& model, ParameterPool* pool, Di
     s.classify(s.nodes[i]);
     if (s.nodes[i].words) s.expand(i);
   }
+  s.set_by_app.assign(s.words.size(), 0);
+  s.string_set_by_app.assign(s.strings.size(), 0);
 }
 
 ParameterStore::ParameterStore(ParameterStore&& other) noexcept
@@ -169,6 +171,7 @@ ParamStatus ParameterStore::set(Param p, std::span<const int32_t> v) {
   if (v.size() != n.words)
     return fail(ParamStatus::size_mismatch, s.describe(i) + " takes " + std::to_string(n.words) + " integers, got " +
                                                 std::to_string(v.size()));
+  s.mark_set(n, true);
   uint32_t* d = s.data(n);
   bool changed = false;
   for (uint32_t w = 0; w < n.words; ++w) {
@@ -220,6 +223,7 @@ ParamStatus ParameterStore::set_string(Param p, std::string_view v) {
   if (ParamStatus st = s.resolve(p, i); !st) return st;
   if (s.nodes[i].string_slot == kNoIndex) return fail(ParamStatus::type_mismatch, s.describe(i) + " is not a string");
   s.strings[s.nodes[i].string_slot] = std::string(v);
+  s.string_set_by_app[s.nodes[i].string_slot] = 1;
   return {};
 }
 
@@ -293,8 +297,13 @@ ParamStatus ParameterStore::reset(Param p) {
   const Parameter& top = s.model->parameters[n.top];
   if (n.string_slot != kNoIndex) {
     s.strings[n.string_slot] = top.default_value ? top.default_value->text : "";
+    s.string_set_by_app[n.string_slot] = 0;
     return {};
   }
+  // The default again, and followed from now on: a hot matrix is made only for a matrix the
+  // application sets (Impl::refresh), so this one stops being hot until it is set again.
+  s.mark_set(n, false);
+  s.draw.hot[n.top] = {};
   const uint32_t top_offset = s.nodes[n.top].offset;
   std::vector<BaseType> b;
   flatten_bases(top.type, b);

@@ -161,6 +161,12 @@ struct ParameterStore::Impl {
   mutable std::vector<uint32_t> words;  // mutable: sync() refreshes the stale words of a hot matrix
   std::vector<BaseType> bases;       // per component, see Node::base_offset
   std::vector<std::string> strings;
+  // Per word of `words` and per string slot: 1 when a setter wrote it (the application's
+  // value), 0 while it holds the effect's default (creation, reset(), a reload's new
+  // default). remap() carries the marked ones and lets the others take the new defaults.
+  // Pooled words are not marked: the pool's values are the application's.
+  std::vector<uint8_t> set_by_app;
+  std::vector<uint8_t> string_set_by_app;
   // The per-object state (the header's DrawState): `blocks`' DrawBlocks (parallel), the hot
   // matrices, versions, change log and generation. Mutable: sync() clears a stale flag.
   mutable DrawState draw;
@@ -254,10 +260,16 @@ struct ParameterStore::Impl {
     return ++draw.versions[top];
   }
 
+  // Marks node `n`'s words as the application's (set_by_app), or as defaults again. A node
+  // without words (a texture) may sit past the end of an empty set_by_app.
+  void mark_set(const Node& n, bool by_app) {
+    if (!n.pooled && n.words) std::memset(set_by_app.data() + n.offset, by_app ? 1 : 0, n.words);
+  }
   // Copies n.words floats into node `n` (all float-like: held as float bits, half and
-  // double included) and dirties its blocks only when a bit changed (the same matrix set
-  // every frame leaves them clean).
+  // double included) as the application's value and dirties its blocks only when a bit
+  // changed (the same matrix set every frame leaves them clean).
   void store_floats(const Node& n, const float* v) {
+    mark_set(n, true);
     if (copy_words(data(n), v, n.words)) touch(n);
   }
   // store_floats for one 4x4 matrix given column by column.

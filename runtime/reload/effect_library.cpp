@@ -290,7 +290,7 @@ struct EffectLibrary::Impl {
       std::shared_ptr<EffectVersion> next(done.tx.version.release());
       ev.diagnostics = done.tx.diagnostics;
       if (slot.live) {
-        if (slot.live->params && next->params) remap(*slot.live->params, *next->params);
+        if (slot.live->params && next->params) ev.defaults_changed = remap(*slot.live->params, *next->params);
         if (slot.live->model && next->model)
           report_removed_parameters(*slot.live->model, *next->model, slot.path, ev.diagnostics);
         retiring.push_back({frame, std::move(slot.live)});

@@ -38,6 +38,7 @@ nlohmann::json event_json(const fx::ReloadEvent& ev) {
           {"file", ev.file},
           {"changed", ev.changed},
           {"recompiled", ev.recompiled},
+          {"defaults_changed", ev.defaults_changed},
           {"ms",
            {{"detect", ev.ms.detect},
             {"parse", ev.ms.parse},
@@ -51,15 +52,22 @@ nlohmann::json event_json(const fx::ReloadEvent& ev) {
           {"diagnostics", std::move(diags)}};
 }
 
+// "a, b, c".
+std::string comma_list(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : ", ") + item;
+  return out;
+}
+
 void print_event(const fx::ReloadEvent& ev, bool json) {
   if (json) {
     std::printf("%s\n", json_text(event_json(ev), -1).c_str());
   } else {
-    std::string changed;
-    for (const std::string& f : ev.changed) changed += (changed.empty() ? "" : ", ") + f;
     std::printf("%s %s (%s): %zu recompiled, %.1f ms (detect %.1f, parse %.1f, compile %.1f, pipeline %.1f)\n",
-                fx::to_string(ev.kind), ev.file.c_str(), changed.c_str(), ev.recompiled.size(), ev.ms.total,
-                ev.ms.detect, ev.ms.parse, ev.ms.compile, ev.ms.pipeline);
+                fx::to_string(ev.kind), ev.file.c_str(), comma_list(ev.changed).c_str(), ev.recompiled.size(),
+                ev.ms.total, ev.ms.detect, ev.ms.parse, ev.ms.compile, ev.ms.pipeline);
+    if (!ev.defaults_changed.empty())
+      std::printf("defaults changed: %s\n", comma_list(ev.defaults_changed).c_str());
     if (!ev.diagnostics.empty() && ev.sources) std::fputs(fx::render_text(ev.diagnostics, *ev.sources).c_str(), stdout);
   }
   std::fflush(stdout);

@@ -110,7 +110,8 @@ class ParameterStore {
   // Setters: the value's shape must match the handle's type exactly (a float3 takes 3
   // floats; an array of 4 float4 takes 16; int/bool handles take ints/bools; float handles
   // take floats). bool and int handles also accept the other integer-like kind. A set that
-  // changes no bit leaves the parameter's blocks clean.
+  // changes no bit leaves the parameter's blocks clean. What a setter writes is the
+  // application's value: remap() keeps it where it would otherwise take a new default.
   ParamStatus set(Param p, float v);
   ParamStatus set(Param p, int32_t v);
   ParamStatus set(Param p, bool v);
@@ -132,7 +133,8 @@ class ParameterStore {
   ParamStatus get(Param p, std::span<int32_t> out) const;
   ParamStatus get_matrix(Param p, std::span<float> out, HostMatrixOrder order = HostMatrixOrder::row_major) const;
   ParamStatus get_string(Param p, std::string& out) const;
-  // Restores the default of `p` (zero when it has none).
+  // Restores the default of `p` (zero when it has none); from then on remap() gives `p` the
+  // new file's default, as for a parameter never set.
   ParamStatus reset(Param p);
 
   // Uniform blocks (ids chosen by the caller, e.g. reflection's block index). A member
@@ -168,7 +170,7 @@ class ParameterStore {
   uint32_t generation() const;
 
  private:
-  friend void remap(const ParameterStore& old_store, ParameterStore& new_store);
+  friend std::vector<std::string> remap(const ParameterStore& old_store, ParameterStore& new_store);
   // set_matrix's per-object path, inline: a current handle of a float4x4 with a hot block
   // (below), 16 floats. True when it stored the value (nothing to report).
   bool store_hot(Param p, std::span<const float> v, HostMatrixOrder order);
@@ -196,7 +198,9 @@ class ParameterStore {
   // A per-object matrix (World, WorldViewProjection): when a block re-packs a whole 4x4
   // float group, that block becomes its parameter's hot block, and set_matrix writes the
   // next value straight into the block's bytes, so drawing object after object with one
-  // pass re-packs nothing. Other blocks re-pack from the change log. The pointers are into
+  // pass re-packs nothing. Only a matrix the application has set becomes hot, so store_hot
+  // writes only the application's values and records nothing for remap(); reset() ends it.
+  // Other blocks re-pack from the change log. The pointers are into
   // Impl's blocks, so bind_layout, which may move them, clears every HotMatrix; the next
   // re-pack makes one again.
   struct HotMatrix {
@@ -253,10 +257,14 @@ inline bool ParameterStore::store_hot(Param p, std::span<const float> v, HostMat
   return true;
 }
 
-// After a reload: copies every value of `old_store` whose parameter still exists in
-// `new_store` with the same name and type, and makes handles issued by `old_store`
-// (any generation) valid on `new_store`; handles of removed parameters become inert
-// (calls return ParamStatus::removed naming the parameter).
-void remap(const ParameterStore& old_store, ParameterStore& new_store);
+// After a reload: for every parameter of `old_store` that still exists in `new_store` with
+// the same name and type, copies the values the application set (through a setter, since
+// creation or the last reset()) and leaves the rest at `new_store`'s defaults, the edited
+// file's. Makes handles issued by `old_store` (any generation) valid on `new_store`;
+// handles of removed parameters become inert (calls return ParamStatus::removed naming the
+// parameter). Returns the names of the top-level parameters whose value changed because
+// the new default differs from the old value. Shared (pooled) parameters keep the pool's
+// value and are never listed.
+std::vector<std::string> remap(const ParameterStore& old_store, ParameterStore& new_store);
 
 }  // namespace fx

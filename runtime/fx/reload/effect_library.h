@@ -91,6 +91,8 @@ class EffectHandle {
   Param param(std::string_view name_or_semantic) const;
   // The live parameter values (nullptr when !ok()): set/get through it. Handles from
   // earlier versions stay valid (translated); removed parameters' handles are inert.
+  // Values set through it survive reloads; the others take the edited file's defaults
+  // (ReloadEvent::defaults_changed, docs/parameters.md).
   ParameterStore* params() const;
 
   // Chooses a technique (index into version()->model.techniques, or kNoTechnique) and

@@ -34,6 +34,9 @@ struct ReloadEvent {
   std::string file;                    // the effect file, as given to load()
   std::vector<std::string> changed;    // the files whose edits caused this (effect or includes)
   std::vector<std::string> recompiled; // "technique.pass.stage" units glslang compiled afresh
+  // reloaded: parameters the application never set (or reset) whose value is now the
+  // edited file's different default (remap's result).
+  std::vector<std::string> defaults_changed;
   ReloadTimings ms;
   // Errors (failed), warnings (reloaded: removed parameters, technique changes, ...).
   std::vector<Diagnostic> diagnostics;
