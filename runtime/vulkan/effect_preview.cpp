@@ -94,15 +94,7 @@ EffectPreview::~EffectPreview() {
   if (ctx_) ctx_->wait_idle();
 }
 
-RenderingFormats EffectPreview::formats() const {
-  RenderingFormats f;
-  const AttachmentFormats a = target_->formats();
-  f.color[0] = a.color;
-  f.color_count = 1;
-  f.depth = a.depth;
-  f.stencil = a.stencil;
-  return f;
-}
+RenderingFormats EffectPreview::formats() const { return target_->formats(); }
 
 EffectBindingDesc EffectPreview::binding_desc() const {
   EffectBindingDesc d;
