@@ -100,10 +100,10 @@ EffectBindingDesc EffectPreview::binding_desc() const {
   EffectBindingDesc d;
   d.target.color_attachment_count = 1;
   d.target.depth_bits = depth_bits(target_->formats().depth);
-  // render() flips Y with a negative viewport height, but the meshes are right-handed
-  // (counter-clockwise from outside): the mirror of D3D's clockwise front faces, which is
-  // what the mapping does for a projection flip.
-  d.target.negative_viewport_height = false;
+  // render() flips Y with a negative viewport height; the meshes are counter-clockwise
+  // from outside (fx/mesh.h).
+  d.target.negative_viewport_height = true;
+  d.target.mesh_front_face = FrontFace::counter_clockwise;
   return d;
 }
 
