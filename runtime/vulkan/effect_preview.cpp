@@ -15,31 +15,16 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-struct MeshAttribute {
-  const char* semantic;
-  VkFormat format;
-  uint32_t offset;
-};
-
-// fx::Vertex by semantic (mesh_vertex_layout(), in Vulkan formats).
-const MeshAttribute kMeshAttributes[] = {
-    {"POSITION", VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
-    {"NORMAL", VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
-    {"TANGENT", VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
-    {"BINORMAL", VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, binormal)},
-    {"TEXCOORD", VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
-};
-
-// The mesh attribute a GLSL input name suggests ("inTexCoord" -> TEXCOORD), or nullptr.
-const MeshAttribute* guess_attribute(std::string_view name) {
+// The mesh semantic a GLSL input name suggests ("inTexCoord" -> TEXCOORD), or empty.
+std::string_view guess_semantic(std::string_view name) {
   const std::string n = lower(name);
   auto has = [&](const char* s) { return n.find(s) != std::string::npos; };
-  if (has("binormal") || has("bitangent")) return &kMeshAttributes[3];
-  if (has("tangent")) return &kMeshAttributes[2];
-  if (has("normal")) return &kMeshAttributes[1];
-  if (has("pos")) return &kMeshAttributes[0];
-  if (has("texcoord") || has("uv")) return &kMeshAttributes[4];
-  return nullptr;
+  if (has("binormal") || has("bitangent")) return "BINORMAL";
+  if (has("tangent")) return "TANGENT";
+  if (has("normal")) return "NORMAL";
+  if (has("pos")) return "POSITION";
+  if (has("texcoord") || has("uv")) return "TEXCOORD";
+  return {};
 }
 
 uint32_t depth_bits(VkFormat format) {
@@ -112,17 +97,17 @@ SceneView EffectPreview::scene() const {
 }
 
 VertexLayout EffectPreview::vertex_layout(std::span<const InterfaceVariable> inputs) const {
-  VertexLayout layout;
-  layout.bindings = {{0, uint32_t(sizeof(Vertex)), VK_VERTEX_INPUT_RATE_VERTEX},
-                     {1, 0, VK_VERTEX_INPUT_RATE_VERTEX}};
-  for (const MeshAttribute& a : kMeshAttributes) layout.attributes.push_back({a.semantic, a.format, a.offset, 0});
+  VertexLayout layout = to_vertex_layout(mesh_vertex_layout(), 0);
+  const std::vector<VertexAttribute> mesh = layout.attributes;
+  layout.bindings.push_back({1, 0, VK_VERTEX_INPUT_RATE_VERTEX});
   for (const InterfaceVariable& in : inputs) {
     if (in.semantic.empty()) {
       bool listed = false;
       for (const VertexAttribute& a : layout.attributes) listed = listed || a.semantic == in.name;
       if (listed) continue;
-      const MeshAttribute* a = guess_attribute(in.name);
-      if (a) layout.attributes.push_back({in.name, a->format, a->offset, 0});
+      const std::string_view guess = guess_semantic(in.name);
+      auto a = std::find_if(mesh.begin(), mesh.end(), [&](const VertexAttribute& m) { return m.semantic == guess; });
+      if (a != mesh.end()) layout.attributes.push_back({in.name, a->format, a->offset, 0});
       else layout.attributes.push_back({in.name, zero_stream_format(in), 0, 1});
       continue;
     }

@@ -10,6 +10,10 @@
 #include "fx/compile/shader_reflection.h"
 #include "fx/diagnostic.h"
 
+namespace fx {
+struct MeshVertexLayout;  // fx/mesh.h
+}
+
 namespace fx::vk {
 
 // One attribute the application's vertex buffers provide.
@@ -32,6 +36,12 @@ struct VertexLayout {
   std::vector<VertexAttribute> attributes;
   std::vector<VertexBinding> bindings;
 };
+
+// The Vulkan layout of a mesh library layout (fx::mesh_vertex_layout(), or one an
+// application describes the same way): one binding of the layout's stride at `binding`,
+// per attribute its semantic with the index appended when not 0 ("TEXCOORD", "TEXCOORD1"),
+// float2/3/4 as R32G32(B32(A32))_SFLOAT, and its offset.
+VertexLayout to_vertex_layout(const MeshVertexLayout& mesh, uint32_t binding = 0);
 
 // A layout matched to one vertex shader: the exact Vulkan vertex input state.
 struct VertexInput {
