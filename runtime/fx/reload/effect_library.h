@@ -93,12 +93,12 @@ class EffectHandle {
   // earlier versions stay valid (translated); removed parameters' handles are inert.
   ParameterStore* params() const;
 
-  // Chooses a technique (index into version()->model.techniques, or kNoTechnique) and
+  // Chooses a technique (index into version()->model.techniques, or kNoIndex) and
   // remembers the criteria: every reload re-selects with them.
   uint32_t select(const SelectionCriteria& criteria) const;
   // Selects with default criteria (every scheme, no distance), remembered likewise.
   uint32_t select() const;
-  // The last selected technique (re-selected after reloads); kNoTechnique before select().
+  // The last selected technique (re-selected after reloads); kNoIndex before select().
   uint32_t technique() const;
   std::string technique_name() const;
 
