@@ -1,13 +1,7 @@
 // The application-facing facade: load effects, set parameters through handles that
 // survive reloads, select techniques, and call poll() once per frame to swap in the
 // versions a background worker rebuilt after the files (or their includes) were edited.
-//
-//   fx::EffectLibrary lib({.include_dirs = {"effects"}, .backend = &binding});
-//   fx::EffectHandle e = lib.load("effects/strand_aniso.fx");
-//   fx::Param light = e.param("LightDir");                 // fx/model/parameter_store.h
-//   e.params()->set(light, std::span<const float>(dir));
-//   uint32_t t = e.select({.distance = 12.f});
-//   for (;;) { draw(e.version(), t); for (auto& ev : lib.poll(frame++)) log(ev); }
+// Usage (load, param, set, select, draw, poll per frame): docs/hot-reload.md.
 //
 // Threading: load(), poll(), unload() and every EffectHandle call belong to one thread
 // (the render thread). The library runs one worker thread for watching and rebuilding.
