@@ -59,7 +59,7 @@ std::vector<Object> objects() {
 
 // The baseline: every rule evaluated from the annotation map for every object.
 uint32_t naive_select(const std::vector<fx::TechniqueCandidate>& list, const fx::SelectionCriteria& c) {
-  uint32_t best = fx::no_technique;
+  uint32_t best = fx::kNoIndex;
   float best_error = 0.f;
   for (uint32_t i = 0; i < list.size(); ++i) {
     const fx::AnnotationMap& a = list[i].annotations;
@@ -75,7 +75,7 @@ uint32_t naive_select(const std::vector<fx::TechniqueCandidate>& list, const fx:
     float error = a.number("MaxError").value_or(0.f);
     float cost = a.number("CostMs").value_or(0.f) + a.number("CostNsPerPixel").value_or(0.f) * c.pixels * 1e-6f;
     if (error > c.max_error || cost > c.cost_budget_ms) continue;
-    if (best == fx::no_technique || error < best_error) {
+    if (best == fx::kNoIndex || error < best_error) {
       best = i;
       best_error = error;
     }
@@ -174,7 +174,7 @@ int main(int argc, char** argv) {
                             .scheme = "quality", .cost_budget_ms = 0.5f};
     uint32_t fast = plan.select(plan.query(c)), naive = naive_select(list, c);
     // The naive baseline has no fallback chains; compare only where it found something.
-    if (naive != fx::no_technique && fast != naive) {
+    if (naive != fx::kNoIndex && fast != naive) {
       std::fprintf(stderr, "plan and baseline disagree at distance %g\n", double(o.distance));
       return 1;
     }

@@ -48,7 +48,7 @@ uint32_t format_size(VertexFormat format);
 const char* to_string(VertexFormat format);
 
 // One attribute of an interleaved vertex, named by its D3D semantic ("TEXCOORD", 0).
-struct VertexAttribute {
+struct MeshVertexAttribute {
   std::string_view semantic;  // upper case, without the index: POSITION, NORMAL, ...
   uint32_t semantic_index = 0;
   VertexFormat format = VertexFormat::float3;
@@ -56,18 +56,18 @@ struct VertexAttribute {
 };
 
 // The attributes of an interleaved vertex buffer and its stride.
-struct VertexLayout {
+struct MeshVertexLayout {
   uint32_t stride = 0;
-  std::vector<VertexAttribute> attributes;
+  std::vector<MeshVertexAttribute> attributes;
 
   // The attribute for a shader input semantic such as "TEXCOORD0", "texcoord" (index 0),
   // "NORMAL" or "POSITION0"; case-insensitive. nullptr when the layout has none.
-  const VertexAttribute* find(std::string_view semantic) const;
+  const MeshVertexAttribute* find(std::string_view semantic) const;
 };
 
 // Layout of `Vertex`: POSITION0 float3, NORMAL0 float3, TANGENT0 float4, BINORMAL0 float3,
 // TEXCOORD0 float2.
-const VertexLayout& mesh_vertex_layout();
+const MeshVertexLayout& mesh_vertex_layout();
 
 // Axis-aligned bounds and the bounding sphere around their centre (for framing a camera).
 struct MeshBounds {

@@ -30,8 +30,8 @@ const char* to_string(VertexFormat format) {
   return "?";
 }
 
-const VertexLayout& mesh_vertex_layout() {
-  static const VertexLayout layout{
+const MeshVertexLayout& mesh_vertex_layout() {
+  static const MeshVertexLayout layout{
       uint32_t(sizeof(Vertex)),
       {
           {"POSITION", 0, VertexFormat::float3, uint32_t(offsetof(Vertex, position))},
@@ -43,7 +43,7 @@ const VertexLayout& mesh_vertex_layout() {
   return layout;
 }
 
-const VertexAttribute* VertexLayout::find(std::string_view semantic) const {
+const MeshVertexAttribute* MeshVertexLayout::find(std::string_view semantic) const {
   // Split "TEXCOORD12" into name and index; HLSL semantics without digits mean index 0.
   size_t digits = semantic.size();
   while (digits > 0 && std::isdigit(static_cast<unsigned char>(semantic[digits - 1]))) --digits;
@@ -59,7 +59,7 @@ const VertexAttribute* VertexLayout::find(std::string_view semantic) const {
                     std::toupper(static_cast<unsigned char>(y));
            });
   };
-  for (const VertexAttribute& a : attributes)
+  for (const MeshVertexAttribute& a : attributes)
     if (a.semantic_index == index && same(a.semantic, name)) return &a;
   return nullptr;
 }

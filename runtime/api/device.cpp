@@ -59,10 +59,9 @@ fx::vk::PassTargetInfo pass_target(const Target& target) {
   info.color_attachment_count = uint32_t(target.formats.color.size());
   info.samples = target.formats.samples;
   info.depth_bits = depth_bits(target.formats.depth);
-  // The effect's winding is Direct3D's; it is mirrored when exactly one of a projection
-  // flip and counter-clockwise meshes holds.
-  const bool mirrored = (target.y_flip == YFlip::projection) != (target.front_faces == Winding::counter_clockwise);
-  info.negative_viewport_height = !mirrored;
+  info.negative_viewport_height = target.y_flip == YFlip::negative_viewport;
+  info.mesh_front_face = target.front_faces == Winding::counter_clockwise ? fx::FrontFace::counter_clockwise
+                                                                          : fx::FrontFace::clockwise;
   return info;
 }
 

@@ -3,6 +3,7 @@
 
 #include "fx/mesh.h"
 #include "fx/vulkan/buffer.h"
+#include "fx/vulkan/vertex_layout.h"
 #include "api_state.h"
 
 namespace fxkit {
@@ -45,16 +46,7 @@ std::unique_ptr<Mesh> Mesh::create(Device& device, const std::string& shape, std
 }
 
 const VertexLayout& Mesh::vertex_layout() {
-  static const VertexLayout layout = [] {
-    VertexLayout l;
-    for (const fx::VertexAttribute& a : fx::mesh_vertex_layout().attributes)
-      l.attributes.push_back({std::string(a.semantic) + std::to_string(a.semantic_index),
-                              a.format == fx::VertexFormat::float2   ? VK_FORMAT_R32G32_SFLOAT
-                              : a.format == fx::VertexFormat::float3 ? VK_FORMAT_R32G32B32_SFLOAT
-                                                                     : VK_FORMAT_R32G32B32A32_SFLOAT, a.offset, 0});
-    l.bindings.push_back({0, fx::mesh_vertex_layout().stride, VK_VERTEX_INPUT_RATE_VERTEX});
-    return l;
-  }();
+  static const VertexLayout layout = fx::vk::to_vertex_layout(fx::mesh_vertex_layout());
   return layout;
 }
 

@@ -33,13 +33,13 @@ struct EffectSlot {
   std::shared_ptr<const SourceManager> diagnostic_sources;
   bool has_criteria = false;
   StoredCriteria criteria;
-  uint32_t technique = kNoTechnique;
-  uint32_t last = kNoTechnique;  // selection memory (hysteresis)
+  uint32_t technique = kNoIndex;
+  uint32_t last = kNoIndex;  // selection memory (hysteresis)
   uint64_t plan_key = 0;
 
   void reselect() {
     if (!has_criteria) return;
-    technique = techniques ? techniques->select(criteria.get(), last, plan_key) : kNoTechnique;
+    technique = techniques ? techniques->select(criteria.get(), last, plan_key) : kNoIndex;
   }
 };
 }  // namespace detail
@@ -302,7 +302,7 @@ struct EffectLibrary::Impl {
       slot.diagnostic_sources = done.tx.sources;
     }
     ev.serial = slot.live ? slot.live->serial : 0;
-    if (slot.techniques && slot.technique != kNoTechnique) ev.technique = slot.techniques->name(slot.technique);
+    if (slot.techniques && slot.technique != kNoIndex) ev.technique = slot.techniques->name(slot.technique);
     ev.ms.total = std::max(0.0, ms_between(done.detected, Clock::now()));
     return ev;
   }
@@ -336,7 +336,7 @@ EffectLibrary::~EffectLibrary() {
   for (auto& [id, slot] : impl_->slots) {
     slot->live.reset();
     slot->techniques.reset();
-    slot->technique = kNoTechnique;
+    slot->technique = kNoIndex;
   }
   impl_->release(0, true);
 }
@@ -388,7 +388,7 @@ void EffectLibrary::unload(const EffectHandle& effect) {
   if (slot.live) d.retiring.push_back({d.frame, std::move(slot.live)});
   slot.live.reset();
   slot.techniques.reset();
-  slot.technique = kNoTechnique;
+  slot.technique = kNoIndex;
   d.by_key.erase(slot.key);
   d.slots.erase(it);
 }
@@ -482,7 +482,7 @@ Param EffectHandle::param(std::string_view name_or_semantic) const {
 ParameterStore* EffectHandle::params() const { return ok() ? slot_->live->params.get() : nullptr; }
 
 uint32_t EffectHandle::select(const SelectionCriteria& criteria) const {
-  if (!slot_) return kNoTechnique;
+  if (!slot_) return kNoIndex;
   slot_->criteria = StoredCriteria(criteria);
   slot_->has_criteria = true;
   slot_->reselect();
@@ -490,16 +490,16 @@ uint32_t EffectHandle::select(const SelectionCriteria& criteria) const {
 }
 
 uint32_t EffectHandle::select() const {
-  if (!slot_) return kNoTechnique;
+  if (!slot_) return kNoIndex;
   slot_->criteria = StoredCriteria();
   slot_->has_criteria = true;
   slot_->reselect();
   return slot_->technique;
 }
 
-uint32_t EffectHandle::technique() const { return slot_ ? slot_->technique : kNoTechnique; }
+uint32_t EffectHandle::technique() const { return slot_ ? slot_->technique : kNoIndex; }
 std::string EffectHandle::technique_name() const {
-  if (!slot_ || !slot_->techniques || slot_->technique == kNoTechnique) return {};
+  if (!slot_ || !slot_->techniques || slot_->technique == kNoIndex) return {};
   return std::string(slot_->techniques->name(slot_->technique));
 }
 

@@ -35,10 +35,10 @@ void merge(std::vector<TechniqueFacts>& facts, const ProgramOutcome& outcome) {
   for (const ProgramOutcome::Rejection& r : outcome.rejections) {
     uint32_t i = r.technique_index;
     if (i >= facts.size() || facts[i].name != r.technique) {
-      i = kNoTechnique;  // units name unnamed techniques "technique<i>": match by name
+      i = kNoIndex;  // units name unnamed techniques "technique<i>": match by name
       for (uint32_t j = 0; j < facts.size(); ++j)
         if (facts[j].name == r.technique) i = j;
-      if (i == kNoTechnique) continue;
+      if (i == kNoIndex) continue;
     }
     facts[i].valid = false;
     facts[i].rejections.push_back(r.reason);

@@ -7,8 +7,6 @@
 
 namespace fx {
 
-static_assert(kNoTechnique == no_technique);
-
 StoredCriteria::StoredCriteria() : criteria_(std::make_unique<SelectionCriteria>()) {}
 StoredCriteria::StoredCriteria(const SelectionCriteria& criteria)
     : scheme_(criteria.scheme), criteria_(std::make_unique<SelectionCriteria>(criteria)) {

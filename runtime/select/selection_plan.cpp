@@ -87,7 +87,7 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
       else bad_type("Priority", "an int");
     }
     e.valid = c.valid;
-    e.fallback = no_technique;
+    e.fallback = kNoIndex;
 
     std::vector<std::string> schemes;
     if (const AnnotationValue* s = a.find("Scheme")) {
@@ -128,7 +128,7 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
     std::string guess = closest_match(target, name_views);
     if (!guess.empty()) message += "; did you mean '" + guess + "'?";
     sink.error("unknown-fallback", from ? from->range : SourceRange{}, message);
-    return no_technique;
+    return kNoIndex;
   };
   for (size_t i = 0; i < n; ++i) {
     const AnnotationValue* f = candidates[i].annotations.find("Fallback");
@@ -147,19 +147,19 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
   for (size_t start = 0; start < n; ++start) {
     std::vector<uint32_t> walk;
     uint32_t i = uint32_t(start);
-    while (i != no_technique && colour[i] == 0) {
+    while (i != kNoIndex && colour[i] == 0) {
       colour[i] = 1;
       walk.push_back(i);
       uint32_t next = plan.entries_[i].fallback;
-      if (next != no_technique && colour[next] == 1) {
+      if (next != kNoIndex && colour[next] == 1) {
         std::string path;
         auto from = std::find(walk.begin(), walk.end(), next);
         for (auto it = from; it != walk.end(); ++it) path += "'" + plan.names_[*it] + "' -> ";
         path += "'" + plan.names_[next] + "'";
         sink.error("fallback-cycle", candidates[i].range,
                    "fallback cycle " + path + "; the link from '" + plan.names_[i] + "' is ignored");
-        plan.entries_[i].fallback = no_technique;
-        next = no_technique;
+        plan.entries_[i].fallback = kNoIndex;
+        next = kNoIndex;
       }
       i = next;
     }
@@ -218,20 +218,20 @@ uint32_t SelectionPlan::first_survivor(const SelectionQuery& q, uint32_t last) c
   // Without an error budget the best-ranked survivor wins; with one, "good enough" is
   // decided, so the cheapest survivor wins (ties, and unmeasured costs, keep rank order).
   const bool cheapest = has_error_limit(q);
-  uint32_t best = no_technique;
+  uint32_t best = kNoIndex;
   float best_cost = kInf;
   for (uint32_t i : order_) {
     if (failures(entries_[i], q, i == last) != 0) continue;
     if (!cheapest) return i;
     float c = entries_[i].cost_known ? cost_ms(entries_[i], q) : kInf;  // unmeasured: last
-    if (best == no_technique || c < best_cost) best = i, best_cost = c;
+    if (best == kNoIndex || c < best_cost) best = i, best_cost = c;
   }
   return best;
 }
 
 uint32_t SelectionPlan::choose(const SelectionQuery& q, uint32_t last, SelectionRoute* route,
                                uint32_t* chain_start) const {
-  if (uint32_t i = first_survivor(q, last); i != no_technique) {
+  if (uint32_t i = first_survivor(q, last); i != kNoIndex) {
     *route = SelectionRoute::direct;
     return i;
   }
@@ -241,7 +241,7 @@ uint32_t SelectionPlan::choose(const SelectionQuery& q, uint32_t last, Selection
   for (uint32_t i : order_) {
     if (failures(entries_[i], q, i == last) & kIntent) continue;
     uint32_t t = entries_[i].fallback;
-    for (size_t steps = 0; t != no_technique && steps < entries_.size(); ++steps) {
+    for (size_t steps = 0; t != kNoIndex && steps < entries_.size(); ++steps) {
       if (entries_[t].valid) {
         *route = SelectionRoute::fallback_chain;
         *chain_start = i;
@@ -250,18 +250,18 @@ uint32_t SelectionPlan::choose(const SelectionQuery& q, uint32_t last, Selection
       t = entries_[t].fallback;
     }
   }
-  if (effect_fallback_ != no_technique && entries_[effect_fallback_].valid) {
+  if (effect_fallback_ != kNoIndex && entries_[effect_fallback_].valid) {
     *route = SelectionRoute::effect_fallback;
     return effect_fallback_;
   }
   *route = SelectionRoute::none;
-  return no_technique;
+  return kNoIndex;
 }
 
 uint32_t SelectionPlan::select(const SelectionQuery& q, SelectionState& state) const {
-  uint32_t last = state.plan_key == key_ ? state.last : no_technique;
+  uint32_t last = state.plan_key == key_ ? state.last : kNoIndex;
   SelectionRoute route;
-  uint32_t start = no_technique;
+  uint32_t start = kNoIndex;
   uint32_t chosen = choose(q, last, &route, &start);
   state.last = chosen;
   state.plan_key = key_;
@@ -270,8 +270,8 @@ uint32_t SelectionPlan::select(const SelectionQuery& q, SelectionState& state) c
 
 uint32_t SelectionPlan::select(const SelectionQuery& q) const {
   SelectionRoute route;
-  uint32_t start = no_technique;
-  return choose(q, no_technique, &route, &start);
+  uint32_t start = kNoIndex;
+  return choose(q, kNoIndex, &route, &start);
 }
 
 std::string_view SelectionPlan::name(uint32_t index) const {

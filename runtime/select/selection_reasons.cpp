@@ -72,7 +72,7 @@ std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool 
   }
   if (f & fail_cost)
     return "cost " + millis(cost_ms(e, q)) + " ms over budget " + millis(q.cost_budget_ms) + " ms";
-  if (chosen == no_technique) return "passed";
+  if (chosen == kNoIndex) return "passed";
   // It passed every filter: it lost on rank to the chosen technique.
   const Entry& c = entries_[chosen];
   std::string why;
@@ -91,14 +91,14 @@ std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool 
 
 SelectionResult SelectionPlan::explain(const SelectionQuery& q, const SelectionState* state) const {
   SelectionResult result;
-  uint32_t last = state && state->plan_key == key_ ? state->last : no_technique;
-  uint32_t start = no_technique;
+  uint32_t last = state && state->plan_key == key_ ? state->last : kNoIndex;
+  uint32_t start = kNoIndex;
   result.chosen = choose(q, last, &result.route, &start);
-  if (result.chosen != no_technique && result.chosen == last &&
+  if (result.chosen != kNoIndex && result.chosen == last &&
       failures(entries_[last], q, false) != 0)
     result.kept_by_hysteresis = true;
   if (result.route == SelectionRoute::fallback_chain) {
-    for (uint32_t t = start; t != no_technique && result.fallback_path.size() <= entries_.size();
+    for (uint32_t t = start; t != kNoIndex && result.fallback_path.size() <= entries_.size();
          t = entries_[t].fallback) {
       result.fallback_path.push_back(t);
       if (t == result.chosen) break;

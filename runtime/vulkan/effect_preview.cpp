@@ -15,31 +15,16 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-struct MeshAttribute {
-  const char* semantic;
-  VkFormat format;
-  uint32_t offset;
-};
-
-// fx::Vertex by semantic (mesh_vertex_layout(), in Vulkan formats).
-const MeshAttribute kMeshAttributes[] = {
-    {"POSITION", VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
-    {"NORMAL", VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
-    {"TANGENT", VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
-    {"BINORMAL", VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, binormal)},
-    {"TEXCOORD", VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
-};
-
-// The mesh attribute a GLSL input name suggests ("inTexCoord" -> TEXCOORD), or nullptr.
-const MeshAttribute* guess_attribute(std::string_view name) {
+// The mesh semantic a GLSL input name suggests ("inTexCoord" -> TEXCOORD), or empty.
+std::string_view guess_semantic(std::string_view name) {
   const std::string n = lower(name);
   auto has = [&](const char* s) { return n.find(s) != std::string::npos; };
-  if (has("binormal") || has("bitangent")) return &kMeshAttributes[3];
-  if (has("tangent")) return &kMeshAttributes[2];
-  if (has("normal")) return &kMeshAttributes[1];
-  if (has("pos")) return &kMeshAttributes[0];
-  if (has("texcoord") || has("uv")) return &kMeshAttributes[4];
-  return nullptr;
+  if (has("binormal") || has("bitangent")) return "BINORMAL";
+  if (has("tangent")) return "TANGENT";
+  if (has("normal")) return "NORMAL";
+  if (has("pos")) return "POSITION";
+  if (has("texcoord") || has("uv")) return "TEXCOORD";
+  return {};
 }
 
 uint32_t depth_bits(VkFormat format) {
@@ -83,24 +68,16 @@ EffectPreview::~EffectPreview() {
   if (ctx_) ctx_->wait_idle();
 }
 
-RenderingFormats EffectPreview::formats() const {
-  RenderingFormats f;
-  const AttachmentFormats a = target_->formats();
-  f.color[0] = a.color;
-  f.color_count = 1;
-  f.depth = a.depth;
-  f.stencil = a.stencil;
-  return f;
-}
+RenderingFormats EffectPreview::formats() const { return target_->formats(); }
 
 EffectBindingDesc EffectPreview::binding_desc() const {
   EffectBindingDesc d;
   d.target.color_attachment_count = 1;
   d.target.depth_bits = depth_bits(target_->formats().depth);
-  // render() flips Y with a negative viewport height, but the meshes are right-handed
-  // (counter-clockwise from outside): the mirror of D3D's clockwise front faces, which is
-  // what the mapping does for a projection flip.
-  d.target.negative_viewport_height = false;
+  // render() flips Y with a negative viewport height; the meshes are counter-clockwise
+  // from outside (fx/mesh.h).
+  d.target.negative_viewport_height = true;
+  d.target.mesh_front_face = FrontFace::counter_clockwise;
   return d;
 }
 
@@ -109,15 +86,18 @@ SceneView EffectPreview::scene() const {
 }
 
 VertexLayout EffectPreview::vertex_layout(std::span<const InterfaceVariable> inputs) const {
-  VertexLayout layout;
-  layout.bindings = {{0, uint32_t(sizeof(Vertex)), VK_VERTEX_INPUT_RATE_VERTEX}};
-  for (const MeshAttribute& a : kMeshAttributes) layout.attributes.push_back({a.semantic, a.format, a.offset, 0});
+  VertexLayout layout = to_vertex_layout(mesh_vertex_layout(), 0);
+  const std::vector<VertexAttribute> mesh = layout.attributes;
   // GLSL inputs (no semantics) read the mesh attribute their name suggests.
   for (const InterfaceVariable& in : inputs) {
-    const MeshAttribute* a = in.semantic.empty() ? guess_attribute(in.name) : nullptr;
+    if (!in.semantic.empty()) continue;
     const bool listed = std::any_of(layout.attributes.begin(), layout.attributes.end(),
                                     [&](const VertexAttribute& v) { return v.semantic == in.name; });
-    if (a && !listed) layout.attributes.push_back({in.name, a->format, a->offset, 0});
+    const std::string_view guess = guess_semantic(in.name);
+    auto a = std::find_if(mesh.begin(), mesh.end(), [&](const VertexAttribute& m) {
+      return !guess.empty() && canonical_semantic(m.semantic) == guess;
+    });
+    if (!listed && a != mesh.end()) layout.attributes.push_back({in.name, a->format, a->offset, 0});
   }
   return with_default_attributes(std::move(layout), inputs, 1);
 }

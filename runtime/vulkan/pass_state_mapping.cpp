@@ -14,7 +14,9 @@ std::optional<PipelineState> to_pipeline_state(const PassStateSummary& p,
   PipelineState s;
   s.cull_mode = uint32_t(p.cull);
   FrontFace front = p.front_face;
-  if (!target.negative_viewport_height)
+  const bool projection_flip = !target.negative_viewport_height;
+  const bool mirrored_meshes = target.mesh_front_face == FrontFace::counter_clockwise;
+  if (projection_flip != mirrored_meshes)
     front = front == FrontFace::clockwise ? FrontFace::counter_clockwise : FrontFace::clockwise;
   s.front_face = uint32_t(front);
   if (p.fill != FillMode::solid && !features.fill_mode_non_solid) {

@@ -153,12 +153,7 @@ VkPipeline PipelineCache::create_pipeline(const ShaderProgram& program, const Pi
   dyn.dynamicStateCount = dynamic.dynamic_state_list(dynamic_states, formats.color_count);
   dyn.pDynamicStates = dynamic_states;
 
-  auto rendering = structure<VkPipelineRenderingCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
-  rendering.colorAttachmentCount = formats.color_count;
-  rendering.pColorAttachmentFormats = formats.color;
-  rendering.depthAttachmentFormat = formats.depth;
-  rendering.stencilAttachmentFormat = formats.stencil;
+  const VkPipelineRenderingCreateInfo rendering = formats.pipeline_info();
 
   auto info = structure<VkGraphicsPipelineCreateInfo>(
       VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);

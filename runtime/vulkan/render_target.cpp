@@ -42,16 +42,6 @@ VkFormat choose_depth(const Context& ctx, DepthAttachment want) {
 
 }  // namespace
 
-VkPipelineRenderingCreateInfo AttachmentFormats::pipeline_info() const {
-  auto info =
-      structure<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
-  info.colorAttachmentCount = color == VK_FORMAT_UNDEFINED ? 0 : 1;
-  info.pColorAttachmentFormats = &color;
-  info.depthAttachmentFormat = depth;
-  info.stencilAttachmentFormat = stencil;
-  return info;
-}
-
 std::optional<RenderTarget> RenderTarget::create(const Context& ctx, const RenderTargetDesc& desc,
                                                  DiagnosticSink& sink) {
   if (!ctx.features().dynamic_rendering) {
@@ -108,9 +98,10 @@ std::optional<RenderTarget> RenderTarget::create(const Context& ctx, const Rende
   return rt;
 }
 
-AttachmentFormats RenderTarget::formats() const {
-  AttachmentFormats f;
-  f.color = color_.format();
+RenderingFormats RenderTarget::formats() const {
+  RenderingFormats f;
+  f.color[0] = color_.format();
+  f.color_count = 1;
   if (depth_) {
     f.depth = depth_.format();
     if (has_stencil(f.depth)) f.stencil = f.depth;

@@ -1,11 +1,36 @@
-// Vertex layout matching by semantic.
+// Vertex layout matching by semantic, and mesh library layouts in Vulkan formats.
 #include "fx/vulkan/vertex_layout.h"
 
 #include <xxhash.h>
 
 #include <algorithm>
 
+#include "fx/mesh.h"
+
 namespace fx::vk {
+namespace {
+
+VkFormat to_vk_format(VertexFormat format) {
+  switch (format) {
+    case VertexFormat::float2: return VK_FORMAT_R32G32_SFLOAT;
+    case VertexFormat::float3: return VK_FORMAT_R32G32B32_SFLOAT;
+    case VertexFormat::float4: return VK_FORMAT_R32G32B32A32_SFLOAT;
+  }
+  return VK_FORMAT_UNDEFINED;
+}
+
+}  // namespace
+
+VertexLayout to_vertex_layout(const MeshVertexLayout& mesh, uint32_t binding) {
+  VertexLayout layout;
+  layout.bindings = {{binding, mesh.stride, VK_VERTEX_INPUT_RATE_VERTEX}};
+  for (const MeshVertexAttribute& a : mesh.attributes) {
+    std::string semantic(a.semantic);
+    if (a.semantic_index != 0) semantic += std::to_string(a.semantic_index);
+    layout.attributes.push_back({std::move(semantic), to_vk_format(a.format), a.offset, binding});
+  }
+  return layout;
+}
 
 std::string canonical_semantic(std::string_view semantic) {
   std::string s(semantic);

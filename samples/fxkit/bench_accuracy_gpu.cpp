@@ -196,7 +196,7 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
     ds.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
     ds.dynamicStateCount = 2;
     ds.pDynamicStates = dyn;
-    fx::vk::AttachmentFormats formats = target->formats();
+    fx::vk::RenderingFormats formats = target->formats();
     VkPipelineRenderingCreateInfo rendering = formats.pipeline_info();
     VkGraphicsPipelineCreateInfo gp{};
     gp.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;

@@ -93,7 +93,7 @@ std::string pick(const std::string& effect, const std::string& caps_name, fx::Se
   fx::SelectionPlan plan = fx::SelectionPlan::build(list, sink);
   EXPECT_EQ(sink.diagnostics().size(), 0u) << effect << ": " << fx::render_text(sink.diagnostics(), l->sm);
   uint32_t chosen = plan.select(plan.query(criteria));
-  return chosen == fx::no_technique ? std::string() : std::string(plan.name(chosen));
+  return chosen == fx::kNoIndex ? std::string() : std::string(plan.name(chosen));
 }
 
 std::vector<std::string> effect_files() {
@@ -279,7 +279,7 @@ TEST(Effects, ErrorLimitPicksTheCheapestMeasuredTechnique) {
       q.max_error = *error(m);
       ++limits;
       const uint32_t chosen = plan.select(plan.query(q));
-      ASSERT_NE(chosen, fx::no_technique) << "limit " << q.max_error;
+      ASSERT_NE(chosen, fx::kNoIndex) << "limit " << q.max_error;
       ASSERT_TRUE(error(chosen)) << list[chosen].name << " has no measured error";
       EXPECT_LE(*error(chosen), q.max_error);
       for (uint32_t o = 0; o < list.size(); ++o) {

@@ -14,16 +14,16 @@ namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 
-TEST(VertexLayout, DescribesVertexBySemantic) {
-  const VertexLayout& layout = mesh_vertex_layout();
+TEST(MeshVertexLayout, DescribesVertexBySemantic) {
+  const MeshVertexLayout& layout = mesh_vertex_layout();
   EXPECT_EQ(layout.stride, sizeof(Vertex));
   ASSERT_EQ(layout.attributes.size(), 5u);
-  const VertexAttribute* uv = layout.find("TEXCOORD0");
+  const MeshVertexAttribute* uv = layout.find("TEXCOORD0");
   ASSERT_NE(uv, nullptr);
   EXPECT_EQ(uv->offset, offsetof(Vertex, uv));
   EXPECT_EQ(uv->format, VertexFormat::float2);
   EXPECT_EQ(layout.find("texcoord"), uv);  // no index means 0, case-insensitive
-  const VertexAttribute* t = layout.find("Tangent");
+  const MeshVertexAttribute* t = layout.find("Tangent");
   ASSERT_NE(t, nullptr);
   EXPECT_EQ(t->offset, offsetof(Vertex, tangent));
   EXPECT_EQ(t->format, VertexFormat::float4);
@@ -36,7 +36,7 @@ TEST(VertexLayout, DescribesVertexBySemantic) {
   EXPECT_EQ(layout.find(""), nullptr);
   // Attributes lie inside the stride and do not overlap.
   uint32_t end = 0;
-  for (const VertexAttribute& a : layout.attributes) {
+  for (const MeshVertexAttribute& a : layout.attributes) {
     EXPECT_GE(a.offset, end) << a.semantic;
     end = a.offset + format_size(a.format);
   }

@@ -62,7 +62,7 @@ std::string pick(const std::string& effect, const std::string& profile, fx::Sele
   auto l = load(effect);
   fx::EffectSelection s = selection(*l, profile);
   uint32_t chosen = s.plan.select(s.plan.query(criteria));
-  return chosen == fx::no_technique ? std::string() : std::string(s.plan.name(chosen));
+  return chosen == fx::kNoIndex ? std::string() : std::string(s.plan.name(chosen));
 }
 
 // 1-based line of the first line of `file` containing `needle`.

@@ -50,7 +50,7 @@ std::string pick(std::vector<fx::TechniqueCandidate> list, const char* caps_name
   uint32_t chosen = plan.select(plan.query({}));
   // With no annotations, selection is D3DX's "first valid technique".
   auto first_valid = fx::find_next_valid(list);
-  EXPECT_EQ(first_valid.has_value(), chosen != fx::no_technique);
+  EXPECT_EQ(first_valid.has_value(), chosen != fx::kNoIndex);
   if (first_valid) {
     EXPECT_EQ(*first_valid, chosen);
   }

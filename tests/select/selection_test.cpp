@@ -71,7 +71,7 @@ TEST(Selection, HysteresisHoldsABandUntilTheEdgeIsCrossedByTheMargin) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> jitter(19.5f, 20.5f);
   fx::SelectionState jitter_state;
-  uint32_t prev_with = fx::no_technique, prev_without = fx::no_technique;
+  uint32_t prev_with = fx::kNoIndex, prev_without = fx::kNoIndex;
   int switches_with = -1, switches_without = -1;
   for (int frame = 0; frame < 200; ++frame) {
     q.distance = jitter(rng);
@@ -151,7 +151,7 @@ TEST(Selection, CostAndErrorBudgets) {
   EXPECT_EQ(plan.select(q), 2u);
   EXPECT_EQ(plan.explain(q).reasons[1], "cost 2.0 ms over budget 1.0 ms");
   q.max_error = 2.f;
-  EXPECT_EQ(plan.select(q), fx::no_technique);
+  EXPECT_EQ(plan.select(q), fx::kNoIndex);
   EXPECT_EQ(plan.explain(q).reasons[2], "error 4 LSB over limit 2 LSB");
 }
 
@@ -218,7 +218,7 @@ TEST(Selection, ExplicitFallbackChainSkipsInvalidLinks) {
   list[0].annotations.set("MaxDistance", 10.f);
   list[1].annotations.set("MaxDistance", 10.f);
   fx::SelectionPlan banded = build(list);
-  EXPECT_EQ(banded.select(banded.query({.distance = 50.f, .scheme = "quality"})), fx::no_technique);
+  EXPECT_EQ(banded.select(banded.query({.distance = 50.f, .scheme = "quality"})), fx::kNoIndex);
 }
 
 TEST(Selection, EffectFallbackIsTheLastResort) {
@@ -249,7 +249,7 @@ TEST(Selection, FallbackCyclesAreErrorsNotHangs) {
             "fallback cycle 'a' -> 'b' -> 'c' -> 'a'; the link from 'c' is ignored");
   EXPECT_EQ(sink.diagnostics()[1].message,
             "fallback cycle 'self' -> 'self'; the link from 'self' is ignored");
-  EXPECT_EQ(plan.select(plan.query({})), fx::no_technique);
+  EXPECT_EQ(plan.select(plan.query({})), fx::kNoIndex);
   EXPECT_EQ(plan.explain(plan.query({})).route, fx::SelectionRoute::none);
 }
 
@@ -282,7 +282,7 @@ TEST(Selection, UnknownFallbacksAndBadAnnotationsAreDiagnosed) {
 TEST(Selection, EmptyPlanChoosesNothing) {
   fx::SelectionPlan plan = build({});
   fx::SelectionState state;
-  EXPECT_EQ(plan.select(plan.query({}), state), fx::no_technique);
+  EXPECT_EQ(plan.select(plan.query({}), state), fx::kNoIndex);
   EXPECT_TRUE(plan.explain(plan.query({})).reasons.empty());
 }
 

@@ -18,12 +18,33 @@ TEST(PassStateMapping, DefaultsAndD3DRules) {
   EXPECT_EQ(s->depth_write, 1u);
   EXPECT_EQ(s->depth_compare, uint32_t(VK_COMPARE_OP_LESS_OR_EQUAL));
   EXPECT_EQ(s->depth_bias_enable, 0u);
-  // Projection-flipped Y mirrors winding.
-  auto flipped = to_pipeline_state(p, {.negative_viewport_height = false}, f, sink);
-  EXPECT_EQ(flipped->front_face, uint32_t(VK_FRONT_FACE_COUNTER_CLOCKWISE));
   // No depth writes without the depth test (D3D ZEnable = FALSE).
   p.depth_test = false;
   EXPECT_EQ(to_pipeline_state(p, {}, f, sink)->depth_write, 0u);
+  EXPECT_FALSE(sink.has_errors());
+}
+
+// Each of "the projection flips Y" and "the meshes are counter-clockwise" mirrors D3D's
+// winding once; both together cancel.
+TEST(PassStateMapping, FrontFaceFollowsViewportAndMeshWinding) {
+  DeviceFeatures f;
+  DiagnosticSink sink;
+  auto front = [&](FrontFace effect, bool negative_viewport, FrontFace mesh) {
+    PassStateSummary p;
+    p.front_face = effect;
+    auto s = to_pipeline_state(p, {.negative_viewport_height = negative_viewport, .mesh_front_face = mesh}, f, sink);
+    return s ? VkFrontFace(s->front_face) : VK_FRONT_FACE_MAX_ENUM;
+  };
+  constexpr auto cw = FrontFace::clockwise, ccw = FrontFace::counter_clockwise;
+  EXPECT_EQ(front(cw, true, cw), VK_FRONT_FACE_CLOCKWISE);            // D3D as is
+  EXPECT_EQ(front(cw, false, cw), VK_FRONT_FACE_COUNTER_CLOCKWISE);   // projection flip
+  EXPECT_EQ(front(cw, true, ccw), VK_FRONT_FACE_COUNTER_CLOCKWISE);   // EffectPreview
+  EXPECT_EQ(front(cw, false, ccw), VK_FRONT_FACE_CLOCKWISE);          // two mirrors
+  // An effect that declares counter-clockwise front faces is mirrored the same way.
+  EXPECT_EQ(front(ccw, true, cw), VK_FRONT_FACE_COUNTER_CLOCKWISE);
+  EXPECT_EQ(front(ccw, false, cw), VK_FRONT_FACE_CLOCKWISE);
+  EXPECT_EQ(front(ccw, true, ccw), VK_FRONT_FACE_CLOCKWISE);
+  EXPECT_EQ(front(ccw, false, ccw), VK_FRONT_FACE_COUNTER_CLOCKWISE);
   EXPECT_FALSE(sink.has_errors());
 }
 

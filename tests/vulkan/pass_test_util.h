@@ -98,15 +98,7 @@ class PassHarness {
     recorder_.emplace(ctx, *pipelines_, *frames_, dynamic);
   }
 
-  RenderingFormats formats() const {
-    RenderingFormats f;
-    AttachmentFormats a = target_->formats();
-    f.color[0] = a.color;
-    f.color_count = 1;
-    f.depth = a.depth;
-    f.stencil = a.stencil;
-    return f;
-  }
+  RenderingFormats formats() const { return target_->formats(); }
 
   // Uploads `vertices` into a new vertex buffer kept alive with the harness.
   VkBuffer vertices(const std::vector<Vertex>& vertices) {

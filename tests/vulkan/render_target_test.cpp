@@ -28,7 +28,7 @@ struct PushConstants {
 // push-constant color and depth, dynamic viewport/scissor and depth test state.
 class TrianglePipeline {
  public:
-  TrianglePipeline(VkDevice device, const AttachmentFormats& formats) : device_(device) {
+  TrianglePipeline(VkDevice device, const RenderingFormats& formats) : device_(device) {
     VkShaderModule vs = module(triangle_vert, sizeof triangle_vert);
     VkShaderModule fs = module(triangle_frag, sizeof triangle_frag);
     VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
@@ -280,7 +280,7 @@ TEST_F(RenderTargetTest, DepthAttachmentHidesTrianglesBehindTheClearDepth) {
   ASSERT_TRUE(target);
   RenderTarget& rt = *target;
   ASSERT_NE(rt.depth(), nullptr);
-  AttachmentFormats formats = rt.formats();
+  RenderingFormats formats = rt.formats();
   EXPECT_EQ(formats.depth, ctx().best_depth_format());
   TrianglePipeline pipeline(ctx().device(), formats);
   DiagnosticSink sink;
@@ -330,6 +330,28 @@ TEST_F(RenderTargetTest, LoadKeepsPreviousContents) {
   auto image = rt.read_color(ctx(), sink);
   ASSERT_TRUE(image) << describe(sink);
   EXPECT_EQ(pixel(*image, 3, 3), (Rgba{255, 255, 255, 255}));
+}
+
+// pipeline_info() points into its RenderingFormats: callable on a named object only.
+template <class F>
+concept HasPipelineInfo = requires(F&& f) { static_cast<F&&>(f).pipeline_info(); };
+static_assert(HasPipelineInfo<const RenderingFormats&>);
+static_assert(!HasPipelineInfo<RenderingFormats>);
+
+TEST_F(RenderTargetTest, FormatsAreTheAttachmentsInPipelineShape) {
+  auto target = make_target(4, 4, VK_FORMAT_B8G8R8A8_UNORM, DepthAttachment::d32);
+  ASSERT_TRUE(target);
+  const RenderingFormats formats = target->formats();
+  EXPECT_EQ(formats.color_count, 1u);
+  EXPECT_EQ(formats.color[0], VK_FORMAT_B8G8R8A8_UNORM);
+  EXPECT_EQ(formats.depth, VK_FORMAT_D32_SFLOAT);
+  EXPECT_EQ(formats.stencil, VK_FORMAT_UNDEFINED);
+  const VkPipelineRenderingCreateInfo info = formats.pipeline_info();
+  EXPECT_EQ(info.sType, VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
+  EXPECT_EQ(info.colorAttachmentCount, 1u);
+  EXPECT_EQ(info.pColorAttachmentFormats, formats.color);
+  EXPECT_EQ(info.depthAttachmentFormat, VK_FORMAT_D32_SFLOAT);
+  EXPECT_EQ(info.stencilAttachmentFormat, VK_FORMAT_UNDEFINED);
 }
 
 TEST_F(RenderTargetTest, ZeroSizeIsADiagnostic) {

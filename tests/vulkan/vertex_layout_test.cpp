@@ -2,6 +2,7 @@
 // device needed, only the descriptions Vulkan gets.
 #include <gtest/gtest.h>
 
+#include "fx/mesh.h"
 #include "fx/vulkan/vertex_layout.h"
 
 namespace fx::vk {
@@ -47,6 +48,49 @@ TEST(VertexLayoutMatch, AMatrixInputTakesALocationAndASemanticIndexPerColumn) {
   ASSERT_EQ(missing.diagnostics().size(), 1u);
   EXPECT_NE(missing.diagnostics()[0].message.find("TEXCOORD7 ('World', location 4)"), std::string::npos)
       << missing.diagnostics()[0].message;
+}
+
+
+// The mesh library's layout of fx::Vertex in Vulkan terms: one binding of sizeof(Vertex),
+// the D3D semantics, float formats and offsets as they are.
+TEST(VertexLayoutFromMesh, FxVertexBecomesOneBindingOfFloatAttributes) {
+  const VertexLayout layout = to_vertex_layout(mesh_vertex_layout());
+  ASSERT_EQ(layout.bindings.size(), 1u);
+  EXPECT_EQ(layout.bindings[0].binding, 0u);
+  EXPECT_EQ(layout.bindings[0].stride, uint32_t(sizeof(Vertex)));
+  EXPECT_EQ(layout.bindings[0].rate, VK_VERTEX_INPUT_RATE_VERTEX);
+  ASSERT_EQ(layout.attributes.size(), 5u);
+  const std::pair<const char*, VkFormat> expected[] = {
+      {"POSITION", VK_FORMAT_R32G32B32_SFLOAT}, {"NORMAL", VK_FORMAT_R32G32B32_SFLOAT},
+      {"TANGENT", VK_FORMAT_R32G32B32A32_SFLOAT}, {"BINORMAL", VK_FORMAT_R32G32B32_SFLOAT},
+      {"TEXCOORD", VK_FORMAT_R32G32_SFLOAT}};
+  for (size_t i = 0; i < 5; ++i) {
+    EXPECT_EQ(layout.attributes[i].semantic, expected[i].first);
+    EXPECT_EQ(layout.attributes[i].format, expected[i].second) << expected[i].first;
+    EXPECT_EQ(layout.attributes[i].offset, mesh_vertex_layout().attributes[i].offset);
+    EXPECT_EQ(layout.attributes[i].binding, 0u);
+  }
+  EXPECT_EQ(layout.attributes[2].offset, uint32_t(offsetof(Vertex, tangent)));
+}
+
+// A semantic index other than 0 is spelled out; the binding number goes to every attribute,
+// and the result matches shader inputs by semantic.
+TEST(VertexLayoutFromMesh, SemanticIndexAndBindingCarryOver) {
+  MeshVertexLayout mesh{20, {{"POSITION", 0, VertexFormat::float3, 0}, {"TEXCOORD", 1, VertexFormat::float2, 12}}};
+  const VertexLayout layout = to_vertex_layout(mesh, 2);
+  ASSERT_EQ(layout.bindings.size(), 1u);
+  EXPECT_EQ(layout.bindings[0].binding, 2u);
+  EXPECT_EQ(layout.bindings[0].stride, 20u);
+  ASSERT_EQ(layout.attributes.size(), 2u);
+  EXPECT_EQ(layout.attributes[1].semantic, "TEXCOORD1");
+  EXPECT_EQ(layout.attributes[1].binding, 2u);
+  DiagnosticSink sink;
+  auto matched = match_vertex_layout(layout, {input("uv", "TEXCOORD1", 0, 1, 2)}, sink);
+  ASSERT_TRUE(matched);
+  ASSERT_EQ(matched->attributes.size(), 1u);
+  EXPECT_EQ(matched->attributes[0].format, VK_FORMAT_R32G32_SFLOAT);
+  EXPECT_EQ(matched->attributes[0].offset, 12u);
+  EXPECT_EQ(matched->attributes[0].binding, 2u);
 }
 
 }  // namespace

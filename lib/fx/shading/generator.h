@@ -1,5 +1,6 @@
-// Table generators addressed by name, for effect annotations such as
-//   texture StrandLUT < string Generator = "strand"; int Width = 256; float Exponent = 32; >;
+// Table generators addressed by name, for texture annotations such as
+// `< string Generator = "strand"; int Width = 256; float Exponent = 32; >`
+// (effects/strand_aniso.fx).
 // The vocabulary (generator names and their parameters) is documented in
 // docs/shading-math.md. Errors are values; nothing here throws or aborts.
 #pragma once

@@ -18,13 +18,12 @@
 #include "fx/model/pass_state.h"
 #include "fx/model/type.h"
 #include "fx/model/value.h"
+#include "fx/no_index.h"
 #include "fx/shading/generator.h"
 #include "fx/source_manager.h"
 #include "fx/state_table.h"
 
 namespace fx {
-
-inline constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
 
 // A named, typed, located annotation (`float UIMin = 0;`).
 struct Annotation {

@@ -1,13 +1,7 @@
 // The application-facing facade: load effects, set parameters through handles that
 // survive reloads, select techniques, and call poll() once per frame to swap in the
 // versions a background worker rebuilt after the files (or their includes) were edited.
-//
-//   fx::EffectLibrary lib({.include_dirs = {"effects"}, .backend = &binding});
-//   fx::EffectHandle e = lib.load("effects/strand_aniso.fx");
-//   fx::Param light = e.param("LightDir");                 // fx/model/parameter_store.h
-//   e.params()->set(light, std::span<const float>(dir));
-//   uint32_t t = e.select({.distance = 12.f});
-//   for (;;) { draw(e.version(), t); for (auto& ev : lib.poll(frame++)) log(ev); }
+// Usage (load, param, set, select, draw, poll per frame): docs/hot-reload.md.
 //
 // Threading: load(), poll(), unload() and every EffectHandle call belong to one thread
 // (the render thread). The library runs one worker thread for watching and rebuilding.
@@ -95,12 +89,12 @@ class EffectHandle {
   // (ReloadEvent::defaults_changed, docs/parameters.md).
   ParameterStore* params() const;
 
-  // Chooses a technique (index into version()->model.techniques, or kNoTechnique) and
+  // Chooses a technique (index into version()->model.techniques, or kNoIndex) and
   // remembers the criteria: every reload re-selects with them.
   uint32_t select(const SelectionCriteria& criteria) const;
   // Selects with default criteria (every scheme, no distance), remembered likewise.
   uint32_t select() const;
-  // The last selected technique (re-selected after reloads); kNoTechnique before select().
+  // The last selected technique (re-selected after reloads); kNoIndex before select().
   uint32_t technique() const;
   std::string technique_name() const;
 

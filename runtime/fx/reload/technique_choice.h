@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fx/diagnostic.h"
+#include "fx/no_index.h"
 #include "fx/select/device_caps.h"
 #include "fx/source_location.h"
 
@@ -18,9 +19,6 @@ namespace fx {
 
 struct SelectionCriteria;
 class SelectionPlan;
-
-// "No technique" (equal to fx::no_technique).
-inline constexpr uint32_t kNoTechnique = 0xFFFFFFFFu;
 
 // What selection needs from one technique of the model.
 struct TechniqueFacts {

@@ -11,12 +11,10 @@
 #include <vector>
 
 #include "fx/diagnostic.h"
+#include "fx/no_index.h"
 #include "fx/select/technique_candidate.h"
 
 namespace fx {
-
-// "No technique": the value of an index when nothing could be chosen.
-inline constexpr uint32_t no_technique = std::numeric_limits<uint32_t>::max();
 
 // What the application asks for this object this frame.
 struct SelectionCriteria {
@@ -42,7 +40,7 @@ struct SelectionQuery {
 
 // Per-object memory that makes band edges sticky (hysteresis).
 struct SelectionState {
-  uint32_t last = no_technique;
+  uint32_t last = kNoIndex;
   uint64_t plan_key = 0;  // the plan `last` belongs to; another plan ignores it
 };
 
@@ -52,12 +50,12 @@ const char* to_string(SelectionRoute r);
 
 // A choice with its explanation: one reason per candidate ("" for the chosen one).
 struct SelectionResult {
-  uint32_t chosen = no_technique;
+  uint32_t chosen = kNoIndex;
   SelectionRoute route = SelectionRoute::none;
   bool kept_by_hysteresis = false;      // chosen only because its band was widened
   std::vector<uint32_t> fallback_path;  // candidate indices walked, start first
   std::vector<std::string> reasons;     // indexed like the candidates
-  bool ok() const { return chosen != no_technique; }
+  bool ok() const { return chosen != kNoIndex; }
 };
 
 // Plan-wide settings.
@@ -98,7 +96,7 @@ class SelectionPlan {
     float dist_min_h, dist_max_h, size_min_h, size_max_h;  // widened by hysteresis
     float error, cost_ms, cost_ns_per_pixel;
     uint64_t scheme_mask;  // 0 = any scheme
-    uint32_t fallback;     // index or no_technique
+    uint32_t fallback;     // index or kNoIndex
     int32_t priority;
     bool valid;
     bool error_known;  // MaxError or MaxErrorAbs given
@@ -112,7 +110,7 @@ class SelectionPlan {
   static float cost_ms(const Entry& e, const SelectionQuery& q);
   // A finite error limit: unmeasured techniques fail it and the cheapest survivor wins.
   static bool has_error_limit(const SelectionQuery& q);
-  // The technique the filters and ranking choose directly, or no_technique.
+  // The technique the filters and ranking choose directly, or kNoIndex.
   uint32_t first_survivor(const SelectionQuery& q, uint32_t last) const;
   uint32_t choose(const SelectionQuery& q, uint32_t last, SelectionRoute* route,
                   uint32_t* chain_start) const;
@@ -124,7 +122,7 @@ class SelectionPlan {
   std::vector<std::vector<std::string>> schemes_;  // per candidate, for reason texts
   std::vector<std::string> invalid_reasons_;       // per candidate, joined
   std::vector<std::string> scheme_names_;          // bit i <-> scheme_names_[i]
-  uint32_t effect_fallback_ = no_technique;
+  uint32_t effect_fallback_ = kNoIndex;
   uint64_t key_ = 0;
 };
 

@@ -3,16 +3,8 @@
 // pipeline state mapped from the pass's states, its descriptors (samplers from the sampler
 // states, textures from generators, files or the app's image views) and uniform blocks fed
 // from the ParameterStore (only blocks whose parameters changed are re-packed, straight
-// into the frame's uniform ring).
-//
-//   auto binding = EffectBinding::create(ctx, model, programs, params, textures, frames, {}, sink);
-//   uint32_t layout = binding->add_vertex_layout(my_vertex_layout);
-//   frames.begin_frame();                                   // app: per frame in flight
-//   vkCmdBeginRendering(cmd, ...);                          // app: attachments of `formats`
-//   binding->begin(cmd, technique, formats, viewport, scissor, sink);
-//   for (uint32_t p = 0; p < binding->pass_count(technique); ++p)
-//     if (binding->apply(p, layout, sink)) draw_my_mesh(cmd);
-//   binding->end();
+// into the frame's uniform ring). Usage (create, add_vertex_layout, then per frame
+// begin_frame, begin, apply per pass around the app's draw, end): docs/rendering.md.
 //
 // Threading: create() and warm() may run on any thread (a reload worker) while other
 // bindings render; begin/apply/end/set_texture belong to the render thread. Texture

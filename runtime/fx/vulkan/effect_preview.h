@@ -35,9 +35,8 @@ class EffectPreview {
   FrameResources& frames() { return *frames_; }
   EffectTextureCache& textures() { return textures_; }
   RenderingFormats formats() const;
-  // What bindings drawn here should be created with (one colour attachment, the depth
-  // format's bits, and the winding: the meshes are right-handed, counter-clockwise from
-  // outside, the mirror of Direct3D's clockwise front faces).
+  // What bindings drawn here should be created with: one colour attachment, the depth
+  // format's bits, a negative viewport height and counter-clockwise meshes (fx/mesh.h).
   EffectBindingDesc binding_desc() const;
   // The camera framing the mesh, for set_standard_semantics.
   SceneView scene() const;

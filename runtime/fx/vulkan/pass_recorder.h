@@ -1,10 +1,7 @@
 // fx::vk::PassRecorder: applies passes into the application's command buffer: binds the
 // pipeline, records dynamic state and binds descriptors (uniform ring offsets), skipping
-// anything identical to what the previous pass left bound. The application draws.
-//
-//   recorder.begin(cmd, formats, viewport, scissor);   // inside the app's vkCmdBeginRendering
-//   for (pass : technique) { recorder.apply(pass, sink); app_draw(cmd); }
-//   recorder.end();
+// anything identical to what the previous pass left bound. The application draws between
+// apply() calls, all inside its vkCmdBeginRendering; usage: docs/vulkan-pipelines.md.
 #pragma once
 #include <vulkan/vulkan.h>
 

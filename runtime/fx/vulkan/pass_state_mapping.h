@@ -17,9 +17,15 @@ struct PassTargetInfo {
   // Bits of the depth buffer: D3D9 depth bias is a fraction of the depth range, Vulkan's
   // constant factor is in units of the format's minimum resolvable difference (2^-bits).
   uint32_t depth_bits = 24;
-  // True when the app flips Y with a negative viewport height (D3D winding is kept); false
-  // when the projection flips Y, which mirrors the winding, so the front face is swapped.
+  // The two facts that decide the Vulkan front face; the effect's FrontFace is D3D's
+  // (clockwise front faces for clockwise meshes in a Y-down window). Each of these that
+  // differs from D3D mirrors the winding once; two mirrors cancel.
+  // True when the app flips Y with a negative viewport height (D3D's window orientation);
+  // false when its projection flips Y instead.
   bool negative_viewport_height = true;
+  // The winding of the application's front-facing triangles: clockwise as in Direct3D, or
+  // counter_clockwise as in OpenGL and fxkit's built-in meshes (fx/mesh.h).
+  FrontFace mesh_front_face = FrontFace::clockwise;
 };
 
 // The pipeline state for `pass`. Returns nullopt with "vk-feature-missing" when the pass

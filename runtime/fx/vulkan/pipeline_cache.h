@@ -10,20 +10,11 @@
 
 #include "fx/vulkan/context.h"
 #include "fx/vulkan/pipeline_state.h"
+#include "fx/vulkan/rendering_formats.h"
 #include "fx/vulkan/shader_program.h"
 #include "fx/vulkan/vertex_layout.h"
 
 namespace fx::vk {
-
-// Attachment formats for dynamic rendering (VkPipelineRenderingCreateInfo).
-struct RenderingFormats {
-  VkFormat color[kMaxColorAttachments] = {VK_FORMAT_UNDEFINED, VK_FORMAT_UNDEFINED,
-                                          VK_FORMAT_UNDEFINED, VK_FORMAT_UNDEFINED};
-  uint32_t color_count = 0;
-  VkFormat depth = VK_FORMAT_UNDEFINED;
-  VkFormat stencil = VK_FORMAT_UNDEFINED;
-  friend bool operator==(const RenderingFormats&, const RenderingFormats&) = default;
-};
 
 // Everything a pipeline is created from, reduced to comparable values.
 struct PipelineKey {

@@ -7,12 +7,9 @@
 #include <cstring>
 
 #include "fx/vulkan/context.h"
+#include "fx/vulkan/rendering_formats.h"
 
 namespace fx::vk {
-
-// Most colour attachments a pass may blend into (D3D9 has 4 render targets, D3D11 has 8;
-// 4 keeps the state at 64 bytes and covers every effect seen so far).
-inline constexpr uint32_t kMaxColorAttachments = 4;
 
 // Blend and write-mask state of one colour attachment: one word.
 struct AttachmentBlend {

@@ -4,9 +4,13 @@
 // the application's attachment formats, so poll() only swaps pointers. The library destroys
 // a replaced version's binding after its frames retired.
 //
-//   fx::vk::ReloadBackend backend(ctx, textures, frames, {.formats = f, .desc = d, .layout = fn});
+//   fx::vk::ReloadBackend backend(ctx, textures, frames,
+//                                 {.formats = formats, .binding = desc, .vertex_layout = layout_for});
 //   fx::EffectLibrary lib({.backend = &backend});
-//   EffectBinding* b = fx::vk::ReloadBackend::binding(*handle.version());
+//   fx::EffectHandle handle = lib.load("effects/wood.fx");
+//   fx::vk::EffectBinding* b = fx::vk::ReloadBackend::binding(*handle.version());
+//
+// The whole loop (parameters, selection, drawing, poll): docs/hot-reload.md.
 #pragma once
 #include <functional>
 #include <memory>

@@ -10,6 +10,7 @@
 #include "fx/vulkan/buffer.h"
 #include "fx/vulkan/context.h"
 #include "fx/vulkan/image.h"
+#include "fx/vulkan/rendering_formats.h"
 
 namespace fx::vk {
 
@@ -39,16 +40,6 @@ struct ClearValues {
   uint32_t stencil = 0;
 };
 
-// Attachment formats in the shape VkPipelineRenderingCreateInfo wants.
-struct AttachmentFormats {
-  VkFormat color = VK_FORMAT_UNDEFINED;
-  VkFormat depth = VK_FORMAT_UNDEFINED;
-  VkFormat stencil = VK_FORMAT_UNDEFINED;
-  // Chain this into VkGraphicsPipelineCreateInfo::pNext; it points at `color`, so keep this
-  // AttachmentFormats alive until the pipeline is created.
-  VkPipelineRenderingCreateInfo pipeline_info() const;
-};
-
 class RenderTarget {
  public:
   // Reports "vk-feature-missing" without dynamic rendering, "vk-format-unsupported" if the
@@ -59,7 +50,8 @@ class RenderTarget {
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
   VkExtent2D extent() const { return {width_, height_}; }
-  AttachmentFormats formats() const;
+  // One colour attachment, and the depth (and stencil) format if the target has depth.
+  RenderingFormats formats() const;
   Image& color() { return color_; }
   const Image& color() const { return color_; }
   // The depth attachment, or null if the target has none.

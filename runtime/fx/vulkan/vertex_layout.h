@@ -12,6 +12,10 @@
 #include "fx/diagnostic.h"
 #include "fxkit/target.h"
 
+namespace fx {
+struct MeshVertexLayout;  // fx/mesh.h
+}
+
 namespace fx::vk {
 
 // The application's vertex layout is the public type (fxkit/target.h): one type from the
@@ -19,6 +23,12 @@ namespace fx::vk {
 using VertexAttribute = fxkit::VertexAttribute;
 using VertexBinding = fxkit::VertexBinding;
 using VertexLayout = fxkit::VertexLayout;
+
+// The Vulkan layout of a mesh library layout (fx::mesh_vertex_layout(), or one an
+// application describes the same way): one binding of the layout's stride at `binding`,
+// per attribute its semantic with the index appended when not 0 ("TEXCOORD", "TEXCOORD1"),
+// float2/3/4 as R32G32(B32(A32))_SFLOAT, and its offset.
+VertexLayout to_vertex_layout(const MeshVertexLayout& mesh, uint32_t binding = 0);
 
 // A layout matched to one vertex shader: the exact Vulkan vertex input state.
 struct VertexInput {
