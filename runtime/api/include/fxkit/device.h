@@ -35,29 +35,29 @@ struct VulkanHandles {
 // For Device::headless (tools, tests, CI): fxkit makes its own instance and device.
 struct HeadlessOptions {
   bool validation = false;  // VK_LAYER_KHRONOS_validation; messages become vk-validation errors
-  std::string device;       // index or name substring; "": FXKIT_DEVICE, else the best device
+  std::string device{};       // index or name substring; "": FXKIT_DEVICE, else the best device
 };
 
 struct DeviceOptions {
-  Target target;                          // required: formats, vertex layout, conventions
-  std::vector<std::string> include_dirs;  // searched after the including file's folder
-  std::vector<std::string> defines;       // "NAME" or "NAME=VALUE", as -D
+  Target target{};                          // required: formats, vertex layout, conventions
+  std::vector<std::string> include_dirs{};  // searched after the including file's folder
+  std::vector<std::string> defines{};       // "NAME" or "NAME=VALUE", as -D
   bool watch = true;                      // reload effects when they or their includes change
   uint32_t frames_in_flight = 2;          // frames the GPU may still be reading
   // Per frame in flight: uniform data fxkit writes (host-visible memory) and descriptor
   // sets it allocates. Running out is a vk-uniform-ring-full / vk-descriptor-pool-full error.
   uint32_t uniform_bytes_per_frame = 4u << 20;
   uint32_t descriptor_sets_per_frame = 1024;
-  std::string cache_dir;                  // SPIR-V cache on disk; "": in memory only
+  std::string cache_dir{};                  // SPIR-V cache on disk; "": in memory only
 };
 
 // What begin_frame() swapped in or could not.
 struct Reload {
   enum class Kind : uint8_t { reloaded, failed, deleted } kind = Kind::reloaded;
-  std::string file;
-  std::vector<Message> messages;  // failed: why (the last good version stays live)
-  std::vector<std::string> defaults_changed;  // parameters that took an edited default
-  std::string technique;          // the technique selection chose after the reload
+  std::string file{};
+  std::vector<Message> messages{};  // failed: why (the last good version stays live)
+  std::vector<std::string> defaults_changed{};  // parameters that took an edited default
+  std::string technique{};          // the technique selection chose after the reload
   // One line per event, then the messages: "reloaded effects/lit.fx (technique lit)".
   std::string str() const;
 };

@@ -39,7 +39,7 @@ struct Criteria {
   float distance = 0.f;      // camera distance, world units
   float screen_size = -1.f;  // projected size in pixels; negative: unknown
   float pixels = 0.f;        // covered pixels (turns a per-pixel cost into milliseconds)
-  std::string scheme;        // "" accepts every scheme
+  std::string scheme{};        // "" accepts every scheme
   float cost_budget_ms = std::numeric_limits<float>::infinity();
   float max_error = std::numeric_limits<float>::infinity();  // 8-bit levels
 };
@@ -71,18 +71,14 @@ struct ApplyStats {
 
 // Whether a technique can be drawn on this device, and why not.
 struct TechniqueInfo {
-  std::string name;
+  std::string name{};
   uint32_t passes = 0;
   bool drawable = false;
-  std::string reason;  // "" when drawable
+  std::string reason{};  // "" when drawable
 };
 
-// A technique of an effect, by name or by selection. Recording (render thread):
-//
-//   if (technique.begin(cmd, viewport, scissor))          // inside vkCmdBeginRendering
-//     for (uint32_t p = 0; p < technique.pass_count(); ++p)
-//       if (technique.apply(p)) vkCmdDrawIndexed(cmd, ...);  // the app's geometry
-//   technique.end();
+// A technique of an effect, by name or by selection. Recorded on the render thread with
+// begin(), apply() per pass before each draw, end(): docs/embedding.md, samples/minimal.
 class Technique {
  public:
   Technique() = default;

@@ -12,7 +12,7 @@ namespace fxkit {
 
 // The attachments of the application's dynamic rendering (vkCmdBeginRendering).
 struct Formats {
-  std::vector<VkFormat> color;  // at most 4
+  std::vector<VkFormat> color{};  // at most 4
   VkFormat depth = VK_FORMAT_UNDEFINED;
   VkFormat stencil = VK_FORMAT_UNDEFINED;  // a depth-stencil format is given as both
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
@@ -20,7 +20,7 @@ struct Formats {
 
 // One attribute the application's vertex buffers provide.
 struct VertexAttribute {
-  std::string semantic;  // "POSITION", "NORMAL", "TEXCOORD0" (TEXCOORD == TEXCOORD0)
+  std::string semantic{};  // "POSITION", "NORMAL", "TEXCOORD0" (TEXCOORD == TEXCOORD0)
   VkFormat format = VK_FORMAT_R32G32B32_SFLOAT;
   uint32_t offset = 0;   // bytes from the start of the vertex
   uint32_t binding = 0;  // vertex buffer binding
@@ -37,8 +37,8 @@ struct VertexBinding {
 // attributes by semantic (GLSL inputs by name); an input with no attribute is an error
 // naming the semantics on offer.
 struct VertexLayout {
-  std::vector<VertexAttribute> attributes;
-  std::vector<VertexBinding> bindings;
+  std::vector<VertexAttribute> attributes{};
+  std::vector<VertexBinding> bindings{};
 };
 
 // The front faces of the application's meshes, seen from outside: Direct3D's convention is
@@ -50,8 +50,8 @@ enum class Winding : uint8_t { unset, clockwise, counter_clockwise };
 enum class YFlip : uint8_t { unset, negative_viewport, projection };
 
 struct Target {
-  Formats formats;
-  VertexLayout vertex_layout;
+  Formats formats{};
+  VertexLayout vertex_layout{};
   // Where shader inputs the vertex layout lacks are read from. Unset (the default): such an
   // input is an error naming the attributes on offer. Set: they read (0, 0, 0, 1), as
   // Direct3D reads elements a vertex declaration lacks, from a 16-byte buffer fxkit binds at
