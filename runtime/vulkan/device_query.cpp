@@ -56,6 +56,36 @@ constexpr Eds3Field kEds3Fields[] = {
 };
 #undef FXKIT_EDS3
 
+// DeviceFeatures from Vulkan's feature structs; a null struct means none of its features.
+// The extended dynamic state commands are core in Vulkan 1.3, which the 1.3 struct stands for.
+DeviceFeatures features_from(const VkPhysicalDeviceFeatures& core, const VkPhysicalDeviceVulkan13Features* f13,
+                             const VkPhysicalDeviceExtendedDynamicState2FeaturesEXT* eds2,
+                             const VkPhysicalDeviceExtendedDynamicState3FeaturesEXT* eds3, bool push_descriptor) {
+  DeviceFeatures f;
+  f.dynamic_rendering = f13 && f13->dynamicRendering;
+  f.synchronization2 = f13 && f13->synchronization2;
+  f.maintenance4 = f13 && f13->maintenance4;
+  f.extended_dynamic_state = f13 != nullptr;
+  f.extended_dynamic_state2 = f13 != nullptr;
+  f.eds2_logic_op = eds2 && eds2->extendedDynamicState2LogicOp;
+  f.eds2_patch_control_points = eds2 && eds2->extendedDynamicState2PatchControlPoints;
+  if (eds3)
+    for (const Eds3Field& field : kEds3Fields) f.eds3.*field.ours = eds3->*field.vk;
+  f.push_descriptor = push_descriptor;
+  f.sampler_anisotropy = core.samplerAnisotropy;
+  f.fill_mode_non_solid = core.fillModeNonSolid;
+  f.depth_clamp = core.depthClamp;
+  f.independent_blend = core.independentBlend;
+  f.geometry_shader = core.geometryShader;
+  f.tessellation_shader = core.tessellationShader;
+  f.texture_compression_bc = core.textureCompressionBC;
+  f.image_cube_array = core.imageCubeArray;
+  f.image_gather_extended = core.shaderImageGatherExtended;
+  f.fragment_stores_and_atomics = core.fragmentStoresAndAtomics;
+  f.vertex_pipeline_stores_and_atomics = core.vertexPipelineStoresAndAtomics;
+  return f;
+}
+
 }  // namespace
 
 bool DeviceFeatures::Eds3::any() const {
@@ -129,28 +159,8 @@ DeviceSupport query_device(VkPhysicalDevice physical_device, uint32_t index) {
   if (has_eds3) link(f_eds3);
   vkGetPhysicalDeviceFeatures2(physical_device, &f2);
 
-  DeviceFeatures& f = s.features;
-  f.dynamic_rendering = v13 && f13.dynamicRendering;
-  f.synchronization2 = v13 && f13.synchronization2;
-  f.maintenance4 = v13 && f13.maintenance4;
-  f.extended_dynamic_state = v13;  // core commands in 1.3, no feature bit
-  f.extended_dynamic_state2 = v13;
-  f.eds2_logic_op = has_eds2 && f_eds2.extendedDynamicState2LogicOp;
-  f.eds2_patch_control_points = has_eds2 && f_eds2.extendedDynamicState2PatchControlPoints;
-  if (has_eds3)
-    for (const Eds3Field& field : kEds3Fields) f.eds3.*field.ours = f_eds3.*field.vk;
-  f.push_descriptor = has_push;
-  f.sampler_anisotropy = f2.features.samplerAnisotropy;
-  f.fill_mode_non_solid = f2.features.fillModeNonSolid;
-  f.depth_clamp = f2.features.depthClamp;
-  f.independent_blend = f2.features.independentBlend;
-  f.geometry_shader = f2.features.geometryShader;
-  f.tessellation_shader = f2.features.tessellationShader;
-  f.texture_compression_bc = f2.features.textureCompressionBC;
-  f.image_cube_array = f2.features.imageCubeArray;
-  f.image_gather_extended = f2.features.shaderImageGatherExtended;
-  f.fragment_stores_and_atomics = f2.features.fragmentStoresAndAtomics;
-  f.vertex_pipeline_stores_and_atomics = f2.features.vertexPipelineStoresAndAtomics;
+  s.features = features_from(f2.features, v13 ? &f13 : nullptr, has_eds2 ? &f_eds2 : nullptr,
+                             has_eds3 ? &f_eds3 : nullptr, has_push);
 
   vkGetPhysicalDeviceQueueFamilyProperties(physical_device, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
@@ -238,6 +248,53 @@ DeviceFunctions load_device_functions(VkInstance instance, VkDevice device, cons
     fn.set_object_name = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
         vkGetInstanceProcAddr(instance, "vkSetDebugUtilsObjectNameEXT"));
   return fn;
+}
+
+DeviceFeatures enabled_features(VkPhysicalDevice physical_device, const VkDeviceCreateInfo& created_with) {
+  const DeviceSupport support = query_device(physical_device, 0);
+  auto enabled = [&created_with](std::string_view name) {
+    for (uint32_t i = 0; i < created_with.enabledExtensionCount; ++i)
+      if (name == created_with.ppEnabledExtensionNames[i]) return true;
+    return false;
+  };
+  VkPhysicalDeviceFeatures core = created_with.pEnabledFeatures ? *created_with.pEnabledFeatures
+                                                                : VkPhysicalDeviceFeatures{};
+  // The 1.3 features, gathered from the 1.3 struct or from the structs they were promoted from.
+  VkPhysicalDeviceVulkan13Features f13{};
+  const VkPhysicalDeviceExtendedDynamicState2FeaturesEXT* eds2 = nullptr;
+  const VkPhysicalDeviceExtendedDynamicState3FeaturesEXT* eds3 = nullptr;
+  for (auto* next = static_cast<const VkBaseInStructure*>(created_with.pNext); next; next = next->pNext) {
+    switch (next->sType) {
+      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2:
+        core = reinterpret_cast<const VkPhysicalDeviceFeatures2*>(next)->features;
+        break;
+      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES: {
+        const auto* v = reinterpret_cast<const VkPhysicalDeviceVulkan13Features*>(next);
+        f13.dynamicRendering |= v->dynamicRendering;
+        f13.synchronization2 |= v->synchronization2;
+        f13.maintenance4 |= v->maintenance4;
+        break;
+      }
+      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES:
+        f13.dynamicRendering |= reinterpret_cast<const VkPhysicalDeviceDynamicRenderingFeatures*>(next)->dynamicRendering;
+        break;
+      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SYNCHRONIZATION_2_FEATURES:
+        f13.synchronization2 |= reinterpret_cast<const VkPhysicalDeviceSynchronization2Features*>(next)->synchronization2;
+        break;
+      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_FEATURES:
+        f13.maintenance4 |= reinterpret_cast<const VkPhysicalDeviceMaintenance4Features*>(next)->maintenance4;
+        break;
+      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_2_FEATURES_EXT:
+        if (enabled(kEds2)) eds2 = reinterpret_cast<const VkPhysicalDeviceExtendedDynamicState2FeaturesEXT*>(next);
+        break;
+      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_3_FEATURES_EXT:
+        if (enabled(kEds3)) eds3 = reinterpret_cast<const VkPhysicalDeviceExtendedDynamicState3FeaturesEXT*>(next);
+        break;
+      default: break;
+    }
+  }
+  const bool v13 = support.info.api_version >= VK_API_VERSION_1_3;
+  return features_from(core, v13 ? &f13 : nullptr, eds2, eds3, enabled(kPushDescriptor));
 }
 
 }  // namespace fx::vk

@@ -199,6 +199,11 @@ class Context {
   friend struct ContextBuilder;
 };
 
+// What `created_with` (the VkDeviceCreateInfo the application passed to vkCreateDevice)
+// enabled: its pEnabledFeatures or VkPhysicalDeviceFeatures2, the 1.3 feature structs (or
+// those they were promoted from) and the extensions fxkit uses. For Context::wrap.
+DeviceFeatures enabled_features(VkPhysicalDevice physical_device, const VkDeviceCreateInfo& created_with);
+
 // "discrete GPU", "integrated GPU", "virtual GPU", "CPU", "other".
 const char* to_string(VkPhysicalDeviceType type);
 // Name of a VkResult ("VK_ERROR_DEVICE_LOST"); "VkResult(<n>)" if unknown.

@@ -9,29 +9,15 @@
 
 #include "fx/compile/shader_reflection.h"
 #include "fx/diagnostic.h"
+#include "fxkit/target.h"
 
 namespace fx::vk {
 
-// One attribute the application's vertex buffers provide.
-struct VertexAttribute {
-  std::string semantic;  // "POSITION", "NORMAL", "TEXCOORD0" (TEXCOORD == TEXCOORD0)
-  VkFormat format = VK_FORMAT_R32G32B32_SFLOAT;
-  uint32_t offset = 0;   // bytes from the start of the vertex
-  uint32_t binding = 0;  // vertex buffer binding
-};
-
-// One vertex buffer binding.
-struct VertexBinding {
-  uint32_t binding = 0;
-  uint32_t stride = 0;
-  VkVertexInputRate rate = VK_VERTEX_INPUT_RATE_VERTEX;
-};
-
-// What the application's geometry looks like.
-struct VertexLayout {
-  std::vector<VertexAttribute> attributes;
-  std::vector<VertexBinding> bindings;
-};
+// The application's vertex layout is the public type (fxkit/target.h): one type from the
+// engine's declaration to the pipeline.
+using VertexAttribute = fxkit::VertexAttribute;
+using VertexBinding = fxkit::VertexBinding;
+using VertexLayout = fxkit::VertexLayout;
 
 // A layout matched to one vertex shader: the exact Vulkan vertex input state.
 struct VertexInput {

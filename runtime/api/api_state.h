@@ -1,0 +1,64 @@
+// What the public handles point at: fxkit's internals behind fxkit::Device and fxkit::Effect.
+// Private to runtime/api.
+#pragma once
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fx/diagnostic.h"
+#include "fx/reload/effect_library.h"
+#include "fx/source_manager.h"
+#include "fx/vulkan/context.h"
+#include "fx/vulkan/effect_binding.h"
+#include "fx/vulkan/effect_textures.h"
+#include "fx/vulkan/frame_resources.h"
+#include "fx/vulkan/reload_backend.h"
+#include "fxkit/device.h"
+
+namespace fxkit::detail {
+
+// Diagnostics as public messages (located through `sources` when given).
+Message to_message(const fx::Diagnostic& d, const fx::SourceManager* sources);
+std::vector<Message> to_messages(const std::vector<fx::Diagnostic>& ds, const fx::SourceManager* sources);
+
+// The pass-state facts of a Target (winding, Y convention, attachments).
+fx::vk::RenderingFormats rendering_formats(const Formats& formats);
+fx::vk::PassTargetInfo pass_target(const Target& target);
+
+struct DeviceState {
+  std::optional<fx::vk::Context> ctx;
+  Target target;
+  fx::vk::RenderingFormats formats;
+  std::optional<fx::vk::FrameResources> frames;
+  std::unique_ptr<fx::vk::EffectTextureCache> textures;
+  std::unique_ptr<fx::vk::ReloadBackend> backend;
+  std::unique_ptr<fx::EffectLibrary> library;
+};
+
+struct EffectState {
+  fx::EffectHandle handle;
+  fx::vk::RenderingFormats formats;
+  // The binding begin() started recording with (its version kept alive until end()).
+  fx::vk::EffectBinding* recording = nullptr;
+  std::shared_ptr<const fx::EffectVersion> recording_version;
+  // The application's images for texture parameters, bound to every version that goes live.
+  struct AppTexture {
+    std::string name;
+    VkImageView view = VK_NULL_HANDLE;
+    VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    fx::vk::ImageKind kind = fx::vk::ImageKind::image2d;
+  };
+  std::vector<AppTexture> app_textures;
+  uint64_t textures_serial = 0;  // the version app_textures were bound to
+  fx::DiagnosticSink sink;        // problems of set/apply calls, moved to `problems`
+  std::vector<Message> problems;  // the newest kRecentProblems of them
+  static constexpr size_t kRecentProblems = 32;
+
+  // Moves what `sink` collected into `problems`.
+  void keep_problems();
+  // Binds app_textures to `binding` (of `version`); false if one names no texture parameter.
+  bool bind_app_textures(const fx::EffectVersion& version, fx::vk::EffectBinding& binding);
+};
+
+}  // namespace fxkit::detail

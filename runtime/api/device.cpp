@@ -1,0 +1,229 @@
+// fxkit::Device: a Context (wrapped or headless), the frame resources, the texture cache, a
+// ReloadBackend bound for the application's Target and an EffectLibrary on top.
+#include <vulkan/vulkan.h>
+
+#include "api_state.h"
+#include "fx/select/caps_sources.h"
+#include "fx/vulkan/one_shot.h"
+
+namespace fxkit {
+namespace detail {
+namespace {
+
+uint32_t depth_bits(VkFormat depth) {
+  switch (depth) {
+    case VK_FORMAT_D16_UNORM:
+    case VK_FORMAT_D16_UNORM_S8_UINT: return 16;
+    case VK_FORMAT_X8_D24_UNORM_PACK32:
+    case VK_FORMAT_D24_UNORM_S8_UINT: return 24;
+    default: return 32;
+  }
+}
+
+// The target's problems, one message each ("target-incomplete").
+std::vector<Message> check_target(const Target& t) {
+  std::vector<Message> out;
+  auto error = [&out](std::string text) {
+    Message m;
+    m.code = "target-incomplete";
+    m.text = std::move(text);
+    m.rendered = "error: " + m.text + " [target-incomplete]\n";
+    out.push_back(std::move(m));
+  };
+  if (t.front_faces == Winding::unset)
+    error("Target::front_faces is unset: say whether the meshes' front faces are clockwise (Direct3D) or "
+          "counter_clockwise (OpenGL, glTF)");
+  if (t.y_flip == YFlip::unset)
+    error("Target::y_flip is unset: say whether the viewport height is negative or the projection flips Y");
+  if (t.formats.color.size() > fx::vk::kMaxColorAttachments)
+    error("Target::formats has " + std::to_string(t.formats.color.size()) + " colour formats; at most " +
+          std::to_string(fx::vk::kMaxColorAttachments) + " are supported");
+  if (t.formats.color.empty() && t.formats.depth == VK_FORMAT_UNDEFINED)
+    error("Target::formats has neither a colour nor a depth format");
+  return out;
+}
+
+}  // namespace
+
+fx::vk::RenderingFormats rendering_formats(const Formats& formats) {
+  fx::vk::RenderingFormats f;
+  f.color_count = uint32_t(std::min<size_t>(formats.color.size(), fx::vk::kMaxColorAttachments));
+  for (uint32_t i = 0; i < f.color_count; ++i) f.color[i] = formats.color[i];
+  f.depth = formats.depth;
+  f.stencil = formats.stencil;
+  return f;
+}
+
+fx::vk::PassTargetInfo pass_target(const Target& target) {
+  fx::vk::PassTargetInfo info;
+  info.color_attachment_count = uint32_t(target.formats.color.size());
+  info.samples = target.formats.samples;
+  info.depth_bits = depth_bits(target.formats.depth);
+  // The effect's winding is Direct3D's; it is mirrored when exactly one of a projection
+  // flip and counter-clockwise meshes holds.
+  const bool mirrored = (target.y_flip == YFlip::projection) != (target.front_faces == Winding::counter_clockwise);
+  info.negative_viewport_height = !mirrored;
+  return info;
+}
+
+}  // namespace detail
+
+namespace {
+
+std::unique_ptr<detail::DeviceState> make_state(fx::vk::Context ctx, const DeviceOptions& options,
+                                                std::vector<Message>& errors) {
+  auto s = std::make_unique<detail::DeviceState>();
+  s->ctx.emplace(std::move(ctx));
+  const fx::vk::Context& c = *s->ctx;
+  if (!c.features().dynamic_rendering) {
+    Message m;
+    m.code = "vk-feature-missing";
+    m.text = "the device was not created with dynamic rendering (Vulkan 1.3 dynamicRendering), which fxkit records with";
+    m.rendered = "error: " + m.text + " [vk-feature-missing]\n";
+    errors.push_back(std::move(m));
+    return nullptr;
+  }
+  s->target = options.target;
+  s->formats = detail::rendering_formats(options.target.formats);
+  fx::DiagnosticSink sink;
+  s->frames = fx::vk::FrameResources::create(c, {.frames_in_flight = std::max(1u, options.frames_in_flight)}, sink);
+  if (!s->frames) {
+    auto more = detail::to_messages(sink.diagnostics(), nullptr);
+    errors.insert(errors.end(), more.begin(), more.end());
+    return nullptr;
+  }
+  s->textures = std::make_unique<fx::vk::EffectTextureCache>(c);
+  fx::vk::ReloadBackendDesc desc;
+  desc.formats = s->formats;
+  desc.binding.target = detail::pass_target(options.target);
+  desc.vertex_layout = [layout = options.target.vertex_layout](std::span<const fx::InterfaceVariable>) {
+    return layout;
+  };
+  s->backend = std::make_unique<fx::vk::ReloadBackend>(c, *s->textures, *s->frames, std::move(desc));
+  fx::EffectLibraryOptions lib;
+  lib.include_dirs = options.include_dirs;
+  lib.defines = options.defines;
+  lib.watch = options.watch;
+  lib.backend = s->backend.get();
+  lib.caps = fx::caps_from_physical_device(c.physical_device());
+  lib.spirv_cache_dir = options.cache_dir;
+  lib.frames_in_flight = std::max(1u, options.frames_in_flight);
+  s->library = std::make_unique<fx::EffectLibrary>(std::move(lib));
+  return s;
+}
+
+Severity severity_of(fx::Severity s) {
+  return s == fx::Severity::error ? Severity::error : s == fx::Severity::warning ? Severity::warning : Severity::note;
+}
+
+}  // namespace
+
+Device::Device(std::unique_ptr<detail::DeviceState> state) : state_(std::move(state)) {}
+
+Device::~Device() {
+  if (!state_) return;
+  state_->ctx->wait_idle();
+  state_->library.reset();  // versions and their bindings before what they draw with
+  state_->backend.reset();
+  state_->textures.reset();
+  state_->frames.reset();
+}
+
+std::unique_ptr<Device> Device::create(const VulkanHandles& vulkan, const DeviceOptions& options,
+                                       std::vector<Message>& errors) {
+  auto problems = detail::check_target(options.target);
+  errors.insert(errors.end(), problems.begin(), problems.end());
+  if (!problems.empty()) return nullptr;
+  std::optional<fx::vk::DeviceFeatures> enabled;
+  if (vulkan.created_with) enabled = fx::vk::enabled_features(vulkan.physical_device, *vulkan.created_with);
+  auto ctx = fx::vk::Context::wrap(vulkan.instance, vulkan.physical_device, vulkan.device, vulkan.queue,
+                                   vulkan.queue_family, enabled);
+  auto state = make_state(std::move(ctx), options, errors);
+  return state ? std::unique_ptr<Device>(new Device(std::move(state))) : nullptr;
+}
+
+std::unique_ptr<Device> Device::headless(const DeviceOptions& options, const HeadlessOptions& headless,
+                                         std::vector<Message>& errors) {
+  auto problems = detail::check_target(options.target);
+  errors.insert(errors.end(), problems.begin(), problems.end());
+  if (!problems.empty()) return nullptr;
+  fx::DiagnosticSink sink;
+  fx::vk::ContextOptions context;
+  context.validation = headless.validation;
+  context.device = headless.device;
+  auto ctx = fx::vk::Context::headless(context, sink);
+  if (!ctx) {
+    auto more = detail::to_messages(sink.diagnostics(), nullptr);
+    errors.insert(errors.end(), more.begin(), more.end());
+    return nullptr;
+  }
+  auto state = make_state(std::move(*ctx), options, errors);
+  return state ? std::unique_ptr<Device>(new Device(std::move(state))) : nullptr;
+}
+
+Effect Device::load(const std::string& path) {
+  Effect e;
+  e.state_ = std::make_shared<detail::EffectState>();
+  e.state_->handle = state_->library->load(path);
+  e.state_->formats = state_->formats;
+  return e;
+}
+
+std::vector<Reload> Device::begin_frame() {
+  state_->frames->begin_frame();
+  std::vector<Reload> out;
+  for (const fx::ReloadEvent& ev : state_->library->poll(state_->frames->frame())) {
+    Reload r;
+    r.kind = ev.kind == fx::ReloadEventKind::reloaded ? Reload::Kind::reloaded
+             : ev.kind == fx::ReloadEventKind::failed ? Reload::Kind::failed
+                                                      : Reload::Kind::deleted;
+    r.file = ev.file;
+    r.messages = detail::to_messages(ev.diagnostics, ev.sources.get());
+    r.technique = ev.technique;
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+uint64_t Device::frame() const { return state_->frames->frame(); }
+
+bool Device::submit(const std::function<void(VkCommandBuffer)>& record) {
+  fx::DiagnosticSink sink;
+  return fx::vk::submit_and_wait(*state_->ctx, record, sink);
+}
+
+bool Device::wait_for_reload(std::chrono::milliseconds timeout) { return state_->library->wait(timeout); }
+
+VkDevice Device::vk_device() const { return state_->ctx->device(); }
+VkPhysicalDevice Device::vk_physical_device() const { return state_->ctx->physical_device(); }
+const Target& Device::target() const { return state_->target; }
+const std::string& Device::device_name() const { return state_->ctx->info().name; }
+
+std::vector<Message> Device::take_validation_messages() {
+  std::vector<Message> out;
+  for (const fx::vk::ValidationMessage& v : state_->ctx->validation_messages()) {
+    Message m;
+    m.severity = severity_of(v.severity);
+    m.code = v.id_name.empty() ? "vk-validation" : v.id_name;
+    m.text = v.text;
+    m.rendered = std::string(fx::to_string(v.severity)) + ": " + v.text + " [" + m.code + "]\n";
+    out.push_back(std::move(m));
+  }
+  state_->ctx->clear_validation_messages();
+  return out;
+}
+
+std::string Reload::str() const {
+  std::string s = kind == Kind::reloaded ? "reloaded " : kind == Kind::failed ? "failed " : "deleted ";
+  s += file;
+  if (!technique.empty()) s += " (technique " + technique + ")";
+  if (!defaults_changed.empty()) {
+    s += "; defaults changed:";
+    for (const std::string& p : defaults_changed) s += " " + p;
+  }
+  s += "\n";
+  for (const Message& m : messages) s += m.rendered;
+  return s;
+}
+
+}  // namespace fxkit

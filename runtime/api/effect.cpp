@@ -1,0 +1,158 @@
+// fxkit::Effect: an EffectHandle of the device's library, with the parameter store of the live
+// version behind every setter.
+#include <algorithm>
+
+#include "fx/model/parameter_store.h"
+#include "fx/reload/reload_transaction.h"
+#include "fx/select/selection.h"
+#include "fx/vulkan/effect_scene.h"
+#include "api_state.h"
+
+namespace fxkit {
+namespace {
+
+fx::Param to_fx(Param p) { return {p.index, p.generation}; }
+
+fx::HostMatrixOrder to_fx(MatrixOrder order) {
+  return order == MatrixOrder::row_major ? fx::HostMatrixOrder::row_major : fx::HostMatrixOrder::column_major;
+}
+
+// Keeps a failed set's reason for messages().
+bool kept(detail::EffectState& s, const fx::ParamStatus& status) {
+  if (status) return true;
+  s.sink.report(status.code == fx::ParamStatus::removed ? fx::Severity::warning : fx::Severity::error,
+                "parameter-set", {}, status.message);
+  s.keep_problems();
+  return false;
+}
+
+}  // namespace
+
+bool Effect::ok() const { return state_ && state_->handle.ok(); }
+
+const std::string& Effect::path() const {
+  static const std::string kNone;
+  return state_ ? state_->handle.path() : kNone;
+}
+
+std::vector<Message> Effect::messages() const {
+  if (!state_) return {};
+  auto sources = state_->handle.diagnostic_sources();
+  std::vector<Message> out = detail::to_messages(state_->handle.diagnostics(), sources.get());
+  out.insert(out.end(), state_->problems.begin(), state_->problems.end());
+  return out;
+}
+
+uint64_t Effect::serial() const { return state_ ? state_->handle.serial() : 0; }
+
+std::vector<TechniqueInfo> Effect::techniques() const {
+  std::vector<TechniqueInfo> out;
+  auto version = state_ ? state_->handle.version() : nullptr;
+  if (!version) return out;
+  const fx::vk::EffectBinding* binding = fx::vk::ReloadBackend::binding(*version);
+  for (uint32_t t = 0; t < version->model->techniques.size(); ++t) {
+    TechniqueInfo info;
+    info.name = version->model->techniques[t].name;
+    info.passes = uint32_t(version->model->techniques[t].passes.size());
+    if (!version->techniques->valid(t)) {
+      for (const std::string& r : version->techniques->rejections(t)) info.reason += (info.reason.empty() ? "" : "; ") + r;
+    } else if (!binding || !binding->technique_ok(t)) {
+      info.reason = binding ? binding->technique_reason(t) : "no GPU objects were made for this version";
+    }
+    info.drawable = info.reason.empty();
+    out.push_back(std::move(info));
+  }
+  return out;
+}
+
+Technique Effect::technique(std::string_view name) const {
+  Technique t;
+  t.effect_ = state_;
+  t.name_ = std::string(name);
+  return t;
+}
+
+Technique Effect::select(const Criteria& criteria) const {
+  Technique t;
+  if (!state_) return t;
+  fx::SelectionCriteria c;
+  c.distance = criteria.distance;
+  c.screen_size = criteria.screen_size;
+  c.pixels = criteria.pixels;
+  c.scheme = criteria.scheme;
+  c.cost_budget_ms = criteria.cost_budget_ms;
+  c.max_error = criteria.max_error;
+  state_->handle.select(c);
+  t.effect_ = state_;
+  return t;
+}
+
+Param Effect::param(std::string_view name_or_semantic) const {
+  if (!state_) return {};
+  const fx::Param p = state_->handle.param(name_or_semantic);
+  return {p.index, p.generation};
+}
+
+bool Effect::set(Param p, float value) {
+  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  return store && kept(*state_, store->set(to_fx(p), value));
+}
+bool Effect::set(Param p, int32_t value) {
+  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  return store && kept(*state_, store->set(to_fx(p), value));
+}
+bool Effect::set(Param p, bool value) {
+  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  return store && kept(*state_, store->set(to_fx(p), value));
+}
+bool Effect::set(Param p, std::span<const float> values) {
+  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  return store && kept(*state_, store->set(to_fx(p), values));
+}
+
+bool Effect::set_matrix(Param p, const float* m16, MatrixOrder order) {
+  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  if (!store) return false;
+  const fx::ParamStatus status = store->set_matrix(to_fx(p), std::span<const float>(m16, 16), to_fx(order));
+  return status || kept(*state_, status);
+}
+
+bool Effect::get(Param p, std::span<float> out) const {
+  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  return store && store->get(to_fx(p), out);
+}
+
+bool Effect::reset(Param p) {
+  fx::ParameterStore* store = state_ ? state_->handle.params() : nullptr;
+  return store && kept(*state_, store->reset(to_fx(p)));
+}
+
+uint32_t Effect::set_scene(const Scene& scene) {
+  auto version = state_ ? state_->handle.version() : nullptr;
+  if (!version) return 0;
+  fx::vk::SceneView view;
+  std::copy_n(scene.world, 16, &view.world[0][0]);
+  std::copy_n(scene.view, 16, &view.view[0][0]);
+  std::copy_n(scene.projection, 16, &view.projection[0][0]);
+  view.eye = {scene.eye[0], scene.eye[1], scene.eye[2]};
+  view.time = scene.time;
+  return fx::vk::set_standard_semantics(*version->params, *version->model, view);
+}
+
+bool Effect::set_texture(std::string_view name, VkImageView view, VkImageLayout layout, VkImageViewType type) {
+  if (!state_) return false;
+  const fx::vk::ImageKind kind = type == VK_IMAGE_VIEW_TYPE_3D     ? fx::vk::ImageKind::image3d
+                                 : type == VK_IMAGE_VIEW_TYPE_CUBE ? fx::vk::ImageKind::cube
+                                 : type == VK_IMAGE_VIEW_TYPE_1D   ? fx::vk::ImageKind::image1d
+                                                                   : fx::vk::ImageKind::image2d;
+  auto& textures = state_->app_textures;
+  auto same = std::find_if(textures.begin(), textures.end(), [&](const auto& t) { return t.name == name; });
+  if (same == textures.end()) same = textures.insert(textures.end(), {std::string(name)});
+  same->view = view, same->layout = layout, same->kind = kind;
+  state_->textures_serial = 0;  // bound to the live version at the next begin()
+  auto version = state_->handle.version();
+  fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
+  return binding && state_->bind_app_textures(*version, *binding);
+}
+
+}  // namespace fxkit

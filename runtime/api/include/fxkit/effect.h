@@ -1,0 +1,145 @@
+// fxkit::Effect, Technique and Param: a loaded effect file and what an engine does with it
+// per object: choose a technique, set parameters, apply each pass, draw. Every handle
+// survives reloads (parameters are translated, the technique is looked up again).
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <initializer_list>
+#include <limits>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fxkit/message.h"
+
+namespace fxkit {
+
+namespace detail {
+struct EffectState;
+}
+
+// A parameter of an effect (by name or semantic); stays valid across reloads. Invalid
+// handles make every set() return false and change nothing.
+struct Param {
+  uint32_t index = std::numeric_limits<uint32_t>::max();
+  uint32_t generation = 0;
+  bool valid() const { return index != std::numeric_limits<uint32_t>::max(); }
+};
+
+// How the application's 16 matrix floats are ordered: row_major = m[r][c] at r * 4 + c
+// (D3DX; the memory of a glm::mat4 M used as M * v is HLSL's matrix in mul(v, M)).
+enum class MatrixOrder : uint8_t { row_major, column_major };
+
+// What the application asks of an object this frame (docs/selection.md): techniques with
+// LOD bands, cost and error annotations are chosen against these.
+struct Criteria {
+  float distance = 0.f;      // camera distance, world units
+  float screen_size = -1.f;  // projected size in pixels; negative: unknown
+  float pixels = 0.f;        // covered pixels (turns a per-pixel cost into milliseconds)
+  std::string scheme;        // "" accepts every scheme
+  float cost_budget_ms = std::numeric_limits<float>::infinity();
+  float max_error = std::numeric_limits<float>::infinity();  // 8-bit levels
+};
+
+// A camera and object transform for the standard semantics (WORLD, VIEW, PROJECTION, their
+// products, inverses and transposes, CAMERAPOSITION, TIME). Column-major 4x4 (glm's
+// memory order), right-handed, clip-space +Y up, depth 0..1.
+struct Scene {
+  float world[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  float view[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  float projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  float eye[3] = {0, 0, 3};
+  float time = 0.f;  // seconds
+  // A camera looking at a sphere of `radius` around the origin, from the front and a
+  // little above, filling about 85% of the shorter side of an image of `aspect`.
+  static Scene framing(float radius, float aspect);
+};
+
+// Whether a technique can be drawn on this device, and why not.
+struct TechniqueInfo {
+  std::string name;
+  uint32_t passes = 0;
+  bool drawable = false;
+  std::string reason;  // "" when drawable
+};
+
+// A technique of an effect, by name or by selection. Recording (render thread):
+//
+//   if (technique.begin(cmd, viewport, scissor))          // inside vkCmdBeginRendering
+//     for (uint32_t p = 0; p < technique.pass_count(); ++p)
+//       if (technique.apply(p)) vkCmdDrawIndexed(cmd, ...);  // the app's geometry
+//   technique.end();
+class Technique {
+ public:
+  Technique() = default;
+  // Whether it names a technique of the live version that can be drawn.
+  bool valid() const;
+  std::string name() const;
+  uint32_t pass_count() const;
+  // Why it cannot be drawn ("" when it can).
+  std::string reason() const;
+
+  // Starts recording into `cmd` (the application's command buffer, inside its dynamic
+  // rendering with the Target's formats): sets the viewport and scissor and uploads textures
+  // not yet on the GPU. After a reload it draws the new version. False: nothing to draw
+  // (apply() then returns false too).
+  bool begin(VkCommandBuffer cmd, const VkViewport& viewport, const VkRect2D& scissor);
+  // Binds pass `pass` (pipeline, dynamic state, descriptors, changed uniform data); the app
+  // draws after it returns true.
+  bool apply(uint32_t pass);
+  // Ends the recording; the next begin() assumes nothing is bound.
+  void end();
+
+ private:
+  friend class Effect;
+  std::shared_ptr<detail::EffectState> effect_;
+  std::string name_;  // "" follows selection
+};
+
+class Effect {
+ public:
+  Effect() = default;
+  // Whether a good version is live (false while a first load has errors).
+  bool ok() const;
+  const std::string& path() const;
+  // Errors and warnings of the last load or reload attempt.
+  std::vector<Message> messages() const;
+  // Changes on every successful reload.
+  uint64_t serial() const;
+
+  // Every technique, drawable or not with the reason.
+  std::vector<TechniqueInfo> techniques() const;
+  // The technique called `name` (not valid() when there is none; reason() says so).
+  Technique technique(std::string_view name) const;
+  // The technique selection chooses for `criteria`, re-chosen with them after reloads.
+  Technique select(const Criteria& criteria = {}) const;
+
+  // By exact name, else by semantic (case-insensitive).
+  Param param(std::string_view name_or_semantic) const;
+  // Setters: the value's shape must match the parameter's type (a float3 takes 3 floats).
+  // False, with a message kept for messages(), when it does not.
+  bool set(Param p, float value);
+  bool set(Param p, int32_t value);
+  bool set(Param p, bool value);
+  bool set(Param p, std::span<const float> values);
+  bool set(Param p, std::initializer_list<float> values) { return set(p, std::span<const float>(values)); }
+  bool set_matrix(Param p, const float* m16, MatrixOrder order = MatrixOrder::row_major);
+  bool get(Param p, std::span<float> out) const;
+  // Follows the file's default again (reloads then apply edited defaults to it).
+  bool reset(Param p);
+  // Every parameter whose semantic is a standard one; returns how many were set.
+  uint32_t set_scene(const Scene& scene);
+  // Samples the application's image for texture parameter `name` (from the next begin()).
+  // The view stays the application's; it must outlive the frames that use it.
+  bool set_texture(std::string_view name, VkImageView view, VkImageLayout layout,
+                   VkImageViewType type = VK_IMAGE_VIEW_TYPE_2D);
+
+ private:
+  friend class Device;
+  std::shared_ptr<detail::EffectState> state_;
+};
+
+}  // namespace fxkit

@@ -1,0 +1,59 @@
+// fxkit::Target: what the application draws effects into, stated once when the Device is
+// made: attachment formats, the vertex layout of its meshes, and the two conventions that
+// decide which faces are front faces.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fxkit {
+
+// The attachments of the application's dynamic rendering (vkCmdBeginRendering).
+struct Formats {
+  std::vector<VkFormat> color;  // at most 4
+  VkFormat depth = VK_FORMAT_UNDEFINED;
+  VkFormat stencil = VK_FORMAT_UNDEFINED;  // a depth-stencil format is given as both
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+};
+
+// One attribute the application's vertex buffers provide.
+struct VertexAttribute {
+  std::string semantic;  // "POSITION", "NORMAL", "TEXCOORD0" (TEXCOORD == TEXCOORD0)
+  VkFormat format = VK_FORMAT_R32G32B32_SFLOAT;
+  uint32_t offset = 0;   // bytes from the start of the vertex
+  uint32_t binding = 0;  // vertex buffer binding
+};
+
+// One vertex buffer binding.
+struct VertexBinding {
+  uint32_t binding = 0;
+  uint32_t stride = 0;
+  VkVertexInputRate rate = VK_VERTEX_INPUT_RATE_VERTEX;
+};
+
+// What the application's geometry looks like. Vertex shader inputs are matched to the
+// attributes by semantic (GLSL inputs by name); an input with no attribute is an error
+// naming the semantics on offer.
+struct VertexLayout {
+  std::vector<VertexAttribute> attributes;
+  std::vector<VertexBinding> bindings;
+};
+
+// The front faces of the application's meshes, seen from outside: Direct3D's convention is
+// clockwise, OpenGL's and glTF's counter-clockwise.
+enum class Winding : uint8_t { unset, clockwise, counter_clockwise };
+
+// How clip space +Y becomes up on screen: a negative viewport height (VK_KHR_maintenance1,
+// core since Vulkan 1.1), or a projection matrix that flips Y itself.
+enum class YFlip : uint8_t { unset, negative_viewport, projection };
+
+struct Target {
+  Formats formats;
+  VertexLayout vertex_layout;
+  Winding front_faces = Winding::unset;  // required
+  YFlip y_flip = YFlip::unset;           // required
+};
+
+}  // namespace fxkit

@@ -1,0 +1,95 @@
+// fxkit::Technique: resolves to a technique index of the live version at begin() (by name,
+// or the effect's selection) and records through that version's EffectBinding.
+#include "fx/reload/reload_transaction.h"
+#include "api_state.h"
+
+namespace fxkit {
+namespace {
+
+// The index of the technique `name` in `version` ("" = the effect's selection).
+uint32_t resolve(const detail::EffectState& s, const fx::EffectVersion& version, const std::string& name) {
+  if (name.empty()) return s.handle.technique();
+  const auto& techniques = version.model->techniques;
+  for (uint32_t t = 0; t < techniques.size(); ++t)
+    if (techniques[t].name == name) return t;
+  return fx::kNoIndex;
+}
+
+}  // namespace
+
+namespace detail {
+
+bool EffectState::bind_app_textures(const fx::EffectVersion& version, fx::vk::EffectBinding& binding) {
+  bool ok = true;
+  for (const AppTexture& t : app_textures) ok &= binding.set_texture(t.name, t.view, t.layout, t.kind, sink);
+  textures_serial = version.serial;
+  keep_problems();
+  return ok;
+}
+
+}  // namespace detail
+
+bool Technique::valid() const { return reason().empty(); }
+
+std::string Technique::name() const {
+  if (!name_.empty() || !effect_) return name_;
+  return effect_->handle.technique_name();
+}
+
+uint32_t Technique::pass_count() const {
+  auto version = effect_ ? effect_->handle.version() : nullptr;
+  if (!version) return 0;
+  const uint32_t t = resolve(*effect_, *version, name_);
+  return t < version->model->techniques.size() ? uint32_t(version->model->techniques[t].passes.size()) : 0;
+}
+
+std::string Technique::reason() const {
+  auto version = effect_ ? effect_->handle.version() : nullptr;
+  if (!version) return "the effect has no good version";
+  const uint32_t t = resolve(*effect_, *version, name_);
+  if (t >= version->model->techniques.size())
+    return name_.empty() ? "selection chose no technique" : "the effect has no technique '" + name_ + "'";
+  if (!version->techniques->valid(t)) {
+    std::string why;
+    for (const std::string& r : version->techniques->rejections(t)) why += (why.empty() ? "" : "; ") + r;
+    return why.empty() ? "rejected by validation" : why;
+  }
+  const fx::vk::EffectBinding* binding = fx::vk::ReloadBackend::binding(*version);
+  if (!binding) return "no GPU objects were made for this version";
+  return binding->technique_reason(t);
+}
+
+bool Technique::begin(VkCommandBuffer cmd, const VkViewport& viewport, const VkRect2D& scissor) {
+  if (!effect_) return false;
+  detail::EffectState& s = *effect_;
+  s.recording = nullptr;
+  s.recording_version = s.handle.version();
+  if (!s.recording_version) return false;
+  fx::vk::EffectBinding* binding = fx::vk::ReloadBackend::binding(*s.recording_version);
+  const uint32_t t = resolve(s, *s.recording_version, name_);
+  if (!binding || t >= binding->technique_count()) return false;
+  if (s.textures_serial != s.recording_version->serial) s.bind_app_textures(*s.recording_version, *binding);
+  const bool ok = binding->begin(cmd, t, s.formats, viewport, scissor, s.sink);
+  if (!s.sink.diagnostics().empty()) s.keep_problems();
+  if (ok) s.recording = binding;
+  return ok;
+}
+
+bool Technique::apply(uint32_t pass) {
+  detail::EffectState* s = effect_.get();
+  if (!s || !s->recording) [[unlikely]]
+    return false;
+  if (s->recording->apply(pass, 0, s->sink)) [[likely]]
+    return true;
+  s->keep_problems();
+  return false;
+}
+
+void Technique::end() {
+  if (!effect_) return;
+  if (effect_->recording) effect_->recording->end();
+  effect_->recording = nullptr;
+  effect_->recording_version.reset();
+}
+
+}  // namespace fxkit

@@ -1,0 +1,231 @@
+// The public API (fxkit/fxkit.h) end to end on a validated device: a Device wrapped around
+// the application's handles or made headless, effects loaded from files on disk, techniques
+// by name and by selection, parameters, recording into the application's command buffer,
+// the winding convention, reloads through begin_frame().
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+
+#include "../vulkan/effect_test_util.h"
+#include "fxkit/fxkit.h"
+
+namespace fx::vk::testing {
+namespace {
+
+// A lit sphere; `cull` is the D3D CullMode (CCW culls the back faces of D3D's clockwise meshes).
+std::string lit_effect(const std::string& tint = "0.9, 0.6, 0.3", const std::string& cull = "CCW") {
+  return R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float4x4 World : WORLD;
+float3 LightDirection : DIRECTION = {0.3, -0.8, -0.5};
+float4 Tint = {)" + tint + R"(, 1.0};
+struct V { float4 pos : POSITION; float3 n : TEXCOORD0; };
+V VS(float4 p : POSITION, float3 n : NORMAL) { V o; o.pos = mul(p, WorldViewProjection); o.n = mul(n, (float3x3)World); return o; }
+float4 PS(V i) : COLOR0 { return float4(Tint.rgb * (0.2 + 0.8 * saturate(dot(normalize(i.n), -LightDirection))), 1.0); }
+technique lit { pass p0 { CullMode = )" + cull + R"(; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+technique assembly { pass p0 { VertexShader = asm { vs.1.1 dcl_position v0 m4x4 oPos, v0, c0 }; } }
+)";
+}
+
+std::string text(const std::vector<fxkit::Message>& messages) {
+  std::string s;
+  for (const auto& m : messages) s += m.rendered;
+  return s;
+}
+
+fxkit::DeviceOptions options(fxkit::Winding winding = fxkit::Winding::counter_clockwise) {
+  fxkit::DeviceOptions o;
+  o.target = {.formats = {.color = {VK_FORMAT_R8G8B8A8_UNORM}, .depth = VK_FORMAT_D32_SFLOAT},
+              .vertex_layout = fxkit::Mesh::vertex_layout(),
+              .front_faces = winding,
+              .y_flip = fxkit::YFlip::negative_viewport};
+  return o;
+}
+
+// What each drawing test makes first: a device on the fixture's context, a sphere, an image.
+struct Rig {
+  std::unique_ptr<fxkit::Device> device;
+  std::unique_ptr<fxkit::Mesh> mesh;
+  std::unique_ptr<fxkit::Offscreen> image;
+  std::vector<fxkit::Message> errors;
+  explicit operator bool() const { return device && mesh && image; }
+};
+
+class PublicApiTest : public VulkanTest {
+ protected:
+  Rig rig(fxkit::Winding winding = fxkit::Winding::counter_clockwise) {
+    Rig r;
+    r.device = fxkit::Device::create(handles(), options(winding), r.errors);
+    if (r.device) r.mesh = fxkit::Mesh::create(*r.device, "sphere", r.errors);
+    if (r.device) r.image = fxkit::Offscreen::create(*r.device, 32, 32, r.errors);
+    return r;
+  }
+  fxkit::VulkanHandles handles() {
+    return {ctx().instance(), ctx().physical_device(), ctx().device(), ctx().queue(), ctx().queue_family()};
+  }
+  // One frame of `technique` on `mesh` into `image`; the centre pixel's RGB.
+  static std::array<uint8_t, 3> draw(fxkit::Device& device, fxkit::Technique& technique, fxkit::Mesh& mesh,
+                                     fxkit::Offscreen& image) {
+    device.begin_frame();
+    bool drawn = false;
+    EXPECT_TRUE(device.submit([&](VkCommandBuffer cmd) {
+      image.begin(cmd);
+      if (technique.begin(cmd, image.viewport(), image.scissor()))
+        for (uint32_t p = 0; p < technique.pass_count(); ++p)
+          if (technique.apply(p)) mesh.draw(cmd), drawn = true;
+      technique.end();
+      image.end(cmd);
+    }));
+    EXPECT_TRUE(drawn);
+    const auto rgba = image.read_rgba8();
+    const size_t c = (size_t(image.height() / 2) * image.width() + image.width() / 2) * 4;
+    return {rgba.at(c), rgba.at(c + 1), rgba.at(c + 2)};
+  }
+};
+
+TEST_F(PublicApiTest, WrappedDeviceLoadsSelectsSetsDrawsAndReadsBack) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  auto& [device, mesh, image, errors] = r;
+  fxkit::Effect effect = device->load(write_effect("api_lit.fx", lit_effect()));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  EXPECT_GT(effect.set_scene(fxkit::Scene::framing(mesh->radius(), 1.0f)), 0u);
+
+  fxkit::Technique technique = effect.select();
+  EXPECT_EQ(technique.name(), "lit");
+  const auto orange = draw(*device, technique, *mesh, *image);
+  EXPECT_GT(orange[0], orange[2] + 40) << "the default tint is orange";
+
+  ASSERT_TRUE(effect.set(effect.param("Tint"), {0.1f, 0.2f, 0.9f, 1.0f}));
+  const auto blue = draw(*device, technique, *mesh, *image);
+  EXPECT_GT(blue[2], blue[0] + 40) << "the tint set through the handle is drawn";
+  EXPECT_FALSE(effect.set(effect.param("Tint"), 1.0f)) << "a float for a float4 is refused";
+  EXPECT_FALSE(effect.messages().empty());
+}
+
+TEST_F(PublicApiTest, TechniquesByNameSayWhyTheyCannotDraw) {
+  std::vector<fxkit::Message> errors;
+  auto device = fxkit::Device::create(handles(), options(), errors);
+  ASSERT_TRUE(device) << text(errors);
+  fxkit::Effect effect = device->load(write_effect("api_names.fx", lit_effect()));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  EXPECT_TRUE(effect.technique("lit").valid());
+  EXPECT_EQ(effect.technique("lit").pass_count(), 1u);
+  fxkit::Technique missing = effect.technique("nope");
+  EXPECT_FALSE(missing.valid());
+  EXPECT_EQ(missing.reason(), "the effect has no technique 'nope'");
+  fxkit::Technique broken = effect.technique("assembly");
+  EXPECT_FALSE(broken.valid());
+  EXPECT_FALSE(broken.reason().empty());
+  const auto infos = effect.techniques();
+  ASSERT_EQ(infos.size(), 2u);
+  EXPECT_TRUE(infos[0].drawable);
+  EXPECT_FALSE(infos[1].drawable);
+  EXPECT_EQ(infos[1].reason, broken.reason());
+}
+
+TEST_F(PublicApiTest, TheTargetMustStateItsConventions) {
+  std::vector<fxkit::Message> errors;
+  auto o = options();
+  o.target.front_faces = fxkit::Winding::unset;
+  o.target.y_flip = fxkit::YFlip::unset;
+  EXPECT_FALSE(fxkit::Device::create(handles(), o, errors));
+  ASSERT_EQ(errors.size(), 2u);
+  EXPECT_EQ(errors[0].code, "target-incomplete");
+  EXPECT_NE(errors[0].text.find("front_faces"), std::string::npos);
+  EXPECT_NE(errors[1].text.find("y_flip"), std::string::npos);
+}
+
+TEST_F(PublicApiTest, ADeviceCreatedWithoutDynamicRenderingIsRefused) {
+  // What the application enabled decides, not what the physical device supports.
+  VkDeviceCreateInfo created{};
+  created.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+  fxkit::VulkanHandles h = handles();
+  h.created_with = &created;
+  std::vector<fxkit::Message> errors;
+  EXPECT_FALSE(fxkit::Device::create(h, options(), errors));
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].code, "vk-feature-missing");
+
+  VkPhysicalDeviceVulkan13Features v13{};
+  v13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
+  v13.dynamicRendering = VK_TRUE;
+  created.pNext = &v13;
+  errors.clear();
+  EXPECT_TRUE(fxkit::Device::create(h, options(), errors)) << text(errors);
+}
+
+TEST_F(PublicApiTest, TheStatedWindingDecidesWhichFacesTheEffectCulls) {
+  // CullMode = CCW culls Direct3D's back faces. Stating the meshes' real winding
+  // (counter-clockwise) draws the lit front of the sphere; claiming clockwise culls the
+  // front and shows the dark inside of the back.
+  std::array<uint8_t, 3> centre[2];
+  const fxkit::Winding windings[2] = {fxkit::Winding::counter_clockwise, fxkit::Winding::clockwise};
+  for (int i = 0; i < 2; ++i) {
+    Rig r = rig(windings[i]);
+    ASSERT_TRUE(r) << text(r.errors);
+    auto& [device, mesh, image, errors] = r;
+    fxkit::Effect effect = device->load(write_effect("api_cull.fx", lit_effect("1, 1, 1")));
+    ASSERT_TRUE(effect.ok()) << text(effect.messages());
+    effect.set_scene(fxkit::Scene::framing(mesh->radius(), 1.0f));
+    fxkit::Technique t = effect.technique("lit");
+    centre[i] = draw(*device, t, *mesh, *image);
+  }
+  EXPECT_GT(int(centre[0][0]), int(centre[1][0]) + 60) << int(centre[0][0]) << " vs " << int(centre[1][0]);
+}
+
+TEST_F(PublicApiTest, BeginFrameSwapsInAnEditAndKeepsTheLastGoodEffectAfterABrokenOne) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  auto& [device, mesh, image, errors] = r;
+  const std::string path = write_effect("api_reload.fx", lit_effect());
+  fxkit::Effect effect = device->load(path);
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  const fxkit::Scene scene = fxkit::Scene::framing(mesh->radius(), 1.0f);
+  effect.set_scene(scene);
+  fxkit::Technique technique = effect.select();
+  const auto before = draw(*device, technique, *mesh, *image);
+
+  auto reload_after = [&](const std::string& text) {
+    std::ofstream(path, std::ios::trunc) << text;
+    std::vector<fxkit::Reload> reloads;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (reloads.empty() && std::chrono::steady_clock::now() < deadline) {
+      device->wait_for_reload(std::chrono::milliseconds(20));
+      reloads = device->begin_frame();
+    }
+    return reloads;
+  };
+  auto failed = reload_after(lit_effect() + "technique broken { pass { VertexShader = compile vs_2_0 Nope(); } }");
+  ASSERT_EQ(failed.size(), 1u);
+  EXPECT_EQ(failed[0].kind, fxkit::Reload::Kind::failed);
+  ASSERT_FALSE(failed[0].messages.empty());
+  EXPECT_EQ(failed[0].messages[0].file, path);
+  EXPECT_GT(failed[0].messages[0].line, 0u);
+  EXPECT_EQ(draw(*device, technique, *mesh, *image), before) << "the last good version draws";
+
+  auto reloaded = reload_after(lit_effect("0.1, 0.9, 0.1"));
+  ASSERT_EQ(reloaded.size(), 1u);
+  EXPECT_EQ(reloaded[0].kind, fxkit::Reload::Kind::reloaded) << reloaded[0].str();
+  effect.set_scene(scene);
+  const auto green = draw(*device, technique, *mesh, *image);
+  EXPECT_GT(green[1], green[0] + 40) << "the edited default tint is drawn";
+}
+
+TEST(PublicApiHeadless, HeadlessDeviceReportsValidationThroughMessages) {
+  std::vector<fxkit::Message> errors;
+  fxkit::HeadlessOptions headless;
+  headless.validation = true;
+  auto device = fxkit::Device::headless(options(), headless, errors);
+  ASSERT_TRUE(device) << text(errors);
+  EXPECT_FALSE(device->device_name().empty());
+  auto mesh = fxkit::Mesh::create(*device, "no_such_shape", errors);
+  EXPECT_FALSE(mesh);
+  ASSERT_FALSE(errors.empty());
+  EXPECT_NE(errors.back().rendered.find("no_such_shape"), std::string::npos);
+  EXPECT_TRUE(device->take_validation_messages().empty());
+}
+
+}  // namespace
+}  // namespace fx::vk::testing
