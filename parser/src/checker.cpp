@@ -112,7 +112,11 @@ std::optional<EffectProfile> header_profile(const ast::Effect& effect) {
 
 }  // namespace
 
-std::string quote(std::string_view text) { return "'" + std::string(text) + "'"; }
+std::string quote(std::string_view text) {
+  std::string quoted(1, '\'');
+  quoted.append(text).push_back('\'');
+  return quoted;
+}
 
 Checker::Checker(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& diags,
                  const CheckOptions& options)

@@ -196,7 +196,7 @@ Token MacroEngine::builtin_token(const Token& name, Macro& m) {
   uint8_t flags = static_cast<uint8_t>(name.flags | kFromMacro);
   PresumedLocation p = sm_.presumed(name.loc);
   if (m.builtin == Builtin::file) {
-    scratch_ = "\"";
+    scratch_.assign(1, '"');
     for (char c : p.file) {
       if (c == '\\' || c == '"') scratch_.push_back('\\');
       scratch_.push_back(c);
@@ -315,7 +315,7 @@ std::span<const Token> MacroEngine::expanded_argument(Level& l, size_t i) {
 }
 
 Token MacroEngine::stringize(std::span<const Token> arg, SourceLocation loc, uint8_t flags) {
-  scratch_ = "\"";
+  scratch_.assign(1, '"');
   for (size_t i = 0; i < arg.size(); ++i) {
     if (i > 0 && arg[i].leading_space()) scratch_.push_back(' ');
     bool quoted = arg[i].is(TokenKind::string) || arg[i].is(TokenKind::character);

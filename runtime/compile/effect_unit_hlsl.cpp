@@ -273,7 +273,7 @@ void EffectUnitBuilder::collect_glsl() {
       PresumedLocation at = sm_.presumed(toks_[code.first - 1].loc);
       while (code.first < code.last && toks_[code.first].is(TokenKind::identifier) &&
              sm_.presumed(toks_[code.first].loc).line == at.line)
-        text.version += " " + std::string(toks_[code.first++].text());
+        text.version.append(" ").append(toks_[code.first++].text());
     }
     detail::ShaderTextWriter w(sm_);
     for (uint32_t i = code.first; i < code.last && i < toks_.size(); ++i) w.token(toks_[i]);

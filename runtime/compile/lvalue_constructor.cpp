@@ -77,7 +77,8 @@ std::vector<LvalueConstructor> find_lvalue_constructors(const std::vector<Token>
     c.temporary = "fx_lvalue" + std::to_string(out.size());
     uint32_t offset = 0;
     for (auto [name, size] : parts) {
-      c.assignments += " " + std::string(name) + " = " + c.temporary + "." + std::string("xyzw").substr(offset, size) + ";";
+      c.assignments.append(" ").append(name).append(" = ").append(c.temporary).append(".");
+      c.assignments.append(std::string_view("xyzw").substr(offset, size)).append(";");
       offset += size;
     }
     out.push_back(std::move(c));

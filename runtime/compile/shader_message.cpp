@@ -113,7 +113,7 @@ std::vector<ShaderMessage> parse_info_log(std::string_view log) {
     if (!prefix) {
       if (merge_column_line(line, out)) continue;
       // Other continuation lines belong to the previous message.
-      if (!out.empty()) out.back().text += "\n" + std::string(line);
+      if (!out.empty()) out.back().text.append("\n").append(line);
       continue;
     }
     ShaderMessage m;
@@ -167,8 +167,11 @@ void report_messages(const std::vector<ShaderMessage>& messages, const ShaderLoc
   for (const ShaderMessage& m : messages) {
     SourceLocation loc = resolve ? resolve(m.file, m.line, m.column) : SourceLocation{};
     std::string text = m.text;
-    if (!loc.valid() && !m.file.empty())
-      text = m.file + ":" + std::to_string(m.line) + (m.column ? ":" + std::to_string(m.column) : "") + ": " + text;
+    if (!loc.valid() && !m.file.empty()) {
+      std::string where = m.file + ":" + std::to_string(m.line);
+      if (m.column) where.append(":").append(std::to_string(m.column));
+      text = where + ": " + text;
+    }
     bool link = m.file.empty() && m.text.find("Linking") != std::string::npos;
     const char* id = m.severity == Severity::warning ? "shader-compile-warning"
                      : m.severity == Severity::note  ? "shader-compile-note"

@@ -7,6 +7,8 @@
 #include <thread>
 
 #include <unistd.h>
+
+#define XXH_INLINE_ALL  // xxHash header-only: fxkit links no libxxhash
 #include <xxhash.h>
 
 #include "shader_serialize.h"

@@ -321,7 +321,11 @@ struct ParameterStore::Impl {
   // Every node index of this store mapped to `other`'s node with the same path and type.
   std::vector<uint32_t> match_into(const Impl& other) const;
 
-  std::string describe(uint32_t i) const { return "'" + path(i) + "' (" + nodes[i].type.to_string() + ")"; }
+  std::string describe(uint32_t i) const {
+    std::string text = "'";
+    text.append(path(i)).append("' (").append(nodes[i].type.to_string()).append(")");
+    return text;
+  }
 };
 
 }  // namespace fx

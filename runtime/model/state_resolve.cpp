@@ -293,9 +293,10 @@ bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveConte
                        : info->type == StateValueType::sampler ? TypeClass::sampler
                                                                : TypeClass::matrix;
       if (t.cls != want && t.cls != TypeClass::error) {
-        ctx.diags.error("state-type-mismatch", value->range,
-                        "'" + std::string(info->name) + "' needs a " + std::string(to_string(info->type)) + ", '" +
-                            ctx.model.parameters[p].name + "' is a " + t.to_string());
+        std::string message = "'";
+        message.append(info->name).append("' needs a ").append(to_string(info->type)).append(", '");
+        message.append(ctx.model.parameters[p].name).append("' is a ").append(t.to_string());
+        ctx.diags.error("state-type-mismatch", value->range, std::move(message));
         return false;
       }
       out.kind = StateValueKind::parameter;

@@ -182,7 +182,7 @@ std::string Type::to_string() const {
     case TypeClass::shader:
     case TypeClass::state_object: s = object_kind; break;
   }
-  for (uint32_t d : array_dims) s += "[" + std::to_string(d) + "]";
+  for (uint32_t d : array_dims) s.append("[").append(std::to_string(d)).append("]");
   return s;
 }
 

@@ -7,7 +7,7 @@
 #include <cerrno>
 #include <ctime>
 
-#define XXH_INLINE_ALL
+#define XXH_INLINE_ALL  // xxHash header-only: fxkit links no libxxhash
 #include <xxhash.h>
 
 namespace fx::detail {

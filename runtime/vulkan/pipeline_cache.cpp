@@ -1,6 +1,7 @@
 // PipelineCache: keyed graphics pipelines (static or dynamic-state path) and persistence.
 #include "fx/vulkan/pipeline_cache.h"
 
+#define XXH_INLINE_ALL  // xxHash header-only: fxkit links no libxxhash
 #include <xxhash.h>
 
 #include <cstring>

@@ -1,6 +1,7 @@
 // PipelineState hashing, dynamic-state masking and the dynamic state list.
 #include "fx/vulkan/pipeline_state.h"
 
+#define XXH_INLINE_ALL  // xxHash header-only: fxkit links no libxxhash
 #include <xxhash.h>
 
 #include <bit>

@@ -1,6 +1,7 @@
 // SamplerCache: device-clamped sampler creation keyed by description bytes.
 #include "fx/vulkan/sampler_cache.h"
 
+#define XXH_INLINE_ALL  // xxHash header-only: fxkit links no libxxhash
 #include <xxhash.h>
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 // ShaderProgram: modules, descriptor set layout and pipeline layout from linked reflection.
 #include "fx/vulkan/shader_program.h"
 
+#define XXH_INLINE_ALL  // xxHash header-only: fxkit links no libxxhash
 #include <xxhash.h>
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 // Vertex layout matching by semantic, and mesh library layouts in Vulkan formats.
 #include "fx/vulkan/vertex_layout.h"
 
+#define XXH_INLINE_ALL  // xxHash header-only: fxkit links no libxxhash
 #include <xxhash.h>
 
 #include <algorithm>

@@ -134,7 +134,7 @@ TEST(PreprocessorMacros, SelfReferenceDoesNotRecurse) {
 TEST(PreprocessorMacros, NamesAmongManyPlainTokensExpand) {
   Pp p;
   std::string plain;
-  for (int i = 0; i < 300; ++i) plain += "a" + std::to_string(i) + " ";
+  for (int i = 0; i < 300; ++i) plain.append("a").append(std::to_string(i)).append(" ");
   const std::string& expected = plain;
   EXPECT_EQ(p.run("#define N 4\n#define SCALE(x) (x)\n" + plain + "N " + plain + "SC\\\nALE(1) " +
                   plain + "N\n"),

@@ -200,7 +200,7 @@ TEST_P(FileWatcherTest, BurstOfTwentyWritesIsOneEvent) {
   std::vector<FileEvent> seen;
   auto start = std::chrono::steady_clock::now();
   for (int i = 1; i <= 20; ++i) {
-    save_truncate_write(fx, "v" + std::to_string(i));
+    save_truncate_write(fx, std::string("v").append(std::to_string(i)));
     // Polling between writes lets the watcher see the burst as it happens.
     for (FileEvent& e : w.poll(0ms)) seen.push_back(e);
   }
