@@ -87,18 +87,17 @@ class PublicApiTest : public VulkanTest {
 TEST_F(PublicApiTest, WrappedDeviceLoadsSelectsSetsDrawsAndReadsBack) {
   Rig r = rig();
   ASSERT_TRUE(r) << text(r.errors);
-  auto& [device, mesh, image, errors] = r;
-  fxkit::Effect effect = device->load(write_effect("api_lit.fx", lit_effect()));
+  fxkit::Effect effect = r.device->load(write_effect("api_lit.fx", lit_effect()));
   ASSERT_TRUE(effect.ok()) << text(effect.messages());
-  EXPECT_GT(effect.set_scene(fxkit::Scene::framing(mesh->radius(), 1.0f)), 0u);
+  EXPECT_GT(effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f)), 0u);
 
   fxkit::Technique technique = effect.select();
   EXPECT_EQ(technique.name(), "lit");
-  const auto orange = draw(*device, technique, *mesh, *image);
+  const auto orange = draw(*r.device, technique, *r.mesh, *r.image);
   EXPECT_GT(orange[0], orange[2] + 40) << "the default tint is orange";
 
   ASSERT_TRUE(effect.set(effect.param("Tint"), {0.1f, 0.2f, 0.9f, 1.0f}));
-  const auto blue = draw(*device, technique, *mesh, *image);
+  const auto blue = draw(*r.device, technique, *r.mesh, *r.image);
   EXPECT_GT(blue[2], blue[0] + 40) << "the tint set through the handle is drawn";
   EXPECT_FALSE(effect.set(effect.param("Tint"), 1.0f)) << "a float for a float4 is refused";
   EXPECT_FALSE(effect.messages().empty());
@@ -165,12 +164,11 @@ TEST_F(PublicApiTest, TheStatedWindingDecidesWhichFacesTheEffectCulls) {
   for (int i = 0; i < 2; ++i) {
     Rig r = rig(windings[i]);
     ASSERT_TRUE(r) << text(r.errors);
-    auto& [device, mesh, image, errors] = r;
-    fxkit::Effect effect = device->load(write_effect("api_cull.fx", lit_effect("1, 1, 1")));
+    fxkit::Effect effect = r.device->load(write_effect("api_cull.fx", lit_effect("1, 1, 1")));
     ASSERT_TRUE(effect.ok()) << text(effect.messages());
-    effect.set_scene(fxkit::Scene::framing(mesh->radius(), 1.0f));
+    effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
     fxkit::Technique t = effect.technique("lit");
-    centre[i] = draw(*device, t, *mesh, *image);
+    centre[i] = draw(*r.device, t, *r.mesh, *r.image);
   }
   EXPECT_GT(int(centre[0][0]), int(centre[1][0]) + 60) << int(centre[0][0]) << " vs " << int(centre[1][0]);
 }
@@ -178,22 +176,21 @@ TEST_F(PublicApiTest, TheStatedWindingDecidesWhichFacesTheEffectCulls) {
 TEST_F(PublicApiTest, BeginFrameSwapsInAnEditAndKeepsTheLastGoodEffectAfterABrokenOne) {
   Rig r = rig();
   ASSERT_TRUE(r) << text(r.errors);
-  auto& [device, mesh, image, errors] = r;
   const std::string path = write_effect("api_reload.fx", lit_effect());
-  fxkit::Effect effect = device->load(path);
+  fxkit::Effect effect = r.device->load(path);
   ASSERT_TRUE(effect.ok()) << text(effect.messages());
-  const fxkit::Scene scene = fxkit::Scene::framing(mesh->radius(), 1.0f);
+  const fxkit::Scene scene = fxkit::Scene::framing(r.mesh->radius(), 1.0f);
   effect.set_scene(scene);
   fxkit::Technique technique = effect.select();
-  const auto before = draw(*device, technique, *mesh, *image);
+  const auto before = draw(*r.device, technique, *r.mesh, *r.image);
 
   auto reload_after = [&](const std::string& text) {
     std::ofstream(path, std::ios::trunc) << text;
     std::vector<fxkit::Reload> reloads;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     while (reloads.empty() && std::chrono::steady_clock::now() < deadline) {
-      device->wait_for_reload(std::chrono::milliseconds(20));
-      reloads = device->begin_frame();
+      r.device->wait_for_reload(std::chrono::milliseconds(20));
+      reloads = r.device->begin_frame();
     }
     return reloads;
   };
@@ -203,13 +200,13 @@ TEST_F(PublicApiTest, BeginFrameSwapsInAnEditAndKeepsTheLastGoodEffectAfterABrok
   ASSERT_FALSE(failed[0].messages.empty());
   EXPECT_EQ(failed[0].messages[0].file, path);
   EXPECT_GT(failed[0].messages[0].line, 0u);
-  EXPECT_EQ(draw(*device, technique, *mesh, *image), before) << "the last good version draws";
+  EXPECT_EQ(draw(*r.device, technique, *r.mesh, *r.image), before) << "the last good version draws";
 
   auto reloaded = reload_after(lit_effect("0.1, 0.9, 0.1"));
   ASSERT_EQ(reloaded.size(), 1u);
   EXPECT_EQ(reloaded[0].kind, fxkit::Reload::Kind::reloaded) << reloaded[0].str();
   effect.set_scene(scene);
-  const auto green = draw(*device, technique, *mesh, *image);
+  const auto green = draw(*r.device, technique, *r.mesh, *r.image);
   EXPECT_GT(green[1], green[0] + 40) << "the edited default tint is drawn";
 }
 
