@@ -26,6 +26,13 @@ bool kept(detail::EffectState& s, const fx::ParamStatus& status) {
   return false;
 }
 
+// Effect::set_matrix past its per-object path: the checked store and its status.
+[[gnu::noinline]] bool set_matrix_checked(detail::EffectState* s, Param p, const float* m16, MatrixOrder order) {
+  if (!s || !s->store) return false;
+  const fx::ParamStatus status = s->store->set_matrix(to_fx(p), std::span<const float>(m16, 16), to_fx(order));
+  return status || kept(*s, status);
+}
+
 }  // namespace
 
 bool Effect::ok() const { return state_ && state_->handle.ok(); }
@@ -111,10 +118,11 @@ bool Effect::set(Param p, std::span<const float> values) {
 }
 
 bool Effect::set_matrix(Param p, const float* m16, MatrixOrder order) {
-  fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  if (!store) return false;
-  const fx::ParamStatus status = store->set_matrix(to_fx(p), std::span<const float>(m16, 16), to_fx(order));
-  return status || kept(*state_, status);
+  // The per-object path with nothing to save or report; the rest out of line.
+  detail::EffectState* s = state_.get();
+  if (s && s->store && s->store->set_matrix_hot(to_fx(p), m16, to_fx(order))) [[likely]]
+    return true;
+  return set_matrix_checked(s, p, m16, order);
 }
 
 bool Effect::get(Param p, std::span<float> out) const {

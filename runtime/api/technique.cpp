@@ -80,18 +80,15 @@ bool Technique::begin(VkCommandBuffer cmd, const VkViewport& viewport, const VkR
 }
 
 bool Technique::apply(uint32_t pass) {
+  // A tail call: problems stay in the sink until end() keeps them.
   detail::EffectState* s = effect_.get();
-  if (!s || !s->recording) [[unlikely]]
-    return false;
-  if (s->recording->apply(pass, 0, s->sink)) [[likely]]
-    return true;
-  s->keep_problems();
-  return false;
+  return s && s->recording && s->recording->apply(pass, 0, s->sink);
 }
 
 void Technique::end() {
   if (!effect_) return;
   if (effect_->recording) effect_->recording->end();
+  if (!effect_->sink.diagnostics().empty()) effect_->keep_problems();
   effect_->recording = nullptr;
   effect_->recording_version.reset();
 }

@@ -124,6 +124,12 @@ class ParameterStore {
     if (store_hot(p, v, order) || set_matrix_fast(p, v.data(), v.size(), order)) return {};
     return set_matrix_checked(p, v, order);
   }
+  // set_matrix's per-object path alone, for wrappers that keep their own slow path out of
+  // line: true when it stored one 16-float matrix; false means nothing was done (call
+  // set_matrix for the checked path and its status).
+  bool set_matrix_hot(Param p, const float* m16, HostMatrixOrder order) {
+    return store_hot(p, std::span<const float>(m16, 16), order);
+  }
   ParamStatus set_string(Param p, std::string_view v);
   // Getters fill `out` (its size must match the handle's component count).
   ParamStatus get(Param p, float& out) const;
