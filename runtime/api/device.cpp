@@ -105,6 +105,7 @@ std::unique_ptr<detail::DeviceState> make_state(fx::vk::Context ctx, const Devic
   fx::vk::ReloadBackendDesc desc;
   desc.formats = s->formats;
   desc.binding.target = detail::pass_target(options.target);
+  if (!options.dynamic_state) desc.binding.dynamic = fx::vk::DynamicStateSet::none();
   const uint32_t defaults = options.target.default_attribute_binding;
   desc.vertex_layout = [layout = options.target.vertex_layout, defaults](std::span<const fx::InterfaceVariable> in) {
     return defaults == Target::kNoBinding ? layout : fx::vk::with_default_attributes(layout, in, defaults);

@@ -162,6 +162,7 @@ int bench_apply(const BenchArgs& args) {
     device_options.target.front_faces = fxkit::Winding::counter_clockwise;
     device_options.target.y_flip = fxkit::YFlip::negative_viewport;
     device_options.watch = false;
+    device_options.dynamic_state = false;  // static pipelines, as the hand-written path
     device_options.uniform_bytes_per_frame = 16u << 20;
     std::vector<fxkit::Message> errors;
     auto device = fxkit::Device::create({ctx->instance(), ctx->physical_device(), ctx->device(), ctx->queue(),
@@ -397,12 +398,18 @@ int bench_apply(const BenchArgs& args) {
       return ms;
     };
     std::vector<double> fx_ms, raw_ms, binding_ms;
-    const int frames = std::max(args.repeats, 1) * 4;
+    const int frames = std::max(args.repeats, 1) * 6;
     run(true), run(false), run_binding();  // warm-up: texture uploads, first-use pipeline state
+    // The three paths in turn, each frame starting with the next one, so none always runs
+    // after the same other (what the previous frame left in the caches differs by path).
     for (int f = 0; f < frames; ++f) {
-      binding_ms.push_back(run_binding());
-      fx_ms.push_back(run(true));
-      raw_ms.push_back(run(false));
+      for (int k = 0; k < 3; ++k) {
+        switch ((f + k) % 3) {
+          case 0: fx_ms.push_back(run(true)); break;
+          case 1: raw_ms.push_back(run(false)); break;
+          default: binding_ms.push_back(run_binding()); break;
+        }
+      }
     }
     if (!ok) return report(sink), kInputErrors;
     fxkit::ApplyStats stats;

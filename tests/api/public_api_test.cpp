@@ -54,11 +54,11 @@ struct Rig {
 
 class PublicApiTest : public VulkanTest {
  protected:
-  Rig rig(fxkit::Winding winding = fxkit::Winding::counter_clockwise) {
+  Rig rig(const fxkit::DeviceOptions& o = options(), uint32_t size = 32) {
     Rig r;
-    r.device = fxkit::Device::create(handles(), options(winding), r.errors);
+    r.device = fxkit::Device::create(handles(), o, r.errors);
     if (r.device) r.mesh = fxkit::Mesh::create(*r.device, "sphere", r.errors);
-    if (r.device) r.image = fxkit::Offscreen::create(*r.device, 32, 32, r.errors);
+    if (r.device) r.image = fxkit::Offscreen::create(*r.device, size, size, r.errors);
     return r;
   }
   fxkit::VulkanHandles handles() {
@@ -162,7 +162,7 @@ TEST_F(PublicApiTest, TheStatedWindingDecidesWhichFacesTheEffectCulls) {
   std::array<uint8_t, 3> centre[2];
   const fxkit::Winding windings[2] = {fxkit::Winding::counter_clockwise, fxkit::Winding::clockwise};
   for (int i = 0; i < 2; ++i) {
-    Rig r = rig(windings[i]);
+    Rig r = rig(options(windings[i]));
     ASSERT_TRUE(r) << text(r.errors);
     fxkit::Effect effect = r.device->load(write_effect("api_cull.fx", lit_effect("1, 1, 1")));
     ASSERT_TRUE(effect.ok()) << text(effect.messages());
@@ -229,13 +229,9 @@ technique coloured { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader =
     EXPECT_FALSE(effect.ok());
     EXPECT_NE(text(effect.messages()).find("reads COLOR"), std::string::npos) << text(effect.messages());
   }
-  Rig r;
   auto o = options();
   o.target.default_attribute_binding = 1;
-  r.device = fxkit::Device::create(handles(), o, r.errors);
-  ASSERT_TRUE(r.device) << text(r.errors);
-  r.mesh = fxkit::Mesh::create(*r.device, "sphere", r.errors);
-  r.image = fxkit::Offscreen::create(*r.device, 32, 32, r.errors);
+  Rig r = rig(o);
   ASSERT_TRUE(r) << text(r.errors);
   fxkit::Effect effect = r.device->load(path);
   ASSERT_TRUE(effect.ok()) << text(effect.messages());
@@ -245,6 +241,28 @@ technique coloured { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader =
   EXPECT_NEAR(int(centre[0]), 128, 2);
   EXPECT_EQ(int(centre[1]), 0);
   EXPECT_EQ(int(centre[2]), 0);
+}
+
+TEST_F(PublicApiTest, WithoutDynamicStateEveryStateIsInThePipeline) {
+  // Two techniques with different cull and depth states, one frame each: with dynamic state
+  // the states are set by vkCmdSet* where the device has extended dynamic state; without,
+  // they are in the pipelines and only viewport and scissor are set.
+  uint64_t calls[2] = {};
+  for (int dynamic = 0; dynamic < 2; ++dynamic) {
+    auto o = options();
+    o.dynamic_state = dynamic == 1;
+    Rig r = rig(o, 16);
+    ASSERT_TRUE(r) << text(r.errors);
+    fxkit::Effect effect = r.device->load(write_effect("api_dynamic.fx", lit_effect("1, 1, 1", "None") +
+        "technique culled { pass p0 { CullMode = CW; ZEnable = false; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n"));
+    ASSERT_TRUE(effect.ok()) << text(effect.messages());
+    fxkit::Technique lit = effect.technique("lit"), culled = effect.technique("culled");
+    draw(*r.device, lit, *r.mesh, *r.image);
+    draw(*r.device, culled, *r.mesh, *r.image);
+    calls[dynamic] = effect.stats().dynamic_state_calls;
+  }
+  EXPECT_EQ(calls[0], 4u) << "static pipelines: only viewport and scissor, at each of the two begins";
+  if (ctx().features().extended_dynamic_state) EXPECT_GT(calls[1], calls[0]);
 }
 
 TEST(PublicApiHeadless, HeadlessDeviceReportsValidationThroughMessages) {

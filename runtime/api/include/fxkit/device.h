@@ -48,6 +48,10 @@ struct DeviceOptions {
   // sets it allocates. Running out is a vk-uniform-ring-full / vk-descriptor-pool-full error.
   uint32_t uniform_bytes_per_frame = 4u << 20;
   uint32_t descriptor_sets_per_frame = 1024;
+  // Pass states the device can set dynamically (extended dynamic state) are set per draw, so
+  // one pipeline serves many state combinations; false bakes every state into its pipeline
+  // (more pipelines, as hand-written Vulkan usually does).
+  bool dynamic_state = true;
   std::string cache_dir{};                  // SPIR-V cache on disk; "": in memory only
 };
 
