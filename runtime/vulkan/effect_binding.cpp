@@ -38,6 +38,7 @@ struct EffectBinding::Pass {
   std::vector<uint32_t> ring_offsets;  // of each block's last write, parallel to `blocks`
   std::vector<ImageSlot> images;
   std::vector<std::optional<VertexInput>> inputs;  // per vertex layout id
+  SourceRange vertex_shader;  // the state naming the vertex shader (where input errors point)
   // Pipelines per vertex layout id for `pipeline_formats`: pipelines live as long as the
   // binding, so apply() looks the key up once per layout and format change, not per call.
   RenderingFormats pipeline_formats;
@@ -155,6 +156,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
       }
       auto pass = std::make_unique<Pass>();
       pass->program = &program;
+      if (const StageUnit* vs = unit->find(ShaderStage::vertex)) pass->vertex_shader = vs->range;
       pass->state = *state;
       pass->layout = program.layout;
       make_names_unique(pass->layout);
@@ -301,7 +303,13 @@ const VertexInput* EffectBinding::vertex_input(Pass& pass, uint32_t layout, Diag
     return nullptr;
   }
   if (pass.inputs.size() <= layout) pass.inputs.resize(layouts_.size());
-  if (!pass.inputs[layout]) pass.inputs[layout] = match_vertex_layout(layouts_[layout], pass.shader.vertex_inputs(), sink);
+  if (!pass.inputs[layout]) {
+    // Located at the pass's VertexShader state, so the error reads as a line of the effect.
+    DiagnosticSink matched;
+    pass.inputs[layout] = match_vertex_layout(layouts_[layout], pass.shader.vertex_inputs(), matched);
+    for (const Diagnostic& d : matched.diagnostics())
+      sink.report(d.severity, d.id, d.range.begin.valid() ? d.range : pass.vertex_shader, d.message);
+  }
   return pass.inputs[layout] ? &*pass.inputs[layout] : nullptr;
 }
 

@@ -4,6 +4,7 @@
 // the winding convention, reloads through begin_frame().
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 
@@ -227,7 +228,13 @@ technique coloured { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader =
     ASSERT_TRUE(device) << text(errors);
     fxkit::Effect effect = device->load(path);
     EXPECT_FALSE(effect.ok());
-    EXPECT_NE(text(effect.messages()).find("reads COLOR"), std::string::npos) << text(effect.messages());
+    const auto messages = effect.messages();
+    auto missing = std::find_if(messages.begin(), messages.end(),
+                                [](const fxkit::Message& m) { return m.code == "vk-vertex-attribute-missing"; });
+    ASSERT_NE(missing, messages.end()) << text(messages);
+    EXPECT_NE(missing->text.find("reads COLOR"), std::string::npos) << missing->rendered;
+    EXPECT_EQ(missing->file, path) << "located at the VertexShader state";
+    EXPECT_EQ(missing->line, 6u) << missing->rendered;
   }
   auto o = options();
   o.target.default_attribute_binding = 1;
@@ -263,6 +270,61 @@ TEST_F(PublicApiTest, WithoutDynamicStateEveryStateIsInThePipeline) {
   }
   EXPECT_EQ(calls[0], 4u) << "static pipelines: only viewport and scissor, at each of the two begins";
   if (ctx().features().extended_dynamic_state) EXPECT_GT(calls[1], calls[0]);
+}
+
+TEST_F(PublicApiTest, FramesInFlightOverlapWithoutTouchingWhatTheGpuReads) {
+  // An engine's loop: two frames in flight, each slot waited by its fence only before the
+  // slot is recorded again; nothing changes between frames, so fxkit could be tempted to
+  // reuse the previous frame's uniform data and descriptor sets, which the GPU may still be
+  // reading when that slot's memory is recycled (VUID-vkResetDescriptorPool-descriptorPool-00313).
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  fxkit::Effect effect = r.device->load(write_effect("api_in_flight.fx", lit_effect()));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  fxkit::Technique technique = effect.select();
+  VkCommandPoolCreateInfo pool_info{};
+  pool_info.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+  pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  pool_info.queueFamilyIndex = ctx().queue_family();
+  VkCommandPool pool = VK_NULL_HANDLE;
+  ASSERT_EQ(vkCreateCommandPool(ctx().device(), &pool_info, nullptr, &pool), VK_SUCCESS);
+  VkCommandBuffer cmds[2];
+  VkCommandBufferAllocateInfo alloc{};
+  alloc.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+  alloc.commandPool = pool;
+  alloc.commandBufferCount = 2;
+  ASSERT_EQ(vkAllocateCommandBuffers(ctx().device(), &alloc, cmds), VK_SUCCESS);
+  VkFence fences[2];
+  VkFenceCreateInfo fence_info{};
+  fence_info.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+  fence_info.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+  for (VkFence& f : fences) ASSERT_EQ(vkCreateFence(ctx().device(), &fence_info, nullptr, &f), VK_SUCCESS);
+  for (int frame = 0; frame < 8; ++frame) {
+    const int slot = frame % 2;
+    vkWaitForFences(ctx().device(), 1, &fences[slot], VK_TRUE, UINT64_MAX);  // frame - 2 is done
+    vkResetFences(ctx().device(), 1, &fences[slot]);
+    r.device->begin_frame();
+    VkCommandBufferBeginInfo begin{};
+    begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+    vkBeginCommandBuffer(cmds[slot], &begin);
+    r.image->begin(cmds[slot]);
+    ASSERT_TRUE(technique.begin(cmds[slot], r.image->viewport(), r.image->scissor()));
+    for (uint32_t p = 0; p < technique.pass_count(); ++p)
+      if (technique.apply(p)) r.mesh->draw(cmds[slot]);
+    technique.end();
+    r.image->end(cmds[slot]);
+    vkEndCommandBuffer(cmds[slot]);
+    VkSubmitInfo submit{};
+    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cmds[slot];
+    ASSERT_EQ(vkQueueSubmit(ctx().queue(), 1, &submit, fences[slot]), VK_SUCCESS);
+  }
+  vkWaitForFences(ctx().device(), 2, fences, VK_TRUE, UINT64_MAX);
+  EXPECT_EQ(ctx().validation_error_count(), 0u) << describe_messages(ctx());
+  for (VkFence f : fences) vkDestroyFence(ctx().device(), f, nullptr);
+  vkDestroyCommandPool(ctx().device(), pool, nullptr);
 }
 
 TEST(PublicApiHeadless, HeadlessDeviceReportsValidationThroughMessages) {

@@ -46,10 +46,10 @@ class FrameResources {
   // Frame counter (0 before the first begin_frame()).
   uint64_t frame() const { return frame_; }
   uint32_t frames_in_flight() const { return frames_in_flight_; }
-  // Whether data written (or a set allocated) in frame `written` is still intact now.
-  bool still_valid(uint64_t written) const {
-    return written != 0 && written <= frame_ && frame_ - written < frames_in_flight_;
-  }
+  // Whether data written (or a set allocated) in frame `written` may be used by the frame
+  // being recorded: only this frame's. An earlier frame's data is still intact, but its slot
+  // is recycled once that frame's fence is waited, while this frame may still be reading it.
+  bool still_valid(uint64_t written) const { return written != 0 && written == frame_; }
 
   // Copies `bytes` into this frame's ring slice. "vk-uniform-ring-full" when the slice has
   // no room (raise FrameResourcesDesc::uniform_bytes_per_frame).
