@@ -62,6 +62,7 @@ struct EffectState {
   };
   std::vector<AppTexture> app_textures;
   uint64_t textures_serial = 0;  // the version app_textures were bound to
+  uint64_t scene_checked = 0;     // the version set_scene() last checked for unbound transforms
   fx::DiagnosticSink sink;        // problems of set/apply calls, moved to `problems`
   std::vector<Message> problems;  // the newest kRecentProblems of them
   static constexpr size_t kRecentProblems = 32;

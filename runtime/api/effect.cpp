@@ -117,6 +117,11 @@ bool Effect::set(Param p, std::span<const float> values) {
   return store && kept(*state_, store->set(to_fx(p), values));
 }
 
+bool Effect::set(Param p, std::span<const int32_t> values) {
+  fx::ParameterStore* store = state_ ? state_->store : nullptr;
+  return store && kept(*state_, store->set(to_fx(p), values));
+}
+
 bool Effect::set_matrix(Param p, const float* m16, MatrixOrder order) {
   // The per-object path with nothing to save or report; the rest out of line.
   detail::EffectState* s = state_.get();
@@ -126,6 +131,11 @@ bool Effect::set_matrix(Param p, const float* m16, MatrixOrder order) {
 }
 
 bool Effect::get(Param p, std::span<float> out) const {
+  fx::ParameterStore* store = state_ ? state_->store : nullptr;
+  return store && store->get(to_fx(p), out);
+}
+
+bool Effect::get(Param p, std::span<int32_t> out) const {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
   return store && store->get(to_fx(p), out);
 }
@@ -144,7 +154,19 @@ uint32_t Effect::set_scene(const Scene& scene) {
   std::copy_n(scene.projection, 16, &view.projection[0][0]);
   view.eye = {scene.eye[0], scene.eye[1], scene.eye[2]};
   view.time = scene.time;
-  return fx::vk::set_standard_semantics(*version->params, *version->model, view);
+  const uint32_t set = fx::vk::set_standard_semantics(*version->params, *version->model, view);
+  // Once per version: transforms the shaders read that nothing bound draw nothing.
+  if (state_->scene_checked != version->serial && version->programs) {
+    state_->scene_checked = version->serial;
+    const auto read = fx::vk::parameters_read(*version->programs, fx::kNoIndex);
+    for (const std::string& name : fx::vk::zero_transforms(*version->params, *version->model, read))
+      state_->sink.report(fx::Severity::warning, "scene-transform-unbound", {},
+                          "'" + name + "' is read by the shaders but set_scene() left it zero (no standard semantic, "
+                          "and not a name docs/parameters.md lists): set it, or give it a semantic such as "
+                          "WORLDVIEWPROJECTION");
+    state_->keep_problems();
+  }
+  return set;
 }
 
 ApplyStats Effect::stats() const {

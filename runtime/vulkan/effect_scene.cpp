@@ -8,6 +8,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "fx/ascii_case.h"
+
 namespace fx::vk {
 namespace {
 
@@ -28,7 +30,57 @@ bool set_matrix(ParameterStore& params, Param p, const Type& type, const glm::ma
   return bool(params.set_matrix(p, sub));
 }
 
+// Names real effects give scene parameters they declare without a semantic, lower case.
+// Sources: the DirectX SDK samples (g_m*, g_v*, g_f*), FX Composer and NVIDIA's shader
+// library (*Xf), RenderMonkey (mat*), and engine conventions (MVP, ModelView).
+struct NamedSemantic {
+  const char* name;
+  const char* semantic;
+};
+constexpr NamedSemantic kSceneNames[] = {
+    {"g_mworldviewprojection", "WORLDVIEWPROJECTION"}, {"g_mworldviewproj", "WORLDVIEWPROJECTION"},
+    {"g_mwvp", "WORLDVIEWPROJECTION"}, {"g_worldviewproj", "WORLDVIEWPROJECTION"},
+    {"g_worldviewprojection", "WORLDVIEWPROJECTION"}, {"worldviewprojection", "WORLDVIEWPROJECTION"},
+    {"worldviewproj", "WORLDVIEWPROJECTION"}, {"matworldviewproj", "WORLDVIEWPROJECTION"},
+    {"matworldviewprojection", "WORLDVIEWPROJECTION"}, {"matwvp", "WORLDVIEWPROJECTION"},
+    {"mwvp", "WORLDVIEWPROJECTION"}, {"wvp", "WORLDVIEWPROJECTION"}, {"gwvp", "WORLDVIEWPROJECTION"},
+    {"wvpxf", "WORLDVIEWPROJECTION"}, {"modelviewprojection", "WORLDVIEWPROJECTION"},
+    {"modelviewproj", "WORLDVIEWPROJECTION"}, {"mvp", "WORLDVIEWPROJECTION"},
+    {"g_mworld", "WORLD"}, {"g_world", "WORLD"}, {"world", "WORLD"}, {"matworld", "WORLD"}, {"mworld", "WORLD"},
+    {"gworld", "WORLD"}, {"worldxf", "WORLD"}, {"model", "WORLD"}, {"objecttoworld", "WORLD"},
+    {"g_mview", "VIEW"}, {"g_view", "VIEW"}, {"view", "VIEW"}, {"matview", "VIEW"}, {"mview", "VIEW"},
+    {"gview", "VIEW"}, {"viewxf", "VIEW"},
+    {"g_mprojection", "PROJECTION"}, {"g_mproj", "PROJECTION"}, {"g_projection", "PROJECTION"},
+    {"g_proj", "PROJECTION"}, {"projection", "PROJECTION"}, {"proj", "PROJECTION"},
+    {"matprojection", "PROJECTION"}, {"matproj", "PROJECTION"}, {"mproj", "PROJECTION"}, {"projxf", "PROJECTION"},
+    {"g_mworldview", "WORLDVIEW"}, {"g_worldview", "WORLDVIEW"}, {"worldview", "WORLDVIEW"},
+    {"matworldview", "WORLDVIEW"}, {"mworldview", "WORLDVIEW"}, {"modelview", "WORLDVIEW"}, {"wvxf", "WORLDVIEW"},
+    {"g_mviewprojection", "VIEWPROJECTION"}, {"g_mviewproj", "VIEWPROJECTION"}, {"g_viewproj", "VIEWPROJECTION"},
+    {"g_viewprojection", "VIEWPROJECTION"}, {"viewprojection", "VIEWPROJECTION"}, {"viewproj", "VIEWPROJECTION"},
+    {"matviewproj", "VIEWPROJECTION"}, {"matviewprojection", "VIEWPROJECTION"}, {"mviewproj", "VIEWPROJECTION"},
+    {"vpxf", "VIEWPROJECTION"},
+    {"g_mworldinverse", "WORLDINVERSE"}, {"worldinverse", "WORLDINVERSE"}, {"worldi", "WORLDINVERSE"},
+    {"g_mworldinversetranspose", "WORLDINVERSETRANSPOSE"}, {"g_mworldit", "WORLDINVERSETRANSPOSE"},
+    {"worldinversetranspose", "WORLDINVERSETRANSPOSE"}, {"worldit", "WORLDINVERSETRANSPOSE"},
+    {"matworldit", "WORLDINVERSETRANSPOSE"}, {"worlditxf", "WORLDINVERSETRANSPOSE"},
+    {"g_mviewinverse", "VIEWINVERSE"}, {"viewinverse", "VIEWINVERSE"}, {"viewi", "VIEWINVERSE"},
+    {"viewixf", "VIEWINVERSE"}, {"matviewinverse", "VIEWINVERSE"},
+    {"g_veyept", "CAMERAPOSITION"}, {"g_veyepos", "CAMERAPOSITION"}, {"g_veye", "CAMERAPOSITION"},
+    {"g_eyepos", "CAMERAPOSITION"}, {"g_eyeposition", "CAMERAPOSITION"}, {"eyept", "CAMERAPOSITION"},
+    {"eyepos", "CAMERAPOSITION"}, {"eyeposition", "CAMERAPOSITION"}, {"veyepos", "CAMERAPOSITION"},
+    {"camerapos", "CAMERAPOSITION"}, {"cameraposition", "CAMERAPOSITION"}, {"g_camerapos", "CAMERAPOSITION"},
+    {"viewpos", "CAMERAPOSITION"}, {"viewposition", "CAMERAPOSITION"},
+    {"g_ftime", "TIME"}, {"g_time", "TIME"}, {"ftime", "TIME"}, {"time", "TIME"},
+};
+
 }  // namespace
+
+std::string_view semantic_by_name(std::string_view name) {
+  const std::string n = ascii_lower(name);
+  for (const NamedSemantic& e : kSceneNames)
+    if (n == e.name) return e.semantic;
+  return {};
+}
 
 SceneView frame_bounds(const MeshBounds& bounds, float aspect) {
   SceneView s;
@@ -45,7 +97,8 @@ SceneView frame_bounds(const MeshBounds& bounds, float aspect) {
   return s;
 }
 
-uint32_t set_standard_semantics(ParameterStore& params, const EffectModel& model, const SceneView& scene) {
+uint32_t set_standard_semantics(ParameterStore& params, const EffectModel& model, const SceneView& scene,
+                                std::vector<SceneBinding>* bound) {
   const glm::mat4 wv = scene.view * scene.world, vp = scene.projection * scene.view;
   const glm::mat4 wvp = scene.projection * wv;
   struct Named {
@@ -56,11 +109,13 @@ uint32_t set_standard_semantics(ParameterStore& params, const EffectModel& model
                          {"WORLDVIEW", wv}, {"VIEWPROJECTION", vp}, {"WORLDVIEWPROJECTION", wvp}};
   uint32_t set = 0;
   for (const Parameter& param : model.parameters) {
-    if (param.semantic.empty()) continue;
-    const std::string sem = upper(param.semantic);
+    const bool by_name = param.semantic.empty();
+    const std::string sem = by_name ? std::string(semantic_by_name(param.name)) : upper(param.semantic);
+    if (sem.empty() || (by_name && param.is_static())) continue;
     Param p = params.find(param.name);
     const Type* type = params.type(p);
     if (!type) continue;
+    const uint32_t before = set;
     if (type->cls == TypeClass::matrix) {
       for (const Named& b : bases) {
         const std::string base = b.name;
@@ -80,8 +135,39 @@ uint32_t set_standard_semantics(ParameterStore& params, const EffectModel& model
     } else if (sem == "TIME") {
       if (type->component_count() == 1 && type->base == BaseType::float32) set += params.set(p, scene.time) ? 1 : 0;
     }
+    if (bound && set != before) bound->push_back({param.name, sem, by_name});
   }
   return set;
+}
+
+std::vector<std::string> parameters_read(EffectPrograms& programs, uint32_t technique) {
+  std::vector<std::string> out;
+  for (const EffectPass& pass : programs.units().passes()) {
+    if ((technique != kNoIndex && pass.technique_index != technique) || !programs.is_compiled(pass)) continue;
+    const PassProgram& program = programs.program(pass);  // compiled already: a lookup
+    for (const StageProgram& stage : program.stages)
+      for (const UniformBlock& block : stage.shader.reflection.uniform_blocks)
+        for (const BlockMember& m : block.members) {
+          std::string name = m.name.substr(0, m.name.find_first_of(".["));
+          if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(std::move(name));
+        }
+  }
+  return out;
+}
+
+std::vector<std::string> zero_transforms(const ParameterStore& params, const EffectModel& model,
+                                         const std::vector<std::string>& read) {
+  std::vector<std::string> out;
+  for (const Parameter& param : model.parameters) {
+    if (param.is_static() || std::find(read.begin(), read.end(), param.name) == read.end()) continue;
+    const Param p = params.find(param.name);
+    const Type* type = params.type(p);
+    if (!type || type->cls != TypeClass::matrix || type->base != BaseType::float32) continue;
+    std::vector<float> value(type->component_count());
+    if (!params.get(p, value)) continue;
+    if (std::all_of(value.begin(), value.end(), [](float v) { return v == 0.0f; })) out.push_back(param.name);
+  }
+  return out;
 }
 
 }  // namespace fx::vk

@@ -1,5 +1,5 @@
 // `fxkit render FILE [--technique NAME|auto] [--mesh sphere|torus|quad|teapot|FILE.obj]
-//  [--size WxH] [--param NAME=VALUE]... [--validation] [--out FILE.png] [--caps X] [--frames N]`:
+//  [--size WxH] [--param NAME=VALUE]... [--validation] [--verbose] [--out FILE.png] [--caps X] [--frames N]`:
 // renders an effect headlessly (the best Vulkan device, or FXKIT_DEVICE) on a mesh framed
 // by the camera, standard semantics filled in, and writes a PNG.
 #include <algorithm>
@@ -15,6 +15,7 @@
 #include "fx/select/technique_validation.h"
 #include "fx/vulkan/effect_file.h"
 #include "fx/vulkan/effect_preview.h"
+#include "fx/vulkan/effect_scene.h"
 
 namespace fxkit {
 namespace {
@@ -23,7 +24,7 @@ struct RenderArgs {
   FrontEndFlags front_end;
   std::string file, technique = "auto", mesh = "sphere", size = "256x256", out = "render.png", caps;
   std::vector<std::string> params;
-  bool validation = false;
+  bool validation = false, verbose = false;
   int frames = 1;
 };
 
@@ -143,7 +144,19 @@ int run_render(const RenderArgs& args) {
     }
     auto inputs = fx::vk::technique_vertex_inputs(*effect->model, *effect->programs, technique);
     const uint32_t layout = binding->add_vertex_layout(preview->vertex_layout(inputs));
-    fx::vk::set_standard_semantics(*effect->params, *effect->model, preview->scene());
+    std::vector<fx::vk::SceneBinding> bound;
+    fx::vk::set_standard_semantics(*effect->params, *effect->model, preview->scene(), &bound);
+    for (const std::string& a : args.params) set_param(*effect->params, a, error);  // --param wins
+    if (args.verbose)
+      for (const fx::vk::SceneBinding& b : bound)
+        std::fprintf(stderr, "fxkit render: %s <- %s (%s)\n", b.parameter.c_str(), b.semantic.c_str(),
+                     b.by_name ? "by its name" : "by its semantic");
+    const auto read = fx::vk::parameters_read(*effect->programs, technique);
+    for (const std::string& name : fx::vk::zero_transforms(*effect->params, *effect->model, read))
+      std::fprintf(stderr,
+                   "fxkit render: warning: '%s' is read by the shaders but left zero (no standard semantic, and "
+                   "not a name docs/parameters.md lists); set it with --param\n",
+                   name.c_str());
     // The first frame pays for the driver's shader compile; later ones are timed (wall
     // clock, submit to readback) and the median is reported.
     auto image = preview->render(*binding, technique, layout, diags);
@@ -194,6 +207,7 @@ void register_render(CLI::App& app, Runner& run) {
   cmd->add_option("--mesh", args->mesh, "sphere, torus, quad, teapot or an .obj file")->capture_default_str();
   cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
   cmd->add_option("--param", args->params, "NAME=VALUE[,VALUE...] (name or semantic)");
+  cmd->add_flag("--verbose", args->verbose, "Print which parameters the scene bound, and how");
   cmd->add_flag("--validation", args->validation, "Enable the validation layers; any message fails the run");
   cmd->add_option("--out", args->out, "Output PNG")->capture_default_str();
   cmd->add_option("--caps", args->caps, caps_option_help());

@@ -343,3 +343,104 @@ TEST(PublicApiHeadless, HeadlessDeviceReportsValidationThroughMessages) {
 
 }  // namespace
 }  // namespace fx::vk::testing
+
+namespace fx::vk::testing {
+namespace {
+
+TEST_F(PublicApiTest, ParamsReflectTypesDefaultsAndAnnotations) {
+  std::vector<fxkit::Message> errors;
+  auto device = fxkit::Device::create(handles(), options(), errors);
+  ASSERT_TRUE(device) << text(errors);
+  fxkit::Effect effect = device->load(write_effect("api_params.fx", lit_effect() + R"(
+float Gloss <string UIName = "Glossiness"; string UIWidget = "Slider"; float UIMin = 1; float UIMax = 128;
+             int UISteps = 10; bool UIVisible = true;> = 32;
+int Count : LIGHTCOUNT = 3;
+float3 Lights[2] = {1, 2, 3, 4, 5, 6};
+texture DiffuseMap <string ResourceName = "brick.png";>;
+texture3D Noise;
+sampler2D DiffuseSampler = sampler_state { Texture = <DiffuseMap>; };
+string Help = "one line of help";
+)"));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  const std::vector<fxkit::ParamInfo> params = effect.params();
+  auto find = [&](const char* name) -> const fxkit::ParamInfo& {
+    auto it = std::find_if(params.begin(), params.end(), [&](const auto& p) { return p.name == name; });
+    EXPECT_NE(it, params.end()) << name;
+    return *it;
+  };
+  const fxkit::ParamInfo& wvp = find("WorldViewProjection");
+  EXPECT_EQ(wvp.semantic, "WORLDVIEWPROJECTION");
+  EXPECT_EQ(wvp.kind, fxkit::ParamKind::numeric);
+  EXPECT_EQ(wvp.rows, 4u);
+  EXPECT_EQ(wvp.columns, 4u);
+  EXPECT_EQ(wvp.components, 16u);
+  EXPECT_FALSE(wvp.has_default);
+
+  const fxkit::ParamInfo& tint = find("Tint");
+  EXPECT_EQ(tint.type, "float4");
+  EXPECT_EQ(tint.default_value, (std::vector<float>{0.9f, 0.6f, 0.3f, 1.0f}));
+  EXPECT_TRUE(tint.settable);
+  std::vector<float> now(tint.components);
+  ASSERT_TRUE(effect.set(tint.handle, {0.5f, 0.5f, 0.5f, 1.0f}));
+  ASSERT_TRUE(effect.get(tint.handle, now));
+  EXPECT_EQ(now[0], 0.5f) << "the current value is read through the handle";
+
+  const fxkit::ParamInfo& gloss = find("Gloss");
+  ASSERT_NE(gloss.annotation("UIName"), nullptr);
+  EXPECT_EQ(gloss.annotation("UIName")->kind, fxkit::Annotation::Kind::string);
+  EXPECT_EQ(gloss.annotation("UIName")->text, "Glossiness");
+  EXPECT_EQ(gloss.annotation("UIMax")->kind, fxkit::Annotation::Kind::floats);
+  EXPECT_EQ(gloss.annotation("UIMax")->number(), 128.f);
+  EXPECT_EQ(gloss.annotation("UISteps")->kind, fxkit::Annotation::Kind::ints);
+  EXPECT_EQ(gloss.annotation("UIVisible")->kind, fxkit::Annotation::Kind::boolean);
+  EXPECT_EQ(gloss.annotation("uiname"), nullptr) << "annotation names are case-sensitive";
+
+  const fxkit::ParamInfo& count = find("Count");
+  EXPECT_EQ(count.scalar, fxkit::ScalarKind::int32);
+  std::vector<int32_t> n(1);
+  ASSERT_TRUE(effect.get(count.handle, n));
+  EXPECT_EQ(n[0], 3);
+  const fxkit::ParamInfo& lights = find("Lights");
+  EXPECT_EQ(lights.elements, 2u);
+  EXPECT_EQ(lights.components, 6u);
+  const fxkit::ParamInfo& map = find("DiffuseMap");
+  EXPECT_EQ(map.kind, fxkit::ParamKind::texture);
+  EXPECT_EQ(map.resource_name, "brick.png");
+  EXPECT_EQ(find("Noise").texture_shape, "3D");
+  EXPECT_EQ(find("DiffuseSampler").kind, fxkit::ParamKind::sampler);
+  EXPECT_EQ(find("Help").kind, fxkit::ParamKind::string);
+  EXPECT_EQ(find("Help").default_text, "one line of help");
+}
+
+// DirectX SDK samples declare their transforms without semantics (BasicHLSL's
+// g_mWorldViewProjection): set_scene binds them by name, and warns about a transform it
+// cannot place.
+TEST_F(PublicApiTest, SetSceneBindsTransformsByTheirNamesAndWarnsAboutOnesLeftZero) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  auto renamed = [](std::string s, const std::string& from, const std::string& to) {
+    for (size_t at = 0; (at = s.find(from, at)) != std::string::npos; at += to.size()) s.replace(at, from.size(), to);
+    return s;
+  };
+  std::string sdk = renamed(lit_effect(), "WorldViewProjection : WORLDVIEWPROJECTION", "WorldViewProjection");
+  sdk = renamed(renamed(sdk, "World : WORLD", "World"), "World", "g_mWorld");  // g_mWorldViewProjection too
+  fxkit::Effect effect = r.device->load(write_effect("api_sdk_names.fx", sdk));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages()) << sdk;
+  EXPECT_EQ(effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f)), 2u);
+  fxkit::Technique technique = effect.select();
+  const auto lit = draw(*r.device, technique, *r.mesh, *r.image);
+  EXPECT_GT(lit[0], 40) << "the sphere is drawn with the transforms bound by name";
+  EXPECT_EQ(text(effect.messages()).find("scene-transform-unbound"), std::string::npos) << text(effect.messages());
+
+  const std::string unknown = renamed(sdk, "g_mWorldViewProjection", "g_mMyTransform");
+  fxkit::Effect unbound = r.device->load(write_effect("api_unknown_names.fx", unknown));
+  ASSERT_TRUE(unbound.ok()) << text(unbound.messages());
+  EXPECT_EQ(unbound.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f)), 1u);
+  const std::string warned = text(unbound.messages());
+  EXPECT_NE(warned.find("'g_mMyTransform' is read by the shaders but set_scene() left it zero"), std::string::npos)
+      << warned;
+  EXPECT_EQ(warned.find("'g_mWorld'"), std::string::npos) << warned;
+}
+
+}  // namespace
+}  // namespace fx::vk::testing

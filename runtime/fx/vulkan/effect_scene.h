@@ -4,7 +4,11 @@
 // VIEWINVERSE, CAMERAPOSITION, ... renders without per-effect setup.
 #pragma once
 #include <glm/glm.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
 
+#include "fx/compile/effect_programs.h"
 #include "fx/mesh.h"
 #include "fx/model/effect_model.h"
 #include "fx/model/parameter_store.h"
@@ -23,11 +27,38 @@ struct SceneView {
 // show), far enough that the bounding sphere fills about 85% of the shorter image side.
 SceneView frame_bounds(const MeshBounds& bounds, float aspect);
 
+// How set_standard_semantics gave a parameter its value.
+struct SceneBinding {
+  std::string parameter;
+  std::string semantic;  // the standard semantic it was given ("WORLDVIEWPROJECTION")
+  bool by_name = false;  // from its name (semantic_by_name), as it has no semantic
+};
+
+// The standard semantic effects mean by a parameter declared without one, from its name
+// (case-insensitive): "g_mWorldViewProjection", "WorldViewProj", "matWVP" ->
+// "WORLDVIEWPROJECTION"; "" for other names. The table (docs/parameters.md, "Scene
+// parameters by name") holds the names of the DirectX SDK samples, FX Composer, RenderMonkey
+// and common engine conventions.
+std::string_view semantic_by_name(std::string_view name);
+
 // Sets every parameter whose semantic is a standard one: WORLD, VIEW, PROJECTION, their
 // products (WORLDVIEW, VIEWPROJECTION, WORLDVIEWPROJECTION), inverses and transposes
 // (…INVERSE, …TRANSPOSE, …INVERSETRANSPOSE), CAMERAPOSITION / EYEPOSITION /
-// VIEWPOSITION (float3 or float4 with w = 1), TIME. Other parameters keep their values
-// (light directions and colours keep their effect defaults). Returns how many were set.
-uint32_t set_standard_semantics(ParameterStore& params, const EffectModel& model, const SceneView& scene);
+// VIEWPOSITION (float3 or float4 with w = 1), TIME; and every parameter with no semantic
+// whose name semantic_by_name knows, as if it had that semantic. Other parameters keep
+// their values (light directions and colours keep their effect defaults). Returns how
+// many were set; `bound` (when given) receives how each was.
+uint32_t set_standard_semantics(ParameterStore& params, const EffectModel& model, const SceneView& scene,
+                                std::vector<SceneBinding>* bound = nullptr);
+
+// The parameters the compiled passes of `technique` read (uniform block members, by
+// parameter name; kNoIndex: every pass compiled so far). Compiles nothing.
+std::vector<std::string> parameters_read(EffectPrograms& programs, uint32_t technique);
+
+// The matrix parameters among `read` (names the shaders read) whose value is all zero, in
+// declaration order: transforms nothing bound, which draw nothing (every vertex lands at
+// the origin). Parameters the effect declares as `static` are left out.
+std::vector<std::string> zero_transforms(const ParameterStore& params, const EffectModel& model,
+                                         const std::vector<std::string>& read);
 
 }  // namespace fx::vk

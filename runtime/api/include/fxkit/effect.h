@@ -58,6 +58,51 @@ struct Scene {
   static Scene framing(float radius, float aspect);
 };
 
+// An annotation of a parameter (`<float UIMin = 0;>`, `<string UIWidget = "Color";>`), with
+// its value as the file wrote it. Names are case-sensitive, as D3DX reads them.
+struct Annotation {
+  enum class Kind : uint8_t { string, floats, ints, boolean };
+  std::string name{};
+  Kind kind = Kind::string;
+  std::string text{};          // Kind::string
+  std::vector<float> values{};  // the numbers (bool: 0 or 1); empty for strings
+  // The i-th number, 0 when there is none.
+  float number(size_t i = 0) const { return i < values.size() ? values[i] : 0.f; }
+};
+
+// What a parameter holds.
+enum class ParamKind : uint8_t { numeric, structure, string, texture, sampler, other };
+// The component type of a numeric parameter (half and double read as float).
+enum class ScalarKind : uint8_t { boolean, int32, uint32, float32 };
+
+// A parameter's reflection (Effect::params): type, semantic, annotations and default.
+struct ParamInfo {
+  Param handle{};
+  std::string name{};
+  std::string semantic{};  // as written; "" when none
+  std::string type{};      // HLSL spelling: "float4x4", "float3[4]", "Texture2D", "sampler2D"
+  ParamKind kind = ParamKind::other;
+  ScalarKind scalar = ScalarKind::float32;  // numeric parameters
+  uint32_t rows = 1, columns = 1;           // float4: 1x4; float4x4: 4x4
+  uint32_t elements = 0;                    // array elements; 0 when not an array
+  uint32_t components = 0;                  // scalars in all (what get()/set() take)
+  // Textures: "1D", "2D", "3D", "CUBE" or "" (D3D9's untyped texture), and the file the
+  // effect names (ResourceName, Name or File annotation; "" when none).
+  std::string texture_shape{};
+  std::string resource_name{};
+  // The declaration's default: components in D3D order (matrices row by row), or the text
+  // of a string. Empty when the declaration has none (the value is then zero).
+  std::vector<float> default_value{};
+  std::string default_text{};
+  bool has_default = false;
+  // Whether the application can set it: in a uniform block or a resource binding (not
+  // static, not a shader or state object).
+  bool settable = false;
+  std::vector<Annotation> annotations{};
+  // The annotation called `name`, or nullptr.
+  const Annotation* annotation(std::string_view name) const;
+};
+
 // What Technique::apply recorded for an effect since its last reset_stats() (profiling).
 struct ApplyStats {
   uint64_t passes = 0;
@@ -126,6 +171,8 @@ class Effect {
 
   // By exact name, else by semantic (case-insensitive).
   Param param(std::string_view name_or_semantic) const;
+  // Every top-level parameter of the live version, in declaration order (empty when none).
+  std::vector<ParamInfo> params() const;
   // Setters: the value's shape must match the parameter's type (a float3 takes 3 floats).
   // False, with a message kept for messages(), when it does not.
   bool set(Param p, float value);
@@ -134,7 +181,11 @@ class Effect {
   bool set(Param p, std::span<const float> values);
   bool set(Param p, std::initializer_list<float> values) { return set(p, std::span<const float>(values)); }
   bool set_matrix(Param p, const float* m16, MatrixOrder order = MatrixOrder::row_major);
+  bool set(Param p, std::span<const int32_t> values);
+  // The current value of ParamInfo::components: floats for float parameters, ints for int,
+  // uint and bool ones (false when the kind or the count does not match).
   bool get(Param p, std::span<float> out) const;
+  bool get(Param p, std::span<int32_t> out) const;
   // Follows the file's default again (reloads then apply edited defaults to it).
   bool reset(Param p);
   // Every parameter whose semantic is a standard one; returns how many were set.

@@ -1,0 +1,45 @@
+// TechniquePanel: Effect::techniques() and Effect::select() as ImGui controls.
+#include "technique_panel.h"
+
+#include <imgui.h>
+
+#include <limits>
+
+void TechniquePanel::pin(const fxkit::Effect& effect, fxkit::Technique& technique, const std::string& name) {
+  pinned_ = name == "auto" ? "" : name;
+  technique = pinned_.empty() ? effect.select(criteria_) : effect.technique(pinned_);
+}
+
+void TechniquePanel::draw(const fxkit::Effect& effect, fxkit::Technique& technique) {
+  bool changed = false;
+  ImGui::TextUnformatted("Selection criteria");
+  changed |= ImGui::DragFloat("distance", &criteria_.distance, 0.1f, 0.f, 1000.f);
+  changed |= ImGui::InputText("scheme", scheme_, sizeof scheme_);
+  changed |= ImGui::Checkbox("##budget", &budget_on_);
+  ImGui::SameLine();
+  changed |= ImGui::DragFloat("budget ms", &budget_ms_, 0.01f, 0.f, 100.f);
+  changed |= ImGui::Checkbox("##error", &error_on_);
+  ImGui::SameLine();
+  changed |= ImGui::DragFloat("max error", &max_error_, 0.05f, 0.f, 255.f);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("in 8-bit levels (docs/selection.md)");
+  criteria_.scheme = scheme_;
+  criteria_.cost_budget_ms = budget_on_ ? budget_ms_ : std::numeric_limits<float>::infinity();
+  criteria_.max_error = error_on_ ? max_error_ : std::numeric_limits<float>::infinity();
+
+  ImGui::Separator();
+  if (ImGui::RadioButton("auto (selection)", pinned_.empty())) pin(effect, technique, ""), changed = false;
+  const std::string chosen = technique.name();
+  for (const fxkit::TechniqueInfo& t : effect.techniques()) {
+    ImGui::PushID(t.name.c_str());
+    if (ImGui::RadioButton("##pin", pinned_ == t.name)) pin(effect, technique, t.name), changed = false;
+    ImGui::SameLine();
+    const ImVec4 colour = t.name == chosen ? ImVec4(0.4f, 1.f, 0.4f, 1.f)
+                          : t.drawable     ? ImVec4(0.9f, 0.9f, 0.9f, 1.f)
+                                           : ImVec4(1.f, 0.45f, 0.45f, 1.f);
+    ImGui::TextColored(colour, "%s%s (%u pass%s)", t.name == chosen ? "> " : "", t.name.c_str(), t.passes,
+                       t.passes == 1 ? "" : "es");
+    if (!t.drawable) ImGui::TextWrapped("    %s", t.reason.c_str());
+    ImGui::PopID();
+  }
+  if (changed && pinned_.empty()) technique = effect.select(criteria_);
+}
