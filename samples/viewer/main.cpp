@@ -135,11 +135,6 @@ int main(int argc, char** argv) {
       glfwWaitEventsTimeout(0.1);  // minimised
       continue;
     }
-    // fxkit reuses a frame's uniform slice and descriptor sets in the next frame while both
-    // may be on the GPU, and recycles them after waiting only for the older one (validation:
-    // VUID-vkResetDescriptorPool-descriptorPool-00313): until the library holds them for
-    // every frame in flight, the viewer lets the previous frame finish first.
-    window->wait_idle();
     for (const fxkit::Reload& r : device->begin_frame()) {
       std::fputs(r.str().c_str(), stdout);
       std::fflush(stdout);

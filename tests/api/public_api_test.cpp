@@ -269,7 +269,9 @@ TEST_F(PublicApiTest, WithoutDynamicStateEveryStateIsInThePipeline) {
     calls[dynamic] = effect.stats().dynamic_state_calls;
   }
   EXPECT_EQ(calls[0], 4u) << "static pipelines: only viewport and scissor, at each of the two begins";
-  if (ctx().features().extended_dynamic_state) EXPECT_GT(calls[1], calls[0]);
+  if (ctx().features().extended_dynamic_state) {
+    EXPECT_GT(calls[1], calls[0]);
+  }
 }
 
 TEST_F(PublicApiTest, FramesInFlightOverlapWithoutTouchingWhatTheGpuReads) {
