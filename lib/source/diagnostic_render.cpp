@@ -7,10 +7,12 @@
 namespace fx {
 namespace {
 
+// "file:line:col: ", or nothing for a diagnostic about no place in a file (as compilers
+// print "error: ..." for those).
 std::string position(const SourceManager& sm, SourceLocation loc) {
   PresumedLocation p = sm.presumed(loc);
-  if (!p.valid()) return "<unknown>";
-  return std::string(p.file) + ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
+  if (!p.valid()) return {};
+  return std::string(p.file) + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) + ": ";
 }
 
 void append_source_line(std::string& out, const SourceManager& sm, SourceRange range) {
@@ -69,7 +71,6 @@ std::vector<DiagnosticNote> context_notes(SourceLocation loc, const SourceManage
 std::string render_text(const Diagnostic& d, const SourceManager& sm,
                         const TextRenderOptions& options) {
   std::string out = position(sm, d.range.begin);
-  out += ": ";
   out += to_string(d.severity);
   out += ": " + d.message;
   if (!d.id.empty()) out += " [" + d.id + "]";
@@ -79,13 +80,13 @@ std::string render_text(const Diagnostic& d, const SourceManager& sm,
     const std::optional<SourceRange> range = editable_range(f, sm);
     if (!range) continue;
     bool insertion = !range->end.valid() || range->end == range->begin;
-    out += position(sm, range->begin) + ": note: fix-it: " +
+    out += position(sm, range->begin) + "note: fix-it: " +
            (insertion ? "insert '" : "replace with '") + f.replacement + "'\n";
   }
   std::vector<DiagnosticNote> notes = d.notes;
   std::vector<DiagnosticNote> context = context_notes(d.range.begin, sm);
   notes.insert(notes.end(), context.begin(), context.end());
-  for (const DiagnosticNote& n : notes) out += position(sm, n.location) + ": note: " + n.message + "\n";
+  for (const DiagnosticNote& n : notes) out += position(sm, n.location) + "note: " + n.message + "\n";
   return out;
 }
 

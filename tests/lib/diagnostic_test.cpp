@@ -23,6 +23,14 @@ TEST(Diagnostic, TextHasPositionIdSourceLineAndCaret) {
             "e.fx:2:3: note: fix-it: replace with 'CullMode'\n");
 }
 
+TEST(Diagnostic, ADiagnosticAboutNoPlaceStartsWithItsSeverity) {
+  SourceManager sm;
+  DiagnosticSink sink;
+  sink.error("vk-feature-missing", {}, "the device has no dynamic rendering");
+  EXPECT_EQ(render_text(sink.diagnostics(), sm),
+            "error: the device has no dynamic rendering [vk-feature-missing]\n");
+}
+
 TEST(Diagnostic, IncludeAndMacroNotes) {
   SourceManager sm;
   BufferId main = sm.add_buffer("main.fx", "#define BAD oops\n#include \"a.fxh\"\n");
