@@ -23,6 +23,10 @@ namespace fxkit::detail {
 Message to_message(const fx::Diagnostic& d, const fx::SourceManager* sources);
 std::vector<Message> to_messages(const std::vector<fx::Diagnostic>& ds, const fx::SourceManager* sources);
 
+// Annotations as public values, and one by name (nullptr when none).
+Annotation to_public(const fx::Annotation& a);
+const Annotation* find_annotation(const std::vector<Annotation>& annotations, std::string_view name);
+
 // The pass-state facts of a Target (winding, Y convention, attachments).
 fx::vk::RenderingFormats rendering_formats(const Formats& formats);
 fx::vk::PassTargetInfo pass_target(const Target& target);

@@ -61,6 +61,8 @@ std::vector<TechniqueInfo> Effect::techniques() const {
     TechniqueInfo info;
     info.name = version->model->techniques[t].name;
     info.passes = uint32_t(version->model->techniques[t].passes.size());
+    for (const fx::Annotation& a : version->model->techniques[t].annotations)
+      info.annotations.push_back(detail::to_public(a));
     if (!version->techniques->valid(t)) {
       for (const std::string& r : version->techniques->rejections(t)) info.reason += (info.reason.empty() ? "" : "; ") + r;
     } else if (!binding || !binding->technique_ok(t)) {

@@ -43,6 +43,10 @@ std::string shape_of(fx::TextureShape shape) {
   }
 }
 
+}  // namespace
+
+namespace detail {
+
 Annotation to_public(const fx::Annotation& a) {
   Annotation out;
   out.name = a.name;
@@ -59,12 +63,15 @@ Annotation to_public(const fx::Annotation& a) {
   return out;
 }
 
-}  // namespace
-
-const Annotation* ParamInfo::annotation(std::string_view n) const {
-  auto it = std::find_if(annotations.begin(), annotations.end(), [&](const Annotation& a) { return a.name == n; });
+const Annotation* find_annotation(const std::vector<Annotation>& annotations, std::string_view name) {
+  auto it = std::find_if(annotations.begin(), annotations.end(), [&](const Annotation& a) { return a.name == name; });
   return it == annotations.end() ? nullptr : &*it;
 }
+
+}  // namespace detail
+
+const Annotation* ParamInfo::annotation(std::string_view n) const { return detail::find_annotation(annotations, n); }
+const Annotation* TechniqueInfo::annotation(std::string_view n) const { return detail::find_annotation(annotations, n); }
 
 std::vector<ParamInfo> Effect::params() const {
   std::vector<ParamInfo> out;
@@ -94,7 +101,7 @@ std::vector<ParamInfo> Effect::params() const {
       else info.default_value = p.default_value->floats();
     }
     info.settable = p.shader_visible;
-    for (const fx::Annotation& a : p.annotations) info.annotations.push_back(to_public(a));
+    for (const fx::Annotation& a : p.annotations) info.annotations.push_back(detail::to_public(a));
     out.push_back(std::move(info));
   }
   return out;

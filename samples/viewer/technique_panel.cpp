@@ -39,6 +39,12 @@ void TechniquePanel::draw(const fxkit::Effect& effect, fxkit::Technique& techniq
     ImGui::TextColored(colour, "%s%s (%u pass%s)", t.name == chosen ? "> " : "", t.name.c_str(), t.passes,
                        t.passes == 1 ? "" : "es");
     if (!t.drawable) ImGui::TextWrapped("    %s", t.reason.c_str());
+    // Measured cost and error where the effect carries them (generated/costs.fxh).
+    const fxkit::Annotation* error = t.annotation("MaxError");
+    const fxkit::Annotation* cost = t.annotation("CostNsPerPixel");
+    if (cost) ImGui::Text("    cost %.3f ns/pixel", cost->number());
+    if (error) ImGui::Text("    error %.2f levels (8-bit)", error->number());
+    else if (cost) ImGui::TextUnformatted("    error not measured");
     ImGui::PopID();
   }
   if (changed && pinned_.empty()) technique = effect.select(criteria_);

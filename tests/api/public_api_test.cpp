@@ -24,7 +24,7 @@ float4 Tint = {)" + tint + R"(, 1.0};
 struct V { float4 pos : POSITION; float3 n : TEXCOORD0; };
 V VS(float4 p : POSITION, float3 n : NORMAL) { V o; o.pos = mul(p, WorldViewProjection); o.n = mul(n, (float3x3)World); return o; }
 float4 PS(V i) : COLOR0 { return float4(Tint.rgb * (0.2 + 0.8 * saturate(dot(normalize(i.n), -LightDirection))), 1.0); }
-technique lit { pass p0 { CullMode = )" + cull + R"(; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+technique lit < float MaxError = 1.5; string Scheme = "preview"; > { pass p0 { CullMode = )" + cull + R"(; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
 technique assembly { pass p0 { VertexShader = asm { vs.1.1 dcl_position v0 m4x4 oPos, v0, c0 }; } }
 )";
 }
@@ -120,6 +120,10 @@ TEST_F(PublicApiTest, TechniquesByNameSayWhyTheyCannotDraw) {
   EXPECT_FALSE(broken.reason().empty());
   const auto infos = effect.techniques();
   ASSERT_EQ(infos.size(), 2u);
+  ASSERT_NE(infos[0].annotation("MaxError"), nullptr) << "technique annotations, as written";
+  EXPECT_FLOAT_EQ(infos[0].annotation("MaxError")->number(), 1.5f);
+  EXPECT_EQ(infos[0].annotation("Scheme")->text, "preview");
+  EXPECT_EQ(infos[1].annotation("MaxError"), nullptr);
   EXPECT_TRUE(infos[0].drawable);
   EXPECT_FALSE(infos[1].drawable);
   EXPECT_EQ(infos[1].reason, broken.reason());

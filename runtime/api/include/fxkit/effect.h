@@ -120,6 +120,11 @@ struct TechniqueInfo {
   uint32_t passes = 0;
   bool drawable = false;
   std::string reason{};  // "" when drawable
+  // As the file writes them: selection's (Scheme, MaxError, CostNsPerPixel, ...; see
+  // docs/selection.md) and any other.
+  std::vector<Annotation> annotations{};
+  // The annotation called `name`, or nullptr.
+  const Annotation* annotation(std::string_view name) const;
 };
 
 // A technique of an effect, by name or by selection. Recorded on the render thread with
