@@ -83,7 +83,7 @@ enum class StateLanding : uint8_t {
 std::string_view to_string(StateLanding landing);
 
 // The field a state's value writes: a member of fx::PassStateSummary or fx::SamplerDesc
-// (runtime/fx/model/pass_state.h), a binding, or a fixed-function stage field. Several
+// (runtime/model/include/fx/model/pass_state.h), a binding, or a fixed-function stage field. Several
 // rows may share one (ZEnable and DepthEnable both write depth_test).
 enum class StateField : uint8_t {
   none,
