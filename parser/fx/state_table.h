@@ -2,6 +2,7 @@
 // state-object fields and pass calls. Parsing checks, the runtime's Vulkan mapping and the
 // documentation (docs/states.md) all read these rows, so adding a state is one row.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -68,6 +69,70 @@ std::string_view to_string(VulkanArea area);
 enum class PassStage : uint8_t { vertex, pixel, geometry, hull, domain, compute };
 std::string_view to_string(PassStage stage);
 
+// Where a state's value lands. The runtime applies a pass by looping over its states and
+// writing each value to its row's field (runtime/model/pass_summary.cpp): no state is
+// named there, so a new state that lands on an existing field is one row.
+enum class StateLanding : uint8_t {
+  pipeline,        // a field of the pipeline state (fx::PassStateSummary -> fx::vk::PipelineState)
+  dynamic,         // dynamic state recorded with the draw (stencil reference, blend constants)
+  sampler,         // a field of a sampler description (fx::SamplerDesc)
+  binding,         // what a pass binds: shader code, constants, textures, samplers, state objects
+  fixed_function,  // a D3D9 fixed-function stage field: parsed and validated, never applied
+  unsupported,     // nothing on Vulkan; StateInfo::reason says why
+};
+std::string_view to_string(StateLanding landing);
+
+// The field a state's value writes: a member of fx::PassStateSummary or fx::SamplerDesc
+// (runtime/model/include/fx/model/pass_state.h), a binding, or a fixed-function stage field. Several
+// rows may share one (ZEnable and DepthEnable both write depth_test).
+enum class StateField : uint8_t {
+  none,
+  // Depth and stencil.
+  depth_test, depth_write, depth_compare, stencil_test, stencil_read_mask, stencil_write_mask,
+  stencil_front_fail, stencil_front_depth_fail, stencil_front_pass, stencil_front_compare,
+  stencil_back_fail, stencil_back_depth_fail, stencil_back_pass, stencil_back_compare,
+  stencil_two_sided,  // D3D9: without it the back face copies the front
+  stencil_ref,
+  // Rasterization.
+  fill, cull, front_face_ccw, depth_bias_d3d9, depth_bias_units, depth_bias_clamp, depth_bias_slope,
+  depth_clip, scissor, multisample, antialiased_lines,
+  // Blending and output: the blend fields write TargetBlend of StateInfo::target (or the index).
+  blend_enable, src_color, dst_color, color_op, src_alpha, dst_alpha, alpha_op,
+  separate_alpha,  // D3D9: without it alpha blends like colour
+  write_mask, blend_constants, alpha_to_coverage, sample_mask, srgb_write, alpha_test, alpha_compare,
+  alpha_ref,
+  state_object,  // applies a D3D10/11 state object of StateInfo::object_kind
+  // Bindings.
+  shader, shader_constants, texture, sampler,
+  // Sampler descriptions.
+  address_u, address_v, address_w, border_color, mag_filter, min_filter, mip_filter, lod_bias,
+  max_mip_level, max_anisotropy, srgb_texture, min_lod, max_lod, compare, filter_bits,
+  // Fixed-function texture stages (validated against the device's stages).
+  stage_color_op, stage_alpha_op,
+};
+std::string_view to_string(StateField field);
+
+// Where a field's value lands: the row's StateLanding for every field but none.
+constexpr StateLanding landing_of(StateField field) {
+  switch (field) {
+    case StateField::none: return StateLanding::unsupported;
+    case StateField::stencil_ref:
+    case StateField::blend_constants: return StateLanding::dynamic;
+    case StateField::state_object:
+    case StateField::shader:
+    case StateField::shader_constants:
+    case StateField::texture:
+    case StateField::sampler: return StateLanding::binding;
+    case StateField::stage_color_op:
+    case StateField::stage_alpha_op: return StateLanding::fixed_function;
+    default: break;
+  }
+  return field >= StateField::address_u ? StateLanding::sampler : StateLanding::pipeline;
+}
+
+// StateInfo::target for a blend field that writes every render target when unindexed.
+inline constexpr uint8_t kEveryTarget = 0xFF;
+
 // One named value of an enumeration; several names may share a value (D3D9 and D3D10
 // spellings).
 struct EnumValue {
@@ -97,6 +162,15 @@ struct StateInfo {
   VulkanArea area = VulkanArea::none;
   std::string_view object_kind;  // state_object: the block the argument must be
   std::optional<PassStage> stage;  // shader states: the stage whose code they name
+  StateLanding lands = StateLanding::unsupported;
+  StateField field = StateField::none;
+  // Blend fields: the render target an unindexed assignment writes (kEveryTarget: all); an
+  // index names one target (clamped to index_count - 1).
+  uint8_t target = kEveryTarget;
+  // Pass calls: the fields their extra arguments write, in order (SetBlendState(b, factor,
+  // mask): blend_constants, sample_mask).
+  std::array<StateField, 2> call_fields{StateField::none, StateField::none};
+  std::string_view reason;  // unsupported and fixed_function: why fxkit does not apply it
 };
 
 // Every row, grouped by block.

@@ -275,6 +275,91 @@ std::string_view to_string(VulkanArea area) {
   return "none";
 }
 
+std::string_view to_string(StateLanding landing) {
+  switch (landing) {
+    case StateLanding::pipeline: return "pipeline";
+    case StateLanding::dynamic: return "dynamic";
+    case StateLanding::sampler: return "sampler";
+    case StateLanding::binding: return "binding";
+    case StateLanding::fixed_function: return "fixed_function";
+    case StateLanding::unsupported: return "unsupported";
+  }
+  return "unsupported";
+}
+
+std::string_view to_string(StateField field) {
+  static constexpr std::string_view kNames[] = {
+    "none",
+    "depth_test",
+    "depth_write",
+    "depth_compare",
+    "stencil_test",
+    "stencil_read_mask",
+    "stencil_write_mask",
+    "stencil_front_fail",
+    "stencil_front_depth_fail",
+    "stencil_front_pass",
+    "stencil_front_compare",
+    "stencil_back_fail",
+    "stencil_back_depth_fail",
+    "stencil_back_pass",
+    "stencil_back_compare",
+    "stencil_two_sided",
+    "stencil_ref",
+    "fill",
+    "cull",
+    "front_face_ccw",
+    "depth_bias_d3d9",
+    "depth_bias_units",
+    "depth_bias_clamp",
+    "depth_bias_slope",
+    "depth_clip",
+    "scissor",
+    "multisample",
+    "antialiased_lines",
+    "blend_enable",
+    "src_color",
+    "dst_color",
+    "color_op",
+    "src_alpha",
+    "dst_alpha",
+    "alpha_op",
+    "separate_alpha",
+    "write_mask",
+    "blend_constants",
+    "alpha_to_coverage",
+    "sample_mask",
+    "srgb_write",
+    "alpha_test",
+    "alpha_compare",
+    "alpha_ref",
+    "state_object",
+    "shader",
+    "shader_constants",
+    "texture",
+    "sampler",
+    "address_u",
+    "address_v",
+    "address_w",
+    "border_color",
+    "mag_filter",
+    "min_filter",
+    "mip_filter",
+    "lod_bias",
+    "max_mip_level",
+    "max_anisotropy",
+    "srgb_texture",
+    "min_lod",
+    "max_lod",
+    "compare",
+    "filter_bits",
+    "stage_color_op",
+    "stage_alpha_op",
+  };
+  static_assert(std::size(kNames) == static_cast<size_t>(StateField::stage_alpha_op) + 1);
+  return kNames[static_cast<size_t>(field)];
+}
+
 std::span<const StateInfo> all_states() { return state_index().rows(); }
 
 const StateInfo* find_state(std::string_view name, StateBlock block) {
@@ -332,6 +417,18 @@ std::vector<std::string_view> enum_names(const StateInfo& state) {
   return names;
 }
 
+namespace {
+// The Lands column: `pipeline: depth_test`, `dynamic: blend_constants`, `unsupported: why`.
+std::string landing_text(const StateInfo& s) {
+  std::string text(to_string(s.lands));
+  if (s.field != StateField::none) text += ": `" + std::string(to_string(s.field)) + "`";
+  for (StateField f : s.call_fields)
+    if (f != StateField::none) text += " + `" + std::string(to_string(f)) + "`";
+  if (s.lands == StateLanding::unsupported && !s.reason.empty()) text += ": " + std::string(s.reason);
+  return text;
+}
+}  // namespace
+
 std::string render_state_table_markdown() {
   std::string out =
       "# Effect states\n\n"
@@ -348,11 +445,17 @@ std::string render_state_table_markdown() {
       "and fxkit reproduces it (alpha test as a discard, sRGB through image views, clip\n"
       "planes through clip distances); `fixed_function` is D3D9 fixed-function state that\n"
       "fxkit parses but cannot apply, so technique validation rejects passes that set it;\n"
-      "`ignored` states have nothing visible to reproduce.\n";
+      "`ignored` states have nothing visible to reproduce.\n\n"
+      "Lands: where the runtime writes the value, read from the same row: a `pipeline`\n"
+      "field of the pass state (`fx::PassStateSummary`, then `fx::vk::PipelineState`), a\n"
+      "`dynamic` state recorded with the draw, a `sampler` field (`fx::SamplerDesc`), a\n"
+      "`binding` (shader code, constants, textures, samplers, state objects), a\n"
+      "`fixed_function` stage field, or `unsupported` with the reason. A pass call's extra\n"
+      "arguments land in the fields listed after `+`.\n";
   for (int b = 0; b < kStateBlockCount; ++b) {
     StateBlock block = static_cast<StateBlock>(b);
     out += "\n## `" + std::string(to_string(block)) + "`\n\n";
-    out += "| State | Index | Value | API | Vulkan | Area |\n|---|---|---|---|---|---|\n";
+    out += "| State | Index | Value | API | Vulkan | Area | Lands |\n|---|---|---|---|---|---|---|\n";
     for (const StateInfo& s : all_states()) {
       if (s.block != block) continue;
       std::string index = "-";
@@ -364,7 +467,7 @@ std::string render_state_table_markdown() {
       if (!s.object_kind.empty()) value += " `" + std::string(s.object_kind) + "`";
       out += "| " + std::string(s.name) + " | " + index + " | " + value + " | " +
              std::string(to_string(s.api)) + " | " + std::string(to_string(s.vulkan)) + " | " +
-             std::string(to_string(s.area)) + " |\n";
+             std::string(to_string(s.area)) + " | " + landing_text(s) + " |\n";
     }
   }
   out += "\n## Enumerations\n\n| Set | Prefixes | Values |\n|---|---|---|\n";

@@ -14,7 +14,7 @@
 #include "fx/vulkan/effect_binding.h"
 #include "fx/vulkan/effect_textures.h"
 #include "fx/vulkan/frame_resources.h"
-#include "fx/vulkan/reload_backend.h"
+#include "fx/reload/vulkan_reload_backend.h"
 #include "fxkit/device.h"
 
 namespace fxkit::detail {

@@ -2,6 +2,7 @@
 // D3D10/11 state objects mapped onto one set of structures (see docs/effect-model.md for
 // the defaults and the mapping rules).
 #include <algorithm>
+#include <optional>
 
 #include "model_build.h"
 
@@ -51,6 +52,15 @@ double number(const ResolvedState& s, const EffectModel& model) {
   return static_cast<double>(s.integer);
 }
 
+// A state's value as the fields read it: an integer, a number, and up to four components
+// (a colour or float4; a call argument may carry fewer, and writes only those).
+struct FieldValue {
+  int64_t integer = 0;
+  double number = 0;
+  std::array<float, 4> vector{0, 0, 0, 0};
+  size_t components = 4;
+};
+
 struct Summarizer {
   const EffectModel& model;
   PassStateSummary out;
@@ -60,10 +70,6 @@ struct Summarizer {
     (alpha ? t.src_alpha : t.src_color) = blend_factor(v);
     if (v == 12) (alpha ? t.dst_alpha : t.dst_color) = BlendFactor::one_minus_src_alpha;
     if (v == 13) (alpha ? t.dst_alpha : t.dst_color) = BlendFactor::src_alpha;
-  }
-  template <class F>
-  void each_target(F&& f) {
-    for (TargetBlend& t : out.blend) f(t);
   }
 
   void reset_blend_d3d10() {
@@ -94,142 +100,181 @@ struct Summarizer {
     out.antialiased_lines = false;
   }
 
+  // The render targets a blend field writes: the indexed one, the row's own, or all.
+  template <class F>
+  void each_target(const StateInfo& row, uint32_t index, bool indexed, F&& f) {
+    if (indexed && row.index_count > 0) {
+      f(out.blend[std::min<uint32_t>(index, std::min<uint32_t>(row.index_count, kMaxRenderTargets) - 1)]);
+    } else if (row.target != kEveryTarget) {
+      f(out.blend[std::min<uint32_t>(row.target, kMaxRenderTargets - 1)]);
+    } else {
+      for (TargetBlend& t : out.blend) f(t);
+    }
+  }
+
+  // Writes one value to the field its row names: the only place a field is written.
+  void write(const StateInfo& row, StateField field, const FieldValue& x, uint32_t index, bool indexed) {
+    const int64_t v = x.integer;
+    const auto f = static_cast<float>(x.number);
+    const bool d3d9 = row.api == StateApi::d3d9;
+    auto targets = [&](auto&& fn) { each_target(row, index, indexed, fn); };
+    switch (field) {
+      case StateField::depth_test: out.depth_test = v != 0; break;
+      case StateField::depth_write: out.depth_write = v != 0; break;
+      case StateField::depth_compare: out.depth_compare = compare_op(v); break;
+      case StateField::stencil_test: out.stencil = v != 0; break;
+      case StateField::stencil_read_mask: out.stencil_read_mask = static_cast<uint32_t>(v); break;
+      case StateField::stencil_write_mask: out.stencil_write_mask = static_cast<uint32_t>(v); break;
+      case StateField::stencil_front_fail: out.stencil_front.fail = stencil_op(v); break;
+      case StateField::stencil_front_depth_fail: out.stencil_front.depth_fail = stencil_op(v); break;
+      case StateField::stencil_front_pass: out.stencil_front.pass = stencil_op(v); break;
+      case StateField::stencil_front_compare: out.stencil_front.compare = compare_op(v); break;
+      case StateField::stencil_back_fail: out.stencil_back.fail = stencil_op(v); break;
+      case StateField::stencil_back_depth_fail: out.stencil_back.depth_fail = stencil_op(v); break;
+      case StateField::stencil_back_pass: out.stencil_back.pass = stencil_op(v); break;
+      case StateField::stencil_back_compare: out.stencil_back.compare = compare_op(v); break;
+      case StateField::stencil_two_sided: two_sided = v != 0; break;
+      case StateField::stencil_ref: out.stencil_ref = static_cast<uint32_t>(v); break;
+      // D3D9 and D3D10 cull by window-space winding with clockwise front faces: 2 culls the
+      // front (D3DCULL_CW, D3D10_CULL_FRONT), 3 the back.
+      case StateField::cull: out.cull = v == 2 ? CullMode::front : v == 3 ? CullMode::back : CullMode::none; break;
+      case StateField::fill: out.fill = v == 1 ? FillMode::point : v == 2 ? FillMode::wireframe : FillMode::solid; break;
+      case StateField::front_face_ccw: out.front_face = v ? FrontFace::counter_clockwise : FrontFace::clockwise; break;
+      case StateField::depth_bias_d3d9: out.depth_bias = f, out.depth_bias_normalized = true; break;
+      case StateField::depth_bias_units: out.depth_bias = f, out.depth_bias_normalized = false; break;
+      case StateField::depth_bias_clamp: out.depth_bias_clamp = f; break;
+      case StateField::depth_bias_slope: out.depth_bias_slope = f; break;
+      case StateField::depth_clip: out.depth_clip = v != 0; break;
+      case StateField::scissor: out.scissor = v != 0; break;
+      case StateField::multisample: out.multisample = v != 0; break;
+      case StateField::antialiased_lines: out.antialiased_lines = v != 0; break;
+      case StateField::blend_enable: targets([&](TargetBlend& t) { t.enable = v != 0; }); break;
+      case StateField::src_color:
+        targets([&](TargetBlend& t) { d3d9 ? set_src_blend(t, v, false) : void(t.src_color = blend_factor(v)); });
+        break;
+      case StateField::dst_color: targets([&](TargetBlend& t) { t.dst_color = blend_factor(v); }); break;
+      case StateField::color_op: targets([&](TargetBlend& t) { t.color_op = blend_op(v); }); break;
+      case StateField::src_alpha:
+        targets([&](TargetBlend& t) { d3d9 ? set_src_blend(t, v, true) : void(t.src_alpha = blend_factor(v)); });
+        break;
+      case StateField::dst_alpha: targets([&](TargetBlend& t) { t.dst_alpha = blend_factor(v); }); break;
+      case StateField::alpha_op: targets([&](TargetBlend& t) { t.alpha_op = blend_op(v); }); break;
+      case StateField::separate_alpha: separate_alpha = v != 0; break;
+      case StateField::write_mask: targets([&](TargetBlend& t) { t.write_mask = static_cast<uint8_t>(v & 0xF); }); break;
+      case StateField::blend_constants:
+        for (size_t i = 0; i < 4 && i < x.components; ++i) out.blend_constants[i] = x.vector[i];
+        break;
+      case StateField::alpha_to_coverage: out.alpha_to_coverage = v != 0; break;
+      case StateField::sample_mask: out.sample_mask = static_cast<uint32_t>(v); break;
+      case StateField::srgb_write: out.srgb_write = v != 0; break;
+      case StateField::alpha_test: out.alpha_test = v != 0; break;
+      case StateField::alpha_compare: out.alpha_compare = compare_op(v); break;
+      case StateField::alpha_ref: out.alpha_ref = static_cast<uint32_t>(v & 0xFF); break;
+      default: break;  // bindings, sampler and fixed-function fields land elsewhere
+    }
+  }
+
+  // A resolved state's value: numbers from the state or the parameter it names.
+  FieldValue value_of(const ResolvedState& s) const {
+    const double n = number(s, model);
+    return {static_cast<int64_t>(n), n, s.vector, 4};
+  }
+
   void apply_object(const StateObjectInfo& obj) {
     bool per_target = false;
     for (const ResolvedState& s : obj.states) {
       if (s.indexed && s.index > 0) per_target = true;
-      apply_field(s);
+      write(*s.info, s.info->field, value_of(s), s.index, s.indexed);
     }
     // D3D11 with IndependentBlendEnable off (and any object naming target 0 only): every
     // render target blends as target 0.
     if (obj.block == StateBlock::blend_state && !per_target) std::fill(out.blend.begin() + 1, out.blend.end(), out.blend[0]);
   }
 
-  void apply_field(const ResolvedState& s) {
-    const std::string_view n = s.info->name;
-    const int64_t v = static_cast<int64_t>(number(s, model));
-    const double f = number(s, model);
-    TargetBlend& t = out.blend[std::min<uint32_t>(s.index, kMaxRenderTargets - 1)];
-    // Unindexed colour/alpha factors apply to every target (D3D10 shares them).
-    auto targets = [&](auto&& fn) {
-      if (s.indexed) fn(t);
-      else each_target(fn);
-    };
-    if (n == "AlphaToCoverageEnable") out.alpha_to_coverage = v != 0;
-    else if (n == "BlendEnable") t.enable = v != 0;
-    else if (n == "SrcBlend") targets([&](TargetBlend& b) { b.src_color = blend_factor(v); });
-    else if (n == "DestBlend") targets([&](TargetBlend& b) { b.dst_color = blend_factor(v); });
-    else if (n == "BlendOp") targets([&](TargetBlend& b) { b.color_op = blend_op(v); });
-    else if (n == "SrcBlendAlpha") targets([&](TargetBlend& b) { b.src_alpha = blend_factor(v); });
-    else if (n == "DestBlendAlpha") targets([&](TargetBlend& b) { b.dst_alpha = blend_factor(v); });
-    else if (n == "BlendOpAlpha") targets([&](TargetBlend& b) { b.alpha_op = blend_op(v); });
-    else if (n == "RenderTargetWriteMask") t.write_mask = static_cast<uint8_t>(v & 0xF);
-    else if (n == "DepthEnable") out.depth_test = v != 0;
-    else if (n == "DepthWriteMask") out.depth_write = v != 0;
-    else if (n == "DepthFunc") out.depth_compare = compare_op(v);
-    else if (n == "StencilEnable") out.stencil = v != 0;
-    else if (n == "StencilReadMask") out.stencil_read_mask = static_cast<uint32_t>(v);
-    else if (n == "StencilWriteMask") out.stencil_write_mask = static_cast<uint32_t>(v);
-    else if (n == "FrontFaceStencilFail") out.stencil_front.fail = stencil_op(v);
-    else if (n == "FrontFaceStencilDepthFail") out.stencil_front.depth_fail = stencil_op(v);
-    else if (n == "FrontFaceStencilPass") out.stencil_front.pass = stencil_op(v);
-    else if (n == "FrontFaceStencilFunc") out.stencil_front.compare = compare_op(v);
-    else if (n == "BackFaceStencilFail") out.stencil_back.fail = stencil_op(v);
-    else if (n == "BackFaceStencilDepthFail") out.stencil_back.depth_fail = stencil_op(v);
-    else if (n == "BackFaceStencilPass") out.stencil_back.pass = stencil_op(v);
-    else if (n == "BackFaceStencilFunc") out.stencil_back.compare = compare_op(v);
-    else if (n == "FillMode") out.fill = v == 2 ? FillMode::wireframe : v == 1 ? FillMode::point : FillMode::solid;
-    else if (n == "CullMode") out.cull = v == 2 ? CullMode::front : v == 3 ? CullMode::back : CullMode::none;
-    else if (n == "FrontCounterClockwise") out.front_face = v ? FrontFace::counter_clockwise : FrontFace::clockwise;
-    else if (n == "DepthBias") out.depth_bias = static_cast<float>(f), out.depth_bias_normalized = false;
-    else if (n == "DepthBiasClamp") out.depth_bias_clamp = static_cast<float>(f);
-    else if (n == "SlopeScaledDepthBias") out.depth_bias_slope = static_cast<float>(f);
-    else if (n == "DepthClipEnable") out.depth_clip = v != 0;
-    else if (n == "ScissorEnable") out.scissor = v != 0;
-    else if (n == "MultisampleEnable") out.multisample = v != 0;
-    else if (n == "AntialiasedLineEnable") out.antialiased_lines = v != 0;
+  void reset(StateBlock block) {
+    if (block == StateBlock::blend_state) reset_blend_d3d10();
+    if (block == StateBlock::depth_stencil_state) reset_depth_stencil_d3d10();
+    if (block == StateBlock::rasterizer_state) reset_rasterizer_d3d10();
   }
 
-  void apply_object_ref(const ResolvedState& s, StateBlock want) {
-    if (s.kind == StateValueKind::null) {
-      if (want == StateBlock::blend_state) reset_blend_d3d10();
-      if (want == StateBlock::depth_stencil_state) reset_depth_stencil_d3d10();
-      if (want == StateBlock::rasterizer_state) reset_rasterizer_d3d10();
-      return;
-    }
+  // `SetBlendState(b, factor, mask)` / `BlendState = b;`: the object's block is reset to
+  // D3D11's defaults, the object applied, then the call's arguments written to the fields
+  // the row names for them.
+  void apply_object_ref(const ResolvedState& s) {
+    const std::optional<StateBlock> want = state_object_block(s.info->object_kind);
+    if (!want) return;
+    if (s.kind == StateValueKind::null) return reset(*want);
     if (s.kind != StateValueKind::state_object || s.target >= model.state_objects.size()) return;
     const StateObjectInfo& obj = model.state_objects[s.target];
-    if (obj.block != want) return;
-    if (want == StateBlock::blend_state) {
-      reset_blend_d3d10();
-      apply_object(obj);
-      if (s.call_args.size() >= 1 && s.call_args[0].is_numeric())
-        for (size_t i = 0; i < 4 && i < s.call_args[0].components.size(); ++i)
-          out.blend_constants[i] = static_cast<float>(s.call_args[0].components[i]);
-      if (s.call_args.size() >= 2 && s.call_args[1].is_numeric())
-        out.sample_mask = static_cast<uint32_t>(static_cast<int64_t>(s.call_args[1].number()));
-    } else if (want == StateBlock::depth_stencil_state) {
-      reset_depth_stencil_d3d10();
-      apply_object(obj);
-      if (!s.call_args.empty() && s.call_args[0].is_numeric())
-        out.stencil_ref = static_cast<uint32_t>(static_cast<int64_t>(s.call_args[0].number()));
-    } else {
-      reset_rasterizer_d3d10();
-      apply_object(obj);
+    if (obj.block != *want) return;
+    reset(*want);
+    apply_object(obj);
+    for (size_t i = 0; i < s.info->call_fields.size() && i < s.call_args.size(); ++i) {
+      const Value& arg = s.call_args[i];
+      if (s.info->call_fields[i] == StateField::none || !arg.is_numeric()) continue;
+      FieldValue x{static_cast<int64_t>(arg.number()), arg.number(), {}, std::min<size_t>(4, arg.components.size())};
+      for (size_t c = 0; c < x.components; ++c) x.vector[c] = static_cast<float>(arg.components[c]);
+      write(*s.info, s.info->call_fields[i], x, 0, false);
     }
   }
 
   void apply_pass(const ResolvedState& s) {
-    const std::string_view n = s.info->name;
-    const int64_t v = static_cast<int64_t>(number(s, model));
-    const double f = number(s, model);
-    if (n == "ZEnable") out.depth_test = v != 0;
-    else if (n == "ZWriteEnable") out.depth_write = v != 0;
-    else if (n == "ZFunc") out.depth_compare = compare_op(v);
-    else if (n == "StencilEnable") out.stencil = v != 0;
-    else if (n == "StencilFail") out.stencil_front.fail = stencil_op(v);
-    else if (n == "StencilZFail") out.stencil_front.depth_fail = stencil_op(v);
-    else if (n == "StencilPass") out.stencil_front.pass = stencil_op(v);
-    else if (n == "StencilFunc") out.stencil_front.compare = compare_op(v);
-    else if (n == "CCW_StencilFail") out.stencil_back.fail = stencil_op(v);
-    else if (n == "CCW_StencilZFail") out.stencil_back.depth_fail = stencil_op(v);
-    else if (n == "CCW_StencilPass") out.stencil_back.pass = stencil_op(v);
-    else if (n == "CCW_StencilFunc") out.stencil_back.compare = compare_op(v);
-    else if (n == "TwoSidedStencilMode") two_sided = v != 0;
-    else if (n == "StencilRef" || n == "DS_StencilRef") out.stencil_ref = static_cast<uint32_t>(v);
-    else if (n == "StencilMask") out.stencil_read_mask = static_cast<uint32_t>(v);
-    else if (n == "StencilWriteMask") out.stencil_write_mask = static_cast<uint32_t>(v);
-    // D3D9 culls by window-space winding with clockwise front faces: CW culls the front.
-    else if (n == "CullMode") out.cull = v == 2 ? CullMode::front : v == 3 ? CullMode::back : CullMode::none;
-    else if (n == "FillMode") out.fill = v == 1 ? FillMode::point : v == 2 ? FillMode::wireframe : FillMode::solid;
-    else if (n == "DepthBias") out.depth_bias = static_cast<float>(f), out.depth_bias_normalized = true;
-    else if (n == "SlopeScaleDepthBias") out.depth_bias_slope = static_cast<float>(f);
-    else if (n == "ScissorTestEnable") out.scissor = v != 0;
-    else if (n == "AntialiasedLineEnable") out.antialiased_lines = v != 0;
-    else if (n == "AlphaBlendEnable") each_target([&](TargetBlend& t) { t.enable = v != 0; });
-    else if (n == "SrcBlend") each_target([&](TargetBlend& t) { set_src_blend(t, v, false); });
-    else if (n == "DestBlend") each_target([&](TargetBlend& t) { t.dst_color = blend_factor(v); });
-    else if (n == "BlendOp") each_target([&](TargetBlend& t) { t.color_op = blend_op(v); });
-    else if (n == "SeparateAlphaBlendEnable") separate_alpha = v != 0;
-    else if (n == "SrcBlendAlpha") each_target([&](TargetBlend& t) { set_src_blend(t, v, true); });
-    else if (n == "DestBlendAlpha") each_target([&](TargetBlend& t) { t.dst_alpha = blend_factor(v); });
-    else if (n == "BlendOpAlpha") each_target([&](TargetBlend& t) { t.alpha_op = blend_op(v); });
-    else if (n == "BlendFactor" || n == "AB_BlendFactor") out.blend_constants = s.vector;
-    else if (n == "ColorWriteEnable") out.blend[std::min<uint32_t>(s.index, 3)].write_mask = static_cast<uint8_t>(v & 0xF);
-    else if (n == "ColorWriteEnable1") out.blend[1].write_mask = static_cast<uint8_t>(v & 0xF);
-    else if (n == "ColorWriteEnable2") out.blend[2].write_mask = static_cast<uint8_t>(v & 0xF);
-    else if (n == "ColorWriteEnable3") out.blend[3].write_mask = static_cast<uint8_t>(v & 0xF);
-    else if (n == "SRGBWriteEnable") out.srgb_write = v != 0;
-    else if (n == "AlphaTestEnable") out.alpha_test = v != 0;
-    else if (n == "AlphaFunc") out.alpha_compare = compare_op(v);
-    else if (n == "AlphaRef") out.alpha_ref = static_cast<uint32_t>(v & 0xFF);
-    else if (n == "MultiSampleAntialias") out.multisample = v != 0;
-    else if (n == "MultiSampleMask" || n == "AB_SampleMask") out.sample_mask = static_cast<uint32_t>(v);
-    else if (n == "SetBlendState" || n == "BlendState") apply_object_ref(s, StateBlock::blend_state);
-    else if (n == "SetDepthStencilState" || n == "DepthStencilState") apply_object_ref(s, StateBlock::depth_stencil_state);
-    else if (n == "SetRasterizerState" || n == "RasterizerState") apply_object_ref(s, StateBlock::rasterizer_state);
+    const StateInfo& row = *s.info;
+    if (row.field == StateField::state_object) return apply_object_ref(s);
+    if (row.lands == StateLanding::pipeline || row.lands == StateLanding::dynamic)
+      write(row, row.field, value_of(s), s.index, s.indexed);
   }
 };
+
+// D3D9 blends alpha like colour unless SeparateAlphaBlendEnable is set: the fields that
+// tell whether a pass set D3D9 blending at all.
+bool is_d3d9_blend_field(StateField f) {
+  switch (f) {
+    case StateField::src_color:
+    case StateField::dst_color:
+    case StateField::color_op:
+    case StateField::src_alpha:
+    case StateField::dst_alpha:
+    case StateField::alpha_op:
+    case StateField::separate_alpha: return true;
+    default: return false;
+  }
+}
+
+// The sampler field a row names, written from the state's own value.
+void write_sampler(const ResolvedState& s, SamplerDesc& d, uint32_t& texture) {
+  const int64_t v = s.integer;
+  auto texel = [](int64_t f) { return f >= 2 ? TexelFilter::linear : TexelFilter::nearest; };
+  switch (s.info->field) {
+    case StateField::texture: texture = s.kind == StateValueKind::parameter ? s.target : kNoIndex; break;
+    case StateField::address_u: d.address[0] = address_mode(v); break;
+    case StateField::address_v: d.address[1] = address_mode(v); break;
+    case StateField::address_w: d.address[2] = address_mode(v); break;
+    case StateField::border_color: d.border_color = s.vector; break;
+    case StateField::mag_filter: d.mag_filter = texel(v), d.anisotropic = d.anisotropic || v == 3; break;
+    case StateField::min_filter: d.min_filter = texel(v), d.anisotropic = d.anisotropic || v == 3; break;
+    case StateField::mip_filter:
+      d.mip_filter = v == 0 ? MipFilter::none : v == 1 ? MipFilter::nearest : MipFilter::linear;
+      break;
+    case StateField::lod_bias: d.lod_bias = static_cast<float>(s.floating); break;
+    case StateField::max_mip_level: d.max_mip_level = static_cast<uint32_t>(v), d.min_lod = static_cast<float>(v); break;
+    case StateField::max_anisotropy: d.max_anisotropy = static_cast<uint32_t>(std::max<int64_t>(1, v)); break;
+    case StateField::srgb_texture: d.srgb = v != 0; break;
+    case StateField::min_lod: d.min_lod = static_cast<float>(s.floating); break;
+    case StateField::max_lod: d.max_lod = static_cast<float>(std::min(s.floating, 1000.0)); break;
+    case StateField::compare: d.compare = compare_op(v); break;
+    case StateField::filter_bits:
+      // D3D11_FILTER bits: 0x01 mip linear, 0x04 mag linear, 0x10 min linear, 0x40 anisotropic,
+      // 0x80 comparison. Min/max reduction (0x100, 0x180) has no field here.
+      d.mip_filter = (v & 0x01) ? MipFilter::linear : MipFilter::nearest;
+      d.mag_filter = (v & 0x04) ? TexelFilter::linear : TexelFilter::nearest;
+      d.min_filter = (v & 0x10) ? TexelFilter::linear : TexelFilter::nearest;
+      d.anisotropic = (v & 0x40) != 0;
+      d.compare_enable = (v & 0x80) != 0;
+      break;
+    default: break;
+  }
+}
 
 }  // namespace
 
@@ -238,11 +283,7 @@ PassStateSummary summarize_pass(const std::vector<ResolvedState>& states, const 
   bool d3d9_alpha_states = false;
   for (const ResolvedState& r : states) {
     if (!r.info || r.kind == StateValueKind::invalid) continue;
-    std::string_view n = r.info->name;
-    if (r.info->api == StateApi::d3d9 &&
-        (n == "SrcBlend" || n == "DestBlend" || n == "BlendOp" || n == "SrcBlendAlpha" || n == "DestBlendAlpha" ||
-         n == "BlendOpAlpha" || n == "SeparateAlphaBlendEnable"))
-      d3d9_alpha_states = true;
+    if (r.info->api == StateApi::d3d9 && is_d3d9_blend_field(r.info->field)) d3d9_alpha_states = true;
     s.apply_pass(r);
   }
   // D3D9 blends alpha like colour unless SeparateAlphaBlendEnable is set.
@@ -268,36 +309,8 @@ SamplerDesc describe_sampler(const std::vector<ResolvedState>& states, bool d3d1
     d.mip_filter = MipFilter::linear;
     d.border_color = {1, 1, 1, 1};
   }
-  for (const ResolvedState& s : states) {
-    if (!s.info || s.kind == StateValueKind::invalid) continue;
-    const std::string_view n = s.info->name;
-    const int64_t v = s.integer;
-    auto texel = [](int64_t f) { return f >= 2 ? TexelFilter::linear : TexelFilter::nearest; };
-    if (n == "Texture") texture = s.kind == StateValueKind::parameter ? s.target : kNoIndex;
-    else if (n == "AddressU") d.address[0] = address_mode(v);
-    else if (n == "AddressV") d.address[1] = address_mode(v);
-    else if (n == "AddressW") d.address[2] = address_mode(v);
-    else if (n == "BorderColor") d.border_color = s.vector;
-    else if (n == "MagFilter") d.mag_filter = texel(v), d.anisotropic = d.anisotropic || v == 3;
-    else if (n == "MinFilter") d.min_filter = texel(v), d.anisotropic = d.anisotropic || v == 3;
-    else if (n == "MipFilter") d.mip_filter = v == 0 ? MipFilter::none : v == 1 ? MipFilter::nearest : MipFilter::linear;
-    else if (n == "MipMapLodBias" || n == "MipLODBias") d.lod_bias = static_cast<float>(s.floating);
-    else if (n == "MaxMipLevel") d.max_mip_level = static_cast<uint32_t>(v), d.min_lod = static_cast<float>(v);
-    else if (n == "MaxAnisotropy") d.max_anisotropy = static_cast<uint32_t>(std::max<int64_t>(1, v));
-    else if (n == "SRGBTexture") d.srgb = v != 0;
-    else if (n == "MinLOD") d.min_lod = static_cast<float>(s.floating);
-    else if (n == "MaxLOD") d.max_lod = static_cast<float>(std::min(s.floating, 1000.0));
-    else if (n == "ComparisonFunc") d.compare = compare_op(v);
-    else if (n == "Filter") {
-      // D3D11_FILTER bits: 0x01 mip linear, 0x04 mag linear, 0x10 min linear, 0x40 anisotropic,
-      // 0x80 comparison. Min/max reduction (0x100, 0x180) has no field here.
-      d.mip_filter = (v & 0x01) ? MipFilter::linear : MipFilter::nearest;
-      d.mag_filter = (v & 0x04) ? TexelFilter::linear : TexelFilter::nearest;
-      d.min_filter = (v & 0x10) ? TexelFilter::linear : TexelFilter::nearest;
-      d.anisotropic = (v & 0x40) != 0;
-      d.compare_enable = (v & 0x80) != 0;
-    }
-  }
+  for (const ResolvedState& s : states)
+    if (s.info && s.kind != StateValueKind::invalid) write_sampler(s, d, texture);
   if (!d.anisotropic) d.max_anisotropy = 1;
   return d;
 }

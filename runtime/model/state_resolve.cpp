@@ -199,10 +199,8 @@ bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveConte
     out.index = static_cast<uint32_t>(i->number());
     out.indexed = true;
   }
-  if (info->vulkan == VulkanMeaning::fixed_function && unsupported)
-    unsupported->push_back({info, out.index, a.range,
-                            "'" + std::string(info->name) +
-                                "' is Direct3D 9 fixed-function state with no Vulkan equivalent; use a pixel shader"});
+  if (info->lands == StateLanding::fixed_function && unsupported)
+    unsupported->push_back({info, out.index, a.range, "'" + std::string(info->name) + "' is " + std::string(info->reason)});
 
   const ast::Expr* value = a.value;
   // Call form: SetBlendState(b, factor, mask) -> value is args[0], the rest are call_args.

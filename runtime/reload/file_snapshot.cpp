@@ -1,4 +1,4 @@
-#include "reload/file_snapshot.h"
+#include "file_snapshot.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>

@@ -9,11 +9,11 @@
 #include <unordered_map>
 #include <utility>
 
-#include "reload/file_snapshot.h"
-#include "reload/inotify_queue.h"
-#include "reload/network_filesystem.h"
-#include "reload/pending_changes.h"
-#include "reload/wake_source.h"
+#include "file_snapshot.h"
+#include "inotify_queue.h"
+#include "network_filesystem.h"
+#include "pending_changes.h"
+#include "wake_source.h"
 
 namespace fx {
 

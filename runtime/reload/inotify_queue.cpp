@@ -1,4 +1,4 @@
-#include "reload/inotify_queue.h"
+#include "inotify_queue.h"
 
 #include <sys/inotify.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "reload/network_filesystem.h"
+#include "network_filesystem.h"
 
 #include <linux/magic.h>
 #include <sys/vfs.h>

@@ -1,4 +1,4 @@
-#include "reload/pending_changes.h"
+#include "pending_changes.h"
 
 #include <algorithm>
 

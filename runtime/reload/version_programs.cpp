@@ -1,5 +1,6 @@
 // Reload transaction, compile side: translation units and every pass's program, through
 // the shared SPIR-V cache so that only changed units reach glslang.
+#include "fx/compile/effect_file.h"
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/effect_units.h"
 #include "version_steps.h"
@@ -9,9 +10,7 @@ namespace fx {
 bool build_version_programs(EffectVersion& version, const ShaderCompiler& compiler, const FrontEndOptions& options,
                             DiagnosticSink& sink, ProgramOutcome& outcome) {
   size_t errors = sink.error_count();
-  EffectUnitOptions unit_options;
-  for (const auto& [name, value] : options.preprocessor.defines) unit_options.defines.push_back({name, value});
-  version.units = std::make_shared<EffectUnits>(version.parsed.ast, *version.sources, sink, std::move(unit_options));
+  version.units = std::make_shared<EffectUnits>(version.parsed.ast, *version.sources, sink, effect_unit_options(options));
   version.programs = std::make_shared<EffectPrograms>(*version.units, compiler, *version.sources);
   // Every pass, not just the selected technique's: a broken fallback must not be
   // discovered the day the fallback is chosen.

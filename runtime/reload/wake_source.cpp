@@ -1,4 +1,4 @@
-#include "reload/wake_source.h"
+#include "wake_source.h"
 
 #include <poll.h>
 #include <sys/epoll.h>

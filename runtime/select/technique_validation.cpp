@@ -20,7 +20,7 @@ std::string caps_name(const DeviceCaps& caps) { return caps.name.empty() ? "this
 // "ColorOp[0]" for indexed rows, "AlphaTestEnable" otherwise.
 std::string state_name(const ResolvedState& s) {
   std::string n(s.info->name);
-  if (s.info->index_count > 0) n += "[" + std::to_string(s.index) + "]";
+  if (s.info->index_count > 0) n.append("[").append(std::to_string(s.index)).append("]");
   return n;
 }
 
@@ -204,7 +204,7 @@ class TechniqueValidator {
       fixed_function_reason_ = reasons_.size() - 1;
       return;
     }
-    bool is_op = iequals(s.info->name, "ColorOp") || iequals(s.info->name, "AlphaOp");
+    bool is_op = s.info->field == StateField::stage_color_op || s.info->field == StateField::stage_alpha_op;
     if (!is_op || s.kind != StateValueKind::enumeration) return;
     auto op_is = [&](std::string_view op) {
       auto v = find_enum(*s.info, op);
@@ -223,9 +223,9 @@ class TechniqueValidator {
     note_texture_stage(s.index, s.range);
   }
 
-  void check_feature_state(const ResolvedState& s, std::string_view state, const char* feature,
+  void check_feature_state(const ResolvedState& s, StateField field, const char* feature,
                            bool CapsFeatures::*member) {
-    if (!iequals(s.info->name, state) || s.kind != StateValueKind::boolean || s.integer == 0) return;
+    if (s.info->field != field || s.kind != StateValueKind::boolean || s.integer == 0) return;
     if (caps_.features.*member) return;
     reasons_.add("state-needs-feature", s.range,
                  "'" + state_name(s) + " = TRUE' needs " + feature + ", not supported on " + caps_name(caps_));
@@ -287,15 +287,15 @@ class TechniqueValidator {
         check_fixed_function(s);
         continue;
       }
-      check_feature_state(s, "AlphaTestEnable", "alpha_test (no shader emulation yet)", &CapsFeatures::alpha_test);
-      check_feature_state(s, "SeparateAlphaBlendEnable", "separate_alpha_blend", &CapsFeatures::separate_alpha_blend);
-      check_feature_state(s, "TwoSidedStencilMode", "two_sided_stencil", &CapsFeatures::two_sided_stencil);
-      bool binds_texture = s.info->block == StateBlock::pass &&
-                           (iequals(s.info->name, "Texture") || iequals(s.info->name, "Sampler")) &&
+      check_feature_state(s, StateField::alpha_test, "alpha_test (no shader emulation yet)", &CapsFeatures::alpha_test);
+      check_feature_state(s, StateField::separate_alpha, "separate_alpha_blend", &CapsFeatures::separate_alpha_blend);
+      check_feature_state(s, StateField::stencil_two_sided, "two_sided_stencil", &CapsFeatures::two_sided_stencil);
+      const bool texture = s.info->field == StateField::texture;
+      bool binds_texture = s.info->block == StateBlock::pass && (texture || s.info->field == StateField::sampler) &&
                            s.kind != StateValueKind::null && s.kind != StateValueKind::invalid;
       if (binds_texture) {
         note_texture_stage(s.index, s.range);
-        if (s.kind == StateValueKind::parameter && iequals(s.info->name, "Texture")) check_texture_format(s.target);
+        if (s.kind == StateValueKind::parameter && texture) check_texture_format(s.target);
       }
     }
     if (std::string why = detail::unmet_limit(caps_, "simultaneous_textures", textures_); !why.empty())

@@ -19,7 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench.h"
-#include "fx/vulkan/effect_file.h"
+#include "fx/compile/effect_file.h"
 #include "fx/vulkan/effect_preview.h"
 #include "fx/vulkan/one_shot.h"
 #include "fxkit/fxkit.h"
@@ -49,7 +49,7 @@ struct PublicGroup {
 };
 
 struct Group {
-  fx::vk::EffectFile* effect;
+  fx::EffectFile* effect;
   fx::vk::EffectBinding* binding;
   uint32_t technique, layout;
   AppMatrix world, wvp;
@@ -102,13 +102,13 @@ int bench_apply(const BenchArgs& args) {
         {"strand_aniso.fx", {"strand_lut", "strand_analytic", "strand_four_lights"}},
         {"hemisphere.fx", {"hemisphere_sun", "hemisphere_two_term"}},
         {"aniso_lut_ward.fx", {"gaussian_per_pixel", "ln_hn_per_pixel"}}};
-    std::vector<std::unique_ptr<fx::vk::EffectFile>> effects;
+    std::vector<std::unique_ptr<fx::EffectFile>> effects;
     std::vector<std::unique_ptr<fx::vk::EffectBinding>> bindings;
     std::vector<Group> groups;
     fx::vk::EffectBindingDesc desc = preview->binding_desc();
     desc.dynamic = fx::vk::DynamicStateSet::none();  // the raw path uses static pipelines too
     for (const auto& [file, techniques] : wanted) {
-      auto e = fx::vk::EffectFile::load(args.effects_dir + "/" + file, options, sink);
+      auto e = fx::EffectFile::load(args.effects_dir + "/" + file, options, sink);
       if (!e) return report(sink), kInputErrors;
       desc.effect_dir = args.effects_dir;
       auto b = fx::vk::EffectBinding::create(*ctx, *e->model, *e->programs, *e->params, preview->textures(),

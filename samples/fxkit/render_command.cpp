@@ -13,7 +13,7 @@
 #include "command.h"
 #include "fx/diagnostic_render.h"
 #include "fx/select/technique_validation.h"
-#include "fx/vulkan/effect_file.h"
+#include "fx/compile/effect_file.h"
 #include "fx/vulkan/effect_preview.h"
 #include "fx/vulkan/effect_scene.h"
 
@@ -75,7 +75,7 @@ int run_render(const RenderArgs& args) {
     return kUsageError;
   }
   fx::DiagnosticSink diags;
-  auto effect = fx::vk::EffectFile::load(args.file, options, diags);
+  auto effect = fx::EffectFile::load(args.file, options, diags);
   if (!effect) {
     std::fputs(fx::render_text(diags.diagnostics(), fx::SourceManager{}).c_str(), stderr);
     return kInputErrors;

@@ -14,7 +14,7 @@
 #include "fx/reload/effect_library.h"
 #include "fx/reload/reload_transaction.h"
 #include "fx/vulkan/effect_preview.h"
-#include "fx/vulkan/reload_backend.h"
+#include "fx/reload/vulkan_reload_backend.h"
 
 namespace fxkit {
 namespace {

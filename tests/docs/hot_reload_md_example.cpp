@@ -1,5 +1,6 @@
-// docs/hot-reload.md and runtime/fx/vulkan/reload_backend.h: a FileWatcher loop, and an
-// EffectLibrary drawing through a ReloadBackend (here into an EffectPreview's target).
+// docs/hot-reload.md and runtime/reload/include/fx/reload/vulkan_reload_backend.h: a
+// FileWatcher loop, and an EffectLibrary drawing through a ReloadBackend (here into an
+// EffectPreview's target).
 #include <array>
 #include <chrono>
 
@@ -10,7 +11,7 @@
 #include "fx/select/caps_sources.h"
 #include "fx/select/selection.h"
 #include "fx/vulkan/effect_preview.h"
-#include "fx/vulkan/reload_backend.h"
+#include "fx/reload/vulkan_reload_backend.h"
 
 namespace fx::docs {
 namespace {
@@ -86,7 +87,7 @@ TEST_F(ReloadExample, LoadSetSelectDrawPoll) {
   EXPECT_EQ(e.technique_name(), "strand_bump_renormalized");
   EXPECT_EQ(frames_drawn, 2);
 
-  {  // runtime/fx/vulkan/reload_backend.h
+  {  // runtime/reload/include/fx/reload/vulkan_reload_backend.h
     fx::vk::ReloadBackend backend(ctx, textures, frames,
                                   {.formats = formats, .binding = desc, .vertex_layout = layout_for});
     fx::EffectLibrary lib({.backend = &backend});

@@ -3,7 +3,7 @@
 #include "example_fixture.h"
 #include "fx/mesh.h"
 #include "fx/vulkan/effect_binding.h"
-#include "fx/vulkan/effect_file.h"
+#include "fx/compile/effect_file.h"
 #include "fx/vulkan/one_shot.h"
 #include "fx/vulkan/render_target.h"
 
@@ -15,7 +15,7 @@ TEST_F(ExampleTest, RenderingAnEffect) {
   fx::DiagnosticSink sink;
   fx::FrontEndOptions options;
   options.preprocessor.include_dirs = {"effects"};
-  std::unique_ptr<fx::vk::EffectFile> file = fx::vk::EffectFile::load("effects/per_pixel_lighting.fx", options, sink);
+  std::unique_ptr<fx::EffectFile> file = fx::EffectFile::load("effects/per_pixel_lighting.fx", options, sink);
   ASSERT_TRUE(file);
   const uint32_t technique = file->find_technique("diffuse_ps20");
   auto target = fx::vk::RenderTarget::create(ctx, {.width = 32, .height = 32, .depth = fx::vk::DepthAttachment::d24s8}, sink);

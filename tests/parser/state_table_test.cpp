@@ -278,5 +278,33 @@ TEST(StateTable, DocIsCurrent) {
   EXPECT_FALSE(std::getline(have, a)) << "docs/states.md has extra lines";
 }
 
+// Every row says where its value lands; a row fxkit does not apply says why.
+TEST(StateTable, EveryRowSaysWhereItLands) {
+  for (const StateInfo& s : all_states()) {
+    if (s.lands == StateLanding::unsupported || s.lands == StateLanding::fixed_function) {
+      EXPECT_FALSE(s.reason.empty()) << s.name;
+    } else {
+      EXPECT_NE(s.field, StateField::none) << s.name;
+    }
+    if (s.vulkan == VulkanMeaning::maps_to_vulkan) {
+      EXPECT_NE(s.lands, StateLanding::unsupported) << s.name;
+    }
+    if (s.vulkan == VulkanMeaning::fixed_function) {
+      EXPECT_EQ(s.lands, StateLanding::fixed_function) << s.name;
+    }
+    if (s.field != StateField::none && s.lands != StateLanding::fixed_function) {
+      EXPECT_EQ(s.lands, landing_of(s.field)) << s.name;
+    }
+  }
+  EXPECT_EQ(find_state("ZWriteEnable", StateBlock::pass)->field, StateField::depth_write);
+  EXPECT_EQ(find_state("DepthWriteMask", StateBlock::depth_stencil_state)->field, StateField::depth_write);
+  const StateInfo& set_blend = *find_state("SetBlendState", StateBlock::pass);
+  EXPECT_EQ(set_blend.call_fields[0], StateField::blend_constants);
+  EXPECT_EQ(set_blend.call_fields[1], StateField::sample_mask);
+  EXPECT_EQ(find_state("StencilRef", StateBlock::pass)->lands, StateLanding::dynamic);
+  EXPECT_EQ(to_string(StateField::stage_alpha_op), "stage_alpha_op");
+  EXPECT_NE(find_state("DitherEnable", StateBlock::pass)->reason, "");
+}
+
 }  // namespace
 }  // namespace fx

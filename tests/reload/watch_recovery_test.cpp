@@ -8,8 +8,8 @@
 #include <fstream>
 
 #include "fx/reload/file_watcher.h"
-#include "reload/file_snapshot.h"
-#include "reload/network_filesystem.h"
+#include "file_snapshot.h"
+#include "network_filesystem.h"
 #include "watch_test_support.h"
 
 namespace fx {

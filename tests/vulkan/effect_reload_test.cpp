@@ -10,7 +10,7 @@
 #include "effect_test_util.h"
 #include "fx/reload/effect_library.h"
 #include "fx/reload/reload_transaction.h"
-#include "fx/vulkan/reload_backend.h"
+#include "fx/reload/vulkan_reload_backend.h"
 
 namespace fx::vk::testing {
 namespace {

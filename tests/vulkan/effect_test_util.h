@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "fx/vulkan/effect_file.h"
+#include "fx/compile/effect_file.h"
 #include "fx/vulkan/effect_preview.h"
 #include "vulkan_fixture.h"
 

@@ -1,7 +1,8 @@
-// fx::vk::EffectFile: one effect file loaded for rendering without hot reload: parsed,
+// fx::EffectFile: one effect file loaded for rendering without hot reload: parsed,
 // modelled, split into translation units, compiled lazily, with its parameter values.
-// What `fxkit render`, `fxkit bench apply` and the rendering tests start from (hot reload
-// builds the same pieces per version in fx/reload).
+// What `fxkit render`, `fxkit bench apply` and the rendering tests start from. Hot reload
+// builds the same pieces per version (fx/reload, shared and cached), with the same unit
+// options (effect_unit_options).
 #pragma once
 #include <memory>
 #include <string>
@@ -14,7 +15,11 @@
 #include "fx/model/parameter_store.h"
 #include "fx/source_manager.h"
 
-namespace fx::vk {
+namespace fx {
+
+// The translation-unit options of an effect compiled with `options`: its preprocessor
+// defines, which every shader unit sees again.
+EffectUnitOptions effect_unit_options(const FrontEndOptions& options);
 
 struct EffectFile {
   std::string path;
@@ -33,4 +38,4 @@ struct EffectFile {
   uint32_t find_technique(std::string_view name) const;
 };
 
-}  // namespace fx::vk
+}  // namespace fx

@@ -1,5 +1,5 @@
 // ReloadBackend: a binding per effect version, made and warmed on the reload worker.
-#include "fx/vulkan/reload_backend.h"
+#include "fx/reload/vulkan_reload_backend.h"
 
 #include <chrono>
 #include <filesystem>

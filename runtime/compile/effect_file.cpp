@@ -1,7 +1,13 @@
 // EffectFile: front end -> model -> units -> lazily compiled programs -> parameter store.
-#include "fx/vulkan/effect_file.h"
+#include "fx/compile/effect_file.h"
 
-namespace fx::vk {
+namespace fx {
+
+EffectUnitOptions effect_unit_options(const FrontEndOptions& options) {
+  EffectUnitOptions unit_options;
+  for (const auto& [name, value] : options.preprocessor.defines) unit_options.defines.push_back({name, value});
+  return unit_options;
+}
 
 std::unique_ptr<EffectFile> EffectFile::load(const std::string& path, const FrontEndOptions& options,
                                              DiagnosticSink& sink) {
@@ -11,9 +17,7 @@ std::unique_ptr<EffectFile> EffectFile::load(const std::string& path, const Fron
   if (sink.has_errors()) return nullptr;
   e->model = std::make_unique<EffectModel>(build_effect_model(e->parsed, e->sources, sink));
   if (sink.has_errors()) return nullptr;
-  std::vector<ShaderDefine> defines;
-  for (const auto& [name, value] : options.preprocessor.defines) defines.push_back({name, value});
-  e->units = std::make_unique<EffectUnits>(e->parsed.ast, e->sources, sink, EffectUnitOptions{defines});
+  e->units = std::make_unique<EffectUnits>(e->parsed.ast, e->sources, sink, effect_unit_options(options));
   e->compiler = std::make_unique<ShaderCompiler>();
   e->programs = std::make_unique<EffectPrograms>(*e->units, *e->compiler, e->sources);
   e->params = std::make_unique<ParameterStore>(*e->model, nullptr, &sink);
@@ -26,4 +30,4 @@ uint32_t EffectFile::find_technique(std::string_view name) const {
   return kNoIndex;
 }
 
-}  // namespace fx::vk
+}  // namespace fx
