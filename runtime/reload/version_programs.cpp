@@ -2,12 +2,13 @@
 // the shared SPIR-V cache so that only changed units reach glslang.
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/effect_units.h"
+#include "fx/worker_pool.h"
 #include "version_steps.h"
 
 namespace fx {
 
-bool build_version_programs(EffectVersion& version, const ShaderCompiler& compiler, const FrontEndOptions& options,
-                            DiagnosticSink& sink, ProgramOutcome& outcome) {
+bool build_version_programs(EffectVersion& version, const ShaderCompiler& compiler, TaskExecutor* executor,
+                            const FrontEndOptions& options, DiagnosticSink& sink, ProgramOutcome& outcome) {
   size_t errors = sink.error_count();
   EffectUnitOptions unit_options;
   for (const auto& [name, value] : options.preprocessor.defines) unit_options.defines.push_back({name, value});
@@ -15,6 +16,7 @@ bool build_version_programs(EffectVersion& version, const ShaderCompiler& compil
   version.programs = std::make_shared<EffectPrograms>(*version.units, compiler, *version.sources);
   // Every pass, not just the selected technique's: a broken fallback must not be
   // discovered the day the fallback is chosen.
+  if (executor) version.programs->compile_all(*executor);
   for (const EffectPass& pass : version.units->passes()) {
     const PassProgram& program = version.programs->program(pass);
     for (const StageProgram& s : program.stages) {

@@ -49,6 +49,7 @@ struct DeviceOptions {
   uint32_t uniform_bytes_per_frame = 4u << 20;
   uint32_t descriptor_sets_per_frame = 1024;
   std::string cache_dir{};                  // SPIR-V cache on disk; "": in memory only
+  uint32_t compile_threads = 0;             // threads compiling an effect's shaders; 0: one per core
 };
 
 // What begin_frame() swapped in or could not.
