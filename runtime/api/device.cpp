@@ -129,6 +129,7 @@ std::unique_ptr<detail::DeviceState> make_state(fx::vk::Context ctx, const Devic
   lib.backend = s->backend.get();
   lib.caps = fx::caps_from_physical_device(c.physical_device());
   lib.spirv_cache_dir = options.cache_dir;
+  lib.compile_threads = options.compile_threads;
   lib.frames_in_flight = std::max(1u, options.frames_in_flight);
   s->library = std::make_unique<fx::EffectLibrary>(std::move(lib));
   return s;

@@ -1,8 +1,10 @@
 #include "fx/compile/effect_programs.h"
 
 #include <chrono>
+#include <unordered_set>
 
 #include "fx/compile/spirv_cache.h"
+#include "fx/worker_pool.h"
 #include "shader_diagnostics.h"
 
 namespace fx {
@@ -51,7 +53,13 @@ StageProgram EffectPrograms::compile_stage(const StageUnit& stage, TranslationUn
     ++stats_.stages_reused;
   } else {
     DiagnosticSink sink;
-    out.shader = compile_and_report(compiler_, unit, resolver_for(sm_), sink);
+    if (auto ahead = compiled_ahead_.find(key); ahead != compiled_ahead_.end()) {
+      out.shader = std::move(ahead->second);
+      compiled_ahead_.erase(ahead);
+    } else {
+      out.shader = compiler_.compile(unit);
+    }
+    report_messages(out.shader.messages, resolver_for(sm_), sink);
     if (!out.shader.ok && out.shader.messages.empty())
       sink.error("shader-compile-error", stage.range, out.shader.info_log);
     out.diagnostics = sink.diagnostics();
@@ -74,6 +82,37 @@ std::optional<StageProgram> EffectPrograms::compile_alone(const StageUnit& stage
   std::optional<TranslationUnit> unit = units_.unit(stage);
   if (!unit) return std::nullopt;
   return compile_stage(stage, std::move(*unit));
+}
+
+void EffectPrograms::compile_all(TaskExecutor& executor, bool shader_array_choices) {
+  struct Job {
+    std::string key;
+    TranslationUnit unit;
+    CompiledShader shader;
+  };
+  std::vector<Job> jobs;
+  std::unordered_set<std::string> queued;
+  auto add = [&](const StageUnit& stage) {
+    std::optional<TranslationUnit> unit = units_.unit(stage);
+    if (!unit) return;
+    std::string key = spirv_cache_key(*unit, compiler_.options()).hex();
+    if (memo_.count(key) || compiled_ahead_.count(key) || !queued.insert(key).second) return;
+    jobs.push_back({std::move(key), std::move(*unit), {}});
+  };
+  for (const EffectPass& pass : units_.passes()) {
+    if (is_compiled(pass)) continue;
+    for (const StageUnit& stage : pass.stages) {
+      add(stage);
+      if (!shader_array_choices) continue;
+      for (size_t i = 0; i < stage.choices.size(); ++i)
+        if (i != stage.choice) add(stage.choices[i]);
+    }
+  }
+  // Only glslang runs on the executor: placing diagnostics reads the SourceManager, whose
+  // line tables are built on first use and are not safe to build from several threads.
+  executor.for_each(jobs.size(), [&](size_t i) { jobs[i].shader = compiler_.compile(jobs[i].unit); });
+  for (Job& job : jobs) compiled_ahead_.emplace(std::move(job.key), std::move(job.shader));
+  for (const EffectPass& pass : units_.passes()) program(pass);
 }
 
 const PassProgram& EffectPrograms::program(const EffectPass& pass) {

@@ -18,6 +18,7 @@
 #include "fx/model/parameter_store.h"
 #include "fx/reload/include_graph.h"
 #include "fx/reload/reload_transaction.h"
+#include "fx/worker_pool.h"
 
 namespace fx {
 
@@ -96,6 +97,9 @@ struct EffectLibrary::Impl {
   FrontEndOptions front_end;
   SpirvCache cache;
   ShaderCompiler compiler;
+  std::unique_ptr<WorkerPool> own_pool;  // when the options give no executor
+  TaskExecutor* executor = nullptr;      // compiles stages and effects in parallel
+  std::mutex backend_mutex;              // prepare() calls one at a time
 
   // Render thread only.
   std::map<std::string, std::shared_ptr<detail::EffectSlot>> by_key;
@@ -125,6 +129,11 @@ struct EffectLibrary::Impl {
     front_end.preprocessor.include_dirs = options.include_dirs;
     for (const std::string& d : options.defines) front_end.preprocessor.defines.push_back(parse_define(d));
     front_end.check.profile = options.profile;
+    executor = options.executor;
+    if (!executor) {
+      own_pool = std::make_unique<WorkerPool>(options.compile_threads);
+      executor = own_pool.get();
+    }
     if (options.watch) {
       watcher = std::make_unique<FileWatcher>(
           FileWatcherOptions{.backend = options.watch_backend, .coalesce_window = options.coalesce});
@@ -160,6 +169,8 @@ struct EffectLibrary::Impl {
     return run_reload_transaction({.path = path,
                                    .front_end = &front_end,
                                    .compiler = &compiler,
+                                   .executor = executor,
+                                   .backend_mutex = &backend_mutex,
                                    .caps = options.caps ? &*options.caps : nullptr,
                                    .backend = options.backend,
                                    .serial = serial});
@@ -341,36 +352,48 @@ EffectLibrary::~EffectLibrary() {
   impl_->release(0, true);
 }
 
-EffectHandle EffectLibrary::load(const std::string& path) {
+EffectHandle EffectLibrary::load(const std::string& path) { return load(std::vector<std::string>{path}).front(); }
+
+std::vector<EffectHandle> EffectLibrary::load(const std::vector<std::string>& paths) {
   Impl& d = *impl_;
-  std::string key = normalize(path);
-  if (auto it = d.by_key.find(key); it != d.by_key.end()) return EffectHandle(it->second);
-  auto slot = std::make_shared<detail::EffectSlot>();
-  slot->id = d.next_id++;
-  slot->path = path;
-  slot->key = key;
-  {
+  std::vector<std::shared_ptr<detail::EffectSlot>> fresh;  // not loaded before this call
+  for (const std::string& path : paths) {
+    std::string key = normalize(path);
+    auto known = [&](const std::shared_ptr<detail::EffectSlot>& s) { return s->key == key; };
+    if (d.by_key.count(key) || std::any_of(fresh.begin(), fresh.end(), known)) continue;
+    auto slot = std::make_shared<detail::EffectSlot>();
+    slot->id = d.next_id++;
+    slot->path = path;
+    slot->key = key;
     // Watch before reading, so an edit racing with this load is still reported.
     std::lock_guard lock(d.mutex);
     d.effects[slot->id] = {key, 0};
     d.apply(d.graph.set_files(slot->id, {key}));
+    fresh.push_back(std::move(slot));
   }
-  ReloadTransactionResult tx = d.transact(key, 1);
-  {
-    std::lock_guard lock(d.mutex);
-    std::vector<std::string> files = d.normalized_files(key, tx.files);
-    d.apply(d.graph.set_files(slot->id, files));
-    if (tx.ok()) d.effects[slot->id].serial = 1;
+  std::vector<ReloadTransactionResult> results(fresh.size());
+  d.executor->for_each(fresh.size(), [&](size_t i) { results[i] = d.transact(fresh[i]->key, 1); });
+  for (size_t i = 0; i < fresh.size(); ++i) {
+    detail::EffectSlot& slot = *fresh[i];
+    ReloadTransactionResult& tx = results[i];
+    {
+      std::lock_guard lock(d.mutex);
+      std::vector<std::string> files = d.normalized_files(slot.key, tx.files);
+      d.apply(d.graph.set_files(slot.id, files));
+      if (tx.ok()) d.effects[slot.id].serial = 1;
+    }
+    slot.diagnostics = tx.diagnostics;
+    slot.diagnostic_sources = tx.sources;
+    if (tx.ok()) {
+      slot.live = std::shared_ptr<EffectVersion>(tx.version.release());
+      slot.techniques = slot.live->techniques;
+    }
+    d.by_key[slot.key] = fresh[i];
+    d.slots[slot.id] = fresh[i];
   }
-  slot->diagnostics = tx.diagnostics;
-  slot->diagnostic_sources = tx.sources;
-  if (tx.ok()) {
-    slot->live = std::shared_ptr<EffectVersion>(tx.version.release());
-    slot->techniques = slot->live->techniques;
-  }
-  d.by_key[key] = slot;
-  d.slots[slot->id] = slot;
-  return EffectHandle(slot);
+  std::vector<EffectHandle> handles;
+  for (const std::string& path : paths) handles.push_back(EffectHandle(d.by_key.at(normalize(path))));
+  return handles;
 }
 
 void EffectLibrary::unload(const EffectHandle& effect) {

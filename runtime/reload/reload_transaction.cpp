@@ -71,7 +71,7 @@ ReloadTransactionResult run_reload_transaction(const ReloadTransactionInput& inp
   if (ok && input.compiler) {
     start = Clock::now();
     ProgramOutcome outcome;
-    ok = build_version_programs(*version, *input.compiler, fe, sink, outcome);
+    ok = build_version_programs(*version, *input.compiler, input.executor, fe, sink, outcome);
     result.ms.compile = ms_since(start);
     result.ms.glslang = outcome.glslang_ms;
     result.recompiled = std::move(outcome.recompiled);
@@ -90,7 +90,11 @@ ReloadTransactionResult run_reload_transaction(const ReloadTransactionInput& inp
   if (ok && input.backend) {
     BackendTimings timings;
     DiagnosticSink gpu_sink;
-    version->gpu = input.backend->prepare(*version, gpu_sink, timings);
+    {
+      std::unique_lock<std::mutex> lock;
+      if (input.backend_mutex) lock = std::unique_lock(*input.backend_mutex);
+      version->gpu = input.backend->prepare(*version, gpu_sink, timings);
+    }
     for (const Diagnostic& d : gpu_sink.diagnostics()) forward(d, sink);
     if (!version->gpu && !sink.has_errors())
       sink.error("reload-backend-failed", {}, "the GPU backend could not prepare " + input.path);

@@ -3,17 +3,19 @@
 #include "fx/compile/effect_file.h"
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/effect_units.h"
+#include "fx/worker_pool.h"
 #include "version_steps.h"
 
 namespace fx {
 
-bool build_version_programs(EffectVersion& version, const ShaderCompiler& compiler, const FrontEndOptions& options,
-                            DiagnosticSink& sink, ProgramOutcome& outcome) {
+bool build_version_programs(EffectVersion& version, const ShaderCompiler& compiler, TaskExecutor* executor,
+                            const FrontEndOptions& options, DiagnosticSink& sink, ProgramOutcome& outcome) {
   size_t errors = sink.error_count();
   version.units = std::make_shared<EffectUnits>(version.parsed.ast, *version.sources, sink, effect_unit_options(options));
   version.programs = std::make_shared<EffectPrograms>(*version.units, compiler, *version.sources);
   // Every pass, not just the selected technique's: a broken fallback must not be
   // discovered the day the fallback is chosen.
+  if (executor) version.programs->compile_all(*executor);
   for (const EffectPass& pass : version.units->passes()) {
     const PassProgram& program = version.programs->program(pass);
     for (const StageProgram& s : program.stages) {

@@ -23,10 +23,11 @@ struct ProgramOutcome {
   double glslang_ms = 0;
 };
 
-// Compile side (version_programs.cpp): translation units and every pass's program.
-// Stage and link diagnostics go to `sink`. Returns false when any of them is an error.
-bool build_version_programs(EffectVersion& version, const ShaderCompiler& compiler, const FrontEndOptions& options,
-                            DiagnosticSink& sink, ProgramOutcome& outcome);
+// Compile side (version_programs.cpp): translation units and every pass's program, the
+// stages spread over `executor` when given. Stage and link diagnostics go to `sink`.
+// Returns false when any of them is an error.
+bool build_version_programs(EffectVersion& version, const ShaderCompiler& compiler, TaskExecutor* executor,
+                            const FrontEndOptions& options, DiagnosticSink& sink, ProgramOutcome& outcome);
 
 // Copies a diagnostic into a sink (keeping its severity, id, range, notes and fix-its).
 inline void forward(const Diagnostic& d, DiagnosticSink& sink) {

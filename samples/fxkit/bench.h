@@ -13,7 +13,8 @@ struct BenchArgs {
   double size_mb = 10;  // frontend: size of the generated effect
   int repeats = 5;
   bool json = false;
-  std::string effects_dir = "effects";  // compile: the effects to load
+  std::string effects_dir = "effects";  // compile, check: the effects to load or check
+  std::string seeds_dir = "effects";    // check: the effects loaded through the library
   std::string fxh;  // accuracy: write technique cost/error annotations here
   int processes = 1;  // > 1: the benchmark in that many fresh processes, median ratio
 };
@@ -35,6 +36,9 @@ inline double interpolated_median(std::vector<double> v) {
 int bench_frontend(const BenchArgs& args);
 // `fxkit bench compile`: effect load time by phase, overhead vs glslang, cached reload.
 int bench_compile(const BenchArgs& args);
+// `fxkit bench check`: check --compile with 2 jobs vs 1, --cache second run vs first,
+// library loads with 2 compile threads vs 1.
+int bench_check(const BenchArgs& args);
 // `fxkit bench reload`: edit-to-swap latency of hot reload by phase, framework share.
 int bench_reload(const BenchArgs& args);
 // `fxkit bench apply`: EffectBinding recording vs hand-written Vulkan, ratio, pipeline counts.

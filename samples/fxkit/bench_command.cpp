@@ -8,10 +8,12 @@ namespace fxkit {
 void register_bench(CLI::App& app, Runner& run) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand("bench", "Benchmarks: fxkit against a baseline, as a ratio");
-  cmd->add_option("MODE", args->mode, "What to measure: frontend, compile, reload, accuracy, apply")
+  cmd->add_option("MODE", args->mode, "What to measure: frontend, compile, check, reload, accuracy, apply")
       ->required()
-      ->check(CLI::IsMember({"frontend", "compile", "reload", "accuracy", "apply"}));
-  cmd->add_option("--effects", args->effects_dir, "compile: folder of .fx files to load")
+      ->check(CLI::IsMember({"frontend", "compile", "check", "reload", "accuracy", "apply"}));
+  cmd->add_option("--effects", args->effects_dir, "compile, check: folder of .fx files to load or check")
+      ->capture_default_str();
+  cmd->add_option("--seeds", args->seeds_dir, "check: folder of .fx files loaded through the library")
       ->capture_default_str();
   cmd->add_option("--size-mb", args->size_mb, "frontend: size of the generated effect in MB")
       ->capture_default_str();
@@ -41,6 +43,10 @@ void register_bench(CLI::App& app, Runner& run) {
     }
     if (args->mode == "accuracy") {
       run = [args] { return bench_accuracy(*args); };
+      return;
+    }
+    if (args->mode == "check") {
+      run = [args] { return bench_check(*args); };
       return;
     }
     if (args->mode == "compile") {

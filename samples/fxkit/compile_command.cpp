@@ -1,6 +1,5 @@
 // `fxkit compile FILE [-I DIR]... [-D NAME[=VALUE]]... [--profile P] [--technique T]
 //  [-o DIR] [--cache DIR] [--json]`: SPIR-V for every pass stage.
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -11,44 +10,10 @@
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/spirv_cache.h"
 #include "fx/diagnostic_render.h"
+#include "shown_once.h"
 
 namespace fxkit {
 namespace {
-
-// The diagnostics of every stage, each shown once: a function several passes' shaders call
-// reports the same error in each, which is one problem; a note lists where else it came from.
-class ShownOnce {
- public:
-  // `where` names the pass stage the diagnostics came from ("" for the effect itself).
-  void add(const std::vector<fx::Diagnostic>& diagnostics, const std::string& where) {
-    for (const fx::Diagnostic& d : diagnostics) {
-      auto same = std::find_if(shown_.begin(), shown_.end(), [&](const Shown& s) {
-        return s.diagnostic.id == d.id && s.diagnostic.severity == d.severity &&
-               s.diagnostic.range.begin == d.range.begin && s.diagnostic.message == d.message;
-      });
-      if (same == shown_.end()) shown_.push_back({d, {}});
-      else if (!where.empty()) same->also.push_back(where);
-    }
-  }
-  std::vector<fx::Diagnostic> diagnostics() const {
-    std::vector<fx::Diagnostic> out;
-    for (const Shown& s : shown_) {
-      out.push_back(s.diagnostic);
-      if (s.also.empty()) continue;
-      std::string list;
-      for (const std::string& w : s.also) list += (list.empty() ? "" : ", ") + w;
-      out.back().notes.push_back({s.diagnostic.range.begin, "also reported for " + list});
-    }
-    return out;
-  }
-
- private:
-  struct Shown {
-    fx::Diagnostic diagnostic;
-    std::vector<std::string> also;
-  };
-  std::vector<Shown> shown_;
-};
 
 // One compiled stage as `fxkit compile --json` lists it. A stage of a shader array also
 // names the index expression that chooses among its elements.

@@ -53,6 +53,7 @@ struct DeviceOptions {
   // (more pipelines, as hand-written Vulkan usually does).
   bool dynamic_state = true;
   std::string cache_dir{};                  // SPIR-V cache on disk; "": in memory only
+  uint32_t compile_threads = 0;             // threads compiling an effect's shaders; 0: one per core
 };
 
 // What begin_frame() swapped in or could not.

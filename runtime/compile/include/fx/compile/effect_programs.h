@@ -17,6 +17,8 @@
 
 namespace fx {
 
+class TaskExecutor;
+
 // One compiled stage of a pass, with the diagnostics of its compilation.
 struct StageProgram {
   ShaderStage stage = ShaderStage::vertex;
@@ -53,7 +55,8 @@ struct EffectProgramStats {
   double link_ms = 0;            // link_program
 };
 
-// Lazily compiled programs of one effect. Not thread-safe: one EffectPrograms per thread.
+// Lazily compiled programs of one effect. Not thread-safe: one EffectPrograms per thread
+// (compile_all spreads glslang's work over an executor's threads itself).
 class EffectPrograms {
  public:
   // `units`, `compiler` and `sm` must outlive this (diagnostics are placed with `sm`).
@@ -70,6 +73,11 @@ class EffectPrograms {
   // array (StageUnit::choices), for tools that check every shader an effect holds. nullopt
   // when the stage has no unit (assembly, invalid).
   std::optional<StageProgram> compile_alone(const StageUnit& stage);
+  // Compiles every pass's stages (and with `shader_array_choices`, the other elements of the
+  // shader arrays passes index) in parallel on `executor`, then links every pass: program()
+  // and compile_alone() then only look results up. Each distinct unit is compiled once;
+  // diagnostics are placed on the calling thread, in pass order, as program() would.
+  void compile_all(TaskExecutor& executor, bool shader_array_choices = false);
   // Whether `pass` has been compiled already (no compile happens).
   bool is_compiled(const EffectPass& pass) const;
 
@@ -88,6 +96,9 @@ class EffectPrograms {
   const SourceManager& sm_;
   std::vector<std::unique_ptr<PassProgram>> programs_;  // parallel to units_.passes()
   std::unordered_map<std::string, Memo> memo_;          // by SPIR-V cache key
+  // compile_all's results not yet asked for, by SPIR-V cache key: compile_stage takes them
+  // as its own compile (they count as compiled, not reused).
+  std::unordered_map<std::string, CompiledShader> compiled_ahead_;
   EffectProgramStats stats_;
 };
 

@@ -31,6 +31,7 @@ struct Param;
 class ParameterStore;
 struct SelectionCriteria;
 struct EffectVersion;
+class TaskExecutor;
 
 struct EffectLibraryOptions {
   std::vector<std::string> include_dirs;  // searched after the including file's folder
@@ -42,6 +43,10 @@ struct EffectLibraryOptions {
   EffectBackend* backend = nullptr;       // not owned; nullptr: no GPU objects
   std::optional<DeviceCaps> caps;         // techniques are validated against these
   std::string spirv_cache_dir;            // "" keeps the SPIR-V cache in memory only
+  // Threads that compile shaders (the stages of an effect, the effects of one load() call):
+  // 0: one per hardware thread; 1: the calling thread alone. Ignored when `executor` is set.
+  uint32_t compile_threads = 0;
+  TaskExecutor* executor = nullptr;       // not owned: the application's own job system
   uint32_t frames_in_flight = 2;          // how long replaced versions are kept (poll frames)
   std::function<void(const ReloadEvent&)> on_event;  // called from poll(), before it returns
 };
@@ -116,6 +121,10 @@ class EffectLibrary {
   // path twice returns the same effect. A failed load still returns a handle (ok() false,
   // diagnostics() say why) that becomes ok once an edit fixes the file.
   EffectHandle load(const std::string& path);
+  // Loads several effects, compiling them in parallel on the compile threads (or the
+  // executor); the handles are in the order of `paths`. With a backend, its prepare() calls
+  // are made one at a time.
+  std::vector<EffectHandle> load(const std::vector<std::string>& paths);
   // Stops watching the effect; its version is retired like a replaced one and the
   // handle (and its copies) become inert.
   void unload(const EffectHandle& effect);

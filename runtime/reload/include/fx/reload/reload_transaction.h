@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ namespace fx {
 // are shared_ptrs.
 struct EffectModel;
 class EffectUnits;
+class TaskExecutor;
 class EffectPrograms;
 class ParameterStore;
 
@@ -61,6 +63,8 @@ struct ReloadTransactionInput {
   std::string path;
   const FrontEndOptions* front_end = nullptr;
   const ShaderCompiler* compiler = nullptr;     // thread-safe, shares the SPIR-V cache
+  TaskExecutor* executor = nullptr;             // compiles the stages in parallel; nullptr: in turn
+  std::mutex* backend_mutex = nullptr;          // held around backend->prepare when given
   const DeviceCaps* caps = nullptr;             // nullptr: no device requirement checks
   EffectBackend* backend = nullptr;             // nullptr: no GPU objects
   uint64_t serial = 0;                          // given to the version on success

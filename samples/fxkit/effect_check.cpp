@@ -1,0 +1,164 @@
+#include "effect_check.h"
+
+#include <chrono>
+
+#include "effect_summary.h"
+#include "fx/diagnostic_render.h"
+#include "shown_once.h"
+#include "fx/worker_pool.h"
+#ifdef FXKIT_HAS_RUNTIME
+#include "check_cache.h"
+#include "fx/compile/effect_programs.h"
+#include "fx/select/technique_validation.h"
+#endif
+
+namespace fxkit {
+namespace {
+
+#ifdef FXKIT_HAS_RUNTIME
+// Every technique valid or not on the caps, as text and in the summary; false when none is.
+bool report_techniques(const fx::ParsedEffect& parsed, const EffectCheckSettings& settings, fx::SourceManager& sm,
+                       fx::DiagnosticSink& diags, EffectCheck& out) {
+  const fx::DeviceCaps& caps = *settings.caps;
+  auto techniques = fx::validate_effect(parsed.ast, sm, caps, diags, settings.caps_compile, settings.compiler);
+  size_t valid = 0;
+  for (const auto& t : techniques) valid += t.valid ? 1 : 0;
+  nlohmann::json list = nlohmann::json::array();
+  out.caps_text += out.file + " on " + caps.name + ": " + std::to_string(valid) + " of " +
+                   std::to_string(techniques.size()) + " techniques valid\n";
+  for (const auto& t : techniques) {
+    list.push_back({{"name", t.name}, {"valid", t.valid}, {"reasons", fx::render_json(t.reasons, sm)}});
+    char line[256];
+    std::snprintf(line, sizeof line, "  %-8s ", t.valid ? "valid" : "invalid");
+    out.caps_text += line + t.name + "\n";
+    for (const auto& r : t.reasons) out.caps_text += "    " + fx::located_reason(r, sm) + "\n";
+  }
+  out.effect["caps"] = caps.name;
+  out.effect["techniques"] = std::move(list);
+  out.effect["valid_techniques"] = valid;
+  return valid > 0;
+}
+
+// What compiling every shader of the effect reports, each diagnostic once. Assembly and
+// fixed-function stages are not reported: the legacy path runs them, so they are not a
+// defect of the effect (`fxkit compile` lists them, as it is asked for SPIR-V). A stage
+// fxkit cannot run at all is an error.
+void compile_shaders(const fx::ParsedEffect& parsed, const EffectCheckSettings& settings, fx::SourceManager& sm,
+                     fx::DiagnosticSink& diags, ShownOnce& shown) {
+  fx::EffectUnitOptions unit_options;
+  for (const auto& [name, value] : settings.front_end.preprocessor.defines) unit_options.defines.push_back({name, value});
+  fx::EffectUnits units(parsed.ast, sm, diags, std::move(unit_options));
+  fx::EffectPrograms programs(units, *settings.compiler, sm);
+  if (settings.executor) programs.compile_all(*settings.executor, true);
+  shown.add(diags.diagnostics(), "");
+  for (const fx::EffectPass& pass : units.passes()) {
+    const std::string name = pass.technique + "." + pass.pass;
+    const fx::PassProgram& program = programs.program(pass);
+    for (const fx::StageProgram& s : program.stages) shown.add(s.diagnostics, name + " " + fx::to_string(s.stage));
+    for (const fx::StageUnit& stage : pass.stages) {
+      for (size_t i = 0; i < stage.choices.size(); ++i) {
+        if (i == stage.choice) continue;
+        if (std::optional<fx::StageProgram> s = programs.compile_alone(stage.choices[i]))
+          shown.add(s->diagnostics, name + " " + fx::to_string(s->stage) + " choice " + std::to_string(i));
+      }
+      if (stage.kind != fx::StageSourceKind::invalid) continue;
+      fx::DiagnosticSink located;
+      located.error("shader-not-compiled", stage.range,
+                    "pass '" + name + "' cannot be compiled: " + fx::to_string(stage.stage) + " stage: " + stage.unsupported);
+      shown.add(located.diagnostics(), "");
+    }
+    shown.add(program.diagnostics, name);
+  }
+}
+#endif
+
+}  // namespace
+
+EffectCheck check_effect(const std::string& file, const EffectCheckSettings& settings) {
+  auto start = std::chrono::steady_clock::now();
+  EffectCheck out;
+  out.file = file;
+  fx::SourceManager sm;
+  fx::DiagnosticSink diags;
+  fx::ParsedEffect parsed = fx::parse_effect_file(file, sm, diags, settings.front_end);
+  out.files = parsed.files;
+  if (out.files.empty()) out.files.push_back(file);
+  out.effect = summarize_effect(parsed.ast, sm);
+  out.effect["file"] = file;
+  out.effect["ok"] = parsed.ok;
+  out.effect["includes"] = parsed.files;
+  ShownOnce shown;
+#ifdef FXKIT_HAS_RUNTIME
+  // The shaders of an effect whose front end failed would only repeat its errors.
+  if (settings.compile && settings.compiler && !diags.has_errors()) compile_shaders(parsed, settings, sm, diags, shown);
+  else shown.add(diags.diagnostics(), "");
+  if (settings.caps && parsed.ok) {
+    fx::DiagnosticSink caps_diags;
+    out.runnable = report_techniques(parsed, settings, sm, caps_diags, out);
+    shown.add(caps_diags.diagnostics(), "");
+  }
+#else
+  shown.add(diags.diagnostics(), "");
+#endif
+  fx::DiagnosticSink final_sink;  // counts, with --werror applied
+  final_sink.set_warnings_as_errors(settings.werror);
+  for (const fx::Diagnostic& d : shown.diagnostics()) {
+    fx::Diagnostic& copy = final_sink.report(d.severity, d.id, d.range, d.message);
+    copy.notes = d.notes;
+    copy.fixits = d.fixits;
+  }
+  out.errors = final_sink.error_count();
+  out.warnings = final_sink.warning_count();
+  out.text = fx::render_text(final_sink.diagnostics(), sm);
+  out.diagnostics = fx::render_json(final_sink.diagnostics(), sm);
+  out.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+void check_effects(const std::vector<std::string>& files, const EffectCheckSettings& settings, CheckCache* cache,
+                   std::vector<EffectCheck>& results, const std::function<void(size_t)>& finished) {
+  results.assign(files.size(), {});
+  auto one = [&](size_t i) {
+#ifdef FXKIT_HAS_RUNTIME
+    std::optional<EffectCheck> hit = cache ? cache->find(files[i]) : std::nullopt;
+    if (hit) results[i] = std::move(*hit);
+    else results[i] = check_effect(files[i], settings);
+    if (cache && !hit) cache->store(results[i]);
+#else
+    (void)cache;
+    results[i] = check_effect(files[i], settings);
+#endif
+    if (finished) finished(i);
+  };
+  if (settings.executor) settings.executor->for_each(files.size(), one);
+  else
+    for (size_t i = 0; i < files.size(); ++i) one(i);
+}
+
+nlohmann::json to_json(const EffectCheck& c) {
+  return {{"file", c.file},       {"files", c.files},         {"errors", c.errors},
+          {"warnings", c.warnings}, {"runnable", c.runnable}, {"text", c.text},
+          {"caps_text", c.caps_text}, {"diagnostics", c.diagnostics}, {"effect", c.effect},
+          {"ms", c.ms}};
+}
+
+bool from_json(const nlohmann::json& j, EffectCheck& c) {
+  if (!j.is_object()) return false;
+  try {
+    c.file = j.at("file").get<std::string>();
+    c.files = j.at("files").get<std::vector<std::string>>();
+    c.errors = j.at("errors").get<size_t>();
+    c.warnings = j.at("warnings").get<size_t>();
+    c.runnable = j.at("runnable").get<bool>();
+    c.text = j.at("text").get<std::string>();
+    c.caps_text = j.at("caps_text").get<std::string>();
+    c.diagnostics = j.at("diagnostics");
+    c.effect = j.at("effect");
+    c.ms = j.at("ms").get<double>();
+  } catch (const nlohmann::json::exception&) {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace fxkit
