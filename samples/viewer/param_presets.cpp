@@ -29,7 +29,9 @@ bool load_params(fxkit::Effect& effect, const std::string& path, std::string& er
   if (doc.is_discarded() || !doc.contains("params") || !doc["params"].is_object())
     return error = path + ": not a parameter file (wants {\"params\": {NAME: [values]}})", false;
   const std::vector<fxkit::ParamInfo> params = effect.params();
-  for (const auto& [name, value] : doc["params"].items()) {
+  for (const auto& item : doc["params"].items()) {
+    const std::string& name = item.key();  // not a structured binding: clang cannot capture one
+    const nlohmann::json& value = item.value();
     auto p = std::find_if(params.begin(), params.end(), [&](const fxkit::ParamInfo& i) { return i.name == name; });
     bool set = false;
     if (p != params.end() && value.is_array() && value.size() == p->components) {
