@@ -206,7 +206,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
         const fx::SamplerDesc* sampler_desc = nullptr;
         resolve_image(model, image.name, &sampler_desc, &slot.texture_param);
         if (image.kind != DescriptorKind::sampled_image) {
-          SamplerDesc vk_desc = sampler_desc ? to_sampler_desc(*sampler_desc, pass_sink) : SamplerDesc{};
+          SamplerKey vk_desc = sampler_desc ? to_sampler_key(*sampler_desc, pass_sink) : SamplerKey{};
           slot.sampler = b->samplers_.get(vk_desc, sink);
           if (!slot.sampler) return nullptr;
         }

@@ -78,7 +78,7 @@ uint32_t format_texel_bytes(VkFormat format) {
   }
 }
 
-std::optional<Image> Image::create(const Context& ctx, const ImageDesc& requested,
+std::optional<GpuImage> GpuImage::create(const Context& ctx, const ImageDesc& requested,
                                    DiagnosticSink& sink) {
   ImageDesc desc = requested;
   const bool cube = desc.kind == ImageKind::cube;
@@ -126,7 +126,7 @@ std::optional<Image> Image::create(const Context& ctx, const ImageDesc& requeste
     return std::nullopt;
   }
 
-  Image img;
+  GpuImage img;
   img.device_ = ctx.device();
   img.desc_ = desc;
   if (!check(vkCreateImage(img.device_, &info, nullptr, &img.image_), sink, "vkCreateImage"))
@@ -159,9 +159,9 @@ std::optional<Image> Image::create(const Context& ctx, const ImageDesc& requeste
   return img;
 }
 
-Image::Image(Image&& other) noexcept { *this = std::move(other); }
+GpuImage::GpuImage(GpuImage&& other) noexcept { *this = std::move(other); }
 
-Image& Image::operator=(Image&& other) noexcept {
+GpuImage& GpuImage::operator=(GpuImage&& other) noexcept {
   if (this == &other) return *this;
   reset();
   device_ = std::exchange(other.device_, VK_NULL_HANDLE);
@@ -173,7 +173,7 @@ Image& Image::operator=(Image&& other) noexcept {
   return *this;
 }
 
-void Image::reset() {
+void GpuImage::reset() {
   if (device_) {
     if (view_) vkDestroyImageView(device_, view_, nullptr);
     if (image_) vkDestroyImage(device_, image_, nullptr);
@@ -185,11 +185,11 @@ void Image::reset() {
   layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
 }
 
-VkImageSubresourceRange Image::full_range() const {
+VkImageSubresourceRange GpuImage::full_range() const {
   return {aspect(), 0, desc_.mip_levels, 0, desc_.array_layers};
 }
 
-void Image::transition(VkCommandBuffer cmd, VkImageLayout to) {
+void GpuImage::transition(VkCommandBuffer cmd, VkImageLayout to) {
   if (layout_ == to) return;
   transition_image(cmd, image_, full_range(), layout_, to);
   layout_ = to;

@@ -1,4 +1,4 @@
-// PassStateSummary / fx::SamplerDesc -> PipelineState / vk::SamplerDesc. The model's enums
+// PassStateSummary / fx::SamplerDesc -> PipelineState / vk::SamplerKey. The model's enums
 // share Vulkan's values (documented in fx/model/pass_state.h), so most fields cast.
 #include "fx/vulkan/pass_state_mapping.h"
 
@@ -73,8 +73,8 @@ std::optional<PipelineState> to_pipeline_state(const PassStateSummary& p,
   return s;
 }
 
-SamplerDesc to_sampler_desc(const fx::SamplerDesc& m, DiagnosticSink& sink) {
-  SamplerDesc d;
+SamplerKey to_sampler_key(const fx::SamplerDesc& m, DiagnosticSink& sink) {
+  SamplerKey d;
   VkSamplerAddressMode* modes[3] = {&d.address_u, &d.address_v, &d.address_w};
   for (int i = 0; i < 3; ++i) {
     AddressMode3 a = m.address[size_t(i)];

@@ -64,7 +64,7 @@ std::optional<RenderTarget> RenderTarget::create(const Context& ctx, const Rende
   color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                 desc.extra_color_usage;
   color.debug_name = desc.debug_name;
-  auto color_image = Image::create(ctx, color, sink);
+  auto color_image = GpuImage::create(ctx, color, sink);
   if (!color_image) return std::nullopt;
   rt.color_ = std::move(*color_image);
 
@@ -80,7 +80,7 @@ std::optional<RenderTarget> RenderTarget::create(const Context& ctx, const Rende
     depth.width = desc.width;
     depth.height = desc.height;
     depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-    auto depth_image = Image::create(ctx, depth, sink);
+    auto depth_image = GpuImage::create(ctx, depth, sink);
     if (!depth_image) return std::nullopt;
     rt.depth_ = std::move(*depth_image);
   }

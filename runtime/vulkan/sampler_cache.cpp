@@ -10,7 +10,7 @@
 
 namespace fx::vk {
 
-size_t SamplerCache::DescHash::operator()(const SamplerDesc& d) const {
+size_t SamplerCache::DescHash::operator()(const SamplerKey& d) const {
   return size_t(XXH3_64bits(&d, sizeof d));
 }
 
@@ -18,8 +18,8 @@ SamplerCache::~SamplerCache() {
   for (auto& [desc, sampler] : samplers_) vkDestroySampler(ctx_->device(), sampler, nullptr);
 }
 
-SamplerDesc SamplerCache::effective(const SamplerDesc& in) const {
-  SamplerDesc d = in;
+SamplerKey SamplerCache::effective(const SamplerKey& in) const {
+  SamplerKey d = in;
   const VkPhysicalDeviceLimits& limits = ctx_->info().limits;
   if (!ctx_->features().sampler_anisotropy) d.max_anisotropy = 1;
   d.max_anisotropy = std::clamp(d.max_anisotropy, 1.0f, std::max(1.0f, limits.maxSamplerAnisotropy));
@@ -28,8 +28,8 @@ SamplerDesc SamplerCache::effective(const SamplerDesc& in) const {
   return d;
 }
 
-VkSampler SamplerCache::get(const SamplerDesc& requested, DiagnosticSink& sink) {
-  const SamplerDesc d = effective(requested);
+VkSampler SamplerCache::get(const SamplerKey& requested, DiagnosticSink& sink) {
+  const SamplerKey d = effective(requested);
   auto it = samplers_.find(d);
   if (it != samplers_.end()) return it->second;
   auto info = structure<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);

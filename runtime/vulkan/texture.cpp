@@ -53,13 +53,13 @@ std::optional<Texture> Texture::upload(const Context& ctx, const ImageDesc& desc
                    " with linear filtering");
     return std::nullopt;
   }
-  std::optional<Image> image = Image::create(ctx, desc, sink);
+  std::optional<GpuImage> image = GpuImage::create(ctx, desc, sink);
   if (!image) return std::nullopt;
   std::optional<Buffer> staging = Buffer::create(
       ctx, {byte_count, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::upload, "texture staging"},
       sink);
   if (!staging || !staging->write(bytes, byte_count)) return std::nullopt;
-  Image& img = *image;
+  GpuImage& img = *image;
   const bool ok = submit_and_wait(ctx, [&](VkCommandBuffer cmd) {
     img.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
     VkBufferImageCopy copy{};

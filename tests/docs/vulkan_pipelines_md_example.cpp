@@ -17,7 +17,7 @@ struct App {
   VertexLayout app_layout;
   float dir[3] = {0, -1, 0};
   const Texture& texture;
-  SamplerDesc desc;
+  SamplerKey desc;
   std::vector<PipelineState> pass_states;
   uint32_t frame_slot = 0;
   std::function<void(uint32_t)> wait_for_fence;

@@ -152,7 +152,7 @@ PixelErrors render_errors(Context& ctx, const std::vector<shading::ShadingSample
   EXPECT_TRUE(program && input && light && view && tangent) << describe(sink);
   if (!program || !input || !light || !view || !tangent) return worst;
   SamplerCache samplers(ctx);
-  SamplerDesc nearest;
+  SamplerKey nearest;
   nearest.min_filter = nearest.mag_filter = VK_FILTER_NEAREST;
   nearest.mip_filter = VK_SAMPLER_MIPMAP_MODE_NEAREST;
   nearest.address_u = nearest.address_v = nearest.address_w = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;

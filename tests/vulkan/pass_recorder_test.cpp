@@ -290,14 +290,14 @@ TEST_F(PassRecorderTest, PipelineCachePersistsAndRejectsForeignFiles) {
 TEST_F(PassRecorderTest, SamplerCacheSharesAndClampsToTheDevice) {
   SamplerCache samplers(ctx());
   DiagnosticSink sink;
-  SamplerDesc a;
+  SamplerKey a;
   a.max_anisotropy = 1e6f;
   a.mip_lod_bias = 1e6f;
   VkSampler s1 = samplers.get(a, sink), s2 = samplers.get(a, sink);
   EXPECT_NE(s1, VK_NULL_HANDLE);
   EXPECT_EQ(s1, s2);
   EXPECT_EQ(samplers.size(), 1u);
-  const SamplerDesc e = samplers.effective(a);
+  const SamplerKey e = samplers.effective(a);
   EXPECT_LE(e.max_anisotropy, std::max(1.0f, ctx().info().limits.maxSamplerAnisotropy));
   if (!ctx().features().sampler_anisotropy) {
     EXPECT_EQ(e.max_anisotropy, 1.0f);

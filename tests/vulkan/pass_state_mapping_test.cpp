@@ -97,7 +97,7 @@ TEST(PassStateMapping, Samplers) {
   m.max_anisotropy = 8;
   m.max_mip_level = 2;
   DiagnosticSink sink;
-  SamplerDesc d = to_sampler_desc(m, sink);
+  SamplerKey d = to_sampler_key(m, sink);
   EXPECT_EQ(d.address_u, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER);
   EXPECT_EQ(d.address_v, VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT);
   EXPECT_EQ(d.address_w, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE);
@@ -109,7 +109,7 @@ TEST(PassStateMapping, Samplers) {
   EXPECT_EQ(sink.diagnostics().size(), 0u);
   m.border_color = {0.5f, 0.2f, 0.1f, 1};
   m.address[0] = AddressMode3::mirror_clamp_to_edge;
-  d = to_sampler_desc(m, sink);
+  d = to_sampler_key(m, sink);
   EXPECT_EQ(d.border, VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK);
   EXPECT_EQ(d.address_u, VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT);
   EXPECT_EQ(sink.warning_count(), 2u);

@@ -188,7 +188,7 @@ TEST_P(PipelineRender, SamplerAddressModesOnAMagnifiedTwoByTwoTexture) {
   for (VkSamplerAddressMode mode :
        {VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
         VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER}) {
-    SamplerDesc d;
+    SamplerKey d;
     d.min_filter = d.mag_filter = VK_FILTER_NEAREST;
     d.mip_filter = VK_SAMPLER_MIPMAP_MODE_NEAREST;
     d.address_u = d.address_v = d.address_w = mode;

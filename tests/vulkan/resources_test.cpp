@@ -109,7 +109,7 @@ TEST_F(ResourcesTest, Creates2DMipmapped3DAndCubeImages) {
   tex.width = 64;
   tex.height = 32;
   tex.mip_levels = 0;  // full chain
-  auto t2d = Image::create(ctx(), tex, sink);
+  auto t2d = GpuImage::create(ctx(), tex, sink);
   ASSERT_TRUE(t2d) << describe(sink);
   EXPECT_EQ(t2d->desc().mip_levels, 7u);
   EXPECT_NE(t2d->view(), VK_NULL_HANDLE);
@@ -118,14 +118,14 @@ TEST_F(ResourcesTest, Creates2DMipmapped3DAndCubeImages) {
   ImageDesc vol;
   vol.kind = ImageKind::image3d;
   vol.width = vol.height = vol.depth = 16;
-  auto t3d = Image::create(ctx(), vol, sink);
+  auto t3d = GpuImage::create(ctx(), vol, sink);
   ASSERT_TRUE(t3d) << describe(sink);
   EXPECT_EQ(t3d->extent().depth, 16u);
 
   ImageDesc cube;
   cube.kind = ImageKind::cube;
   cube.width = cube.height = 32;
-  auto tcube = Image::create(ctx(), cube, sink);
+  auto tcube = GpuImage::create(ctx(), cube, sink);
   ASSERT_TRUE(tcube) << describe(sink);
   EXPECT_EQ(tcube->desc().array_layers, 6u);
   EXPECT_EQ(tcube->full_range().layerCount, 6u);
@@ -137,13 +137,13 @@ TEST_F(ResourcesTest, InvalidImageShapesAreDiagnostics) {
   cube.kind = ImageKind::cube;
   cube.width = 32;
   cube.height = 16;
-  EXPECT_FALSE(Image::create(ctx(), cube, sink));
+  EXPECT_FALSE(GpuImage::create(ctx(), cube, sink));
   ImageDesc flat;
   flat.depth = 4;  // 2D images have depth 1
-  EXPECT_FALSE(Image::create(ctx(), flat, sink));
+  EXPECT_FALSE(GpuImage::create(ctx(), flat, sink));
   ImageDesc huge;
   huge.width = huge.height = ctx().info().limits.maxImageDimension2D * 2;
-  EXPECT_FALSE(Image::create(ctx(), huge, sink));
+  EXPECT_FALSE(GpuImage::create(ctx(), huge, sink));
   ASSERT_EQ(sink.error_count(), 3u) << describe(sink);
   EXPECT_EQ(sink.diagnostics()[0].id, "vk-invalid-image");
   EXPECT_EQ(sink.diagnostics()[1].id, "vk-invalid-image");
@@ -160,7 +160,7 @@ TEST_F(ResourcesTest, VolumeUploadAndReadbackThroughLayoutTransitions) {
   vol.depth = 3;
   vol.usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
               VK_IMAGE_USAGE_SAMPLED_BIT;
-  auto image = Image::create(ctx(), vol, sink);
+  auto image = GpuImage::create(ctx(), vol, sink);
   ASSERT_TRUE(image) << describe(sink);
   const VkDeviceSize n = 8 * 4 * 3 * 4;
   Buffer staging = make_buffer(n, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::upload);

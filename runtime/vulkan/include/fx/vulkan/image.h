@@ -1,4 +1,4 @@
-// fx::vk::Image: a device-local VkImage with its memory and a default view, for 2D, 3D and
+// fx::vk::GpuImage: a device-local VkImage with its memory and a default view, for 2D, 3D and
 // cube textures, render targets and depth buffers. (fx::Image is the CPU-side pixel array.)
 #pragma once
 #include <vulkan/vulkan.h>
@@ -11,7 +11,7 @@ namespace fx::vk {
 
 enum class ImageKind { image2d, image3d, cube, image1d };
 
-// What Image::create makes.
+// What GpuImage::create makes.
 struct ImageDesc {
   ImageKind kind = ImageKind::image2d;
   VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
@@ -36,18 +36,18 @@ uint32_t format_texel_bytes(VkFormat format);
 // Move-only owner of an image, its memory and one view covering every mip and layer
 // (2D, 2D_ARRAY, 3D, CUBE or CUBE_ARRAY). Tracks the layout as recorded, assuming command
 // buffers execute in the order their transitions were recorded.
-class Image {
+class GpuImage {
  public:
   // Checks format support first ("vk-format-unsupported"); reports allocation failures.
-  static std::optional<Image> create(const Context& ctx, const ImageDesc& desc,
+  static std::optional<GpuImage> create(const Context& ctx, const ImageDesc& desc,
                                      DiagnosticSink& sink);
 
-  Image() = default;
-  Image(Image&& other) noexcept;
-  Image& operator=(Image&& other) noexcept;
-  Image(const Image&) = delete;
-  Image& operator=(const Image&) = delete;
-  ~Image() { reset(); }
+  GpuImage() = default;
+  GpuImage(GpuImage&& other) noexcept;
+  GpuImage& operator=(GpuImage&& other) noexcept;
+  GpuImage(const GpuImage&) = delete;
+  GpuImage& operator=(const GpuImage&) = delete;
+  ~GpuImage() { reset(); }
 
   VkImage handle() const { return image_; }
   VkImageView view() const { return view_; }

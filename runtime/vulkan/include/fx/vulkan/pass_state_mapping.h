@@ -1,5 +1,5 @@
 // Maps the effect model's neutral pass state summary and sampler descriptions (from D3D9
-// render states or D3D10/11 state objects) into PipelineState and vk::SamplerDesc.
+// render states or D3D10/11 state objects) into PipelineState and vk::SamplerKey.
 #pragma once
 #include <optional>
 
@@ -42,6 +42,6 @@ std::optional<PipelineState> to_pipeline_state(const PassStateSummary& pass,
 // transparent black, opaque black or opaque white is approximated by the nearest of those
 // ("vk-border-color-approximated" warning); MirrorOnce becomes mirrored repeat
 // ("vk-address-mode-approximated" warning).
-SamplerDesc to_sampler_desc(const fx::SamplerDesc& sampler, DiagnosticSink& sink);
+SamplerKey to_sampler_key(const fx::SamplerDesc& sampler, DiagnosticSink& sink);
 
 }  // namespace fx::vk

@@ -52,11 +52,11 @@ class RenderTarget {
   VkExtent2D extent() const { return {width_, height_}; }
   // One colour attachment, and the depth (and stencil) format if the target has depth.
   RenderingFormats formats() const;
-  Image& color() { return color_; }
-  const Image& color() const { return color_; }
+  GpuImage& color() { return color_; }
+  const GpuImage& color() const { return color_; }
   // The depth attachment, or null if the target has none.
-  Image* depth() { return depth_ ? &depth_ : nullptr; }
-  const Image* depth() const { return depth_ ? &depth_ : nullptr; }
+  GpuImage* depth() { return depth_ ? &depth_ : nullptr; }
+  const GpuImage* depth() const { return depth_ ? &depth_ : nullptr; }
   // Full-target viewport (depth 0..1, y down as in Vulkan) and scissor.
   VkViewport viewport() const;
   VkRect2D scissor() const;
@@ -80,8 +80,8 @@ class RenderTarget {
 
  private:
   uint32_t width_ = 0, height_ = 0;
-  Image color_;
-  Image depth_;
+  GpuImage color_;
+  GpuImage depth_;
   Buffer readback_;
 };
 

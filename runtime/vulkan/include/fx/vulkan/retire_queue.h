@@ -24,7 +24,7 @@ class RetireQueue {
 
   // Runs `destroy` once the current frame has completed on the GPU.
   void retire(std::function<void()> destroy);
-  // Keeps a move-only RAII object (Buffer, Image, ...) alive until the current frame completes.
+  // Keeps a move-only RAII object (Buffer, GpuImage, ...) alive until the current frame completes.
   template <class T>
   void retire_object(T&& object) {
     auto holder = std::make_shared<std::decay_t<T>>(std::forward<T>(object));

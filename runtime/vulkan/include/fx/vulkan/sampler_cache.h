@@ -1,4 +1,4 @@
-// fx::vk::SamplerCache: one VkSampler per distinct SamplerDesc, shared by every pass.
+// fx::vk::SamplerCache: one VkSampler per distinct SamplerKey, shared by every pass.
 #pragma once
 #include <vulkan/vulkan.h>
 
@@ -11,7 +11,7 @@ namespace fx::vk {
 
 // Neutral sampler description (D3D sampler states map onto it). Value-initialised: linear
 // min/mag/mip, wrap addressing, no anisotropy, full LOD range, transparent black border.
-struct SamplerDesc {
+struct SamplerKey {
   VkFilter min_filter = VK_FILTER_LINEAR;
   VkFilter mag_filter = VK_FILTER_LINEAR;
   VkSamplerMipmapMode mip_filter = VK_SAMPLER_MIPMAP_MODE_LINEAR;
@@ -25,11 +25,11 @@ struct SamplerDesc {
   VkBorderColor border = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
   uint32_t compare_enable = 0;  // shadow samplers
   VkCompareOp compare_op = VK_COMPARE_OP_LESS_OR_EQUAL;
-  friend bool operator==(const SamplerDesc& a, const SamplerDesc& b) {
-    return std::memcmp(&a, &b, sizeof(SamplerDesc)) == 0;
+  friend bool operator==(const SamplerKey& a, const SamplerKey& b) {
+    return std::memcmp(&a, &b, sizeof(SamplerKey)) == 0;
   }
 };
-static_assert(sizeof(SamplerDesc) == 13 * 4, "no padding: SamplerDesc hashes as bytes");
+static_assert(sizeof(SamplerKey) == 13 * 4, "no padding: SamplerKey hashes as bytes");
 
 class SamplerCache {
  public:
@@ -41,17 +41,17 @@ class SamplerCache {
   // The sampler for `desc`, created on first use. Anisotropy is used only when the device
   // enabled samplerAnisotropy and is clamped to maxSamplerAnisotropy; LOD bias is clamped to
   // maxSamplerLodBias. Null and "vk-call-failed" on failure.
-  VkSampler get(const SamplerDesc& desc, DiagnosticSink& sink);
+  VkSampler get(const SamplerKey& desc, DiagnosticSink& sink);
   // The description after device clamping (what get() creates).
-  SamplerDesc effective(const SamplerDesc& desc) const;
+  SamplerKey effective(const SamplerKey& desc) const;
   size_t size() const { return samplers_.size(); }
 
  private:
   struct DescHash {
-    size_t operator()(const SamplerDesc& d) const;
+    size_t operator()(const SamplerKey& d) const;
   };
   const Context* ctx_;
-  std::unordered_map<SamplerDesc, VkSampler, DescHash> samplers_;
+  std::unordered_map<SamplerKey, VkSampler, DescHash> samplers_;
 };
 
 }  // namespace fx::vk

@@ -55,7 +55,7 @@ class Texture {
   static std::optional<Texture> upload(const Context& ctx, const ImageDesc& desc,
                                        const uint8_t* bytes, size_t byte_count,
                                        DiagnosticSink& sink);
-  Image owned_;
+  GpuImage owned_;
   VkImageView borrowed_view_ = VK_NULL_HANDLE;
   VkImageLayout layout_ = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   ImageKind kind_ = ImageKind::image2d;
