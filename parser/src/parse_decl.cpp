@@ -230,17 +230,9 @@ void Parser::finish_state_object(std::vector<ast::Decl>& out, ast::Variable& hea
 }
 
 bool Parser::parse_element_states(ast::List<ast::List<ast::StateAssignment>>& out) {
-  Token open = advance();  // {
-  while (!accept(TokenKind::r_brace)) {
-    if (!parse_state_list(out.emplace_back(arena_), "state object element")) return false;
-    if (accept(TokenKind::comma) || at(TokenKind::r_brace)) continue;
-    if (Diagnostic* d = error_here("expected-token",
-                                   "expected ',' or '}' after a state object element, found " +
-                                       describe(tok())))
-      d->notes.push_back({open.loc, "to match this '{'"});
-    return false;
-  }
-  return true;
+  return parse_braced_list("after a state object element", [&] {
+    return parse_state_list(out.emplace_back(arena_), "state object element");
+  });
 }
 
 bool Parser::parse_function(ast::Function& f) {

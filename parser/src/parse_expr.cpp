@@ -393,20 +393,14 @@ ast::ExprPtr Parser::parse_asm() {
 
 ast::ExprPtr Parser::parse_init_list() {
   uint32_t first = pos_;
-  Token open = advance();
   auto e = make(ast::ExprKind::init_list, first);
   size_t mark = pending_args_.size();
-  while (!accept(TokenKind::r_brace)) {
+  parse_braced_list("in initializer list", [&] {
     ast::ExprPtr element = parse_assignment();
-    if (failed_) break;
+    if (failed_) return false;
     pending_args_.push_back(element);
-    if (accept(TokenKind::comma) || at(TokenKind::r_brace)) continue;
-    if (Diagnostic* d = error_here("expected-token",
-                                   "expected ',' or '}' in initializer list, found " +
-                                       describe(tok())))
-      d->notes.push_back({open.loc, "to match this '{'"});
-    break;
-  }
+    return true;
+  });
   if (!failed_) e->args = expressions_.list(std::span(pending_args_).subspan(mark));
   pending_args_.resize(mark);
   if (failed_) return nullptr;

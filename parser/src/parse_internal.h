@@ -3,6 +3,7 @@
 // structs, buffers) and parse_technique.cpp (techniques, passes, states, annotations).
 // Private to fxkit_parser.
 #pragma once
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -74,6 +75,10 @@ class Parser {
   Diagnostic* error(std::string id, SourceRange range, std::string message);
   Diagnostic* error_here(std::string id, std::string message);
   void unterminated(const Token& open, std::string_view what);
+  // At '{': `{ item, item, ... }`, a trailing comma allowed; `item` parses one and returns
+  // false to stop. False after `item` fails or after "expected ',' or '}' <where>" (with a
+  // note at the '{').
+  bool parse_braced_list(std::string_view where, const std::function<bool()>& item);
   // Skips to the end of the broken construct: past the next ';' at `depth`, before a '}'
   // that closes the enclosing block (or a '>' ending annotations), or past a '}' that
   // returns to `depth` (and one ';' after it). Clears the failed state.

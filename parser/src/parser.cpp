@@ -125,6 +125,20 @@ void Parser::unterminated(const Token& open, std::string_view what) {
     d->notes.push_back({open.loc, "to match this '{'"});
 }
 
+bool Parser::parse_braced_list(std::string_view where, const std::function<bool()>& item) {
+  Token open = advance();  // {
+  while (!accept(TokenKind::r_brace)) {
+    if (!item()) return false;
+    if (accept(TokenKind::comma) || at(TokenKind::r_brace)) continue;
+    std::string message = "expected ',' or '}' ";
+    message.append(where).append(", found ").append(describe(tok()));
+    if (Diagnostic* d = error_here("expected-token", std::move(message)))
+      d->notes.push_back({open.loc, "to match this '{'"});
+    return false;
+  }
+  return true;
+}
+
 void Parser::recover(uint32_t depth, bool stop_at_greater) {
   for (;;) {
     switch (tok().kind) {
