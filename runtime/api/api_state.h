@@ -22,10 +22,15 @@ namespace fxkit::detail {
 // Diagnostics as public messages (located through `sources` when given).
 Message to_message(const fx::Diagnostic& d, const fx::SourceManager* sources);
 std::vector<Message> to_messages(const std::vector<fx::Diagnostic>& ds, const fx::SourceManager* sources);
+// A message about no place in a file.
+Message to_message(fx::Severity severity, std::string code, std::string text);
 
 // Annotations as public values, and one by name (nullptr when none).
 Annotation to_public(const fx::Annotation& a);
 const Annotation* find_annotation(const std::vector<Annotation>& annotations, std::string_view name);
+
+// Why technique `t` of `version` cannot be drawn ("" when it can).
+std::string technique_reason(const fx::EffectVersion& version, uint32_t t);
 
 // The pass-state facts of a Target (winding, Y convention, attachments).
 fx::vk::RenderingFormats rendering_formats(const Formats& formats);

@@ -10,25 +10,11 @@ namespace fxkit {
 namespace detail {
 namespace {
 
-uint32_t depth_bits(VkFormat depth) {
-  switch (depth) {
-    case VK_FORMAT_D16_UNORM:
-    case VK_FORMAT_D16_UNORM_S8_UINT: return 16;
-    case VK_FORMAT_X8_D24_UNORM_PACK32:
-    case VK_FORMAT_D24_UNORM_S8_UINT: return 24;
-    default: return 32;
-  }
-}
-
 // The target's problems, one message each ("target-incomplete").
 std::vector<Message> check_target(const Target& t) {
   std::vector<Message> out;
   auto error = [&out](std::string text) {
-    Message m;
-    m.code = "target-incomplete";
-    m.text = std::move(text);
-    m.rendered = "error: " + m.text + " [target-incomplete]\n";
-    out.push_back(std::move(m));
+    out.push_back(to_message(fx::Severity::error, "target-incomplete", std::move(text)));
   };
   if (t.front_faces == Winding::unset)
     error("Target::front_faces is unset: say whether the meshes' front faces are clockwise (Direct3D) or "
@@ -58,7 +44,7 @@ fx::vk::PassTargetInfo pass_target(const Target& target) {
   fx::vk::PassTargetInfo info;
   info.color_attachment_count = uint32_t(target.formats.color.size());
   info.samples = target.formats.samples;
-  info.depth_bits = depth_bits(target.formats.depth);
+  info.depth_bits = fx::vk::depth_bits(target.formats.depth);
   info.negative_viewport_height = target.y_flip == YFlip::negative_viewport;
   info.mesh_front_face = target.front_faces == Winding::counter_clockwise ? fx::FrontFace::counter_clockwise
                                                                           : fx::FrontFace::clockwise;
@@ -81,11 +67,9 @@ std::unique_ptr<detail::DeviceState> make_state(fx::vk::Context ctx, const Devic
   s->ctx.emplace(std::move(ctx));
   const fx::vk::Context& c = *s->ctx;
   if (!c.features().dynamic_rendering) {
-    Message m;
-    m.code = "vk-feature-missing";
-    m.text = "the device was not created with dynamic rendering (Vulkan 1.3 dynamicRendering), which fxkit records with";
-    m.rendered = "error: " + m.text + " [vk-feature-missing]\n";
-    errors.push_back(std::move(m));
+    errors.push_back(detail::to_message(
+        fx::Severity::error, "vk-feature-missing",
+        "the device was not created with dynamic rendering (Vulkan 1.3 dynamicRendering), which fxkit records with"));
     return nullptr;
   }
   s->target = options.target;
@@ -133,10 +117,6 @@ std::unique_ptr<detail::DeviceState> make_state(fx::vk::Context ctx, const Devic
   lib.frames_in_flight = std::max(1u, options.frames_in_flight);
   s->library = std::make_unique<fx::EffectLibrary>(std::move(lib));
   return s;
-}
-
-Severity severity_of(fx::Severity s) {
-  return s == fx::Severity::error ? Severity::error : s == fx::Severity::warning ? Severity::warning : Severity::note;
 }
 
 }  // namespace
@@ -234,12 +214,7 @@ const std::string& Device::device_name() const { return state_->ctx->info().name
 std::vector<Message> Device::take_validation_messages() {
   std::vector<Message> out;
   for (const fx::vk::ValidationMessage& v : state_->ctx->validation_messages()) {
-    Message m;
-    m.severity = severity_of(v.severity);
-    m.code = v.id_name.empty() ? "vk-validation" : v.id_name;
-    m.text = v.text;
-    m.rendered = std::string(fx::to_string(v.severity)) + ": " + v.text + " [" + m.code + "]\n";
-    out.push_back(std::move(m));
+    out.push_back(detail::to_message(v.severity, v.id_name.empty() ? "vk-validation" : v.id_name, v.text));
   }
   state_->ctx->clear_validation_messages();
   return out;

@@ -56,18 +56,13 @@ std::vector<TechniqueInfo> Effect::techniques() const {
   std::vector<TechniqueInfo> out;
   auto version = state_ ? state_->handle.version() : nullptr;
   if (!version) return out;
-  const fx::vk::EffectBinding* binding = fx::vk::ReloadBackend::binding(*version);
   for (uint32_t t = 0; t < version->model->techniques.size(); ++t) {
     TechniqueInfo info;
     info.name = version->model->techniques[t].name;
     info.passes = uint32_t(version->model->techniques[t].passes.size());
     for (const fx::Annotation& a : version->model->techniques[t].annotations)
       info.annotations.push_back(detail::to_public(a));
-    if (!version->techniques->valid(t)) {
-      for (const std::string& r : version->techniques->rejections(t)) info.reason += (info.reason.empty() ? "" : "; ") + r;
-    } else if (!binding || !binding->technique_ok(t)) {
-      info.reason = binding ? binding->technique_reason(t) : "no GPU objects were made for this version";
-    }
+    info.reason = detail::technique_reason(*version, t);
     info.drawable = info.reason.empty();
     out.push_back(std::move(info));
   }

@@ -35,6 +35,14 @@ Message to_message(const fx::Diagnostic& d, const fx::SourceManager* sources) {
   return m;
 }
 
+Message to_message(fx::Severity severity, std::string code, std::string text) {
+  fx::Diagnostic d;
+  d.severity = severity;
+  d.id = std::move(code);
+  d.message = std::move(text);
+  return to_message(d, nullptr);
+}
+
 std::vector<Message> to_messages(const std::vector<fx::Diagnostic>& ds, const fx::SourceManager* sources) {
   std::vector<Message> out;
   out.reserve(ds.size());

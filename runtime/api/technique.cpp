@@ -19,6 +19,16 @@ uint32_t resolve(const detail::EffectState& s, const fx::EffectVersion& version,
 
 namespace detail {
 
+std::string technique_reason(const fx::EffectVersion& version, uint32_t t) {
+  if (!version.techniques->valid(t)) {
+    std::string why;
+    for (const std::string& r : version.techniques->rejections(t)) why += (why.empty() ? "" : "; ") + r;
+    return why.empty() ? "rejected by validation" : why;
+  }
+  const fx::vk::EffectBinding* binding = fx::vk::ReloadBackend::binding(version);
+  return binding ? binding->technique_reason(t) : "no GPU objects were made for this version";
+}
+
 bool EffectState::bind_app_textures(const fx::EffectVersion& version, fx::vk::EffectBinding& binding) {
   bool ok = true;
   for (const AppTexture& t : app_textures) ok &= binding.set_texture(t.name, t.view, t.layout, t.kind, sink);
@@ -49,14 +59,7 @@ std::string Technique::reason() const {
   const uint32_t t = resolve(*effect_, *version, name_);
   if (t >= version->model->techniques.size())
     return name_.empty() ? "selection chose no technique" : "the effect has no technique '" + name_ + "'";
-  if (!version->techniques->valid(t)) {
-    std::string why;
-    for (const std::string& r : version->techniques->rejections(t)) why += (why.empty() ? "" : "; ") + r;
-    return why.empty() ? "rejected by validation" : why;
-  }
-  const fx::vk::EffectBinding* binding = fx::vk::ReloadBackend::binding(*version);
-  if (!binding) return "no GPU objects were made for this version";
-  return binding->technique_reason(t);
+  return detail::technique_reason(*version, t);
 }
 
 bool Technique::begin(VkCommandBuffer cmd, const VkViewport& viewport, const VkRect2D& scissor) {

@@ -27,16 +27,6 @@ std::string_view guess_semantic(std::string_view name) {
   return {};
 }
 
-uint32_t depth_bits(VkFormat format) {
-  switch (format) {
-    case VK_FORMAT_D16_UNORM:
-    case VK_FORMAT_D16_UNORM_S8_UINT: return 16;
-    case VK_FORMAT_D32_SFLOAT:
-    case VK_FORMAT_D32_SFLOAT_S8_UINT: return 32;
-    default: return 24;
-  }
-}
-
 }  // namespace
 
 std::unique_ptr<EffectPreview> EffectPreview::create(const Context& ctx, const Mesh& mesh,

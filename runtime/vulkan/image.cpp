@@ -39,6 +39,16 @@ bool has_stencil(VkFormat format) {
          format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT;
 }
 
+uint32_t depth_bits(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_D16_UNORM:
+    case VK_FORMAT_D16_UNORM_S8_UINT: return 16;
+    case VK_FORMAT_D32_SFLOAT:
+    case VK_FORMAT_D32_SFLOAT_S8_UINT: return 32;
+    default: return 24;
+  }
+}
+
 VkImageAspectFlags format_aspect(VkFormat format) {
   VkImageAspectFlags aspect = 0;
   if (is_depth_format(format)) aspect |= VK_IMAGE_ASPECT_DEPTH_BIT;

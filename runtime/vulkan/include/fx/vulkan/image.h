@@ -30,6 +30,8 @@ uint32_t full_mip_count(uint32_t width, uint32_t height, uint32_t depth = 1);
 VkImageAspectFlags format_aspect(VkFormat format);
 bool is_depth_format(VkFormat format);
 bool has_stencil(VkFormat format);
+// Bits of a depth format's depth (16, 24 or 32); 24 for formats without depth.
+uint32_t depth_bits(VkFormat format);
 // Bytes per texel of uncompressed formats fxkit reads back or uploads; 0 if unknown.
 uint32_t format_texel_bytes(VkFormat format);
 
