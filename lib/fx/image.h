@@ -20,6 +20,8 @@ struct Image {
   // An image of the given size with every byte zero.
   static Image blank(uint32_t width, uint32_t height, uint32_t channels);
   bool empty() const { return width == 0 || height == 0; }
+  // True when every pixel equals the first: a render that drew nothing, or one flat colour.
+  bool constant() const;
   size_t row_bytes() const { return size_t(width) * channels; }
   // Pointer to the first channel of pixel (x, y); no bounds check.
   uint8_t* at(uint32_t x, uint32_t y) { return pixels.data() + (size_t(y) * width + x) * channels; }

@@ -13,6 +13,12 @@ Image Image::blank(uint32_t width, uint32_t height, uint32_t channels) {
   return image;
 }
 
+bool Image::constant() const {
+  for (size_t i = channels; i < pixels.size(); ++i)
+    if (pixels[i] != pixels[i % channels]) return false;
+  return true;
+}
+
 ImageF ImageF::blank(uint32_t width, uint32_t height, uint32_t channels) {
   ImageF image{width, height, channels, {}};
   image.pixels.assign(size_t(width) * height * channels, 0.0f);

@@ -6,6 +6,7 @@
 #include "fx/reload/reload_transaction.h"
 #include "fx/select/selection.h"
 #include "fx/vulkan/effect_scene.h"
+#include "fx/vulkan/preview_defaults.h"
 #include "api_state.h"
 
 namespace fxkit {
@@ -164,6 +165,16 @@ uint32_t Effect::set_scene(const Scene& scene) {
     state_->keep_problems();
   }
   return set;
+}
+
+std::vector<std::string> Effect::set_preview_defaults() {
+  auto version = state_ ? state_->handle.version() : nullptr;
+  if (!version || !version->programs) return {};
+  std::vector<std::string> names;
+  const auto read = fx::vk::parameters_read(*version->programs, fx::kNoIndex);
+  for (fx::vk::PreviewDefault& d : fx::vk::set_preview_defaults(*version->params, *version->model, read))
+    names.push_back(std::move(d.parameter));
+  return names;
 }
 
 ApplyStats Effect::stats() const {

@@ -40,10 +40,13 @@ std::unique_ptr<EffectPreview> EffectPreview::create(const Context& ctx, const M
   const VkDeviceSize vbytes = mesh.vertices.size() * sizeof(Vertex), ibytes = mesh.indices.size() * sizeof(uint32_t);
   auto vb = Buffer::create(ctx, {vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "preview vertices"}, sink);
   auto ib = Buffer::create(ctx, {ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUsage::upload, "preview indices"}, sink);
-  auto cb = Buffer::create(ctx, {16, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "preview constant attributes"}, sink);
+  // What an attribute the mesh lacks reads (vertex_layout): (0,0,0,1), BLENDWEIGHT (1,0,0,0)
+  // so one bone carries the vertex, and integer inputs (BLENDINDICES) 0.
+  const float constant[12] = {0, 0, 0, 1, 1, 0, 0, 0, 0, 0, 0, 0};
+  auto cb = Buffer::create(ctx, {sizeof constant, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "preview constant attributes"}, sink);
   if (!vb || !ib || !cb) return nullptr;
-  const float constant[4] = {0, 0, 0, 1};
-  if (!vb->write(mesh.vertices.data(), vbytes) || !ib->write(mesh.indices.data(), ibytes) || !cb->write(constant, 16)) {
+  if (!vb->write(mesh.vertices.data(), vbytes) || !ib->write(mesh.indices.data(), ibytes) ||
+      !cb->write(constant, sizeof constant)) {
     sink.error("vk-call-failed", {}, "could not write the preview mesh buffers");
     return nullptr;
   }
@@ -89,7 +92,13 @@ VertexLayout EffectPreview::vertex_layout(std::span<const InterfaceVariable> inp
     });
     if (!listed && a != mesh.end()) layout.attributes.push_back({in.name, a->format, a->offset, 0});
   }
-  return with_default_attributes(std::move(layout), inputs, 1);
+  layout = with_default_attributes(std::move(layout), inputs, 1);
+  for (VertexAttribute& a : layout.attributes) {
+    if (a.binding != 1) continue;
+    if (canonical_semantic(a.semantic).starts_with("BLENDWEIGHT")) a.offset = 16;
+    if (a.format == VK_FORMAT_R32G32B32A32_SINT || a.format == VK_FORMAT_R32G32B32A32_UINT) a.offset = 32;
+  }
+  return layout;
 }
 
 std::optional<fx::Image> EffectPreview::render(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,

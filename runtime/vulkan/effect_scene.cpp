@@ -32,7 +32,8 @@ bool set_matrix(ParameterStore& params, Param p, const Type& type, const glm::ma
 
 // Names real effects give scene parameters they declare without a semantic, lower case.
 // Sources: the DirectX SDK samples (g_m*, g_v*, g_f*), FX Composer and NVIDIA's shader
-// library (*Xf), RenderMonkey (mat*), and engine conventions (MVP, ModelView).
+// library (*Xf), RenderMonkey (mat*), and engine conventions (MVP, ModelView; XNA's and
+// MonoGame's SpriteEffect MatrixTransform, which maps the drawn geometry to clip space).
 struct NamedSemantic {
   const char* name;
   const char* semantic;
@@ -63,6 +64,9 @@ constexpr NamedSemantic kSceneNames[] = {
     {"g_mworldinversetranspose", "WORLDINVERSETRANSPOSE"}, {"g_mworldit", "WORLDINVERSETRANSPOSE"},
     {"worldinversetranspose", "WORLDINVERSETRANSPOSE"}, {"worldit", "WORLDINVERSETRANSPOSE"},
     {"matworldit", "WORLDINVERSETRANSPOSE"}, {"worlditxf", "WORLDINVERSETRANSPOSE"},
+    {"g_mviewprojectioninverse", "VIEWPROJECTIONINVERSE"}, {"viewprojectioninverse", "VIEWPROJECTIONINVERSE"},
+    {"viewprojinverse", "VIEWPROJECTIONINVERSE"}, {"invviewproj", "VIEWPROJECTIONINVERSE"},
+    {"inverseviewprojection", "VIEWPROJECTIONINVERSE"}, {"matrixtransform", "WORLDVIEWPROJECTION"},
     {"g_mviewinverse", "VIEWINVERSE"}, {"viewinverse", "VIEWINVERSE"}, {"viewi", "VIEWINVERSE"},
     {"viewixf", "VIEWINVERSE"}, {"matviewinverse", "VIEWINVERSE"},
     {"g_veyept", "CAMERAPOSITION"}, {"g_veyepos", "CAMERAPOSITION"}, {"g_veye", "CAMERAPOSITION"},

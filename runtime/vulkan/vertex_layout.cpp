@@ -41,6 +41,7 @@ std::string canonical_semantic(std::string_view semantic) {
   while (digits > 0 && s[digits - 1] >= '0' && s[digits - 1] <= '9') --digits;
   if (digits < s.size() && digits > 0 && s.find_first_not_of('0', digits) == std::string::npos)
     s.resize(digits);
+  if (s.starts_with("SV_POSITION")) s.erase(0, 3);
   return s;
 }
 

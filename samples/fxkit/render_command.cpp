@@ -16,6 +16,7 @@
 #include "fx/compile/effect_file.h"
 #include "fx/vulkan/effect_preview.h"
 #include "fx/vulkan/effect_scene.h"
+#include "fx/vulkan/preview_defaults.h"
 
 namespace fxkit {
 namespace {
@@ -146,13 +147,19 @@ int run_render(const RenderArgs& args) {
     const uint32_t layout = binding->add_vertex_layout(preview->vertex_layout(inputs));
     std::vector<fx::vk::SceneBinding> bound;
     fx::vk::set_standard_semantics(*effect->params, *effect->model, preview->scene(), &bound);
+    const auto read = fx::vk::parameters_read(*effect->programs, technique);
+    const std::vector<fx::vk::PreviewDefault> stand_ins =
+        fx::vk::set_preview_defaults(*effect->params, *effect->model, read);
     for (const std::string& a : args.params) set_param(*effect->params, a, error);  // --param wins
-    if (args.verbose)
+    if (args.verbose) {
       for (const fx::vk::SceneBinding& b : bound)
         std::fprintf(stderr, "fxkit render: %s <- %s (%s)\n", b.parameter.c_str(), b.semantic.c_str(),
                      b.by_name ? "by its name" : "by its semantic");
-    const auto read = fx::vk::parameters_read(*effect->programs, technique);
-    for (const std::string& name : fx::vk::zero_transforms(*effect->params, *effect->model, read))
+      for (const fx::vk::PreviewDefault& d : stand_ins)
+        std::fprintf(stderr, "fxkit render: %s <- %s (stand-in)\n", d.parameter.c_str(), d.rule.c_str());
+    }
+    const std::vector<std::string> unbound = fx::vk::zero_transforms(*effect->params, *effect->model, read);
+    for (const std::string& name : unbound)
       std::fprintf(stderr,
                    "fxkit render: warning: '%s' is read by the shaders but left zero (no standard semantic, and "
                    "not a name docs/parameters.md lists); set it with --param\n",
@@ -168,6 +175,11 @@ int run_render(const RenderArgs& args) {
     }
     report(diags);
     if (!image) return kInputErrors;
+    if (image->constant()) {
+      const uint8_t* p = image->pixels.data();
+      std::fprintf(stderr, "fxkit render: warning: the image is constant (every pixel %u,%u,%u,%u)%s\n", p[0], p[1],
+                   p[2], p[3], unbound.empty() ? "" : "; see the transforms left zero above");
+    }
     if (!fx::write_png(args.out, *image, diags)) return report(diags), kUsageError;
     const fx::TechniqueInfo& t = effect->model->techniques[technique];
     std::printf("%s: technique %s on %s, %ux%u -> %s", args.file.c_str(), t.name.c_str(), args.mesh.c_str(), width,

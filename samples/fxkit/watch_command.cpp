@@ -14,6 +14,8 @@
 #include "fx/reload/effect_library.h"
 #include "fx/reload/reload_transaction.h"
 #include "fx/vulkan/effect_preview.h"
+#include "fx/vulkan/effect_scene.h"
+#include "fx/vulkan/preview_defaults.h"
 #include "fx/reload/vulkan_reload_backend.h"
 
 namespace fxkit {
@@ -134,6 +136,8 @@ int run_watch(const WatchArgs& args) {
     uint32_t technique = effect.technique();
     if (!binding->technique_ok(technique)) technique = binding->first_ok_technique();
     fx::vk::set_standard_semantics(*effect.params(), *version->model, preview->scene());
+    fx::vk::set_preview_defaults(*effect.params(), *version->model,
+                                 fx::vk::parameters_read(*version->programs, technique));
     fx::DiagnosticSink sink;
     auto image = preview->render(*binding, technique, 0, sink);
     for (const fx::Diagnostic& d : sink.diagnostics()) std::fprintf(stderr, "fxkit watch: %s [%s]\n", d.message.c_str(), d.id.c_str());

@@ -128,6 +128,7 @@ int main(int argc, char** argv) {
   GpuTimer timer(window->device(), options.frames_in_flight, window->timestamp_period_ns());
   bool failed_reload = false;
 
+  uint64_t stand_ins_serial = 0;  // the version set_preview_defaults last ran on
   for (int frame_no = 0; !glfwWindowShouldClose(window->glfw()) && (opt.frames == 0 || frame_no < opt.frames);) {
     glfwPollEvents();
     WindowFrame frame;
@@ -151,6 +152,10 @@ int main(int argc, char** argv) {
 
     const float aspect = float(frame.extent.width) / float(frame.extent.height);
     effect.set_scene(camera.scene(aspect, float(glfwGetTime())));
+    if (effect.serial() != stand_ins_serial) {  // once per loaded version
+      stand_ins_serial = effect.serial();
+      for (const std::string& name : effect.set_preview_defaults()) std::printf("stand-in value for %s\n", name.c_str());
+    }
     ui.light.apply(effect);
     if (const auto ms = timer.begin(frame.cmd, frame.slot); !ms.empty()) ui.pass_ms = ms;
     const float clear[4] = {0.18f, 0.2f, 0.24f, 1.f};

@@ -448,5 +448,24 @@ TEST_F(PublicApiTest, SetSceneBindsTransformsByTheirNamesAndWarnsAboutOnesLeftZe
   EXPECT_EQ(warned.find("'g_mWorld'"), std::string::npos) << warned;
 }
 
+// A colour with no default draws black until set_preview_defaults gives it a stand-in;
+// parameters with defaults keep them.
+TEST_F(PublicApiTest, PreviewDefaultsGiveAColourWithoutADefaultAVisibleValue) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  std::string source = lit_effect();
+  const std::string tint = "float4 Tint = {0.9, 0.6, 0.3, 1.0};";
+  ASSERT_NE(source.find(tint), std::string::npos);
+  source.replace(source.find(tint), tint.size(), "float4 Tint;");
+  fxkit::Effect effect = r.device->load(write_effect("api_preview_defaults.fx", source));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  fxkit::Technique technique = effect.technique("lit");
+  EXPECT_EQ(draw(*r.device, technique, *r.mesh, *r.image)[0], 0) << "no default: black";
+  EXPECT_EQ(effect.set_preview_defaults(), std::vector<std::string>{"Tint"});
+  EXPECT_GT(draw(*r.device, technique, *r.mesh, *r.image)[0], 40) << "the stand-in grey, lit";
+  EXPECT_TRUE(effect.set_preview_defaults().empty()) << "a second call finds nothing left zero";
+}
+
 }  // namespace
 }  // namespace fx::vk::testing

@@ -242,6 +242,8 @@ TEST_F(PassRecorderTest, MissingVertexAttributeNamesTheSemantic) {
   EXPECT_NE(sink.diagnostics()[0].message.find("POSITION"), std::string::npos);
   EXPECT_EQ(canonical_semantic("texcoord0"), "TEXCOORD");
   EXPECT_EQ(canonical_semantic("TEXCOORD1"), "TEXCOORD1");
+  EXPECT_EQ(canonical_semantic("SV_Position"), "POSITION");  // a D3D9-style vertex input
+  EXPECT_EQ(canonical_semantic("SV_POSITION1"), "POSITION1");
 }
 
 TEST_F(PassRecorderTest, UnboundTextureIsADiagnosticNotADraw) {

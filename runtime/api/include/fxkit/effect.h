@@ -195,6 +195,12 @@ class Effect {
   bool reset(Param p);
   // Every parameter whose semantic is a standard one; returns how many were set.
   uint32_t set_scene(const Scene& scene);
+  // For tools that preview effects nobody set up (a viewer): the parameters the shaders read
+  // that the file gives no default and are still zero get a stand-in that draws something
+  // (identity bone palettes, grey colours, a light direction, one light; docs/parameters.md,
+  // "Stand-ins for a preview"). Returns their names. A stand-in counts as a value the
+  // application set. An engine sets its own values instead.
+  std::vector<std::string> set_preview_defaults();
   // Counters of the live version's recording.
   ApplyStats stats() const;
   void reset_stats();

@@ -37,7 +37,9 @@ struct VertexInput {
   uint64_t hash = 0;  // of the descriptions (part of a pipeline key)
 };
 
-// Canonical semantic: upper case, a trailing index of 0 dropped ("texcoord0" -> "TEXCOORD").
+// Canonical semantic: upper case, a trailing index of 0 dropped ("texcoord0" -> "TEXCOORD"),
+// and a vertex input's SV_Position read as POSITION, as Direct3D 9's compiler reads it (XNA,
+// FNA and MonoGame effects declare `float4 Position : SV_Position` for the mesh position).
 std::string canonical_semantic(std::string_view semantic);
 
 // The semantics a vertex input reads, one per location it takes: a matrix input
