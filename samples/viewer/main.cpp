@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 
 #include "gpu_timer.h"
 #include "imgui_layer.h"
@@ -19,6 +20,7 @@
 #include "param_widgets.h"
 #include "technique_panel.h"
 #include "viewer_options.h"
+#include "viewer_script.h"
 #include "vulkan_window.h"
 
 namespace {
@@ -86,6 +88,21 @@ size_t drawn_pixels(const std::vector<uint8_t>& rgba) {
   return n;
 }
 
+// Writes the last capture() as a PNG and says what it shows; false when it cannot.
+bool write_screenshot(VulkanWindow& window, const std::string& path, const fxkit::Technique& technique) {
+  window.wait_idle();
+  uint32_t w = 0, h = 0;
+  const std::vector<uint8_t> rgba = window.read_screenshot(w, h);
+  if (rgba.empty() || !stbi_write_png(path.c_str(), int(w), int(h), 4, rgba.data(), int(w * 4))) {
+    std::fprintf(stderr, "fxkit-view: cannot write %s\n", path.c_str());
+    return false;
+  }
+  std::printf("fxkit-view: %s: %ux%u, technique %s, %zu pixels drawn\n", path.c_str(), w, h, technique.name().c_str(),
+              drawn_pixels(rgba));
+  std::fflush(stdout);
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -124,9 +141,12 @@ int main(int argc, char** argv) {
     if (!load_params(effect, opt.load_params, error)) return std::fprintf(stderr, "fxkit-view: %s\n", error.c_str()), 2;
     if (!error.empty()) std::fprintf(stderr, "fxkit-view: %s\n", error.c_str());
   }
+  std::optional<ViewerScript> script;
+  if (!opt.script.empty() && !(script = ViewerScript::load(opt.script, error)))
+    return std::fprintf(stderr, "%s\n", error.c_str()), 2;
   OrbitCamera camera(mesh->radius());
   GpuTimer timer(window->device(), options.frames_in_flight, window->timestamp_period_ns());
-  bool failed_reload = false;
+  bool failed_reload = false, script_failed = false;
 
   uint64_t stand_ins_serial = 0;  // the version set_preview_defaults last ran on
   for (int frame_no = 0; !glfwWindowShouldClose(window->glfw()) && (opt.frames == 0 || frame_no < opt.frames);) {
@@ -136,12 +156,17 @@ int main(int argc, char** argv) {
       glfwWaitEventsTimeout(0.1);  // minimised
       continue;
     }
+    bool reloaded = false;
     for (const fxkit::Reload& r : device->begin_frame()) {
       std::fputs(r.str().c_str(), stdout);
       std::fflush(stdout);
       failed_reload = r.kind == fxkit::Reload::Kind::failed;
       ui.problems = failed_reload ? r.messages : std::vector<fxkit::Message>{};
+      reloaded = true;
     }
+    ScriptFrame scripted;
+    if (script) scripted = script->before_frame(effect, ui.techniques, technique, reloaded);
+    if (!scripted.error.empty()) std::fprintf(stderr, "%s\n", scripted.error.c_str()), script_failed = true;
     ui_layer->new_frame();
     const ImGuiIO& io = ImGui::GetIO();
     if (!io.WantCaptureMouse) {
@@ -171,24 +196,18 @@ int main(int argc, char** argv) {
     technique.end();
     window->end_scene(frame);
     ++frame_no;
-    if (!opt.screenshot.empty() && frame_no == opt.frames) window->capture(frame);
+    if ((!opt.screenshot.empty() && frame_no == opt.frames) || (!scripted.screenshot.empty() && !scripted.with_ui))
+      window->capture(frame);
     ui_layer->record(frame);
+    if (!scripted.screenshot.empty() && scripted.with_ui) window->capture(frame, true);
     if (!window->end_frame(frame)) break;
+    if (!scripted.screenshot.empty() && !write_screenshot(*window, scripted.screenshot, technique)) script_failed = true;
+    if (scripted.quit) break;
   }
   window->wait_idle();
 
-  int status = effect.ok() && !failed_reload ? 0 : 1;
-  if (!opt.screenshot.empty()) {
-    uint32_t w = 0, h = 0;
-    const std::vector<uint8_t> rgba = window->read_screenshot(w, h);
-    if (rgba.empty() || !stbi_write_png(opt.screenshot.c_str(), int(w), int(h), 4, rgba.data(), int(w * 4))) {
-      std::fprintf(stderr, "fxkit-view: cannot write %s\n", opt.screenshot.c_str());
-      status = 2;
-    } else {
-      std::printf("fxkit-view: %s: %ux%u, technique %s, %zu pixels drawn\n", opt.screenshot.c_str(), w, h,
-                  technique.name().c_str(), drawn_pixels(rgba));
-    }
-  }
+  int status = effect.ok() && !failed_reload && !script_failed ? 0 : 1;
+  if (!opt.screenshot.empty() && !write_screenshot(*window, opt.screenshot, technique)) status = 2;
   if (!opt.save_params.empty() && !save_params(effect, opt.save_params, error)) {
     std::fprintf(stderr, "fxkit-view: %s\n", error.c_str());
     status = 2;

@@ -7,10 +7,12 @@
 const char* const kViewerUsage =
     "usage: fxkit-view FILE.fx [--mesh sphere|torus|teapot|quad|F.obj] [--technique NAME]\n"
     "                  [--load-params F.json] [--save-params F.json] [--size WxH]\n"
-    "                  [--frames N] [--screenshot F.png] [--validate]\n"
+    "                  [--frames N] [--screenshot F.png] [--script F] [--validate]\n"
     "  --frames N       quit after N frames (0: when the window closes)\n"
     "  --screenshot F   write the last frame's scene (without the UI) as a PNG\n"
     "  --save-params F  write the parameter values as JSON on exit\n"
+    "  --script F       run F's commands between frames (frames N, set NAME V,..., technique T|auto,\n"
+    "                   wait-reload [S], screenshot F.png, quit); the run ends with the script\n"
     "  --validate       Vulkan validation layer on; any message fails the run\n";
 
 bool parse_viewer_options(int argc, char** argv, ViewerOptions& o, std::string& error) {
@@ -27,6 +29,7 @@ bool parse_viewer_options(int argc, char** argv, ViewerOptions& o, std::string& 
     else if (a == "--save-params") { if (!value(o.save_params)) return false; }
     else if (a == "--load-params") { if (!value(o.load_params)) return false; }
     else if (a == "--screenshot") { if (!value(o.screenshot)) return false; }
+    else if (a == "--script") { if (!value(o.script)) return false; }
     else if (a == "--frames") {
       if (!value(v)) return false;
       o.frames = std::atoi(v.c_str());

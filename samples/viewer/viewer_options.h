@@ -7,6 +7,7 @@ struct ViewerOptions {
   std::string mesh = "sphere";  // sphere, torus, teapot, quad or an .obj file
   std::string technique;        // "" : selection
   std::string save_params, load_params, screenshot;
+  std::string script;  // --script F (viewer_script.h)
   int frames = 0;  // 0: until the window closes
   int width = 1280, height = 800;
   bool validate = false;

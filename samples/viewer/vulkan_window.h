@@ -56,7 +56,8 @@ class VulkanWindow {
   void begin_scene(const WindowFrame& frame, const float clear[4]);
   void end_scene(const WindowFrame& frame);
   // After end_scene: copies the scene into a host buffer (read_screenshot once idle).
-  void capture(const WindowFrame& frame);
+  // `with_ui`: after the UI was recorded instead, so the copy holds the whole window.
+  void capture(const WindowFrame& frame, bool with_ui = false);
   // Ends, submits and presents (the UI render pass leaves the image in PRESENT_SRC).
   bool end_frame(const WindowFrame& frame);
   void wait_idle();

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# fxkit-view driven by --script: a scripted parameter change changes the picture (and a
+# frame with no change does not), a saved edit arrives through wait-reload, and a script
+# naming a parameter the effect lacks fails at its line.
+# Usage: viewer_script.sh XVFB_RUN FXKIT_VIEW EFFECT WORK_DIR
+set -euo pipefail
+xvfb=$1 view=$2 effect=$3 work=$4
+rm -rf "$work" && mkdir -p "$work"
+cp "$effect" "$work/lit.fx"
+cd "$work"
+
+cat >set.script <<'END'
+frames 2
+screenshot before.png
+set Tint 1,0.1,0.1,1   # red
+frames 2
+screenshot after.png
+screenshot again.png   # nothing changed since
+quit
+END
+"$xvfb" -a "$view" lit.fx --size 160x120 --validate --script set.script >set.log 2>&1 || { cat set.log; exit 1; }
+cat set.log
+cmp -s before.png after.png && { echo "set Tint did not change the picture"; exit 1; }
+cmp -s after.png again.png || { echo "two frames with no change differ"; exit 1; }
+
+cat >reload.script <<'END'
+frames 2
+screenshot loaded.png
+wait-reload 30
+frames 2
+screenshot edited.png
+END
+"$xvfb" -a "$view" lit.fx --size 160x120 --validate --script reload.script >reload.log 2>&1 &
+pid=$!
+for _ in $(seq 1 300); do [ -s loaded.png ] && break; sleep 0.1; done
+[ -s loaded.png ] || { echo "no first screenshot"; cat reload.log; kill $pid; exit 1; }
+sed -i 's/float4 Tint = {[^}]*}/float4 Tint = {0.1, 0.9, 0.1, 1.0}/' lit.fx
+wait $pid || { echo "the reload script failed"; cat reload.log; exit 1; }
+cat reload.log
+grep -q "^reloaded " reload.log || { echo "no reload reported"; exit 1; }
+cmp -s loaded.png edited.png && { echo "the saved edit did not change the picture"; exit 1; }
+
+printf 'frames 1\nset NoSuchParam 1\n' >bad.script
+if "$xvfb" -a "$view" lit.fx --size 160x120 --script bad.script >bad.log 2>&1; then
+  echo "a script setting a missing parameter succeeded"; cat bad.log; exit 1
+fi
+grep -q "bad.script:2: error: cannot set 'NoSuchParam'" bad.log || { cat bad.log; exit 1; }
+echo "viewer script: ok"
