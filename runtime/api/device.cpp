@@ -95,10 +95,10 @@ std::unique_ptr<detail::DeviceState> make_state(fx::vk::Context ctx, const Devic
     return defaults == Target::kNoBinding ? layout : fx::vk::with_default_attributes(layout, in, defaults);
   };
   if (defaults != Target::kNoBinding) {
-    const float constant[4] = {0, 0, 0, 1};
-    auto buffer = fx::vk::Buffer::create(
-        c, {16, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, fx::vk::MemoryUsage::upload, "fxkit default attributes"}, sink);
-    if (!buffer || !buffer->write(constant, 16)) {
+    const fx::vk::DefaultAttributeData constant;
+    auto buffer = fx::vk::Buffer::create(c, {sizeof constant, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                             fx::vk::MemoryUsage::upload, "fxkit default attributes"}, sink);
+    if (!buffer || !buffer->write(&constant, sizeof constant)) {
       auto more = detail::to_messages(sink.diagnostics(), nullptr);
       errors.insert(errors.end(), more.begin(), more.end());
       return nullptr;

@@ -4,6 +4,7 @@
 
 #include "fx/model/parameter_store.h"
 #include "fx/reload/reload_transaction.h"
+#include "fx/select/caps_sources.h"
 #include "fx/select/selection.h"
 #include "fx/vulkan/effect_scene.h"
 #include "fx/vulkan/preview_defaults.h"
@@ -57,6 +58,7 @@ std::vector<TechniqueInfo> Effect::techniques() const {
   std::vector<TechniqueInfo> out;
   auto version = state_ ? state_->handle.version() : nullptr;
   if (!version) return out;
+  const auto choice = state_->handle.choice();
   for (uint32_t t = 0; t < version->model->techniques.size(); ++t) {
     TechniqueInfo info;
     info.name = version->model->techniques[t].name;
@@ -65,10 +67,18 @@ std::vector<TechniqueInfo> Effect::techniques() const {
       info.annotations.push_back(detail::to_public(a));
     info.reason = detail::technique_reason(*version, t);
     info.drawable = info.reason.empty();
+    // The emulated profile's reasons follow the device's in the selection's choice.
+    if (choice && choice != version->techniques && version->techniques) {
+      const std::vector<std::string>& all = choice->rejections(t);
+      for (size_t r = version->techniques->rejections(t).size(); r < all.size(); ++r)
+        info.caps_reason += (info.caps_reason.empty() ? "" : "; ") + all[r];
+    }
     out.push_back(std::move(info));
   }
   return out;
 }
+
+std::vector<std::string> caps_profiles() { return fx::caps_profile_names(); }
 
 Technique Effect::technique(std::string_view name) const {
   Technique t;
@@ -87,7 +97,15 @@ Technique Effect::select(const Criteria& criteria) const {
   c.scheme = criteria.scheme;
   c.cost_budget_ms = criteria.cost_budget_ms;
   c.max_error = criteria.max_error;
-  state_->handle.select(c);
+  std::optional<fx::DeviceCaps> caps;
+  if (!criteria.caps.empty()) {
+    fx::DiagnosticSink sink;
+    caps = fx::load_caps_profile(criteria.caps, sink);
+    for (const fx::Diagnostic& d : sink.diagnostics())
+      state_->problems.push_back(
+          detail::to_message(fx::Severity::warning, d.id, d.message + "; selecting for this device"));
+  }
+  state_->handle.select(c, caps ? &*caps : nullptr);
   t.effect_ = state_;
   return t;
 }

@@ -18,6 +18,7 @@
 #include "fx/model/parameter_store.h"
 #include "fx/reload/include_graph.h"
 #include "fx/reload/reload_transaction.h"
+#include "fx/select/technique_validation.h"
 #include "fx/worker_pool.h"
 
 namespace fx {
@@ -37,10 +38,27 @@ struct EffectSlot {
   uint32_t technique = kNoIndex;
   uint32_t last = kNoIndex;  // selection memory (hysteresis)
   uint64_t plan_key = 0;
+  std::optional<DeviceCaps> emulate;                // caps selection emulates, if any
+  std::shared_ptr<const TechniqueChoice> emulated;  // `techniques` restricted to them
 
+  // Re-validates the live version against the emulated caps (after a reload or a change).
+  void emulate_caps() {
+    emulated.reset();
+    if (!emulate || !live || !techniques || !live->model) return;
+    std::vector<std::vector<std::string>> extra;
+    for (const TechniqueValidation& v :
+         validate_techniques(*live->model, *emulate, {.programs = live->programs.get()})) {
+      std::vector<std::string>& reasons = extra.emplace_back();
+      for (const Diagnostic& d : v.reasons)
+        reasons.push_back(emulate->name + ": " + (live->sources ? located_reason(d, *live->sources) : d.message));
+      if (!v.valid && reasons.empty()) reasons.push_back(emulate->name + ": not valid");
+    }
+    emulated = techniques->restricted(extra);
+  }
   void reselect() {
     if (!has_criteria) return;
-    technique = techniques ? techniques->select(criteria.get(), last, plan_key) : kNoIndex;
+    const auto& choice = emulated ? emulated : techniques;
+    technique = choice ? choice->select(criteria.get(), last, plan_key) : kNoIndex;
   }
 };
 }  // namespace detail
@@ -308,6 +326,7 @@ struct EffectLibrary::Impl {
       }
       slot.live = std::move(next);
       slot.techniques = slot.live->techniques;
+      slot.emulate_caps();
       slot.reselect();
       slot.diagnostics = ev.diagnostics;
       slot.diagnostic_sources = done.tx.sources;
@@ -387,6 +406,7 @@ std::vector<EffectHandle> EffectLibrary::load(const std::vector<std::string>& pa
     if (tx.ok()) {
       slot.live = std::shared_ptr<EffectVersion>(tx.version.release());
       slot.techniques = slot.live->techniques;
+      slot.emulate_caps();
     }
     d.by_key[slot.key] = fresh[i];
     d.slots[slot.id] = fresh[i];
@@ -518,6 +538,18 @@ uint32_t EffectHandle::select() const {
   slot_->has_criteria = true;
   slot_->reselect();
   return slot_->technique;
+}
+
+uint32_t EffectHandle::select(const SelectionCriteria& criteria, const DeviceCaps* emulate) const {
+  if (!slot_) return kNoIndex;
+  slot_->emulate = emulate ? std::optional<DeviceCaps>(*emulate) : std::nullopt;
+  slot_->emulate_caps();
+  return select(criteria);
+}
+
+std::shared_ptr<const TechniqueChoice> EffectHandle::choice() const {
+  if (!slot_) return nullptr;
+  return slot_->emulated ? slot_->emulated : slot_->techniques;
 }
 
 uint32_t EffectHandle::technique() const { return slot_ ? slot_->technique : kNoIndex; }

@@ -49,6 +49,20 @@ std::shared_ptr<const TechniqueChoice> TechniqueChoice::build(std::vector<Techni
   return choice;
 }
 
+std::shared_ptr<const TechniqueChoice> TechniqueChoice::restricted(
+    const std::vector<std::vector<std::string>>& extra) const {
+  std::shared_ptr<TechniqueChoice> choice(new TechniqueChoice());
+  choice->impl_->candidates = impl_->candidates;
+  for (size_t i = 0; i < extra.size() && i < choice->impl_->candidates.size(); ++i) {
+    TechniqueCandidate& c = choice->impl_->candidates[i];
+    for (const std::string& why : extra[i]) c.rejection_reasons.push_back(why);
+    c.valid = c.valid && extra[i].empty();
+  }
+  DiagnosticSink ignored;  // the plan's annotation diagnostics were reported with this choice
+  choice->impl_->plan = SelectionPlan::build(choice->impl_->candidates, ignored);
+  return choice;
+}
+
 uint32_t TechniqueChoice::select(const SelectionCriteria& criteria, uint32_t& last, uint64_t& plan_key) const {
   SelectionState state{last, plan_key};
   uint32_t chosen = impl_->plan.select(impl_->plan.query(criteria), state);

@@ -40,13 +40,16 @@ std::unique_ptr<EffectPreview> EffectPreview::create(const Context& ctx, const M
   const VkDeviceSize vbytes = mesh.vertices.size() * sizeof(Vertex), ibytes = mesh.indices.size() * sizeof(uint32_t);
   auto vb = Buffer::create(ctx, {vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "preview vertices"}, sink);
   auto ib = Buffer::create(ctx, {ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUsage::upload, "preview indices"}, sink);
-  // What an attribute the mesh lacks reads (vertex_layout): (0,0,0,1), BLENDWEIGHT (1,0,0,0)
-  // so one bone carries the vertex, and integer inputs (BLENDINDICES) 0.
-  const float constant[12] = {0, 0, 0, 1, 1, 0, 0, 0, 0, 0, 0, 0};
+  // What an attribute the mesh lacks reads (vertex_layout): (0, 0, 0, 1), and BLENDWEIGHT
+  // (1, 0, 0, 0) so that one bone carries the vertex.
+  struct {
+    DefaultAttributeData defaults;
+    float blend_weight[4] = {1, 0, 0, 0};
+  } constant;
   auto cb = Buffer::create(ctx, {sizeof constant, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "preview constant attributes"}, sink);
   if (!vb || !ib || !cb) return nullptr;
   if (!vb->write(mesh.vertices.data(), vbytes) || !ib->write(mesh.indices.data(), ibytes) ||
-      !cb->write(constant, sizeof constant)) {
+      !cb->write(&constant, sizeof constant)) {
     sink.error("vk-call-failed", {}, "could not write the preview mesh buffers");
     return nullptr;
   }
@@ -93,11 +96,10 @@ VertexLayout EffectPreview::vertex_layout(std::span<const InterfaceVariable> inp
     if (!listed && a != mesh.end()) layout.attributes.push_back({in.name, a->format, a->offset, 0});
   }
   layout = with_default_attributes(std::move(layout), inputs, 1);
-  for (VertexAttribute& a : layout.attributes) {
-    if (a.binding != 1) continue;
-    if (canonical_semantic(a.semantic).starts_with("BLENDWEIGHT")) a.offset = 16;
-    if (a.format == VK_FORMAT_R32G32B32A32_SINT || a.format == VK_FORMAT_R32G32B32A32_UINT) a.offset = 32;
-  }
+  for (VertexAttribute& a : layout.attributes)
+    if (a.binding == 1 && a.format == VK_FORMAT_R32G32B32A32_SFLOAT &&
+        canonical_semantic(a.semantic).starts_with("BLENDWEIGHT"))
+      a.offset = sizeof(DefaultAttributeData);
   return layout;
 }
 

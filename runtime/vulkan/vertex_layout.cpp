@@ -1,6 +1,8 @@
 // Vertex layout matching by semantic, and mesh library layouts in Vulkan formats.
 #include "fx/vulkan/vertex_layout.h"
 
+#include <cstddef>
+
 #define XXH_INLINE_ALL  // xxHash header-only: fxkit links no libxxhash
 #include <xxhash.h>
 
@@ -134,12 +136,14 @@ VertexLayout with_default_attributes(VertexLayout layout, std::span<const Interf
     return false;
   };
   for (const InterfaceVariable& in : inputs) {
+    const VkFormat format = default_attribute_format(in);
+    const uint32_t offset = format == VK_FORMAT_R32G32B32A32_SFLOAT ? 0 : uint32_t(offsetof(DefaultAttributeData, ints));
     if (in.semantic.empty()) {
-      if (!has(in.name, false)) layout.attributes.push_back({in.name, default_attribute_format(in), 0, binding});
+      if (!has(in.name, false)) layout.attributes.push_back({in.name, format, offset, binding});
       continue;
     }
     for (const std::string& semantic : input_semantics(in))
-      if (!has(semantic, true)) layout.attributes.push_back({semantic, default_attribute_format(in), 0, binding});
+      if (!has(semantic, true)) layout.attributes.push_back({semantic, format, offset, binding});
   }
   if (layout.attributes.size() > declared) layout.bindings.push_back({binding, 0, VK_VERTEX_INPUT_RATE_VERTEX});
   return layout;

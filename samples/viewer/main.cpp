@@ -65,9 +65,10 @@ void draw_params(fxkit::Effect& effect, Panels& ui) {
   }
 }
 
-void draw_ui(fxkit::Effect& effect, fxkit::Technique& technique, Panels& ui, const std::string& device_name) {
+void draw_ui(fxkit::Effect& effect, fxkit::Technique& technique, Panels& ui, const std::string& device_name,
+             float camera_distance) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(400, 560), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(420, std::max(300.f, ImGui::GetIO().DisplaySize.y - 20)), ImGuiCond_FirstUseEver);
   ImGui::Begin(effect.path().c_str());
   ImGui::Text("%s", device_name.c_str());
   ImGui::Text("frame %.2f ms (%.0f fps)", 1000.0 / std::max(ImGui::GetIO().Framerate, 1e-3f), ImGui::GetIO().Framerate);
@@ -75,7 +76,7 @@ void draw_ui(fxkit::Effect& effect, fxkit::Technique& technique, Panels& ui, con
   ImGui::Text("technique: %s", technique.valid() ? technique.name().c_str() : "(none can draw)");
   if (ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) ui.light.draw();
   if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) draw_params(effect, ui);
-  if (ImGui::CollapsingHeader("Techniques", ImGuiTreeNodeFlags_DefaultOpen)) ui.techniques.draw(effect, technique);
+  if (ImGui::CollapsingHeader("Techniques", ImGuiTreeNodeFlags_DefaultOpen)) ui.techniques.draw(effect, technique, camera_distance);
   ImGui::End();
   draw_overlay(ui.problems);
 }
@@ -120,6 +121,7 @@ int main(int argc, char** argv) {
   fxkit::DeviceOptions options;
   options.target.formats = {.color = {window->color_format()}, .depth = window->depth_format()};
   options.target.vertex_layout = fxkit::Mesh::vertex_layout();
+  options.target.default_attribute_binding = 1;  // inputs the mesh lacks read (0, 0, 0, 1), as in D3D
   options.target.front_faces = fxkit::Winding::counter_clockwise;  // as the built-in meshes
   options.target.y_flip = fxkit::YFlip::negative_viewport;
   std::vector<fxkit::Message> errors;
@@ -173,7 +175,7 @@ int main(int argc, char** argv) {
       if (io.MouseDown[0]) camera.turn(io.MouseDelta.x, io.MouseDelta.y);
       if (io.MouseWheel != 0.f) camera.zoom(io.MouseWheel);
     }
-    draw_ui(effect, technique, ui, device->device_name());
+    draw_ui(effect, technique, ui, device->device_name(), camera.distance());
 
     const float aspect = float(frame.extent.width) / float(frame.extent.height);
     effect.set_scene(camera.scene(aspect, float(glfwGetTime())));

@@ -3,17 +3,64 @@
 
 #include <imgui.h>
 
+#include <cstdio>
 #include <limits>
+#include <string>
+#include <vector>
 
 void TechniquePanel::pin(const fxkit::Effect& effect, fxkit::Technique& technique, const std::string& name) {
   pinned_ = name == "auto" ? "" : name;
   technique = pinned_.empty() ? effect.select(criteria_) : effect.technique(pinned_);
 }
 
-void TechniquePanel::draw(const fxkit::Effect& effect, fxkit::Technique& technique) {
+namespace {
+
+// "[0, 20)" from MinDistance/MaxDistance (or LodMin/LodMax) with the Hysteresis margin when
+// given; "" when the technique has no distance band (docs/selection.md).
+std::string distance_band(const fxkit::TechniqueInfo& t) {
+  const fxkit::Annotation* lo = t.annotation("MinDistance");
+  const fxkit::Annotation* hi = t.annotation("MaxDistance");
+  if (!lo) lo = t.annotation("LodMin");
+  if (!hi) hi = t.annotation("LodMax");
+  if (!lo && !hi) return {};
+  char band[96];
+  const double min = lo ? lo->number() : 0.0;
+  if (hi) std::snprintf(band, sizeof band, "[%g, %g)", min, hi->number());
+  else std::snprintf(band, sizeof band, "[%g, inf)", min);
+  std::string out = band;
+  if (const fxkit::Annotation* h = t.annotation("Hysteresis")) {
+    std::snprintf(band, sizeof band, ", hysteresis %g", h->number());
+    out += band;
+  }
+  return out;
+}
+
+}  // namespace
+
+void TechniquePanel::draw(const fxkit::Effect& effect, fxkit::Technique& technique, float camera_distance) {
   bool changed = false;
   ImGui::TextUnformatted("Selection criteria");
-  changed |= ImGui::DragFloat("distance", &criteria_.distance, 0.1f, 0.f, 1000.f);
+  const std::vector<std::string> profiles = fxkit::caps_profiles();
+  const std::string shown = caps_ == 0 ? "this device" : profiles[size_t(caps_ - 1)];
+  if (ImGui::BeginCombo("caps", shown.c_str())) {
+    for (int i = 0; i <= int(profiles.size()); ++i)
+      if (ImGui::Selectable(i == 0 ? "this device" : profiles[size_t(i - 1)].c_str(), caps_ == i)) {
+        changed |= caps_ != i;
+        caps_ = i;
+      }
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("select as that generation would, among what this device draws");
+  criteria_.caps = caps_ == 0 ? "" : profiles[size_t(caps_ - 1)];
+  changed |= ImGui::Checkbox("from the camera", &distance_from_camera_);
+  ImGui::SameLine();
+  if (distance_from_camera_) {
+    changed |= criteria_.distance != camera_distance;
+    criteria_.distance = camera_distance;
+    ImGui::Text("distance %.2f", criteria_.distance);
+  } else {
+    changed |= ImGui::DragFloat("distance", &criteria_.distance, 0.1f, 0.f, 1000.f);
+  }
   changed |= ImGui::InputText("scheme", scheme_, sizeof scheme_);
   changed |= ImGui::Checkbox("##budget", &budget_on_);
   ImGui::SameLine();
@@ -39,6 +86,8 @@ void TechniquePanel::draw(const fxkit::Effect& effect, fxkit::Technique& techniq
     ImGui::TextColored(colour, "%s%s (%u pass%s)", t.name == chosen ? "> " : "", t.name.c_str(), t.passes,
                        t.passes == 1 ? "" : "es");
     if (!t.drawable) ImGui::TextWrapped("    %s", t.reason.c_str());
+    if (!t.caps_reason.empty()) ImGui::TextWrapped("    %s", t.caps_reason.c_str());
+    if (const std::string band = distance_band(t); !band.empty()) ImGui::Text("    distance %s", band.c_str());
     // Measured cost and error where the effect carries them (generated/costs.fxh).
     const fxkit::Annotation* error = t.annotation("MaxError");
     const fxkit::Annotation* cost = t.annotation("CostNsPerPixel");

@@ -448,6 +448,39 @@ TEST_F(PublicApiTest, SetSceneBindsTransformsByTheirNamesAndWarnsAboutOnesLeftZe
   EXPECT_EQ(warned.find("'g_mWorld'"), std::string::npos) << warned;
 }
 
+// Criteria::caps selects as an older generation would, among what this device draws: a DX8
+// card cannot run ps_2_0, so the ps_1_1 technique is chosen and techniques() says why.
+TEST_F(PublicApiTest, SelectionEmulatesACapsProfile) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  fxkit::Effect effect = r.device->load(write_effect("api_emulated_caps.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
+float4 Bright() : COLOR0 { return float4(1, 1, 1, 1); }
+float4 Dim() : COLOR0 { return float4(0.5, 0.5, 0.5, 1); }
+technique sm2 { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Bright(); } }
+technique sm1 { pass p0 { VertexShader = compile vs_1_1 VS(); PixelShader = compile ps_1_1 Dim(); } }
+)"));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  EXPECT_EQ(effect.select().name(), "sm2");
+  fxkit::Criteria dx8;
+  dx8.caps = "dx8";
+  EXPECT_EQ(effect.select(dx8).name(), "sm1");
+  const auto listed = effect.techniques();
+  ASSERT_EQ(listed.size(), 2u);
+  EXPECT_TRUE(listed[0].drawable) << "this device still draws it";
+  EXPECT_NE(listed[0].caps_reason.find("dx8: "), std::string::npos) << listed[0].caps_reason;
+  EXPECT_NE(listed[0].caps_reason.find("ps_2_0"), std::string::npos) << listed[0].caps_reason;
+  EXPECT_EQ(listed[1].caps_reason, "");
+  EXPECT_EQ(effect.select().name(), "sm2") << "a select() without caps is for this device again";
+  EXPECT_TRUE(effect.techniques()[0].caps_reason.empty());
+  fxkit::Criteria unknown;
+  unknown.caps = "dx5";
+  EXPECT_EQ(effect.select(unknown).name(), "sm2");
+  EXPECT_NE(text(effect.messages()).find("selecting for this device"), std::string::npos) << text(effect.messages());
+  EXPECT_EQ(fxkit::caps_profiles().front(), "dx6");
+}
+
 // A colour with no default draws black until set_preview_defaults gives it a stand-in;
 // parameters with defaults keep them.
 TEST_F(PublicApiTest, PreviewDefaultsGiveAColourWithoutADefaultAVisibleValue) {

@@ -42,7 +42,13 @@ struct Criteria {
   std::string scheme{};        // "" accepts every scheme
   float cost_budget_ms = std::numeric_limits<float>::infinity();
   float max_error = std::numeric_limits<float>::infinity();  // 8-bit levels
+  // "" selects for this device. A caps profile (caps_profiles(): "dx6" ... "dx9c",
+  // "modern") selects as that generation would, among the techniques this device draws.
+  std::string caps{};
 };
+
+// The caps profiles Criteria::caps takes, oldest first.
+std::vector<std::string> caps_profiles();
 
 // A camera and object transform for the standard semantics (WORLD, VIEW, PROJECTION, their
 // products, inverses and transposes, CAMERAPOSITION, TIME). Column-major 4x4 (glm's
@@ -120,6 +126,9 @@ struct TechniqueInfo {
   uint32_t passes = 0;
   bool drawable = false;
   std::string reason{};  // "" when drawable
+  // Why the caps profile the last select() emulated rejects it ("" when it accepts it, or
+  // when select() emulated none).
+  std::string caps_reason{};
   // As the file writes them: selection's (Scheme, MaxError, CostNsPerPixel, ...; see
   // docs/selection.md) and any other.
   std::vector<Annotation> annotations{};

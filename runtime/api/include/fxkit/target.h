@@ -54,8 +54,9 @@ struct Target {
   VertexLayout vertex_layout{};
   // Where shader inputs the vertex layout lacks are read from. Unset (the default): such an
   // input is an error naming the attributes on offer. Set: they read (0, 0, 0, 1), as
-  // Direct3D reads elements a vertex declaration lacks, from a 16-byte buffer fxkit binds at
-  // this vertex buffer binding in Technique::begin (one the application's layout leaves free).
+  // Direct3D reads elements a vertex declaration lacks (integer inputs as integers), from a
+  // 32-byte buffer fxkit binds at this vertex buffer binding in Technique::begin (one the
+  // application's layout leaves free).
   uint32_t default_attribute_binding = kNoBinding;
   static constexpr uint32_t kNoBinding = 0xFFFFFFFFu;
   Winding front_faces = Winding::unset;  // required

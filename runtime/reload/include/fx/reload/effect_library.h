@@ -99,6 +99,13 @@ class EffectHandle {
   uint32_t select(const SelectionCriteria& criteria) const;
   // Selects with default criteria (every scheme, no distance), remembered likewise.
   uint32_t select() const;
+  // Selects as a device with `emulate` would (a D3D caps profile: the historic generations),
+  // among the techniques this device can draw; remembered with the criteria and applied to
+  // every reload. nullptr selects for this device again.
+  uint32_t select(const SelectionCriteria& criteria, const DeviceCaps* emulate) const;
+  // The techniques as selection sees them: validated on this device, and against the
+  // emulated caps when select() was given some. Null before the first good version.
+  std::shared_ptr<const TechniqueChoice> choice() const;
   // The last selected technique (re-selected after reloads); kNoIndex before select().
   uint32_t technique() const;
   std::string technique_name() const;

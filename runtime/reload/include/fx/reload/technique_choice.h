@@ -61,6 +61,10 @@ class TechniqueChoice {
   // Whether the technique survived validation, and why not.
   bool valid(uint32_t index) const;
   const std::vector<std::string>& rejections(uint32_t index) const;
+  // The same techniques with more reasons to reject them (`extra[i]` for technique i, empty
+  // when it has none): validation against a caps profile to emulate. Valid only where both
+  // this choice and the extra validation accept a technique, with both sets of reasons.
+  std::shared_ptr<const TechniqueChoice> restricted(const std::vector<std::vector<std::string>>& extra) const;
   // The plan itself, for callers that include fx/select/selection.h.
   const SelectionPlan& plan() const;
 

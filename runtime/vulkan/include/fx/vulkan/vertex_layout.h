@@ -51,10 +51,17 @@ std::vector<std::string> input_semantics(const InterfaceVariable& input);
 // floats, or as integers for integer inputs (BLENDINDICES as uint4), which Vulkan requires.
 VkFormat default_attribute_format(const InterfaceVariable& input);
 
+// What the buffer at a default-attribute binding holds: (0, 0, 0, 1) as floats at offset 0
+// and as integers at offset 16, where with_default_attributes points integer inputs.
+struct DefaultAttributeData {
+  float floats[4] = {0, 0, 0, 1};
+  int32_t ints[4] = {0, 0, 0, 1};
+};
+
 // `layout` plus, for every input it lacks, an attribute at `binding` whose buffer has stride
 // 0: each vertex reads the same (0, 0, 0, 1), as Direct3D reads elements a vertex declaration
 // lacks. Semantic inputs are matched by semantic, GLSL inputs by name. The caller binds a
-// buffer holding that constant at `binding`.
+// buffer holding a DefaultAttributeData at `binding`.
 VertexLayout with_default_attributes(VertexLayout layout, std::span<const InterfaceVariable> inputs,
                                      uint32_t binding);
 
