@@ -453,14 +453,17 @@ TEST_F(PublicApiTest, SetSceneBindsTransformsByTheirNamesAndWarnsAboutOnesLeftZe
 TEST_F(PublicApiTest, SelectionEmulatesACapsProfile) {
   Rig r = rig();
   ASSERT_TRUE(r) << text(r.errors);
-  fxkit::Effect effect = r.device->load(write_effect("api_emulated_caps.fx", R"(
+  const std::string common = R"(
 float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
 float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
 float4 Bright() : COLOR0 { return float4(1, 1, 1, 1); }
 float4 Dim() : COLOR0 { return float4(0.5, 0.5, 0.5, 1); }
 technique sm2 { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Bright(); } }
-technique sm1 { pass p0 { VertexShader = compile vs_1_1 VS(); PixelShader = compile ps_1_1 Dim(); } }
-)"));
+)";
+  const std::string sm1 =
+      "technique sm1 { pass p0 { VertexShader = compile vs_1_1 VS(); PixelShader = compile ps_1_1 Dim(); } }\n";
+  const std::string path = write_effect("api_emulated_caps.fx", common + sm1);
+  fxkit::Effect effect = r.device->load(path);
   ASSERT_TRUE(effect.ok()) << text(effect.messages());
   EXPECT_EQ(effect.select().name(), "sm2");
   fxkit::Criteria dx8;
@@ -472,6 +475,23 @@ technique sm1 { pass p0 { VertexShader = compile vs_1_1 VS(); PixelShader = comp
   EXPECT_NE(listed[0].caps_reason.find("dx8: "), std::string::npos) << listed[0].caps_reason;
   EXPECT_NE(listed[0].caps_reason.find("ps_2_0"), std::string::npos) << listed[0].caps_reason;
   EXPECT_EQ(listed[1].caps_reason, "");
+
+  // A reload selects again under the same emulated profile: the new ps_1_1 technique,
+  // declared first, is what a DX8 card would now draw.
+  fxkit::Technique chosen = effect.select(dx8);
+  std::ofstream(path, std::ios::trunc)
+      << common + "technique sm1_first { pass p0 { VertexShader = compile vs_1_1 VS(); "
+                  "PixelShader = compile ps_1_1 Bright(); } }\n" + sm1;
+  std::vector<fxkit::Reload> reloads;
+  for (auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+       reloads.empty() && std::chrono::steady_clock::now() < deadline;) {
+    r.device->wait_for_reload(std::chrono::milliseconds(20));
+    reloads = r.device->begin_frame();
+  }
+  ASSERT_EQ(reloads.size(), 1u);
+  ASSERT_EQ(reloads[0].kind, fxkit::Reload::Kind::reloaded) << reloads[0].str();
+  EXPECT_EQ(chosen.name(), "sm1_first");
+
   EXPECT_EQ(effect.select().name(), "sm2") << "a select() without caps is for this device again";
   EXPECT_TRUE(effect.techniques()[0].caps_reason.empty());
   fxkit::Criteria unknown;
