@@ -58,6 +58,7 @@ struct EffectState {
   fx::ParameterStore* store = nullptr;
   fx::vk::RenderingFormats formats;
   VkBuffer default_attributes = VK_NULL_HANDLE;  // bound at default_binding by begin()
+  fx::vk::EffectTextureCache* textures = nullptr;  // the device's; null once it is destroyed
   uint32_t default_binding = 0;
   // The binding begin() started recording with (its version kept alive until end()).
   fx::vk::EffectBinding* recording = nullptr;

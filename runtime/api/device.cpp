@@ -129,6 +129,8 @@ Device::~Device() {
   state_->library.reset();
   state_->refresh_stores();  // handles are inert now: no store  // versions and their bindings before what they draw with
   state_->backend.reset();
+  for (const std::weak_ptr<detail::EffectState>& e : state_->effects)
+    if (auto effect = e.lock()) effect->textures = nullptr;
   state_->textures.reset();
   state_->frames.reset();
   state_->default_attributes = {};
@@ -173,6 +175,7 @@ Effect Device::load(const std::string& path) {
   e.state_->formats = state_->formats;
   e.state_->default_attributes = state_->default_attributes.handle();
   e.state_->default_binding = state_->target.default_attribute_binding;
+  e.state_->textures = state_->textures.get();
   state_->effects.push_back(e.state_);
   state_->refresh_stores();
   return e;

@@ -1,12 +1,14 @@
 // fxkit::Effect: an EffectHandle of the device's library, with the parameter store of the live
 // version behind every setter.
 #include <algorithm>
+#include <filesystem>
 
 #include "fx/model/parameter_store.h"
 #include "fx/reload/reload_transaction.h"
 #include "fx/select/caps_sources.h"
 #include "fx/select/selection.h"
 #include "fx/vulkan/effect_scene.h"
+#include "fx/vulkan/effect_textures.h"
 #include "fx/vulkan/preview_defaults.h"
 #include "api_state.h"
 
@@ -170,6 +172,8 @@ uint32_t Effect::set_scene(const Scene& scene) {
   std::copy_n(scene.projection, 16, &view.projection[0][0]);
   view.eye = {scene.eye[0], scene.eye[1], scene.eye[2]};
   view.time = scene.time;
+  view.elapsed = scene.elapsed;
+  view.viewport_size = {scene.viewport_size[0], scene.viewport_size[1]};
   const uint32_t set = fx::vk::set_standard_semantics(*version->params, *version->model, view);
   // Once per version: transforms the shaders read that nothing bound draw nothing.
   if (state_->scene_checked != version->serial && version->programs) {
@@ -221,6 +225,39 @@ bool Effect::set_texture(std::string_view name, VkImageView view, VkImageLayout 
   auto version = state_->handle.version();
   fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
   return binding && state_->bind_app_textures(*version, *binding);
+}
+
+bool Effect::set_texture_file(std::string_view name, const std::string& file) {
+  if (!state_) return false;
+  detail::EffectState& s = *state_;
+  auto version = s.handle.version();
+  const fx::TextureInfo* info = nullptr;
+  if (version)
+    for (const fx::TextureInfo& t : version->model->textures)
+      if (t.parameter < version->model->parameters.size() && version->model->parameters[t.parameter].name == name)
+        info = &t;
+  if (!info || !s.textures) {
+    std::string why(name);
+    why.append(" is no texture parameter of ").append(path());
+    s.sink.error("texture-unknown", {}, why);
+    s.keep_problems();
+    return false;
+  }
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    std::string why = "cannot read texture file '" + file + "' for ";
+    why.append(name);
+    s.sink.error("texture-file-missing", {}, why);
+    s.keep_problems();
+    return false;
+  }
+  fx::TextureInfo from_file = *info;
+  from_file.resource_name = std::filesystem::absolute(file, ec).string();
+  from_file.generator.clear();
+  auto data = s.textures->resolve(*version->model, from_file, {}, fx::ImageDim::dim_2d, false, s.sink);
+  const fx::vk::Texture* texture = data && !data->stand_in ? s.textures->gpu(*data, s.sink) : nullptr;
+  s.keep_problems();
+  return texture && set_texture(name, texture->view(), texture->layout(), VK_IMAGE_VIEW_TYPE_2D);
 }
 
 }  // namespace fxkit

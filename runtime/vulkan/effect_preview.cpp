@@ -78,7 +78,9 @@ EffectBindingDesc EffectPreview::binding_desc() const {
 }
 
 SceneView EffectPreview::scene() const {
-  return frame_bounds(bounds_, float(desc_.width) / float(desc_.height));
+  SceneView s = frame_bounds(bounds_, float(desc_.width) / float(desc_.height));
+  s.viewport_size = {float(desc_.width), float(desc_.height)};
+  return s;
 }
 
 VertexLayout EffectPreview::vertex_layout(std::span<const InterfaceVariable> inputs) const {

@@ -75,6 +75,9 @@ constexpr NamedSemantic kSceneNames[] = {
     {"camerapos", "CAMERAPOSITION"}, {"cameraposition", "CAMERAPOSITION"}, {"g_camerapos", "CAMERAPOSITION"},
     {"viewpos", "CAMERAPOSITION"}, {"viewposition", "CAMERAPOSITION"},
     {"g_ftime", "TIME"}, {"g_time", "TIME"}, {"ftime", "TIME"}, {"time", "TIME"},
+    {"g_felapsedtime", "ELAPSEDTIME"}, {"elapsedtime", "ELAPSEDTIME"},
+    {"g_vviewportsize", "VIEWPORTPIXELSIZE"}, {"viewportsize", "VIEWPORTPIXELSIZE"},
+    {"screensize", "VIEWPORTPIXELSIZE"},
 };
 
 }  // namespace
@@ -136,8 +139,14 @@ uint32_t set_standard_semantics(ParameterStore& params, const EffectModel& model
       const float v[4] = {scene.eye.x, scene.eye.y, scene.eye.z, 1.0f};
       const uint32_t n = std::min(type->component_count(), 4u);
       if (type->base == BaseType::float32 && n >= 3) set += params.set(p, std::span<const float>(v, n)) ? 1 : 0;
-    } else if (sem == "TIME") {
-      if (type->component_count() == 1 && type->base == BaseType::float32) set += params.set(p, scene.time) ? 1 : 0;
+    } else if (sem == "TIME" || sem == "ELAPSEDTIME") {
+      if (type->component_count() == 1 && type->base == BaseType::float32)
+        set += params.set(p, sem == "TIME" ? scene.time : scene.elapsed) ? 1 : 0;
+    } else if (sem == "VIEWPORTPIXELSIZE" && scene.viewport_size.x > 0 && scene.viewport_size.y > 0) {
+      const glm::vec2 size = scene.viewport_size;
+      const float v[4] = {size.x, size.y, 1.0f / size.x, 1.0f / size.y};
+      const uint32_t n = type->component_count();
+      if (type->base == BaseType::float32 && (n == 2 || n == 4)) set += params.set(p, std::span<const float>(v, n)) ? 1 : 0;
     }
     if (bound && set != before) bound->push_back({param.name, sem, by_name});
   }

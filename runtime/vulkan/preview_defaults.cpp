@@ -36,7 +36,14 @@ std::vector<float> stand_in(const Parameter& param, const Type& type, std::strin
     rule = "visible colour";
     return {0.8f, 0.8f, 0.8f, 1.0f};
   }
-  if (float_vector && holds(n, {"light"}) && holds(n, {"dir"})) {
+  const std::string semantic = ascii_lower(param.semantic);
+  const bool names_light = holds(n, {"light"}) || find_annotation(param.annotations, "Object") != nullptr;
+  if (float_vector && (semantic == "position" || semantic == "lightposition") && names_light) {
+    rule = "light position";
+    return {2.0f, 3.0f, 4.0f, 1.0f};
+  }
+  if (float_vector && ((holds(n, {"light"}) && holds(n, {"dir"})) || semantic == "direction" ||
+                       semantic == "lightdirection")) {
     rule = "light direction";
     const float s = 1.0f / std::sqrt(0.25f + 1.0f + 1.0f);
     return {-0.5f * s, -1.0f * s, -1.0f * s, 0.0f};

@@ -178,7 +178,10 @@ int main(int argc, char** argv) {
     draw_ui(effect, technique, ui, device->device_name(), camera.distance());
 
     const float aspect = float(frame.extent.width) / float(frame.extent.height);
-    effect.set_scene(camera.scene(aspect, float(glfwGetTime())));
+    fxkit::Scene scene = camera.scene(aspect, float(glfwGetTime()));
+    scene.elapsed = 1.f / std::max(ImGui::GetIO().Framerate, 1.f);
+    scene.viewport_size[0] = float(frame.extent.width), scene.viewport_size[1] = float(frame.extent.height);
+    effect.set_scene(scene);
     if (effect.serial() != stand_ins_serial) {  // once per loaded version
       stand_ins_serial = effect.serial();
       for (const std::string& name : effect.set_preview_defaults()) std::printf("stand-in value for %s\n", name.c_str());

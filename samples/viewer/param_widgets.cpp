@@ -4,7 +4,11 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <map>
 
 namespace {
 
@@ -62,6 +66,7 @@ ParamWidget widget_for(const fxkit::ParamInfo& p) {
   const fxkit::Annotation* visible = number_of(p, {"SasUiVisible", "UIVisible"});
   const std::string widget = text_of(p, {"ui_type", "UIWidget", "SasUiControl"});
   if (widget == "none" || (visible && visible->number() == 0.f)) return w.kind = ParamWidget::Kind::hidden, w;
+  if (p.kind == fxkit::ParamKind::texture && p.elements == 0) return w.kind = ParamWidget::Kind::texture_file, w;
   if (p.kind != fxkit::ParamKind::numeric || !p.settable || p.rows > 1 || p.elements > 0 || is_scene_bound(p))
     return w.kind = ParamWidget::Kind::readonly, w;
 
@@ -87,7 +92,21 @@ bool draw_param(fxkit::Effect& effect, const fxkit::ParamInfo& p, const ParamWid
   ImGui::PushID(p.name.c_str());
   bool changed = false;
   const int n = int(std::min<uint32_t>(p.components, 4));
-  if (w.kind == ParamWidget::Kind::readonly) {
+  if (w.kind == ParamWidget::Kind::texture_file) {
+    // The file a texture parameter samples: its ResourceName (relative to the effect) until
+    // another is typed and loaded (Effect::set_texture_file).
+    static std::map<std::string, std::array<char, 512>> paths;
+    auto [it, fresh] = paths.try_emplace(effect.path() + "|" + p.name);
+    if (fresh && !p.resource_name.empty()) {
+      const std::string shown = (std::filesystem::path(effect.path()).parent_path() / p.resource_name).string();
+      std::snprintf(it->second.data(), it->second.size(), "%s", shown.c_str());
+    }
+    ImGui::TextUnformatted(w.label.c_str());
+    const bool entered = ImGui::InputText("##file", it->second.data(), it->second.size(),
+                                          ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if (ImGui::Button("load") || entered) changed = effect.set_texture_file(p.name, it->second.data());
+  } else if (w.kind == ParamWidget::Kind::readonly) {
     std::string what = p.type + (p.semantic.empty() ? "" : " : " + p.semantic);
     if (!p.resource_name.empty()) what += " = \"" + p.resource_name + "\"";
     if (!p.default_text.empty()) what += " = \"" + p.default_text + "\"";

@@ -8,7 +8,7 @@
 #include <string>
 
 struct ParamWidget {
-  enum class Kind { hidden, slider, drag, spinner, color, checkbox, readonly };
+  enum class Kind { hidden, slider, drag, spinner, color, checkbox, readonly, texture_file };
   Kind kind = Kind::drag;
   std::string label;
   std::string help;      // tooltip: ui_tooltip, then string annotations ("UIHelp: ...")
@@ -17,7 +17,8 @@ struct ParamWidget {
   bool has_range = false;
 };
 
-// The widget `param`'s annotations ask for. Parameters the application cannot set, scene
+// The widget `param`'s annotations ask for. A texture gets a file field (its ResourceName,
+// loaded with Effect::set_texture_file). Parameters the application cannot set, scene
 // transforms (a standard semantic or a name Effect::set_scene binds) and matrices are
 // read-only; UIWidget "None" and SasUiVisible false hide.
 ParamWidget widget_for(const fxkit::ParamInfo& param);

@@ -55,6 +55,12 @@ std::optional<ViewerScript> ViewerScript::load(const std::string& path, std::str
       c.kind = ScriptCommand::Kind::technique;
       c.arg = arg;
       if (arg.empty()) return bad("technique wants a name or auto");
+    } else if (verb == "texture") {
+      c.kind = ScriptCommand::Kind::texture;
+      c.arg = arg;
+      c.file = extra;
+      if (arg.empty() || extra.empty()) return bad("texture wants NAME FILE");
+      extra.clear();
     } else if (verb == "wait-reload") {
       c.kind = ScriptCommand::Kind::wait_reload;
       c.number = arg.empty() ? 10.0 : std::strtod(arg.c_str(), &end);
@@ -66,7 +72,7 @@ std::optional<ViewerScript> ViewerScript::load(const std::string& path, std::str
     } else if (verb == "quit") {
       c.kind = ScriptCommand::Kind::quit;
     } else {
-      return bad("unknown command '" + verb + "' (frames, set, technique, wait-reload, screenshot, screenshot-window, quit)");
+      return bad("unknown command '" + verb + "' (frames, set, technique, texture, wait-reload, screenshot, screenshot-window, quit)");
     }
     if (!extra.empty()) return bad("unexpected '" + extra + "' after " + verb);
     script.commands_.push_back(std::move(c));
@@ -125,6 +131,15 @@ ScriptFrame ViewerScript::before_frame(fxkit::Effect& effect, TechniquePanel& pa
         }
         break;
       }
+      case ScriptCommand::Kind::texture:
+        if (!effect.set_texture_file(c.arg, c.file)) {
+          const std::vector<fxkit::Message> messages = effect.messages();
+          frame.error = fail(c, "cannot sample '" + c.file + "' for '" + c.arg + "'" +
+                                    (messages.empty() ? std::string() : ": " + messages.back().text));
+          frame.quit = true;
+          return frame;
+        }
+        break;
       case ScriptCommand::Kind::quit: frame.quit = true; return frame;
     }
   }

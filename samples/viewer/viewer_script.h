@@ -3,6 +3,7 @@
 //   frames N              draw N frames before the next command
 //   set NAME V[,V...]     set a numeric parameter (all its components)
 //   technique NAME|auto   pin a technique, or return to selection
+//   texture NAME F.png    sample an image file for a texture parameter
 //   wait-reload [SECONDS] draw until a reload (good or failed) is reported; 10 s by default
 //   screenshot F.png      write the scene of the next frame drawn (without the UI)
 //   screenshot-window F.png  the same with the UI: the whole window
@@ -20,8 +21,10 @@
 #include "technique_panel.h"
 
 struct ScriptCommand {
-  enum class Kind { frames, set, technique, wait_reload, screenshot, screenshot_window, quit } kind = Kind::quit;
+  enum class Kind { frames, set, technique, texture, wait_reload, screenshot, screenshot_window, quit };
+  Kind kind = Kind::quit;
   std::string arg;            // parameter, technique or file name
+  std::string file;           // texture
   std::vector<float> values;  // set
   double number = 0;          // frames (count), wait-reload (seconds)
   int line = 0;

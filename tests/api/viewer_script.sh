@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # fxkit-view driven by --script: a scripted parameter change changes the picture (and a
-# frame with no change does not), a saved edit arrives through wait-reload, and a script
-# naming a parameter the effect lacks fails at its line.
+# frame with no change does not), a saved edit arrives through wait-reload, a texture file
+# replaces the stand-in, and commands that cannot run fail at their line.
 # Usage: viewer_script.sh XVFB_RUN FXKIT_VIEW EFFECT WORK_DIR
 set -euo pipefail
 xvfb=$1 view=$2 effect=$3 work=$4
@@ -39,6 +39,33 @@ wait $pid || { echo "the reload script failed"; cat reload.log; exit 1; }
 cat reload.log
 grep -q "^reloaded " reload.log || { echo "no reload reported"; exit 1; }
 cmp -s loaded.png edited.png && { echo "the saved edit did not change the picture"; exit 1; }
+
+# A texture parameter sampled from a file the script names (Effect::set_texture_file).
+cat >textured.fx <<'END'
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+texture Picture < string ResourceName = "not_there.png"; >;
+sampler2D PictureSampler = sampler_state { Texture = <Picture>; };
+struct V { float4 position : POSITION; float2 uv : TEXCOORD0; };
+V VS(float4 p : POSITION, float2 uv : TEXCOORD0) { V o; o.position = mul(p, WorldViewProjection); o.uv = uv; return o; }
+float4 PS(V i) : COLOR0 { return tex2D(PictureSampler, i.uv); }
+technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+END
+cat >texture.script <<'END'
+frames 2
+screenshot stand_in.png
+texture Picture before.png
+frames 2
+screenshot textured.png
+END
+"$xvfb" -a "$view" textured.fx --size 160x120 --validate --script texture.script >texture.log 2>&1 || { cat texture.log; exit 1; }
+cat texture.log
+cmp -s stand_in.png textured.png && { echo "texture Picture before.png did not change the picture"; exit 1; }
+
+printf 'frames 1\ntexture Picture no_such_file.png\n' >bad_texture.script
+if "$xvfb" -a "$view" textured.fx --size 160x120 --script bad_texture.script >bad_texture.log 2>&1; then
+  echo "a script sampling a missing file succeeded"; cat bad_texture.log; exit 1
+fi
+grep -q "bad_texture.script:2: error: cannot sample 'no_such_file.png'" bad_texture.log || { cat bad_texture.log; exit 1; }
 
 printf 'frames 1\nset NoSuchParam 1\n' >bad.script
 if "$xvfb" -a "$view" lit.fx --size 160x120 --script bad.script >bad.log 2>&1; then

@@ -3,6 +3,7 @@
 // the warning for an image that is one flat colour.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -72,6 +73,43 @@ TEST(FxkitRender, ParamOverridesAStandIn) {
   ASSERT_TRUE(image);
   const uint8_t* centre = image->at(image->width / 2, image->height / 2);
   EXPECT_EQ(centre[0], 0);
+}
+
+// SAS semantics beyond the transforms: the viewport size is bound, a light's DIRECTION and
+// POSITION (with its Object annotation) get stand-ins, and the light reaches the image.
+TEST(FxkitRender, SasViewportAndLightSemanticsAreBound) {
+  const auto fx = write("sas.fx", R"(
+float4x4 WorldViewProj : WORLDVIEWPROJECTION;
+float2 Viewport : VIEWPORTPIXELSIZE;
+float Elapsed : ELAPSEDTIME;
+float3 SunDirection : DIRECTION < string Object = "DirectionalLight0"; >;
+float3 Lamp : POSITION < string Object = "PointLight0"; >;
+struct V { float4 position : POSITION; float3 normal : TEXCOORD0; float3 world : TEXCOORD1; };
+V VS(float4 p : POSITION, float3 n : NORMAL) { V o; o.position = mul(p, WorldViewProj); o.normal = n; o.world = p.xyz; return o; }
+float4 PS(V i, float2 pixel : VPOS) : COLOR0 {
+  float sun = saturate(dot(normalize(i.normal), -SunDirection));
+  float lamp = saturate(dot(normalize(i.normal), normalize(Lamp - i.world)));
+  float edge = pixel.x < Viewport.x * 0.5 ? 1 : 0.5;
+  return float4(sun * edge, lamp, Elapsed > 0 ? 1 : 0, 1);
+}
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)");
+  const auto png = fx.parent_path() / "sas.png";
+  const fxkit_test::CliRun r =
+      fxkit_test::run_fxkit("render " + fx.string() + " --verbose --validation --size 64x64 --out " + png.string(), true);
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* line : {"Viewport <- VIEWPORTPIXELSIZE (by its semantic)", "Elapsed <- ELAPSEDTIME (by its semantic)",
+                           "SunDirection <- light direction (stand-in)", "Lamp <- light position (stand-in)"})
+    EXPECT_NE(r.err.find(line), std::string::npos) << line << "\n" << r.err;
+  fx::DiagnosticSink sink;
+  const auto image = fx::read_png(png, sink, 4);
+  ASSERT_TRUE(image);
+  uint8_t most_green = 0, most_blue = 0;
+  for (uint32_t y = 0; y < image->height; ++y)
+    for (uint32_t x = 0; x < image->width; ++x)
+      most_green = std::max(most_green, image->at(x, y)[1]), most_blue = std::max(most_blue, image->at(x, y)[2]);
+  EXPECT_GT(most_green, 128) << "the stand-in lamp lights the side facing it";
+  EXPECT_EQ(most_blue, 255) << "ELAPSEDTIME is positive";
 }
 
 TEST(FxkitRender, AFlatImageIsAWarningNamingTheUnboundTransform) {

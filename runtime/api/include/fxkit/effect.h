@@ -51,14 +51,16 @@ struct Criteria {
 std::vector<std::string> caps_profiles();
 
 // A camera and object transform for the standard semantics (WORLD, VIEW, PROJECTION, their
-// products, inverses and transposes, CAMERAPOSITION, TIME). Column-major 4x4 (glm's
-// memory order), right-handed, clip-space +Y up, depth 0..1.
+// products, inverses and transposes, CAMERAPOSITION, TIME, ELAPSEDTIME, VIEWPORTPIXELSIZE).
+// Column-major 4x4 (glm's memory order), right-handed, clip-space +Y up, depth 0..1.
 struct Scene {
   float world[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   float view[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   float projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   float eye[3] = {0, 0, 3};
-  float time = 0.f;  // seconds
+  float time = 0.f;                  // seconds (TIME)
+  float elapsed = 1.f / 60.f;        // seconds since the previous frame (ELAPSEDTIME)
+  float viewport_size[2] = {0, 0};   // pixels (VIEWPORTPIXELSIZE); 0 leaves it alone
   // A camera looking at a sphere of `radius` around the origin, from the front and a
   // little above, filling about 85% of the shorter side of an image of `aspect`.
   static Scene framing(float radius, float aspect);
@@ -218,6 +220,13 @@ class Effect {
   // The view stays the application's; it must outlive the frames that use it.
   bool set_texture(std::string_view name, VkImageView view, VkImageLayout layout,
                    VkImageViewType type = VK_IMAGE_VIEW_TYPE_2D);
+  // Reads an image file (PNG, JPEG, TGA, BMP: what stb_image reads) for texture parameter
+  // `name`, uploads it as a 2D texture and samples it from the next begin(), as set_texture
+  // (also after reloads). Render thread: the upload uses the device's queue. The device
+  // keeps the upload until it is destroyed (uploads are shared per file and modification
+  // time). False, with the reason in messages(), when `name` is no texture parameter or the
+  // file cannot be read.
+  bool set_texture_file(std::string_view name, const std::string& file);
 
  private:
   friend class Device;

@@ -20,7 +20,9 @@ namespace fx::vk {
 struct SceneView {
   glm::mat4 world{1.0f}, view{1.0f}, projection{1.0f};
   glm::vec3 eye{0.0f, 0.0f, 3.0f};
-  float time = 0.0f;  // seconds
+  float time = 0.0f;                // seconds
+  float elapsed = 1.0f / 60.0f;     // seconds since the previous frame (ELAPSEDTIME)
+  glm::vec2 viewport_size{0.0f};    // pixels (VIEWPORTPIXELSIZE); 0 leaves it alone
 };
 
 // A camera looking at `bounds` from the front and a little above (so tops and fronts both
@@ -44,7 +46,8 @@ std::string_view semantic_by_name(std::string_view name);
 // Sets every parameter whose semantic is a standard one: WORLD, VIEW, PROJECTION, their
 // products (WORLDVIEW, VIEWPROJECTION, WORLDVIEWPROJECTION), inverses and transposes
 // (…INVERSE, …TRANSPOSE, …INVERSETRANSPOSE), CAMERAPOSITION / EYEPOSITION /
-// VIEWPOSITION (float3 or float4 with w = 1), TIME; and every parameter with no semantic
+// VIEWPOSITION (float3 or float4 with w = 1), TIME, ELAPSEDTIME, VIEWPORTPIXELSIZE (float2,
+// or float4 with the reciprocals in zw, when the scene has a size); and every parameter with no semantic
 // whose name semantic_by_name knows, as if it had that semantic. Other parameters keep
 // their values (light directions and colours keep their effect defaults). Returns how
 // many were set; `bound` (when given) receives how each was.

@@ -15,7 +15,7 @@ namespace fx::vk {
 // How set_preview_defaults gave a parameter its value.
 struct PreviewDefault {
   std::string parameter;
-  std::string rule;  // "identity bone palette", "visible colour", "light direction", "light count"
+  std::string rule;  // "identity bone palette", "visible colour", "light direction", "light position", "light count"
 };
 
 // For every parameter in `read` (the names the shaders read; see parameters_read) with no
@@ -24,8 +24,10 @@ struct PreviewDefault {
 // identity matrices (skinning in its rest pose); "color", "colour", "diffuse", "albedo" or
 // "tint" in a float3 / float4 (but not "ambient", "emissive", "specular" or "fog", which are
 // zero in many a real scene) gives 0.8 grey, alpha 1; "light" and "dir" in a float3 / float4
-// gives a light from above, front and right, normalised, pointing from the light towards the
-// scene (w = 0); "light" and "count" or "num" in an int gives 1.
+// (or the semantic DIRECTION / LIGHTDIRECTION) gives a light from above, front and right,
+// normalised, pointing from the light towards the scene (w = 0), as SAS means DIRECTION;
+// the semantic POSITION / LIGHTPOSITION on a light (an `Object` annotation, or "light" in
+// the name) gives (2, 3, 4), w = 1; "light" and "count" or "num" in an int gives 1.
 // Returns what it set, in declaration order.
 std::vector<PreviewDefault> set_preview_defaults(ParameterStore& params, const EffectModel& model,
                                                  const std::vector<std::string>& read);
