@@ -28,6 +28,12 @@ struct ParameterSet {
   std::vector<std::pair<std::string, std::vector<float>>> values;
 };
 
+// The technique a reference colour is asked for.
+struct TechniqueRef {
+  std::string name;
+  std::string scheme;  // its Scheme annotation, "" when none
+};
+
 // Reads a float parameter (or its first n components) from the store; zeros when absent.
 glm::dvec4 read_parameter(const ParameterStore& params, const std::string& name);
 
@@ -38,16 +44,19 @@ struct ReferenceModel {
   // so filtering and mip selection match the technique's).
   std::vector<std::string> textures;
   std::vector<ParameterSet> parameter_sets;
-  // The reference colour for a technique of `scheme`, or nullopt when the model does not
-  // cover that scheme (`covers` says so up front).
-  std::function<bool(const std::string& scheme)> covers;
+  // Whether the model covers a technique (the ones it does not stay unmeasured).
+  std::function<bool(const TechniqueRef&)> covers = [](const TechniqueRef&) { return true; };
   // The techniques that are substitutes for one another share a group (one Pareto front
-  // each): the scheme when the model depends on it, "" otherwise.
-  std::function<std::string(const std::string& scheme)> group = [](const std::string&) { return std::string(); };
-  std::function<glm::dvec3(const PixelInputs&, const ParameterStore&, const std::string& scheme)> shade;
+  // each): "" when every technique renders the same model, else what the model depends on.
+  std::function<std::string(const TechniqueRef&)> group = [](const TechniqueRef&) { return std::string(); };
+  // The reference colour of one pixel for a technique the model covers.
+  std::function<glm::dvec3(const PixelInputs&, const ParameterStore&, const TechniqueRef&)> shade;
 };
 
 // The models, one per effect that has one.
 const std::vector<ReferenceModel>& reference_models();
+
+// Why an effect without a model has none (the reason its techniques are listed unmeasured).
+std::string unmodelled_reason(const std::string& effect);
 
 }  // namespace fx::bench

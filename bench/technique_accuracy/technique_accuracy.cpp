@@ -189,9 +189,9 @@ bool measure_effect(const vk::Context& ctx, const ReferenceModel& model, const s
         r.scheme = scheme_of(em.techniques[t]);
         r.drawable = b->binding->technique_ok(t);
         r.model = model.description;
-        r.substitutes = model.group(r.scheme);
+        r.substitutes = model.group({r.technique, r.scheme});
         if (!r.drawable) r.reason = "not drawable on Vulkan: " + b->binding->technique_reason(t);
-        else if (!model.covers(r.scheme)) r.reason = "no reference model for scheme '" + r.scheme + "'";
+        else if (!model.covers({r.technique, r.scheme})) r.reason = "its reference model does not cover this technique";
         r.measured = r.reason.empty();
         rows.push_back(r);
       }
@@ -237,7 +237,7 @@ bool measure_effect(const vk::Context& ctx, const ReferenceModel& model, const s
                 in.textures.emplace_back(p[0], p[1], p[2], p[3]);
               }
               in.eye = glm::dvec3(scene.eye);
-              const glm::dvec3 ref = model.shade(in, *b->effect->params, rows[k].scheme);
+              const glm::dvec3 ref = model.shade(in, *b->effect->params, {rows[k].technique, rows[k].scheme});
               const float* g = img->at(x, y);
               double worst = 0;
               for (int c = 0; c < 3; ++c) {
@@ -321,8 +321,7 @@ bool list_effect(const vk::Context& ctx, const std::filesystem::path& source, co
     r.technique = em.techniques[t].name;
     r.scheme = scheme_of(em.techniques[t]);
     r.drawable = b->binding->technique_ok(t);
-    r.reason = r.drawable ? "no double-precision reference model for this effect yet"
-                          : "not drawable on Vulkan: " + b->binding->technique_reason(t);
+    r.reason = r.drawable ? unmodelled_reason(r.effect) : "not drawable on Vulkan: " + b->binding->technique_reason(t);
     rows.push_back(r);
   }
   return true;

@@ -174,11 +174,20 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
     for (uint32_t w : walk) colour[w] = 2;
   }
 
+  // Errors compare only within a substitute group (the same reference model); the groups
+  // keep the order in which the effect declares them.
+  std::vector<std::string> groups(n);
+  for (size_t i = 0; i < n; ++i) {
+    if (const AnnotationValue* g = candidates[i].annotations.find("Substitutes"))
+      if (const auto* text = std::get_if<std::string>(g)) groups[i] = *text;
+    plan.entries_[i].group = uint32_t(std::find(groups.begin(), groups.begin() + i + 1, groups[i]) - groups.begin());
+  }
   plan.order_.resize(n);
   for (size_t i = 0; i < n; ++i) plan.order_[i] = uint32_t(i);
   std::stable_sort(plan.order_.begin(), plan.order_.end(), [&](uint32_t x, uint32_t y) {
     const Entry &a = plan.entries_[x], &b = plan.entries_[y];
     if (a.error_known != b.error_known) return a.error_known;
+    if (a.error_known && a.group != b.group) return a.group < b.group;
     if (a.error != b.error) return a.error < b.error;
     return a.priority > b.priority;
   });

@@ -90,6 +90,8 @@ std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool 
           number(e.cost_ns_per_vertex) + " ns per vertex";
   else if (c.error_known != e.error_known)
     why = "error measured (" + number(c.error) + " LSB) vs not measured";
+  else if (c.group != e.group)
+    why = "its substitute group is declared first";
   else if (c.error != e.error)
     why = "lower error " + number(c.error) + " vs " + number(e.error) + " LSB";
   else if (c.priority != e.priority)

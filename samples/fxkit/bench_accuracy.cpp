@@ -71,16 +71,19 @@ void write_fxh(const std::string& path, const std::vector<fx::bench::TechniqueAc
        "// " << o.draws << " draws, the empty technique subtracted; error: max |technique - double reference|\n"
        "// in 8-bit levels over the scene set (docs/accuracy.md). A technique that could not be\n"
        "// measured carries ErrorNotMeasured with the reason, and selection treats its error as unknown.\n"
+       "// Substitutes: the techniques measured against the same model (errors rank within it).\n"
        "#ifndef FXKIT_GENERATED_COSTS_FXH\n#define FXKIT_GENERATED_COSTS_FXH\n";
   for (const fx::bench::TechniqueAccuracy& t : techniques) {
     f << "// " << t.effect << " " << t.technique << "\n";
     if (t.measured && t.timed) {
       char line[320];
       std::snprintf(line, sizeof line,
-                    "#define COST_%s float CostNsPerPixel = %.3f; float CostNsPerVertex = %.3f; float MaxError = %.2f;\n",
+                    "#define COST_%s float CostNsPerPixel = %.3f; float CostNsPerVertex = %.3f; float MaxError = %.2f;",
                     t.technique.c_str(), std::max(0.0, t.ns_per_pixel), std::max(0.0, t.ns_per_vertex),
                     t.max_error_lsb);
       f << line;
+      if (!t.substitutes.empty()) f << " string Substitutes = \"" << t.substitutes << "\";";
+      f << "\n";
     } else {
       std::string reason = t.measured ? std::string("not timed") : t.reason;
       for (char& c : reason) if (c == '"' || c == '\n') c = '\'';

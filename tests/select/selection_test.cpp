@@ -211,6 +211,29 @@ TEST(Selection, UnmeasuredErrorIsUnknownNotExact) {
   EXPECT_EQ(plan.select(plan.query({.max_error = 0.1f})), fx::kNoIndex);
 }
 
+// Errors measured against different models do not compare: a substitute group ranks as a
+// whole where its first technique is declared, and by error only within itself.
+TEST(Selection, ErrorsRankWithinTheirSubstituteGroup) {
+  const std::string bump = "bump mapped";
+  fx::SelectionPlan plan = build({
+      tech("bump_renormalized", {{"MaxError", 21.f}, {"Substitutes", bump}, {"CostNsPerPixel", 7.f}}),
+      tech("bump_unnormalized", {{"MaxError", 43.f}, {"Substitutes", bump}, {"CostNsPerPixel", 5.f}}),
+      tech("analytic", {{"MaxError", 6.f}, {"CostNsPerPixel", 3.f}}),
+      tech("lut", {{"MaxError", 16.f}, {"CostNsPerPixel", 2.f}}),
+  });
+  EXPECT_EQ(std::vector<uint32_t>(plan.rank_order().begin(), plan.rank_order().end()),
+            (std::vector<uint32_t>{0, 1, 2, 3}));
+  fx::SelectionResult r = plan.explain(plan.query({}));
+  EXPECT_EQ(r.chosen, 0u);
+  EXPECT_EQ(r.reasons[2], "ranks below 'bump_renormalized' (its substitute group is declared first)");
+  EXPECT_EQ(r.reasons[1], "ranks below 'bump_renormalized' (lower error 21 vs 43 LSB)");
+  // Without the bump techniques (a variant without them), the analytic one leads.
+  fx::SelectionPlan plain = build({tech("lut", {{"MaxError", 16.f}}), tech("analytic", {{"MaxError", 6.f}})});
+  EXPECT_EQ(plain.select(plain.query({})), 1u);
+  // An error limit still picks the cheapest technique within it, whatever its group.
+  EXPECT_EQ(plan.select(plan.query({.max_error = 20.f})), 3u);
+}
+
 // Per-vertex work is priced per vertex: with a vertex count the per-vertex technique's cost
 // grows with the mesh, without one it ties on ns per pixel and then compares ns per vertex.
 TEST(Selection, CostNsPerVertexCountsWithTheVertices) {

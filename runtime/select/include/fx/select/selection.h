@@ -87,8 +87,11 @@ class SelectionPlan {
   size_t size() const { return entries_.size(); }
   std::string_view name(uint32_t index) const;
   std::optional<uint32_t> index_of(std::string_view name) const;
-  // Candidate indices from best to worst rank (measured error, lowest first, then the
-  // techniques whose error is not measured; then priority, then declaration).
+  // Candidate indices from best to worst rank: techniques with a measured error first; among
+  // them substitute groups (the Substitutes annotation: errors measured against the same
+  // model) in the order their first technique is declared, lowest error first within a
+  // group; then the techniques whose error is not measured; ties by priority, then
+  // declaration.
   std::span<const uint32_t> rank_order() const { return order_; }
   uint64_t key() const { return key_; }
 
@@ -101,6 +104,7 @@ class SelectionPlan {
     uint64_t scheme_mask;  // 0 = any scheme
     uint32_t fallback;     // index or kNoIndex
     int32_t priority;
+    uint32_t group;  // declaration index of the first technique with the same Substitutes
     bool valid;
     bool error_known;  // MaxError or MaxErrorAbs given
     bool cost_known;   // CostMs or CostNsPerPixel given
