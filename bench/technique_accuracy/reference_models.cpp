@@ -10,6 +10,7 @@
 #include "fx/shading/specular_power.h"
 #include "fx/shading/strand.h"
 #include "fx/shading/ward.h"
+#include "fx/shading/wood.h"
 
 namespace fx::bench {
 namespace {
@@ -171,6 +172,44 @@ ReferenceModel aniso_lut_ward() {
   return m;
 }
 
+// wood.fx: the RenderMan wood (fx::shading::wood_shade's terms) on the object-space
+// position, each technique with its own ring profile (the seed's Hermite curve, or
+// RenderMan's smoothstep for scheme "renderman"). The two noise samples come from the
+// G-buffer: noise3 at the scaled position, and noise1 at the ring radius as the shader
+// computes it in float (the reference recomputes the radius in double from the sample).
+ReferenceModel wood() {
+  ReferenceModel m;
+  m.effect = "wood.fx";
+  m.description =
+      "(ambient Ka + diffuse Kd N.L) lerp(light, dark, ring) + specular (N.H)^(1/roughness) Ks (0.3 ring + 0.7), "
+      "ring = profile(frac(|pp.yz| ringscale + |noise1 turbulence|)), pp = P point_scale + noise3 turbulence";
+  const std::string pp = "(object * point_scale + noise3(object * point_scale) * turbulence)";
+  m.textures = {"float4(object, 1.0)", "float4(noise3(object * point_scale), 1.0)",
+                "float4(noise1(length(" + pp + ".yz) * ringscale), 0.0, 0.0, 1.0)"};
+  m.parameter_sets = {{"defaults", {}},
+                      {"light head-on", {{"LightDirection", {0.0f, -0.1f, -1.0f}}}},
+                      {"light against the camera", {{"LightDirection", {0.0f, 0.05f, 1.0f}}}},
+                      {"turbulence 1 (the seed's)", {{"turbulence", {1.0f}}}}};
+  m.group = [](const TechniqueRef& t) { return t.scheme; };
+  m.shade = [](const PixelInputs& in, const ParameterStore& p, const TechniqueRef& t) {
+    auto x = [&](const char* name) { return read_parameter(p, name).x; };
+    const dvec3 pp = dvec3(in.textures[0]) * x("point_scale") + dvec3(in.textures[1]) * x("turbulence");
+    double r = std::sqrt(pp.y * pp.y + pp.z * pp.z) * x("ringscale");
+    r = shading::frc(r + std::abs(in.textures[2].x * x("turbulence")));
+    r = t.scheme == "renderman" ? shading::wood_ring_renderman(r) : shading::wood_ring_seed(r);
+    const dvec3 n = normalized_or(in.normal, {0, 0, 1});
+    const dvec3 l = normalized_or(-dvec3(read_parameter(p, "LightDirection")), {0, 0, 1});
+    const dvec3 e = normalized_or(in.eye - in.position, {0, 0, 1});
+    const dvec3 diffuse = rgb(p, "diffuse_color") * glm::dot(n, l);
+    const dvec3 h = normalized_or(l + e, dvec3(0.0));
+    const dvec3 specular = rgb(p, "specular_color") * shading::guarded_pow(glm::dot(h, n), 1.0 / x("roughness"));
+    return (rgb(p, "ambient_color") * x("Ka") + diffuse * x("Kd")) *
+               shading::lerp(rgb(p, "lightwood"), rgb(p, "darkwood"), r) +
+           specular * (x("Ks") * (0.3 * r + 0.7));
+  };
+  return m;
+}
+
 }  // namespace
 
 glm::dvec4 read_parameter(const ParameterStore& params, const std::string& name) {
@@ -186,14 +225,11 @@ glm::dvec4 read_parameter(const ParameterStore& params, const std::string& name)
 }
 
 const std::vector<ReferenceModel>& reference_models() {
-  static const std::vector<ReferenceModel> models = {hemisphere(), per_pixel_lighting(), strand_aniso(), aniso_lut_ward()};
+  static const std::vector<ReferenceModel> models = {hemisphere(), per_pixel_lighting(), strand_aniso(), aniso_lut_ward(), wood()};
   return models;
 }
 
 std::string unmodelled_reason(const std::string& effect) {
-  if (effect == "wood.fx")
-    return "no reference model yet: the ring position needs a second noise fetch at a computed coordinate, which "
-           "the G-buffer pass does not supply";
   if (effect == "aniso_highlights_glsl.fx")
     return "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
   if (effect == "brdf.fx")

@@ -40,8 +40,9 @@ glm::dvec4 read_parameter(const ParameterStore& params, const std::string& name)
 struct ReferenceModel {
   std::string effect;      // "hemisphere.fx"
   std::string description;  // what the model is, for reports
-  // HLSL expressions of `uv` whose values the reference reads (the effect's own samplers,
-  // so filtering and mip selection match the technique's).
+  // HLSL expressions of `uv` and `object` (the object-space position) whose values the
+  // reference reads: the effect's own samplers and helpers, so filtering and mip selection
+  // match the technique's.
   std::vector<std::string> textures;
   std::vector<ParameterSet> parameter_sets;
   // Whether the model covers a technique (the ones it does not stay unmeasured).

@@ -40,7 +40,7 @@ std::string measurement_block(const ReferenceModel& m) {
   std::ostringstream s;
   s << R"(
 struct FxkitMeasureIn { float4 position : POSITION; float3 normal : NORMAL; float3 tangent : TANGENT; float3 binormal : BINORMAL; float2 uv : TEXCOORD0; };
-struct FxkitMeasureOut { float4 position : POSITION; float3 world : TEXCOORD0; float3 t : TEXCOORD1; float3 b : TEXCOORD2; float3 n : TEXCOORD3; float2 uv : TEXCOORD4; };
+struct FxkitMeasureOut { float4 position : POSITION; float3 world : TEXCOORD0; float3 t : TEXCOORD1; float3 b : TEXCOORD2; float3 n : TEXCOORD3; float2 uv : TEXCOORD4; float3 object : TEXCOORD5; };
 FxkitMeasureOut FxkitGbufferVS(FxkitMeasureIn IN)
 {
     FxkitMeasureOut OUT;
@@ -51,11 +51,13 @@ FxkitMeasureOut FxkitGbufferVS(FxkitMeasureIn IN)
     OUT.b = frame[1];
     OUT.n = frame[2];
     OUT.uv = IN.uv;
+    OUT.object = IN.position.xyz;
     return OUT;
 }
 float4 FxkitGbufferPS(FxkitMeasureOut IN, uniform int channel) : COLOR0
 {
     float2 uv = IN.uv;
+    float3 object = IN.object;
     if (channel == 0) return float4(IN.world, 1.0);
     if (channel == 1) return float4(IN.t, 1.0);
     if (channel == 2) return float4(IN.b, 1.0);

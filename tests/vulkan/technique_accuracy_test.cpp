@@ -53,6 +53,8 @@ std::vector<bench::TechniqueAccuracy> measure(Context& ctx, const fs::path& dir)
   DiagnosticSink sink;
   auto rows = bench::measure_techniques(ctx, o, sink);
   EXPECT_TRUE(rows.has_value()) << describe(sink);
+  std::error_code ec;
+  fs::remove_all(dir, ec);
   return rows ? *rows : std::vector<bench::TechniqueAccuracy>{};
 }
 
