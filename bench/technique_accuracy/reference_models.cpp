@@ -6,6 +6,7 @@
 #include <cmath>
 #include <span>
 
+#include "fx/shading/brdf_factorization.h"
 #include "fx/shading/hemisphere.h"
 #include "fx/shading/specular_power.h"
 #include "fx/shading/strand.h"
@@ -210,6 +211,36 @@ ReferenceModel wood() {
   return m;
 }
 
+// brdf.fx: the analytic BRDF its factor textures are fitted to (the anisotropic Ward lobe of
+// the brdf_factor annotations: AlphaX 0.15 along T, AlphaY 0.35; AnalyticBrdf::evaluate is
+// f cos(theta_i)) in the per-pixel tangent frame, times the object texture and the material
+// colour; zero with the light below the surface.
+ReferenceModel brdf() {
+  ReferenceModel m;
+  m.effect = "brdf.fx";
+  m.description =
+      "Ward(alpha_x 0.15, alpha_y 0.35) f(L, V) cos(theta_L) in the per-pixel tangent frame x object texture x "
+      "MaterialColor (the BRDF the factor textures approximate)";
+  m.textures = {"tex2D(ObjectSampler, uv)"};
+  m.parameter_sets = {{"defaults", {}},
+                      {"light head-on", {{"lhtR", {0.0f, -0.1f, -1.0f, 0.0f}}}},
+                      {"light grazing", {{"lhtR", {1.0f, 0.0f, 0.05f, 0.0f}}}}};
+  m.shade = [](const PixelInputs& in, const ParameterStore& p, const TechniqueRef&) {
+    const dvec3 t = normalized_or(in.tangent, {1, 0, 0}), b = normalized_or(in.binormal, {0, 1, 0});
+    const dvec3 n = normalized_or(in.normal, {0, 0, 1});
+    auto tangent_space = [&](const dvec3& w) { return dvec3(glm::dot(w, t), glm::dot(w, b), glm::dot(w, n)); };
+    const dvec3 l = tangent_space(normalized_or(-dvec3(read_parameter(p, "lhtR")), {0, 0, 1}));
+    const dvec3 v = tangent_space(normalized_or(in.eye - in.position, {0, 0, 1}));
+    shading::AnalyticBrdf ward;
+    ward.lobe = shading::BrdfLobe::ward;
+    ward.alpha_x = 0.15;
+    ward.alpha_y = 0.35;
+    const double f = l.z > 0.0 ? ward.evaluate(normalized_or(l, {0, 0, 1}), normalized_or(v, {0, 0, 1})) : 0.0;
+    return f * dvec3(in.textures[0]) * rgb(p, "MaterialColor");
+  };
+  return m;
+}
+
 }  // namespace
 
 glm::dvec4 read_parameter(const ParameterStore& params, const std::string& name) {
@@ -225,16 +256,13 @@ glm::dvec4 read_parameter(const ParameterStore& params, const std::string& name)
 }
 
 const std::vector<ReferenceModel>& reference_models() {
-  static const std::vector<ReferenceModel> models = {hemisphere(), per_pixel_lighting(), strand_aniso(), aniso_lut_ward(), wood()};
+  static const std::vector<ReferenceModel> models = {hemisphere(), per_pixel_lighting(), strand_aniso(), aniso_lut_ward(), wood(), brdf()};
   return models;
 }
 
 std::string unmodelled_reason(const std::string& effect) {
   if (effect == "aniso_highlights_glsl.fx")
     return "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
-  if (effect == "brdf.fx")
-    return "no reference model yet: the reference would be the BRDF the factorization approximates "
-           "(lib/fx/shading/brdf_factorization.h), not wired in";
   return "no double-precision reference model for this effect yet";
 }
 

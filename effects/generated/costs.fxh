@@ -18,35 +18,35 @@
 // aniso_highlights_glsl.fx runtime_switch
 #define COST_runtime_switch string ErrorNotMeasured = "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
 // aniso_lut_ward.fx gaussian_per_pixel
-#define COST_gaussian_per_pixel float CostNsPerPixel = 43.157; float CostNsPerVertex = 21.511; float MaxError = 0.00; string Substitutes = "gaussian";
+#define COST_gaussian_per_pixel float CostNsPerPixel = 14.521; float CostNsPerVertex = 0.000; float MaxError = 0.00; string Substitutes = "gaussian";
 // aniso_lut_ward.fx gaussian_per_vertex
-#define COST_gaussian_per_vertex float CostNsPerPixel = 6.711; float CostNsPerVertex = 39.437; float MaxError = 228.22; string Substitutes = "gaussian";
+#define COST_gaussian_per_vertex float CostNsPerPixel = 1.162; float CostNsPerVertex = 0.000; float MaxError = 228.22; string Substitutes = "gaussian";
 // aniso_lut_ward.fx ln_hn_per_pixel
-#define COST_ln_hn_per_pixel float CostNsPerPixel = 38.279; float CostNsPerVertex = 9.097; float MaxError = 6.90; string Substitutes = "table";
+#define COST_ln_hn_per_pixel float CostNsPerPixel = 17.327; float CostNsPerVertex = 0.000; float MaxError = 6.90; string Substitutes = "table";
 // aniso_lut_ward.fx ln_hn_per_vertex
-#define COST_ln_hn_per_vertex float CostNsPerPixel = 16.041; float CostNsPerVertex = 27.022; float MaxError = 84.88; string Substitutes = "table";
+#define COST_ln_hn_per_vertex float CostNsPerPixel = 9.176; float CostNsPerVertex = 0.000; float MaxError = 84.88; string Substitutes = "table";
 // brdf.fx brdf_ps20
-#define COST_brdf_ps20 string ErrorNotMeasured = "no reference model yet: the reference would be the BRDF the factorization approximates (lib/fx/shading/brdf_factorization.h), not wired in";
+#define COST_brdf_ps20 float CostNsPerPixel = 37.909; float CostNsPerVertex = 13.762; float MaxError = 191.97;
 // brdf.fx tec0
 #define COST_tec0 string ErrorNotMeasured = "not drawable on Vulkan: pass 'p0': vertex stage: shader model 1 assembly (asm { }) is not compiled; the legacy path emulates it";
 // hemisphere.fx hemisphere_sun
-#define COST_hemisphere_sun float CostNsPerPixel = 21.396; float CostNsPerVertex = 11.812; float MaxError = 0.70;
+#define COST_hemisphere_sun float CostNsPerPixel = 37.286; float CostNsPerVertex = 32.097; float MaxError = 0.70;
 // hemisphere.fx hemisphere_vertex_occlusion_sun
-#define COST_hemisphere_vertex_occlusion_sun float CostNsPerPixel = 25.074; float CostNsPerVertex = 33.717; float MaxError = 42.54;
+#define COST_hemisphere_vertex_occlusion_sun float CostNsPerPixel = 49.069; float CostNsPerVertex = 24.623; float MaxError = 42.54;
 // hemisphere.fx hemisphere_three_term
-#define COST_hemisphere_three_term float CostNsPerPixel = 25.223; float CostNsPerVertex = 10.914; float MaxError = 125.30;
+#define COST_hemisphere_three_term float CostNsPerPixel = 54.713; float CostNsPerVertex = 22.800; float MaxError = 125.30;
 // hemisphere.fx hemisphere_two_term
-#define COST_hemisphere_two_term float CostNsPerPixel = 24.495; float CostNsPerVertex = 11.484; float MaxError = 125.05;
+#define COST_hemisphere_two_term float CostNsPerPixel = 14.888; float CostNsPerVertex = 44.258; float MaxError = 125.05;
 // hemisphere.fx hemisphere_seed_form
-#define COST_hemisphere_seed_form float CostNsPerPixel = 30.279; float CostNsPerVertex = 10.707; float MaxError = 28.13;
+#define COST_hemisphere_seed_form float CostNsPerPixel = 49.758; float CostNsPerVertex = 23.502; float MaxError = 28.13;
 // hemisphere.fx hemisphere_per_vertex
-#define COST_hemisphere_per_vertex float CostNsPerPixel = 5.824; float CostNsPerVertex = 5.177; float MaxError = 120.33;
+#define COST_hemisphere_per_vertex float CostNsPerPixel = 20.635; float CostNsPerVertex = 13.402; float MaxError = 120.33;
 // hemisphere.fx hemisphere_ps11
 #define COST_hemisphere_ps11 string ErrorNotMeasured = "not drawable on Vulkan: pass 'p0': vertex stage: shader model 1 assembly (asm { }) is not compiled; the legacy path emulates it";
 // hemisphere.fx hemisphere_vs11
 #define COST_hemisphere_vs11 string ErrorNotMeasured = "not drawable on Vulkan: pass 'p0': fixed-function pixel processing (texture stage states): the pass sets no PixelShader";
 // per_pixel_lighting.fx diffuse_ps20
-#define COST_diffuse_ps20 float CostNsPerPixel = 16.108; float CostNsPerVertex = 13.167; float MaxError = 0.76; string Substitutes = "diffuse";
+#define COST_diffuse_ps20 float CostNsPerPixel = 15.801; float CostNsPerVertex = 12.665; float MaxError = 0.76; string Substitutes = "diffuse";
 // per_pixel_lighting.fx diffuse_ps11
 #define COST_diffuse_ps11 string ErrorNotMeasured = "not drawable on Vulkan: pass 'p0': vertex stage: shader model 1 assembly (asm { }) is not compiled; the legacy path emulates it";
 // per_pixel_lighting.fx dot3_multitexture
@@ -54,11 +54,11 @@
 // per_pixel_lighting.fx emboss
 #define COST_emboss string ErrorNotMeasured = "not drawable on Vulkan: pass 'p0': fixed-function pixel processing (texture stage states): the pass sets no PixelShader";
 // per_pixel_lighting.fx specular_pow_ps20
-#define COST_specular_pow_ps20 float CostNsPerPixel = 21.607; float CostNsPerVertex = 12.265; float MaxError = 59.72; string Substitutes = "specular";
+#define COST_specular_pow_ps20 float CostNsPerPixel = 21.019; float CostNsPerVertex = 12.608; float MaxError = 59.72; string Substitutes = "specular";
 // per_pixel_lighting.fx specular_table_ps20
-#define COST_specular_table_ps20 float CostNsPerPixel = 23.339; float CostNsPerVertex = 40.989; float MaxError = 154.38; string Substitutes = "specular";
+#define COST_specular_table_ps20 float CostNsPerPixel = 27.552; float CostNsPerVertex = 12.862; float MaxError = 154.38; string Substitutes = "specular";
 // per_pixel_lighting.fx specular_squaring_ps20
-#define COST_specular_squaring_ps20 float CostNsPerPixel = 17.757; float CostNsPerVertex = 12.156; float MaxError = 199.63; string Substitutes = "specular";
+#define COST_specular_squaring_ps20 float CostNsPerPixel = 17.393; float CostNsPerVertex = 12.981; float MaxError = 199.63; string Substitutes = "specular";
 // per_pixel_lighting.fx specular_table_ps11
 #define COST_specular_table_ps11 string ErrorNotMeasured = "not drawable on Vulkan: pass 'p0': vertex stage: shader model 1 assembly (asm { }) is not compiled; the legacy path emulates it";
 // per_pixel_lighting.fx specular_squaring_ps11
@@ -66,25 +66,25 @@
 // per_pixel_lighting.fx specular_emboss
 #define COST_specular_emboss string ErrorNotMeasured = "not drawable on Vulkan: pass 'diffuse': fixed-function pixel processing (texture stage states): the pass sets no PixelShader";
 // strand_aniso.fx strand_bump_renormalized
-#define COST_strand_bump_renormalized float CostNsPerPixel = 45.467; float CostNsPerVertex = 12.254; float MaxError = 21.13; string Substitutes = "bump mapped";
+#define COST_strand_bump_renormalized float CostNsPerPixel = 125.861; float CostNsPerVertex = 45.747; float MaxError = 21.13; string Substitutes = "bump mapped";
 // strand_aniso.fx strand_bump_unnormalized
-#define COST_strand_bump_unnormalized float CostNsPerPixel = 40.133; float CostNsPerVertex = 12.037; float MaxError = 43.55; string Substitutes = "bump mapped";
+#define COST_strand_bump_unnormalized float CostNsPerPixel = 111.728; float CostNsPerVertex = 16.349; float MaxError = 43.55; string Substitutes = "bump mapped";
 // strand_aniso.fx strand_analytic
-#define COST_strand_analytic float CostNsPerPixel = 28.561; float CostNsPerVertex = 12.238; float MaxError = 5.96;
+#define COST_strand_analytic float CostNsPerPixel = 79.939; float CostNsPerVertex = 39.384; float MaxError = 5.96;
 // strand_aniso.fx strand_lut
-#define COST_strand_lut float CostNsPerPixel = 31.833; float CostNsPerVertex = 12.315; float MaxError = 16.28;
+#define COST_strand_lut float CostNsPerPixel = 86.435; float CostNsPerVertex = 46.434; float MaxError = 16.28;
 // strand_aniso.fx strand_lut_seed_wrap
-#define COST_strand_lut_seed_wrap float CostNsPerPixel = 28.761; float CostNsPerVertex = 12.143; float MaxError = 48.50;
+#define COST_strand_lut_seed_wrap float CostNsPerPixel = 88.543; float CostNsPerVertex = 32.503; float MaxError = 48.50;
 // strand_aniso.fx strand_four_lights
-#define COST_strand_four_lights float CostNsPerPixel = 105.293; float CostNsPerVertex = 14.230; float MaxError = 16.38; string Substitutes = "four lights";
+#define COST_strand_four_lights float CostNsPerPixel = 168.388; float CostNsPerVertex = 23.514; float MaxError = 16.38; string Substitutes = "four lights";
 // strand_aniso.fx strand_per_vertex
-#define COST_strand_per_vertex float CostNsPerPixel = 9.596; float CostNsPerVertex = 12.143; float MaxError = 66.61;
+#define COST_strand_per_vertex float CostNsPerPixel = 26.961; float CostNsPerVertex = 31.114; float MaxError = 66.61;
 // strand_aniso.fx strand_four_lights_ps14
 #define COST_strand_four_lights_ps14 string ErrorNotMeasured = "not drawable on Vulkan: pass 'p0': vertex stage: shader model 1 assembly (asm { }) is not compiled; the legacy path emulates it";
 // strand_aniso.fx strand_lut_ps11
 #define COST_strand_lut_ps11 string ErrorNotMeasured = "not drawable on Vulkan: pass 'p0': vertex stage: shader model 1 assembly (asm { }) is not compiled; the legacy path emulates it";
 // wood.fx wood
-#define COST_wood float CostNsPerPixel = 54.369; float CostNsPerVertex = 4.745; float MaxError = 0.00;
+#define COST_wood float CostNsPerPixel = 98.638; float CostNsPerVertex = 26.102; float MaxError = 0.00;
 // wood.fx wood_renderman_rings
-#define COST_wood_renderman_rings float CostNsPerPixel = 45.423; float CostNsPerVertex = 5.049; float MaxError = 0.00; string Substitutes = "renderman";
+#define COST_wood_renderman_rings float CostNsPerPixel = 86.986; float CostNsPerVertex = 3.765; float MaxError = 0.00; string Substitutes = "renderman";
 #endif
