@@ -6,6 +6,7 @@
 // g = sqrt(exponent / 128), b = strand angle (0 = isotropic, 3..255 = 1..180 degrees from
 // the tangent). Expect (seed figures) Blinn-Phong and Phong differing at grazing angles.
 // Vulkan GLSL 450: one uniform block, combined image samplers, explicit locations.
+#include "generated/costs.fxh"  // COST_<technique>: measured cost/error, scripts/accuracy-report
 
 float4x4 WorldViewProjection : WORLDVIEWPROJECTION < string UIWidget = "None"; >;
 float4x4 World : WORLD < string UIWidget = "None"; >;
@@ -152,7 +153,7 @@ void main()
 }
 
 technique aniso_blinn_phong
-< string Requires = "glsl_450"; string Scheme = "blinn_phong"; string UIName = "Anisotropic Blinn-Phong"; >
+< string Requires = "glsl_450"; string Scheme = "blinn_phong"; string UIName = "Anisotropic Blinn-Phong"; COST_aniso_blinn_phong >
 {
     pass p0
     {
@@ -162,7 +163,7 @@ technique aniso_blinn_phong
 }
 
 technique aniso_phong
-< string Requires = "glsl_450"; string Scheme = "phong"; string UIName = "Anisotropic Phong (the seed's default)"; >
+< string Requires = "glsl_450"; string Scheme = "phong"; string UIName = "Anisotropic Phong (the seed's default)"; COST_aniso_phong >
 {
     pass p0
     {
@@ -172,7 +173,7 @@ technique aniso_phong
 }
 
 technique iso_blinn_phong
-< string Requires = "glsl_450"; string Scheme = "isotropic, blinn_phong"; string UIName = "Isotropic Blinn-Phong"; >
+< string Requires = "glsl_450"; string Scheme = "isotropic, blinn_phong"; string UIName = "Isotropic Blinn-Phong"; COST_iso_blinn_phong >
 {
     pass p0
     {
@@ -182,7 +183,7 @@ technique iso_blinn_phong
 }
 
 technique iso_phong
-< string Requires = "glsl_450"; string Scheme = "isotropic, phong"; string UIName = "Isotropic Phong"; >
+< string Requires = "glsl_450"; string Scheme = "isotropic, phong"; string UIName = "Isotropic Phong"; COST_iso_phong >
 {
     pass p0
     {
@@ -192,7 +193,7 @@ technique iso_phong
 }
 
 technique runtime_switch
-< string Requires = "glsl_450"; string Scheme = "interactive"; string UIName = "Seed's I/M switches as uniforms"; >
+< string Requires = "glsl_450"; string Scheme = "interactive"; string UIName = "Seed's I/M switches as uniforms"; COST_runtime_switch >
 {
     pass p0
     {

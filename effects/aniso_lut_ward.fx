@@ -142,7 +142,7 @@ technique gaussian_per_pixel
 }
 
 technique gaussian_per_vertex
-< string Requires = "vs_2_0 ps_2_0"; string Scheme = "gaussian"; string UIName = "Gaussian exp(-e*e), per vertex (the seed)"; >
+< string Requires = "vs_2_0 ps_2_0"; string Scheme = "gaussian"; string UIName = "Gaussian exp(-e*e), per vertex (the seed)"; COST_gaussian_per_vertex >
 {
     pass p0
     {
@@ -152,7 +152,7 @@ technique gaussian_per_vertex
 }
 
 technique ln_hn_per_pixel
-< string Requires = "vs_2_0 ps_2_0"; string Scheme = "table"; float MaxDistance = 30.0; string Fallback = "ln_hn_per_vertex"; string UIName = "(H.N, L.N) table, per pixel"; >
+< string Requires = "vs_2_0 ps_2_0"; string Scheme = "table"; float MaxDistance = 30.0; string Fallback = "ln_hn_per_vertex"; string UIName = "(H.N, L.N) table, per pixel"; COST_ln_hn_per_pixel >
 {
     pass p0
     {
@@ -162,7 +162,7 @@ technique ln_hn_per_pixel
 }
 
 technique ln_hn_per_vertex
-< string Requires = "vs_2_0 ps_2_0"; string Scheme = "table"; string UIName = "(H.N, L.N) table, per-vertex coordinates (the seed)"; >
+< string Requires = "vs_2_0 ps_2_0"; string Scheme = "table"; string UIName = "(H.N, L.N) table, per-vertex coordinates (the seed)"; COST_ln_hn_per_vertex >
 {
     pass p0
     {

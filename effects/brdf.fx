@@ -5,6 +5,7 @@
 // stretched along the tangent), modulated by the object texture.
 // The factors come from the "brdf_factor" generator (parabolic maps, clamp addressing).
 #include "common.fxh"
+#include "generated/costs.fxh"  // COST_<technique>: measured cost/error, scripts/accuracy-report
 
 float4 lhtR : DIRECTION < string UIName = "Light direction (from the light)"; string Object = "DirectionalLight0"; string Space = "World"; > = {0.0, -0.707, -0.707, 0.0};
 float4 MaterialColor : DIFFUSE < string UIName = "Material color"; string UIWidget = "Color"; > = {1.0, 1.0, 1.0, 1.0};
@@ -80,7 +81,7 @@ float4 BrdfPS(BrdfPixel IN) : COLOR0
 }
 
 technique brdf_ps20
-< string Requires = "vs_2_0 ps_2_0 float_textures"; string Fallback = "tec0"; string UIName = "BRDF factorization, HLSL ps_2_0"; >
+< string Requires = "vs_2_0 ps_2_0 float_textures"; string Fallback = "tec0"; string UIName = "BRDF factorization, HLSL ps_2_0"; COST_brdf_ps20 >
 {
     pass p0
     {
@@ -95,7 +96,7 @@ technique brdf_ps20
 // `dp3 oT2.z,-c16,r0` (light z into the half-vector register) is corrected to oT1.z, and
 // c10 (the camera, never set in the listing) is bound to CameraPosition.
 technique tec0
-< string Requires = "vs_1_1 ps_1_1 cube_maps textures>=4"; string UIName = "BRDF Shader (seed, vs.1.1/ps.1.1)"; >
+< string Requires = "vs_1_1 ps_1_1 cube_maps textures>=4"; string UIName = "BRDF Shader (seed, vs.1.1/ps.1.1)"; COST_tec0 >
 {
     pass p0
     {

@@ -125,7 +125,7 @@ float4 HemisphereVertexPS(HemiVertexLit IN) : COLOR0
 }
 
 technique hemisphere_sun
-< string Requires = "vs_2_0 ps_2_0"; string Scheme = "quality"; float MaxDistance = 50.0; string Fallback = "hemisphere_ps11"; string UIName = "Three-term hemisphere (texture occlusion) + sun, per pixel"; >
+< string Requires = "vs_2_0 ps_2_0"; string Scheme = "quality"; float MaxDistance = 50.0; string Fallback = "hemisphere_ps11"; string UIName = "Three-term hemisphere (texture occlusion) + sun, per pixel"; COST_hemisphere_sun >
 {
     pass p0
     {
@@ -135,7 +135,7 @@ technique hemisphere_sun
 }
 
 technique hemisphere_vertex_occlusion_sun
-< string Requires = "vs_2_0 ps_2_0"; float MaxDistance = 50.0; string UIName = "Three-term hemisphere (vertex occlusion) + sun, per pixel"; >
+< string Requires = "vs_2_0 ps_2_0"; float MaxDistance = 50.0; string UIName = "Three-term hemisphere (vertex occlusion) + sun, per pixel"; COST_hemisphere_vertex_occlusion_sun >
 {
     pass p0
     {
@@ -145,7 +145,7 @@ technique hemisphere_vertex_occlusion_sun
 }
 
 technique hemisphere_three_term
-< string Requires = "vs_2_0 ps_2_0"; float MaxDistance = 50.0; string UIName = "Three-term hemisphere (texture occlusion), per pixel"; >
+< string Requires = "vs_2_0 ps_2_0"; float MaxDistance = 50.0; string UIName = "Three-term hemisphere (texture occlusion), per pixel"; COST_hemisphere_three_term >
 {
     pass p0
     {
@@ -175,7 +175,7 @@ technique hemisphere_seed_form
 }
 
 technique hemisphere_per_vertex
-< string Requires = "vs_2_0 ps_2_0"; float MinDistance = 50.0; string Fallback = "hemisphere_vs11"; string UIName = "Three-term hemisphere + sun, per vertex (far away)"; >
+< string Requires = "vs_2_0 ps_2_0"; float MinDistance = 50.0; string Fallback = "hemisphere_vs11"; string UIName = "Three-term hemisphere + sun, per vertex (far away)"; COST_hemisphere_per_vertex >
 {
     pass p0
     {
@@ -188,7 +188,7 @@ technique hemisphere_per_vertex
 // sky axis, biased, in oD0 (and the vertex occlusion in its alpha). c1 sky, c2 ground,
 // c5 = 0.5: dp3_d2 gives 0.5 N.A, + 0.5 is the cosine form.
 technique hemisphere_ps11
-< string Requires = "vs_1_1 ps_1_1"; string Fallback = "hemisphere_vs11"; string UIName = "Two-term hemisphere, ps.1.1 (DirectX 8)"; >
+< string Requires = "vs_1_1 ps_1_1"; string Fallback = "hemisphere_vs11"; string UIName = "Two-term hemisphere, ps.1.1 (DirectX 8)"; COST_hemisphere_ps11 >
 {
     pass p0
     {
@@ -236,7 +236,7 @@ technique hemisphere_ps11
 // The seed's vs.1.1 per-vertex hemisphere (three-term with v7.z occlusion). Works on
 // DirectX 7-class hardware with software vertex processing, as the seed notes.
 technique hemisphere_vs11
-< string Requires = "vs_1_1 fixed_function_stages"; string UIName = "Three-term hemisphere, vs.1.1 per vertex (DirectX 7)"; >
+< string Requires = "vs_1_1 fixed_function_stages"; string UIName = "Three-term hemisphere, vs.1.1 per vertex (DirectX 7)"; COST_hemisphere_vs11 >
 {
     pass p0
     {

@@ -95,7 +95,7 @@ float4 TangentSpacePS(LitPixel IN, uniform int specular_mode) : COLOR0
 }
 
 technique diffuse_ps20
-< string Requires = "vs_2_0 ps_2_0"; string Scheme = "diffuse"; string Fallback = "diffuse_ps11"; string UIName = "Diffuse, HLSL ps_2_0"; >
+< string Requires = "vs_2_0 ps_2_0"; string Scheme = "diffuse"; string Fallback = "diffuse_ps11"; string UIName = "Diffuse, HLSL ps_2_0"; COST_diffuse_ps20 >
 {
     pass p0
     {
@@ -106,7 +106,7 @@ technique diffuse_ps20
 
 // The seed's diffuse vertex and pixel shaders (light in oD0, biased by 0.5).
 technique diffuse_ps11
-< string Requires = "vs_1_1 ps_1_1"; string Scheme = "diffuse"; string Fallback = "dot3_multitexture"; string UIName = "Diffuse, ps.1.1 (DirectX 8)"; >
+< string Requires = "vs_1_1 ps_1_1"; string Scheme = "diffuse"; string Fallback = "dot3_multitexture"; string UIName = "Diffuse, ps.1.1 (DirectX 8)"; COST_diffuse_ps11 >
 {
     pass p0
     {
@@ -148,7 +148,7 @@ technique diffuse_ps11
 // DirectX 7: D3DTOP_DOTPRODUCT3 (implicit _bx2 and _sat), then modulate by the color map.
 // The light vector arrives biased in the diffuse color from the same vertex shader.
 technique dot3_multitexture
-< string Requires = "vs_1_1 fixed_function_stages dot3 textures>=2"; string Scheme = "diffuse"; string Fallback = "emboss"; string UIName = "Diffuse, DOTPRODUCT3 multitexture (DirectX 7)"; >
+< string Requires = "vs_1_1 fixed_function_stages dot3 textures>=2"; string Scheme = "diffuse"; string Fallback = "emboss"; string UIName = "Diffuse, DOTPRODUCT3 multitexture (DirectX 7)"; COST_dot3_multitexture >
 {
     pass p0
     {
@@ -190,7 +190,7 @@ technique dot3_multitexture
 // DirectX 6: emboss. The height map shifted toward the light is subtracted (AddSigned of
 // the complement) from the unshifted one; Modulate2X would brighten it as the seed says.
 technique emboss
-< string Requires = "vs_1_1 fixed_function_stages subtract textures>=2"; string Scheme = "diffuse"; string UIName = "Diffuse, emboss bump mapping (DirectX 6)"; >
+< string Requires = "vs_1_1 fixed_function_stages subtract textures>=2"; string Scheme = "diffuse"; string UIName = "Diffuse, emboss bump mapping (DirectX 6)"; COST_emboss >
 {
     pass p0
     {
@@ -230,7 +230,7 @@ technique emboss
 }
 
 technique specular_pow_ps20
-< string Requires = "vs_2_0 ps_2_0"; string Scheme = "specular"; string Fallback = "specular_table_ps11"; string UIName = "Specular, native pow, HLSL ps_2_0"; >
+< string Requires = "vs_2_0 ps_2_0"; string Scheme = "specular"; string Fallback = "specular_table_ps11"; string UIName = "Specular, native pow, HLSL ps_2_0"; COST_specular_pow_ps20 >
 {
     pass p0
     {
@@ -240,7 +240,7 @@ technique specular_pow_ps20
 }
 
 technique specular_table_ps20
-< string Requires = "vs_2_0 ps_2_0"; string Scheme = "specular"; string UIName = "Specular, LightEval table, HLSL ps_2_0"; >
+< string Requires = "vs_2_0 ps_2_0"; string Scheme = "specular"; string UIName = "Specular, LightEval table, HLSL ps_2_0"; COST_specular_table_ps20 >
 {
     pass p0
     {
@@ -262,7 +262,7 @@ technique specular_squaring_ps20
 // The seed's table-lookup shaders: texm3x2pad/texm3x2tex form (N.L, N.H) and read the
 // LightEval table at stage 2. The listing reads t3 without sampling it; `tex t3` added.
 technique specular_table_ps11
-< string Requires = "vs_1_1 ps_1_1 textures>=4"; string Scheme = "specular"; string Fallback = "specular_squaring_ps11"; string UIName = "Specular, table lookup, ps.1.1 (DirectX 8)"; >
+< string Requires = "vs_1_1 ps_1_1 textures>=4"; string Scheme = "specular"; string Fallback = "specular_squaring_ps11"; string UIName = "Specular, table lookup, ps.1.1 (DirectX 8)"; COST_specular_table_ps11 >
 {
     pass p0
     {
@@ -378,7 +378,7 @@ technique specular_squaring_ps11
 // Specular emboss (the seed describes it and skips the listing): the emboss pass, then a
 // highlight spot placed by the vertex shader minus the height map, added to the frame.
 technique specular_emboss
-< string Requires = "vs_1_1 fixed_function_stages subtract textures>=2"; string Scheme = "specular"; string UIName = "Specular emboss (DirectX 6/7)"; >
+< string Requires = "vs_1_1 fixed_function_stages subtract textures>=2"; string Scheme = "specular"; string UIName = "Specular emboss (DirectX 6/7)"; COST_specular_emboss >
 {
     pass diffuse
     {

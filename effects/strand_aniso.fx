@@ -237,6 +237,7 @@ technique strand_bump_renormalized
     float MaxDistance = 40.0;
     string Fallback = "strand_bump_unnormalized";
     string UIName = "Strands, bump mapped (Gram-Schmidt, renormalized)";
+ COST_strand_bump_renormalized
 >
 {
     pass p0
@@ -256,6 +257,7 @@ technique strand_bump_unnormalized
     float MaxDistance = 40.0;
     string Fallback = "strand_lut";
     string UIName = "Strands, bump mapped (Gram-Schmidt, not renormalized)";
+ COST_strand_bump_unnormalized
 >
 {
     pass p0
@@ -289,6 +291,7 @@ technique strand_lut
     float MaxDistance = 40.0;
     string Fallback = "strand_four_lights_ps14";
     string UIName = "Strands, table per pixel (texel-centre mapping)";
+ COST_strand_lut
 >
 {
     pass p0
@@ -324,6 +327,7 @@ technique strand_four_lights
     float MaxDistance = 40.0;
     string Fallback = "strand_four_lights_ps14";
     string UIName = "Strands, four coloured lights, table per pixel";
+ COST_strand_four_lights
 >
 {
     pass p0
@@ -357,6 +361,7 @@ technique strand_four_lights_ps14
     string Requires = "vs_1_1 ps_1_4 textures>=6";
     string Fallback = "strand_lut_ps11";
     string UIName = "Strands, four lights, ps.1.4 (DirectX 8.1)";
+ COST_strand_four_lights_ps14
 >
 {
     pass p0
@@ -472,6 +477,7 @@ technique strand_lut_ps11
 <
     string Requires = "vs_1_1 ps_1_1 textures>=4";
     string UIName = "Strands, one light, ps.1.1 (DirectX 8)";
+ COST_strand_lut_ps11
 >
 {
     pass p0

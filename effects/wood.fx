@@ -5,6 +5,7 @@
 // rings. Expect concentric rings around the x axis, wobbly from the noise.
 // The seed's listing, kept close to the original, is effects/seeds/wood_seed.fx.
 #include "common.fxh"
+#include "generated/costs.fxh"  // COST_<technique>: measured cost/error, scripts/accuracy-report
 
 float ringscale < string UIName = "Ring scale"; float UIMin = 1.0; float UIMax = 40.0; > = 10.0;
 float point_scale < string UIName = "Point scale"; float UIMin = 0.1; float UIMax = 4.0; > = 1.0;
@@ -96,7 +97,7 @@ float4 WoodPS(WoodPixel IN, uniform int ring_profile) : COLOR0
 }
 
 technique wood
-< string Requires = "vs_2_0 ps_2_0 volume_textures"; string UIName = "Wood (seed ring profile)"; >
+< string Requires = "vs_2_0 ps_2_0 volume_textures"; string UIName = "Wood (seed ring profile)"; COST_wood >
 {
     pass p0
     {
@@ -107,7 +108,7 @@ technique wood
 
 // The Companion's intent: RenderMan smoothstep edges, softer ring borders.
 technique wood_renderman_rings
-< string Requires = "vs_2_0 ps_2_0 volume_textures"; string Scheme = "renderman"; string UIName = "Wood (RenderMan ring profile)"; >
+< string Requires = "vs_2_0 ps_2_0 volume_textures"; string Scheme = "renderman"; string UIName = "Wood (RenderMan ring profile)"; COST_wood_renderman_rings >
 {
     pass p0
     {

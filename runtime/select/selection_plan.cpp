@@ -73,12 +73,14 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
     if (!(h >= 0.f)) h = 0.f;
     widen(e.dist_min, e.dist_max, h, e.dist_min_h, e.dist_max_h);
     widen(e.size_min, e.size_max, h, e.size_min_h, e.size_max_h);
-    // A technique without a measured error ranks as exact (the author's reference) but never
-    // passes an error budget: the budget is a promise the annotation has to back.
+    // A technique without a measured error never passes an error budget (the budget is a
+    // promise the annotation has to back) and ranks after every measured one: its error is
+    // unknown, not zero. ErrorNotMeasured (costs.fxh) says why.
     e.error_known = a.find("MaxError") || a.find("MaxErrorAbs");
     e.error = number({"MaxError"}, 0.f);
     if (!a.find("MaxError")) e.error = number({"MaxErrorAbs"}, 0.f) * 255.f;  // absolute -> LSB
-    e.cost_known = a.find("CostMs") || a.find("CostNsPerPixel");
+    e.cost_known = a.find("CostMs") || a.find("CostNsPerPixel") || a.find("CostNsPerVertex");
+    e.cost_ns_per_vertex = number({"CostNsPerVertex"}, 0.f);
     e.cost_ms = number({"CostMs"}, 0.f);
     e.cost_ns_per_pixel = number({"CostNsPerPixel"}, 0.f);
     e.priority = 0;
@@ -115,6 +117,12 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
     plan.names_.push_back(c.name);
     plan.schemes_.push_back(std::move(schemes));
     plan.invalid_reasons_.push_back(std::move(invalid));
+    std::string unmeasured;
+    if (const AnnotationValue* r = a.find("ErrorNotMeasured")) {
+      if (const auto* text = std::get_if<std::string>(r)) unmeasured = *text;
+      else bad_type("ErrorNotMeasured", "a string");
+    }
+    plan.unmeasured_reasons_.push_back(std::move(unmeasured));
     for (char ch : c.name + '\n') key = (key ^ uint8_t(ch)) * 1099511628211ull;
   }
   plan.key_ = key ? key : 1;
@@ -166,10 +174,20 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
     for (uint32_t w : walk) colour[w] = 2;
   }
 
+  // Errors compare only within a substitute group (the same reference model); the groups
+  // keep the order in which the effect declares them.
+  std::vector<std::string> groups(n);
+  for (size_t i = 0; i < n; ++i) {
+    if (const AnnotationValue* g = candidates[i].annotations.find("Substitutes"))
+      if (const auto* text = std::get_if<std::string>(g)) groups[i] = *text;
+    plan.entries_[i].group = uint32_t(std::find(groups.begin(), groups.begin() + i + 1, groups[i]) - groups.begin());
+  }
   plan.order_.resize(n);
   for (size_t i = 0; i < n; ++i) plan.order_[i] = uint32_t(i);
   std::stable_sort(plan.order_.begin(), plan.order_.end(), [&](uint32_t x, uint32_t y) {
     const Entry &a = plan.entries_[x], &b = plan.entries_[y];
+    if (a.error_known != b.error_known) return a.error_known;
+    if (a.error_known && a.group != b.group) return a.group < b.group;
     if (a.error != b.error) return a.error < b.error;
     return a.priority > b.priority;
   });
@@ -181,6 +199,7 @@ SelectionQuery SelectionPlan::query(const SelectionCriteria& c) const {
   q.distance = c.distance;
   q.screen_size = c.screen_size;
   q.pixels = c.pixels;
+  q.vertices = c.vertices;
   q.cost_budget_ms = c.cost_budget_ms;
   q.max_error = c.max_error;
   q.scheme = c.scheme;
@@ -209,7 +228,16 @@ uint8_t SelectionPlan::failures(const Entry& e, const SelectionQuery& q, bool wi
 }
 
 float SelectionPlan::cost_ms(const Entry& e, const SelectionQuery& q) {
-  return e.cost_ms + e.cost_ns_per_pixel * q.pixels * 1e-6f;
+  return e.cost_ms + e.cost_ns_per_pixel * q.pixels * 1e-6f + e.cost_ns_per_vertex * q.vertices * 1e-6f;
+}
+
+bool SelectionPlan::cheaper(const Entry& a, const Entry& b, const SelectionQuery& q) {
+  if (a.cost_known != b.cost_known) return a.cost_known;
+  if (!a.cost_known) return false;
+  const float ca = cost_ms(a, q), cb = cost_ms(b, q);
+  if (ca != cb) return ca < cb;
+  if (a.cost_ns_per_pixel != b.cost_ns_per_pixel) return a.cost_ns_per_pixel < b.cost_ns_per_pixel;
+  return a.cost_ns_per_vertex < b.cost_ns_per_vertex;
 }
 
 bool SelectionPlan::has_error_limit(const SelectionQuery& q) { return q.max_error < kInf; }
@@ -219,12 +247,10 @@ uint32_t SelectionPlan::first_survivor(const SelectionQuery& q, uint32_t last) c
   // decided, so the cheapest survivor wins (ties, and unmeasured costs, keep rank order).
   const bool cheapest = has_error_limit(q);
   uint32_t best = kNoIndex;
-  float best_cost = kInf;
   for (uint32_t i : order_) {
     if (failures(entries_[i], q, i == last) != 0) continue;
     if (!cheapest) return i;
-    float c = entries_[i].cost_known ? cost_ms(entries_[i], q) : kInf;  // unmeasured: last
-    if (best == kNoIndex || c < best_cost) best = i, best_cost = c;
+    if (best == kNoIndex || cheaper(entries_[i], entries_[best], q)) best = i;
   }
   return best;
 }
@@ -242,7 +268,9 @@ uint32_t SelectionPlan::choose(const SelectionQuery& q, uint32_t last, Selection
     if (failures(entries_[i], q, i == last) & kIntent) continue;
     uint32_t t = entries_[i].fallback;
     for (size_t steps = 0; t != kNoIndex && steps < entries_.size(); ++steps) {
-      if (entries_[t].valid) {
+      // Under an error limit the chain skips techniques beyond it or not measured: a limit
+      // is a promise about the picture, which a fallback does not get to break.
+      if (entries_[t].valid && !(failures(entries_[t], q, false) & fail_error)) {
         *route = SelectionRoute::fallback_chain;
         *chain_start = i;
         return t;

@@ -66,6 +66,8 @@ std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool 
            number(q.screen_size) + suffix;
   }
   if (f & fail_error) {
+    if (!e.error_known && !unmeasured_reasons_[index].empty())
+      return "error not measured (" + unmeasured_reasons_[index] + ") under limit " + number(q.max_error) + " LSB";
     if (!e.error_known)
       return "error not measured (no MaxError annotation) under limit " + number(q.max_error) + " LSB";
     return "error " + number(e.error) + " LSB over limit " + number(q.max_error) + " LSB";
@@ -80,6 +82,16 @@ std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool 
     why = "cheaper within the error limit: " + millis(cost_ms(c, q)) + " ms vs cost not measured";
   else if (has_error_limit(q) && cost_ms(c, q) != cost_ms(e, q))
     why = "cheaper within the error limit: " + millis(cost_ms(c, q)) + " vs " + millis(cost_ms(e, q)) + " ms";
+  else if (has_error_limit(q) && c.cost_ns_per_pixel != e.cost_ns_per_pixel)
+    why = "cheaper within the error limit: " + number(c.cost_ns_per_pixel) + " vs " + number(e.cost_ns_per_pixel) +
+          " ns per pixel";
+  else if (has_error_limit(q) && c.cost_ns_per_vertex != e.cost_ns_per_vertex)
+    why = "cheaper within the error limit: " + number(c.cost_ns_per_vertex) + " vs " +
+          number(e.cost_ns_per_vertex) + " ns per vertex";
+  else if (c.error_known != e.error_known)
+    why = "error measured (" + number(c.error) + " LSB) vs not measured";
+  else if (c.group != e.group)
+    why = "its substitute group is declared first";
   else if (c.error != e.error)
     why = "lower error " + number(c.error) + " vs " + number(e.error) + " LSB";
   else if (c.priority != e.priority)

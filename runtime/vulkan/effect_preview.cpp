@@ -121,33 +121,78 @@ bool EffectPreview::draw_frame(EffectBinding& binding, uint32_t technique, uint3
                                DiagnosticSink& sink) {
   frames_->begin_frame();
   bool recorded = true;
-  const VkViewport viewport{0.0f, float(desc_.height), float(desc_.width), -float(desc_.height), 0.0f, 1.0f};
   const bool submitted = submit_and_wait(*ctx_, [&](VkCommandBuffer cmd) {
-    ClearValues clear;
-    clear.color = desc_.clear;
-    target_->begin(cmd, clear);
-    if (binding.begin(cmd, technique, formats(), viewport, target_->scissor(), sink)) {
-      const VkBuffer buffers[2] = {vertices_.handle(), constants_.handle()};
-      const VkDeviceSize offsets[2] = {0, 0};
-      vkCmdBindVertexBuffers(cmd, 0, 2, buffers, offsets);
-      vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
-      for (uint32_t p = 0; p < binding.pass_count(technique); ++p) {
-        if (!binding.apply(p, vertex_layout, sink)) {
-          recorded = false;
-          break;
-        }
-        vkCmdDrawIndexed(cmd, index_count_, 1, 0, 0, 0);
-      }
-      binding.end();
-    } else {
-      recorded = false;
-    }
-    target_->end(cmd);
+    recorded = record_passes(cmd, binding, technique, vertex_layout, 1, target_->scissor(), sink);
     target_->record_readback(cmd);
   }, sink);
   if (!submitted || !recorded) return false;
   ++frames_rendered_;
   return true;
+}
+
+bool EffectPreview::record_passes(VkCommandBuffer cmd, EffectBinding& binding, uint32_t technique,
+                                  uint32_t vertex_layout, uint32_t draws, const VkRect2D& scissor,
+                                  DiagnosticSink& sink) {
+  const VkViewport viewport{0.0f, float(desc_.height), float(desc_.width), -float(desc_.height), 0.0f, 1.0f};
+  ClearValues clear;
+  clear.color = desc_.clear;
+  target_->begin(cmd, clear);
+  bool recorded = binding.begin(cmd, technique, formats(), viewport, scissor, sink);
+  if (recorded) {
+    const VkBuffer buffers[2] = {vertices_.handle(), constants_.handle()};
+    const VkDeviceSize offsets[2] = {0, 0};
+    vkCmdBindVertexBuffers(cmd, 0, 2, buffers, offsets);
+    vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+    for (uint32_t d = 0; d < draws && recorded; ++d) {
+      for (uint32_t p = 0; p < binding.pass_count(technique) && recorded; ++p) {
+        recorded = binding.apply(p, vertex_layout, sink);
+        if (recorded) vkCmdDrawIndexed(cmd, index_count_, 1, 0, 0, 0);
+      }
+    }
+    binding.end();
+  }
+  target_->end(cmd);
+  return recorded;
+}
+
+std::optional<double> EffectPreview::time_passes(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
+                                                uint32_t draws, const VkRect2D& scissor, DiagnosticSink& sink) {
+  uint32_t families = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(ctx_->physical_device(), &families, nullptr);
+  std::vector<VkQueueFamilyProperties> props(families);
+  vkGetPhysicalDeviceQueueFamilyProperties(ctx_->physical_device(), &families, props.data());
+  const uint32_t valid_bits = props[ctx_->queue_family()].timestampValidBits;
+  const double period_ns = ctx_->info().limits.timestampPeriod;
+  if (valid_bits == 0 || period_ns <= 0) {
+    sink.error("vk-no-timestamps", {}, "the device's graphics queue has no timestamps (" + ctx_->info().name + ")");
+    return std::nullopt;
+  }
+  VkQueryPoolCreateInfo qp{};
+  qp.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
+  qp.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  qp.queryCount = 2;
+  VkQueryPool queries = VK_NULL_HANDLE;
+  if (vkCreateQueryPool(ctx_->device(), &qp, nullptr, &queries) != VK_SUCCESS) {
+    sink.error("vk-call-failed", {}, "vkCreateQueryPool failed");
+    return std::nullopt;
+  }
+  frames_->begin_frame();
+  bool recorded = true;
+  const bool submitted = submit_and_wait(*ctx_, [&](VkCommandBuffer cmd) {
+    vkCmdResetQueryPool(cmd, queries, 0, 2);
+    // Outside the rendering scope: a binning device rasterizes when the scope ends.
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, 0);
+    recorded = record_passes(cmd, binding, technique, vertex_layout, draws, scissor, sink);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 1);
+  }, sink);
+  uint64_t ts[2] = {};
+  const bool read = submitted && recorded &&
+                    vkGetQueryPoolResults(ctx_->device(), queries, 0, 2, sizeof ts, ts, sizeof(uint64_t),
+                                          VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS;
+  vkDestroyQueryPool(ctx_->device(), queries, nullptr);
+  if (!read) return std::nullopt;
+  const uint64_t mask = valid_bits >= 64 ? ~0ull : ((1ull << valid_bits) - 1);
+  return double((ts[1] - ts[0]) & mask) * period_ns;
 }
 
 std::vector<InterfaceVariable> technique_vertex_inputs(const EffectModel& model, EffectPrograms& programs,

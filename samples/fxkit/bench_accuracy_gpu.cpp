@@ -85,9 +85,13 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
   auto commands = fx::vk::OneShotCommands::create(*ctx, sink);
   if (!target || !commands) return std::nullopt;
 
-  // Shared layout: binding 0 sampled image, 1 sampler (clamp or wrap), fragment stage.
-  VkDescriptorSetLayoutBinding b[2] = {{0, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-                                       {1, VK_DESCRIPTOR_TYPE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
+  // Shared layout: binding 0 sampled image, the sampler (clamp or wrap), fragment stage. The
+  // compiler gives each D3D register class its own binding base (samplers from 128), so the
+  // kernels' [[vk::binding(1)]] SamplerState lands on 129.
+  constexpr uint32_t kSamplerBinding = 128 + 1;
+  VkDescriptorSetLayoutBinding b[2] = {
+      {0, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {kSamplerBinding, VK_DESCRIPTOR_TYPE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
   VkDescriptorSetLayoutCreateInfo dl{};
   dl.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
   dl.bindingCount = 2;
@@ -159,7 +163,7 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
     VkWriteDescriptorSet w[2] = {};
     w[0].sType = w[1].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
     w[0].dstSet = w[1].dstSet = o->set;
-    w[0].dstBinding = 0, w[1].dstBinding = 1;
+    w[0].dstBinding = 0, w[1].dstBinding = kSamplerBinding;
     w[0].descriptorCount = w[1].descriptorCount = 1;
     w[0].descriptorType = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, w[0].pImageInfo = &image;
     w[1].descriptorType = VK_DESCRIPTOR_TYPE_SAMPLER, w[1].pImageInfo = &sampler;

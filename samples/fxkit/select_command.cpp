@@ -1,4 +1,4 @@
-// `fxkit select FILE --caps X [--distance D] [--screen-size S] [--pixels P] [--scheme S]
+// `fxkit select FILE --caps X [--distance D] [--screen-size S] [--pixels P] [--vertices V] [--scheme S]
 //  [--budget-ms B] [--max-error E] [--fallback T] [--no-compile] [--json]`: the technique the
 // effect would run for one object on one device, and why every other one was not chosen.
 #include <cmath>
@@ -23,6 +23,7 @@ struct SelectArgs {
   float distance = 0.f;
   float screen_size = -1.f;
   float pixels = 0.f;
+  float vertices = 0.f;
   std::string scheme;
   float budget_ms = std::numeric_limits<float>::infinity();
   float max_error = std::numeric_limits<float>::infinity();
@@ -59,6 +60,7 @@ int run_select(const SelectArgs& args) {
   if (parsed.ok) sel = fx::build_effect_selection(parsed.ast, sm, *caps, diags, sel_options);
 
   fx::SelectionCriteria criteria{.distance = args.distance, .screen_size = args.screen_size, .pixels = args.pixels,
+                                 .vertices = args.vertices,
                                  .scheme = args.scheme, .cost_budget_ms = args.budget_ms,
                                  .max_error = args.max_error};
   fx::SelectionResult result = sel.plan.explain(sel.plan.query(criteria));
@@ -80,6 +82,7 @@ int run_select(const SelectArgs& args) {
         {"file", args.file},
         {"caps", caps->name},
         {"criteria", {{"distance", args.distance}, {"screen_size", args.screen_size}, {"pixels", args.pixels},
+                      {"vertices", args.vertices},
                       {"scheme", args.scheme}, {"budget_ms", number_or_null(args.budget_ms)},
                       {"max_error", number_or_null(args.max_error)}}},
         {"chosen", result.ok() ? nlohmann::json(std::string(sel.plan.name(result.chosen))) : nlohmann::json(nullptr)},
@@ -117,6 +120,7 @@ void register_select(CLI::App& app, Runner& run) {
   cmd->add_option("--distance", args->distance, "Camera distance of the object");
   cmd->add_option("--screen-size", args->screen_size, "Projected size in pixels (negative: unknown)");
   cmd->add_option("--pixels", args->pixels, "Covered pixels (for CostNsPerPixel)");
+  cmd->add_option("--vertices", args->vertices, "Vertices drawn (for CostNsPerVertex)");
   cmd->add_option("--scheme", args->scheme, "Scheme asked for (quality, performance, ...)");
   cmd->add_option("--budget-ms", args->budget_ms, "Cost budget per object in milliseconds");
   cmd->add_option("--max-error", args->max_error, "Largest acceptable error in 8-bit levels");

@@ -2,6 +2,10 @@
 // codes, its text and its JSON.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -103,6 +107,68 @@ TEST(SelectCli, CheckCapsFailsWhenNothingRunsAndOnBadCaps) {
                     std::string(FXKIT_SOURCE_DIR) + "/runtime/select/profiles/dx8.json");
   EXPECT_EQ(saved.status, 0);
   EXPECT_EQ(saved.out.rfind("hemisphere.fx on dx8: hemisphere_ps11", 0), 0u) << saved.out;
+}
+
+// The acceptance test of the technique table (docs/accuracy.json, `techniques`, written with
+// effects/generated/costs.fxh by scripts/accuracy-report): for every effect and error limit,
+// `fxkit select --caps device --max-error E` picks the cheapest technique whose measured
+// error is within E (ns per pixel, then ns per vertex, as costs.fxh rounds them), among the
+// techniques the device runs and the default distance admits; a technique without a
+// measured error is never picked (not even down a fallback chain) and says "error not measured".
+TEST(SelectCli, ErrorLimitPicksTheCheapestTechniqueOfTheMeasuredTable) {
+  std::ifstream in(std::string(FXKIT_SOURCE_DIR) + "/docs/accuracy.json");
+  nlohmann::json table = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_FALSE(table.is_discarded());
+  ASSERT_TRUE(table["techniques"].is_array());
+  struct Row { double error, ns_pixel, ns_vertex; bool measured; };
+  std::map<std::string, std::map<std::string, Row>> effects;
+  auto rounded = [](double v, double scale) { return std::round(std::max(0.0, v) * scale) / scale; };
+  for (const auto& t : table["techniques"]) {
+    const bool measured = t["measured"].get<bool>() && t.contains("ns_per_pixel");
+    Row r{0, 0, 0, measured};
+    if (measured)
+      r = {rounded(t["max_error_lsb"].get<double>(), 100), rounded(t["ns_per_pixel"].get<double>(), 1000),
+           rounded(t["ns_per_vertex"].get<double>(), 1000), true};
+    effects[t["effect"].get<std::string>()][t["technique"].get<std::string>()] = r;
+  }
+  ASSERT_GE(effects.size(), 7u);
+  int picked = 0;
+  for (const auto& [effect, rows] : effects) {
+    for (double limit : {0.5, 2.0, 8.0, 32.0}) {
+      SCOPED_TRACE(effect + " --max-error " + std::to_string(limit));
+      char arg[32];
+      std::snprintf(arg, sizeof arg, "%g", limit);
+      CliRun r = fxkit("select " + kEffects + effect + " --caps device --max-error " + arg + " --json");
+      nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
+      ASSERT_FALSE(j.is_discarded()) << r.out << r.err;
+      ASSERT_EQ(j["techniques"].size(), rows.size()) << "the table lists every technique";
+      std::string expected;
+      const Row* best = nullptr;
+      for (const auto& t : j["techniques"]) {
+        const std::string name = t["name"].get<std::string>();
+        ASSERT_TRUE(rows.count(name)) << name;
+        const Row& row = rows.at(name);
+        const std::string reason = t["reason"].get<std::string>();
+        if (!row.measured && t["valid"].get<bool>() && reason.rfind("outside ", 0) != 0) {
+          EXPECT_NE(reason.find("error not measured"), std::string::npos) << name << ": " << reason;
+        }
+        EXPECT_FALSE(!row.measured && t["chosen"].get<bool>()) << "picked " << name << ", whose error is unknown";
+        const bool eligible = t["valid"].get<bool>() && reason.rfind("outside ", 0) != 0;
+        if (!row.measured || !eligible || row.error > limit) continue;
+        if (!best || row.ns_pixel < best->ns_pixel ||
+            (row.ns_pixel == best->ns_pixel && row.ns_vertex < best->ns_vertex))
+          best = &row, expected = name;
+      }
+      if (!best) continue;
+      ++picked;
+      EXPECT_EQ(j["route"], "direct");
+      ASSERT_TRUE(j["chosen"].is_string());
+      const Row& chosen = rows.at(j["chosen"].get<std::string>());
+      EXPECT_TRUE(chosen.measured && chosen.ns_pixel == best->ns_pixel && chosen.ns_vertex == best->ns_vertex)
+          << "chose " << j["chosen"] << ", the cheapest within the limit is " << expected;
+    }
+  }
+  EXPECT_GE(picked, 6);  // at least two effects with measured techniques, several limits
 }
 
 }  // namespace

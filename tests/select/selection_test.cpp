@@ -31,7 +31,7 @@ fx::SelectionPlan build(const std::vector<fx::TechniqueCandidate>& list,
 
 // near [0, 20) exact, far [20, inf) 2 LSB off: the classic two-band LOD pair.
 std::vector<fx::TechniqueCandidate> lod_pair() {
-  return {tech("near", {{"MinDistance", 0.f}, {"MaxDistance", 20.f}}),
+  return {tech("near", {{"MinDistance", 0.f}, {"MaxDistance", 20.f}, {"MaxError", 0.f}}),
           tech("far", {{"LodMin", 20.f}, {"MaxError", 2.f}})};
 }
 
@@ -119,8 +119,8 @@ TEST(Selection, ScreenSizeBands) {
 }
 
 TEST(Selection, SchemesFilterAndUnknownSchemesMatchOnlyUntagged) {
-  fx::SelectionPlan plan = build({tech("fancy", {{"Scheme", std::string("quality")}}),
-                                  tech("fast", {{"Scheme", std::string("performance, low_power")}}),
+  fx::SelectionPlan plan = build({tech("fancy", {{"Scheme", std::string("quality")}, {"MaxError", 0.f}}),
+                                  tech("fast", {{"Scheme", std::string("performance, low_power")}, {"MaxError", 0.f}}),
                                   tech("plain", {{"MaxError", 3.f}})});
   EXPECT_EQ(plan.select(plan.query({.scheme = "quality"})), 0u);
   EXPECT_EQ(plan.select(plan.query({.scheme = "low_power"})), 1u);
@@ -136,7 +136,7 @@ TEST(Selection, SchemesFilterAndUnknownSchemesMatchOnlyUntagged) {
 
 TEST(Selection, CostAndErrorBudgets) {
   fx::SelectionPlan plan = build({
-      tech("reference", {{"CostMs", 1.8f}}),
+      tech("reference", {{"CostMs", 1.8f}, {"MaxError", 0.f}}),
       tech("lut", {{"CostNsPerPixel", 2.f}, {"MaxError", 1.f}}),
       tech("approx", {{"CostMs", 0.1f}, {"MaxErrorAbs", 4.f / 255.f}}),
   });
@@ -165,7 +165,8 @@ TEST(Selection, ErrorLimitPicksTheCheapestMeasuredTechnique) {
       tech("coarse", {{"CostNsPerPixel", 2.f}, {"MaxError", 20.f}}),
   });
   const float inf = std::numeric_limits<float>::infinity();
-  EXPECT_EQ(plan.select(plan.query({.pixels = 1e6f, .max_error = inf})), 0u);  // no limit: rank order
+  // No limit: rank order, where the unmeasured 'reference' ranks after every measured error.
+  EXPECT_EQ(plan.select(plan.query({.pixels = 1e6f, .max_error = inf})), 1u);
   fx::SelectionQuery q = plan.query({.pixels = 1e6f, .max_error = 4.f});
   EXPECT_EQ(plan.select(q), 2u);
   fx::SelectionResult r = plan.explain(q);
@@ -186,6 +187,69 @@ TEST(Selection, ErrorLimitPicksTheCheapestMeasuredTechnique) {
   fx::SelectionQuery tq = tie.query({.max_error = 5.f});
   EXPECT_EQ(tie.select(tq), 1u);
   EXPECT_EQ(tie.explain(tq).reasons[0], "ranks below 'b' (lower error 1 vs 2 LSB)");
+}
+
+// An unknown error is unknown, not zero: the technique ranks after the measured ones (so
+// annotating one technique and not its sibling cannot make the sibling look exact), fails
+// every error limit, and the reason names what costs.fxh says about it.
+TEST(Selection, UnmeasuredErrorIsUnknownNotExact) {
+  fx::SelectionPlan plan = build({
+      tech("asm", {{"ErrorNotMeasured", std::string("not drawable on Vulkan: ps.1.1 assembly")}}),
+      tech("seed", {{"CostNsPerPixel", 3.f}, {"MaxError", 28.f}}),
+      tech("exact", {{"CostNsPerPixel", 5.f}, {"MaxError", 0.5f}}),
+  });
+  EXPECT_EQ(std::vector<uint32_t>(plan.rank_order().begin(), plan.rank_order().end()),
+            (std::vector<uint32_t>{2, 1, 0}));
+  EXPECT_EQ(plan.select(plan.query({})), 2u);
+  fx::SelectionQuery q = plan.query({.max_error = 32.f});
+  fx::SelectionResult r = plan.explain(q);
+  EXPECT_EQ(r.chosen, 1u);  // no pixel count: the lower ns per pixel decides
+  EXPECT_EQ(r.reasons[0], "error not measured (not drawable on Vulkan: ps.1.1 assembly) under limit 32 LSB");
+  EXPECT_EQ(r.reasons[2], "ranks below 'seed' (cheaper within the error limit: 3 vs 5 ns per pixel)");
+  EXPECT_EQ(plan.select(plan.query({.max_error = 2.f})), 2u);
+  // Nothing within the limit and no fallback chain: no technique, not the unmeasured one.
+  EXPECT_EQ(plan.select(plan.query({.max_error = 0.1f})), fx::kNoIndex);
+}
+
+// Errors measured against different models do not compare: a substitute group ranks as a
+// whole where its first technique is declared, and by error only within itself.
+TEST(Selection, ErrorsRankWithinTheirSubstituteGroup) {
+  const std::string bump = "bump mapped";
+  fx::SelectionPlan plan = build({
+      tech("bump_renormalized", {{"MaxError", 21.f}, {"Substitutes", bump}, {"CostNsPerPixel", 7.f}}),
+      tech("bump_unnormalized", {{"MaxError", 43.f}, {"Substitutes", bump}, {"CostNsPerPixel", 5.f}}),
+      tech("analytic", {{"MaxError", 6.f}, {"CostNsPerPixel", 3.f}}),
+      tech("lut", {{"MaxError", 16.f}, {"CostNsPerPixel", 2.f}}),
+  });
+  EXPECT_EQ(std::vector<uint32_t>(plan.rank_order().begin(), plan.rank_order().end()),
+            (std::vector<uint32_t>{0, 1, 2, 3}));
+  fx::SelectionResult r = plan.explain(plan.query({}));
+  EXPECT_EQ(r.chosen, 0u);
+  EXPECT_EQ(r.reasons[2], "ranks below 'bump_renormalized' (its substitute group is declared first)");
+  EXPECT_EQ(r.reasons[1], "ranks below 'bump_renormalized' (lower error 21 vs 43 LSB)");
+  // Without the bump techniques (a variant without them), the analytic one leads.
+  fx::SelectionPlan plain = build({tech("lut", {{"MaxError", 16.f}}), tech("analytic", {{"MaxError", 6.f}})});
+  EXPECT_EQ(plain.select(plain.query({})), 1u);
+  // An error limit still picks the cheapest technique within it, whatever its group.
+  EXPECT_EQ(plan.select(plan.query({.max_error = 20.f})), 3u);
+}
+
+// Per-vertex work is priced per vertex: with a vertex count the per-vertex technique's cost
+// grows with the mesh, without one it ties on ns per pixel and then compares ns per vertex.
+TEST(Selection, CostNsPerVertexCountsWithTheVertices) {
+  fx::SelectionPlan plan = build({
+      tech("per_pixel", {{"CostNsPerPixel", 4.f}, {"CostNsPerVertex", 1.f}, {"MaxError", 1.f}}),
+      tech("per_vertex", {{"CostNsPerPixel", 1.f}, {"CostNsPerVertex", 20.f}, {"MaxError", 1.f}}),
+  });
+  EXPECT_EQ(plan.select(plan.query({.pixels = 1e4f, .vertices = 100.f, .max_error = 2.f})), 1u);
+  EXPECT_EQ(plan.select(plan.query({.pixels = 1e4f, .vertices = 1e4f, .max_error = 2.f})), 0u);
+  fx::SelectionPlan tie = build({
+      tech("a", {{"CostNsPerPixel", 2.f}, {"CostNsPerVertex", 9.f}, {"MaxError", 1.f}}),
+      tech("b", {{"CostNsPerPixel", 2.f}, {"CostNsPerVertex", 3.f}, {"MaxError", 1.f}}),
+  });
+  fx::SelectionQuery q = tie.query({.max_error = 2.f});
+  EXPECT_EQ(tie.select(q), 1u);
+  EXPECT_EQ(tie.explain(q).reasons[0], "ranks below 'b' (cheaper within the error limit: 3 vs 9 ns per vertex)");
 }
 
 TEST(Selection, TiesGoToPriorityThenDeclarationOrder) {

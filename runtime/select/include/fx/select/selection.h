@@ -21,6 +21,7 @@ struct SelectionCriteria {
   float distance = 0.f;       // camera distance, world units
   float screen_size = -1.f;   // projected size in pixels; negative = unknown (bands ignored)
   float pixels = 0.f;         // covered pixels, turns CostNsPerPixel into milliseconds
+  float vertices = 0.f;       // vertices drawn, turns CostNsPerVertex into milliseconds
   std::string_view scheme = {};  // "" accepts every scheme
   float cost_budget_ms = std::numeric_limits<float>::infinity();  // per object
   float max_error = std::numeric_limits<float>::infinity();       // 8-bit levels (LSB)
@@ -32,6 +33,7 @@ struct SelectionQuery {
   float distance = 0.f;
   float screen_size = -1.f;
   float pixels = 0.f;
+  float vertices = 0.f;
   float cost_budget_ms = std::numeric_limits<float>::infinity();
   float max_error = std::numeric_limits<float>::infinity();
   uint64_t scheme_bit = 0;      // 0 = any scheme
@@ -85,7 +87,11 @@ class SelectionPlan {
   size_t size() const { return entries_.size(); }
   std::string_view name(uint32_t index) const;
   std::optional<uint32_t> index_of(std::string_view name) const;
-  // Candidate indices from best to worst rank (error, then priority, then declaration).
+  // Candidate indices from best to worst rank: techniques with a measured error first; among
+  // them substitute groups (the Substitutes annotation: errors measured against the same
+  // model) in the order their first technique is declared, lowest error first within a
+  // group; then the techniques whose error is not measured; ties by priority, then
+  // declaration.
   std::span<const uint32_t> rank_order() const { return order_; }
   uint64_t key() const { return key_; }
 
@@ -94,10 +100,11 @@ class SelectionPlan {
   struct Entry {
     float dist_min, dist_max, size_min, size_max;          // [min, max)
     float dist_min_h, dist_max_h, size_min_h, size_max_h;  // widened by hysteresis
-    float error, cost_ms, cost_ns_per_pixel;
+    float error, cost_ms, cost_ns_per_pixel, cost_ns_per_vertex;
     uint64_t scheme_mask;  // 0 = any scheme
     uint32_t fallback;     // index or kNoIndex
     int32_t priority;
+    uint32_t group;  // declaration index of the first technique with the same Substitutes
     bool valid;
     bool error_known;  // MaxError or MaxErrorAbs given
     bool cost_known;   // CostMs or CostNsPerPixel given
@@ -108,6 +115,9 @@ class SelectionPlan {
   };
   uint8_t failures(const Entry& e, const SelectionQuery& q, bool widened) const;
   static float cost_ms(const Entry& e, const SelectionQuery& q);
+  // Cheaper within an error limit: lower cost_ms, then (no pixel or vertex count given,
+  // so cost_ms ties) lower ns per pixel, then lower ns per vertex. Unmeasured cost: last.
+  static bool cheaper(const Entry& a, const Entry& b, const SelectionQuery& q);
   // A finite error limit: unmeasured techniques fail it and the cheapest survivor wins.
   static bool has_error_limit(const SelectionQuery& q);
   // The technique the filters and ranking choose directly, or kNoIndex.
@@ -121,6 +131,7 @@ class SelectionPlan {
   std::vector<std::string> names_;
   std::vector<std::vector<std::string>> schemes_;  // per candidate, for reason texts
   std::vector<std::string> invalid_reasons_;       // per candidate, joined
+  std::vector<std::string> unmeasured_reasons_;    // per candidate: its ErrorNotMeasured text
   std::vector<std::string> scheme_names_;          // bit i <-> scheme_names_[i]
   uint32_t effect_fallback_ = kNoIndex;
   uint64_t key_ = 0;

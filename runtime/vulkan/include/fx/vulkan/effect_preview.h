@@ -56,6 +56,12 @@ class EffectPreview {
   // The same frame read back as floats, from a float color_format.
   std::optional<fx::ImageF> render_floats(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
                                           DiagnosticSink& sink);
+  // GPU time in ns of `draws` repetitions of every pass of `technique` (a mesh draw per
+  // pass), between two vkCmdWriteTimestamp around the rendering scope, drawn with `scissor`
+  // (a 1x1 scissor off the mesh leaves the vertex work alone). No readback. nullopt with
+  // "vk-no-timestamps" when the queue has none, or on a failed submission.
+  std::optional<double> time_passes(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
+                                    uint32_t draws, const VkRect2D& scissor, DiagnosticSink& sink);
   // Frames rendered by render().
   uint64_t frames_rendered() const { return frames_rendered_; }
 
@@ -63,6 +69,10 @@ class EffectPreview {
   explicit EffectPreview(const Context& ctx) : ctx_(&ctx), textures_(ctx) {}
   // Records and submits one frame of `technique` and its readback; false on failure.
   bool draw_frame(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout, DiagnosticSink& sink);
+  // Records the clear, `draws` repetitions of every pass of `technique` (a mesh draw per
+  // pass) within `scissor`, and the end of the target's rendering; false on a failed apply.
+  bool record_passes(VkCommandBuffer cmd, EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
+                     uint32_t draws, const VkRect2D& scissor, DiagnosticSink& sink);
   const Context* ctx_;
   EffectPreviewDesc desc_;
   MeshBounds bounds_;
