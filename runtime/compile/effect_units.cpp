@@ -173,8 +173,10 @@ void EffectUnitBuilder::build() {
   if (u_.name_.empty()) u_.name_ = "<effect>";
   index_declarations();
   emit_hlsl();
-  for (uint32_t i = 0; i < u_.decls_.size(); ++i)
+  for (uint32_t i = 0; i < u_.decls_.size(); ++i) {
     for (const std::string& name : u_.decls_[i].names) u_.decls_by_name_[name].push_back(i);
+    if (u_.decls_[i].always) u_.always_.push_back(i);
+  }
   collect_glsl();
   collect_passes();
   mark_uncalled_functions();
@@ -182,14 +184,13 @@ void EffectUnitBuilder::build() {
 }
 
 void EffectUnitBuilder::mark_dynamic_linkage() {
-  std::unordered_map<std::string, std::vector<bool>> reach;  // by entry: passes share shaders
+  std::unordered_map<std::string, std::vector<uint32_t>> reach;  // by entry: passes share shaders
   auto check = [&](StageUnit& stage) {
     if (stage.kind != StageSourceKind::hlsl) return;
     auto [it, fresh] = reach.try_emplace(stage.function);
     if (fresh) it->second = u_.reached_from({stage.function});
-    const std::vector<bool>& r = it->second;
-    for (size_t i = 0; i < r.size(); ++i)
-      if (r[i] && !u_.decls_[i].dynamic_linkage.empty()) {
+    for (uint32_t i : it->second)
+      if (!u_.decls_[i].dynamic_linkage.empty()) {
         invalid(stage, "fx_5_0 dynamic linkage: '" + u_.decls_[i].names.front() + "' uses " +
                            u_.decls_[i].dynamic_linkage + ", and fxkit does not compile interfaces to SPIR-V");
         return;
@@ -217,7 +218,8 @@ void EffectUnitBuilder::mark_uncalled_functions() {
       for (const StageUnit& choice : stage.choices) add(choice);
     }
   if (!first) return;  // nothing compiles: no unit to check the functions in
-  const std::vector<bool> reached = u_.reached_from(entries);
+  std::vector<bool> reached(u_.decls_.size(), false);
+  for (uint32_t i : u_.reached_from(entries)) reached[i] = true;
   const ast::Function* located = nullptr;
   for (size_t i = 0; i < reached.size(); ++i) {
     const EffectUnits::DeclText& d = u_.decls_[i];
@@ -272,31 +274,31 @@ const EffectPass* EffectUnits::find(std::string_view technique, std::string_view
   return nullptr;
 }
 
-std::vector<bool> EffectUnits::reached_from(const std::vector<std::string_view>& roots) const {
-  std::vector<bool> reached(decls_.size(), false);
+std::vector<uint32_t> EffectUnits::reached_from(const std::vector<std::string_view>& roots) const {
+  std::vector<uint32_t> reached(always_);
+  std::unordered_set<uint32_t> seen(always_.begin(), always_.end());
   std::vector<std::string_view> pending(roots);
   while (!pending.empty()) {
     std::string_view name = pending.back();
     pending.pop_back();
     // Every declaration of a name (each overload: glslang resolves the call).
-    auto found = decls_by_name_.find(std::string(name));
+    auto found = decls_by_name_.find(name);
     if (found == decls_by_name_.end()) continue;
     for (uint32_t i : found->second)
-      if (!reached[i]) {
-        reached[i] = true;
+      if (seen.insert(i).second) {
+        reached.push_back(i);
         pending.insert(pending.end(), decls_[i].refs.begin(), decls_[i].refs.end());
       }
   }
-  for (size_t i = 0; i < decls_.size(); ++i) reached[i] = reached[i] || decls_[i].always;
+  std::sort(reached.begin(), reached.end());
   return reached;
 }
 
-std::string EffectUnits::code_for(const std::vector<bool>& reached) const {
+std::string EffectUnits::code_for(const std::vector<uint32_t>& reached) const {
   std::string out;
   // What comes before the first declaration (the pre-release prelude) is in every unit.
   out.append(hlsl_, 0, decls_.empty() ? hlsl_.size() : decls_.front().begin);
-  for (size_t i = 0; i < decls_.size(); ++i)
-    if (reached[i]) out.append(hlsl_, decls_[i].begin, decls_[i].end - decls_[i].begin);
+  for (uint32_t i : reached) out.append(hlsl_, decls_[i].begin, decls_[i].end - decls_[i].begin);
   return out;
 }
 

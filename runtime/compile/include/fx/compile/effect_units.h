@@ -4,6 +4,7 @@
 // joined. Compile-time arguments (`compile ps_2_0 PS(true, 3)`) become a wrapper entry point.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -130,11 +131,18 @@ class EffectUnits {
     std::string dynamic_linkage;     // the interface (instance) it uses, "" for none
   };
   std::vector<DeclText> decls_;
-  // Indices into decls_ by declared name (every overload), so reach costs what it visits.
-  std::unordered_map<std::string, std::vector<uint32_t>> decls_by_name_;
-  // Which declarations the roots reach (indices into decls_).
-  std::vector<bool> reached_from(const std::vector<std::string_view>& roots) const;
-  std::string code_for(const std::vector<bool>& reached) const;
+  // Indices into decls_ by declared name (every overload), so reach costs what it visits
+  // (looked up by string_view: no allocation per name).
+  struct NameHash {
+    using is_transparent = void;
+    size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+  };
+  std::unordered_map<std::string, std::vector<uint32_t>, NameHash, std::equal_to<>> decls_by_name_;
+  std::vector<uint32_t> always_;  // the #pragma lines
+  // The declarations the roots reach, with the #pragma lines: indices into decls_, in source
+  // order. Costs what it reaches, not the effect's size.
+  std::vector<uint32_t> reached_from(const std::vector<std::string_view>& roots) const;
+  std::string code_for(const std::vector<uint32_t>& reached) const;
   std::optional<StageUnit> check_;  // uncalled_check()
   std::vector<std::string> uncalled_;  // the functions it checks
   bool pre_release_ = false;
