@@ -1,5 +1,6 @@
 #include "fx/compile/effect_programs.h"
 
+#include <algorithm>
 #include <chrono>
 #include <unordered_set>
 
@@ -99,6 +100,7 @@ void EffectPrograms::compile_all(TaskExecutor& executor, bool shader_array_choic
     if (memo_.count(key) || compiled_ahead_.count(key) || !queued.insert(key).second) return;
     jobs.push_back({std::move(key), std::move(*unit), {}});
   };
+  if (const StageUnit* check = units_.uncalled_check(); check && !check_) add(*check);
   for (const EffectPass& pass : units_.passes()) {
     if (is_compiled(pass)) continue;
     for (const StageUnit& stage : pass.stages) {
@@ -113,6 +115,13 @@ void EffectPrograms::compile_all(TaskExecutor& executor, bool shader_array_choic
   executor.for_each(jobs.size(), [&](size_t i) { jobs[i].shader = compiler_.compile(jobs[i].unit); });
   for (Job& job : jobs) compiled_ahead_.emplace(std::move(job.key), std::move(job.shader));
   for (const EffectPass& pass : units_.passes()) program(pass);
+}
+
+const StageProgram* EffectPrograms::uncalled_check() {
+  const StageUnit* check = units_.uncalled_check();
+  if (!check) return nullptr;
+  if (!check_) check_ = std::make_unique<StageProgram>(compile_stage(*check, *units_.unit(*check)));
+  return check_.get();
 }
 
 const PassProgram& EffectPrograms::program(const EffectPass& pass) {
@@ -132,6 +141,13 @@ const PassProgram& EffectPrograms::program(const EffectPass& pass) {
     }
     p.stages.push_back(compile_stage(stage, std::move(*unit)));
     all_ok = all_ok && p.stages.back().shader.ok;
+  }
+  // An error in a function no stage calls fails the pass too (fxc rejects the whole effect).
+  const bool any_hlsl = std::any_of(p.stages.begin(), p.stages.end(),
+                                    [](const StageProgram& s) { return s.unit.language == ShaderLanguage::hlsl; });
+  if (const StageProgram* check = any_hlsl ? uncalled_check() : nullptr; check && !check->shader.ok) {
+    p.diagnostics = check->diagnostics;
+    all_ok = false;
   }
   if (all_ok && !p.stages.empty()) {
     Clock::time_point start = Clock::now();

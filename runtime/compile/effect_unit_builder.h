@@ -56,8 +56,9 @@ class EffectUnitBuilder {
   // state, instead of glslang's parse error on `interface`.
   void mark_dynamic_linkage();
 
-  // Functions that no HLSL stage of any pass reaches go into every unit (see hlsl_code_for),
-  // unless they cannot compile in any (stream or patch parameters, interfaces).
+  // Functions that no HLSL stage of any pass reaches go into the effect's check unit
+  // (EffectUnits::uncalled_check), unless they cannot compile in any (stream or patch
+  // parameters, interfaces).
   void mark_uncalled_functions();
 
   void index_declarations();
@@ -73,17 +74,16 @@ class EffectUnitBuilder {
   // The first interface or interface instance a function's tokens name ("" for none).
   std::string dynamic_linkage_in(ast::TokenSpan span) const;
 
-  // A function as a range of the text that can be left out: it starts with its own #line,
-  // and what follows it starts with one too.
+  // A function as a declaration range of the text (see emit_hlsl), with what it names.
   void emit_function(detail::ShaderTextWriter& w, const ast::Function& f);
 
   // A function's tokens, with fxc's assignments to constructors of l-values written as a
   // temporary and one assignment per part (`{ float4 t = v; a = t.xy; b = t.zw; }`).
   void emit_function_tokens(detail::ShaderTextWriter& w, ast::TokenSpan span);
 
-  // The names called in a span: identifiers followed by `(` (constructors and intrinsics
-  // too, which name no function of the effect and so reach nothing).
-  std::vector<std::string> calls_in(ast::TokenSpan span) const;
+  // The identifiers a span names, each once: calls, types, globals (and locals, members and
+  // intrinsics, which name no declaration of the effect or reach a little more than needed).
+  std::vector<std::string> identifiers_in(ast::TokenSpan span) const;
 
   // Writes the token at `i` as HLSL: a name glslang reserves is renamed (reflection maps
   // it back).

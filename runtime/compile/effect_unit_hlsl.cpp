@@ -1,7 +1,8 @@
 // The HLSL text and GLSL blocks of an effect's units: declarations re-spelled from the
-// preprocessed tokens without effect-only syntax, each function a range a unit can leave out.
+// preprocessed tokens without effect-only syntax, each declaration a range a unit can leave out.
 #include <algorithm>
 #include <cctype>
+#include <unordered_set>
 
 #include "effect_unit_builder.h"
 #include "fx/ascii_case.h"
@@ -17,6 +18,30 @@ void EffectUnitBuilder::emit_hlsl() {
   u_.pre_release_ = !effect_.profile_header.empty();
   if (u_.pre_release_) w.out() += pre_release_hlsl_prelude();
   uint32_t last_span = UINT32_MAX;
+  // Each declaration is a range of the text that a unit can leave out: it starts with its
+  // own #line, and what follows it starts with one too.
+  auto begin = [&] {
+    w.end_line();
+    w.desync();
+    return w.out().size();
+  };
+  auto end = [&](size_t from, std::vector<std::string> names, ast::TokenSpan span) {
+    w.end_line();
+    w.desync();
+    if (w.out().size() == from) return;
+    EffectUnits::DeclText text;
+    text.names = std::move(names);
+    text.begin = from;
+    text.end = w.out().size();
+    text.refs = identifiers_in(span);
+    u_.decls_.push_back(std::move(text));
+  };
+  // Declarators sharing one declaration (`float a, b;`) are one range that declares each.
+  auto shares_last = [&](uint32_t first, const std::string& name) {
+    if (first != last_span) return false;
+    if (!u_.decls_.empty()) u_.decls_.back().names.push_back(name);
+    return true;
+  };
   for (const ast::Decl& d : effect_.decls) {
     switch (d.kind) {
       case ast::DeclKind::variable: {
@@ -26,23 +51,52 @@ void EffectUnitBuilder::emit_hlsl() {
           interface_instances_.push_back(v.name);
           break;
         }
-        if (v.tokens.first == last_span || v.tokens.empty()) break;  // declarators share a span
+        if (v.tokens.empty() || is_effect_only_type(v.type.name)) break;
+        if (shares_last(v.tokens.first, v.name)) break;
         last_span = v.tokens.first;
-        if (!is_effect_only_type(v.type.name)) emit_filtered(w, v.tokens, !is_shader_object_type(v.type.name));
+        const size_t from = begin();
+        emit_filtered(w, v.tokens, !is_shader_object_type(v.type.name));
+        end(from, {v.name}, v.tokens);
         break;
       }
-      case ast::DeclKind::type_alias:
-        if (d.type_alias->tokens.first == last_span) break;
+      case ast::DeclKind::type_alias: {
+        if (shares_last(d.type_alias->tokens.first, d.type_alias->name)) break;
         last_span = d.type_alias->tokens.first;
+        const size_t from = begin();
         emit_tokens(w, d.type_alias->tokens);
+        end(from, {d.type_alias->name}, d.type_alias->tokens);
         break;
-      case ast::DeclKind::structure: emit_structure(w, *d.structure); break;
+      }
+      case ast::DeclKind::structure: {
+        const size_t from = begin();
+        emit_structure(w, *d.structure);
+        end(from, {d.structure->name}, d.structure->tokens);
+        break;
+      }
       case ast::DeclKind::function: emit_function(w, *d.function); break;
-      case ast::DeclKind::constant_buffer: emit_filtered(w, d.constant_buffer->tokens); break;
-      case ast::DeclKind::state_object: emit_sampler_object(w, *d.state_object); break;
+      case ast::DeclKind::constant_buffer: {
+        const ast::ConstantBuffer& cb = *d.constant_buffer;
+        std::vector<std::string> names{cb.name};
+        for (const ast::Variable& m : cb.members) names.emplace_back(m.name);
+        const size_t from = begin();
+        emit_filtered(w, cb.tokens);
+        end(from, std::move(names), cb.tokens);
+        break;
+      }
+      case ast::DeclKind::state_object: {
+        const size_t from = begin();
+        emit_sampler_object(w, *d.state_object);
+        end(from, {d.state_object->name}, {});
+        break;
+      }
       case ast::DeclKind::directive:
         // #version/#extension belong to GLSL; HLSL gets the #pragma lines (pack_matrix, ...).
-        if (d.directive->text.rfind("#pragma", 0) == 0) emit_tokens(w, d.directive->tokens);
+        if (d.directive->text.rfind("#pragma", 0) == 0) {
+          const size_t from = begin();
+          emit_tokens(w, d.directive->tokens);
+          end(from, {}, {});
+          if (!u_.decls_.empty() && u_.decls_.back().begin == from) u_.decls_.back().always = true;
+        }
         break;
       case ast::DeclKind::technique:
       case ast::DeclKind::group:
@@ -51,13 +105,6 @@ void EffectUnitBuilder::emit_hlsl() {
   }
   w.end_line();
   u_.hlsl_ = std::move(w.out());
-  for (const ast::Decl& d : effect_.decls) {
-    ast::TokenSpan span = d.kind == ast::DeclKind::variable          ? d.variable->tokens
-                          : d.kind == ast::DeclKind::structure       ? d.structure->tokens
-                          : d.kind == ast::DeclKind::constant_buffer ? d.constant_buffer->tokens
-                                                                      : ast::TokenSpan{};
-    for (std::string& name : calls_in(span)) u_.called_outside_functions_.push_back(std::move(name));
-  }
 }
 
 void EffectUnitBuilder::emit_structure(detail::ShaderTextWriter& w, const ast::Struct& s) {
@@ -94,27 +141,28 @@ std::string EffectUnitBuilder::dynamic_linkage_in(ast::TokenSpan span) const {
 void EffectUnitBuilder::emit_function(detail::ShaderTextWriter& w, const ast::Function& f) {
   w.end_line();
   w.desync();
-  EffectUnits::FunctionText text;
-  text.name = f.name;
+  EffectUnits::DeclText text;
+  text.names = {std::string(f.name)};
+  text.function = true;
   text.begin = w.out().size();
   emit_function_tokens(w, f.tokens);
   w.end_line();
   w.desync();
   text.end = w.out().size();
-  text.calls = calls_in(f.tokens);
+  text.refs = identifiers_in(f.tokens);
   // A hull shader names its patch-constant function in an attribute, not a call.
   constexpr std::string_view kPatchConstant = "patchconstantfunc";
   for (const ast::Text& attribute : f.attributes) {
     const std::string_view a = attribute;
     const size_t open = a.find('"'), close = a.rfind('"');
     if (iequals(a.substr(0, kPatchConstant.size()), kPatchConstant) && open != std::string_view::npos && close > open)
-      text.calls.emplace_back(a.substr(open + 1, close - open - 1));
+      text.refs.emplace_back(a.substr(open + 1, close - open - 1));
   }
   text.dynamic_linkage = dynamic_linkage_in(f.tokens);
   for (const ast::Variable& param : f.params)
     for (std::string_view t : {"PointStream", "LineStream", "TriangleStream", "InputPatch", "OutputPatch"})
       text.stage_only = text.stage_only || param.type.name == t;
-  u_.functions_.push_back(std::move(text));
+  u_.decls_.push_back(std::move(text));
 }
 
 void EffectUnitBuilder::emit_function_tokens(detail::ShaderTextWriter& w, ast::TokenSpan span) {
@@ -136,13 +184,11 @@ void EffectUnitBuilder::emit_function_tokens(detail::ShaderTextWriter& w, ast::T
   }
 }
 
-std::vector<std::string> EffectUnitBuilder::calls_in(ast::TokenSpan span) const {
+std::vector<std::string> EffectUnitBuilder::identifiers_in(ast::TokenSpan span) const {
   std::vector<std::string> out;
-  for (uint32_t i = span.first; i + 1 < span.last && i + 1 < toks_.size(); ++i)
-    if (toks_[i].is(TokenKind::identifier) && toks_[i + 1].is(TokenKind::l_paren)) {
-      std::string name(toks_[i].text());
-      if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(std::move(name));
-    }
+  std::unordered_set<std::string_view> seen;
+  for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i)
+    if (toks_[i].is(TokenKind::identifier) && seen.insert(toks_[i].text()).second) out.emplace_back(toks_[i].text());
   return out;
 }
 

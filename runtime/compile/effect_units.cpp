@@ -173,7 +173,10 @@ void EffectUnitBuilder::build() {
   if (u_.name_.empty()) u_.name_ = "<effect>";
   index_declarations();
   emit_hlsl();
-  for (uint32_t i = 0; i < u_.functions_.size(); ++i) u_.functions_by_name_[u_.functions_[i].name].push_back(i);
+  for (uint32_t i = 0; i < u_.decls_.size(); ++i) {
+    for (const std::string& name : u_.decls_[i].names) u_.decls_by_name_[name].push_back(i);
+    if (u_.decls_[i].always) u_.always_.push_back(i);
+  }
   collect_glsl();
   collect_passes();
   mark_uncalled_functions();
@@ -181,16 +184,15 @@ void EffectUnitBuilder::build() {
 }
 
 void EffectUnitBuilder::mark_dynamic_linkage() {
-  std::unordered_map<std::string, std::vector<bool>> reach;  // by entry: passes share shaders
+  std::unordered_map<std::string, std::vector<uint32_t>> reach;  // by entry: passes share shaders
   auto check = [&](StageUnit& stage) {
     if (stage.kind != StageSourceKind::hlsl) return;
     auto [it, fresh] = reach.try_emplace(stage.function);
-    if (fresh) it->second = u_.reached_from(stage.function);
-    const std::vector<bool>& r = it->second;
-    for (size_t i = 0; i < r.size(); ++i)
-      if (r[i] && !u_.functions_[i].dynamic_linkage.empty()) {
-        invalid(stage, "fx_5_0 dynamic linkage: '" + u_.functions_[i].name + "' uses " +
-                           u_.functions_[i].dynamic_linkage + ", and fxkit does not compile interfaces to SPIR-V");
+    if (fresh) it->second = u_.reached_from({stage.function});
+    for (uint32_t i : it->second)
+      if (!u_.decls_[i].dynamic_linkage.empty()) {
+        invalid(stage, "fx_5_0 dynamic linkage: '" + u_.decls_[i].names.front() + "' uses " +
+                           u_.decls_[i].dynamic_linkage + ", and fxkit does not compile interfaces to SPIR-V");
         return;
       }
   };
@@ -202,21 +204,42 @@ void EffectUnitBuilder::mark_dynamic_linkage() {
 }
 
 void EffectUnitBuilder::mark_uncalled_functions() {
-  std::vector<bool> reached(u_.functions_.size(), false);
-  std::unordered_set<std::string> done;  // entries already walked: passes share shaders
-  auto reach = [&](const StageUnit& stage) {
-    if (stage.kind != StageSourceKind::hlsl || !done.insert(stage.function).second) return;
-    std::vector<bool> r = u_.reached_from(stage.function);
-    for (size_t i = 0; i < r.size(); ++i) reached[i] = reached[i] || r[i];
+  std::vector<std::string_view> entries;
+  std::unordered_set<std::string_view> seen;  // passes share shaders
+  const StageUnit* first = nullptr;
+  auto add = [&](const StageUnit& stage) {
+    if (stage.kind != StageSourceKind::hlsl) return;
+    if (!first) first = &stage;
+    if (seen.insert(stage.function).second) entries.push_back(stage.function);
   };
   for (const EffectPass& pass : u_.passes_)
     for (const StageUnit& stage : pass.stages) {
-      reach(stage);
-      for (const StageUnit& choice : stage.choices) reach(choice);
+      add(stage);
+      for (const StageUnit& choice : stage.choices) add(choice);
     }
-  for (size_t i = 0; i < reached.size(); ++i)
-    u_.functions_[i].in_every_unit =
-        !reached[i] && !u_.functions_[i].stage_only && u_.functions_[i].dynamic_linkage.empty();
+  if (!first) return;  // nothing compiles: no unit to check the functions in
+  std::vector<bool> reached(u_.decls_.size(), false);
+  for (uint32_t i : u_.reached_from(entries)) reached[i] = true;
+  const ast::Function* located = nullptr;
+  for (size_t i = 0; i < reached.size(); ++i) {
+    const EffectUnits::DeclText& d = u_.decls_[i];
+    if (!d.function || reached[i] || d.stage_only || !d.dynamic_linkage.empty()) continue;
+    if (std::find(u_.uncalled_.begin(), u_.uncalled_.end(), d.names.front()) == u_.uncalled_.end())
+      u_.uncalled_.push_back(d.names.front());
+    for (const ast::Function* f : functions_)
+      if (!located && f->name == d.names.front()) located = f;
+  }
+  if (u_.uncalled_.empty()) return;
+  // A fragment unit is the one where any function compiles (derivatives, clip); the profile's
+  // shader model is the effect's first HLSL stage's, so its DX9 mode matches the code.
+  StageUnit check;
+  check.stage = ShaderStage::fragment;
+  check.kind = StageSourceKind::hlsl;
+  check.profile = first->profile;
+  if (check.profile.size() > 2 && check.profile[1] == 's') check.profile.replace(0, 2, "ps");
+  check.entry_point = "uncalled__fx";
+  check.range = located ? located->name_range : first->range;
+  u_.check_ = std::move(check);
 }
 
 void EffectUnitBuilder::index_declarations() {
@@ -251,39 +274,36 @@ const EffectPass* EffectUnits::find(std::string_view technique, std::string_view
   return nullptr;
 }
 
-std::vector<bool> EffectUnits::reached_from(std::string_view entry) const {
-  std::vector<bool> reached(functions_.size(), false);
-  std::vector<std::string_view> pending(called_outside_functions_.begin(), called_outside_functions_.end());
-  pending.push_back(entry);
-  for (const FunctionText& f : functions_)
-    if (f.in_every_unit) pending.push_back(f.name);
+std::vector<uint32_t> EffectUnits::reached_from(const std::vector<std::string_view>& roots) const {
+  std::vector<uint32_t> reached(always_);
+  std::unordered_set<uint32_t> seen(always_.begin(), always_.end());
+  std::vector<std::string_view> pending(roots);
   while (!pending.empty()) {
     std::string_view name = pending.back();
     pending.pop_back();
-    // Every overload of a name: glslang resolves the call.
-    auto overloads = functions_by_name_.find(std::string(name));
-    if (overloads == functions_by_name_.end()) continue;
-    for (uint32_t i : overloads->second)
-      if (!reached[i]) {
-        reached[i] = true;
-        pending.insert(pending.end(), functions_[i].calls.begin(), functions_[i].calls.end());
+    // Every declaration of a name (each overload: glslang resolves the call).
+    auto found = decls_by_name_.find(name);
+    if (found == decls_by_name_.end()) continue;
+    for (uint32_t i : found->second)
+      if (seen.insert(i).second) {
+        reached.push_back(i);
+        pending.insert(pending.end(), decls_[i].refs.begin(), decls_[i].refs.end());
       }
   }
+  std::sort(reached.begin(), reached.end());
   return reached;
 }
 
-std::string EffectUnits::hlsl_code_for(std::string_view entry) const {
-  std::vector<bool> reached = reached_from(entry);
+std::string EffectUnits::code_for(const std::vector<uint32_t>& reached) const {
   std::string out;
-  out.reserve(hlsl_.size());
-  size_t from = 0;
-  for (size_t i = 0; i < functions_.size(); ++i) {
-    if (reached[i]) continue;
-    out.append(hlsl_, from, functions_[i].begin - from);
-    from = functions_[i].end;
-  }
-  out.append(hlsl_, from, std::string::npos);
+  // What comes before the first declaration (the pre-release prelude) is in every unit.
+  out.append(hlsl_, 0, decls_.empty() ? hlsl_.size() : decls_.front().begin);
+  for (uint32_t i : reached) out.append(hlsl_, decls_[i].begin, decls_[i].end - decls_[i].begin);
   return out;
+}
+
+std::string EffectUnits::hlsl_code_for(std::string_view entry) const {
+  return code_for(reached_from({entry}));
 }
 
 std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
@@ -292,6 +312,14 @@ std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
   u.entry_point = stage.entry_point;
   u.defines = options_.defines;
   u.name = name_;
+  if (check_ && &stage == &*check_) {
+    u.language = ShaderLanguage::hlsl;
+    u.profile = normalize_profile(stage.profile);
+    std::vector<std::string_view> roots(uncalled_.begin(), uncalled_.end());
+    u.source = code_for(reached_from(roots));
+    u.source += "void " + stage.entry_point + "() {}\n";
+    return u;
+  }
   if (stage.kind == StageSourceKind::hlsl) {
     u.language = ShaderLanguage::hlsl;
     u.profile = normalize_profile(stage.profile);

@@ -14,7 +14,17 @@ struct StageResource {
   std::string name;
   DescriptorKind kind;
   uint32_t set, binding, count, size;
+  std::string members;  // a block's member names and offsets: stages share a block only when they agree
 };
+
+// A block's layout as text ("World@0;Tint@64;"): each stage's unit declares only the globals
+// it reaches, so two stages' `$Global` blocks may differ even at the same size.
+std::string member_layout(const UniformBlock& b) {
+  std::string out = std::to_string(b.size) + "|";
+  for (const BlockMember& m : b.members)
+    out.append(m.name).append("@").append(std::to_string(m.offset)).append(":").append(std::to_string(m.size)).append(";");
+  return out;
+}
 
 DescriptorKind descriptor_kind(ImageBinding::Kind k) {
   switch (k) {
@@ -29,11 +39,11 @@ DescriptorKind descriptor_kind(ImageBinding::Kind k) {
 std::vector<StageResource> resources_of(const ShaderReflection& r) {
   std::vector<StageResource> out;
   for (const UniformBlock& b : r.uniform_blocks)
-    out.push_back({b.name, DescriptorKind::uniform_buffer, b.set, b.binding, 1, b.size});
+    out.push_back({b.name, DescriptorKind::uniform_buffer, b.set, b.binding, 1, b.size, member_layout(b)});
   for (const UniformBlock& b : r.storage_blocks)
-    out.push_back({b.name, DescriptorKind::storage_buffer, b.set, b.binding, 1, b.size});
+    out.push_back({b.name, DescriptorKind::storage_buffer, b.set, b.binding, 1, b.size, member_layout(b)});
   for (const ImageBinding& i : r.images)
-    out.push_back({i.name, descriptor_kind(i.kind), i.set, i.binding, std::max(1u, i.array_size), 0});
+    out.push_back({i.name, descriptor_kind(i.kind), i.set, i.binding, std::max(1u, i.array_size), 0, {}});
   // Declaration order as glslang numbered them.
   std::stable_sort(out.begin(), out.end(), [](const StageResource& a, const StageResource& b) {
     return std::pair(a.set, a.binding) < std::pair(b.set, b.binding);
@@ -104,7 +114,7 @@ ProgramLayout link_program(const std::vector<CompiledShader*>& input, Diagnostic
   });
 
   ProgramLayout layout;
-  std::vector<uint32_t> sizes;  // block size per layout entry, to tell same-named blocks apart
+  std::vector<std::string> layouts;  // block layout per layout entry, to tell same-named blocks apart
   for (CompiledShader* s : stages) {
     std::map<spirv::SetBinding, spirv::SetBinding> remap;
     for (const StageResource& res : resources_of(s->reflection)) {
@@ -112,13 +122,13 @@ ProgramLayout link_program(const std::vector<CompiledShader*>& input, Diagnostic
       size_t index = 0;
       for (; index < layout.bindings.size(); ++index) {
         const ProgramBinding& b = layout.bindings[index];
-        if (b.name == res.name && b.kind == res.kind && b.count == res.count && sizes[index] == res.size &&
+        if (b.name == res.name && b.kind == res.kind && b.count == res.count && layouts[index] == res.members &&
             !(b.stage_mask & stage_bit))
           break;
       }
       if (index == layout.bindings.size()) {
         layout.bindings.push_back({res.name, res.kind, 0, static_cast<uint32_t>(index), res.count, 0});
-        sizes.push_back(res.size);
+        layouts.push_back(res.members);
       }
       layout.bindings[index].stage_mask |= stage_bit;
       remap[{res.set, res.binding}] = {0, layout.bindings[index].binding};

@@ -1,6 +1,7 @@
 #include "fx/compile/shader_compiler.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <map>
 #include <cstdlib>
@@ -27,12 +28,16 @@ double ms_since(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
-// glslang's process-wide tables: built once, released at exit. Compiles running in worker
-// threads only need each call to own its TShader and TProgram.
+std::atomic<bool> glslang_process_started{false};
+
+// glslang's process-wide tables: built once, on the first compile that needs glslang,
+// released at exit. Compiles running in worker threads only need each call to own its
+// TShader and TProgram (released when the compile returns).
 void ensure_glslang_process() {
   static std::once_flag once;
   std::call_once(once, [] {
     glslang::InitializeProcess();
+    glslang_process_started = true;
     std::atexit([] { glslang::FinalizeProcess(); });
   });
 }
@@ -161,6 +166,8 @@ CompiledShader rejected(std::string text) {
 
 ShaderCompiler::ShaderCompiler(CompileOptions options, SpirvCache* cache)
     : options_(options), cache_(cache) {}
+
+bool ShaderCompiler::glslang_started() { return glslang_process_started.load(); }
 
 std::string ShaderCompiler::glslang_version() {
   glslang::Version v = glslang::GetVersion();

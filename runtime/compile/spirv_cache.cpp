@@ -76,7 +76,37 @@ SpirvCacheKey spirv_cache_key(const TranslationUnit& unit, const CompileOptions&
   return {h.low64, h.high64};
 }
 
-SpirvCache::SpirvCache(std::filesystem::path directory) : directory_(std::move(directory)) {}
+SpirvCache::SpirvCache(std::filesystem::path directory, size_t memory_budget)
+    : directory_(std::move(directory)), memory_budget_(memory_budget) {}
+
+namespace {
+
+// What an entry holds, roughly: its words, its log and a flat allowance for reflection.
+size_t entry_bytes(const CompiledShader& s) {
+  return sizeof(CompiledShader) + s.spirv.size() * sizeof(uint32_t) + s.info_log.size() + 1024;
+}
+
+}  // namespace
+
+void SpirvCache::remember(const SpirvCacheKey& key, const CompiledShader& shader) {
+  if (auto it = memory_.find(key); it != memory_.end()) {
+    stats_.memory_bytes -= it->second.bytes;
+    lru_.erase(it->second.use);
+    memory_.erase(it);
+  }
+  const size_t bytes = entry_bytes(shader);
+  if (bytes > memory_budget_) return;
+  lru_.push_front(key);
+  memory_.emplace(key, Entry{shader, bytes, lru_.begin()});
+  stats_.memory_bytes += bytes;
+  while (stats_.memory_bytes > memory_budget_ && !lru_.empty()) {
+    auto victim = memory_.find(lru_.back());
+    stats_.memory_bytes -= victim->second.bytes;
+    memory_.erase(victim);
+    lru_.pop_back();
+    ++stats_.evictions;
+  }
+}
 
 std::optional<CompiledShader> SpirvCache::find(const SpirvCacheKey& key) {
   {
@@ -84,14 +114,15 @@ std::optional<CompiledShader> SpirvCache::find(const SpirvCacheKey& key) {
     auto it = memory_.find(key);
     if (it != memory_.end()) {
       ++stats_.memory_hits;
-      return it->second;
+      lru_.splice(lru_.begin(), lru_, it->second.use);
+      return it->second.shader;
     }
   }
   if (!directory_.empty()) {
     if (std::optional<CompiledShader> loaded = load_file(key)) {
       std::lock_guard lock(mutex_);
       ++stats_.disk_hits;
-      memory_.emplace(key, *loaded);
+      remember(key, *loaded);
       return loaded;
     }
   }
@@ -105,7 +136,7 @@ void SpirvCache::store(const SpirvCacheKey& key, const CompiledShader& shader) {
   {
     std::lock_guard lock(mutex_);
     ++stats_.stores;
-    memory_.insert_or_assign(key, shader);
+    remember(key, shader);
   }
   if (!directory_.empty()) write_file(key, shader);
 }
@@ -113,6 +144,8 @@ void SpirvCache::store(const SpirvCacheKey& key, const CompiledShader& shader) {
 void SpirvCache::clear_memory() {
   std::lock_guard lock(mutex_);
   memory_.clear();
+  lru_.clear();
+  stats_.memory_bytes = 0;
 }
 
 SpirvCacheStats SpirvCache::stats() const {

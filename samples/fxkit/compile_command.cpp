@@ -179,7 +179,8 @@ int run_compile(const CompileArgs& args) {
     nlohmann::json out = {{"file", args.file},
                           {"shaders", std::move(shaders)},
                           {"diagnostics", fx::render_json(effect_level, sm)},
-                          {"ok", !failed}};
+                          {"ok", !failed},
+                          {"glslang_started", fx::ShaderCompiler::glslang_started()}};
     std::puts(json_text(out).c_str());
   } else {
     std::fputs(fx::render_text(all.diagnostics(), sm).c_str(), stderr);

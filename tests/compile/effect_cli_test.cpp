@@ -178,6 +178,25 @@ TEST(FxkitCompile, JsonListsEveryShaderAndWritesSpirv) {
   fs::remove_all(dir);
 }
 
+TEST(FxkitCompile, AWarmCacheNeverStartsGlslang) {
+  fs::path cache = fs::temp_directory_path() / ("fxkit_cli_cache_" + std::to_string(::getpid()));
+  fs::remove_all(cache);
+  const std::string args = "compile --json --cache " + cache.string() + " " + data("tests/parser/data/sdk_sample.fx");
+  CliRun cold = run(args);
+  ASSERT_EQ(cold.exit_code, 0) << cold.out;
+  json first = json::parse(cold.out);
+  EXPECT_TRUE(first["glslang_started"].get<bool>());
+  // A new process, the same effect: every shader from the disk cache, glslang never started.
+  CliRun warm = run(args);
+  ASSERT_EQ(warm.exit_code, 0) << warm.out;
+  json second = json::parse(warm.out);
+  EXPECT_FALSE(second["glslang_started"].get<bool>());
+  ASSERT_EQ(second["shaders"].size(), first["shaders"].size());
+  for (const json& s : second["shaders"])
+    if (s["stage"].is_string()) EXPECT_TRUE(s["cached"].get<bool>()) << s.dump();
+  fs::remove_all(cache);
+}
+
 TEST(FxkitCompile, ExitsOneWhenAShaderFails) {
   fs::path bad = fs::temp_directory_path() / ("fxkit_cli_fail_" + std::to_string(::getpid()) + ".fx");
   std::ofstream(bad) << "float4 PS() : COLOR0 { return undefined_value; }\n"

@@ -75,13 +75,20 @@ TEST(EffectUnits, LeavesOutEffectSyntaxAndKeepsShaderCode) {
 TEST(EffectUnits, AStageUnitHoldsTheFunctionsItsEntryReaches) {
   fs::path dir = temp_dir("reach");
   write(dir / "reach.fx", R"(struct V { float4 pos : SV_Position; };
+struct Unreached { float4 x; };
+float4 VsOnly;
+float4 PsOnly, PsToo;
+typedef float3 Normal;
+cbuffer Lights { float4 LightDir; float4 LightColor; };
+cbuffer Other { float4 OtherColor; };
 float Scale(float x) { return x * 2; }
 static const float kScale = Scale(1);
-float3 Shade(float3 n) { return n * kScale; }
+static const float kUnused = 3;
+float3 Shade(Normal n) { return n * kScale * LightDir.xyz; }
 float3 Shade(float x) { return x; }
-float Unused() { return 1; }
-V VS(float4 p : POSITION) { V v; v.pos = float4(Shade(p.xyz), 1); return v; }
-float4 PS(V v) : SV_Target { return ddx(v.pos); }
+float Unused() { return kUnused; }
+V VS(float4 p : POSITION) { V v; v.pos = float4(Shade(p.xyz), 1) + VsOnly; return v; }
+float4 PS(V v) : SV_Target { return ddx(v.pos) + PsOnly; }
 [maxvertexcount(1)] void GS(point V i[1], inout PointStream<V> s) { s.Append(i[0]); }
 [maxvertexcount(1)] void UnusedGS(point V i[1], inout PointStream<V> s) { s.Append(i[0]); }
 technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometryShader(CompileShader(gs_4_0, GS()));
@@ -92,17 +99,28 @@ technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeomet
   auto source = [&](ShaderStage stage) { return l->units->unit(*pass.find(stage))->source; };
   auto has = [](const std::string& code, const char* text) { return code.find(text) != std::string::npos; };
   const std::string vs = source(ShaderStage::vertex);
-  // The entry, both overloads of what it calls, what a global initializer calls, and the
-  // function nothing calls (its errors are still reported, as fxc reports them).
-  for (const char* kept : {"V VS(", "float3 Shade(float3", "float3 Shade(float x", "float Scale(", "float Unused()"})
+  // The entry, both overloads of what it calls, what a global initializer calls, the
+  // typedef, struct, globals and whole cbuffer its code names.
+  for (const char* kept : {"V VS(", "float3 Shade(Normal", "float3 Shade(float x", "float Scale(", "kScale =",
+                           "typedef float3 Normal", "struct V", "float4 VsOnly", "cbuffer Lights", "LightColor"})
     EXPECT_TRUE(has(vs, kept)) << kept << " missing in\n" << vs;
-  // Other stages' functions, and a stream function nothing calls.
-  for (const char* gone : {"float4 PS(", "void GS(", "void UnusedGS("})
+  // Other stages' functions and globals, what nothing names, and a function nothing calls.
+  for (const char* gone : {"float4 PS(", "void GS(", "void UnusedGS(", "float Unused()", "PsOnly", "Unreached",
+                           "cbuffer Other", "kUnused"})
     EXPECT_FALSE(has(vs, gone)) << gone << " in\n" << vs;
+  // Declarators of one declaration stay together.
+  EXPECT_TRUE(has(source(ShaderStage::fragment), "PsToo")) << source(ShaderStage::fragment);
   const std::string gs = source(ShaderStage::geometry);
   EXPECT_TRUE(has(gs, "void GS(")) << gs;
   EXPECT_FALSE(has(gs, "void UnusedGS(")) << gs;
   EXPECT_FALSE(has(gs, "V VS(")) << gs;
+  // The function no stage calls is compiled in the effect's check unit, with what it names;
+  // not the stream function, which compiles only as its stage's entry.
+  const StageUnit* check = l->units->uncalled_check();
+  ASSERT_TRUE(check);
+  const std::string checked = l->units->unit(*check)->source;
+  EXPECT_TRUE(has(checked, "float Unused()") && has(checked, "kUnused")) << checked;
+  EXPECT_FALSE(has(checked, "void UnusedGS(") || has(checked, "V VS(")) << checked;
   // The whole text still holds every function, each after its own #line.
   EXPECT_TRUE(has(l->units->hlsl_code(), "void UnusedGS("));
 }
@@ -300,6 +318,39 @@ technique T2 { pass P { PixelShader = compile ps_2_0 PS2(); } }
 
 // One typo, one error: at the token's column (glslang gives HLSL semantic errors none), with
 // the effect's closest name as a fix-it, and none of glslang's follow-on errors.
+TEST(EffectErrors, AnErrorInAFunctionNoStageCallsIsReportedOnceOnItsLineAndFailsThePasses) {
+  fs::path dir = temp_dir("uncalled_err");
+  write(dir / "u.fx", R"(float4 Color;
+float4 Broken(float4 c)
+{
+  return c * not_declared;
+}
+float4 Fine() { return 1; }
+float4 PS() : COLOR0 { return Color; }
+float4 VS(float4 p : POSITION) : POSITION { return p; }
+technique T1 { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+technique T2 { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)");
+  auto l = load((dir / "u.fx").string());
+  ShaderCompiler compiler;
+  EffectPrograms programs(*l->units, compiler, l->sm);
+  for (const char* technique : {"T1", "T2"}) {
+    const PassProgram* p = programs.program(technique, "P");
+    ASSERT_TRUE(p);
+    // The stages themselves compile: Broken is not in their units ...
+    for (const StageProgram& s : p->stages) EXPECT_TRUE(s.shader.ok) << render_text(s.diagnostics, l->sm);
+    // ... but the pass fails with Broken's error, on its line, as fxc fails the effect.
+    EXPECT_FALSE(p->ok());
+    ASSERT_FALSE(p->diagnostics.empty());
+    PresumedLocation at = first_error(p->diagnostics, l->sm);
+    EXPECT_EQ(at.line, 4u) << render_text(p->diagnostics, l->sm);
+  }
+  EXPECT_EQ(programs.stats().stages_compiled, 3u);  // VS, PS and the check unit, once each
+  const std::string checked = l->units->unit(*l->units->uncalled_check())->source;
+  EXPECT_NE(checked.find("float4 Fine()"), std::string::npos) << checked;
+  EXPECT_EQ(checked.find("float4 PS()"), std::string::npos) << checked;
+}
+
 TEST(EffectErrors, AnUnknownNameIsOneErrorAtItsColumnWithDidYouMean) {
   fs::path dir = temp_dir("typo");
   write(dir / "typo.fx", R"(float4x4 WorldViewProj;

@@ -131,6 +131,33 @@ TEST(SpirvCache, CorruptOrTruncatedFilesAreRejectedAndReplaced) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(SpirvCache, MemoryStaysWithinItsBudgetDroppingTheLeastRecentlyUsed) {
+  auto shader = [](uint32_t words) {
+    CompiledShader s;
+    s.ok = true;
+    s.spirv.assign(words, 0x07230203u);
+    return s;
+  };
+  const size_t one = shader(4096).spirv.size() * 4;  // 16 KiB of words, plus bookkeeping
+  SpirvCache cache({}, 3 * one + 3 * (sizeof(CompiledShader) + 1024));
+  auto key = [](uint64_t i) { return SpirvCacheKey{i, ~i}; };
+  for (uint64_t i = 0; i < 3; ++i) cache.store(key(i), shader(4096));
+  EXPECT_EQ(cache.stats().evictions, 0u);
+  ASSERT_TRUE(cache.find(key(0)));  // 0 is now the most recently used: 1 goes next
+  cache.store(key(3), shader(4096));
+  EXPECT_EQ(cache.stats().evictions, 1u);
+  EXPECT_LE(cache.stats().memory_bytes, 3 * one + 3 * (sizeof(CompiledShader) + 1024));
+  EXPECT_TRUE(cache.find(key(0)));
+  EXPECT_FALSE(cache.find(key(1)));
+  EXPECT_TRUE(cache.find(key(2)));
+  EXPECT_TRUE(cache.find(key(3)));
+  // An entry larger than the whole budget is not kept in memory at all.
+  cache.store(key(9), shader(4 * 4096));
+  EXPECT_FALSE(cache.find(key(9)));
+  cache.clear_memory();
+  EXPECT_EQ(cache.stats().memory_bytes, 0u);
+}
+
 TEST(SpirvCache, UnwritableDirectoryStillCachesInMemory) {
   SpirvCache cache("/proc/fxkit-cannot-write-here");
   ShaderCompiler compiler({}, &cache);

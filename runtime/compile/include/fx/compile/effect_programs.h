@@ -78,6 +78,10 @@ class EffectPrograms {
   // and compile_alone() then only look results up. Each distinct unit is compiled once;
   // diagnostics are placed on the calling thread, in pass order, as program() would.
   void compile_all(TaskExecutor& executor, bool shader_array_choices = false);
+  // The effect's check unit (EffectUnits::uncalled_check), compiled on the first call, or
+  // nullptr when every function is reached. program() calls it for every pass with an HLSL
+  // stage: its errors fail those passes, as fxc fails the effect.
+  const StageProgram* uncalled_check();
   // Whether `pass` has been compiled already (no compile happens).
   bool is_compiled(const EffectPass& pass) const;
 
@@ -100,6 +104,7 @@ class EffectPrograms {
   // as its own compile (they count as compiled, not reused).
   std::unordered_map<std::string, CompiledShader> compiled_ahead_;
   EffectProgramStats stats_;
+  std::unique_ptr<StageProgram> check_;  // uncalled_check(), once compiled
 };
 
 }  // namespace fx

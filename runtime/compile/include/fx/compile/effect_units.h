@@ -1,9 +1,10 @@
 // The glslang translation units of a parsed effect: one per pass stage. HLSL stages get the
-// effect's shader code (structs, functions, globals, cbuffers) with the effect-only syntax
-// left out and #line directives into the .fx files; GLSL stages get their named blocks
+// part of the effect's shader code their entry reaches (functions, structs, globals,
+// cbuffers) with the effect-only syntax left out and #line directives into the .fx files; GLSL stages get their named blocks
 // joined. Compile-time arguments (`compile ps_2_0 PS(true, 3)`) become a wrapper entry point.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -88,16 +89,23 @@ class EffectUnits {
   std::optional<TranslationUnit> unit(const StageUnit& stage) const;
 
   // The effect's whole shader code (prelude and #line included). An HLSL stage's unit holds
-  // it without the functions its entry point never calls (`hlsl_code_for`).
+  // only what its entry point reaches (`hlsl_code_for`).
   const std::string& hlsl_code() const { return hlsl_; }
-  // hlsl_code() without the functions of other stages: a stage's unit holds what its entry
-  // calls, what is called from outside any function (global initializers, struct methods)
-  // and the functions no stage calls, so their errors are still reported, as fxc does. A
-  // function only another stage calls may not compile for this one at all (a geometry
+  // The declarations `entry` reaches, in source order, each after its own #line: the entry,
+  // every overload of every name it calls, the structs, typedefs, globals, static consts,
+  // cbuffers (whole) and samplers/textures their tokens name, and so on through what those
+  // name (a global initializer's calls, a struct's methods). `#pragma` lines are always kept.
+  // A function only another stage calls may not compile for this one at all (a geometry
   // shader's stream Append, a derivative in a vertex shader), and its errors are not this
-  // stage's. An uncalled function with a stream or patch parameter compiles only as its
-  // stage's entry, so it is left out too.
+  // stage's.
   std::string hlsl_code_for(std::string_view entry) const;
+  // The functions no stage of any pass reaches, and what they reach, compiled once per
+  // effect as a fragment unit of their own so their errors are still reported (fxc rejects
+  // an effect for an error in any function); nullptr when every function is reached (or the
+  // effect has no HLSL stage). Functions with a stream or patch parameter or an interface
+  // are not in it (they compile only as their stage's entry). EffectPrograms compiles it with
+  // the first pass that has an HLSL stage; its errors fail every such pass.
+  const StageUnit* uncalled_check() const { return check_ ? &*check_ : nullptr; }
   // The names the effect declares at file scope (variables, functions, types, cbuffer
   // members), for "did you mean" on an unknown name in shader code.
   const std::vector<std::string>& symbols() const { return symbols_; }
@@ -111,22 +119,32 @@ class EffectUnits {
     std::string body;     // with #line directives, the #version line left out
   };
   std::string hlsl_;
-  // Each function definition or prototype as a range of hlsl_ (starting with its own #line),
-  // with the names it calls.
-  struct FunctionText {
-    std::string name;
+  // Each top-level declaration as a range of hlsl_ (starting with its own #line), with the
+  // names it declares and the identifiers its tokens name.
+  struct DeclText {
+    std::vector<std::string> names;  // a function's or type's name; every declarator; cbuffer members
     size_t begin = 0, end = 0;
-    std::vector<std::string> calls;
-    bool stage_only = false;     // has a stream or patch parameter (geometry, hull, domain)
-    std::string dynamic_linkage; // the interface (instance) it uses, "" for none
-    bool in_every_unit = false;  // no stage calls it
+    std::vector<std::string> refs;   // identifiers in its tokens (calls, types, globals)
+    bool function = false;
+    bool always = false;             // a #pragma: in every unit
+    bool stage_only = false;         // has a stream or patch parameter (geometry, hull, domain)
+    std::string dynamic_linkage;     // the interface (instance) it uses, "" for none
   };
-  std::vector<FunctionText> functions_;
-  // Indices into functions_ by name (every overload), so reach costs what it visits.
-  std::unordered_map<std::string, std::vector<uint32_t>> functions_by_name_;
-  std::vector<std::string> called_outside_functions_;
-  // Which functions `entry`'s unit holds (indices into functions_).
-  std::vector<bool> reached_from(std::string_view entry) const;
+  std::vector<DeclText> decls_;
+  // Indices into decls_ by declared name (every overload), so reach costs what it visits
+  // (looked up by string_view: no allocation per name).
+  struct NameHash {
+    using is_transparent = void;
+    size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+  };
+  std::unordered_map<std::string, std::vector<uint32_t>, NameHash, std::equal_to<>> decls_by_name_;
+  std::vector<uint32_t> always_;  // the #pragma lines
+  // The declarations the roots reach, with the #pragma lines: indices into decls_, in source
+  // order. Costs what it reaches, not the effect's size.
+  std::vector<uint32_t> reached_from(const std::vector<std::string_view>& roots) const;
+  std::string code_for(const std::vector<uint32_t>& reached) const;
+  std::optional<StageUnit> check_;  // uncalled_check()
+  std::vector<std::string> uncalled_;  // the functions it checks
   bool pre_release_ = false;
   std::vector<std::string> symbols_;
   std::vector<EffectPass> passes_;

@@ -41,6 +41,12 @@ class ShaderCompiler {
   // How many times this compiler ran glslang (cache hits do not count).
   uint64_t glslang_runs() const { return glslang_runs_.load(); }
 
+  // Whether this process has initialised glslang (its process tables; the built-in symbol
+  // tables follow per stage and version). It happens on the first compile that is not a
+  // cache hit, never before: a process whose every shader comes from the SPIR-V cache never
+  // starts glslang.
+  static bool glslang_started();
+
   // "glslang 12.0.0": part of every cache key, so an upgrade invalidates old entries.
   static std::string glslang_version();
 

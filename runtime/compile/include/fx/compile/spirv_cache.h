@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <list>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -27,15 +28,20 @@ struct SpirvCacheStats {
   uint64_t memory_hits = 0, disk_hits = 0, misses = 0, stores = 0;
   uint64_t disk_rejects = 0;      // files with a bad header, size or checksum (then replaced)
   uint64_t disk_write_errors = 0; // the directory was not writable; memory still works
+  uint64_t evictions = 0;         // in-memory entries dropped to stay within the budget
+  uint64_t memory_bytes = 0;      // what the in-memory entries hold now (estimated)
 };
 
-// Thread-safe. Only successful compiles are stored. Disk entries are written to a temp file
+// Thread-safe. Only successful compiles are stored. The in-memory entries are bounded by a
+// byte budget: past it the least recently used go (the disk keeps them). Disk entries are written to a temp file
 // and renamed, so a reader never sees half a file; every entry is checked (magic, format
 // version, key, sizes, xxh3-64 checksum) before use.
 class SpirvCache {
  public:
+  // The in-memory budget by default: a few thousand shaders.
+  static constexpr size_t kDefaultMemoryBudget = size_t{64} << 20;
   // `directory` empty: memory only. The directory is created on the first store.
-  explicit SpirvCache(std::filesystem::path directory = {});
+  explicit SpirvCache(std::filesystem::path directory = {}, size_t memory_budget = kDefaultMemoryBudget);
 
   std::optional<CompiledShader> find(const SpirvCacheKey& key);
   void store(const SpirvCacheKey& key, const CompiledShader& shader);
@@ -49,12 +55,22 @@ class SpirvCache {
   struct KeyHash {
     size_t operator()(const SpirvCacheKey& k) const { return static_cast<size_t>(k.low ^ (k.high * 31)); }
   };
+  struct Entry {
+    CompiledShader shader;
+    size_t bytes = 0;
+    std::list<SpirvCacheKey>::iterator use;  // its place in lru_
+  };
+  // Keeps `shader` in memory as the most recently used, then evicts down to the budget.
+  // Called with mutex_ held.
+  void remember(const SpirvCacheKey& key, const CompiledShader& shader);
   std::optional<CompiledShader> load_file(const SpirvCacheKey& key);
   void write_file(const SpirvCacheKey& key, const CompiledShader& shader);
 
   std::filesystem::path directory_;
   mutable std::mutex mutex_;
-  std::unordered_map<SpirvCacheKey, CompiledShader, KeyHash> memory_;
+  size_t memory_budget_;
+  std::unordered_map<SpirvCacheKey, Entry, KeyHash> memory_;
+  std::list<SpirvCacheKey> lru_;  // most recently used first
   SpirvCacheStats stats_;
 };
 
