@@ -192,8 +192,11 @@ TEST(FxkitCompile, AWarmCacheNeverStartsGlslang) {
   json second = json::parse(warm.out);
   EXPECT_FALSE(second["glslang_started"].get<bool>());
   ASSERT_EQ(second["shaders"].size(), first["shaders"].size());
-  for (const json& s : second["shaders"])
-    if (s["stage"].is_string()) EXPECT_TRUE(s["cached"].get<bool>()) << s.dump();
+  for (const json& s : second["shaders"]) {
+    if (s["stage"].is_string()) {
+      EXPECT_TRUE(s["cached"].get<bool>()) << s.dump();
+    }
+  }
   fs::remove_all(cache);
 }
 
