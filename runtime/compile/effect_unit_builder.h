@@ -169,6 +169,12 @@ class EffectUnitBuilder {
   std::vector<std::string> glsl_names_;
   std::vector<std::string> interfaces_;           // fx_5_0 interface type names
   std::vector<std::string> interface_instances_;  // globals of an interface type
+  // The pass and technique whose states are being resolved (assembly reads their constants,
+  // textures and precision annotation).
+  const ast::Pass* pass_ = nullptr;
+  const ast::Technique* technique_ = nullptr;
+  // `asm { }`: translated to HLSL through fx/legacy/assembly.h.
+  bool assembly(const ast::Expr& e, StageUnit& stage);
 };
 
 }  // namespace fx

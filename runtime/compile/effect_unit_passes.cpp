@@ -7,6 +7,7 @@
 
 #include "effect_unit_builder.h"
 #include "fx/ascii_case.h"
+#include "fx/legacy/assembly.h"
 #include "fx/state_table.h"
 
 namespace fx {
@@ -24,7 +25,9 @@ void EffectUnitBuilder::collect_passes() {
 
 void EffectUnitBuilder::add_technique(const ast::Technique& t, const std::string& group, uint32_t index) {
   uint32_t pass_index = 0;
+  technique_ = &t;
   for (const ast::Pass& p : t.passes) {
+    pass_ = &p;
     EffectPass pass;
     pass.group = group;
     pass.technique = t.name.empty() ? "technique" + std::to_string(index) : t.name;
@@ -124,13 +127,51 @@ bool EffectUnitBuilder::resolve(const ast::Expr& e, StageUnit& stage, int depth)
       for (const ast::ExprPtr& a : e.args) names.push_back(a->text);
       return glsl(stage, std::move(names));
     }
-    case ast::ExprKind::asm_block:
-      stage.kind = StageSourceKind::assembly;
-      stage.unsupported = "shader model 1 assembly (asm { }) is not compiled; the legacy path emulates it";
-      return true;
+    case ast::ExprKind::asm_block: return assembly(e, stage);
     case ast::ExprKind::index: return shader_array(e, stage, depth);
     default: return invalid(stage, "the value does not name a shader");
   }
+}
+
+namespace {
+
+// `bool Ps1xPrecision = true;` among `list`.
+bool precision_annotation(const ast::List<ast::Annotation>& list) {
+  for (const ast::Annotation& a : list)
+    if (iequals(a.name, "Ps1xPrecision") && a.value && a.value->number != 0 &&
+        (a.value->kind == ast::ExprKind::bool_literal || a.value->kind == ast::ExprKind::int_literal))
+      return true;
+  return false;
+}
+
+}  // namespace
+
+bool EffectUnitBuilder::assembly(const ast::Expr& e, StageUnit& stage) {
+  stage.kind = StageSourceKind::assembly;
+  if (stage.stage != ShaderStage::vertex && stage.stage != ShaderStage::fragment)
+    return invalid(stage, "shader model 1 assembly is a vertex or pixel shader");
+  std::optional<legacy::AsmProgram> program = legacy::parse_assembly(effect_, e.code, e.decl_code, sink_);
+  if (!program) return invalid(stage, "the assembly has errors");
+  const bool pixel = stage.stage == ShaderStage::fragment;
+  if (program->version.pixel != pixel)
+    return invalid(stage, std::string("a ") + (pixel ? "pixel" : "vertex") + " shader state holds " +
+                              program->version.spelled() + " assembly");
+  static const ast::Pass no_pass{};
+  legacy::AssemblyBindings bindings = legacy::bind_pass_states(pass_ ? *pass_ : no_pass, pixel, variables_, sink_);
+  legacy::AssemblyOptions options;
+  options.hardware_precision = u_.options_.ps1x_precision || (technique_ && precision_annotation(technique_->annotations)) ||
+                               (pass_ && precision_annotation(pass_->annotations));
+  std::optional<legacy::AssemblyTranslation> t = legacy::translate_assembly(*program, bindings, options, sink_);
+  if (!t) return invalid(stage, "the assembly has errors");
+  stage.profile = std::string(pixel ? "ps_" : "vs_") + std::to_string(program->version.major) + "_" +
+                  std::to_string(program->version.minor);
+  stage.entry_point = t->entry_point;
+  // glslang's messages about the translation point at the asm block.
+  PresumedLocation at = sm_.presumed(e.range.begin);
+  stage.translated = (at.valid() ? detail::line_directive(at.line, at.file) + "\n" : std::string()) + t->hlsl;
+  stage.emulation = std::move(t->emulation);
+  if (options.hardware_precision && pixel) stage.emulation += ", ps.1.x precision modelled";
+  return true;
 }
 
 bool EffectUnitBuilder::shader_array(const ast::Expr& e, StageUnit& stage, int depth) {

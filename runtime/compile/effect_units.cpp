@@ -301,6 +301,12 @@ std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
         if (w.function == stage.function && w.arguments == stage.arguments) u.source += w.text;
     return u;
   }
+  if (stage.kind == StageSourceKind::assembly && !stage.translated.empty()) {
+    u.language = ShaderLanguage::hlsl;
+    u.profile = stage.stage == ShaderStage::vertex ? "vs_3_0" : "ps_3_0";
+    u.source = stage.translated;
+    return u;
+  }
   if (stage.kind != StageSourceKind::glsl) return std::nullopt;
   u.language = ShaderLanguage::glsl;
   u.profile = stage.profile;

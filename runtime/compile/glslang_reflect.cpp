@@ -183,6 +183,9 @@ ShaderReflection reflect_program(const glslang::TProgram& program, EShLanguage s
       v.location = location_of(*t);
       v.type = reflected_type(*t);
       if (auto it = semantics.find(v.location); it != semantics.end()) v.semantic = it->second;
+      // spirv-opt's legalization drops the semantic decoration of an input the shader never
+      // reads, but the variable stays in the interface; glslang's type still names it.
+      else if (t->getQualifier().semanticName) v.semantic = t->getQualifier().semanticName;
       vars.push_back(std::move(v));
     }
     std::sort(vars.begin(), vars.end(),

@@ -86,6 +86,7 @@ class TechniqueValidator {
     check_requires(technique);
     out.reasons = reasons_.take();
     out.valid = out.reasons.empty();
+    out.emulation = std::move(emulation_);
     return out;
   }
 
@@ -151,6 +152,10 @@ class TechniqueValidator {
         }
         require_profile(profile, b.range);
         if (b.stage == PassStage::pixel && profile < "ps_1_4") count_texture_registers(b);
+        if (caps_.generation == CapsGeneration::vulkan) {
+          std::string line = "emulated: " + version + " assembly translated to HLSL";
+          if (std::find(emulation_.begin(), emulation_.end(), line) == emulation_.end()) emulation_.push_back(line);
+        }
         return;
       }
       case ShaderSource::glsl_blocks: {
@@ -281,8 +286,11 @@ class TechniqueValidator {
     profile_rejected_ = false;
     fixed_function_reason_ = kNone;
     for (const ShaderBinding& b : pass.shaders) check_shader(b);
+    const ShaderBinding* pixel = pass.shader(PassStage::pixel);
+    const bool pixel_shader = pixel && pixel->source != ShaderSource::null;
     for (const ResolvedState& s : pass.states) {
       if (!s.info) continue;
+      if (pixel_shader && pixel_shader_replaces_or_reads(*s.info)) continue;  // D3D9 ignores them then
       if (s.info->vulkan == VulkanMeaning::fixed_function) {
         check_fixed_function(s);
         continue;
@@ -329,6 +337,7 @@ class TechniqueValidator {
   const DeviceCaps& caps_;
   const TechniqueValidationOptions& options_;
   Rejections reasons_;
+  std::vector<std::string> emulation_;
   uint32_t textures_ = 0;        // texture stages the current pass uses
   SourceRange textures_range_;   // the state or shader that uses the last one
   bool profile_rejected_ = false;  // the current pass has a shader the device cannot run

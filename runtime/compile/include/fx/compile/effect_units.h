@@ -21,7 +21,7 @@ namespace fx {
 enum class StageSourceKind : uint8_t {
   hlsl,      // `compile vs_2_0 VS()`, `CompileShader(vs_4_0, VS())`, a shader variable
   glsl,      // `VertexShader = Block;` or `= { Common, Block };`
-  assembly,  // `asm { }` / `decl { } asm { }`: shader model 1 assembly, not compiled here
+  assembly,  // `asm { }` / `decl { } asm { }`: shader model 1 assembly, translated to HLSL
   invalid,   // the stage names something that does not exist (reported as a diagnostic)
 };
 const char* to_string(StageSourceKind kind);
@@ -35,7 +35,11 @@ struct StageUnit {
   std::vector<std::string> glsl_blocks; // GLSL: the blocks, in order
   std::vector<std::string> arguments;   // compile-time arguments, spelled as HLSL
   std::string entry_point;              // the unit's entry: "PS", "PS__fx_args" or "main"
-  std::string unsupported;              // why no unit is built (assembly, invalid)
+  std::string unsupported;              // why no unit is built (invalid)
+  // Assembly: the HLSL it was translated to (fx/legacy/assembly.h) and what emulates it
+  // ("ps.1.1 assembly translated to HLSL"); `profile` is the assembly's ("ps_1_1").
+  std::string translated;
+  std::string emulation;
   SourceRange range;                    // the state assignment naming the shader
   // A shader array indexed in the pass (`VertexShader = (VSArray[VSIndices[ShaderIndex]]);`,
   // as the XNA stock effects choose their shader permutations): every element in order, and
@@ -67,6 +71,10 @@ struct EffectUnitOptions {
   // also given to glslang so code that tests them after the effect preprocessor (GLSL
   // blocks with their own #if) sees them too.
   std::vector<ShaderDefine> defines;
+  // Models ps.1.x register range and precision in translated assembly pixel shaders
+  // (AssemblyOptions::hardware_precision) for every technique; a technique or pass turns it
+  // on for itself with the annotation `bool Ps1xPrecision = true;`.
+  bool ps1x_precision = false;
 };
 
 // The translation units of one effect. The shared HLSL text is built once, in the
