@@ -4,22 +4,12 @@
 // and each generated vertex shader links with its pixel shader by semantic.
 #include <gtest/gtest.h>
 
-#include "fx/compile/program_link.h"
-#include "fx/compile/shader_compiler.h"
-#include "fx/legacy/fixed_function.h"
+#include "fixed_function_rig.h"
 
 namespace fx {
 namespace {
 
-TranslationUnit unit(const FixedFunctionShader& s, ShaderStage stage) {
-  TranslationUnit u;
-  u.source = s.source;
-  u.stage = stage;
-  u.entry_point = s.entry;
-  u.profile = s.profile;
-  u.name = "fixed_function.hlsl";
-  return u;
-}
+using vk::testing::unit;
 
 // Compiles both stages (SPIR-V validated by ShaderCompiler) and links them; "" when fine.
 std::string build(const FixedFunctionState& s) {

@@ -15,6 +15,17 @@
 
 namespace fx::vk::testing {
 
+// A generated shader as the compiler's input.
+inline TranslationUnit unit(const FixedFunctionShader& s, ShaderStage stage) {
+  TranslationUnit u;
+  u.source = s.source;
+  u.stage = stage;
+  u.entry_point = s.entry;
+  u.profile = s.profile;
+  u.name = "fixed_function.hlsl";
+  return u;
+}
+
 // One vertex of the rig's quads: object-space position, normal, both colours, uv.
 struct FixedVertex {
   float x, y, z, nx, ny, nz;
@@ -52,15 +63,6 @@ class FixedFunctionRig {
   // Compiles and links the generated shaders of `state`; false (with a failure) when they do not.
   bool build(const FixedFunctionState& state) {
     ShaderCompiler compiler;
-    auto unit = [](const FixedFunctionShader& s, ShaderStage stage) {
-      TranslationUnit u;
-      u.source = s.source;
-      u.stage = stage;
-      u.entry_point = s.entry;
-      u.profile = s.profile;
-      u.name = "fixed_function.hlsl";
-      return u;
-    };
     program_ = std::make_unique<TestProgram>();
     program_->vs = compiler.compile(unit(generate_fixed_function_vertex_shader(state), ShaderStage::vertex));
     program_->ps = compiler.compile(unit(generate_fixed_function_pixel_shader(state), ShaderStage::fragment));
