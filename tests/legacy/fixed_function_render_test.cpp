@@ -205,6 +205,14 @@ TEST_F(FixedFunctionRender, SeedListings) {
   expect_matches_model(specular, "specular emboss");
 }
 
+TEST_F(FixedFunctionRender, PreModulateMultipliesByTheNextStagesTexture) {
+  FixedFunctionState s = one_stage(TextureOp::premodulate, TextureOp::premodulate, {ta::current, ta::texture, ta::current},
+                                   {ta::current, ta::texture, ta::current});
+  s.stages[1] = one_stage(TextureOp::add, TextureOp::modulate, {ta::current, ta::diffuse, ta::current},
+                          {ta::current, ta::texture, ta::current}).stages[0];
+  expect_matches_model(s, "PreModulate");
+}
+
 TEST_F(FixedFunctionRender, BumpEnvironmentMapMovesTheNextStagesLookup) {
   bump_bytes_ = true;
   for (TextureOp op : {TextureOp::bump_env_map, TextureOp::bump_env_map_luminance}) {

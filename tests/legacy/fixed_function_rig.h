@@ -33,8 +33,9 @@ struct FixedVertex {
   float u, v;
 };
 
-inline VertexLayout fixed_vertex_layout() {
-  return {{{"POSITION", VK_FORMAT_R32G32B32_SFLOAT, 0, 0},
+// With `pretransformed`, POSITION is x, y, z and rhw (rhw in the nx slot).
+inline VertexLayout fixed_vertex_layout(bool pretransformed = false) {
+  return {{{"POSITION", pretransformed ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R32G32B32_SFLOAT, 0, 0},
            {"NORMAL", VK_FORMAT_R32G32B32_SFLOAT, 12, 0},
            {"COLOR0", VK_FORMAT_R32G32B32A32_SFLOAT, 24, 0},
            {"COLOR1", VK_FORMAT_R32G32B32A32_SFLOAT, 40, 0},
@@ -60,12 +61,15 @@ class FixedFunctionRig {
                                              VK_FORMAT_R32G32B32A32_SFLOAT);
   }
 
-  // Compiles and links the generated shaders of `state`; false (with a failure) when they do not.
-  bool build(const FixedFunctionState& state) {
+  // Compiles and links the generated shaders of `state` (or the generated vertex shader and
+  // `pixel_shader`, entry PS); false (with a failure) when they do not.
+  bool build(const FixedFunctionState& state, const std::string& pixel_shader = {}) {
     ShaderCompiler compiler;
     program_ = std::make_unique<TestProgram>();
     program_->vs = compiler.compile(unit(generate_fixed_function_vertex_shader(state), ShaderStage::vertex));
-    program_->ps = compiler.compile(unit(generate_fixed_function_pixel_shader(state), ShaderStage::fragment));
+    program_->ps = compiler.compile(unit(pixel_shader.empty() ? generate_fixed_function_pixel_shader(state)
+                                                              : FixedFunctionShader{pixel_shader, "PS", "ps_3_0"},
+                                         ShaderStage::fragment));
     EXPECT_TRUE(program_->vs.ok && program_->ps.ok) << program_->vs.info_log << program_->ps.info_log;
     if (!program_->vs.ok || !program_->ps.ok) return false;
     DiagnosticSink sink;
@@ -75,7 +79,7 @@ class FixedFunctionRig {
     EXPECT_TRUE(program.has_value()) << describe(sink);
     if (!program) return false;
     program_->program = std::move(*program);
-    input_ = match_vertex_layout(fixed_vertex_layout(), program_->program.vertex_inputs(), sink);
+    input_ = match_vertex_layout(fixed_vertex_layout(state.pretransformed), program_->program.vertex_inputs(), sink);
     EXPECT_TRUE(input_.has_value()) << describe(sink);
     resources_ = std::make_unique<PassResources>(program_->program);
     return input_.has_value();

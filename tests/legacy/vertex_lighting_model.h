@@ -43,7 +43,7 @@ struct VertexIn {
 struct VertexOut {
   Color diffuse, specular;
   double fog = 1;
-  Vec3 view_position;
+  Vec3 view_position, view_normal;
 };
 
 inline VertexOut process_vertex(const FixedFunctionState& s, const VertexIn& in) {
@@ -68,6 +68,7 @@ inline VertexOut process_vertex(const FixedFunctionState& s, const VertexIn& in)
   for (int c = 0; c < 3; ++c)
     for (int k = 0; k < 3; ++k) n[c] += in.normal[k] * cof[k * 3 + c] / det;
   if (s.normalize_normals) n = normalize(n);
+  out.view_normal = n;
 
   if (!s.lighting) {
     out.diffuse = in.diffuse;
@@ -128,6 +129,33 @@ inline VertexOut process_vertex(const FixedFunctionState& s, const VertexIn& in)
     }
   }
   return out;
+}
+
+// Texture coordinates of a stage (D3D "Texture Coordinate Processing"): the vertex's set
+// extended to (u, v, 1, 0), or generated in camera space (the normal; the position; the
+// reflection R = I - 2 (N.I) N of the eye ray I = normalize(position), (0, 0, 1) with a
+// non-local viewer; the sphere map (Rx / m + 1/2, Ry / m + 1/2), m = 2 sqrt(Rx^2 + Ry^2 +
+// (Rz + 1)^2)), then times the texture transform when its count is not zero.
+inline std::array<double, 4> texture_coordinates(const FixedFunctionState& s, const TextureStageState& st,
+                                                 const VertexOut& v, double u, double w) {
+  const Vec3 n = v.view_normal, p = v.view_position;
+  std::array<double, 4> tc{u, w, 1, 0};
+  const Vec3 i = s.local_viewer ? normalize(p) : Vec3{0, 0, 1};
+  const double ni = dot(n, i);
+  const Vec3 r{i[0] - 2 * ni * n[0], i[1] - 2 * ni * n[1], i[2] - 2 * ni * n[2]};
+  switch (st.tex_coord_index & 0xFFFF0000u) {
+    case texcoord_gen::camera_space_normal: tc = {n[0], n[1], n[2], 1}; break;
+    case texcoord_gen::camera_space_position: tc = {p[0], p[1], p[2], 1}; break;
+    case texcoord_gen::camera_space_reflection_vector: tc = {r[0], r[1], r[2], 1}; break;
+    case texcoord_gen::sphere_map: {
+      const double m = 2 * std::sqrt(r[0] * r[0] + r[1] * r[1] + (r[2] + 1) * (r[2] + 1));
+      tc = {r[0] / m + 0.5, r[1] / m + 0.5, 1, 1};
+      break;
+    }
+    default: break;
+  }
+  if ((st.texture_transform_flags & texture_transform::count_mask) != 0) tc = times(tc, st.texture_transform.value);
+  return tc;
 }
 
 }  // namespace fx::ff_model
