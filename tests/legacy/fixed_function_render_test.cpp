@@ -213,6 +213,16 @@ TEST_F(FixedFunctionRender, PreModulateMultipliesByTheNextStagesTexture) {
   expect_matches_model(s, "PreModulate");
 }
 
+TEST_F(FixedFunctionRender, ProjectedCoordinatesAreDividedByTheirLastComponent) {
+  // (u, v, 1, 0) * diag(3, 3, 3, 1) = (3u, 3v, 3): only the divide brings the lookup back to
+  // texel (x, y) (without it the repeat-addressed lookup lands on texel 3x mod 16).
+  FixedFunctionState s = one_stage(TextureOp::select_arg1, TextureOp::select_arg1, {ta::current, ta::texture, ta::current},
+                                   {ta::current, ta::texture, ta::current});
+  s.stages[0].texture_transform_flags = 3 | texture_transform::projected;
+  s.stages[0].texture_transform.value = {3, 0, 0, 0, 0, 3, 0, 0, 0, 0, 3, 0, 0, 0, 0, 1};
+  expect_matches_model(s, "Count3 | Projected");
+}
+
 TEST_F(FixedFunctionRender, BumpEnvironmentMapMovesTheNextStagesLookup) {
   bump_bytes_ = true;
   for (TextureOp op : {TextureOp::bump_env_map, TextureOp::bump_env_map_luminance}) {
