@@ -8,6 +8,7 @@
 #include "effect_unit_builder.h"
 #include "fx/ascii_case.h"
 #include "fx/legacy/assembly.h"
+#include "fx/legacy/fixed_function.h"
 #include "fx/state_table.h"
 
 namespace fx {
@@ -35,7 +36,6 @@ void EffectUnitBuilder::add_technique(const ast::Technique& t, const std::string
     pass.technique_index = index;
     pass.pass_index = pass_index++;
     pass.range = p.range;
-    bool null_pixel = false;
     for (const ast::StateAssignment& s : p.states) {
       std::optional<ShaderStage> stage = stage_of_state(s.name);
       if (!stage || !s.value) continue;
@@ -44,10 +44,7 @@ void EffectUnitBuilder::add_technique(const ast::Technique& t, const std::string
       ps.range = s.range;
       const ast::Expr* value = s.value;
       if (s.call_style) value = value->args.empty() ? nullptr : value->args[0];
-      if (!value || !resolve(*value, ps, 0)) {
-        null_pixel = null_pixel || *stage == ShaderStage::fragment;
-        continue;
-      }
+      if (!value || !resolve(*value, ps, 0)) continue;  // NULL: the fixed-function stage
       // `SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "..."))`: stream
       // output straight from a vertex shader, with no geometry stage. It is that pass's
       // vertex shader unless the pass sets one itself.
@@ -62,12 +59,20 @@ void EffectUnitBuilder::add_technique(const ast::Technique& t, const std::string
     }
     std::stable_sort(pass.stages.begin(), pass.stages.end(),
                      [](const StageUnit& a, const StageUnit& b) { return a.stage < b.stage; });
-    add_fixed_function_reasons(t, pass, null_pixel);
+    add_fixed_function_stages(t, pass);
     u_.passes_.push_back(std::move(pass));
   }
 }
 
-void EffectUnitBuilder::add_fixed_function_reasons(const ast::Technique& t, EffectPass& pass, bool null_pixel) {
+const EffectModel& EffectUnitBuilder::model() {
+  if (!model_) {
+    DiagnosticSink scratch;
+    model_ = std::make_unique<EffectModel>(build_effect_model(effect_, sm_, scratch));
+  }
+  return *model_;
+}
+
+void EffectUnitBuilder::add_fixed_function_stages(const ast::Technique& t, EffectPass& pass) {
   if (t.version != 9) return;  // technique10/11: no pixel shader means no fragment stage
   bool glsl = false, compute = false;
   for (const StageUnit& s : pass.stages) {
@@ -75,11 +80,30 @@ void EffectUnitBuilder::add_fixed_function_reasons(const ast::Technique& t, Effe
     compute = compute || s.stage == ShaderStage::compute;
   }
   if (glsl || compute) return;
-  if (!pass.find(ShaderStage::vertex))
-    pass.unsupported.push_back("fixed-function vertex processing: the pass sets no VertexShader");
-  if (!pass.find(ShaderStage::fragment))
-    pass.unsupported.push_back(std::string("fixed-function pixel processing (texture stage states): ") +
-                               (null_pixel ? "PixelShader = NULL" : "the pass sets no PixelShader"));
+  const bool vertex = pass.find(ShaderStage::vertex), pixel = pass.find(ShaderStage::fragment);
+  if (vertex && pixel) return;
+  const EffectModel& m = model();
+  if (pass.technique_index >= m.techniques.size() || pass.pass_index >= m.techniques[pass.technique_index].passes.size())
+    return;
+  DiagnosticSink scratch;  // fixed_function_state reports nothing the model did not
+  FixedFunctionState state = fixed_function_state(m, m.techniques[pass.technique_index].passes[pass.pass_index], scratch);
+  auto add = [&](ShaderStage stage, FixedFunctionShader shader, const char* what) {
+    StageUnit s;
+    s.stage = stage;
+    s.kind = StageSourceKind::fixed_function;
+    s.profile = "fixed_function";
+    s.entry_point = shader.entry;
+    s.translated = std::move(shader.source);
+    s.emulation = what;
+    s.range = pass.range;
+    pass.stages.push_back(std::move(s));
+  };
+  if (!vertex)
+    add(ShaderStage::vertex, generate_fixed_function_vertex_shader(state), "fixed-function vertex processing as generated HLSL");
+  if (!pixel)
+    add(ShaderStage::fragment, generate_fixed_function_pixel_shader(state), "fixed-function texture stages as generated HLSL");
+  std::stable_sort(pass.stages.begin(), pass.stages.end(),
+                   [](const StageUnit& a, const StageUnit& b) { return a.stage < b.stage; });
 }
 
 const ast::Variable* EffectUnitBuilder::shader_variable(std::string_view name) const {

@@ -17,6 +17,7 @@ const char* to_string(StageSourceKind kind) {
     case StageSourceKind::hlsl: return "hlsl";
     case StageSourceKind::glsl: return "glsl";
     case StageSourceKind::assembly: return "assembly";
+    case StageSourceKind::fixed_function: return "fixed_function";
     case StageSourceKind::invalid: return "invalid";
   }
   return "unknown";
@@ -301,7 +302,8 @@ std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
         if (w.function == stage.function && w.arguments == stage.arguments) u.source += w.text;
     return u;
   }
-  if (stage.kind == StageSourceKind::assembly && !stage.translated.empty()) {
+  if ((stage.kind == StageSourceKind::assembly || stage.kind == StageSourceKind::fixed_function) &&
+      !stage.translated.empty()) {
     u.language = ShaderLanguage::hlsl;
     u.profile = stage.stage == ShaderStage::vertex ? "vs_3_0" : "ps_3_0";
     u.source = stage.translated;

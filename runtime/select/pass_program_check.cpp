@@ -76,7 +76,7 @@ PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique
     if (stage.kind == StageSourceKind::invalid)
       out.reasons.push_back(reason("shader-compile-failed", stage.range, "shader does not compile: " + stage.unsupported));
   bool compiled = std::any_of(ep->stages.begin(), ep->stages.end(), [](const StageUnit& s) {
-    return s.kind == StageSourceKind::hlsl || s.kind == StageSourceKind::glsl;
+    return s.kind != StageSourceKind::invalid;
   });
   if (!compiled) return out;
 

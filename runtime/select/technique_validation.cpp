@@ -152,10 +152,7 @@ class TechniqueValidator {
         }
         require_profile(profile, b.range);
         if (b.stage == PassStage::pixel && profile < "ps_1_4") count_texture_registers(b);
-        if (caps_.generation == CapsGeneration::vulkan) {
-          std::string line = "emulated: " + version + " assembly translated to HLSL";
-          if (std::find(emulation_.begin(), emulation_.end(), line) == emulation_.end()) emulation_.push_back(line);
-        }
+        if (caps_.generation == CapsGeneration::vulkan) note_emulation("emulated: " + version + " assembly translated to HLSL");
         return;
       }
       case ShaderSource::glsl_blocks: {
@@ -174,6 +171,11 @@ class TechniqueValidator {
       }
     }
   }
+
+  void note_emulation(const std::string& line) {
+    if (std::find(emulation_.begin(), emulation_.end(), line) == emulation_.end()) emulation_.push_back(line);
+  }
+  static int technique_version(const TechniqueInfo& t) { return t.version; }
 
   // ps.1.1-1.3 sample stage n into register tn: the highest t register is the stage count.
   void count_texture_registers(const ShaderBinding& b) {
@@ -286,6 +288,14 @@ class TechniqueValidator {
     profile_rejected_ = false;
     fixed_function_reason_ = kNone;
     for (const ShaderBinding& b : pass.shaders) check_shader(b);
+    if (caps_.generation == CapsGeneration::vulkan && technique_version(technique) == 9) {
+      auto has = [&](PassStage s) {
+        const ShaderBinding* b = pass.shader(s);
+        return b && b->source != ShaderSource::null;
+      };
+      if (!has(PassStage::vertex)) note_emulation("emulated: fixed-function vertex processing as generated HLSL");
+      if (!has(PassStage::pixel)) note_emulation("emulated: fixed-function texture stages as generated HLSL");
+    }
     const ShaderBinding* pixel = pass.shader(PassStage::pixel);
     const bool pixel_shader = pixel && pixel->source != ShaderSource::null;
     for (const ResolvedState& s : pass.states) {

@@ -189,6 +189,8 @@ DeviceCaps derive_caps(VulkanFacts facts) {
   f.float_textures = (half4 && half4->sampled) || (float4 && float4->sampled);
   f.anisotropic_filtering = has(caps.vulkan.features, "samplerAnisotropy");
   f.separate_alpha_blend = true;  // core: separate colour/alpha blend factors
+  // Texture stages (every D3DTOP, DOTPRODUCT3 and SUBTRACT included) are generated shaders.
+  f.fixed_function_stages = f.dot3 = f.subtract = true;
   f.two_sided_stencil = true;     // core: front and back stencil state
   return caps;
 }

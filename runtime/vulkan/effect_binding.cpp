@@ -149,11 +149,18 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
                                                     : program.unsupported.front());
         break;
       }
-      if (!pass_info.unsupported.empty()) {
-        tech->reason = "pass '" + pass_info.name + "': " + pass_info.unsupported.front().reason;
+      // Fixed-function states are generated stages' input (fx/legacy/fixed_function.h) or,
+      // beside shaders, ignored as D3D9 ignores them: only other states stop the pass.
+      auto blocking = std::find_if(pass_info.unsupported.begin(), pass_info.unsupported.end(), [](const UnsupportedState& u) {
+        return !u.info || u.info->lands != StateLanding::fixed_function;
+      });
+      if (blocking != pass_info.unsupported.end()) {
+        tech->reason = "pass '" + pass_info.name + "': " + blocking->reason;
         break;
       }
-      if (pass_info.summary.alpha_test && pass_info.summary.alpha_compare != CompareOp::always) {
+      const StageUnit* pixel = unit->find(ShaderStage::fragment);
+      const bool generated_pixel = pixel && pixel->kind == StageSourceKind::fixed_function;  // emulates alpha test
+      if (!generated_pixel && pass_info.summary.alpha_test && pass_info.summary.alpha_compare != CompareOp::always) {
         // Emulation needs a discard spliced into the pixel shader's translation unit.
         tech->reason = "pass '" + pass_info.name + "': alpha test (AlphaTestEnable) is not emulated yet";
         break;

@@ -71,6 +71,13 @@ const SeedCase kSeeds[] = {
     {"per_pixel_lighting.fx", "specular_squaring_ps11", "specular_squaring_ps20", 77, 235},
     {"strand_aniso.fx", "strand_four_lights_ps14", "strand_four_lights", 92, 140},
     {"strand_aniso.fx", "strand_lut_ps11", "strand_lut_seed_wrap", 182, 214},
+    // Assembly vertex shaders with generated fixed-function texture stages: per-vertex
+    // lighting against per-pixel (hemisphere_vs11), the emboss techniques' grey relief
+    // (no colour map in the seed's emboss passes) against the coloured HLSL lighting.
+    {"hemisphere.fx", "hemisphere_vs11", "hemisphere_per_vertex", 64, 120},
+    {"per_pixel_lighting.fx", "dot3_multitexture", "diffuse_ps20", 18, 62},
+    {"per_pixel_lighting.fx", "emboss", "diffuse_ps20", 88, 142},
+    {"per_pixel_lighting.fx", "specular_emboss", "specular_pow_ps20", 88, 143},
 };
 
 TEST_F(AssemblySeedTest, SeedTechniquesMatchGoldenImagesAndTheirHlslSiblings) {
@@ -90,6 +97,20 @@ TEST_F(AssemblySeedTest, SeedTechniquesMatchGoldenImagesAndTheirHlslSiblings) {
     EXPECT_LE(d.mean, c.mean_bound);
     EXPECT_LE(d.p95, c.p95_bound);
   }
+}
+
+// D3DTOP_DOTPRODUCT3 then Modulate (dot3_multitexture, generated texture stages) is the
+// same arithmetic as diffuse_ps11's `dp3_sat r1, t1_bx2, v0_bx2; mul r0, t0, r1`
+// (translated assembly) with the same vertex shader: the two paths agree.
+TEST_F(AssemblySeedTest, Dot3StagesAgreeWithTheirPs11Listing) {
+  auto stages = bind_effect(ctx(), effects_dir() + "/per_pixel_lighting.fx", "dot3_multitexture", "sphere", 128);
+  auto listing = bind_effect(ctx(), effects_dir() + "/per_pixel_lighting.fx", "diffuse_ps11", "sphere", 128);
+  ASSERT_TRUE(stages && listing);
+  auto a = stages->render(), b = listing->render();
+  ASSERT_TRUE(a && b);
+  SiblingDiff d = sibling_diff(*a, *b);
+  std::printf("[ measured ] dot3_multitexture vs diffuse_ps11: mean %.3f, max %d levels\n", d.mean, d.max);
+  EXPECT_LE(d.max, 1);
 }
 
 // x^16 by four squarings (the seed's specular exponent) of an 8-bit input ramp: with the

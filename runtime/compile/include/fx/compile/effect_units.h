@@ -22,6 +22,7 @@ enum class StageSourceKind : uint8_t {
   hlsl,      // `compile vs_2_0 VS()`, `CompileShader(vs_4_0, VS())`, a shader variable
   glsl,      // `VertexShader = Block;` or `= { Common, Block };`
   assembly,  // `asm { }` / `decl { } asm { }`: shader model 1 assembly, translated to HLSL
+  fixed_function,  // a D3D9 pass with no vertex or pixel shader: generated HLSL (fixed_function.h)
   invalid,   // the stage names something that does not exist (reported as a diagnostic)
 };
 const char* to_string(StageSourceKind kind);
@@ -36,8 +37,9 @@ struct StageUnit {
   std::vector<std::string> arguments;   // compile-time arguments, spelled as HLSL
   std::string entry_point;              // the unit's entry: "PS", "PS__fx_args" or "main"
   std::string unsupported;              // why no unit is built (invalid)
-  // Assembly: the HLSL it was translated to (fx/legacy/assembly.h) and what emulates it
-  // ("ps.1.1 assembly translated to HLSL"); `profile` is the assembly's ("ps_1_1").
+  // Assembly and fixed-function stages: the generated HLSL (fx/legacy/assembly.h,
+  // fx/legacy/fixed_function.h) and what emulates it ("ps.1.1 assembly translated to
+  // HLSL"); `profile` is the assembly's ("ps_1_1"), "fixed_function" for generated stages.
   std::string translated;
   std::string emulation;
   SourceRange range;                    // the state assignment naming the shader
@@ -57,8 +59,8 @@ struct EffectPass {
   std::string pass;       // name; "pass<j>" when unnamed
   uint32_t technique_index = 0, pass_index = 0;  // technique index counts all techniques
   std::vector<StageUnit> stages;
-  // Why the pass cannot run as written beyond its stages: fixed-function vertex or pixel
-  // processing in D3D9 techniques (emulated by the legacy path, not compiled here).
+  // Why the pass cannot run as written beyond its stages (empty since fixed-function
+  // vertex and pixel processing are generated as stages of kind fixed_function).
   std::vector<std::string> unsupported;
   SourceRange range;
 
