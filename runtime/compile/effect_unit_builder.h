@@ -125,7 +125,7 @@ class EffectUnitBuilder {
 
   // D3D9 passes without a vertex or pixel shader use the fixed-function pipeline there: its
   // stages are generated from the pass's states (fx/legacy/fixed_function.h).
-  void add_fixed_function_stages(const ast::Technique& t, EffectPass& pass);
+  void add_fixed_function_stages(const ast::Technique& t, EffectPass& pass, bool null_pixel);
   // The effect model (built once, on the first fixed-function pass; its diagnostics are the
   // model's own to report, so they go to a scratch sink here).
   const EffectModel& model();

@@ -36,6 +36,7 @@ void EffectUnitBuilder::add_technique(const ast::Technique& t, const std::string
     pass.technique_index = index;
     pass.pass_index = pass_index++;
     pass.range = p.range;
+    bool null_pixel = false;
     for (const ast::StateAssignment& s : p.states) {
       std::optional<ShaderStage> stage = stage_of_state(s.name);
       if (!stage || !s.value) continue;
@@ -44,7 +45,10 @@ void EffectUnitBuilder::add_technique(const ast::Technique& t, const std::string
       ps.range = s.range;
       const ast::Expr* value = s.value;
       if (s.call_style) value = value->args.empty() ? nullptr : value->args[0];
-      if (!value || !resolve(*value, ps, 0)) continue;  // NULL: the fixed-function stage
+      if (!value || !resolve(*value, ps, 0)) {  // NULL: the fixed-function stage
+        null_pixel = null_pixel || *stage == ShaderStage::fragment;
+        continue;
+      }
       // `SetGeometryShader(ConstructGSWithSO(CompileShader(vs_4_0, VS()), "..."))`: stream
       // output straight from a vertex shader, with no geometry stage. It is that pass's
       // vertex shader unless the pass sets one itself.
@@ -59,7 +63,7 @@ void EffectUnitBuilder::add_technique(const ast::Technique& t, const std::string
     }
     std::stable_sort(pass.stages.begin(), pass.stages.end(),
                      [](const StageUnit& a, const StageUnit& b) { return a.stage < b.stage; });
-    add_fixed_function_stages(t, pass);
+    add_fixed_function_stages(t, pass, null_pixel);
     u_.passes_.push_back(std::move(pass));
   }
 }
@@ -72,7 +76,7 @@ const EffectModel& EffectUnitBuilder::model() {
   return *model_;
 }
 
-void EffectUnitBuilder::add_fixed_function_stages(const ast::Technique& t, EffectPass& pass) {
+void EffectUnitBuilder::add_fixed_function_stages(const ast::Technique& t, EffectPass& pass, bool null_pixel) {
   if (t.version != 9) return;  // technique10/11: no pixel shader means no fragment stage
   bool glsl = false, compute = false;
   for (const StageUnit& s : pass.stages) {
@@ -80,8 +84,21 @@ void EffectUnitBuilder::add_fixed_function_stages(const ast::Technique& t, Effec
     compute = compute || s.stage == ShaderStage::compute;
   }
   if (glsl || compute) return;
-  const bool vertex = pass.find(ShaderStage::vertex), pixel = pass.find(ShaderStage::fragment);
-  if (vertex && pixel) return;
+  const StageUnit* vs = pass.find(ShaderStage::vertex);
+  const StageUnit* ps = pass.find(ShaderStage::fragment);
+  if (vs && ps) return;
+  // Generated beside assembly or another generated stage, whose interface is D3D's full
+  // register set. Beside an HLSL stage the generated one would have to read (or write)
+  // exactly what that stage writes (or reads), which the generator does not know yet.
+  auto beside_hlsl = [](const StageUnit* other) { return other && other->kind != StageSourceKind::assembly; };
+  if (beside_hlsl(vs) || beside_hlsl(ps)) {
+    if (!vs) pass.unsupported.push_back("fixed-function vertex processing: the pass sets no VertexShader");
+    if (!ps)
+      pass.unsupported.push_back(std::string("fixed-function pixel processing (texture stage states): ") +
+                                 (null_pixel ? "PixelShader = NULL" : "the pass sets no PixelShader"));
+    return;
+  }
+  const bool vertex = vs != nullptr, pixel = ps != nullptr;
   const EffectModel& m = model();
   if (pass.technique_index >= m.techniques.size() || pass.pass_index >= m.techniques[pass.technique_index].passes.size())
     return;

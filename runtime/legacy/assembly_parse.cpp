@@ -248,14 +248,34 @@ class LineParser {
   DiagnosticSink& sink_;
 };
 
-// The lines of a token span: a token at a line start, or after `;`, begins a new one.
+bool is_opcode(const Token& t) {
+  if (!t.is(TokenKind::identifier)) return false;
+  std::string_view w = t.text();
+  return find_op(ascii_lower(w.substr(0, w.find('_')))) != nullptr;
+}
+
+// Whether token i begins an instruction written on the same line as the one before it
+// (`vs.1.1 dcl_position v0 m4x4 oPos, v0, c0`): an opcode (or `+` and an opcode) that does
+// not follow a separator or a swizzle's period.
+bool starts_instruction(const std::vector<Token>& toks, uint32_t i, uint32_t begin) {
+  if (i <= begin) return false;
+  const Token& prev = toks[i - 1];
+  if (prev.is(TokenKind::comma) || prev.is(TokenKind::period) || prev.is(TokenKind::plus) ||
+      prev.is(TokenKind::minus) || prev.is(TokenKind::l_square))
+    return false;
+  if (toks[i].is(TokenKind::plus)) return i + 1 < toks.size() && is_opcode(toks[i + 1]);
+  return is_opcode(toks[i]);
+}
+
+// The instructions of a token span: a token at a line start, after `;`, or an opcode after
+// a complete instruction begins a new one.
 std::vector<Tokens> split_lines(const ast::Effect& effect, ast::TokenSpan span) {
   std::vector<Tokens> lines;
   const uint32_t last = std::min<uint32_t>(span.last, uint32_t(effect.tokens.size()));
   uint32_t begin = span.first;
   for (uint32_t i = span.first; i <= last; ++i) {
     bool end = i == last || effect.tokens[i].is(TokenKind::semi) ||
-               (i > begin && effect.tokens[i].at_line_start());
+               (i > begin && (effect.tokens[i].at_line_start() || starts_instruction(effect.tokens, i, begin)));
     if (!end) continue;
     if (i > begin) lines.emplace_back(effect.tokens.data() + begin, i - begin);
     begin = (i < last && effect.tokens[i].is(TokenKind::semi)) ? i + 1 : i;

@@ -33,6 +33,11 @@ nlohmann::json shader_json(const fx::EffectPass& pass, const fx::StageProgram& s
                       {"diagnostics", fx::render_json(s.diagnostics, sm)}};
   for (const fx::StageUnit& p : pass.stages)
     if (p.stage == s.stage && !p.choices.empty()) j["selector"] = p.selector;
+  // A generated fixed-function stage has no profile of its own: the pass sets no shader.
+  if (stage && stage->kind == fx::StageSourceKind::fixed_function) {
+    j["profile"] = nullptr;
+    j["generated"] = stage->emulation;
+  }
   return j;
 }
 

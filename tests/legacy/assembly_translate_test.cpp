@@ -123,6 +123,16 @@ TEST(AssemblyTranslation, ErrorsPointAtTheInstruction) {
   }
 }
 
+TEST(AssemblyTranslation, InstructionsMayShareALine) {
+  auto u = units_of("technique t { pass p {\n  VertexShader = asm { vs.1.1 dcl_position v0 m4x4 oPos, v0, c0 };\n"
+                    "  PixelShader = asm { ps.1.1 mov r1, v0 +mov r1.a, v0 mul r0, r1, r1 };\n} }\n");
+  ASSERT_FALSE(u->diags.has_errors()) << u->errors();
+  const StageUnit* ps = u->units->passes()[0].find(ShaderStage::fragment);
+  ASSERT_TRUE(ps);
+  EXPECT_EQ(ps->kind, StageSourceKind::assembly);
+  EXPECT_NE(ps->translated.find("r0 = fx_a;"), std::string::npos) << ps->translated;
+}
+
 TEST(AssemblyTranslation, EverySeedListingTranslates) {
   size_t stages = 0;
   for (const char* file : {"brdf.fx", "hemisphere.fx", "per_pixel_lighting.fx", "strand_aniso.fx"}) {

@@ -59,8 +59,9 @@ struct EffectPass {
   std::string pass;       // name; "pass<j>" when unnamed
   uint32_t technique_index = 0, pass_index = 0;  // technique index counts all techniques
   std::vector<StageUnit> stages;
-  // Why the pass cannot run as written beyond its stages (empty since fixed-function
-  // vertex and pixel processing are generated as stages of kind fixed_function).
+  // Why the pass cannot run as written beyond its stages: fixed-function vertex or pixel
+  // processing beside an HLSL stage (beside assembly, or with no shader at all, it is
+  // generated as a stage of kind fixed_function).
   std::vector<std::string> unsupported;
   SourceRange range;
 
