@@ -191,6 +191,13 @@ bool EffectUnitBuilder::assembly(const ast::Expr& e, StageUnit& stage) {
   stage.kind = StageSourceKind::assembly;
   if (stage.stage != ShaderStage::vertex && stage.stage != ShaderStage::fragment)
     return invalid(stage, "shader model 1 assembly is a vertex or pixel shader");
+  // Shader model 2 and 3 assembly is valid D3D9 that fxkit does not translate: the stage
+  // says so, with no error in the effect.
+  if (std::optional<legacy::AsmVersion> v = legacy::assembly_version(effect_, e.code); v && v->major != 1) {
+    stage.unsupported = std::string(v->pixel ? "ps_" : "vs_") + std::to_string(v->major) + "_" +
+                        std::to_string(v->minor) + " assembly is not translated (shader model 1 only)";
+    return true;
+  }
   std::optional<legacy::AsmProgram> program = legacy::parse_assembly(effect_, e.code, e.decl_code, sink_);
   if (!program) return invalid(stage, "the assembly has errors");
   const bool pixel = stage.stage == ShaderStage::fragment;

@@ -322,6 +322,13 @@ std::string AsmVersion::spelled() const {
   return std::string(pixel ? "ps." : "vs.") + std::to_string(major) + "." + std::to_string(minor);
 }
 
+std::optional<AsmVersion> assembly_version(const ast::Effect& effect, ast::TokenSpan code) {
+  std::vector<Tokens> lines = split_lines(effect, code);
+  AsmVersion v;
+  if (lines.empty() || !parse_version(lines.front(), v)) return std::nullopt;
+  return v;
+}
+
 std::string dx8_input_semantic(uint32_t reg) {
   switch (reg) {
     case 0: return "POSITION";

@@ -173,7 +173,8 @@ int run_compile(const CompileArgs& args) {
     };
     for (const std::string& reason : pass.unsupported) not_compiled(nullptr, reason, pass.range);
     for (const fx::StageUnit& stage : pass.stages)
-      if (stage.kind == fx::StageSourceKind::invalid)
+      if (stage.kind == fx::StageSourceKind::invalid ||
+          (stage.kind == fx::StageSourceKind::assembly && stage.translated.empty()))
         not_compiled(&stage, std::string(fx::to_string(stage.stage)) + " stage: " + stage.unsupported, stage.range);
   }
   if (!matched) {

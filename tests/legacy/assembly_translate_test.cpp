@@ -109,7 +109,7 @@ TEST(AssemblyTranslation, ErrorsPointAtTheInstruction) {
       {"ps.1.4\n  texld r0, t0\n  phase\n  phase", "asm.fx:6:3: error: a shader has one 'phase'"},
       {"ps.1.1\n  texld r0, t0", "asm.fx:4:3: error: 'texld' is not a ps.1.1 instruction"},
       {"ps.1.1\n  texm3x2tex t1, t0", "asm.fx:4:3: error: 'texm3x2tex' must follow one texm3x2pad"},
-      {"ps.2.0\n  mov r0, v0", "asm.fx:3:5: error: expected a version"},
+      {"xs.1.1\n  mov r0, v0", "asm.fx:3:5: error: expected a version"},
       {"ps.1.1\n  def c0, 1, 2, x, 4", "asm.fx:4:17: error: expected a number"},
   };
   for (const BadCase& c : cases) {
@@ -121,6 +121,16 @@ TEST(AssemblyTranslation, ErrorsPointAtTheInstruction) {
     ASSERT_TRUE(ps);
     EXPECT_EQ(ps->kind, StageSourceKind::invalid);
   }
+}
+
+TEST(AssemblyTranslation, LaterShaderModelsAreNotTranslatedButNotErrors) {
+  auto u = units_of("technique t { pass p {\n  PixelShader = asm {\n    ps_2_0\n    dcl t0.xy\n    mov oC0, t0\n  };\n} }\n");
+  EXPECT_FALSE(u->diags.has_errors()) << u->errors();
+  const StageUnit* ps = u->units->passes()[0].find(ShaderStage::fragment);
+  ASSERT_TRUE(ps);
+  EXPECT_EQ(ps->kind, StageSourceKind::assembly);
+  EXPECT_NE(ps->unsupported.find("ps_2_0 assembly is not translated"), std::string::npos);
+  EXPECT_FALSE(u->units->unit(*ps).has_value());
 }
 
 TEST(AssemblyTranslation, InstructionsMayShareALine) {

@@ -79,6 +79,10 @@ struct AsmProgram {
 std::optional<AsmProgram> parse_assembly(const ast::Effect& effect, ast::TokenSpan code, ast::TokenSpan decl,
                                          DiagnosticSink& sink);
 
+// The version on the first line of `code` (any shader model: ps_2_0 asm is D3D9 too), or
+// nullopt when there is none.
+std::optional<AsmVersion> assembly_version(const ast::Effect& effect, ast::TokenSpan code);
+
 // The mesh semantic of vertex input register v`reg` with no `dcl`: DirectX 8's D3DVSDE
 // numbering (v0 POSITION, v3 NORMAL, v5/v6 COLOR0/1, v7 TEXCOORD0), except that v8
 // (D3DVSDE_TEXCOORD1) reads TANGENT: every DirectX 8 bump-mapping listing, the seeds
