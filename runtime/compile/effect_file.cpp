@@ -5,7 +5,10 @@ namespace fx {
 
 EffectUnitOptions effect_unit_options(const FrontEndOptions& options) {
   EffectUnitOptions unit_options;
-  for (const auto& [name, value] : options.preprocessor.defines) unit_options.defines.push_back({name, value});
+  for (const auto& [name, value] : options.preprocessor.defines) {
+    unit_options.defines.push_back({name, value});
+    if (name == kPs1xPrecisionMacro && value != "0") unit_options.ps1x_precision = true;
+  }
   return unit_options;
 }
 

@@ -3,6 +3,7 @@
 // (effect_units.cpp). Private to runtime/compile.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -11,6 +12,7 @@
 #include "effect_shader_text.h"
 #include "fx/ast.h"
 #include "fx/compile/effect_units.h"
+#include "fx/model/effect_model.h"
 #include "fx/source_manager.h"
 
 namespace fx {
@@ -121,8 +123,13 @@ class EffectUnitBuilder {
 
   void add_technique(const ast::Technique& t, const std::string& group, uint32_t index);
 
-  // D3D9 passes without a vertex or pixel shader use the fixed-function pipeline there.
-  static void add_fixed_function_reasons(const ast::Technique& t, EffectPass& pass, bool null_pixel);
+  // D3D9 passes without a vertex or pixel shader use the fixed-function pipeline there: its
+  // stages are generated from the pass's states (fx/legacy/fixed_function.h).
+  void add_fixed_function_stages(const ast::Technique& t, EffectPass& pass, bool null_pixel);
+  // The effect model (built once, on the first fixed-function pass; its diagnostics are the
+  // model's own to report, so they go to a scratch sink here).
+  const EffectModel& model();
+  std::unique_ptr<EffectModel> model_;
 
   const ast::Variable* shader_variable(std::string_view name) const;
 
@@ -169,6 +176,12 @@ class EffectUnitBuilder {
   std::vector<std::string> glsl_names_;
   std::vector<std::string> interfaces_;           // fx_5_0 interface type names
   std::vector<std::string> interface_instances_;  // globals of an interface type
+  // The pass and technique whose states are being resolved (assembly reads their constants,
+  // textures and precision annotation).
+  const ast::Pass* pass_ = nullptr;
+  const ast::Technique* technique_ = nullptr;
+  // `asm { }`: translated to HLSL through fx/legacy/assembly.h.
+  bool assembly(const ast::Expr& e, StageUnit& stage);
 };
 
 }  // namespace fx

@@ -7,6 +7,8 @@
 
 #include "effect_unit_builder.h"
 #include "fx/ascii_case.h"
+#include "fx/legacy/assembly.h"
+#include "fx/legacy/fixed_function.h"
 #include "fx/state_table.h"
 
 namespace fx {
@@ -24,7 +26,9 @@ void EffectUnitBuilder::collect_passes() {
 
 void EffectUnitBuilder::add_technique(const ast::Technique& t, const std::string& group, uint32_t index) {
   uint32_t pass_index = 0;
+  technique_ = &t;
   for (const ast::Pass& p : t.passes) {
+    pass_ = &p;
     EffectPass pass;
     pass.group = group;
     pass.technique = t.name.empty() ? "technique" + std::to_string(index) : t.name;
@@ -41,7 +45,7 @@ void EffectUnitBuilder::add_technique(const ast::Technique& t, const std::string
       ps.range = s.range;
       const ast::Expr* value = s.value;
       if (s.call_style) value = value->args.empty() ? nullptr : value->args[0];
-      if (!value || !resolve(*value, ps, 0)) {
+      if (!value || !resolve(*value, ps, 0)) {  // NULL: the fixed-function stage
         null_pixel = null_pixel || *stage == ShaderStage::fragment;
         continue;
       }
@@ -59,12 +63,20 @@ void EffectUnitBuilder::add_technique(const ast::Technique& t, const std::string
     }
     std::stable_sort(pass.stages.begin(), pass.stages.end(),
                      [](const StageUnit& a, const StageUnit& b) { return a.stage < b.stage; });
-    add_fixed_function_reasons(t, pass, null_pixel);
+    add_fixed_function_stages(t, pass, null_pixel);
     u_.passes_.push_back(std::move(pass));
   }
 }
 
-void EffectUnitBuilder::add_fixed_function_reasons(const ast::Technique& t, EffectPass& pass, bool null_pixel) {
+const EffectModel& EffectUnitBuilder::model() {
+  if (!model_) {
+    DiagnosticSink scratch;
+    model_ = std::make_unique<EffectModel>(build_effect_model(effect_, sm_, scratch));
+  }
+  return *model_;
+}
+
+void EffectUnitBuilder::add_fixed_function_stages(const ast::Technique& t, EffectPass& pass, bool null_pixel) {
   if (t.version != 9) return;  // technique10/11: no pixel shader means no fragment stage
   bool glsl = false, compute = false;
   for (const StageUnit& s : pass.stages) {
@@ -72,11 +84,43 @@ void EffectUnitBuilder::add_fixed_function_reasons(const ast::Technique& t, Effe
     compute = compute || s.stage == ShaderStage::compute;
   }
   if (glsl || compute) return;
-  if (!pass.find(ShaderStage::vertex))
-    pass.unsupported.push_back("fixed-function vertex processing: the pass sets no VertexShader");
-  if (!pass.find(ShaderStage::fragment))
-    pass.unsupported.push_back(std::string("fixed-function pixel processing (texture stage states): ") +
-                               (null_pixel ? "PixelShader = NULL" : "the pass sets no PixelShader"));
+  const StageUnit* vs = pass.find(ShaderStage::vertex);
+  const StageUnit* ps = pass.find(ShaderStage::fragment);
+  if (vs && ps) return;
+  // Generated beside assembly or another generated stage, whose interface is D3D's full
+  // register set. Beside an HLSL stage the generated one would have to read (or write)
+  // exactly what that stage writes (or reads), which the generator does not know yet.
+  auto beside_hlsl = [](const StageUnit* other) { return other && other->kind != StageSourceKind::assembly; };
+  if (beside_hlsl(vs) || beside_hlsl(ps)) {
+    if (!vs) pass.unsupported.push_back("fixed-function vertex processing: the pass sets no VertexShader");
+    if (!ps)
+      pass.unsupported.push_back(std::string("fixed-function pixel processing (texture stage states): ") +
+                                 (null_pixel ? "PixelShader = NULL" : "the pass sets no PixelShader"));
+    return;
+  }
+  const bool vertex = vs != nullptr, pixel = ps != nullptr;
+  const EffectModel& m = model();
+  if (pass.technique_index >= m.techniques.size() || pass.pass_index >= m.techniques[pass.technique_index].passes.size())
+    return;
+  DiagnosticSink scratch;  // fixed_function_state reports nothing the model did not
+  FixedFunctionState state = fixed_function_state(m, m.techniques[pass.technique_index].passes[pass.pass_index], scratch);
+  auto add = [&](ShaderStage stage, FixedFunctionShader shader, const char* what) {
+    StageUnit s;
+    s.stage = stage;
+    s.kind = StageSourceKind::fixed_function;
+    s.profile = "fixed_function";
+    s.entry_point = shader.entry;
+    s.translated = std::move(shader.source);
+    s.emulation = what;
+    s.range = pass.range;
+    pass.stages.push_back(std::move(s));
+  };
+  if (!vertex)
+    add(ShaderStage::vertex, generate_fixed_function_vertex_shader(state), "fixed-function vertex processing as generated HLSL");
+  if (!pixel)
+    add(ShaderStage::fragment, generate_fixed_function_pixel_shader(state), "fixed-function texture stages as generated HLSL");
+  std::stable_sort(pass.stages.begin(), pass.stages.end(),
+                   [](const StageUnit& a, const StageUnit& b) { return a.stage < b.stage; });
 }
 
 const ast::Variable* EffectUnitBuilder::shader_variable(std::string_view name) const {
@@ -124,13 +168,58 @@ bool EffectUnitBuilder::resolve(const ast::Expr& e, StageUnit& stage, int depth)
       for (const ast::ExprPtr& a : e.args) names.push_back(a->text);
       return glsl(stage, std::move(names));
     }
-    case ast::ExprKind::asm_block:
-      stage.kind = StageSourceKind::assembly;
-      stage.unsupported = "shader model 1 assembly (asm { }) is not compiled; the legacy path emulates it";
-      return true;
+    case ast::ExprKind::asm_block: return assembly(e, stage);
     case ast::ExprKind::index: return shader_array(e, stage, depth);
     default: return invalid(stage, "the value does not name a shader");
   }
+}
+
+namespace {
+
+// `bool Ps1xPrecision = true;` among `list`.
+bool precision_annotation(const ast::List<ast::Annotation>& list) {
+  for (const ast::Annotation& a : list)
+    if (iequals(a.name, "Ps1xPrecision") && a.value && a.value->number != 0 &&
+        (a.value->kind == ast::ExprKind::bool_literal || a.value->kind == ast::ExprKind::int_literal))
+      return true;
+  return false;
+}
+
+}  // namespace
+
+bool EffectUnitBuilder::assembly(const ast::Expr& e, StageUnit& stage) {
+  stage.kind = StageSourceKind::assembly;
+  if (stage.stage != ShaderStage::vertex && stage.stage != ShaderStage::fragment)
+    return invalid(stage, "shader model 1 assembly is a vertex or pixel shader");
+  // Shader model 2 and 3 assembly is valid D3D9 that fxkit does not translate: the stage
+  // says so, with no error in the effect.
+  if (std::optional<legacy::AsmVersion> v = legacy::assembly_version(effect_, e.code); v && v->major != 1) {
+    stage.unsupported = std::string(v->pixel ? "ps_" : "vs_") + std::to_string(v->major) + "_" +
+                        std::to_string(v->minor) + " assembly is not translated (shader model 1 only)";
+    return true;
+  }
+  std::optional<legacy::AsmProgram> program = legacy::parse_assembly(effect_, e.code, e.decl_code, sink_);
+  if (!program) return invalid(stage, "the assembly has errors");
+  const bool pixel = stage.stage == ShaderStage::fragment;
+  if (program->version.pixel != pixel)
+    return invalid(stage, std::string("a ") + (pixel ? "pixel" : "vertex") + " shader state holds " +
+                              program->version.spelled() + " assembly");
+  static const ast::Pass no_pass{};
+  legacy::AssemblyBindings bindings = legacy::bind_pass_states(pass_ ? *pass_ : no_pass, pixel, variables_, sink_);
+  legacy::AssemblyOptions options;
+  options.hardware_precision = u_.options_.ps1x_precision || (technique_ && precision_annotation(technique_->annotations)) ||
+                               (pass_ && precision_annotation(pass_->annotations));
+  std::optional<legacy::AssemblyTranslation> t = legacy::translate_assembly(*program, bindings, options, sink_);
+  if (!t) return invalid(stage, "the assembly has errors");
+  stage.profile = std::string(pixel ? "ps_" : "vs_") + std::to_string(program->version.major) + "_" +
+                  std::to_string(program->version.minor);
+  stage.entry_point = t->entry_point;
+  // glslang's messages about the translation point at the asm block.
+  PresumedLocation at = sm_.presumed(e.range.begin);
+  stage.translated = (at.valid() ? detail::line_directive(at.line, at.file) + "\n" : std::string()) + t->hlsl;
+  stage.emulation = std::move(t->emulation);
+  if (options.hardware_precision && pixel) stage.emulation += ", ps.1.x precision modelled";
+  return true;
 }
 
 bool EffectUnitBuilder::shader_array(const ast::Expr& e, StageUnit& stage, int depth) {

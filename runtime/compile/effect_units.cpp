@@ -17,6 +17,7 @@ const char* to_string(StageSourceKind kind) {
     case StageSourceKind::hlsl: return "hlsl";
     case StageSourceKind::glsl: return "glsl";
     case StageSourceKind::assembly: return "assembly";
+    case StageSourceKind::fixed_function: return "fixed_function";
     case StageSourceKind::invalid: return "invalid";
   }
   return "unknown";
@@ -327,6 +328,13 @@ std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
     if (stage.entry_point != stage.function)  // a wrapper: compile-time arguments, D3D9 system values
       for (const Wrapper& w : wrappers_)
         if (w.function == stage.function && w.arguments == stage.arguments) u.source += w.text;
+    return u;
+  }
+  if ((stage.kind == StageSourceKind::assembly || stage.kind == StageSourceKind::fixed_function) &&
+      !stage.translated.empty()) {
+    u.language = ShaderLanguage::hlsl;
+    u.profile = stage.stage == ShaderStage::vertex ? "vs_3_0" : "ps_3_0";
+    u.source = stage.translated;
     return u;
   }
   if (stage.kind != StageSourceKind::glsl) return std::nullopt;

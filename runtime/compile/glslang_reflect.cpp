@@ -1,6 +1,7 @@
 #include "glslang_reflect.h"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 
 #include <glslang/Include/Types.h>
@@ -182,7 +183,15 @@ ShaderReflection reflect_program(const glslang::TProgram& program, EShLanguage s
       v.name = detail::effect_name(io.name);
       v.location = location_of(*t);
       v.type = reflected_type(*t);
-      if (auto it = semantics.find(v.location); it != semantics.end()) v.semantic = it->second;
+      if (auto it = semantics.find(v.location); it != semantics.end()) {
+        v.semantic = it->second;
+      } else if (const char* declared = t->getQualifier().semanticName) {
+        // spirv-opt's legalization drops the UserSemantic of an input the code never reads
+        // but keeps the variable: the declaration still names its semantic.
+        v.semantic = declared;
+        v.unread = true;
+        for (char& c : v.semantic) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      }
       vars.push_back(std::move(v));
     }
     std::sort(vars.begin(), vars.end(),

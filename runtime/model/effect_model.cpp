@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "fx/ascii_case.h"
 #include "model_build.h"
 #include "model_internal.h"
 
@@ -263,6 +264,11 @@ class Builder {
           pass.states.push_back(std::move(r));
       }
       pass.summary = model_detail::summarize_pass(pass.states, model_);
+      // A pixel shader replaces the texture stages' blending, as in D3D9, and reads the
+      // bump-environment states itself: those are not a reason the pass cannot run.
+      const ShaderBinding* pixel = pass.shader(PassStage::pixel);
+      if (pixel && pixel->source != ShaderSource::null)
+        std::erase_if(pass.unsupported, [](const UnsupportedState& u) { return u.info && pixel_shader_replaces_or_reads(*u.info); });
       info.passes.push_back(std::move(pass));
     }
     model_.techniques.push_back(std::move(info));
@@ -287,6 +293,24 @@ const ShaderBinding* PassInfo::shader(PassStage stage) const {
   for (const ShaderBinding& s : shaders)
     if (s.stage == stage) return &s;
   return nullptr;
+}
+
+SamplerDesc PassInfo::stage_sampler(uint32_t stage, uint32_t& texture) const {
+  std::vector<ResolvedState> indexed;
+  for (const ResolvedState& s : states)
+    if (s.info && s.index == stage &&
+        (s.info->block == StateBlock::sampler_state || s.info->field == StateField::texture))
+      indexed.push_back(s);
+  return model_detail::describe_sampler(indexed, false, texture);
+}
+
+bool pixel_shader_replaces_or_reads(const StateInfo& info) {
+  if (info.field == StateField::stage_color_op || info.field == StateField::stage_alpha_op) return true;
+  for (std::string_view name : {"ColorArg0", "ColorArg1", "ColorArg2", "AlphaArg0", "AlphaArg1", "AlphaArg2", "ResultArg",
+                                "BumpEnvMat00", "BumpEnvMat01", "BumpEnvMat10", "BumpEnvMat11", "BumpEnvLScale",
+                                "BumpEnvLOffset"})
+    if (iequals(info.name, name)) return true;
+  return false;
 }
 
 uint32_t EffectModel::find_parameter(std::string_view name) const {

@@ -72,11 +72,14 @@ PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique
   const EffectPass* ep = find_pass(programs.units(), technique_index, technique, pass_index);
   if (!ep) return out;
   out.found = true;
-  for (const StageUnit& stage : ep->stages)
+  for (const StageUnit& stage : ep->stages) {
     if (stage.kind == StageSourceKind::invalid)
       out.reasons.push_back(reason("shader-compile-failed", stage.range, "shader does not compile: " + stage.unsupported));
+    if (stage.kind == StageSourceKind::assembly && stage.translated.empty() && !stage.unsupported.empty())
+      out.reasons.push_back(reason("unsupported-shader-profile", stage.range, stage.unsupported));
+  }
   bool compiled = std::any_of(ep->stages.begin(), ep->stages.end(), [](const StageUnit& s) {
-    return s.kind == StageSourceKind::hlsl || s.kind == StageSourceKind::glsl;
+    return s.kind != StageSourceKind::invalid;
   });
   if (!compiled) return out;
 

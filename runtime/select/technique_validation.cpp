@@ -86,6 +86,7 @@ class TechniqueValidator {
     check_requires(technique);
     out.reasons = reasons_.take();
     out.valid = out.reasons.empty();
+    out.emulation = std::move(emulation_);
     return out;
   }
 
@@ -151,6 +152,7 @@ class TechniqueValidator {
         }
         require_profile(profile, b.range);
         if (b.stage == PassStage::pixel && profile < "ps_1_4") count_texture_registers(b);
+        if (caps_.generation == CapsGeneration::vulkan) note_emulation("emulated: " + version + " assembly translated to HLSL");
         return;
       }
       case ShaderSource::glsl_blocks: {
@@ -169,6 +171,11 @@ class TechniqueValidator {
       }
     }
   }
+
+  void note_emulation(const std::string& line) {
+    if (std::find(emulation_.begin(), emulation_.end(), line) == emulation_.end()) emulation_.push_back(line);
+  }
+  static int technique_version(const TechniqueInfo& t) { return t.version; }
 
   // ps.1.1-1.3 sample stage n into register tn: the highest t register is the stage count.
   void count_texture_registers(const ShaderBinding& b) {
@@ -281,8 +288,19 @@ class TechniqueValidator {
     profile_rejected_ = false;
     fixed_function_reason_ = kNone;
     for (const ShaderBinding& b : pass.shaders) check_shader(b);
+    if (caps_.generation == CapsGeneration::vulkan && technique_version(technique) == 9) {
+      auto has = [&](PassStage s) {
+        const ShaderBinding* b = pass.shader(s);
+        return b && b->source != ShaderSource::null;
+      };
+      if (!has(PassStage::vertex)) note_emulation("emulated: fixed-function vertex processing as generated HLSL");
+      if (!has(PassStage::pixel)) note_emulation("emulated: fixed-function texture stages as generated HLSL");
+    }
+    const ShaderBinding* pixel = pass.shader(PassStage::pixel);
+    const bool pixel_shader = pixel && pixel->source != ShaderSource::null;
     for (const ResolvedState& s : pass.states) {
       if (!s.info) continue;
+      if (pixel_shader && pixel_shader_replaces_or_reads(*s.info)) continue;  // D3D9 ignores them then
       if (s.info->vulkan == VulkanMeaning::fixed_function) {
         check_fixed_function(s);
         continue;
@@ -329,6 +347,7 @@ class TechniqueValidator {
   const DeviceCaps& caps_;
   const TechniqueValidationOptions& options_;
   Rejections reasons_;
+  std::vector<std::string> emulation_;
   uint32_t textures_ = 0;        // texture stages the current pass uses
   SourceRange textures_range_;   // the state or shader that uses the last one
   bool profile_rejected_ = false;  // the current pass has a shader the device cannot run

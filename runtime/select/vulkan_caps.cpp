@@ -152,8 +152,9 @@ DeviceCaps derive_caps(VulkanFacts facts) {
                      facts.device_type + " device";
   caps.generation = CapsGeneration::vulkan;
   std::sort(facts.features.begin(), facts.features.end());
-  // What glslang's HLSL front end compiles; SM1 assembly needs a translator fxkit lacks.
-  for (const char* p : {"vs_2_0", "ps_2_0", "vs_3_0", "ps_3_0", "vs_4_0", "ps_4_0", "vs_4_1",
+  // What glslang's HLSL front end compiles, and shader model 1 assembly, which the legacy
+  // layer translates to HLSL (fx/legacy/assembly.h).
+  for (const char* p : {"vs_1_0", "vs_1_1", "ps_1_0", "ps_1_1", "ps_1_2", "ps_1_3", "ps_1_4", "vs_2_0", "ps_2_0", "vs_3_0", "ps_3_0", "vs_4_0", "ps_4_0", "vs_4_1",
                         "ps_4_1", "vs_5_0", "ps_5_0", "cs_5_0"})
     caps.shader_profiles.push_back(p);
   if (has(facts.features, "geometryShader"))
@@ -188,6 +189,8 @@ DeviceCaps derive_caps(VulkanFacts facts) {
   f.float_textures = (half4 && half4->sampled) || (float4 && float4->sampled);
   f.anisotropic_filtering = has(caps.vulkan.features, "samplerAnisotropy");
   f.separate_alpha_blend = true;  // core: separate colour/alpha blend factors
+  // Texture stages (every D3DTOP, DOTPRODUCT3 and SUBTRACT included) are generated shaders.
+  f.fixed_function_stages = f.dot3 = f.subtract = true;
   f.two_sided_stencil = true;     // core: front and back stencil state
   return caps;
 }

@@ -1,9 +1,12 @@
 // EffectBinding: effect passes -> programs, pipeline states, descriptors and uniforms.
 #include "fx/vulkan/effect_binding.h"
 
+#include "fx/legacy/stage_texture.h"
+
 #include <algorithm>
 #include <cstring>
 #include <map>
+#include <optional>
 
 namespace fx::vk {
 
@@ -73,11 +76,19 @@ std::string_view root_name(std::string_view path) {
   return end == std::string_view::npos ? path : path.substr(0, end);
 }
 
-// The model sampler (and the texture it reads) behind a program image named `name`.
-void resolve_image(const EffectModel& model, std::string_view name, const fx::SamplerDesc** sampler,
-                   uint32_t* texture_param) {
+// The model sampler (and the texture it reads) behind a program image named `name`; a
+// generated shader's stage sampler (fx_stage<n>) reads the pass's texture stage n.
+void resolve_image(const EffectModel& model, const PassInfo& pass, std::string_view name,
+                   const fx::SamplerDesc** sampler, uint32_t* texture_param, fx::SamplerDesc& stage_sampler) {
   *sampler = nullptr;
   *texture_param = kNoIndex;
+  if (std::optional<uint32_t> stage = legacy::stage_of_sampler(name)) {
+    legacy::StageTexture t = legacy::stage_texture(pass, *stage);
+    stage_sampler = t.sampler;
+    *sampler = &stage_sampler;
+    *texture_param = t.texture;
+    return;
+  }
   for (const SamplerInfo& s : model.samplers) {
     if (s.name != name) continue;
     *sampler = &s.desc;
@@ -138,11 +149,18 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
                                                     : program.unsupported.front());
         break;
       }
-      if (!pass_info.unsupported.empty()) {
-        tech->reason = "pass '" + pass_info.name + "': " + pass_info.unsupported.front().reason;
+      // Fixed-function states are generated stages' input (fx/legacy/fixed_function.h) or,
+      // beside shaders, ignored as D3D9 ignores them: only other states stop the pass.
+      auto blocking = std::find_if(pass_info.unsupported.begin(), pass_info.unsupported.end(), [](const UnsupportedState& u) {
+        return !u.info || u.info->lands != StateLanding::fixed_function;
+      });
+      if (blocking != pass_info.unsupported.end()) {
+        tech->reason = "pass '" + pass_info.name + "': " + blocking->reason;
         break;
       }
-      if (pass_info.summary.alpha_test && pass_info.summary.alpha_compare != CompareOp::always) {
+      const StageUnit* pixel = unit->find(ShaderStage::fragment);
+      const bool generated_pixel = pixel && pixel->kind == StageSourceKind::fixed_function;  // emulates alpha test
+      if (!generated_pixel && pass_info.summary.alpha_test && pass_info.summary.alpha_compare != CompareOp::always) {
         // Emulation needs a discard spliced into the pixel shader's translation unit.
         tech->reason = "pass '" + pass_info.name + "': alpha test (AlphaTestEnable) is not emulated yet";
         break;
@@ -204,7 +222,8 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
         slot.name = image.name;
         slot.kind = image.kind;
         const fx::SamplerDesc* sampler_desc = nullptr;
-        resolve_image(model, image.name, &sampler_desc, &slot.texture_param);
+        fx::SamplerDesc stage_sampler;
+        resolve_image(model, pass_info, image.name, &sampler_desc, &slot.texture_param, stage_sampler);
         if (image.kind != DescriptorKind::sampled_image) {
           SamplerKey vk_desc = sampler_desc ? to_sampler_key(*sampler_desc, pass_sink) : SamplerKey{};
           slot.sampler = b->samplers_.get(vk_desc, sink);

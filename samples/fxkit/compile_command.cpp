@@ -33,6 +33,11 @@ nlohmann::json shader_json(const fx::EffectPass& pass, const fx::StageProgram& s
                       {"diagnostics", fx::render_json(s.diagnostics, sm)}};
   for (const fx::StageUnit& p : pass.stages)
     if (p.stage == s.stage && !p.choices.empty()) j["selector"] = p.selector;
+  // A generated fixed-function stage has no profile of its own: the pass sets no shader.
+  if (stage && stage->kind == fx::StageSourceKind::fixed_function) {
+    j["profile"] = nullptr;
+    j["generated"] = stage->emulation;
+  }
   return j;
 }
 
@@ -168,7 +173,8 @@ int run_compile(const CompileArgs& args) {
     };
     for (const std::string& reason : pass.unsupported) not_compiled(nullptr, reason, pass.range);
     for (const fx::StageUnit& stage : pass.stages)
-      if (stage.kind == fx::StageSourceKind::assembly || stage.kind == fx::StageSourceKind::invalid)
+      if (stage.kind == fx::StageSourceKind::invalid ||
+          (stage.kind == fx::StageSourceKind::assembly && stage.translated.empty()))
         not_compiled(&stage, std::string(fx::to_string(stage.stage)) + " stage: " + stage.unsupported, stage.range);
   }
   if (!matched) {

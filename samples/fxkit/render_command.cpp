@@ -1,5 +1,5 @@
 // `fxkit render FILE [--technique NAME|auto] [--mesh sphere|torus|quad|teapot|FILE.obj]
-//  [--size WxH] [--param NAME=VALUE]... [--validation] [--verbose] [--out FILE.png] [--caps X] [--frames N]`:
+//  [--size WxH] [--param NAME=VALUE]... [--validation] [--ps1x-precision] [--verbose] [--out FILE.png] [--caps X] [--frames N]`:
 // renders an effect headlessly (the best Vulkan device, or FXKIT_DEVICE) on a mesh framed
 // by the camera, standard semantics filled in, and writes a PNG.
 #include <algorithm>
@@ -25,7 +25,7 @@ struct RenderArgs {
   FrontEndFlags front_end;
   std::string file, technique = "auto", mesh = "sphere", size = "256x256", out = "render.png", caps;
   std::vector<std::string> params;
-  bool validation = false, verbose = false;
+  bool validation = false, verbose = false, ps1x_precision = false;
   int frames = 1;
 };
 
@@ -66,6 +66,7 @@ int run_render(const RenderArgs& args) {
     std::fprintf(stderr, "fxkit render: %s\n", error.c_str());
     return kUsageError;
   }
+  if (args.ps1x_precision) options.preprocessor.defines.emplace_back(fx::kPs1xPrecisionMacro, "1");
   unsigned width = 0, height = 0;
   if (std::sscanf(args.size.c_str(), "%ux%u", &width, &height) != 2 || !width || !height || width > 8192 || height > 8192) {
     std::fprintf(stderr, "fxkit render: --size wants WxH, got '%s'\n", args.size.c_str());
@@ -221,6 +222,8 @@ void register_render(CLI::App& app, Runner& run) {
   cmd->add_option("--param", args->params, "NAME=VALUE[,VALUE...] (name or semantic)");
   cmd->add_flag("--verbose", args->verbose, "Print which parameters the scene bound, and how");
   cmd->add_flag("--validation", args->validation, "Enable the validation layers; any message fails the run");
+  cmd->add_flag("--ps1x-precision", args->ps1x_precision,
+                "Model ps.1.x hardware arithmetic in assembly pixel shaders ([-1,1] or [-8,8], 8-bit fractions)");
   cmd->add_option("--out", args->out, "Output PNG")->capture_default_str();
   cmd->add_option("--caps", args->caps, caps_option_help());
   cmd->add_option("--frames", args->frames, "Frames to render; past the first, the median time is printed")

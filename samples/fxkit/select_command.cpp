@@ -74,6 +74,7 @@ int run_select(const SelectArgs& args) {
                             {"valid", t.valid},
                             {"chosen", i == result.chosen},
                             {"reason", i < result.reasons.size() ? result.reasons[i] : std::string()},
+                            {"emulation", t.emulation},
                             {"rejections", fx::render_json(t.reasons, sm)}});
     }
     nlohmann::json path = nlohmann::json::array();
@@ -95,15 +96,22 @@ int run_select(const SelectArgs& args) {
   } else {
     std::fputs(fx::render_text(diags.diagnostics(), sm).c_str(), stderr);
     std::string name = std::filesystem::path(args.file).filename().string();
+    auto emulation = [&](size_t i) {
+      std::string out;
+      if (i < sel.techniques.size())
+        for (const std::string& e : sel.techniques[i].emulation) out += " [" + e + "]";
+      return out;
+    };
     if (result.ok())
-      std::printf("%s on %s: %s (%s)\n", name.c_str(), caps->name.c_str(),
-                  std::string(sel.plan.name(result.chosen)).c_str(), fx::to_string(result.route));
+      std::printf("%s on %s: %s (%s)%s\n", name.c_str(), caps->name.c_str(),
+                  std::string(sel.plan.name(result.chosen)).c_str(), fx::to_string(result.route),
+                  emulation(result.chosen).c_str());
     else
       std::printf("%s on %s: no technique\n", name.c_str(), caps->name.c_str());
     for (size_t i = 0; i < sel.techniques.size(); ++i) {
       if (i == result.chosen) continue;
-      std::printf("  %s: %s\n", sel.techniques[i].name.c_str(),
-                  i < result.reasons.size() ? result.reasons[i].c_str() : "");
+      std::printf("  %s: %s%s\n", sel.techniques[i].name.c_str(),
+                  i < result.reasons.size() ? result.reasons[i].c_str() : "", emulation(i).c_str());
     }
   }
   return ok ? kSuccess : kInputErrors;

@@ -25,7 +25,7 @@ struct V { float4 pos : POSITION; float3 n : TEXCOORD0; };
 V VS(float4 p : POSITION, float3 n : NORMAL) { V o; o.pos = mul(p, WorldViewProjection); o.n = mul(n, (float3x3)World); return o; }
 float4 PS(V i) : COLOR0 { return float4(Tint.rgb * (0.2 + 0.8 * saturate(dot(normalize(i.n), -LightDirection))), 1.0); }
 technique lit < float MaxError = 1.5; string Scheme = "preview"; > { pass p0 { CullMode = )" + cull + R"(; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
-technique assembly { pass p0 { VertexShader = asm { vs.1.1 dcl_position v0 m4x4 oPos, v0, c0 }; } }
+technique assembly < string Requires = "render_targets>=64"; > { pass p0 { VertexShader = asm { vs.1.1 dcl_position v0 m4x4 oPos, v0, c0 }; } }
 )";
 }
 

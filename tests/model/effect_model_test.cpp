@@ -114,9 +114,8 @@ TEST(EffectModel, TechniquesPassesAndShaders) {
   EXPECT_EQ(p1.shader(PassStage::vertex)->args[1].number(), 3);
   EXPECT_EQ(p1.shader(PassStage::pixel)->source, ShaderSource::asm_block);
   EXPECT_FALSE(p1.shader(PassStage::pixel)->asm_code.empty());
-  ASSERT_EQ(p1.unsupported.size(), 1u);
-  EXPECT_EQ(p1.unsupported[0].info->name, "ColorOp");
-  EXPECT_TRUE(p1.unsupported[0].range.valid());
+  // ColorOp beside a pixel shader: D3D9 ignores it, so it is no reason the pass cannot run.
+  EXPECT_TRUE(p1.unsupported.empty());
   const TechniqueInfo& t10 = *b->model.find_technique("T10");
   EXPECT_EQ(t10.version, 10);
   const PassInfo& q = t10.passes[0];

@@ -106,7 +106,7 @@ TEST(CapsVulkaninfo, ReadsTheRealReportFormat) {
   EXPECT_EQ(VK_API_VERSION_MINOR(caps->vulkan.api_version), 3u);
   EXPECT_TRUE(fx::supports(*caps, "ps_5_0"));
   EXPECT_TRUE(fx::supports(*caps, "gs_5_0"));  // geometryShader: true in the report
-  EXPECT_FALSE(fx::supports(*caps, "ps_1_4"));
+  EXPECT_TRUE(fx::supports(*caps, "ps_1_4"));  // shader model 1 assembly, translated to HLSL
   EXPECT_EQ(caps->limits.texture_size, 16384u);
   EXPECT_EQ(caps->limits.render_targets, 8u);
   EXPECT_EQ(caps->limits.interpolators, 32u);  // 128 components / 4
@@ -114,7 +114,7 @@ TEST(CapsVulkaninfo, ReadsTheRealReportFormat) {
   EXPECT_EQ(caps->limits.uniform_bytes, 65536u);
   EXPECT_TRUE(caps->features.anisotropic_filtering);
   EXPECT_TRUE(caps->features.float_textures);
-  EXPECT_FALSE(caps->features.fixed_function_stages);
+  EXPECT_TRUE(caps->features.fixed_function_stages);  // generated texture stages
   EXPECT_FALSE(caps->features.alpha_test);
   const fx::FormatSupport* half4 = fx::find_format(*caps, "VK_FORMAT_R16G16B16A16_SFLOAT");
   ASSERT_NE(half4, nullptr);
@@ -176,8 +176,9 @@ TEST_F(LiveDevice, CapsMatchWhatVulkanGuarantees) {
     EXPECT_TRUE(caps.vulkan.present);
     EXPECT_EQ(caps.generation, fx::CapsGeneration::vulkan);
     EXPECT_TRUE(fx::supports(caps, "vs_2_0") && fx::supports(caps, "ps_5_0"));
-    EXPECT_FALSE(fx::supports(caps, "ps_1_1"));
-    EXPECT_FALSE(caps.features.fixed_function_stages);
+    // Emulated: assembly translated to HLSL, texture stages generated (fx/legacy).
+    EXPECT_TRUE(fx::supports(caps, "ps_1_1"));
+    EXPECT_TRUE(caps.features.fixed_function_stages);
     // Vulkan 1.0 minimum limits.
     EXPECT_GE(caps.limits.texture_size, 4096u);
     EXPECT_GE(caps.limits.render_targets, 4u);

@@ -11,27 +11,6 @@ namespace {
 
 class EffectRenderTest : public VulkanTest {};
 
-std::string golden_path(const std::string& name) {
-  return std::string(FXKIT_SOURCE_DIR) + "/tests/golden/" + name + ".png";
-}
-
-// Compares with tests/golden/NAME.png (3 levels per channel: lavapipe and GPUs round
-// differently); FXKIT_UPDATE_GOLDEN=1 rewrites the file instead.
-void expect_golden(const fx::Image& image, const std::string& name) {
-  DiagnosticSink sink;
-  const char* update = std::getenv("FXKIT_UPDATE_GOLDEN");
-  if (update && std::string(update) == "1") {
-    ASSERT_TRUE(write_png(golden_path(name), image, sink)) << describe(sink);
-    return;
-  }
-  auto golden = read_png(golden_path(name), sink, 4);
-  ASSERT_TRUE(golden) << "missing golden " << golden_path(name) << " (run with FXKIT_UPDATE_GOLDEN=1)";
-  ASSERT_EQ(golden->width, image.width);
-  ASSERT_EQ(golden->height, image.height);
-  ImageDiff diff = compare(*golden, image, 3);
-  EXPECT_EQ(diff.channels_over, 0u) << name << ": max difference " << diff.max_abs << " at " << diff.first_x << "," << diff.first_y;
-}
-
 struct GoldenCase {
   const char* file;
   const char* technique;
@@ -78,7 +57,8 @@ TEST_F(EffectRenderTest, SeedEffectsMatchGoldenImages) {
 }
 
 // Every technique of every effect either renders without a validation message or says
-// why it cannot (asm and fixed-function techniques until legacy emulation exists).
+// why it cannot (shader model 1 assembly is translated to HLSL and the fixed-function
+// stages are generated, so the seeds' techniques all render).
 TEST_F(EffectRenderTest, EveryEffectTechniqueRendersOrHasAReason) {
   size_t rendered = 0, skipped = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(effects_dir())) {
@@ -101,7 +81,7 @@ TEST_F(EffectRenderTest, EveryEffectTechniqueRendersOrHasAReason) {
     }
   }
   EXPECT_GE(rendered, 25u);
-  EXPECT_GE(skipped, 5u);  // the seeds' asm and texture-stage techniques
+  EXPECT_EQ(skipped, 0u);
 }
 
 TEST_F(EffectRenderTest, DynamicAndStaticPipelinePathsGiveIdenticalImages) {

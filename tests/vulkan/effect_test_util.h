@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cstdlib>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -84,6 +85,27 @@ inline std::unique_ptr<RenderedEffect> bind_effect(Context& ctx, const std::stri
   EXPECT_TRUE(r->binding->technique_ok(t)) << r->binding->technique_reason(t);
   r->use_technique(t);
   return r;
+}
+
+inline std::string golden_path(const std::string& name) {
+  return std::string(FXKIT_SOURCE_DIR) + "/tests/golden/" + name + ".png";
+}
+
+// Compares with tests/golden/NAME.png (3 levels per channel: lavapipe and GPUs round
+// differently); FXKIT_UPDATE_GOLDEN=1 rewrites the file instead.
+inline void expect_golden(const fx::Image& image, const std::string& name) {
+  DiagnosticSink sink;
+  const char* update = std::getenv("FXKIT_UPDATE_GOLDEN");
+  if (update && std::string(update) == "1") {
+    ASSERT_TRUE(write_png(golden_path(name), image, sink)) << describe(sink);
+    return;
+  }
+  auto golden = read_png(golden_path(name), sink, 4);
+  ASSERT_TRUE(golden) << "missing golden " << golden_path(name) << " (run with FXKIT_UPDATE_GOLDEN=1)";
+  ASSERT_EQ(golden->width, image.width);
+  ASSERT_EQ(golden->height, image.height);
+  ImageDiff diff = compare(*golden, image, 3);
+  EXPECT_EQ(diff.channels_over, 0u) << name << ": max difference " << diff.max_abs << " at " << diff.first_x << "," << diff.first_y;
 }
 
 // Writes `text` to a fresh file under the test temp dir and returns its path.

@@ -22,7 +22,8 @@ namespace fx {
 enum class StageSourceKind : uint8_t {
   hlsl,      // `compile vs_2_0 VS()`, `CompileShader(vs_4_0, VS())`, a shader variable
   glsl,      // `VertexShader = Block;` or `= { Common, Block };`
-  assembly,  // `asm { }` / `decl { } asm { }`: shader model 1 assembly, not compiled here
+  assembly,  // `asm { }` / `decl { } asm { }`: shader model 1 assembly, translated to HLSL
+  fixed_function,  // a D3D9 pass with no vertex or pixel shader: generated HLSL (fixed_function.h)
   invalid,   // the stage names something that does not exist (reported as a diagnostic)
 };
 const char* to_string(StageSourceKind kind);
@@ -36,7 +37,12 @@ struct StageUnit {
   std::vector<std::string> glsl_blocks; // GLSL: the blocks, in order
   std::vector<std::string> arguments;   // compile-time arguments, spelled as HLSL
   std::string entry_point;              // the unit's entry: "PS", "PS__fx_args" or "main"
-  std::string unsupported;              // why no unit is built (assembly, invalid)
+  std::string unsupported;              // why no unit is built (invalid)
+  // Assembly and fixed-function stages: the generated HLSL (fx/legacy/assembly.h,
+  // fx/legacy/fixed_function.h) and what emulates it ("ps.1.1 assembly translated to
+  // HLSL"); `profile` is the assembly's ("ps_1_1"), "fixed_function" for generated stages.
+  std::string translated;
+  std::string emulation;
   SourceRange range;                    // the state assignment naming the shader
   // A shader array indexed in the pass (`VertexShader = (VSArray[VSIndices[ShaderIndex]]);`,
   // as the XNA stock effects choose their shader permutations): every element in order, and
@@ -55,7 +61,8 @@ struct EffectPass {
   uint32_t technique_index = 0, pass_index = 0;  // technique index counts all techniques
   std::vector<StageUnit> stages;
   // Why the pass cannot run as written beyond its stages: fixed-function vertex or pixel
-  // processing in D3D9 techniques (emulated by the legacy path, not compiled here).
+  // processing beside an HLSL stage (beside assembly, or with no shader at all, it is
+  // generated as a stage of kind fixed_function).
   std::vector<std::string> unsupported;
   SourceRange range;
 
@@ -68,6 +75,10 @@ struct EffectUnitOptions {
   // also given to glslang so code that tests them after the effect preprocessor (GLSL
   // blocks with their own #if) sees them too.
   std::vector<ShaderDefine> defines;
+  // Models ps.1.x register range and precision in translated assembly pixel shaders
+  // (AssemblyOptions::hardware_precision) for every technique; a technique or pass turns it
+  // on for itself with the annotation `bool Ps1xPrecision = true;`.
+  bool ps1x_precision = false;
 };
 
 // The translation units of one effect. The shared HLSL text is built once, in the

@@ -65,6 +65,9 @@ struct InterfaceVariable {
   uint32_t location = 0;
   ReflectedType type;
   std::string semantic;        // upper-case, e.g. "POSITION", "TEXCOORD0"; empty for GLSL
+  // The code never reads it (spirv-opt dropped its semantic decoration; the semantic is the
+  // declaration's): linking places it but does not warn that nothing writes it.
+  bool unread = false;
 };
 
 // Everything reflected from one stage.

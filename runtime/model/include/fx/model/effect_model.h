@@ -147,7 +147,16 @@ struct PassInfo {
   SourceRange range;
   // The binding for `stage`, or nullptr.
   const ShaderBinding* shader(PassStage stage) const;
+  // Texture stage `stage` as the pass sets it: the sampler states indexed [stage]
+  // (AddressU[1], MinFilter[1] ...) over D3D9's defaults (wrap, point, no mips), and in
+  // `texture` the parameter Texture[stage] names (kNoIndex if none).
+  SamplerDesc stage_sampler(uint32_t stage, uint32_t& texture) const;
 };
+
+// True for the texture-stage states a pixel shader replaces (ColorOp, ColorArg0-2, AlphaOp,
+// AlphaArg0-2, ResultArg: D3D9 ignores them while one is set) or reads (BumpEnvMat00-11,
+// BumpEnvLScale, BumpEnvLOffset: texbem, texbeml and bem use them).
+bool pixel_shader_replaces_or_reads(const StateInfo& info);
 
 struct TechniqueInfo {
   std::string name;

@@ -39,6 +39,9 @@ struct TechniqueValidation {
   // docs/diagnostics.md ("Technique validation"). Empty when valid.
   std::vector<Diagnostic> reasons;
   std::vector<TechniqueAnnotation> annotations; // literal annotations, in declaration order
+  // How a Vulkan device runs what it has no native form of, one line per kind
+  // ("emulated: vs.1.1 assembly translated to HLSL"). Empty on historic caps profiles.
+  std::vector<std::string> emulation;
 };
 
 // What validation may use besides the model.

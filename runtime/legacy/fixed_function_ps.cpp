@@ -1,0 +1,239 @@
+// The fixed-function pixel shader: texture stages (every D3DTOP operation, argument
+// modifiers, Temp and ResultArg, bump environment mapping), specular add, fog blend and the
+// alpha test, generated as HLSL (entry fx_ff_ps). Formulas: docs/fixed-function.md.
+#include <string>
+
+#include "fixed_function_hlsl.h"
+#include "fixed_function_stages.h"
+#include "fx/legacy/fixed_function.h"
+
+namespace fx {
+namespace {
+
+using ff_detail::Declarations;
+using ff_detail::active_stages;
+using ff_detail::is_bump;
+using ff_detail::reads_register;
+using ff_detail::samples;
+using ff_detail::uses_arg0;
+using ff_detail::uses_arg1;
+using ff_detail::uses_arg2;
+using ff_detail::literal;
+namespace ta = texture_arg;
+
+// The TEXCOORDn the pixel shader reads for stage `i`.
+int texcoord_register(const FixedFunctionState& s, int i) {
+  return s.vertex_shader ? static_cast<int>(s.stages[i].tex_coord_index & 0x7) : i;
+}
+
+bool table_fog(const FixedFunctionState& s) { return s.fog && s.fog_table_mode != FogMode::none; }
+
+class PixelShaderWriter {
+ public:
+  explicit PixelShaderWriter(const FixedFunctionState& s) : s_(s), stages_(active_stages(s)) {}
+
+  FixedFunctionShader write() {
+    body_ += "  float4 diffuse = i.fx_diffuse;\n";
+    body_ += "  float4 specular = i.fx_specular;\n";
+    body_ += "  float4 current = diffuse;\n";
+    body_ += "  float4 temp = float4(0.0, 0.0, 0.0, 0.0);\n";
+    body_ += "  float4 tfactor = " + decl_.vector(s_.texture_factor) + ";\n";
+    for (int i = 0; i < stages_; ++i)
+      if (is_bump(s_.stages[i].color_op)) {
+        body_ += "  float2 bump = float2(0.0, 0.0);\n  float luminance = 1.0;\n";
+        break;
+      }
+    // Textures first (a stage may read the next one's: PreModulate), then the blending.
+    for (int i = 0; i < stages_; ++i) texture(i);
+    for (int i = 0; i < stages_; ++i) stage(i);
+    if (s_.specular_enable) body_ += "  current.rgb = saturate(current.rgb + specular.rgb);\n";
+    if (s_.fog) fog();
+    if (s_.alpha_test) alpha_test();
+    body_ += "  return current;\n";
+
+    std::string inputs = "  float4 fx_diffuse : COLOR0;\n  float4 fx_specular : COLOR1;\n";
+    for (int t = 0; t < 8; ++t)
+      if (texcoords_ & (1u << t)) inputs += "  float4 fx_tc" + std::to_string(t) + " : TEXCOORD" + std::to_string(t) + ";\n";
+    if (s_.fog && !table_fog(s_)) inputs += "  float fx_fog : FOG;\n";
+    if (table_fog(s_)) inputs += "  float4 fx_position : SV_Position;\n";
+
+    FixedFunctionShader out;
+    out.entry = "fx_ff_ps";
+    out.profile = "ps_3_0";
+    out.source = "// fxkit fixed-function pixel shader (generated)\n" + decl_.text() + "struct fx_ff_ps_in {\n" + inputs +
+                 "};\nfloat4 fx_ff_ps(fx_ff_ps_in i) : COLOR0 {\n" + body_ + "}\n";
+    return out;
+  }
+
+ private:
+  // An argument register with its modifiers, as float4.
+  std::string arg(uint32_t a, int i) {
+    std::string v;
+    switch (a & ta::select_mask) {
+      case ta::diffuse: v = "diffuse"; break;
+      case ta::current: v = "current"; break;
+      case ta::texture: v = "tex" + std::to_string(i); break;
+      case ta::tfactor: v = "tfactor"; break;
+      case ta::specular: v = "specular"; break;
+      case ta::temp: v = "temp"; break;
+      case ta::constant: v = decl_.vector(s_.stages[i].constant); break;
+      default: v = "float4(0.0, 0.0, 0.0, 0.0)"; break;
+    }
+    if (a & ta::complement) v = "(1.0 - " + v + ")";
+    if (a & ta::alpha_replicate) v = v + ".aaaa";
+    return v;
+  }
+
+  // The operation on float4 arguments a0, a1, a2 (rgb used for colour, a for alpha).
+  std::string op_expr(TextureOp op, int i) {
+    const std::string n = std::to_string(i);
+    const std::string tex_alpha = "tex" + n + ".aaaa";
+    switch (op) {
+      case TextureOp::disable:
+      case TextureOp::bump_env_map:
+      case TextureOp::bump_env_map_luminance: return "current";
+      case TextureOp::select_arg1: return "a1";
+      case TextureOp::select_arg2: return "a2";
+      case TextureOp::modulate: return "a1 * a2";
+      case TextureOp::modulate_2x: return "a1 * a2 * 2.0";
+      case TextureOp::modulate_4x: return "a1 * a2 * 4.0";
+      case TextureOp::add: return "a1 + a2";
+      case TextureOp::add_signed: return "a1 + a2 - 0.5";
+      case TextureOp::add_signed_2x: return "(a1 + a2 - 0.5) * 2.0";
+      case TextureOp::subtract: return "a1 - a2";
+      case TextureOp::add_smooth: return "a1 + a2 - a1 * a2";
+      case TextureOp::blend_diffuse_alpha: return "lerp(a2, a1, diffuse.aaaa)";
+      case TextureOp::blend_texture_alpha: return "lerp(a2, a1, " + tex_alpha + ")";
+      case TextureOp::blend_factor_alpha: return "lerp(a2, a1, tfactor.aaaa)";
+      case TextureOp::blend_texture_alpha_pm: return "a1 + a2 * (1.0 - " + tex_alpha + ")";
+      case TextureOp::blend_current_alpha: return "lerp(a2, a1, current.aaaa)";
+      case TextureOp::premodulate:
+        return i + 1 < stages_ && samples(s_, i + 1) ? "a1 * tex" + std::to_string(i + 1) : "a1";
+      case TextureOp::modulate_alpha_add_color: return "a1 + a1.aaaa * a2";
+      case TextureOp::modulate_color_add_alpha: return "a1 * a2 + a1.aaaa";
+      case TextureOp::modulate_inv_alpha_add_color: return "a1 + (1.0 - a1.aaaa) * a2";
+      case TextureOp::modulate_inv_color_add_alpha: return "(1.0 - a1) * a2 + a1.aaaa";
+      case TextureOp::dot_product3: return "dot(a1.rgb - 0.5, a2.rgb - 0.5).xxxx * 4.0";
+      case TextureOp::multiply_add: return "a0 + a1 * a2";
+      case TextureOp::lerp: return "lerp(a2, a1, a0)";
+    }
+    return "current";
+  }
+
+  // Declares a0..a2 for `op` from `args` inside the current block.
+  void args(TextureOp op, const std::array<uint32_t, 3>& a, int i) {
+    if (uses_arg0(op)) body_ += "    float4 a0 = " + arg(a[0], i) + ";\n";
+    if (uses_arg1(op)) body_ += "    float4 a1 = " + arg(a[1], i) + ";\n";
+    if (uses_arg2(op)) body_ += "    float4 a2 = " + arg(a[2], i) + ";\n";
+  }
+
+  std::string coords(int i) {
+    const TextureStageState& st = s_.stages[i];
+    const int r = texcoord_register(s_, i);
+    texcoords_ |= 1u << r;
+    const std::string tc = "i.fx_tc" + std::to_string(r);
+    const bool flat = st.texture == StageTexture::tex2d;
+    std::string c = flat ? tc + ".xy" : tc + ".xyz";
+    if (st.texture_transform_flags & texture_transform::projected) {
+      const uint32_t count = st.texture_transform_flags & texture_transform::count_mask;
+      const char* last = count == 2 ? ".y" : count == 3 ? ".z" : ".w";
+      c = "(" + c + " / " + tc + last + ")";
+    }
+    if (i > 0 && is_bump(s_.stages[i - 1].color_op))
+      c = flat ? "(" + c + " + bump)" : "(" + c + " + float3(bump, 0.0))";
+    return c;
+  }
+
+  void sample(int i) {
+    const TextureStageState& st = s_.stages[i];
+    const std::string n = std::to_string(i);
+    const char* type = st.texture == StageTexture::cube ? "samplerCUBE" : st.texture == StageTexture::volume ? "sampler3D" : "sampler2D";
+    const char* fn = st.texture == StageTexture::cube ? "texCUBE" : st.texture == StageTexture::volume ? "tex3D" : "tex2D";
+    decl_.uniform(type, "fx_stage" + n);
+    body_ += "  float4 tex" + n + " = " + fn + "(fx_stage" + n + ", " + coords(i) + ");\n";
+    if (i > 0 && s_.stages[i - 1].color_op == TextureOp::bump_env_map_luminance)
+      body_ += "  tex" + n + ".rgb *= luminance;\n";
+  }
+
+  // Stage `i`'s texture value and, for a bump stage, the offset and luminance it gives the next.
+  void texture(int i) {
+    const TextureStageState& st = s_.stages[i];
+    const std::string n = std::to_string(i);
+    if (samples(s_, i)) sample(i);
+    else if (ff_detail::reads_texture(s_, i))
+      body_ += "  float4 tex" + n + " = float4(1.0, 1.0, 1.0, 1.0);  // no texture bound\n";
+    if (!is_bump(st.color_op)) return;
+    const auto& m = st.bump_env_mat;
+    body_ += "  bump = float2(" + decl_.scalar(m[0]) + " * tex" + n + ".r + " + decl_.scalar(m[2]) + " * tex" + n +
+             ".g, " + decl_.scalar(m[1]) + " * tex" + n + ".r + " + decl_.scalar(m[3]) + " * tex" + n + ".g);\n";
+    if (st.color_op == TextureOp::bump_env_map_luminance)
+      body_ += "  luminance = saturate(tex" + n + ".b * " + decl_.scalar(st.bump_env_lscale) + " + " +
+               decl_.scalar(st.bump_env_loffset) + ");\n";
+  }
+
+  void stage(int i) {
+    const TextureStageState& st = s_.stages[i];
+    const std::string n = std::to_string(i);
+    body_ += "  // stage " + n + ": " + to_string(st.color_op) + " / " + to_string(st.alpha_op) + "\n";
+    if (is_bump(st.color_op)) return;  // a bump stage leaves the result registers as they are
+    const std::string dest = (st.result_arg & ta::select_mask) == ta::temp ? "temp" : "current";
+    body_ += "  {\n";
+    args(st.color_op, st.color_arg, i);
+    body_ += "    float4 color = saturate(" + op_expr(st.color_op, i) + ");\n";
+    body_ += "  {\n";
+    if (st.color_op == TextureOp::dot_product3) {
+      // D3D9: DotProduct3 as the colour operation replicates into alpha as well.
+      body_ += "    float alpha = color.a;\n";
+    } else if (st.alpha_op == TextureOp::disable || is_bump(st.alpha_op)) {
+      body_ += "    float alpha = current.a;\n";
+    } else {
+      args(st.alpha_op, st.alpha_arg, i);
+      body_ += "    float alpha = saturate(" + op_expr(st.alpha_op, i) + ").a;\n";
+    }
+    body_ += "    " + dest + " = float4(color.rgb, alpha);\n";
+    body_ += "  }\n  }\n";
+  }
+
+  void fog() {
+    std::string f;
+    if (table_fog(s_)) {
+      body_ += "  float fog_depth = 1.0 / i.fx_position.w;\n";
+      const std::string start = decl_.scalar(s_.fog_start), end = decl_.scalar(s_.fog_end), density = decl_.scalar(s_.fog_density);
+      switch (s_.fog_table_mode) {
+        case FogMode::linear: f = "(" + end + " - fog_depth) / (" + end + " - " + start + ")"; break;
+        case FogMode::exp: f = "exp(-" + density + " * fog_depth)"; break;
+        default: f = "exp(-(" + density + " * fog_depth) * (" + density + " * fog_depth))"; break;
+      }
+    } else {
+      f = "i.fx_fog";
+    }
+    body_ += "  float fog = saturate(" + f + ");\n";
+    body_ += "  current.rgb = lerp(" + decl_.vector(s_.fog_color) + ".rgb, current.rgb, fog);\n";
+  }
+
+  void alpha_test() {
+    static const char* cmp[] = {"false", "<", "==", "<=", ">", "!=", ">=", "true"};
+    const int c = static_cast<int>(s_.alpha_func);
+    if (s_.alpha_func == CompareOp::always) return;
+    if (s_.alpha_func == CompareOp::never) {
+      body_ += "  discard;\n";
+      return;
+    }
+    body_ += "  float alpha_8bit = floor(saturate(current.a) * 255.0 + 0.5);\n";
+    body_ += "  if (!(alpha_8bit " + std::string(cmp[c]) + " " + decl_.scalar(s_.alpha_ref) + ")) discard;\n";
+  }
+
+  const FixedFunctionState& s_;
+  const int stages_;
+  Declarations decl_;
+  std::string body_;
+  uint32_t texcoords_ = 0;
+};
+
+}  // namespace
+
+FixedFunctionShader generate_fixed_function_pixel_shader(const FixedFunctionState& state) {
+  return PixelShaderWriter(state).write();
+}
+
+}  // namespace fx
