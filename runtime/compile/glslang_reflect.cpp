@@ -189,6 +189,7 @@ ShaderReflection reflect_program(const glslang::TProgram& program, EShLanguage s
         // spirv-opt's legalization drops the UserSemantic of an input the code never reads
         // but keeps the variable: the declaration still names its semantic.
         v.semantic = declared;
+        v.read = false;
         for (char& c : v.semantic) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
       }
       vars.push_back(std::move(v));

@@ -76,7 +76,7 @@ void link_varyings(CompiledShader& producer, CompiledShader& consumer, Diagnosti
   for (InterfaceVariable& v : consumer.reflection.inputs) {
     auto it = location_of.find(canonical_semantic(v.semantic));
     uint32_t location = it != location_of.end() ? it->second : next++;
-    if (it == location_of.end())
+    if (it == location_of.end() && v.read)  // an input the code never reads needs no writer
       sink.warning("shader-varying-unwritten", {},
                    std::string(to_string(consumer.reflection.stage)) + " input '" + v.name + "' (" + v.semantic +
                        ") is not written by the " + to_string(producer.reflection.stage) + " stage; its value is undefined");

@@ -68,7 +68,7 @@ std::string write_shader_metadata(const CompiledShader& s) {
     json a = json::array();
     for (const InterfaceVariable& v : vars)
       a.push_back({{"name", v.name}, {"location", v.location}, {"type", type_json(v.type)},
-                   {"semantic", v.semantic}});
+                   {"semantic", v.semantic}, {"read", v.read}});
     return a;
   };
   json messages = json::array();
@@ -114,7 +114,7 @@ bool read_shader_metadata(std::string_view text, CompiledShader& s) {
     for (auto [key, list] : {std::pair{"inputs", &r.inputs}, std::pair{"outputs", &r.outputs}})
       for (const json& v : j.at(key))
         list->push_back({v.at("name").get<std::string>(), v.at("location").get<uint32_t>(),
-                         type_from(v.at("type")), v.at("semantic").get<std::string>()});
+                         type_from(v.at("type")), v.at("semantic").get<std::string>(), v.value("read", true)});
     for (int d = 0; d < 3; ++d) r.local_size[d] = j.at("local_size").at(static_cast<size_t>(d)).get<uint32_t>();
   } catch (const nlohmann::json::exception&) {
     return false;

@@ -65,6 +65,7 @@ struct InterfaceVariable {
   uint32_t location = 0;
   ReflectedType type;
   std::string semantic;        // upper-case, e.g. "POSITION", "TEXCOORD0"; empty for GLSL
+  bool read = true;            // false: declared, but the optimised code never reads it
 };
 
 // Everything reflected from one stage.
