@@ -141,6 +141,8 @@ FixedFunctionState fixed_function_state(const EffectModel& model, const PassInfo
   const PassReader r(model, diags);
   const ShaderBinding* vs = pass.shader(PassStage::vertex);
   out.vertex_shader = vs && vs->source != ShaderSource::null;
+  const ShaderBinding* ps = pass.shader(PassStage::pixel);
+  out.pixel_shader = ps && ps->source != ShaderSource::null;
   out.alpha_test = pass.summary.alpha_test;
   out.alpha_func = pass.summary.alpha_compare;
   out.alpha_ref.value = static_cast<float>(pass.summary.alpha_ref);

@@ -83,6 +83,11 @@ std::string fixed_function_description(const FixedFunctionState& s) {
   }
   FIELD(texture_factor);
   FIELD(vertex_shader);
+  FIELD(pixel_shader);
+  FIELD(pixel_shader_inputs.diffuse);
+  FIELD(pixel_shader_inputs.specular);
+  FIELD(pixel_shader_inputs.fog);
+  field(out, "pixel_shader_inputs.texcoords", uint32_t{s.pixel_shader_inputs.texcoords}, uint32_t{d.pixel_shader_inputs.texcoords});
   FIELD(pretransformed);
   FIELD(vertex_diffuse);
   FIELD(vertex_specular);

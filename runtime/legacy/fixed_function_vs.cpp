@@ -44,14 +44,24 @@ class VertexShaderWriter {
     body_ += "  float4 vertex_specular = " + std::string(s_.vertex_specular ? "i.fx_specular" : "float4(0.0, 0.0, 0.0, 0.0)") +
              ";\n";
     if (lit) lighting();
-    else body_ += "  o.fx_diffuse = vertex_diffuse;\n  o.fx_specular = vertex_specular;\n";
-    std::string out = "  float4 fx_position : POSITION;\n  float4 fx_diffuse : COLOR0;\n  float4 fx_specular : COLOR1;\n";
-    for (int i = 0; i < ff_detail::active_stages(s_); ++i)
-      if (ff_detail::samples(s_, i)) {
+    else body_ += "  float4 diffuse = vertex_diffuse;\n  float4 specular = vertex_specular;\n";
+    const FixedFunctionState::PixelShaderInputs& ps = s_.pixel_shader_inputs;
+    // Outputs a pixel shader does not read are left out (Vulkan warns about them).
+    std::string out = "  float4 fx_position : POSITION;\n";
+    if (!s_.pixel_shader || ps.diffuse) {
+      out += "  float4 fx_diffuse : COLOR0;\n";
+      body_ += "  o.fx_diffuse = diffuse;\n";
+    }
+    if (!s_.pixel_shader || ps.specular) {
+      out += "  float4 fx_specular : COLOR1;\n";
+      body_ += "  o.fx_specular = specular;\n";
+    }
+    for (int i = 0; i < kTextureStages; ++i)
+      if (s_.pixel_shader ? (ps.texcoords >> i) & 1 : i < ff_detail::active_stages(s_) && ff_detail::samples(s_, i)) {
         texcoord(i, in);
         out += "  float4 fx_tc" + std::to_string(i) + " : TEXCOORD" + std::to_string(i) + ";\n";
       }
-    if (s_.fog && s_.fog_table_mode == FogMode::none) {
+    if (s_.pixel_shader ? ps.fog : s_.fog && s_.fog_table_mode == FogMode::none) {
       fog();
       out += "  float fx_fog : FOG;\n";
     }
@@ -144,9 +154,9 @@ class VertexShaderWriter {
       }
       body_ += "  }\n";
     }
-    body_ += "  o.fx_diffuse = saturate(float4(material_emissive.rgb + material_ambient.rgb * ambient_sum + "
+    body_ += "  float4 diffuse = saturate(float4(material_emissive.rgb + material_ambient.rgb * ambient_sum + "
              "material_diffuse.rgb * diffuse_sum, material_diffuse.a));\n";
-    body_ += "  o.fx_specular = saturate(float4(material_specular.rgb * specular_sum, vertex_specular.a));\n";
+    body_ += "  float4 specular = saturate(float4(material_specular.rgb * specular_sum, vertex_specular.a));\n";
   }
 
   // Stage `i`'s texture coordinates: TEXCOORD<index> or generated, then transformed.
@@ -188,7 +198,7 @@ class VertexShaderWriter {
 
   void fog() {
     if (s_.pretransformed || s_.fog_vertex_mode == FogMode::none) {
-      body_ += "  o.fx_fog = o.fx_specular.a;\n";
+      body_ += "  o.fx_fog = specular.a;\n";
       return;
     }
     body_ += "  float fog_distance = " + std::string(s_.range_fog ? "length(view_position.xyz)" : "abs(view_position.z)") + ";\n";

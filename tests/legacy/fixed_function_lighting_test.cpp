@@ -228,6 +228,30 @@ TEST_F(FixedFunctionLighting, TexgenAndTextureTransformsMatchTheModel) {
   std::printf("[ fixed-function ] texgen and texture transforms: largest |GPU - CPU model| %.3g\n", worst);
 }
 
+TEST_F(FixedFunctionLighting, WithAPixelShaderTheVertexShaderWritesWhatItReads) {
+  // A pass with an HLSL pixel shader reading TEXCOORD1 alone: stage 1's coordinates (set 0,
+  // transformed), no colours (the fixture fails on Vulkan's unconsumed-output warning).
+  FixedFunctionState s = lit_state(0);
+  s.fog = false;
+  s.pixel_shader = true;
+  s.pixel_shader_inputs = {false, false, false, 0b10};
+  s.stages[1].tex_coord_index = 0;
+  s.stages[1].texture_transform_flags = 2;
+  s.stages[1].texture_transform.value = {2, 0, 0, 0, 0, 0.5f, 0, 0, 0.25f, 0, 1, 0, 0, 0, 0, 1};
+  const std::string vs = generate_fixed_function_vertex_shader(s).source;
+  const std::string outputs = vs.substr(vs.find("struct fx_ff_vs_out"), vs.find("fx_ff_vs_out fx_ff_vs(") - vs.find("struct fx_ff_vs_out"));
+  EXPECT_EQ(outputs.find("COLOR"), std::string::npos) << outputs;
+  EXPECT_NE(outputs.find("TEXCOORD1"), std::string::npos) << outputs;
+  const DrawnQuad q = draw_quad(ctx(), s, "float4 PS(float4 tc : TEXCOORD1) : COLOR0 { return tc; }");
+  ASSERT_EQ(q.image.width, kSize);
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      const double u = (x + 0.5) / kSize, v = (y + 0.5) / kSize;
+      const double want[4] = {2 * u + 0.25, 0.5 * v, 1, 0};  // (u, v, 1, 0) * M
+      for (int c = 0; c < 4; ++c) ASSERT_NEAR(q.image.at(x, y)[c], want[c], kTolerance) << x << "," << y << " " << c;
+    }
+}
+
 TEST_F(FixedFunctionLighting, TableFogUsesTheEyeDepth) {
   for (FogMode mode : {FogMode::linear, FogMode::exp, FogMode::exp2}) {
     FixedFunctionState s;

@@ -124,6 +124,15 @@ struct FixedFunctionState {
   // Which stages come from shaders: a programmable vertex stage writes COLOR0/1,
   // TEXCOORDn and FOG itself, and texture stage N then reads TEXCOORD<TexCoordIndex[N]>.
   bool vertex_shader = false;
+  // A programmable pixel stage reads the generated vertex shader's outputs instead of the
+  // texture stages (whose ColorOps D3D then ignores): the vertex shader writes what it reads,
+  // TEXCOORDn being stage n's coordinates (TexCoordIndex[n], texgen, texture transform).
+  bool pixel_shader = false;
+  struct PixelShaderInputs {
+    bool diffuse = true, specular = true, fog = false;
+    uint8_t texcoords = 0;  // bit n: TEXCOORDn
+    bool operator==(const PixelShaderInputs&) const = default;
+  } pixel_shader_inputs;
   // Vertex processing (ignored with vertex_shader).
   bool pretransformed = false;        // XYZRHW positions (D3DFVF_XYZRHW)
   bool vertex_diffuse = true, vertex_specular = true;  // the mesh has COLOR0 / COLOR1
@@ -180,8 +189,9 @@ std::string fixed_function_description(const FixedFunctionState& state);
 // The fixed-function state of `pass`: its D3D9 texture-stage, light, material, transform,
 // fog and alpha-test states over D3D's defaults. Values bound to parameters become
 // ParameterRefs. A stage's texture type comes from the texture parameter Texture[n] names.
-// vertex_shader is set when the pass binds a vertex shader. Reports nothing today; `diags`
-// takes future warnings (values out of range).
+// vertex_shader / pixel_shader are set when the pass binds that stage (the caller fills
+// pixel_shader_inputs from the pixel shader's reflection). Warns `fixed-function-frozen` when
+// a state that shapes the code is bound to a parameter (its default is used).
 FixedFunctionState fixed_function_state(const EffectModel& model, const PassInfo& pass, DiagnosticSink& diags);
 
 }  // namespace fx
