@@ -109,6 +109,8 @@ TEST(FixedFunctionCompile, ParameterBoundValuesAreDeclaredWithTheParameterNames)
   s.alpha_ref.parameter = {"Cutoff", "int"};
   s.fog = true;
   s.fog_color.parameter = {"FogColour", "uint"};
+  s.lights[0].diffuse.parameter = {"Lights", "float4[4]"};  // an array: its resolved value, as a literal
+  s.lights[0].diffuse.value = {0.5f, 0.25f, 0.125f, 1};
   const std::string ps = generate_fixed_function_pixel_shader(s).source;
   const std::string vs = generate_fixed_function_vertex_shader(s).source;
   EXPECT_NE(ps.find("float4 Tint;"), std::string::npos) << ps;
@@ -117,6 +119,8 @@ TEST(FixedFunctionCompile, ParameterBoundValuesAreDeclaredWithTheParameterNames)
   EXPECT_NE(vs.find("float4x4 mWorld;"), std::string::npos) << vs;
   EXPECT_NE(vs.find("float3 LightDirection;"), std::string::npos) << vs;
   EXPECT_NE(vs.find("float3 Albedo;"), std::string::npos) << vs;
+  EXPECT_EQ(vs.find("Lights"), std::string::npos) << vs;
+  EXPECT_NE(vs.find("float4(0.5, 0.25, 0.125, 1.0)"), std::string::npos) << vs;
   EXPECT_EQ(build(s), "");
 }
 

@@ -10,7 +10,8 @@
 //     with stage N's sampler states.
 //   - a value bound to an effect parameter (`TextureFactor = <tf>;`) is declared as a
 //     uniform with the parameter's own name and type and read from it; a constant value is
-//     written as a literal.
+//     written as a literal (as is an array, struct or object parameter's resolved value).
+//     Every identifier the generators make starts with fx_: no local hides a parameter.
 //   - `float4 fx_ff_screen_to_clip` (vertex shader, pre-transformed vertices only): clip.xy =
 //     screen.xy * .xy + .zw, screen being D3D9 pixel coordinates (pixel centres on integers).
 //     For a W x H target with clip-space +Y down (Vulkan, positive viewport height):
