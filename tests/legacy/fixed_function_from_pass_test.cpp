@@ -2,8 +2,7 @@
 // specular-emboss passes, and values bound to parameters kept as parameter references.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
+#include <filesystem>
 
 #include "../model/model_test_util.h"
 #include "fixed_function_rig.h"
@@ -82,6 +81,32 @@ TEST(FixedFunctionFromPass, SeedDot3EmbossAndSpecularEmbossPasses) {
   EXPECT_NE(fixed_function_key(emboss), fixed_function_key(specular));
   EXPECT_EQ(fixed_function_key(dot3),
             fixed_function_key(fixed_function_state(e->model, pass_of(e->model, "dot3_multitexture"), diags)));
+}
+
+TEST(FixedFunctionFromPass, EveryD3D9PassOfTheSeedEffectsGivesStagesThatCompile) {
+  // Both generated stages of every D3D9 pass, whether or not the pass has its own shaders.
+  int passes = 0;
+  const ShaderCompiler compiler;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(FXKIT_SOURCE_DIR) + "/effects")) {
+    if (entry.path().extension() != ".fx") continue;
+    auto e = load(entry.path().filename().string());
+    ASSERT_FALSE(e->diags.has_errors()) << entry.path();
+    for (const TechniqueInfo& t : e->model.techniques) {
+      if (t.version != 9) continue;
+      for (const PassInfo& p : t.passes) {
+        DiagnosticSink diags;
+        const FixedFunctionState s = fixed_function_state(e->model, p, diags);
+        EXPECT_FALSE(diags.has_errors());
+        const CompiledShader vs = compiler.compile(vk::testing::unit(generate_fixed_function_vertex_shader(s), ShaderStage::vertex));
+        const CompiledShader ps = compiler.compile(vk::testing::unit(generate_fixed_function_pixel_shader(s), ShaderStage::fragment));
+        EXPECT_TRUE(vs.ok && ps.ok) << entry.path().filename() << " " << t.name << "/" << p.name << "\n"
+                                    << vs.info_log << ps.info_log;
+        ++passes;
+      }
+    }
+  }
+  std::printf("[ fixed-function ] %d D3D9 passes of effects/: both generated stages compile\n", passes);
+  EXPECT_GE(passes, 20);
 }
 
 TEST(FixedFunctionFromPass, ParameterBoundValuesStayParameterReferences) {
