@@ -14,9 +14,11 @@ class PassReader {
  public:
   PassReader(const EffectModel& model, DiagnosticSink& diags) : model_(model), diags_(diags) {}
 
+  // The parameter a state reads at draw time; none for a static one (its value is fixed).
   ParameterRef ref(const ResolvedState& s) const {
     if (s.kind != StateValueKind::parameter || s.target >= model_.parameters.size()) return {};
     const Parameter& p = model_.parameters[s.target];
+    if (!p.is_uniform()) return {};
     return {p.name, p.type.to_string()};
   }
   // The number a state carries; a parameter's default when it is bound.
