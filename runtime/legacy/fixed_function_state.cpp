@@ -84,6 +84,7 @@ std::string fixed_function_description(const FixedFunctionState& s) {
   FIELD(texture_factor);
   FIELD(vertex_shader);
   FIELD(pixel_shader);
+  FIELD(pixel_shader_inputs.known);
   FIELD(pixel_shader_inputs.diffuse);
   FIELD(pixel_shader_inputs.specular);
   FIELD(pixel_shader_inputs.fog);

@@ -46,22 +46,23 @@ class VertexShaderWriter {
     if (lit) lighting();
     else body_ += "  float4 fx_diffuse = fx_vertex_diffuse;\n  float4 fx_specular = fx_vertex_specular;\n";
     const FixedFunctionState::PixelShaderInputs& ps = s_.pixel_shader_inputs;
+    const bool exact = s_.pixel_shader && ps.known;  // write exactly what the pixel shader reads
     // Outputs a pixel shader does not read are left out (Vulkan warns about them).
     std::string out = "  float4 fx_position : POSITION;\n";
-    if (!s_.pixel_shader || ps.diffuse) {
+    if (!exact || ps.diffuse) {
       out += "  float4 fx_diffuse : COLOR0;\n";
       body_ += "  fx_o.fx_diffuse = fx_diffuse;\n";
     }
-    if (!s_.pixel_shader || ps.specular) {
+    if (!exact || ps.specular) {
       out += "  float4 fx_specular : COLOR1;\n";
       body_ += "  fx_o.fx_specular = fx_specular;\n";
     }
     for (int i = 0; i < kTextureStages; ++i)
-      if (s_.pixel_shader ? (ps.texcoords >> i) & 1 : i < ff_detail::active_stages(s_) && ff_detail::samples(s_, i)) {
+      if (exact ? (ps.texcoords >> i) & 1 : i < ff_detail::active_stages(s_) && ff_detail::samples(s_, i)) {
         texcoord(i, in);
         out += "  float4 fx_tc" + std::to_string(i) + " : TEXCOORD" + std::to_string(i) + ";\n";
       }
-    if (s_.pixel_shader ? ps.fog : s_.fog && s_.fog_table_mode == FogMode::none) {
+    if (exact ? ps.fog : s_.fog && s_.fog_table_mode == FogMode::none) {
       fog();
       out += "  float fx_fog : FOG;\n";
     }

@@ -235,7 +235,7 @@ TEST_F(FixedFunctionLighting, WithAPixelShaderTheVertexShaderWritesWhatItReads) 
   FixedFunctionState s = lit_state(0);
   s.fog = false;
   s.pixel_shader = true;
-  s.pixel_shader_inputs = {false, false, false, 0b10};
+  s.pixel_shader_inputs = {true, false, false, false, 0b10};
   s.stages[1].tex_coord_index = 0;
   s.stages[1].texture_transform_flags = 2;
   s.stages[1].texture_transform.value = {2, 0, 0, 0, 0, 0.5f, 0, 0, 0.25f, 0, 1, 0, 0, 0, 0, 1};

@@ -126,10 +126,13 @@ struct FixedFunctionState {
   // TEXCOORDn and FOG itself, and texture stage N then reads TEXCOORD<TexCoordIndex[N]>.
   bool vertex_shader = false;
   // A programmable pixel stage reads the generated vertex shader's outputs instead of the
-  // texture stages (whose ColorOps D3D then ignores): the vertex shader writes what it reads,
-  // TEXCOORDn being stage n's coordinates (TexCoordIndex[n], texgen, texture transform).
+  // texture stages (whose ColorOps D3D then ignores). When its inputs are `known` (the caller
+  // read them from the pixel shader's reflection) the vertex shader writes exactly those,
+  // TEXCOORDn being stage n's coordinates (TexCoordIndex[n], texgen, texture transform);
+  // otherwise it writes both colours and the coordinates of the stages the cascade samples.
   bool pixel_shader = false;
   struct PixelShaderInputs {
+    bool known = false;
     bool diffuse = true, specular = true, fog = false;
     uint8_t texcoords = 0;  // bit n: TEXCOORDn
     bool operator==(const PixelShaderInputs&) const = default;
