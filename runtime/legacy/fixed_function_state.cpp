@@ -134,6 +134,12 @@ std::string fixed_function_description(const FixedFunctionState& s) {
   FIELD(emissive_source);
   FIELD(point_size);
   FIELD(point_size_written);
+  FIELD(point_scale);
+  FIELD(point_scale_a);
+  FIELD(point_scale_b);
+  FIELD(point_scale_c);
+  FIELD(point_size_min);
+  FIELD(point_size_max);
   FIELD(fog);
   FIELD(fog_table_mode);
   FIELD(fog_vertex_mode);

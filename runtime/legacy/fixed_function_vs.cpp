@@ -67,7 +67,16 @@ class VertexShaderWriter {
       out += "  float fx_fog : FOG;\n";
     }
     if (s_.point_size_written) {
-      body_ += "  fx_o.fx_point_size = " + decl_.scalar(s_.point_size) + ";\n";
+      std::string size = decl_.scalar(s_.point_size);
+      if (s_.point_scale && !s_.pretransformed) {
+        decl_.uniform("float4", "fx_ff_screen_to_clip");
+        body_ += "  float fx_eye_distance = length(fx_view_position.xyz);\n";
+        size = "2.0 / abs(fx_ff_screen_to_clip.y) * " + size + " * sqrt(1.0 / (" + decl_.scalar(s_.point_scale_a) + " + " +
+               decl_.scalar(s_.point_scale_b) + " * fx_eye_distance + " + decl_.scalar(s_.point_scale_c) +
+               " * fx_eye_distance * fx_eye_distance))";
+      }
+      body_ += "  fx_o.fx_point_size = clamp(" + size + ", " + decl_.scalar(s_.point_size_min) + ", " +
+               decl_.scalar(s_.point_size_max) + ");\n";
       out += "  float fx_point_size : PSIZE;\n";
     }
     body_ += "  return fx_o;\n";

@@ -77,7 +77,9 @@ TEST(FixedFunctionCompile, EveryVertexProcessingPath) {
       s.fog_vertex_mode = static_cast<FogMode>(variant % 4);
       s.fog_table_mode = variant == 7 ? FogMode::exp2 : FogMode::none;
       s.range_fog = variant & 1;
-      s.point_size_written = variant == 6;
+      s.point_size_written = variant >= 6;
+      s.point_scale = variant == 7;
+      s.point_scale_b.value = 0.5f;
       ASSERT_EQ(build(s), "") << "light type " << light_type << " variant " << variant;
       ++built;
     }

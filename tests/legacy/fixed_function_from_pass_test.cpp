@@ -141,6 +141,10 @@ technique t {
     TexCoordIndex[1] = CameraSpaceReflectionVector | 1;
     TextureTransformFlags[1] = Count3 | Projected;
     BumpEnvMat00[1] = 0.5;
+    PointSize = 4;
+    PointScaleEnable = TRUE;
+    PointScale_B = 0.5;
+    PointSize_Max = 32;
   }
 }
 )");
@@ -170,6 +174,10 @@ technique t {
   EXPECT_EQ(s.stages[1].tex_coord_index, texcoord_gen::camera_space_reflection_vector | 1);
   EXPECT_EQ(s.stages[1].texture_transform_flags, 3u | texture_transform::projected);
   EXPECT_FLOAT_EQ(s.stages[1].bump_env_mat[0].value, 0.5f);
+  EXPECT_TRUE(s.point_size_written && s.point_scale);
+  EXPECT_FLOAT_EQ(s.point_size.value, 4);
+  EXPECT_FLOAT_EQ(s.point_scale_b.value, 0.5f);
+  EXPECT_FLOAT_EQ(s.point_size_max.value, 32);
   // Lighting = <Lit> shapes the generated code: it takes Lit's default, with a warning.
   ASSERT_EQ(diags.warning_count(), 1u);
   EXPECT_EQ(diags.diagnostics()[0].id, "fixed-function-frozen");
@@ -178,6 +186,8 @@ technique t {
   EXPECT_NE(vs.find("float4x4 World;"), std::string::npos) << vs;
   EXPECT_NE(vs.find("float3 LightDir;"), std::string::npos) << vs;
   EXPECT_NE(vs.find("float Start;"), std::string::npos) << vs;
+  EXPECT_NE(vs.find("fx_eye_distance"), std::string::npos) << vs;
+  EXPECT_NE(vs.find(": PSIZE;"), std::string::npos) << vs;
   EXPECT_NE(generate_fixed_function_pixel_shader(s).source.find("samplerCUBE fx_stage0;"), std::string::npos);
 }
 

@@ -12,7 +12,7 @@
 //     uniform with the parameter's own name and type and read from it; a constant value is
 //     written as a literal (as is an array, struct or object parameter's resolved value).
 //     Every identifier the generators make starts with fx_: no local hides a parameter.
-//   - `float4 fx_ff_screen_to_clip` (vertex shader, pre-transformed vertices only): clip.xy =
+//   - `float4 fx_ff_screen_to_clip` (vertex shader, pre-transformed vertices and point scaling): clip.xy =
 //     screen.xy * .xy + .zw, screen being D3D9 pixel coordinates (pixel centres on integers).
 //     For a W x H target with clip-space +Y down (Vulkan, positive viewport height):
 //     (2/W, 2/H, -1 + 1/W, -1 + 1/H); with +Y up (negative viewport): (2/W, -2/H, -1 + 1/W, 1 - 1/H).
@@ -152,7 +152,13 @@ struct FixedFunctionState {
   MaterialSource diffuse_source = MaterialSource::color1, specular_source = MaterialSource::color2,
                  ambient_source = MaterialSource::material, emissive_source = MaterialSource::material;
   FixedScalar point_size{1, {}};
-  bool point_size_written = false;    // PointSize was set: the vertex shader writes PSIZE
+  bool point_size_written = false;    // a point state was set: the vertex shader writes PSIZE
+  // PointScaleEnable: size = Vh * PointSize * sqrt(1 / (A + B De + C De^2)), De the eye
+  // distance, Vh the viewport height (2 / |fx_ff_screen_to_clip.y|); then clamped to
+  // [PointSize_Min, PointSize_Max].
+  bool point_scale = false;
+  FixedScalar point_scale_a{1, {}}, point_scale_b, point_scale_c;
+  FixedScalar point_size_min{1, {}}, point_size_max{64, {}};
 
   // Fog: table (per pixel) when table_mode is not none, else vertex fog (per vertex mode,
   // or the FOG input / specular alpha when that is none).
