@@ -14,9 +14,11 @@ class PassReader {
  public:
   PassReader(const EffectModel& model, DiagnosticSink& diags) : model_(model), diags_(diags) {}
 
+  // The parameter a state reads at draw time; none for a static one (its value is fixed).
   ParameterRef ref(const ResolvedState& s) const {
     if (s.kind != StateValueKind::parameter || s.target >= model_.parameters.size()) return {};
     const Parameter& p = model_.parameters[s.target];
+    if (!p.is_uniform()) return {};
     return {p.name, p.type.to_string()};
   }
   // The number a state carries; a parameter's default when it is bound.
@@ -131,6 +133,19 @@ bool read_stage(TextureStageState& st, std::string_view n, const ResolvedState& 
   return true;
 }
 
+// Point states: PointSize, PointSize_Min/Max, PointScaleEnable, PointScale_A/B/C.
+bool read_point(FixedFunctionState& out, std::string_view n, const ResolvedState& s, const PassReader& r) {
+  if (iequals(n, "PointSize")) out.point_size = r.scalar(s);
+  else if (iequals(n, "PointSize_Min")) out.point_size_min = r.scalar(s);
+  else if (iequals(n, "PointSize_Max")) out.point_size_max = r.scalar(s);
+  else if (iequals(n, "PointScaleEnable")) out.point_scale = r.flag(s);
+  else if (iequals(n, "PointScale_A")) out.point_scale_a = r.scalar(s);
+  else if (iequals(n, "PointScale_B")) out.point_scale_b = r.scalar(s);
+  else if (iequals(n, "PointScale_C")) out.point_scale_c = r.scalar(s);
+  else return false;
+  return true;
+}
+
 MaterialSource source(int64_t v) { return v >= 0 && v <= 2 ? static_cast<MaterialSource>(v) : MaterialSource::material; }
 FogMode fog_mode(int64_t v) { return v >= 0 && v <= 3 ? static_cast<FogMode>(v) : FogMode::none; }
 
@@ -141,6 +156,8 @@ FixedFunctionState fixed_function_state(const EffectModel& model, const PassInfo
   const PassReader r(model, diags);
   const ShaderBinding* vs = pass.shader(PassStage::vertex);
   out.vertex_shader = vs && vs->source != ShaderSource::null;
+  const ShaderBinding* ps = pass.shader(PassStage::pixel);
+  out.pixel_shader = ps && ps->source != ShaderSource::null;
   out.alpha_test = pass.summary.alpha_test;
   out.alpha_func = pass.summary.alpha_compare;
   out.alpha_ref.value = static_cast<float>(pass.summary.alpha_ref);
@@ -171,10 +188,8 @@ FixedFunctionState fixed_function_state(const EffectModel& model, const PassInfo
     else if (iequals(n, "SpecularMaterialSource")) out.specular_source = source(r.structural(s));
     else if (iequals(n, "AmbientMaterialSource")) out.ambient_source = source(r.structural(s));
     else if (iequals(n, "EmissiveMaterialSource")) out.emissive_source = source(r.structural(s));
-    else if (iequals(n, "PointSize")) {
-      out.point_size = r.scalar(s);
-      out.point_size_written = true;
-    } else if (iequals(n, "FogEnable")) out.fog = r.flag(s);
+    else if (read_point(out, n, s, r)) out.point_size_written = true;
+    else if (iequals(n, "FogEnable")) out.fog = r.flag(s);
     else if (iequals(n, "FogColor")) out.fog_color = r.vector(s);
     else if (iequals(n, "FogTableMode")) out.fog_table_mode = fog_mode(r.structural(s));
     else if (iequals(n, "FogVertexMode")) out.fog_vertex_mode = fog_mode(r.structural(s));

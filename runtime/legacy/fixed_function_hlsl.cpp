@@ -22,6 +22,12 @@ int components_of(const std::string& t) {
   return std::isdigit(static_cast<unsigned char>(last)) ? last - '0' : 1;
 }
 
+// Whether a parameter can be redeclared and read as a whole: not an array element, struct or
+// object (those keep the value the state resolved to).
+bool readable(const ParameterRef& p) {
+  return p.bound() && p.type.find_first_of("[ <") == std::string::npos && components_of(p.type) >= 1;
+}
+
 }  // namespace
 
 std::string literal(float v) {
@@ -43,7 +49,7 @@ void Declarations::uniform(const std::string& type, const std::string& name) {
 }
 
 std::string Declarations::vector(const FixedVector& v, const std::array<float, 4>& pad) {
-  if (!v.parameter.bound()) return literal4(v.value);
+  if (!readable(v.parameter)) return literal4(v.value);
   const std::string& t = v.parameter.type;
   const std::string& n = v.parameter.name;
   uniform(t, n);
@@ -62,14 +68,14 @@ std::string Declarations::vector(const FixedVector& v, const std::array<float, 4
 }
 
 std::string Declarations::scalar(const FixedScalar& v) {
-  if (!v.parameter.bound()) return literal(v.value);
+  if (!readable(v.parameter)) return literal(v.value);
   uniform(v.parameter.type, v.parameter.name);
   if (components_of(v.parameter.type) > 1) return "float(" + v.parameter.name + ".x)";
   return "float(" + v.parameter.name + ")";
 }
 
 std::string Declarations::matrix(const FixedMatrix& m) {
-  if (m.parameter.bound() && components_of(m.parameter.type) == 16) {
+  if (readable(m.parameter) && components_of(m.parameter.type) == 16) {
     uniform(m.parameter.type, m.parameter.name);
     return m.parameter.name;
   }

@@ -23,6 +23,7 @@ class Declarations {
 
   // A value as a float4 expression: a literal, or the parameter widened to four components
   // (missing components from `pad`; a scalar is splatted; an int/uint/DWORD is a D3DCOLOR).
+  // An array, struct or object parameter keeps the literal value the state resolved to.
   std::string vector(const FixedVector& v, const std::array<float, 4>& pad = {0, 0, 0, 1});
   // A value as a float expression.
   std::string scalar(const FixedScalar& v);

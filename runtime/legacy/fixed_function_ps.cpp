@@ -33,23 +33,23 @@ class PixelShaderWriter {
   explicit PixelShaderWriter(const FixedFunctionState& s) : s_(s), stages_(active_stages(s)) {}
 
   FixedFunctionShader write() {
-    body_ += "  float4 diffuse = i.fx_diffuse;\n";
-    body_ += "  float4 specular = i.fx_specular;\n";
-    body_ += "  float4 current = diffuse;\n";
-    body_ += "  float4 temp = float4(0.0, 0.0, 0.0, 0.0);\n";
-    body_ += "  float4 tfactor = " + decl_.vector(s_.texture_factor) + ";\n";
+    body_ += "  float4 fx_diffuse = i.fx_diffuse;\n";
+    body_ += "  float4 fx_specular = i.fx_specular;\n";
+    body_ += "  float4 fx_current = fx_diffuse;\n";
+    body_ += "  float4 fx_temp = float4(0.0, 0.0, 0.0, 0.0);\n";
+    body_ += "  float4 fx_tfactor = " + decl_.vector(s_.texture_factor) + ";\n";
     for (int i = 0; i < stages_; ++i)
       if (is_bump(s_.stages[i].color_op)) {
-        body_ += "  float2 bump = float2(0.0, 0.0);\n  float luminance = 1.0;\n";
+        body_ += "  float2 fx_bump = float2(0.0, 0.0);\n  float fx_luminance = 1.0;\n";
         break;
       }
     // Textures first (a stage may read the next one's: PreModulate), then the blending.
     for (int i = 0; i < stages_; ++i) texture(i);
     for (int i = 0; i < stages_; ++i) stage(i);
-    if (s_.specular_enable) body_ += "  current.rgb = saturate(current.rgb + specular.rgb);\n";
+    if (s_.specular_enable) body_ += "  fx_current.rgb = saturate(fx_current.rgb + fx_specular.rgb);\n";
     if (s_.fog) fog();
     if (s_.alpha_test) alpha_test();
-    body_ += "  return current;\n";
+    body_ += "  return fx_current;\n";
 
     std::string inputs = "  float4 fx_diffuse : COLOR0;\n  float4 fx_specular : COLOR1;\n";
     for (int t = 0; t < 8; ++t)
@@ -70,12 +70,12 @@ class PixelShaderWriter {
   std::string arg(uint32_t a, int i) {
     std::string v;
     switch (a & ta::select_mask) {
-      case ta::diffuse: v = "diffuse"; break;
-      case ta::current: v = "current"; break;
-      case ta::texture: v = "tex" + std::to_string(i); break;
-      case ta::tfactor: v = "tfactor"; break;
-      case ta::specular: v = "specular"; break;
-      case ta::temp: v = "temp"; break;
+      case ta::diffuse: v = "fx_diffuse"; break;
+      case ta::current: v = "fx_current"; break;
+      case ta::texture: v = "fx_tex" + std::to_string(i); break;
+      case ta::tfactor: v = "fx_tfactor"; break;
+      case ta::specular: v = "fx_specular"; break;
+      case ta::temp: v = "fx_temp"; break;
       case ta::constant: v = decl_.vector(s_.stages[i].constant); break;
       default: v = "float4(0.0, 0.0, 0.0, 0.0)"; break;
     }
@@ -87,44 +87,44 @@ class PixelShaderWriter {
   // The operation on float4 arguments a0, a1, a2 (rgb used for colour, a for alpha).
   std::string op_expr(TextureOp op, int i) {
     const std::string n = std::to_string(i);
-    const std::string tex_alpha = "tex" + n + ".aaaa";
+    const std::string tex_alpha = "fx_tex" + n + ".aaaa";
     switch (op) {
       case TextureOp::disable:
       case TextureOp::bump_env_map:
-      case TextureOp::bump_env_map_luminance: return "current";
-      case TextureOp::select_arg1: return "a1";
-      case TextureOp::select_arg2: return "a2";
-      case TextureOp::modulate: return "a1 * a2";
-      case TextureOp::modulate_2x: return "a1 * a2 * 2.0";
-      case TextureOp::modulate_4x: return "a1 * a2 * 4.0";
-      case TextureOp::add: return "a1 + a2";
-      case TextureOp::add_signed: return "a1 + a2 - 0.5";
-      case TextureOp::add_signed_2x: return "(a1 + a2 - 0.5) * 2.0";
-      case TextureOp::subtract: return "a1 - a2";
-      case TextureOp::add_smooth: return "a1 + a2 - a1 * a2";
-      case TextureOp::blend_diffuse_alpha: return "lerp(a2, a1, diffuse.aaaa)";
-      case TextureOp::blend_texture_alpha: return "lerp(a2, a1, " + tex_alpha + ")";
-      case TextureOp::blend_factor_alpha: return "lerp(a2, a1, tfactor.aaaa)";
-      case TextureOp::blend_texture_alpha_pm: return "a1 + a2 * (1.0 - " + tex_alpha + ")";
-      case TextureOp::blend_current_alpha: return "lerp(a2, a1, current.aaaa)";
+      case TextureOp::bump_env_map_luminance: return "fx_current";
+      case TextureOp::select_arg1: return "fx_a1";
+      case TextureOp::select_arg2: return "fx_a2";
+      case TextureOp::modulate: return "fx_a1 * fx_a2";
+      case TextureOp::modulate_2x: return "fx_a1 * fx_a2 * 2.0";
+      case TextureOp::modulate_4x: return "fx_a1 * fx_a2 * 4.0";
+      case TextureOp::add: return "fx_a1 + fx_a2";
+      case TextureOp::add_signed: return "fx_a1 + fx_a2 - 0.5";
+      case TextureOp::add_signed_2x: return "(fx_a1 + fx_a2 - 0.5) * 2.0";
+      case TextureOp::subtract: return "fx_a1 - fx_a2";
+      case TextureOp::add_smooth: return "fx_a1 + fx_a2 - fx_a1 * fx_a2";
+      case TextureOp::blend_diffuse_alpha: return "lerp(fx_a2, fx_a1, fx_diffuse.aaaa)";
+      case TextureOp::blend_texture_alpha: return "lerp(fx_a2, fx_a1, " + tex_alpha + ")";
+      case TextureOp::blend_factor_alpha: return "lerp(fx_a2, fx_a1, fx_tfactor.aaaa)";
+      case TextureOp::blend_texture_alpha_pm: return "fx_a1 + fx_a2 * (1.0 - " + tex_alpha + ")";
+      case TextureOp::blend_current_alpha: return "lerp(fx_a2, fx_a1, fx_current.aaaa)";
       case TextureOp::premodulate:
-        return i + 1 < stages_ && samples(s_, i + 1) ? "a1 * tex" + std::to_string(i + 1) : "a1";
-      case TextureOp::modulate_alpha_add_color: return "a1 + a1.aaaa * a2";
-      case TextureOp::modulate_color_add_alpha: return "a1 * a2 + a1.aaaa";
-      case TextureOp::modulate_inv_alpha_add_color: return "a1 + (1.0 - a1.aaaa) * a2";
-      case TextureOp::modulate_inv_color_add_alpha: return "(1.0 - a1) * a2 + a1.aaaa";
-      case TextureOp::dot_product3: return "dot(a1.rgb - 0.5, a2.rgb - 0.5).xxxx * 4.0";
-      case TextureOp::multiply_add: return "a0 + a1 * a2";
-      case TextureOp::lerp: return "lerp(a2, a1, a0)";
+        return i + 1 < stages_ && samples(s_, i + 1) ? "fx_a1 * fx_tex" + std::to_string(i + 1) : "fx_a1";
+      case TextureOp::modulate_alpha_add_color: return "fx_a1 + fx_a1.aaaa * fx_a2";
+      case TextureOp::modulate_color_add_alpha: return "fx_a1 * fx_a2 + fx_a1.aaaa";
+      case TextureOp::modulate_inv_alpha_add_color: return "fx_a1 + (1.0 - fx_a1.aaaa) * fx_a2";
+      case TextureOp::modulate_inv_color_add_alpha: return "(1.0 - fx_a1) * fx_a2 + fx_a1.aaaa";
+      case TextureOp::dot_product3: return "dot(fx_a1.rgb - 0.5, fx_a2.rgb - 0.5).xxxx * 4.0";
+      case TextureOp::multiply_add: return "fx_a0 + fx_a1 * fx_a2";
+      case TextureOp::lerp: return "lerp(fx_a2, fx_a1, fx_a0)";
     }
-    return "current";
+    return "fx_current";
   }
 
   // Declares a0..a2 for `op` from `args` inside the current block.
   void args(TextureOp op, const std::array<uint32_t, 3>& a, int i) {
-    if (uses_arg0(op)) body_ += "    float4 a0 = " + arg(a[0], i) + ";\n";
-    if (uses_arg1(op)) body_ += "    float4 a1 = " + arg(a[1], i) + ";\n";
-    if (uses_arg2(op)) body_ += "    float4 a2 = " + arg(a[2], i) + ";\n";
+    if (uses_arg0(op)) body_ += "    float4 fx_a0 = " + arg(a[0], i) + ";\n";
+    if (uses_arg1(op)) body_ += "    float4 fx_a1 = " + arg(a[1], i) + ";\n";
+    if (uses_arg2(op)) body_ += "    float4 fx_a2 = " + arg(a[2], i) + ";\n";
   }
 
   std::string coords(int i) {
@@ -140,7 +140,7 @@ class PixelShaderWriter {
       c = "(" + c + " / " + tc + last + ")";
     }
     if (i > 0 && is_bump(s_.stages[i - 1].color_op))
-      c = flat ? "(" + c + " + bump)" : "(" + c + " + float3(bump, 0.0))";
+      c = flat ? "(" + c + " + fx_bump)" : "(" + c + " + float3(fx_bump, 0.0))";
     return c;
   }
 
@@ -150,9 +150,9 @@ class PixelShaderWriter {
     const char* type = st.texture == StageTexture::cube ? "samplerCUBE" : st.texture == StageTexture::volume ? "sampler3D" : "sampler2D";
     const char* fn = st.texture == StageTexture::cube ? "texCUBE" : st.texture == StageTexture::volume ? "tex3D" : "tex2D";
     decl_.uniform(type, "fx_stage" + n);
-    body_ += "  float4 tex" + n + " = " + fn + "(fx_stage" + n + ", " + coords(i) + ");\n";
+    body_ += "  float4 fx_tex" + n + " = " + fn + "(fx_stage" + n + ", " + coords(i) + ");\n";
     if (i > 0 && s_.stages[i - 1].color_op == TextureOp::bump_env_map_luminance)
-      body_ += "  tex" + n + ".rgb *= luminance;\n";
+      body_ += "  fx_tex" + n + ".rgb *= fx_luminance;\n";
   }
 
   // Stage `i`'s texture value and, for a bump stage, the offset and luminance it gives the next.
@@ -161,13 +161,13 @@ class PixelShaderWriter {
     const std::string n = std::to_string(i);
     if (samples(s_, i)) sample(i);
     else if (ff_detail::reads_texture(s_, i))
-      body_ += "  float4 tex" + n + " = float4(1.0, 1.0, 1.0, 1.0);  // no texture bound\n";
+      body_ += "  float4 fx_tex" + n + " = float4(1.0, 1.0, 1.0, 1.0);  // no texture bound\n";
     if (!is_bump(st.color_op)) return;
     const auto& m = st.bump_env_mat;
-    body_ += "  bump = float2(" + decl_.scalar(m[0]) + " * tex" + n + ".r + " + decl_.scalar(m[2]) + " * tex" + n +
-             ".g, " + decl_.scalar(m[1]) + " * tex" + n + ".r + " + decl_.scalar(m[3]) + " * tex" + n + ".g);\n";
+    body_ += "  fx_bump = float2(" + decl_.scalar(m[0]) + " * fx_tex" + n + ".r + " + decl_.scalar(m[2]) + " * fx_tex" + n +
+             ".g, " + decl_.scalar(m[1]) + " * fx_tex" + n + ".r + " + decl_.scalar(m[3]) + " * fx_tex" + n + ".g);\n";
     if (st.color_op == TextureOp::bump_env_map_luminance)
-      body_ += "  luminance = saturate(tex" + n + ".b * " + decl_.scalar(st.bump_env_lscale) + " + " +
+      body_ += "  fx_luminance = saturate(fx_tex" + n + ".b * " + decl_.scalar(st.bump_env_lscale) + " + " +
                decl_.scalar(st.bump_env_loffset) + ");\n";
   }
 
@@ -176,39 +176,39 @@ class PixelShaderWriter {
     const std::string n = std::to_string(i);
     body_ += "  // stage " + n + ": " + to_string(st.color_op) + " / " + to_string(st.alpha_op) + "\n";
     if (is_bump(st.color_op)) return;  // a bump stage leaves the result registers as they are
-    const std::string dest = (st.result_arg & ta::select_mask) == ta::temp ? "temp" : "current";
+    const std::string dest = (st.result_arg & ta::select_mask) == ta::temp ? "fx_temp" : "fx_current";
     body_ += "  {\n";
     args(st.color_op, st.color_arg, i);
-    body_ += "    float4 color = saturate(" + op_expr(st.color_op, i) + ");\n";
+    body_ += "    float4 fx_color = saturate(" + op_expr(st.color_op, i) + ");\n";
     body_ += "  {\n";
     if (st.color_op == TextureOp::dot_product3) {
       // D3D9: DotProduct3 as the colour operation replicates into alpha as well.
-      body_ += "    float alpha = color.a;\n";
+      body_ += "    float fx_alpha = fx_color.a;\n";
     } else if (st.alpha_op == TextureOp::disable || is_bump(st.alpha_op)) {
-      body_ += "    float alpha = current.a;\n";
+      body_ += "    float fx_alpha = fx_current.a;\n";
     } else {
       args(st.alpha_op, st.alpha_arg, i);
-      body_ += "    float alpha = saturate(" + op_expr(st.alpha_op, i) + ").a;\n";
+      body_ += "    float fx_alpha = saturate(" + op_expr(st.alpha_op, i) + ").a;\n";
     }
-    body_ += "    " + dest + " = float4(color.rgb, alpha);\n";
+    body_ += "    " + dest + " = float4(fx_color.rgb, fx_alpha);\n";
     body_ += "  }\n  }\n";
   }
 
   void fog() {
     std::string f;
     if (table_fog(s_)) {
-      body_ += "  float fog_depth = 1.0 / i.fx_position.w;\n";
+      body_ += "  float fx_fog_depth = 1.0 / i.fx_position.w;\n";
       const std::string start = decl_.scalar(s_.fog_start), end = decl_.scalar(s_.fog_end), density = decl_.scalar(s_.fog_density);
       switch (s_.fog_table_mode) {
-        case FogMode::linear: f = "(" + end + " - fog_depth) / (" + end + " - " + start + ")"; break;
-        case FogMode::exp: f = "exp(-" + density + " * fog_depth)"; break;
-        default: f = "exp(-(" + density + " * fog_depth) * (" + density + " * fog_depth))"; break;
+        case FogMode::linear: f = "(" + end + " - fx_fog_depth) / (" + end + " - " + start + ")"; break;
+        case FogMode::exp: f = "exp(-" + density + " * fx_fog_depth)"; break;
+        default: f = "exp(-(" + density + " * fx_fog_depth) * (" + density + " * fx_fog_depth))"; break;
       }
     } else {
       f = "i.fx_fog";
     }
-    body_ += "  float fog = saturate(" + f + ");\n";
-    body_ += "  current.rgb = lerp(" + decl_.vector(s_.fog_color) + ".rgb, current.rgb, fog);\n";
+    body_ += "  float fx_fog = saturate(" + f + ");\n";
+    body_ += "  fx_current.rgb = lerp(" + decl_.vector(s_.fog_color) + ".rgb, fx_current.rgb, fx_fog);\n";
   }
 
   void alpha_test() {
@@ -219,8 +219,8 @@ class PixelShaderWriter {
       body_ += "  discard;\n";
       return;
     }
-    body_ += "  float alpha_8bit = floor(saturate(current.a) * 255.0 + 0.5);\n";
-    body_ += "  if (!(alpha_8bit " + std::string(cmp[c]) + " " + decl_.scalar(s_.alpha_ref) + ")) discard;\n";
+    body_ += "  float fx_alpha_8bit = floor(saturate(fx_current.a) * 255.0 + 0.5);\n";
+    body_ += "  if (!(fx_alpha_8bit " + std::string(cmp[c]) + " " + decl_.scalar(s_.alpha_ref) + ")) discard;\n";
   }
 
   const FixedFunctionState& s_;

@@ -83,6 +83,12 @@ std::string fixed_function_description(const FixedFunctionState& s) {
   }
   FIELD(texture_factor);
   FIELD(vertex_shader);
+  FIELD(pixel_shader);
+  FIELD(pixel_shader_inputs.known);
+  FIELD(pixel_shader_inputs.diffuse);
+  FIELD(pixel_shader_inputs.specular);
+  FIELD(pixel_shader_inputs.fog);
+  field(out, "pixel_shader_inputs.texcoords", uint32_t{s.pixel_shader_inputs.texcoords}, uint32_t{d.pixel_shader_inputs.texcoords});
   FIELD(pretransformed);
   FIELD(vertex_diffuse);
   FIELD(vertex_specular);
@@ -128,6 +134,12 @@ std::string fixed_function_description(const FixedFunctionState& s) {
   FIELD(emissive_source);
   FIELD(point_size);
   FIELD(point_size_written);
+  FIELD(point_scale);
+  FIELD(point_scale_a);
+  FIELD(point_scale_b);
+  FIELD(point_scale_c);
+  FIELD(point_size_min);
+  FIELD(point_size_max);
   FIELD(fog);
   FIELD(fog_table_mode);
   FIELD(fog_vertex_mode);

@@ -81,6 +81,33 @@ float4 PS(float2 uv : TEXCOORD0, float4 c : COLOR1) : SV_Target { return c * uv.
   EXPECT_NE(sink.diagnostics()[0].message.find("COLOR1"), std::string::npos);
 }
 
+TEST(ProgramLink, InputsTheCodeNeverReadsStillLinkBySemantic) {
+  // spirv-opt drops the semantic of an input the pixel shader never reads (diffuse, fog);
+  // the declaration still gives it, so TEXCOORD0 keeps matching the vertex output and the
+  // unread, unwritten FOG is no warning.
+  const char* src = R"(struct V { float4 pos : POSITION; float4 diffuse : COLOR0; float4 uv : TEXCOORD0; };
+V VS(float4 p : POSITION) { V o; o.pos = p; o.diffuse = p; o.uv = p * 2; return o; }
+struct P { float4 diffuse : COLOR0; float4 uv : TEXCOORD0; float fog : FOG; };
+float4 PS(P i) : COLOR0 { float4 unused = i.diffuse * i.fog; return i.uv; }
+)";
+  ShaderCompiler compiler;
+  CompiledShader vs = compiler.compile(test::unit(src, ShaderStage::vertex, "VS", "vs_3_0"));
+  CompiledShader ps = compiler.compile(test::unit(src, ShaderStage::fragment, "PS", "ps_3_0"));
+  ASSERT_TRUE(vs.ok && ps.ok) << vs.info_log << ps.info_log;
+  DiagnosticSink sink;
+  link_program({&vs, &ps}, sink);
+  EXPECT_EQ(sink.warning_count(), 0u);
+  uint32_t written = 99, read = 98;
+  for (const InterfaceVariable& v : vs.reflection.outputs)
+    if (v.semantic == "TEXCOORD0") written = v.location;
+  for (const InterfaceVariable& v : ps.reflection.inputs) {
+    EXPECT_FALSE(v.semantic.empty()) << v.name;
+    if (v.semantic == "TEXCOORD0") read = v.location;
+    EXPECT_EQ(!v.unread, v.semantic == "TEXCOORD0") << v.name;
+  }
+  EXPECT_EQ(read, written);
+}
+
 TEST(ProgramLink, DifferentBlocksWithOneNameGetTheirOwnBindings) {
   const char* vs_src = "cbuffer C { float4 a; };\nfloat4 VS() : SV_Position { return a; }\n";
   const char* ps_src = "cbuffer C { float4 a; float4 b; };\nfloat4 PS() : SV_Target { return a + b; }\n";

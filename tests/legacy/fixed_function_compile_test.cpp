@@ -77,7 +77,9 @@ TEST(FixedFunctionCompile, EveryVertexProcessingPath) {
       s.fog_vertex_mode = static_cast<FogMode>(variant % 4);
       s.fog_table_mode = variant == 7 ? FogMode::exp2 : FogMode::none;
       s.range_fog = variant & 1;
-      s.point_size_written = variant == 6;
+      s.point_size_written = variant >= 6;
+      s.point_scale = variant == 7;
+      s.point_scale_b.value = 0.5f;
       ASSERT_EQ(build(s), "") << "light type " << light_type << " variant " << variant;
       ++built;
     }
@@ -109,6 +111,8 @@ TEST(FixedFunctionCompile, ParameterBoundValuesAreDeclaredWithTheParameterNames)
   s.alpha_ref.parameter = {"Cutoff", "int"};
   s.fog = true;
   s.fog_color.parameter = {"FogColour", "uint"};
+  s.lights[0].diffuse.parameter = {"Lights", "float4[4]"};  // an array: its resolved value, as a literal
+  s.lights[0].diffuse.value = {0.5f, 0.25f, 0.125f, 1};
   const std::string ps = generate_fixed_function_pixel_shader(s).source;
   const std::string vs = generate_fixed_function_vertex_shader(s).source;
   EXPECT_NE(ps.find("float4 Tint;"), std::string::npos) << ps;
@@ -117,6 +121,8 @@ TEST(FixedFunctionCompile, ParameterBoundValuesAreDeclaredWithTheParameterNames)
   EXPECT_NE(vs.find("float4x4 mWorld;"), std::string::npos) << vs;
   EXPECT_NE(vs.find("float3 LightDirection;"), std::string::npos) << vs;
   EXPECT_NE(vs.find("float3 Albedo;"), std::string::npos) << vs;
+  EXPECT_EQ(vs.find("Lights"), std::string::npos) << vs;
+  EXPECT_NE(vs.find("float4(0.5, 0.25, 0.125, 1.0)"), std::string::npos) << vs;
   EXPECT_EQ(build(s), "");
 }
 

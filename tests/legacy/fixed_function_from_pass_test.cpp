@@ -2,8 +2,7 @@
 // specular-emboss passes, and values bound to parameters kept as parameter references.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
+#include <filesystem>
 
 #include "../model/model_test_util.h"
 #include "fixed_function_rig.h"
@@ -84,6 +83,32 @@ TEST(FixedFunctionFromPass, SeedDot3EmbossAndSpecularEmbossPasses) {
             fixed_function_key(fixed_function_state(e->model, pass_of(e->model, "dot3_multitexture"), diags)));
 }
 
+TEST(FixedFunctionFromPass, EveryD3D9PassOfTheSeedEffectsGivesStagesThatCompile) {
+  // Both generated stages of every D3D9 pass, whether or not the pass has its own shaders.
+  int passes = 0;
+  const ShaderCompiler compiler;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(FXKIT_SOURCE_DIR) + "/effects")) {
+    if (entry.path().extension() != ".fx") continue;
+    auto e = load(entry.path().filename().string());
+    ASSERT_FALSE(e->diags.has_errors()) << entry.path();
+    for (const TechniqueInfo& t : e->model.techniques) {
+      if (t.version != 9) continue;
+      for (const PassInfo& p : t.passes) {
+        DiagnosticSink diags;
+        const FixedFunctionState s = fixed_function_state(e->model, p, diags);
+        EXPECT_FALSE(diags.has_errors());
+        const CompiledShader vs = compiler.compile(vk::testing::unit(generate_fixed_function_vertex_shader(s), ShaderStage::vertex));
+        const CompiledShader ps = compiler.compile(vk::testing::unit(generate_fixed_function_pixel_shader(s), ShaderStage::fragment));
+        EXPECT_TRUE(vs.ok && ps.ok) << entry.path().filename() << " " << t.name << "/" << p.name << "\n"
+                                    << vs.info_log << ps.info_log;
+        ++passes;
+      }
+    }
+  }
+  std::printf("[ fixed-function ] %d D3D9 passes of effects/: both generated stages compile\n", passes);
+  EXPECT_GE(passes, 20);
+}
+
 TEST(FixedFunctionFromPass, ParameterBoundValuesStayParameterReferences) {
   auto b = test::build(R"(
 float4 Tint = {1, 0.5, 0.25, 1};
@@ -116,6 +141,10 @@ technique t {
     TexCoordIndex[1] = CameraSpaceReflectionVector | 1;
     TextureTransformFlags[1] = Count3 | Projected;
     BumpEnvMat00[1] = 0.5;
+    PointSize = 4;
+    PointScaleEnable = TRUE;
+    PointScale_B = 0.5;
+    PointSize_Max = 32;
   }
 }
 )");
@@ -145,6 +174,10 @@ technique t {
   EXPECT_EQ(s.stages[1].tex_coord_index, texcoord_gen::camera_space_reflection_vector | 1);
   EXPECT_EQ(s.stages[1].texture_transform_flags, 3u | texture_transform::projected);
   EXPECT_FLOAT_EQ(s.stages[1].bump_env_mat[0].value, 0.5f);
+  EXPECT_TRUE(s.point_size_written && s.point_scale);
+  EXPECT_FLOAT_EQ(s.point_size.value, 4);
+  EXPECT_FLOAT_EQ(s.point_scale_b.value, 0.5f);
+  EXPECT_FLOAT_EQ(s.point_size_max.value, 32);
   // Lighting = <Lit> shapes the generated code: it takes Lit's default, with a warning.
   ASSERT_EQ(diags.warning_count(), 1u);
   EXPECT_EQ(diags.diagnostics()[0].id, "fixed-function-frozen");
@@ -153,6 +186,8 @@ technique t {
   EXPECT_NE(vs.find("float4x4 World;"), std::string::npos) << vs;
   EXPECT_NE(vs.find("float3 LightDir;"), std::string::npos) << vs;
   EXPECT_NE(vs.find("float Start;"), std::string::npos) << vs;
+  EXPECT_NE(vs.find("fx_eye_distance"), std::string::npos) << vs;
+  EXPECT_NE(vs.find(": PSIZE;"), std::string::npos) << vs;
   EXPECT_NE(generate_fixed_function_pixel_shader(s).source.find("samplerCUBE fx_stage0;"), std::string::npos);
 }
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../model/model_test_util.h"
 #include "fixed_function_rig.h"
 #include "vertex_lighting_model.h"
 
@@ -226,6 +227,102 @@ TEST_F(FixedFunctionLighting, TexgenAndTextureTransformsMatchTheModel) {
           }
       }
   std::printf("[ fixed-function ] texgen and texture transforms: largest |GPU - CPU model| %.3g\n", worst);
+}
+
+TEST_F(FixedFunctionLighting, WithAPixelShaderTheVertexShaderWritesWhatItReads) {
+  // A pass with an HLSL pixel shader reading TEXCOORD1 alone: stage 1's coordinates (set 0,
+  // transformed), no colours (the fixture fails on Vulkan's unconsumed-output warning).
+  FixedFunctionState s = lit_state(0);
+  s.fog = false;
+  s.pixel_shader = true;
+  s.pixel_shader_inputs = {true, false, false, false, 0b10};
+  s.stages[1].tex_coord_index = 0;
+  s.stages[1].texture_transform_flags = 2;
+  s.stages[1].texture_transform.value = {2, 0, 0, 0, 0, 0.5f, 0, 0, 0.25f, 0, 1, 0, 0, 0, 0, 1};
+  const std::string vs = generate_fixed_function_vertex_shader(s).source;
+  const std::string outputs = vs.substr(vs.find("struct fx_ff_vs_out"), vs.find("fx_ff_vs_out fx_ff_vs(") - vs.find("struct fx_ff_vs_out"));
+  EXPECT_EQ(outputs.find("COLOR"), std::string::npos) << outputs;
+  EXPECT_NE(outputs.find("TEXCOORD1"), std::string::npos) << outputs;
+  const DrawnQuad q = draw_quad(ctx(), s, "float4 PS(float4 tc : TEXCOORD1) : COLOR0 { return tc; }");
+  ASSERT_EQ(q.image.width, kSize);
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      const double u = (x + 0.5) / kSize, v = (y + 0.5) / kSize;
+      const double want[4] = {2 * u + 0.25, 0.5 * v, 1, 0};  // (u, v, 1, 0) * M
+      for (int c = 0; c < 4; ++c) ASSERT_NEAR(q.image.at(x, y)[c], want[c], kTolerance) << x << "," << y << " " << c;
+    }
+}
+
+TEST_F(FixedFunctionLighting, AnEffectPassDrawsAsTheModelSays) {
+  // From .fx text to pixels: the pass's states read by fixed_function_state, the parameters
+  // it binds uploaded by name, both generated stages drawn and compared with the model.
+  auto b = test::build(R"(
+static const float4x4 World = {0, 1, 0, 0,  -1, 0, 0, 0,  0, 0, 2, 0,  0, 0, 0, 1};
+float3 LightDir = {0.3, -0.5, 1};
+float4 Tint = {0.8, 0.6, 0.4, 0.7};
+technique t {
+  pass p {
+    WorldTransform[0] = <World>;
+    Lighting = TRUE;
+    NormalizeNormals = TRUE;
+    LightEnable[0] = TRUE;
+    LightType[0] = Directional;
+    LightDirection[0] = <LightDir>;
+    LightDiffuse[0] = {1, 0.9, 0.8, 1};
+    MaterialDiffuse = {0.9, 0.8, 0.7, 1};
+    MaterialAmbient = {1, 1, 1, 1};
+    DiffuseMaterialSource = Material;
+    Ambient = 0x00203040;
+    TextureFactor = <Tint>;
+    ColorOp[0] = Modulate;
+    ColorArg1[0] = Diffuse;
+    ColorArg2[0] = TFactor;
+    AlphaOp[0] = SelectArg1;
+    AlphaArg1[0] = TFactor;
+  }
+}
+)");
+  ASSERT_FALSE(b->diags.has_errors()) << b->text();
+  DiagnosticSink diags;
+  FixedFunctionState s = fixed_function_state(b->model, b->model.techniques[0].passes[0], diags);
+  EXPECT_FALSE(s.world.parameter.bound());  // static: its value, not a uniform
+  ASSERT_TRUE(s.lights[0].direction.parameter.bound());
+  s.vertex_specular = false;
+  FixedFunctionRig rig(ctx(), kSize);
+  ASSERT_TRUE(rig.build(s));
+  const float light_dir[3] = {0.3f, -0.5f, 1}, tint[4] = {0.8f, 0.6f, 0.4f, 0.7f};
+  ASSERT_TRUE(rig.set_uniform("LightDir", light_dir, sizeof light_dir));
+  ASSERT_TRUE(rig.set_uniform("Tint", tint, sizeof tint));
+  std::array<ff_model::VertexOut, 4> lit;
+  std::array<FixedVertex, 4> v;
+  for (int i = 0; i < 4; ++i) {
+    ff_model::VertexIn in = vertex_in(kCorners[i]);
+    in.specular = {0, 0, 0, 0};  // the mesh has none: D3D's default
+    lit[i] = ff_model::process_vertex(s, in);
+    v[i] = fixed_vertex(in, kCorners[i]);
+  }
+  const fx::ImageF image = rig.render(quad(v));
+  ASSERT_EQ(image.width, kSize);
+  double worst = 0;
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      const std::array<double, 4> weight = corner_weights(x, y);
+      ff_model::PixelInputs in;
+      in.diffuse = in.specular = {0, 0, 0, 0};
+      for (int k = 0; k < 4; ++k)
+        for (int c = 0; c < 4; ++c) {
+          in.diffuse[c] += weight[k] * lit[k].diffuse[c];
+          in.specular[c] += weight[k] * lit[k].specular[c];
+        }
+      const Color want = ff_model::texture_stages(s, in);
+      for (int c = 0; c < 4; ++c) {
+        worst = std::max(worst, std::fabs(image.at(x, y)[c] - want[c]));
+        ASSERT_NEAR(image.at(x, y)[c], want[c], kTolerance) << x << "," << y << " channel " << c;
+      }
+    }
+  // Lit, tinted and not flat: the light direction reached the shader.
+  EXPECT_GT(std::fabs(image.at(0, 0)[0] - image.at(kSize - 1, kSize - 1)[0]), 0.01);
+  std::printf("[ fixed-function ] effect pass end to end: largest |GPU - CPU model| %.3g\n", worst);
 }
 
 TEST_F(FixedFunctionLighting, TableFogUsesTheEyeDepth) {

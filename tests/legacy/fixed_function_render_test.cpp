@@ -258,10 +258,11 @@ TEST_F(FixedFunctionRender, SpecularFogAndAlphaTest) {
 TEST_F(FixedFunctionRender, TextureFactorBoundToAParameterIsRead) {
   FixedFunctionState s = one_stage(TextureOp::modulate, TextureOp::select_arg2, {ta::current, ta::texture, ta::tfactor},
                                    {ta::current, ta::texture, ta::tfactor});
-  s.texture_factor.parameter = {"Tint", "float4"};
-  s.texture_factor.value = {0.25f, 0.5f, 0.75f, 0.6f};  // uploaded to Tint, not written as a literal
+  // Named as the cascade's register would be in HLSL: the generated locals must not hide it.
+  s.texture_factor.parameter = {"current", "float4"};
+  s.texture_factor.value = {0.25f, 0.5f, 0.75f, 0.6f};  // uploaded to the parameter, not a literal
   tfactor_uniform_ = true;
-  expect_matches_model(s, "TextureFactor = <Tint>");
+  expect_matches_model(s, "TextureFactor = <current>");
   EXPECT_EQ(generate_fixed_function_pixel_shader(s).source.find("0.75"), std::string::npos);
 }
 

@@ -10,8 +10,9 @@
 //     with stage N's sampler states.
 //   - a value bound to an effect parameter (`TextureFactor = <tf>;`) is declared as a
 //     uniform with the parameter's own name and type and read from it; a constant value is
-//     written as a literal.
-//   - `float4 fx_ff_screen_to_clip` (vertex shader, pre-transformed vertices only): clip.xy =
+//     written as a literal (as is an array, struct or object parameter's resolved value).
+//     Every identifier the generators make starts with fx_: no local hides a parameter.
+//   - `float4 fx_ff_screen_to_clip` (vertex shader, pre-transformed vertices and point scaling): clip.xy =
 //     screen.xy * .xy + .zw, screen being D3D9 pixel coordinates (pixel centres on integers).
 //     For a W x H target with clip-space +Y down (Vulkan, positive viewport height):
 //     (2/W, 2/H, -1 + 1/W, -1 + 1/H); with +Y up (negative viewport): (2/W, -2/H, -1 + 1/W, 1 - 1/H).
@@ -124,6 +125,18 @@ struct FixedFunctionState {
   // Which stages come from shaders: a programmable vertex stage writes COLOR0/1,
   // TEXCOORDn and FOG itself, and texture stage N then reads TEXCOORD<TexCoordIndex[N]>.
   bool vertex_shader = false;
+  // A programmable pixel stage reads the generated vertex shader's outputs instead of the
+  // texture stages (whose ColorOps D3D then ignores). When its inputs are `known` (the caller
+  // read them from the pixel shader's reflection) the vertex shader writes exactly those,
+  // TEXCOORDn being stage n's coordinates (TexCoordIndex[n], texgen, texture transform);
+  // otherwise it writes both colours and the coordinates of the stages the cascade samples.
+  bool pixel_shader = false;
+  struct PixelShaderInputs {
+    bool known = false;
+    bool diffuse = true, specular = true, fog = false;
+    uint8_t texcoords = 0;  // bit n: TEXCOORDn
+    bool operator==(const PixelShaderInputs&) const = default;
+  } pixel_shader_inputs;
   // Vertex processing (ignored with vertex_shader).
   bool pretransformed = false;        // XYZRHW positions (D3DFVF_XYZRHW)
   bool vertex_diffuse = true, vertex_specular = true;  // the mesh has COLOR0 / COLOR1
@@ -139,7 +152,13 @@ struct FixedFunctionState {
   MaterialSource diffuse_source = MaterialSource::color1, specular_source = MaterialSource::color2,
                  ambient_source = MaterialSource::material, emissive_source = MaterialSource::material;
   FixedScalar point_size{1, {}};
-  bool point_size_written = false;    // PointSize was set: the vertex shader writes PSIZE
+  bool point_size_written = false;    // a point state was set: the vertex shader writes PSIZE
+  // PointScaleEnable: size = Vh * PointSize * sqrt(1 / (A + B De + C De^2)), De the eye
+  // distance, Vh the viewport height (2 / |fx_ff_screen_to_clip.y|); then clamped to
+  // [PointSize_Min, PointSize_Max].
+  bool point_scale = false;
+  FixedScalar point_scale_a{1, {}}, point_scale_b, point_scale_c;
+  FixedScalar point_size_min{1, {}}, point_size_max{64, {}};
 
   // Fog: table (per pixel) when table_mode is not none, else vertex fog (per vertex mode,
   // or the FOG input / specular alpha when that is none).
@@ -180,8 +199,9 @@ std::string fixed_function_description(const FixedFunctionState& state);
 // The fixed-function state of `pass`: its D3D9 texture-stage, light, material, transform,
 // fog and alpha-test states over D3D's defaults. Values bound to parameters become
 // ParameterRefs. A stage's texture type comes from the texture parameter Texture[n] names.
-// vertex_shader is set when the pass binds a vertex shader. Reports nothing today; `diags`
-// takes future warnings (values out of range).
+// vertex_shader / pixel_shader are set when the pass binds that stage (the caller fills
+// pixel_shader_inputs from the pixel shader's reflection). Warns `fixed-function-frozen` when
+// a state that shapes the code is bound to a parameter (its default is used).
 FixedFunctionState fixed_function_state(const EffectModel& model, const PassInfo& pass, DiagnosticSink& diags);
 
 }  // namespace fx
