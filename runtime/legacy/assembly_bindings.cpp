@@ -101,7 +101,7 @@ class Binder {
     int rows = 0, columns = 0;
     if (!shape_of(std::string(v->type.name), rows, columns) || v->array_dims.size() > 1) {
       sink_.error("asm-constant", value.range,
-                  "'" + std::string(v->name) + "' (" + std::string(v->type.name) +
+                  std::string(1, '\'').append(v->name) + "' (" + std::string(v->type.name) +
                       ") is not a scalar, vector or matrix (or an array of them) to load into constant registers");
       return;
     }
@@ -109,7 +109,7 @@ class Binder {
     if (v->array_dims.size() == 1) {
       auto n = literal(v->array_dims[0]);
       if (!n || *n < 1) {
-        sink_.error("asm-constant", value.range, "'" + std::string(v->name) + "' needs a constant array size");
+        sink_.error("asm-constant", value.range, std::string(1, '\'').append(v->name) + "' needs a constant array size");
         return;
       }
       count = uint32_t(*n);
@@ -118,7 +118,9 @@ class Binder {
     std::string name(v->name), type(v->type.name);
     if (rows > 1 && row_major) type = "row_major " + type;
     if (rows > 1 && !row_major) type = "column_major " + type;
-    std::string declaration = type + " " + name + (v->array_dims.empty() ? "" : "[" + std::to_string(count) + "]") + ";";
+    std::string declaration = type + " " + name;
+    if (!v->array_dims.empty()) declaration.append("[").append(std::to_string(count)).append("]");
+    declaration += ";";
     bool seen = false;
     for (const std::string& d : out_.declarations) seen = seen || d == declaration;
     if (!seen) out_.declarations.push_back(declaration);

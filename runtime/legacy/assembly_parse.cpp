@@ -71,7 +71,7 @@ class LineParser {
         default: break;
       }
     }
-    return error(r, "'" + std::string(name) + "' is not a " + version_.spelled() + " register");
+    return error(r, std::string(1, '\'').append(name) + "' is not a " + version_.spelled() + " register");
   }
 
   // ".xyz", ".rgba", ".a" -> components; false on other letters.

@@ -47,7 +47,7 @@ class PassReader {
   int64_t structural(const ResolvedState& s) const {
     if (s.kind == StateValueKind::parameter && s.target < model_.parameters.size()) {
       diags_.warning("fixed-function-frozen", s.range,
-                     "'" + std::string(s.info->name) + "' takes the default of '" + model_.parameters[s.target].name +
+                     std::string(1, '\'').append(s.info->name) + "' takes the default of '" + model_.parameters[s.target].name +
                          "': the generated fixed-function shader does not follow later changes");
       return static_cast<int64_t>(number(s));
     }

@@ -81,7 +81,9 @@ TEST(AssemblyTranslation, ConstantsReadTheParametersThePassNames) {
 }
 
 TEST(AssemblyTranslation, PrecisionModelWhenAskedFor) {
-  auto on = units_of(kPass, {.ps1x_precision = true});
+  fx::EffectUnitOptions precision;
+  precision.ps1x_precision = true;
+  auto on = units_of(kPass, precision);
   const StageUnit* ps = on->units->passes()[0].find(ShaderStage::fragment);
   ASSERT_TRUE(ps);
   EXPECT_NE(ps->translated.find("clamp(floor(x * 255.0 + 0.5) / 255.0, -1.0, 1.0)"), std::string::npos) << ps->translated;

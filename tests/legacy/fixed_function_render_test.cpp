@@ -62,9 +62,13 @@ class FixedFunctionRender : public VulkanTest {
     for (int i = 0; i < kTextureStages; ++i) {
       images[i] = random_image(kSize, rng);
       if (state.stages[i].texture != StageTexture::none && bump_bytes_ && i == 0) bumpify(images[0], rng);
-      if (rig.samples(i)) ASSERT_TRUE(rig.bind_texture(i, images[i]));
+      if (rig.samples(i)) {
+        ASSERT_TRUE(rig.bind_texture(i, images[i]));
+      }
     }
-    if (tfactor_uniform_) ASSERT_TRUE(rig.set_uniform(state.texture_factor.parameter.name.c_str(), state.texture_factor.value.data(), 16));
+    if (tfactor_uniform_) {
+      ASSERT_TRUE(rig.set_uniform(state.texture_factor.parameter.name.c_str(), state.texture_factor.value.data(), 16));
+    }
     const fx::ImageF image = rig.render(screen_quad());
     int ambiguous = 0;
     for (uint32_t y = 0; y < kSize; ++y)

@@ -83,8 +83,10 @@ TEST_F(TechniqueAccuracyTest, TheDocumentedModelMeasuresExactAndDroppedTermsDoNo
   EXPECT_LE(sun->rmse_lsb, sun->max_error_lsb);
   EXPECT_GT(two_term->max_error_lsb, 32.0);  // no sun, no occlusion
   EXPECT_GT(seed->max_error_lsb, 8.0);       // the seed's 1 - 0.5 sin q: up to 0.207 of the ambient
-  EXPECT_FALSE(ps11->measured);
-  EXPECT_NE(ps11->reason.find("not drawable"), std::string::npos) << ps11->reason;
+  // The seed's ps.1.1 listing, translated (docs/legacy-assembly.md), is measured like any
+  // technique: the two-term form as well, so it misses the sun as two_term does.
+  EXPECT_TRUE(ps11->measured) << ps11->reason;
+  EXPECT_GT(ps11->max_error_lsb, 32.0);
   for (const auto& r : rows) {
     if (!r.drawable) continue;
     EXPECT_TRUE(r.timed) << r.technique;
