@@ -12,6 +12,7 @@
 #include "effect_shader_text.h"
 #include "fx/ast.h"
 #include "fx/compile/effect_units.h"
+#include "fx/legacy/fixed_function.h"
 #include "fx/model/effect_model.h"
 #include "fx/source_manager.h"
 
@@ -154,6 +155,11 @@ class EffectUnitBuilder {
 
   bool hlsl(StageUnit& stage, const std::string& profile, const std::string& name,
             const std::vector<const ast::Expr*>& args, SourceRange range);
+
+  // What an HLSL pixel shader reads, from its entry's declaration, for a generated
+  // fixed-function vertex stage; nullopt when it reads anything but colours, TEXCOORD0-7 and
+  // fog (or its entry cannot be found).
+  std::optional<FixedFunctionState::PixelShaderInputs> pixel_shader_inputs(const StageUnit& ps) const;
 
   // Whether a pixel shader takes D3D9's VPOS or VFACE (as a parameter, or a member of an
   // input struct), which its wrapper turns into Vulkan's.

@@ -88,10 +88,14 @@ void EffectUnitBuilder::add_fixed_function_stages(const ast::Technique& t, Effec
   const StageUnit* ps = pass.find(ShaderStage::fragment);
   if (vs && ps) return;
   // Generated beside assembly or another generated stage, whose interface is D3D's full
-  // register set. Beside an HLSL stage the generated one would have to read (or write)
-  // exactly what that stage writes (or reads), which the generator does not know yet.
+  // register set, and as the vertex stage of an HLSL pixel shader whose inputs are colours,
+  // texture coordinates and fog (read from its entry's declaration: the generated stage
+  // writes exactly those). Beside an HLSL vertex shader the generated pixel stage would have
+  // to read exactly what it writes, which the generator does not know yet.
   auto beside_hlsl = [](const StageUnit* other) { return other && other->kind != StageSourceKind::assembly; };
-  if (beside_hlsl(vs) || beside_hlsl(ps)) {
+  std::optional<FixedFunctionState::PixelShaderInputs> hlsl_pixel_inputs;
+  if (!vs && ps && ps->kind == StageSourceKind::hlsl) hlsl_pixel_inputs = pixel_shader_inputs(*ps);
+  if (beside_hlsl(vs) || (beside_hlsl(ps) && !hlsl_pixel_inputs)) {
     if (!vs) pass.unsupported.push_back("fixed-function vertex processing: the pass sets no VertexShader");
     if (!ps)
       pass.unsupported.push_back(std::string("fixed-function pixel processing (texture stage states): ") +
@@ -104,6 +108,7 @@ void EffectUnitBuilder::add_fixed_function_stages(const ast::Technique& t, Effec
     return;
   DiagnosticSink scratch;  // fixed_function_state reports nothing the model did not
   FixedFunctionState state = fixed_function_state(m, m.techniques[pass.technique_index].passes[pass.pass_index], scratch);
+  if (hlsl_pixel_inputs) state.pixel_shader_inputs = *hlsl_pixel_inputs;
   auto add = [&](ShaderStage stage, FixedFunctionShader shader, const char* what) {
     StageUnit s;
     s.stage = stage;
@@ -121,6 +126,45 @@ void EffectUnitBuilder::add_fixed_function_stages(const ast::Technique& t, Effec
     add(ShaderStage::fragment, generate_fixed_function_pixel_shader(state), "fixed-function texture stages as generated HLSL");
   std::stable_sort(pass.stages.begin(), pass.stages.end(),
                    [](const StageUnit& a, const StageUnit& b) { return a.stage < b.stage; });
+}
+
+std::optional<FixedFunctionState::PixelShaderInputs> EffectUnitBuilder::pixel_shader_inputs(const StageUnit& ps) const {
+  std::string name = ps.entry_point;
+  if (name.ends_with("__fx_args")) name.resize(name.size() - std::string_view("__fx_args").size());
+  const ast::Function* entry = nullptr;
+  for (const ast::Function* f : functions_)
+    if (f->name == name && !f->body.empty()) entry = entry ? entry : f;
+  if (!entry) return std::nullopt;
+  FixedFunctionState::PixelShaderInputs in;
+  in.known = true;
+  in.diffuse = in.specular = in.fog = false;
+  // One varying by its semantic; false for one the generated vertex stage cannot write.
+  auto take = [&in](std::string semantic) {
+    for (char& c : semantic) c = char(std::toupper(static_cast<unsigned char>(c)));
+    if (semantic == "VPOS" || semantic == "VFACE" || semantic.starts_with("SV_")) return true;
+    if (semantic == "COLOR" || semantic == "COLOR0") return in.diffuse = true;
+    if (semantic == "COLOR1") return in.specular = true;
+    if (semantic == "FOG") return in.fog = true;
+    if (!semantic.starts_with("TEXCOORD")) return false;
+    const std::string index = semantic.substr(8);
+    if (index.size() > 1 || (index.size() == 1 && (index[0] < '0' || index[0] > '7'))) return false;
+    in.texcoords |= uint8_t(1u << (index.empty() ? 0 : index[0] - '0'));
+    return true;
+  };
+  for (const ast::Variable& p : entry->params) {
+    if (p.storage & (ast::kUniform | ast::kOut)) continue;
+    if (!p.semantic.empty()) {
+      if (!take(p.semantic)) return std::nullopt;
+      continue;
+    }
+    const ast::Struct* fields = nullptr;  // an input struct: each member has a semantic
+    for (const ast::Decl& d : effect_.decls)
+      if (d.kind == ast::DeclKind::structure && d.structure->name == p.type.name) fields = d.structure;
+    if (!fields) return std::nullopt;  // a compile-time argument, or nothing D3D links
+    for (const ast::Variable& m : fields->members)
+      if (m.semantic.empty() || !take(m.semantic)) return std::nullopt;
+  }
+  return in;
 }
 
 const ast::Variable* EffectUnitBuilder::shader_variable(std::string_view name) const {

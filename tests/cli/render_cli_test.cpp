@@ -112,6 +112,25 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
   EXPECT_EQ(most_blue, 255) << "ELAPSEDTIME is positive";
 }
 
+// A D3D9 post-process pass sets only a pixel shader: fixed-function vertex processing is
+// generated to write exactly what it reads (a struct of TEXCOORD0 and COLOR0 here).
+TEST(FxkitRender, AnHlslPixelShaderWithoutAVertexShaderDraws) {
+  const auto fx = write("post.fx", R"(
+struct In { float2 uv : TEXCOORD0; float4 colour : COLOR0; };
+float4 PS(In i, uniform float gain) : COLOR0 { return float4(i.uv * gain, i.colour.a, 1); }
+technique T { pass P { PixelShader = compile ps_2_0 PS(1.0); } }
+)");
+  const auto png = fx.parent_path() / "post.png";
+  const fxkit_test::CliRun r =
+      fxkit_test::run_fxkit("render " + fx.string() + " --validation --size 64x64 --out " + png.string(), true);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("image is constant"), std::string::npos) << r.err;
+  fx::DiagnosticSink sink;
+  const auto image = fx::read_png(png, sink, 4);
+  ASSERT_TRUE(image);
+  EXPECT_FALSE(image->constant());
+}
+
 TEST(FxkitRender, AFlatImageIsAWarningNamingTheUnboundTransform) {
   const auto fx = write("unbound.fx", R"(
 float4x4 ClipFromObjectXf;

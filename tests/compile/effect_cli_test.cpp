@@ -202,7 +202,8 @@ TEST(FxkitCompile, AWarmCacheNeverStartsGlslang) {
 
 TEST(FxkitCompile, ExitsOneWhenAShaderFails) {
   fs::path bad = fs::temp_directory_path() / ("fxkit_cli_fail_" + std::to_string(::getpid()) + ".fx");
-  std::ofstream(bad) << "float4 PS() : COLOR0 { return undefined_value; }\n"
+  // A NORMAL input: no fixed-function vertex stage writes one, so none is generated.
+  std::ofstream(bad) << "float4 PS(float3 n : NORMAL) : COLOR0 { return undefined_value; }\n"
                         "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
   CliRun r = run("compile --json " + bad.string());
   EXPECT_EQ(r.exit_code, 1);
