@@ -6,17 +6,29 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "fx/image.h"
 #include "fxkit_cli.h"
 
 namespace {
 
-std::filesystem::path write(const std::string& name, const std::string& text) {
+// `fxkit render` of `source` (written as NAME.fx) with `options`, into NAME.png, and the PNG
+// it wrote (empty when it wrote none).
+struct Rendered {
+  fxkit_test::CliRun run;
+  std::optional<fx::Image> image;
+};
+Rendered render(const std::string& name, const std::string& source, const std::string& options) {
   const auto dir = std::filesystem::path(::testing::TempDir()) / ("fxkit_render_cli_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  std::ofstream(dir / name) << text;
-  return dir / name;
+  const auto file = dir / (name + ".fx"), png = dir / (name + ".png");
+  std::ofstream(file) << source;
+  Rendered r;
+  r.run = fxkit_test::run_fxkit("render " + file.string() + " " + options + " --out " + png.string(), true);
+  fx::DiagnosticSink sink;
+  if (r.run.status == 0) r.image = fx::read_png(png, sink, 4);
+  return r;
 }
 
 // An XNA-style skinned, lit effect: nothing but WorldViewProj has a value a preview knows.
@@ -44,17 +56,12 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 )";
 
 TEST(FxkitRender, AnEngineEffectDrawsWithStandInsAndSaysWhichItGave) {
-  const auto fx = write("skinned.fx", kSkinned);
-  const auto png = fx.parent_path() / "skinned.png";
-  const fxkit_test::CliRun r =
-      fxkit_test::run_fxkit("render " + fx.string() + " --verbose --validation --out " + png.string(), true);
+  const auto [r, image] = render("skinned", kSkinned, "--verbose --validation");
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* line : {"Bones <- identity bone palette (stand-in)", "DiffuseColor <- visible colour (stand-in)",
                            "LightDirection <- light direction (stand-in)", "LightCount <- light count (stand-in)"})
     EXPECT_NE(r.err.find(line), std::string::npos) << line << "\n" << r.err;
   EXPECT_EQ(r.err.find("image is constant"), std::string::npos) << r.err;
-  fx::DiagnosticSink sink;
-  const auto image = fx::read_png(png, sink, 4);
   ASSERT_TRUE(image);
   EXPECT_FALSE(image->constant());
   // The lit sphere: its centre is the stand-in grey times (0.2 + a light), not black.
@@ -63,13 +70,8 @@ TEST(FxkitRender, AnEngineEffectDrawsWithStandInsAndSaysWhichItGave) {
 }
 
 TEST(FxkitRender, ParamOverridesAStandIn) {
-  const auto fx = write("skinned_param.fx", kSkinned);
-  const auto png = fx.parent_path() / "skinned_param.png";
-  const fxkit_test::CliRun r = fxkit_test::run_fxkit(
-      "render " + fx.string() + " --param DiffuseColor=0,0,0,1 --out " + png.string(), true);
+  const auto [r, image] = render("skinned_param", kSkinned, "--param DiffuseColor=0,0,0,1");
   ASSERT_EQ(r.status, 0) << r.err;
-  fx::DiagnosticSink sink;
-  const auto image = fx::read_png(png, sink, 4);
   ASSERT_TRUE(image);
   const uint8_t* centre = image->at(image->width / 2, image->height / 2);
   EXPECT_EQ(centre[0], 0);
@@ -78,7 +80,7 @@ TEST(FxkitRender, ParamOverridesAStandIn) {
 // SAS semantics beyond the transforms: the viewport size is bound, a light's DIRECTION and
 // POSITION (with its Object annotation) get stand-ins, and the light reaches the image.
 TEST(FxkitRender, SasViewportAndLightSemanticsAreBound) {
-  const auto fx = write("sas.fx", R"(
+  const auto [r, image] = render("sas", R"(
 float4x4 WorldViewProj : WORLDVIEWPROJECTION;
 float2 Viewport : VIEWPORTPIXELSIZE;
 float Elapsed : ELAPSEDTIME;
@@ -93,16 +95,11 @@ float4 PS(V i, float2 pixel : VPOS) : COLOR0 {
   return float4(sun * edge, lamp, Elapsed > 0 ? 1 : 0, 1);
 }
 technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
-)");
-  const auto png = fx.parent_path() / "sas.png";
-  const fxkit_test::CliRun r =
-      fxkit_test::run_fxkit("render " + fx.string() + " --verbose --validation --size 64x64 --out " + png.string(), true);
+)", "--verbose --validation --size 64x64");
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* line : {"Viewport <- VIEWPORTPIXELSIZE (by its semantic)", "Elapsed <- ELAPSEDTIME (by its semantic)",
                            "SunDirection <- light direction (stand-in)", "Lamp <- light position (stand-in)"})
     EXPECT_NE(r.err.find(line), std::string::npos) << line << "\n" << r.err;
-  fx::DiagnosticSink sink;
-  const auto image = fx::read_png(png, sink, 4);
   ASSERT_TRUE(image);
   uint8_t most_green = 0, most_blue = 0;
   for (uint32_t y = 0; y < image->height; ++y)
@@ -115,31 +112,24 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
 // A D3D9 post-process pass sets only a pixel shader: fixed-function vertex processing is
 // generated to write exactly what it reads (a struct of TEXCOORD0 and COLOR0 here).
 TEST(FxkitRender, AnHlslPixelShaderWithoutAVertexShaderDraws) {
-  const auto fx = write("post.fx", R"(
+  const auto [r, image] = render("post", R"(
 struct In { float2 uv : TEXCOORD0; float4 colour : COLOR0; };
 float4 PS(In i, uniform float gain) : COLOR0 { return float4(i.uv * gain, i.colour.a, 1); }
 technique T { pass P { PixelShader = compile ps_2_0 PS(1.0); } }
-)");
-  const auto png = fx.parent_path() / "post.png";
-  const fxkit_test::CliRun r =
-      fxkit_test::run_fxkit("render " + fx.string() + " --validation --size 64x64 --out " + png.string(), true);
+)", "--validation --size 64x64");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("image is constant"), std::string::npos) << r.err;
-  fx::DiagnosticSink sink;
-  const auto image = fx::read_png(png, sink, 4);
   ASSERT_TRUE(image);
   EXPECT_FALSE(image->constant());
 }
 
 TEST(FxkitRender, AFlatImageIsAWarningNamingTheUnboundTransform) {
-  const auto fx = write("unbound.fx", R"(
+  const fxkit_test::CliRun r = render("unbound", R"(
 float4x4 ClipFromObjectXf;
 float4 VS(float4 p : POSITION) : POSITION { return mul(p, ClipFromObjectXf); }
 float4 PS() : COLOR0 { return float4(1, 0, 0, 1); }
 technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
-)");
-  const fxkit_test::CliRun r =
-      fxkit_test::run_fxkit("render " + fx.string() + " --out " + (fx.parent_path() / "unbound.png").string(), true);
+)", "").run;
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("'ClipFromObjectXf' is read by the shaders but left zero"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("warning: the image is constant"), std::string::npos) << r.err;
