@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <set>
 
+#include "spirv_legalize.h"
 #include "spirv_words.h"
 
 namespace fx {
@@ -69,6 +71,24 @@ std::string canonical_semantic(std::string s) {
   return s;
 }
 
+// A consumer that skipped legalization loads every input it declares, used or not, and
+// Vulkan rejects a loaded input no stage before writes (D3D code often declares one: the
+// vertex shader's output struct, POSITION included, as the pixel shader's input). When the
+// producer leaves one unwritten, the consumer is legalized now, which drops the loads of
+// inputs its code never uses; those are marked unread.
+void legalize_if_inputs_unwritten(const CompiledShader& producer, CompiledShader& consumer) {
+  if (consumer.legalized) return;
+  std::set<std::string> written;
+  for (const InterfaceVariable& v : producer.reflection.outputs) written.insert(canonical_semantic(v.semantic));
+  if (std::all_of(consumer.reflection.inputs.begin(), consumer.reflection.inputs.end(),
+                  [&](const InterfaceVariable& v) { return written.count(canonical_semantic(v.semantic)); }))
+    return;
+  if (!spirv::legalize(consumer.spirv)) return;
+  consumer.legalized = true;
+  const std::set<uint32_t> read = spirv::read_input_locations(consumer.spirv);
+  for (InterfaceVariable& v : consumer.reflection.inputs) v.unread = !read.count(v.location);
+}
+
 void link_varyings(CompiledShader& producer, CompiledShader& consumer, DiagnosticSink& sink) {
   std::map<std::string, uint32_t> location_of;  // canonical semantic -> new location
   std::map<uint32_t, uint32_t> out_remap, in_remap;
@@ -77,6 +97,7 @@ void link_varyings(CompiledShader& producer, CompiledShader& consumer, Diagnosti
   if (!std::all_of(producer.reflection.outputs.begin(), producer.reflection.outputs.end(), has_semantic) ||
       !std::all_of(consumer.reflection.inputs.begin(), consumer.reflection.inputs.end(), has_semantic))
     return;
+  legalize_if_inputs_unwritten(producer, consumer);
   uint32_t next = 0;
   for (InterfaceVariable& v : producer.reflection.outputs) {
     location_of[canonical_semantic(v.semantic)] = next;

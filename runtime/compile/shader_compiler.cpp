@@ -12,11 +12,12 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 #include <glslang/SPIRV/SpvTools.h>
-#include <spirv-tools/optimizer.hpp>
+#include <spirv-tools/libspirv.h>
 
 #include "fx/compile/spirv_cache.h"
 #include "effect_shader_text.h"
 #include "glslang_reflect.h"
+#include "spirv_legalize.h"
 #include "spirv_words.h"
 
 namespace fx {
@@ -61,13 +62,18 @@ std::string preamble_for(const TranslationUnit& unit) {
 }
 
 // Makes D3D semantics mean in Vulkan what they meant in Direct3D: a D3D9 vertex shader's
-// POSITION output is the clip position, and pixel shader outputs COLORn / SV_TargetN go to
-// colour attachment n whatever order they were declared in.
-void apply_d3d_output_semantics(CompiledShader& out, const ShaderProfile& profile, ShaderStage stage) {
+// POSITION output is the clip position, a D3D9 pixel shader's POSITION input the pixel's
+// position (the vertex shader's output struct is often the pixel shader's input, and fxc
+// drops the input when unused), and pixel shader outputs COLORn / SV_TargetN go to colour
+// attachment n whatever order they were declared in.
+void apply_d3d_semantics(CompiledShader& out, const ShaderProfile& profile, ShaderStage stage) {
   ShaderReflection& r = out.reflection;
-  if (stage == ShaderStage::vertex && profile.dx9()) {
-    if (std::optional<uint32_t> location = spirv::promote_position_output(out.spirv))
-      std::erase_if(r.outputs, [&](const InterfaceVariable& v) { return v.location == *location; });
+  if ((stage == ShaderStage::vertex || stage == ShaderStage::fragment) && profile.dx9()) {
+    const bool vertex = stage == ShaderStage::vertex;
+    std::vector<InterfaceVariable>& side = vertex ? r.outputs : r.inputs;
+    if (std::optional<uint32_t> location =
+            spirv::promote_position(out.spirv, vertex ? spirv::Interface::output : spirv::Interface::input))
+      std::erase_if(side, [&](const InterfaceVariable& v) { return v.location == *location; });
   }
   if (stage != ShaderStage::fragment) return;
   std::map<uint32_t, uint32_t> remap;
@@ -105,21 +111,32 @@ bool uses_d3d9_sampler_intrinsics(std::string_view hlsl) {
   return false;
 }
 
-// fxc unrolls `[unroll]` loops and then needs every texture offset to be an immediate;
-// glslang's legalization unrolls nothing, so an offset stepped by the loop stays a variable,
-// which Vulkan allows only for gathers. Full unrolling and constant folding make it a
-// ConstOffset (the folder rewrites the operand once it is constant).
-void unroll_and_fold(std::vector<uint32_t>& spirv, spv_target_env env) {
-  spvtools::Optimizer optimizer(env);
-  optimizer.RegisterPass(spvtools::CreateLoopUnrollPass(true))
-      .RegisterPass(spvtools::CreateCCPPass())
-      .RegisterPass(spvtools::CreateSimplificationPass())
-      .RegisterPass(spvtools::CreateAggressiveDCEPass());
-  // The input is invalid until these passes ran (that is why they run): no validation first.
-  spvtools::OptimizerOptions options;
-  options.set_run_validator(false);
-  std::vector<uint32_t> out;
-  if (optimizer.Run(spirv.data(), spirv.size(), &out, options)) spirv = std::move(out);
+// Whether SPIR-V is valid for its Vulkan target, checked as glslang's SpirvToolsValidate
+// does. The validator's friendly names (every id mapped to a name before it starts, a third
+// of its time) are worked out only to word an error for `log`.
+bool spirv_valid(const std::vector<uint32_t>& spirv, spv_target_env env, const glslang::TIntermediate& intermediate,
+                 spv::SpvBuildLogger* log) {
+  auto validate = [&](bool friendly_names, spv_diagnostic* diagnostic) {
+    spv_context context = spvContextCreate(env);
+    spv_validator_options options = spvValidatorOptionsCreate();
+    spvValidatorOptionsSetScalarBlockLayout(options, intermediate.usingScalarBlockLayout());
+    spvValidatorOptionsSetWorkgroupScalarBlockLayout(options, intermediate.usingScalarBlockLayout());
+    spvValidatorOptionsSetFriendlyNames(options, friendly_names);
+    spv_const_binary_t binary = {spirv.data(), spirv.size()};
+    spv_result_t result = spvValidateWithOptions(context, options, &binary, diagnostic);
+    spvValidatorOptionsDestroy(options);
+    spvContextDestroy(context);
+    return result == SPV_SUCCESS;
+  };
+  if (validate(false, nullptr)) return true;
+  if (log) {
+    spv_diagnostic diagnostic = nullptr;
+    validate(true, &diagnostic);
+    log->error("SPIRV-Tools Validation Errors");
+    if (diagnostic) log->error(diagnostic->error);
+    spvDiagnosticDestroy(diagnostic);
+  }
+  return false;
 }
 
 // Appends what SPIRV-Tools said about the module to an info log, one line per problem:
@@ -276,26 +293,36 @@ CompiledShader ShaderCompiler::run_glslang(const TranslationUnit& unit, const Sh
   if (linked && program->getIntermediate(stage)) {
     glslang::SpvOptions spv;
     spv.generateDebugInfo = options_.debug_info;
-    // HLSL needs spirv-opt's legalization (opaque types passed to functions, as D3D9 code
-    // does with samplers); GLSL is valid as generated and skips the optimizer's cost.
-    spv.disableOptimizer = !hlsl;
+    spv.disableOptimizer = true;
+    spv.validate = false;  // run below, after fxkit's own passes
+    const glslang::TIntermediate& intermediate = *program->getIntermediate(stage);
     spv::SpvBuildLogger logger;
+    glslang::GlslangToSpv(intermediate, out.spirv, &logger, &spv);
+    const spv_target_env env = glslang::MapToSpirvToolsEnv(intermediate.getSpv(), &logger);
+    // HLSL may need spirv-opt's legalization (opaque types copied into locals or passed to
+    // functions, as D3D9 code does with samplers), which costs ten times the rest of the
+    // compile. Most shaders are valid without it: they skip it when neither glslang, nor a
+    // scan for opaque values in memory, nor the validator finds a reason for it.
+    bool validated = false;
+    if (hlsl && options_.validate && !intermediate.needsLegalization() &&
+        !spirv::opaque_values_in_memory(out.spirv) && !spirv::variable_image_offsets(out.spirv))
+      validated = spirv_valid(out.spirv, env, intermediate, nullptr);
+    out.legalized = !validated;
+    if (hlsl && !validated) {
+      spv.disableOptimizer = false;
+      glslang::SpirvToolsTransform(intermediate, out.spirv, &logger, &spv);
+      if (spirv::variable_image_offsets(out.spirv)) spirv::unroll_and_fold(out.spirv, env);
+    }
     // glslang can emit invalid SPIR-V for code it accepts (a derivative in a vertex shader):
     // SPIRV-Tools' validator turns that into an error instead of a driver crash.
-    // Validation runs after fxkit's own passes, not inside GlslangToSpv, before them.
-    spv.validate = false;
-    glslang::GlslangToSpv(*program->getIntermediate(stage), out.spirv, &logger, &spv);
-    if (hlsl && spirv::variable_image_offsets(out.spirv))
-      unroll_and_fold(out.spirv, glslang::MapToSpirvToolsEnv(program->getIntermediate(stage)->getSpv(), &logger));
-    if (options_.validate && !out.spirv.empty())
-      glslang::SpirvToolsValidate(*program->getIntermediate(stage), out.spirv, &logger, false);
+    if (options_.validate && !validated && !out.spirv.empty()) spirv_valid(out.spirv, env, intermediate, &logger);
     spirv_error = append_spirv_log(logger.getAllMessages(), unit.entry_point, out.info_log);
     program->buildReflection(kReflectionOptions);
     ShaderReflection reflection = reflect_program(*program, stage, out.spirv);
     reflection.stage = unit.stage;
     reflection.entry_point = unit.entry_point;
     out.reflection = std::move(reflection);
-    if (hlsl) apply_d3d_output_semantics(out, profile, unit.stage);
+    if (hlsl) apply_d3d_semantics(out, profile, unit.stage);
     if (hlsl && !options_.keep_hlsl_semantics) spirv::strip_hlsl_semantics(out.spirv);
   }
   out.link_ms = ms_since(t1);

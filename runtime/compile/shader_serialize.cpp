@@ -76,6 +76,7 @@ std::string write_shader_metadata(const CompiledShader& s) {
     messages.push_back({{"severity", static_cast<int>(m.severity)}, {"file", m.file},
                         {"line", m.line}, {"column", m.column}, {"text", m.text}});
   json j = {{"entry_point", s.entry_point},
+            {"legalized", s.legalized},
             {"info_log", s.info_log},
             {"messages", messages},
             {"stage", static_cast<int>(r.stage)},
@@ -95,6 +96,7 @@ bool read_shader_metadata(std::string_view text, CompiledShader& s) {
   // Schema mismatches surface as json exceptions; they must not leave the library.
   try {
     s.entry_point = j.at("entry_point").get<std::string>();
+    s.legalized = j.at("legalized").get<bool>();
     s.info_log = j.at("info_log").get<std::string>();
     for (const json& m : j.at("messages"))
       s.messages.push_back({static_cast<Severity>(m.at("severity").get<int>()), m.at("file").get<std::string>(),

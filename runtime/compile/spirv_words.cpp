@@ -1,6 +1,8 @@
 #include "spirv_words.h"
 
+#include <algorithm>
 #include <cctype>
+#include <set>
 
 namespace fx::spirv {
 namespace {
@@ -90,16 +92,31 @@ std::map<uint32_t, std::string> interface_semantics(const std::vector<uint32_t>&
   return out;
 }
 
-std::optional<uint32_t> promote_position_output(std::vector<uint32_t>& w) {
-  InterfaceVariables v = interface_variables(w, Interface::output);
+std::optional<uint32_t> promote_position(std::vector<uint32_t>& w, Interface side) {
+  constexpr uint32_t kOpTypeFloat = 22, kOpTypeVector = 23, kOpTypePointer = 32;
+  constexpr uint32_t kBuiltInFragCoord = 15;
+  InterfaceVariables v = interface_variables(w, side);
+  // FragCoord is a float4: the input's variable -> pointer -> vector of 4 -> 32-bit float.
+  std::map<uint32_t, uint32_t> type_of, pointee_of, vec4_component;
+  std::set<uint32_t> float32;
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t count) {
+    if (op == kOpVariable && count >= 4) type_of[w[i + 2]] = w[i + 1];
+    if (op == kOpTypePointer && count >= 4) pointee_of[w[i + 1]] = w[i + 3];
+    if (op == kOpTypeVector && count >= 4 && w[i + 3] == 4) vec4_component[w[i + 1]] = w[i + 2];
+    if (op == kOpTypeFloat && count >= 3 && w[i + 2] == 32) float32.insert(w[i + 1]);
+  });
+  auto is_float4 = [&](uint32_t id) {
+    auto component = vec4_component.find(pointee_of[type_of[id]]);
+    return component != vec4_component.end() && float32.count(component->second);
+  };
   for (auto& [id, semantic] : v.semantic_of) {
     if (semantic != "POSITION" && semantic != "POSITION0") continue;
     auto word = v.location_word.find(id);
-    if (word == v.location_word.end()) continue;
-    // OpDecorate %id Location N  ->  OpDecorate %id BuiltIn Position (same length).
+    if (word == v.location_word.end() || (side == Interface::input && !is_float4(id))) continue;
+    // OpDecorate %id Location N  ->  OpDecorate %id BuiltIn Position|FragCoord (same length).
     uint32_t old_location = w[word->second];
     w[word->second - 1] = kDecorationBuiltIn;
-    w[word->second] = kBuiltInPosition;
+    w[word->second] = side == Interface::output ? kBuiltInPosition : kBuiltInFragCoord;
     return old_location;
   }
   return std::nullopt;
@@ -169,6 +186,67 @@ size_t variable_image_offsets(const std::vector<uint32_t>& w) {
     if (operand < count && !(w[i + operand] < constant.size() && constant[w[i + operand]])) ++found;
   });
   return found;
+}
+
+bool opaque_values_in_memory(const std::vector<uint32_t>& w) {
+  constexpr uint32_t kOpTypeImage = 25, kOpTypeSampler = 26, kOpTypeSampledImage = 27, kOpTypeArray = 28,
+                     kOpTypeRuntimeArray = 29, kOpTypeStruct = 30, kOpTypePointer = 32, kOpFunctionParameter = 55,
+                     kOpTypeAccelerationStructure = 5341, kStorageUniformConstant = 0;
+  std::set<uint32_t> opaque, opaque_pointer;  // types; pointers to opaque types outside UniformConstant
+  bool found = false;
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t count) {
+    if (found || count < 2) return;
+    const uint32_t result = w[i + 1];
+    switch (op) {
+      case kOpTypeImage: case kOpTypeSampler: case kOpTypeSampledImage: case kOpTypeAccelerationStructure:
+        opaque.insert(result);
+        break;
+      case kOpTypeArray: case kOpTypeRuntimeArray:
+        if (count >= 3 && opaque.count(w[i + 2])) opaque.insert(result);
+        break;
+      case kOpTypeStruct:
+        for (uint32_t k = 2; k < count; ++k)
+          if (opaque.count(w[i + k])) opaque.insert(result);
+        break;
+      case kOpTypePointer:
+        if (count >= 4 && w[i + 2] != kStorageUniformConstant && opaque.count(w[i + 3])) opaque_pointer.insert(result);
+        break;
+      case kOpVariable:
+        found = count >= 4 && opaque_pointer.count(w[i + 1]);
+        break;
+      case kOpFunctionParameter:
+        found = count >= 3 && (opaque_pointer.count(w[i + 1]) || opaque.count(w[i + 1]));
+        break;
+      default: break;
+    }
+  });
+  return found;
+}
+
+std::set<uint32_t> read_input_locations(const std::vector<uint32_t>& w) {
+  constexpr uint32_t kOpExtInst = 12, kOpFunctionCall = 57, kOpLoad = 61, kOpCopyMemory = 63, kOpAccessChain = 65,
+                     kOpInBoundsAccessChain = 66, kOpCopyObject = 83;
+  InterfaceVariables inputs = interface_variables(w, Interface::input);
+  std::set<uint32_t> read;
+  auto note = [&](uint32_t id) {
+    if (auto it = inputs.location_of.find(id); it != inputs.location_of.end()) read.insert(it->second);
+  };
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t count) {
+    // The word where the id operands start: after the result type and id (and for OpExtInst
+    // the set and instruction number); OpCopyMemory has no result.
+    uint32_t first = 0;
+    switch (op) {
+      case kOpLoad: case kOpAccessChain: case kOpInBoundsAccessChain: case kOpCopyObject:
+        first = 3, count = std::min(count, 4u);
+        break;
+      case kOpCopyMemory: first = 2, count = std::min(count, 3u); break;
+      case kOpFunctionCall: first = 4; break;
+      case kOpExtInst: first = 5; break;
+      default: return;
+    }
+    for (uint32_t k = first; k < count; ++k) note(w[i + k]);
+  });
+  return read;
 }
 
 std::map<uint32_t, SetBinding> variable_bindings(const std::vector<uint32_t>& w) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,8 +21,11 @@ enum class Interface { input, output };
 std::map<uint32_t, std::string> interface_semantics(const std::vector<uint32_t>& words, Interface side);
 
 // D3D9 vertex shaders write the clip position to the POSITION semantic, which glslang treats
-// as a user varying. Re-decorates that output as BuiltIn Position. Returns its old location.
-std::optional<uint32_t> promote_position_output(std::vector<uint32_t>& words);
+// as a user varying: re-decorates that output as BuiltIn Position. A pixel shader's POSITION
+// input (the vertex shader's output struct reused as its input) becomes BuiltIn FragCoord, the
+// pixel's position, as SV_Position is in shader model 4; only a float4 input can. Returns
+// the variable's old location.
+std::optional<uint32_t> promote_position(std::vector<uint32_t>& words, Interface side);
 
 // Moves interface variables from one location to another (keys are current locations).
 size_t remap_locations(std::vector<uint32_t>& words, Interface side, const std::map<uint32_t, uint32_t>& remap);
@@ -33,6 +37,17 @@ bool strip_hlsl_semantics(std::vector<uint32_t>& words);
 // How many image samples or fetches take a non-constant Offset operand, which Vulkan allows
 // only for gathers (HLSL's `t.Sample(s, uv, int2(i, 0))` in an [unroll] loop).
 size_t variable_image_offsets(const std::vector<uint32_t>& words);
+
+// Whether the module keeps an image, sampler or sampled image (or an aggregate holding one)
+// anywhere but UniformConstant memory, or passes one by value: Vulkan forbids both, glslang
+// writes them for HLSL that copies a sampler into a local or passes it to a function, and
+// spirv-opt's legalization removes them. SPIRV-Tools' validator does not catch them.
+bool opaque_values_in_memory(const std::vector<uint32_t>& words);
+
+// Locations of the stage inputs the code reads: loaded, indexed, copied or passed to a
+// function or an extended instruction (InterpolateAt*). An input declared and never used,
+// which spirv-opt's legalization leaves behind with its loads removed, is not among them.
+std::set<uint32_t> read_input_locations(const std::vector<uint32_t>& words);
 
 // (set, binding) pair of a descriptor.
 using SetBinding = std::pair<uint32_t, uint32_t>;

@@ -32,27 +32,35 @@ inline std::string spirv_val(const std::vector<uint32_t>& words, const std::stri
   return rc == 0 ? std::string() : (text.empty() ? "spirv-val failed" : text);
 }
 
-// Variable name -> Binding decoration, read from spirv-dis: what the module itself says,
-// whatever reflection says.
-inline std::map<std::string, uint32_t> spirv_bindings(const std::vector<uint32_t>& words) {
+// spirv-dis's text of `words` ("" when it fails).
+inline std::string spirv_dis(const std::vector<uint32_t>& words) {
   std::filesystem::path dir = std::filesystem::temp_directory_path() / "fxkit_spirv_val";
   std::filesystem::create_directories(dir);
-  std::string stem = (dir / (std::to_string(::getpid()) + "_bindings")).string();
+  std::string stem = (dir / (std::to_string(::getpid()) + "_dis")).string();
   std::ofstream(stem + ".spv", std::ios::binary)
       .write(reinterpret_cast<const char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
   std::string cmd = "spirv-dis " + stem + ".spv > " + stem + ".txt 2>&1";
-  std::map<std::string, uint32_t> out;
+  std::string out;
   if (std::system(cmd.c_str()) == 0) {
     std::ifstream text(stem + ".txt");
-    std::string op, name, decoration;
-    for (std::string line; std::getline(text, line);) {
-      std::istringstream in(line);
-      uint32_t binding = 0;
-      if (in >> op >> name >> decoration >> binding && op == "OpDecorate" && decoration == "Binding") out[name] = binding;
-    }
+    out.assign(std::istreambuf_iterator<char>(text), std::istreambuf_iterator<char>());
   }
   std::filesystem::remove(stem + ".spv");
   std::filesystem::remove(stem + ".txt");
+  return out;
+}
+
+// Variable name -> Binding decoration, read from spirv-dis: what the module itself says,
+// whatever reflection says.
+inline std::map<std::string, uint32_t> spirv_bindings(const std::vector<uint32_t>& words) {
+  std::map<std::string, uint32_t> out;
+  std::istringstream text(spirv_dis(words));
+  std::string op, name, decoration;
+  for (std::string line; std::getline(text, line);) {
+    std::istringstream in(line);
+    uint32_t binding = 0;
+    if (in >> op >> name >> decoration >> binding && op == "OpDecorate" && decoration == "Binding") out[name] = binding;
+  }
   return out;
 }
 

@@ -94,8 +94,13 @@ float4 PS(P i) : COLOR0 { float4 unused = i.diffuse * i.fog; return i.uv; }
   CompiledShader vs = compiler.compile(test::unit(src, ShaderStage::vertex, "VS", "vs_3_0"));
   CompiledShader ps = compiler.compile(test::unit(src, ShaderStage::fragment, "PS", "ps_3_0"));
   ASSERT_TRUE(vs.ok && ps.ok) << vs.info_log << ps.info_log;
+  // Valid without legalization, the pixel shader skipped it and still loads every input;
+  // FOG is not written, so linking legalizes it, which drops the loads it never uses.
+  EXPECT_FALSE(ps.legalized);
   DiagnosticSink sink;
   link_program({&vs, &ps}, sink);
+  EXPECT_TRUE(ps.legalized);
+  EXPECT_EQ(test::spirv_val(ps.spirv), "");
   EXPECT_EQ(sink.warning_count(), 0u);
   uint32_t written = 99, read = 98;
   for (const InterfaceVariable& v : vs.reflection.outputs)
@@ -106,6 +111,46 @@ float4 PS(P i) : COLOR0 { float4 unused = i.diffuse * i.fog; return i.uv; }
     EXPECT_EQ(!v.unread, v.semantic == "TEXCOORD0") << v.name;
   }
   EXPECT_EQ(read, written);
+}
+
+TEST(ProgramLink, D3D9PixelShaderPositionInputIsThePixelPosition) {
+  // The vertex shader's output struct as the pixel shader's input: its POSITION is the clip
+  // position, a builtin, so no user varying carries it. The pixel shader's float4 POSITION
+  // is the pixel's position (SV_Position's meaning from shader model 4 on), not an
+  // unwritten input, and the pair links without legalizing anything.
+  const char* src = R"(struct V { float4 pos : POSITION; float2 uv : TEXCOORD0; };
+V VS(float4 p : POSITION) { V o; o.pos = p; o.uv = p.xy; return o; }
+float4 PS(V i) : COLOR0 { return float4(i.uv, 0, 1); }
+float4 PSPos(V i) : COLOR0 { return i.pos * 0.001; }
+)";
+  ShaderCompiler compiler;
+  CompiledShader vs = compiler.compile(test::unit(src, ShaderStage::vertex, "VS", "vs_2_0"));
+  for (const char* entry : {"PS", "PSPos"}) {
+    CompiledShader ps = compiler.compile(test::unit(src, ShaderStage::fragment, entry, "ps_2_0"));
+    ASSERT_TRUE(vs.ok && ps.ok) << vs.info_log << ps.info_log;
+    ASSERT_EQ(ps.reflection.inputs.size(), 1u) << entry;
+    EXPECT_EQ(ps.reflection.inputs[0].semantic, "TEXCOORD0");
+    EXPECT_NE(test::spirv_dis(ps.spirv).find("BuiltIn FragCoord"), std::string::npos) << entry;
+    CompiledShader linked_vs = vs;
+    DiagnosticSink sink;
+    link_program({&linked_vs, &ps}, sink);
+    EXPECT_EQ(sink.warning_count(), 0u) << entry;
+    EXPECT_FALSE(ps.legalized) << entry;
+    EXPECT_EQ(test::spirv_val(ps.spirv), "") << entry;
+  }
+  // Only a float4 can be the pixel position: a float3 POSITION stays an (unwritten) input.
+  const char* narrow = R"(struct V { float4 pos : POSITION; float2 uv : TEXCOORD0; };
+V VS(float4 p : POSITION) { V o; o.pos = p; o.uv = p.xy; return o; }
+float4 PS(float3 pos : POSITION, float2 uv : TEXCOORD0) : COLOR0 { return float4(pos, uv.x); }
+)";
+  CompiledShader narrow_vs = compiler.compile(test::unit(narrow, ShaderStage::vertex, "VS", "vs_2_0"));
+  CompiledShader narrow_ps = compiler.compile(test::unit(narrow, ShaderStage::fragment, "PS", "ps_2_0"));
+  ASSERT_TRUE(narrow_vs.ok && narrow_ps.ok) << narrow_ps.info_log;
+  EXPECT_EQ(test::spirv_dis(narrow_ps.spirv).find("BuiltIn FragCoord"), std::string::npos);
+  DiagnosticSink sink;
+  link_program({&narrow_vs, &narrow_ps}, sink);
+  ASSERT_EQ(sink.warning_count(), 1u);
+  EXPECT_EQ(sink.diagnostics()[0].id, "shader-varying-unwritten");
 }
 
 TEST(ProgramLink, DifferentBlocksWithOneNameGetTheirOwnBindings) {

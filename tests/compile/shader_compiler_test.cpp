@@ -1,6 +1,7 @@
 // Compiling D3D9-style, D3D10-style HLSL and GLSL 450 to valid Vulkan SPIR-V.
 #include <gtest/gtest.h>
 
+#include <regex>
 #include <thread>
 
 #include "compile_test_util.h"
@@ -132,6 +133,30 @@ TEST(ShaderCompiler, InvalidSpirvFromGlslangBecomesAnError) {
   EXPECT_FALSE(vs.ok);
   EXPECT_TRUE(vs.spirv.empty());
   EXPECT_NE(test::messages_of(vs).find("SPIR-V"), std::string::npos) << vs.info_log;
+}
+
+TEST(ShaderCompiler, LegalizesOnlyShadersThatKeepSamplersInMemory) {
+  // spirv-opt's legalization costs ten times the rest of a compile; SPIR-V valid without it
+  // skips it. A sampler passed to a function or copied into a local is kept in Function
+  // memory, which Vulkan forbids and the validator does not catch: those are legalized.
+  const char* direct = "sampler2D S;\nfloat4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(S, uv); }\n";
+  const char* by_parameter = "sampler2D S;\nfloat4 look(sampler2D t, float2 uv) { return tex2D(t, uv); }\n"
+                             "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return look(S, uv * 2); }\n";
+  const char* local_copy = "sampler2D S;\n"
+                           "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { sampler2D t = S; return tex2D(t, uv); }\n";
+  ShaderCompiler compiler;
+  for (auto [src, legalized] : {std::pair{direct, false}, {by_parameter, true}, {local_copy, true}}) {
+    CompiledShader ps = compiler.compile(test::unit(src, ShaderStage::fragment, "PS", "ps_3_0"));
+    ASSERT_TRUE(ps.ok) << src << ps.info_log;
+    EXPECT_EQ(ps.legalized, legalized) << src;
+    EXPECT_EQ(test::spirv_val(ps.spirv), "") << src;
+    // No sampler is left in Function memory, legalized or not: no Function pointer to the
+    // sampled image type.
+    std::string text = test::spirv_dis(ps.spirv);
+    std::smatch type;
+    ASSERT_TRUE(std::regex_search(text, type, std::regex("(%\\w+) = OpTypeSampledImage"))) << text;
+    EXPECT_EQ(text.find("OpTypePointer Function " + type[1].str() + "\n"), std::string::npos) << src << text;
+  }
 }
 
 TEST(ShaderCompiler, D3D9SamplersUnderAnSm4ProfileCompile) {

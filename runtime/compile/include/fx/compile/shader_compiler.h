@@ -24,6 +24,10 @@ struct CompiledShader {
   std::string info_log;               // glslang's raw parse + link + SPIR-V log
   double parse_ms = 0, link_ms = 0, total_ms = 0;  // wall time of this call
   bool from_cache = false;            // true when no glslang work was done
+  // False for HLSL that was valid without spirv-opt's legalization and skipped it (most
+  // shaders; it costs ten times the rest of a compile). Its code still loads every input it
+  // declares: link_program legalizes it when the stage before does not write one of them.
+  bool legalized = true;
 };
 
 // Compiles translation units. compile() is safe to call from several threads at once:
