@@ -10,6 +10,7 @@
 #include <system_error>
 #include <utility>
 
+#include "fx/vulkan/graphics_pipeline.h"
 #include "vk_check.h"
 
 namespace fx::vk {
@@ -83,98 +84,16 @@ VkPipeline PipelineCache::get(const ShaderProgram& program, const PipelineState&
 VkPipeline PipelineCache::create_pipeline(const ShaderProgram& program, const PipelineState& s,
                                           const VertexInput& vi, const RenderingFormats& formats,
                                           const DynamicStateSet& dynamic, DiagnosticSink& sink) {
-  auto vertex = structure<VkPipelineVertexInputStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-  vertex.vertexBindingDescriptionCount = uint32_t(vi.bindings.size());
-  vertex.pVertexBindingDescriptions = vi.bindings.data();
-  vertex.vertexAttributeDescriptionCount = uint32_t(vi.attributes.size());
-  vertex.pVertexAttributeDescriptions = vi.attributes.data();
-
-  auto assembly = structure<VkPipelineInputAssemblyStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
-  assembly.topology = VkPrimitiveTopology(s.topology);
-  assembly.primitiveRestartEnable = s.primitive_restart;
-
-  auto viewport = structure<VkPipelineViewportStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
-  viewport.viewportCount = 1;
-  viewport.scissorCount = 1;
-
-  auto raster = structure<VkPipelineRasterizationStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
-  raster.depthClampEnable = s.depth_clamp;
-  raster.rasterizerDiscardEnable = s.rasterizer_discard;
-  raster.polygonMode = VkPolygonMode(s.polygon_mode);
-  raster.cullMode = s.cull_mode;
-  raster.frontFace = VkFrontFace(s.front_face);
-  raster.depthBiasEnable = s.depth_bias_enable;
-  raster.depthBiasConstantFactor = s.depth_bias_constant;
-  raster.depthBiasSlopeFactor = s.depth_bias_slope;
-  raster.depthBiasClamp = s.depth_bias_clamp;
-  raster.lineWidth = 1.0f;
-
-  auto multisample = structure<VkPipelineMultisampleStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
-  multisample.rasterizationSamples = s.samples();
-  const VkSampleMask sample_mask = s.sample_mask;
-  multisample.pSampleMask = &sample_mask;
-  multisample.alphaToCoverageEnable = s.alpha_to_coverage;
-
-  auto depth = structure<VkPipelineDepthStencilStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
-  depth.depthTestEnable = s.depth_test;
-  depth.depthWriteEnable = s.depth_write;
-  depth.depthCompareOp = VkCompareOp(s.depth_compare);
-  depth.stencilTestEnable = s.stencil_test;
-  depth.front = {VkStencilOp(s.front_fail), VkStencilOp(s.front_pass),
-                 VkStencilOp(s.front_depth_fail), VkCompareOp(s.front_compare),
-                 s.front_compare_mask, s.front_write_mask, s.front_reference};
-  depth.back = {VkStencilOp(s.back_fail), VkStencilOp(s.back_pass),
-                VkStencilOp(s.back_depth_fail), VkCompareOp(s.back_compare),
-                s.back_compare_mask, s.back_write_mask, s.back_reference};
-  depth.maxDepthBounds = 1.0f;
-
-  VkPipelineColorBlendAttachmentState attachments[kMaxColorAttachments]{};
-  for (uint32_t i = 0; i < formats.color_count; ++i) {
-    const AttachmentBlend& b = s.blend[i];
-    attachments[i] = {b.blend_enable,          VkBlendFactor(b.src_color),
-                      VkBlendFactor(b.dst_color), VkBlendOp(b.color_op),
-                      VkBlendFactor(b.src_alpha), VkBlendFactor(b.dst_alpha),
-                      VkBlendOp(b.alpha_op),      VkColorComponentFlags(b.write_mask)};
-  }
-  auto blend = structure<VkPipelineColorBlendStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
-  blend.attachmentCount = formats.color_count;
-  blend.pAttachments = attachments;
-  std::memcpy(blend.blendConstants, s.blend_constants, sizeof blend.blendConstants);
-
   VkDynamicState dynamic_states[40];
-  auto dyn = structure<VkPipelineDynamicStateCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
-  dyn.dynamicStateCount = dynamic.dynamic_state_list(dynamic_states, formats.color_count);
-  dyn.pDynamicStates = dynamic_states;
-
-  const VkPipelineRenderingCreateInfo rendering = formats.pipeline_info();
-
-  auto info = structure<VkGraphicsPipelineCreateInfo>(
-      VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
-  info.pNext = &rendering;
-  info.stageCount = uint32_t(program.stage_infos().size());
-  info.pStages = program.stage_infos().data();
-  info.pVertexInputState = &vertex;
-  info.pInputAssemblyState = &assembly;
-  info.pViewportState = &viewport;
-  info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pDepthStencilState = &depth;
-  info.pColorBlendState = &blend;
-  info.pDynamicState = &dyn;
-  info.layout = program.pipeline_layout();
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  if (!check(vkCreateGraphicsPipelines(ctx_->device(), cache_, 1, &info, nullptr, &pipeline),
-             sink, "vkCreateGraphicsPipelines"))
-    return VK_NULL_HANDLE;
-  return pipeline;
+  GraphicsPipelineDesc desc;
+  desc.stages = program.stage_infos();
+  desc.layout = program.pipeline_layout();
+  desc.state = s;
+  desc.vertex_bindings = vi.bindings;
+  desc.vertex_attributes = vi.attributes;
+  desc.formats = formats;
+  desc.dynamic_states = {dynamic_states, dynamic.dynamic_state_list(dynamic_states, formats.color_count)};
+  return create_graphics_pipeline(ctx_->device(), cache_, desc, sink);
 }
 
 namespace {

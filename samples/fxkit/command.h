@@ -1,23 +1,15 @@
-// Shared pieces of the fxkit subcommands: the front-end flags every command takes and the
-// exit-code convention (0: success, 1: errors in the input, 2: usage or I/O error).
+// Shared pieces of the fxkit subcommands: the front-end flags every command takes, and the
+// exit codes and JSON text of tool_output.h (samples/check).
 #pragma once
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "fx/frontend.h"
+#include "tool_output.h"
 
 namespace fxkit {
-
-enum ExitCode { kSuccess = 0, kInputErrors = 1, kUsageError = 2 };
-
-// JSON text for stdout. Effect files are not always valid UTF-8, and messages quote them:
-// invalid bytes become U+FFFD instead of an exception. indent < 0: one line.
-inline std::string json_text(const nlohmann::json& j, int indent = 2) {
-  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
-}
 
 // -I, -D and --profile, as every command that reads effects takes them.
 struct FrontEndFlags {

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fx/vulkan/apply_stats.h"
 #include "fxkit/message.h"
 
 namespace fxkit {
@@ -111,16 +112,10 @@ struct ParamInfo {
   const Annotation* annotation(std::string_view name) const;
 };
 
-// What Technique::apply recorded for an effect since its last reset_stats() (profiling).
-struct ApplyStats {
-  uint64_t passes = 0;
-  uint64_t pipeline_binds = 0;
-  uint64_t dynamic_state_calls = 0;  // vkCmdSet* calls
-  uint64_t descriptor_binds = 0;     // vkCmdBindDescriptorSets
-  uint64_t descriptor_pushes = 0;    // vkCmdPushDescriptorSetKHR
-  uint64_t descriptor_writes = 0;    // vkUpdateDescriptorSets calls
-  uint64_t uniform_uploads = 0;      // uniform blocks written into the frame's memory
-};
+// What Technique::apply recorded for an effect since its last reset_stats() (profiling):
+// passes, pipeline binds, vkCmdSet* calls, descriptor binds, pushes and writes, uniform
+// uploads. The Vulkan layer's own type (fx/vulkan/apply_stats.h).
+using ApplyStats = fx::vk::ApplyStats;
 
 // Whether a technique can be drawn on this device, and why not.
 struct TechniqueInfo {

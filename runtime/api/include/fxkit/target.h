@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "fx/vulkan/app_vertex_layout.h"
+
 namespace fxkit {
 
 // The attachments of the application's dynamic rendering (vkCmdBeginRendering).
@@ -18,28 +20,13 @@ struct Formats {
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
 };
 
-// One attribute the application's vertex buffers provide.
-struct VertexAttribute {
-  std::string semantic{};  // "POSITION", "NORMAL", "TEXCOORD0" (TEXCOORD == TEXCOORD0)
-  VkFormat format = VK_FORMAT_R32G32B32_SFLOAT;
-  uint32_t offset = 0;   // bytes from the start of the vertex
-  uint32_t binding = 0;  // vertex buffer binding
-};
-
-// One vertex buffer binding.
-struct VertexBinding {
-  uint32_t binding = 0;
-  uint32_t stride = 0;
-  VkVertexInputRate rate = VK_VERTEX_INPUT_RATE_VERTEX;
-};
-
-// What the application's geometry looks like. Vertex shader inputs are matched to the
+// What the application's geometry looks like: attributes (semantic, format, offset, binding)
+// and vertex buffer bindings (binding, stride, rate). Vertex shader inputs are matched to the
 // attributes by semantic (GLSL inputs by name); an input with no attribute is an error
-// naming the semantics on offer.
-struct VertexLayout {
-  std::vector<VertexAttribute> attributes{};
-  std::vector<VertexBinding> bindings{};
-};
+// naming the semantics on offer. The Vulkan layer's own types (fx/vulkan/app_vertex_layout.h).
+using VertexAttribute = fx::vk::VertexAttribute;
+using VertexBinding = fx::vk::VertexBinding;
+using VertexLayout = fx::vk::VertexLayout;
 
 // The front faces of the application's meshes, seen from outside: Direct3D's convention is
 // clockwise, OpenGL's and glTF's counter-clockwise.

@@ -9,10 +9,10 @@
 #include <span>
 #include <vector>
 
+#include "fx/vulkan/apply_stats.h"
 #include "fx/vulkan/frame_resources.h"
 #include "fx/vulkan/pass_resources.h"
 #include "fx/vulkan/pipeline_cache.h"
-#include "fxkit/effect.h"
 
 namespace fx::vk {
 
@@ -30,10 +30,6 @@ struct PassDesc {
   // are then not read.
   std::span<const uint32_t> uniform_offsets = {};
 };
-
-// What the recorder recorded (and skipped), for tests and benchmarks.
-// What apply() recorded: the public type (fxkit/effect.h).
-using ApplyStats = fxkit::ApplyStats;
 
 class PassRecorder {
  public:

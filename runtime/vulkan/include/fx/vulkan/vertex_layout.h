@@ -10,19 +10,13 @@
 
 #include "fx/compile/shader_reflection.h"
 #include "fx/diagnostic.h"
-#include "fxkit/target.h"
+#include "fx/vulkan/app_vertex_layout.h"
 
 namespace fx {
 struct MeshVertexLayout;  // fx/mesh.h
 }
 
 namespace fx::vk {
-
-// The application's vertex layout is the public type (fxkit/target.h): one type from the
-// engine's declaration to the pipeline.
-using VertexAttribute = fxkit::VertexAttribute;
-using VertexBinding = fxkit::VertexBinding;
-using VertexLayout = fxkit::VertexLayout;
 
 // The Vulkan layout of a mesh library layout (fx::mesh_vertex_layout(), or one an
 // application describes the same way): one binding of the layout's stride at `binding`,

@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "command.h"
+#include "tool_output.h"
 
 namespace fxkit {
 namespace {

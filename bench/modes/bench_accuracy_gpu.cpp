@@ -10,6 +10,7 @@
 #include "bench_accuracy.h"
 #include "fx/compile/shader_compiler.h"
 #include "fx/vulkan/context.h"
+#include "fx/vulkan/graphics_pipeline.h"
 #include "fx/vulkan/one_shot.h"
 #include "fx/vulkan/render_target.h"
 #include "fx/vulkan/texture.h"
@@ -173,49 +174,14 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
     stages[0].sType = stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT, stages[0].module = o->vs, stages[0].pName = cv.entry_point.c_str();
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT, stages[1].module = o->ps, stages[1].pName = cp.entry_point.c_str();
-    VkPipelineVertexInputStateCreateInfo vi{};
-    vi.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
-    VkPipelineInputAssemblyStateCreateInfo ia{};
-    ia.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
-    ia.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo vp{};
-    vp.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
-    vp.viewportCount = vp.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo rs{};
-    rs.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
-    rs.polygonMode = VK_POLYGON_MODE_FILL;
-    rs.cullMode = VK_CULL_MODE_NONE;
-    rs.lineWidth = 1;
-    VkPipelineMultisampleStateCreateInfo ms{};
-    ms.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
-    ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    VkPipelineColorBlendAttachmentState att{};
-    att.colorWriteMask = 0xF;
-    VkPipelineColorBlendStateCreateInfo cb{};
-    cb.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
-    cb.attachmentCount = 1;
-    cb.pAttachments = &att;
-    VkDynamicState dyn[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo ds{};
-    ds.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
-    ds.dynamicStateCount = 2;
-    ds.pDynamicStates = dyn;
-    fx::vk::RenderingFormats formats = target->formats();
-    VkPipelineRenderingCreateInfo rendering = formats.pipeline_info();
-    VkGraphicsPipelineCreateInfo gp{};
-    gp.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
-    gp.pNext = &rendering;
-    gp.stageCount = 2;
-    gp.pStages = stages;
-    gp.pVertexInputState = &vi;
-    gp.pInputAssemblyState = &ia;
-    gp.pViewportState = &vp;
-    gp.pRasterizationState = &rs;
-    gp.pMultisampleState = &ms;
-    gp.pColorBlendState = &cb;
-    gp.pDynamicState = &ds;
+    const VkDynamicState dyn[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    fx::vk::GraphicsPipelineDesc gp;  // the full-screen defaults
+    gp.stages = stages;
     gp.layout = layout;
-    if (vkCreateGraphicsPipelines(dev, VK_NULL_HANDLE, 1, &gp, nullptr, &o->pipeline) != VK_SUCCESS) {
+    gp.formats = target->formats();
+    gp.dynamic_states = dyn;
+    o->pipeline = fx::vk::create_graphics_pipeline(dev, VK_NULL_HANDLE, gp, sink);
+    if (!o->pipeline) {
       sink.error("accuracy-kernel-pipeline", {}, "kernel '" + k.id + "': vkCreateGraphicsPipelines failed");
       ok = false;
       break;

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "command.h"
+#include "tool_output.h"
 
 namespace fxkit {
 
