@@ -21,73 +21,73 @@
 // aniso_highlights_glsl.fx runtime_switch
 #define COST_runtime_switch string ErrorNotMeasured = "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
 // aniso_lut_ward.fx gaussian_per_pixel
-#define COST_gaussian_per_pixel float CostNsPerPixel = 13.561; float CostNsPerVertex = 5.838; float MaxError = 0.00; string Substitutes = "gaussian";
+#define COST_gaussian_per_pixel float CostNsPerPixel = 12.123; float CostNsPerVertex = 4.450; float MaxError = 0.00; string Substitutes = "gaussian";
 // aniso_lut_ward.fx gaussian_per_vertex
-#define COST_gaussian_per_vertex float CostNsPerPixel = 0.145; float CostNsPerVertex = 8.093; float MaxError = 228.22; string Substitutes = "gaussian";
+#define COST_gaussian_per_vertex float CostNsPerPixel = 0.449; float CostNsPerVertex = 7.320; float MaxError = 228.22; string Substitutes = "gaussian";
 // aniso_lut_ward.fx ln_hn_per_pixel
-#define COST_ln_hn_per_pixel float CostNsPerPixel = 17.210; float CostNsPerVertex = 5.487; float MaxError = 6.90; string Substitutes = "table";
+#define COST_ln_hn_per_pixel float CostNsPerPixel = 17.260; float CostNsPerVertex = 5.835; float MaxError = 6.90; string Substitutes = "table";
 // aniso_lut_ward.fx ln_hn_per_vertex
-#define COST_ln_hn_per_vertex float CostNsPerPixel = 8.099; float CostNsPerVertex = 6.252; float MaxError = 84.88; string Substitutes = "table";
+#define COST_ln_hn_per_vertex float CostNsPerPixel = 9.333; float CostNsPerVertex = 5.711; float MaxError = 84.88; string Substitutes = "table";
 // brdf.fx brdf_ps20
-#define COST_brdf_ps20 float CostNsPerPixel = 87.055; float CostNsPerVertex = 67.505; float MaxError = 179.53;
+#define COST_brdf_ps20 float CostNsPerPixel = 18.478; float CostNsPerVertex = 12.542; float MaxError = 179.53;
 // brdf.fx tec0
-#define COST_tec0 float CostNsPerPixel = 39.936; float CostNsPerVertex = 55.924; float MaxError = 255.00; float Ps1xPrecisionMaxError = 255.00; float Ps1xPrecisionCostNsPerPixel = 41.848;
+#define COST_tec0 float CostNsPerPixel = 10.769; float CostNsPerVertex = 10.229; float MaxError = 255.00; float Ps1xPrecisionMaxError = 255.00; float Ps1xPrecisionCostNsPerPixel = 10.463;
 // hemisphere.fx hemisphere_sun
-#define COST_hemisphere_sun float CostNsPerPixel = 30.768; float CostNsPerVertex = 16.025; float MaxError = 0.70;
+#define COST_hemisphere_sun float CostNsPerPixel = 19.711; float CostNsPerVertex = 11.417; float MaxError = 0.70;
 // hemisphere.fx hemisphere_vertex_occlusion_sun
-#define COST_hemisphere_vertex_occlusion_sun float CostNsPerPixel = 30.232; float CostNsPerVertex = 16.632; float MaxError = 42.54;
+#define COST_hemisphere_vertex_occlusion_sun float CostNsPerPixel = 20.588; float CostNsPerVertex = 12.443; float MaxError = 42.54;
 // hemisphere.fx hemisphere_three_term
-#define COST_hemisphere_three_term float CostNsPerPixel = 24.813; float CostNsPerVertex = 14.567; float MaxError = 125.30;
+#define COST_hemisphere_three_term float CostNsPerPixel = 15.383; float CostNsPerVertex = 11.557; float MaxError = 125.30;
 // hemisphere.fx hemisphere_two_term
-#define COST_hemisphere_two_term float CostNsPerPixel = 25.365; float CostNsPerVertex = 14.970; float MaxError = 125.05;
+#define COST_hemisphere_two_term float CostNsPerPixel = 13.897; float CostNsPerVertex = 11.362; float MaxError = 125.05;
 // hemisphere.fx hemisphere_seed_form
-#define COST_hemisphere_seed_form float CostNsPerPixel = 27.689; float CostNsPerVertex = 12.094; float MaxError = 28.13;
+#define COST_hemisphere_seed_form float CostNsPerPixel = 10.716; float CostNsPerVertex = 11.822; float MaxError = 28.13;
 // hemisphere.fx hemisphere_per_vertex
-#define COST_hemisphere_per_vertex float CostNsPerPixel = 10.185; float CostNsPerVertex = 7.343; float MaxError = 120.33;
+#define COST_hemisphere_per_vertex float CostNsPerPixel = 7.638; float CostNsPerVertex = 4.881; float MaxError = 120.33;
 // hemisphere.fx hemisphere_ps11
-#define COST_hemisphere_ps11 float CostNsPerPixel = 20.865; float CostNsPerVertex = 12.571; float MaxError = 126.70; float Ps1xPrecisionMaxError = 126.27; float Ps1xPrecisionCostNsPerPixel = 29.313;
+#define COST_hemisphere_ps11 float CostNsPerPixel = 14.785; float CostNsPerVertex = 7.007; float MaxError = 126.70; float Ps1xPrecisionMaxError = 126.27; float Ps1xPrecisionCostNsPerPixel = 20.930;
 // hemisphere.fx hemisphere_vs11
-#define COST_hemisphere_vs11 float CostNsPerPixel = 6.220; float CostNsPerVertex = 13.043; float MaxError = 135.44;
+#define COST_hemisphere_vs11 float CostNsPerPixel = 4.863; float CostNsPerVertex = 5.757; float MaxError = 135.44;
 // per_pixel_lighting.fx diffuse_ps20
-#define COST_diffuse_ps20 float CostNsPerPixel = 21.999; float CostNsPerVertex = 37.985; float MaxError = 0.76; string Substitutes = "diffuse";
+#define COST_diffuse_ps20 float CostNsPerPixel = 14.656; float CostNsPerVertex = 14.047; float MaxError = 0.76; string Substitutes = "diffuse";
 // per_pixel_lighting.fx diffuse_ps11
-#define COST_diffuse_ps11 float CostNsPerPixel = 7.198; float CostNsPerVertex = 63.863; float MaxError = 139.04; string Substitutes = "diffuse"; float Ps1xPrecisionMaxError = 138.69; float Ps1xPrecisionCostNsPerPixel = 12.894;
+#define COST_diffuse_ps11 float CostNsPerPixel = 6.094; float CostNsPerVertex = 8.153; float MaxError = 139.04; string Substitutes = "diffuse"; float Ps1xPrecisionMaxError = 138.69; float Ps1xPrecisionCostNsPerPixel = 10.271;
 // per_pixel_lighting.fx dot3_multitexture
-#define COST_dot3_multitexture float CostNsPerPixel = 5.987; float CostNsPerVertex = 60.877; float MaxError = 139.04; string Substitutes = "diffuse";
+#define COST_dot3_multitexture float CostNsPerPixel = 6.151; float CostNsPerVertex = 6.517; float MaxError = 139.04; string Substitutes = "diffuse";
 // per_pixel_lighting.fx emboss
-#define COST_emboss float CostNsPerPixel = 5.887; float CostNsPerVertex = 63.060; float MaxError = 147.50; string Substitutes = "diffuse";
+#define COST_emboss float CostNsPerPixel = 4.851; float CostNsPerVertex = 8.056; float MaxError = 147.50; string Substitutes = "diffuse";
 // per_pixel_lighting.fx specular_pow_ps20
-#define COST_specular_pow_ps20 float CostNsPerPixel = 30.554; float CostNsPerVertex = 65.991; float MaxError = 59.72; string Substitutes = "specular";
+#define COST_specular_pow_ps20 float CostNsPerPixel = 18.110; float CostNsPerVertex = 13.157; float MaxError = 59.72; string Substitutes = "specular";
 // per_pixel_lighting.fx specular_table_ps20
-#define COST_specular_table_ps20 float CostNsPerPixel = 33.129; float CostNsPerVertex = 64.490; float MaxError = 154.27; string Substitutes = "specular";
+#define COST_specular_table_ps20 float CostNsPerPixel = 24.896; float CostNsPerVertex = 12.530; float MaxError = 154.27; string Substitutes = "specular";
 // per_pixel_lighting.fx specular_squaring_ps20
-#define COST_specular_squaring_ps20 float CostNsPerPixel = 26.062; float CostNsPerVertex = 63.366; float MaxError = 199.63; string Substitutes = "specular";
+#define COST_specular_squaring_ps20 float CostNsPerPixel = 16.072; float CostNsPerVertex = 14.125; float MaxError = 199.63; string Substitutes = "specular";
 // per_pixel_lighting.fx specular_table_ps11
-#define COST_specular_table_ps11 float CostNsPerPixel = 18.429; float CostNsPerVertex = 68.706; float MaxError = 255.00; string Substitutes = "specular"; float Ps1xPrecisionMaxError = 255.00; float Ps1xPrecisionCostNsPerPixel = 35.949;
+#define COST_specular_table_ps11 float CostNsPerPixel = 11.806; float CostNsPerVertex = 9.914; float MaxError = 255.00; string Substitutes = "specular"; float Ps1xPrecisionMaxError = 255.00; float Ps1xPrecisionCostNsPerPixel = 19.203;
 // per_pixel_lighting.fx specular_squaring_ps11
-#define COST_specular_squaring_ps11 float CostNsPerPixel = 8.353; float CostNsPerVertex = 65.542; float MaxError = 255.00; string Substitutes = "specular"; float Ps1xPrecisionMaxError = 255.00; float Ps1xPrecisionCostNsPerPixel = 16.145;
+#define COST_specular_squaring_ps11 float CostNsPerPixel = 7.370; float CostNsPerVertex = 9.684; float MaxError = 255.00; string Substitutes = "specular"; float Ps1xPrecisionMaxError = 255.00; float Ps1xPrecisionCostNsPerPixel = 14.462;
 // per_pixel_lighting.fx specular_emboss
-#define COST_specular_emboss float CostNsPerPixel = 34.140; float CostNsPerVertex = 233.626; float MaxError = 147.50; string Substitutes = "specular";
+#define COST_specular_emboss float CostNsPerPixel = 26.516; float CostNsPerVertex = 71.017; float MaxError = 147.50; string Substitutes = "specular";
 // strand_aniso.fx strand_bump_renormalized
-#define COST_strand_bump_renormalized float CostNsPerPixel = 92.699; float CostNsPerVertex = 42.824; float MaxError = 21.13; string Substitutes = "bump mapped";
+#define COST_strand_bump_renormalized float CostNsPerPixel = 45.244; float CostNsPerVertex = 13.099; float MaxError = 21.13; string Substitutes = "bump mapped";
 // strand_aniso.fx strand_bump_unnormalized
-#define COST_strand_bump_unnormalized float CostNsPerPixel = 87.335; float CostNsPerVertex = 73.402; float MaxError = 43.55; string Substitutes = "bump mapped";
+#define COST_strand_bump_unnormalized float CostNsPerPixel = 42.241; float CostNsPerVertex = 12.445; float MaxError = 43.55; string Substitutes = "bump mapped";
 // strand_aniso.fx strand_analytic
-#define COST_strand_analytic float CostNsPerPixel = 75.654; float CostNsPerVertex = 49.777; float MaxError = 5.96;
+#define COST_strand_analytic float CostNsPerPixel = 28.910; float CostNsPerVertex = 12.228; float MaxError = 5.96;
 // strand_aniso.fx strand_lut
-#define COST_strand_lut float CostNsPerPixel = 82.041; float CostNsPerVertex = 41.137; float MaxError = 16.28;
+#define COST_strand_lut float CostNsPerPixel = 33.773; float CostNsPerVertex = 13.006; float MaxError = 16.28;
 // strand_aniso.fx strand_lut_seed_wrap
-#define COST_strand_lut_seed_wrap float CostNsPerPixel = 65.315; float CostNsPerVertex = 42.960; float MaxError = 48.50;
+#define COST_strand_lut_seed_wrap float CostNsPerPixel = 32.444; float CostNsPerVertex = 13.411; float MaxError = 48.50;
 // strand_aniso.fx strand_four_lights
-#define COST_strand_four_lights float CostNsPerPixel = 167.892; float CostNsPerVertex = 42.863; float MaxError = 16.38; string Substitutes = "four lights";
+#define COST_strand_four_lights float CostNsPerPixel = 65.259; float CostNsPerVertex = 14.170; float MaxError = 16.38; string Substitutes = "four lights";
 // strand_aniso.fx strand_per_vertex
-#define COST_strand_per_vertex float CostNsPerPixel = 30.208; float CostNsPerVertex = 40.029; float MaxError = 66.61;
+#define COST_strand_per_vertex float CostNsPerPixel = 10.265; float CostNsPerVertex = 12.214; float MaxError = 66.61;
 // strand_aniso.fx strand_four_lights_ps14
-#define COST_strand_four_lights_ps14 float CostNsPerPixel = 82.819; float CostNsPerVertex = 23.785; float MaxError = 187.92; string Substitutes = "four lights"; float Ps1xPrecisionMaxError = 187.92; float Ps1xPrecisionCostNsPerPixel = 124.704;
+#define COST_strand_four_lights_ps14 float CostNsPerPixel = 32.077; float CostNsPerVertex = 10.363; float MaxError = 187.92; string Substitutes = "four lights"; float Ps1xPrecisionMaxError = 187.92; float Ps1xPrecisionCostNsPerPixel = 48.412;
 // strand_aniso.fx strand_lut_ps11
-#define COST_strand_lut_ps11 float CostNsPerPixel = 32.502; float CostNsPerVertex = 39.471; float MaxError = 242.77; float Ps1xPrecisionMaxError = 242.81; float Ps1xPrecisionCostNsPerPixel = 54.071;
+#define COST_strand_lut_ps11 float CostNsPerPixel = 13.516; float CostNsPerVertex = 8.462; float MaxError = 242.77; float Ps1xPrecisionMaxError = 242.81; float Ps1xPrecisionCostNsPerPixel = 18.585;
 // wood.fx wood
-#define COST_wood float CostNsPerPixel = 148.905; float CostNsPerVertex = 5.547; float MaxError = 0.00;
+#define COST_wood float CostNsPerPixel = 48.775; float CostNsPerVertex = 10.413; float MaxError = 0.00;
 // wood.fx wood_renderman_rings
-#define COST_wood_renderman_rings float CostNsPerPixel = 154.820; float CostNsPerVertex = 7.021; float MaxError = 0.00; string Substitutes = "renderman";
+#define COST_wood_renderman_rings float CostNsPerPixel = 46.484; float CostNsPerVertex = 22.563; float MaxError = 0.00; string Substitutes = "renderman";
 #endif
