@@ -29,9 +29,9 @@
 // aniso_lut_ward.fx ln_hn_per_vertex
 #define COST_ln_hn_per_vertex float CostNsPerPixel = 9.333; float CostNsPerVertex = 5.711; float MaxError = 84.88; string Substitutes = "table";
 // brdf.fx brdf_ps20
-#define COST_brdf_ps20 float CostNsPerPixel = 18.478; float CostNsPerVertex = 12.542; float MaxError = 179.53;
+#define COST_brdf_ps20 float CostNsPerPixel = 39.236; float CostNsPerVertex = 17.365; float MaxError = 179.53;
 // brdf.fx tec0
-#define COST_tec0 float CostNsPerPixel = 10.769; float CostNsPerVertex = 10.229; float MaxError = 255.00; float Ps1xPrecisionMaxError = 255.00; float Ps1xPrecisionCostNsPerPixel = 10.463;
+#define COST_tec0 float CostNsPerPixel = 15.610; float CostNsPerVertex = 17.649; float MaxError = 255.00; float Ps1xPrecisionMaxError = 255.00; float Ps1xPrecisionCostNsPerPixel = 21.014;
 // hemisphere.fx hemisphere_sun
 #define COST_hemisphere_sun float CostNsPerPixel = 19.711; float CostNsPerVertex = 11.417; float MaxError = 0.70;
 // hemisphere.fx hemisphere_vertex_occlusion_sun
