@@ -16,6 +16,8 @@ struct BenchArgs {
   std::string effects_dir = "effects";  // compile, check: the effects to load or check
   std::string seeds_dir = "effects";    // check: the effects loaded through the library
   std::string fxh;  // accuracy: write technique cost/error annotations here
+  std::vector<std::string> only_effects;  // accuracy: measure only these effects' techniques
+  std::string merge;  // accuracy: an earlier --json output the new technique rows replace theirs in
   int processes = 1;  // > 1: the benchmark in that many fresh processes, median ratio
 };
 

@@ -112,7 +112,8 @@ ReferenceModel strand_aniso() {
                       {"light along the strands", {{"Light0Direction", {-1.0f, 0.0f, 0.0f}}}},
                       {"light head-on", {{"Light0Direction", {0.0f, -0.1f, -1.0f}}}},
                       {"light against the camera", {{"Light0Direction", {0.0f, 0.05f, 1.0f}}}}};
-  auto lights = [](const TechniqueRef& t) { return t.name == "strand_four_lights" ? 4 : 1; };
+  // strand_four_lights and the seed's ps.1.4 listing strand_four_lights_ps14 sum four lights.
+  auto lights = [](const TechniqueRef& t) { return t.name.rfind("strand_four_lights", 0) == 0 ? 4 : 1; };
   auto bump = [](const TechniqueRef& t) { return t.name.rfind("strand_bump_", 0) == 0; };
   m.group = [=](const TechniqueRef& t) {
     return std::string(bump(t) ? "bump mapped" : "") + (lights(t) > 1 ? "four lights" : "");

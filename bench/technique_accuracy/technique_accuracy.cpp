@@ -92,6 +92,27 @@ std::string scheme_of(const TechniqueInfo& t) {
   return a && a->value.is_string() ? a->value.text : std::string();
 }
 
+// How the binding draws technique t when it is legacy (its assembly and fixed-function
+// stages' emulation, "; "-joined), and whether a pixel stage is ps.1.x assembly (the stages
+// the precision model changes).
+struct Legacy {
+  std::string emulation;
+  bool ps1x = false;
+};
+Legacy legacy_of(const EffectUnits& units, uint32_t t) {
+  Legacy l;
+  for (const EffectPass& pass : units.passes()) {
+    if (pass.technique_index != t) continue;
+    for (const StageUnit& stage : pass.stages) {
+      if (stage.kind != StageSourceKind::assembly && stage.kind != StageSourceKind::fixed_function) continue;
+      l.ps1x |= stage.kind == StageSourceKind::assembly && stage.stage == ShaderStage::fragment;
+      if (!stage.emulation.empty() && l.emulation.find(stage.emulation) == std::string::npos)
+        l.emulation += (l.emulation.empty() ? "" : "; ") + stage.emulation;
+    }
+  }
+  return l;
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0;
   std::sort(v.begin(), v.end());
@@ -108,11 +129,13 @@ struct Bound {
   size_t vertices = 0;
 };
 
+// precision: compiled with the ps.1.x precision model (FXKIT_PS1X_PRECISION).
 std::optional<Bound> bind_on_mesh(const vk::Context& ctx, const std::string& path, const std::string& effects_dir,
-                          const char* mesh_name, uint32_t size, DiagnosticSink& sink) {
+                                  const char* mesh_name, uint32_t size, DiagnosticSink& sink, bool precision = false) {
   Bound b;
   FrontEndOptions fe;
   fe.preprocessor.include_dirs = {effects_dir};
+  if (precision) fe.preprocessor.defines.emplace_back(kPs1xPrecisionMacro, "1");
   b.effect = EffectFile::load(path, fe, sink);
   auto mesh = make_mesh(mesh_name, sink);
   if (!b.effect || !mesh) return std::nullopt;
@@ -163,7 +186,21 @@ bool apply(ParameterStore& params, const Saved& defaults, const ParameterSet& se
   return true;
 }
 
-// One effect with a reference model: errors over the scene set, then timing.
+// The displayed value of a colour channel: what a UNORM target stores (NaN is counted as a
+// full-scale error by the caller, not clamped).
+double displayed(double v) { return std::clamp(v, 0.0, 1.0); }
+
+// Puts a parameter set and the scene's standard semantics into a bound effect.
+bool prepare(Bound& b, const Saved& defaults, const ParameterSet& set, const vk::SceneView& scene,
+             DiagnosticSink& sink) {
+  if (!apply(*b.effect->params, defaults, set, sink)) return false;
+  vk::set_standard_semantics(*b.effect->params, *b.effect->model, scene);
+  return true;
+}
+
+// One effect with a reference model: errors over the scene set, then timing. Techniques with
+// a ps.1.x pixel stage are measured twice: as compiled by default, and from a second binding
+// of the effect compiled with the ps.1.x precision model (their precision_model rows).
 bool measure_effect(const vk::Context& ctx, const ReferenceModel& model, const std::filesystem::path& source,
                     const TechniqueAccuracyOptions& options, std::vector<TechniqueAccuracy>& rows,
                     DiagnosticSink& sink) {
@@ -173,8 +210,14 @@ bool measure_effect(const vk::Context& ctx, const ReferenceModel& model, const s
   const auto path = dir / source.filename();
   std::ofstream(path) << read_text(source) << "\n" << measurement_block(model);
   const size_t first = rows.size();
-  std::map<uint32_t, std::vector<double>> errors;  // per technique index: per-pixel worst channel
+  std::map<size_t, std::vector<double>> errors;   // per row: per-pixel worst channel
+  std::map<size_t, std::vector<double>> banding;  // precision rows: against the row before
   uint32_t gbuffer0 = kNoIndex, empty = kNoIndex;
+  bool any_precision = false;
+  // The binding a row is drawn with.
+  auto bound_for = [](const TechniqueAccuracy& r, Bound& plain, std::optional<Bound>& precise) -> Bound& {
+    return r.precision_model ? *precise : plain;
+  };
 
   for (const char* mesh : kMeshes) {
     auto b = bind_on_mesh(ctx, path.string(), options.effects_dir, mesh, options.error_size, sink);
@@ -192,11 +235,23 @@ bool measure_effect(const vk::Context& ctx, const ReferenceModel& model, const s
         r.drawable = b->binding->technique_ok(t);
         r.model = model.description;
         r.substitutes = model.group({r.technique, r.scheme});
+        const Legacy legacy = legacy_of(*b->effect->units, t);
+        r.emulation = legacy.emulation;
         if (!r.drawable) r.reason = "not drawable on Vulkan: " + b->binding->technique_reason(t);
         else if (!model.covers({r.technique, r.scheme})) r.reason = "its reference model does not cover this technique";
         r.measured = r.reason.empty();
         rows.push_back(r);
+        if (r.measured && legacy.ps1x) {
+          r.precision_model = true;
+          rows.push_back(r);
+          any_precision = true;
+        }
       }
+    }
+    std::optional<Bound> bp;
+    if (any_precision) {
+      bp = bind_on_mesh(ctx, path.string(), options.effects_dir, mesh, options.error_size, sink, true);
+      if (!bp) return false;
     }
     const Saved defaults = save(*b->effect->params, model);
     const size_t channels = ch_textures + model.textures.size();
@@ -204,8 +259,7 @@ bool measure_effect(const vk::Context& ctx, const ReferenceModel& model, const s
       vk::SceneView scene = b->preview->scene();
       scene.world = world;
       for (const ParameterSet& set : model.parameter_sets) {
-        if (!apply(*b->effect->params, defaults, set, sink)) return false;
-        vk::set_standard_semantics(*b->effect->params, em, scene);
+        if (!prepare(*b, defaults, set, scene, sink) || (bp && !prepare(*bp, defaults, set, scene, sink))) return false;
         std::vector<ImageF> gb;
         for (size_t c = 0; c < channels; ++c) {
           auto img = b->preview->render_floats(*b->binding, gbuffer0 + uint32_t(c), b->layouts[gbuffer0 + c], sink);
@@ -216,11 +270,14 @@ bool measure_effect(const vk::Context& ctx, const ReferenceModel& model, const s
         auto covered = [&](int x, int y) {
           return x >= 0 && y >= 0 && x < int(pos.width) && y < int(pos.height) && pos.at(uint32_t(x), uint32_t(y))[3] > 0.5f;
         };
+        std::optional<ImageF> previous;  // the row before's image (a precision row's float twin)
         for (size_t k = first; k < rows.size(); ++k) {
           if (!rows[k].measured) continue;
-          const uint32_t t = b->effect->find_technique(rows[k].technique);
-          auto img = b->preview->render_floats(*b->binding, t, b->layouts[t], sink);
+          Bound& on = bound_for(rows[k], *b, bp);
+          const uint32_t t = on.effect->find_technique(rows[k].technique);
+          auto img = on.preview->render_floats(*on.binding, t, on.layouts[t], sink);
           if (!img) return false;
+          const bool twin = rows[k].precision_model && previous;
           for (uint32_t y = 0; y < pos.height; ++y)
             for (uint32_t x = 0; x < pos.width; ++x) {
               // Interior pixels only: an edge pixel may be covered by one pass and not the other.
@@ -243,46 +300,78 @@ bool measure_effect(const vk::Context& ctx, const ReferenceModel& model, const s
               const float* g = img->at(x, y);
               double worst = 0;
               for (int c = 0; c < 3; ++c) {
-                const double d = std::isfinite(g[c]) ? std::fabs(double(g[c]) - ref[c]) * 255.0 : 255.0;
+                const double d =
+                    std::isfinite(g[c]) ? std::fabs(displayed(double(g[c])) - displayed(ref[c])) * 255.0 : 255.0;
                 worst = std::max(worst, d);
               }
-              errors[t].push_back(worst);
+              errors[k].push_back(worst);
+              if (twin) {
+                const float* f = previous->at(x, y);
+                double band = 0;
+                for (int c = 0; c < 3; ++c)
+                  band = std::max(band, std::isfinite(g[c]) && std::isfinite(f[c])
+                                            ? std::fabs(displayed(g[c]) - displayed(f[c])) * 255.0
+                                            : 255.0);
+                banding[k].push_back(band);
+              }
             }
+          previous = std::move(img);
         }
       }
     }
   }
   // Error statistics.
+  for (size_t k = first; k < rows.size(); ++k) {
+    if (!rows[k].measured) continue;
+    std::vector<double>& e = errors[k];
+    if (e.empty()) {
+      rows[k].measured = false;
+      rows[k].reason = "no covered pixels";
+      continue;
+    }
+    std::sort(e.begin(), e.end());
+    double sq = 0;
+    for (double v : e) sq += v * v;
+    rows[k].pixels_compared = e.size();
+    rows[k].max_error_lsb = e.back();
+    rows[k].p99_error_lsb = e[std::min(e.size() - 1, size_t(std::ceil(0.99 * double(e.size()))) - 1)];
+    rows[k].rmse_lsb = std::sqrt(sq / double(e.size()));
+    if (const auto it = banding.find(k); it != banding.end() && !it->second.empty()) {
+      double band_sq = 0;
+      for (double v : it->second) {
+        rows[k].banding_max_lsb = std::max(rows[k].banding_max_lsb, v);
+        band_sq += v * v;
+      }
+      rows[k].banding_rmse_lsb = std::sqrt(band_sq / double(it->second.size()));
+    }
+  }
+  // Timing: the sphere, default parameters, front view. Covered pixels from the G-buffer.
   {
     auto b = bind_on_mesh(ctx, path.string(), options.effects_dir, kMeshes[0], options.timing_size, sink);
     if (!b) return false;
-    for (size_t k = first; k < rows.size(); ++k) {
-      if (!rows[k].measured) continue;
-      std::vector<double>& e = errors[b->effect->find_technique(rows[k].technique)];
-      if (e.empty()) {
-        rows[k].measured = false;
-        rows[k].reason = "no covered pixels";
-        continue;
-      }
-      std::sort(e.begin(), e.end());
-      double sq = 0;
-      for (double v : e) sq += v * v;
-      rows[k].pixels_compared = e.size();
-      rows[k].max_error_lsb = e.back();
-      rows[k].p99_error_lsb = e[std::min(e.size() - 1, size_t(std::ceil(0.99 * double(e.size()))) - 1)];
-      rows[k].rmse_lsb = std::sqrt(sq / double(e.size()));
+    std::optional<Bound> bp;
+    if (any_precision) {
+      bp = bind_on_mesh(ctx, path.string(), options.effects_dir, kMeshes[0], options.timing_size, sink, true);
+      if (!bp) return false;
+      vk::set_standard_semantics(*bp->effect->params, *bp->effect->model, bp->preview->scene());
     }
-    // Timing: the sphere, default parameters, front view. Covered pixels from the G-buffer.
     vk::set_standard_semantics(*b->effect->params, *b->effect->model, b->preview->scene());
     auto pos = b->preview->render_floats(*b->binding, gbuffer0, b->layouts[gbuffer0], sink);
     if (!pos) return false;
     double pixels = 0;
     for (uint32_t y = 0; y < pos->height; ++y)
       for (uint32_t x = 0; x < pos->width; ++x) pixels += pos->at(x, y)[3] > 0.5f;
-    std::vector<uint32_t> timed = {empty};
-    std::vector<size_t> row_of = {size_t(-1)};
+    struct Timed {
+      Bound* on;
+      uint32_t technique;
+      size_t row;
+    };
+    std::vector<Timed> timed = {{&*b, empty, size_t(-1)}};
     for (size_t k = first; k < rows.size(); ++k)
-      if (rows[k].drawable) timed.push_back(b->effect->find_technique(rows[k].technique)), row_of.push_back(k);
+      if (rows[k].drawable) {
+        Bound& on = bound_for(rows[k], *b, bp);
+        timed.push_back({&on, on.effect->find_technique(rows[k].technique), k});
+      }
     const VkRect2D full{{0, 0}, {options.timing_size, options.timing_size}};
     const VkRect2D corner{{0, 0}, {1, 1}};  // off the mesh: the vertex work alone
     // Vertex work is small beside a frame's pixels: many more draws lift it above the noise.
@@ -290,15 +379,17 @@ bool measure_effect(const vk::Context& ctx, const ReferenceModel& model, const s
     std::vector<std::vector<double>> full_ns(timed.size()), vertex_ns(timed.size());
     for (int r = -1; r < options.repeats; ++r) {  // r = -1 warms the pipelines up
       for (size_t i = 0; i < timed.size(); ++i) {
-        auto f = b->preview->time_passes(*b->binding, timed[i], b->layouts[timed[i]], options.draws, full, sink);
-        auto v = b->preview->time_passes(*b->binding, timed[i], b->layouts[timed[i]], vertex_draws, corner, sink);
+        Bound& on = *timed[i].on;
+        const uint32_t t = timed[i].technique;
+        auto f = on.preview->time_passes(*on.binding, t, on.layouts[t], options.draws, full, sink);
+        auto v = on.preview->time_passes(*on.binding, t, on.layouts[t], vertex_draws, corner, sink);
         if (!f || !v) return false;
         if (r >= 0) full_ns[i].push_back(*f), vertex_ns[i].push_back(*v);
       }
     }
     const double empty_full = median(full_ns[0]), empty_vertex = median(vertex_ns[0]);
     for (size_t i = 1; i < timed.size(); ++i) {
-      TechniqueAccuracy& row = rows[row_of[i]];
+      TechniqueAccuracy& row = rows[timed[i].row];
       const double vertex = (median(vertex_ns[i]) - empty_vertex) / vertex_draws;  // per draw
       const double pixel = (median(full_ns[i]) - empty_full) / options.draws - vertex;
       row.ns_per_vertex = vertex / double(b->vertices);
@@ -323,6 +414,7 @@ bool list_effect(const vk::Context& ctx, const std::filesystem::path& source, co
     r.technique = em.techniques[t].name;
     r.scheme = scheme_of(em.techniques[t]);
     r.drawable = b->binding->technique_ok(t);
+    r.emulation = legacy_of(*b->effect->units, t).emulation;
     r.reason = r.drawable ? unmodelled_reason(r.effect) : "not drawable on Vulkan: " + b->binding->technique_reason(t);
     rows.push_back(r);
   }
@@ -350,8 +442,16 @@ std::optional<std::vector<TechniqueAccuracy>> measure_techniques(const vk::Conte
                                                                  DiagnosticSink& sink) {
   std::vector<std::filesystem::path> files;
   for (const auto& e : std::filesystem::directory_iterator(options.effects_dir))
-    if (e.path().extension() == ".fx") files.push_back(e.path());
+    if (e.path().extension() == ".fx" &&
+        (options.only.empty() || std::find(options.only.begin(), options.only.end(), e.path().filename().string()) !=
+                                     options.only.end()))
+      files.push_back(e.path());
   std::sort(files.begin(), files.end());
+  for (const std::string& name : options.only)
+    if (std::none_of(files.begin(), files.end(), [&](const auto& f) { return f.filename().string() == name; })) {
+      sink.error("accuracy-effect", {}, "no effect '" + name + "' in " + options.effects_dir);
+      return std::nullopt;
+    }
   std::vector<TechniqueAccuracy> rows;
   for (const auto& f : files) {
     const std::string name = f.filename().string();

@@ -1,4 +1,4 @@
-// `fxkit bench MODE [--size-mb N] [--repeats N] [--processes N] [--json]`
+// `fxkit bench MODE [--size-mb N] [--repeats N] [--processes N] [--json] [--effect F]... [--merge JSON]`
 #include <cstdio>
 
 #include "bench.h"
@@ -21,6 +21,11 @@ void register_bench(CLI::App& app, Runner& run) {
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--fxh", args->fxh, "accuracy: write technique cost/error annotations to FILE");
+  cmd->add_option("--effect", args->only_effects,
+                  "accuracy: measure only this effect's techniques (a file name in --effects; repeatable)");
+  cmd->add_option("--merge", args->merge,
+                  "accuracy: an earlier --json output (docs/accuracy.json): its approximation rows and the "
+                  "other effects' technique rows are kept, the measured effects' rows replaced");
   cmd->add_option("--processes", args->processes,
                   "Run the benchmark in N fresh processes and report the median ratio (one process "
                   "measures one memory layout)")

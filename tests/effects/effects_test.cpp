@@ -229,11 +229,14 @@ TEST(Effects, EachGenerationPicksWhatTheSeedDescribes) {
 }
 
 TEST(Effects, SchemesDistancesAndVariantsSteerTheChoice) {
-  // The application asks for specular: the seed's specular ladder per generation.
+  // The application asks for specular: the seed's specular ladder per generation. On dx8
+  // the measured errors rank it (docs/accuracy.md): both ps.1.1 listings draw the highlight
+  // without the N.L term and miss the model by 255 levels somewhere, the emboss technique
+  // by 147.5, so specular_emboss leads there too.
   fx::SelectionCriteria specular{.scheme = "specular"};
   EXPECT_EQ(pick("per_pixel_lighting.fx", "dx6", specular), "specular_emboss");
   EXPECT_EQ(pick("per_pixel_lighting.fx", "dx7", specular), "specular_emboss");
-  EXPECT_EQ(pick("per_pixel_lighting.fx", "dx8", specular), "specular_table_ps11");
+  EXPECT_EQ(pick("per_pixel_lighting.fx", "dx8", specular), "specular_emboss");
   EXPECT_EQ(pick("per_pixel_lighting.fx", "dx9", specular), "specular_pow_ps20");
   // Performance scheme: the seed's unnormalized Gram-Schmidt.
   EXPECT_EQ(pick("strand_aniso.fx", "dx9", {.scheme = "performance"}), "strand_bump_unnormalized");
