@@ -224,6 +224,10 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
         const fx::SamplerDesc* sampler_desc = nullptr;
         fx::SamplerDesc stage_sampler;
         resolve_image(model, pass_info, image.name, &sampler_desc, &slot.texture_param, stage_sampler);
+        if (image.count > 1)
+          sink.warning("vk-image-array-first", pass_info.range,
+                       "pass '" + pass_info.name + "': '" + image.name + "' is an array of " +
+                           std::to_string(image.count) + "; every element samples its first element's texture and sampler state");
         if (image.kind != DescriptorKind::sampled_image) {
           SamplerKey vk_desc = sampler_desc ? to_sampler_key(*sampler_desc, pass_sink) : SamplerKey{};
           slot.sampler = b->samplers_.get(vk_desc, sink);

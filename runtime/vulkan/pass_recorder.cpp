@@ -203,7 +203,9 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
   std::vector<VkDescriptorImageInfo>& image_infos = image_infos_;
   std::vector<VkWriteDescriptorSet>& writes = writes_;
   buffers.resize(blocks.size());
-  image_infos.resize(images.size());
+  size_t elements = 0;
+  for (const ProgramImage& image : images) elements += image.count;
+  image_infos.resize(elements);
   writes.clear();
   writes.reserve(blocks.size() + images.size());
   auto write_all = [&](VkDescriptorSet set) {
@@ -217,15 +219,18 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
       w.pBufferInfo = &buffers[i];
       writes.push_back(w);
     }
-    for (size_t i = 0; i < images.size(); ++i) {
+    for (size_t i = 0, element = 0; i < images.size(); element += images[i].count, ++i) {
       const PassResources::Bound& b = r.images_[i];
-      image_infos[i] = {b.sampler, b.view, b.layout};
+      // Every element of an array is written (an unwritten one is undefined to sample); all
+      // take the image bound to the array (EffectBinding warns, vk-image-array-first).
+      std::fill_n(image_infos.begin() + static_cast<std::ptrdiff_t>(element), images[i].count,
+                  VkDescriptorImageInfo{b.sampler, b.view, b.layout});
       auto w = structure<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
       w.dstSet = set;
       w.dstBinding = images[i].binding;
-      w.descriptorCount = 1;  // arrays of textures take their first element only
+      w.descriptorCount = images[i].count;
       w.descriptorType = to_vk_descriptor(images[i].kind, program.descriptor_mode());
-      w.pImageInfo = &image_infos[i];
+      w.pImageInfo = &image_infos[element];
       writes.push_back(w);
     }
   };

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 
 #include "effect_test_util.h"
 
@@ -114,6 +116,33 @@ TEST_F(EffectRenderTest, ParameterChangesReachTheImage) {
   auto changed = r->render();
   ASSERT_TRUE(changed);
   EXPECT_NE(first->pixels, changed->pixels);
+}
+
+// A D3D9 sampler array: every element is written to the descriptor set (an unwritten one
+// is undefined to sample; lavapipe crashed reading it), all bound to the first element's
+// texture, here the white stand-in.
+TEST_F(EffectRenderTest, SamplerArrayElementsAreAllBound) {
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "fxkit_sampler_array.fx";
+  std::ofstream(file) << R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+texture a;
+texture b;
+sampler s[2] = { sampler_state { Texture = <a>; }, sampler_state { Texture = <b>; } };
+float4 VS(float4 p : POSITION, float2 uv : TEXCOORD0, out float2 t : TEXCOORD0) : POSITION {
+  t = uv;
+  return mul(p, WorldViewProjection);
+}
+float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(s[1], uv) * 0.5 + tex2D(s[0], uv) * 0.25; }
+technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)";
+  auto r = bind_effect(ctx(), file.string(), "T", "sphere", 32);
+  ASSERT_TRUE(r);
+  const size_t errors = ctx().validation_error_count();
+  auto image = r->render();
+  ASSERT_TRUE(image);
+  EXPECT_EQ(ctx().validation_error_count(), errors) << describe_messages(ctx());
+  const uint8_t* centre = &image->pixels[(16 * image->width + 16) * 4];
+  EXPECT_NEAR(centre[0], 191, 2);  // white * 0.5 + white * 0.25
+  std::filesystem::remove(file);
 }
 
 }  // namespace
