@@ -58,8 +58,14 @@ void register_bench(CLI::App& app, Runner& run) {
       run = [args] { return bench_compile(*args); };
       return;
     }
-#endif
     run = [args] { return bench_frontend(*args); };
+#else
+    run = [] {
+      std::fprintf(stderr, "fxkit bench: this fxkit was built without the runtime (FXKIT_VULKAN=OFF); "
+                           "every benchmark's baseline is glslang or Vulkan\n");
+      return kUsageError;
+    };
+#endif
   });
 }
 

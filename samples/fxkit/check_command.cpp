@@ -204,9 +204,9 @@ void register_check(CLI::App& app, Runner& run) {
       ->allow_extra_args(false);
   cmd->add_option("--shard", args->shard, "Check shard K of N (1-based): a stable 1/N of the files, for CI machines");
   cmd->add_option("PATH", args->paths, "Effect files and folders (searched recursively)")->required();
-#ifdef FXKIT_HAS_RUNTIME
-  auto* syntax = cmd->add_flag("--syntax-only", args->syntax_only,
+  [[maybe_unused]] auto* syntax = cmd->add_flag("--syntax-only", args->syntax_only,
                                "The front end's checks alone: preprocess, parse, effect-level checks; no shader compiled");
+#ifdef FXKIT_HAS_RUNTIME
   cmd->add_flag("--compile", args->compile, "Also compile every shader to SPIR-V (the default)")->excludes(syntax);
   cmd->add_option("--cache", args->cache_dir,
                   "Keep results and SPIR-V in DIR, by content hash of each effect, its includes and the options");
@@ -215,7 +215,7 @@ void register_check(CLI::App& app, Runner& run) {
   cmd->add_option("--caps", args->caps, "Validate every technique on: " + caps_option_help());
   cmd->add_flag("--no-compile", args->no_compile, "With --caps: validate without compiling shaders");
 #else
-  args->syntax_only = true;  // a parser-only build has no shader compiler
+  args->syntax_only = true;  // a parser-only build has no shader compiler: the flag is what it does anyway
 #endif
   cmd->callback([args, &run] { run = [args] { return run_check(*args); }; });
 }
