@@ -123,6 +123,28 @@ technique T { pass P { PixelShader = compile ps_2_0 PS(1.0); } }
   EXPECT_FALSE(image->constant());
 }
 
+TEST(FxkitRender, AnHlslVertexShaderWithoutAPixelShaderDraws) {
+  // D3D9 texture stages beside an HLSL vertex shader: the generated pixel stage reads the
+  // three-component colour and the coordinates it writes, and nothing it does not.
+  const auto [r, image] = render("texture_stages", R"(
+float4x4 WorldViewProj;
+struct Out { float4 p : SV_Position; float3 c : COLOR0; float2 uv : TEXCOORD0; };
+Out VS(float4 p : POSITION, float3 n : NORMAL, float2 uv : TEXCOORD0) {
+  Out o; o.p = mul(p, WorldViewProj); o.c = n * 0.5 + 0.5; o.uv = uv; return o;
+}
+technique T { pass P {
+  VertexShader = compile vs_2_0 VS();
+  PixelShader = NULL;
+  TextureFactor = 0xff80c0ff;
+  ColorOp[0] = Modulate; ColorArg1[0] = Diffuse; ColorArg2[0] = TFactor;
+} }
+)", "--validation --size 64x64");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("image is constant"), std::string::npos) << r.err;
+  ASSERT_TRUE(image);
+  EXPECT_FALSE(image->constant());
+}
+
 TEST(FxkitRender, AFlatImageIsAWarningNamingTheUnboundTransform) {
   const fxkit_test::CliRun r = render("unbound", R"(
 float4x4 ClipFromObjectXf;

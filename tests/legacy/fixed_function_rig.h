@@ -61,12 +61,15 @@ class FixedFunctionRig {
                                              VK_FORMAT_R32G32B32A32_SFLOAT);
   }
 
-  // Compiles and links the generated shaders of `state` (or the generated vertex shader and
-  // `pixel_shader`, entry PS); false (with a failure) when they do not.
-  bool build(const FixedFunctionState& state, const std::string& pixel_shader = {}) {
+  // Compiles and links the generated shaders of `state` (or `pixel_shader`, entry PS, in
+  // place of the generated pixel shader, or `vertex_shader`, entry VS, in place of the
+  // generated vertex shader); false (with a failure) when they do not.
+  bool build(const FixedFunctionState& state, const std::string& pixel_shader = {}, const std::string& vertex_shader = {}) {
     ShaderCompiler compiler;
     program_ = std::make_unique<TestProgram>();
-    program_->vs = compiler.compile(unit(generate_fixed_function_vertex_shader(state), ShaderStage::vertex));
+    program_->vs = compiler.compile(unit(vertex_shader.empty() ? generate_fixed_function_vertex_shader(state)
+                                                               : FixedFunctionShader{vertex_shader, "VS", "vs_3_0"},
+                                         ShaderStage::vertex));
     program_->ps = compiler.compile(unit(pixel_shader.empty() ? generate_fixed_function_pixel_shader(state)
                                                               : FixedFunctionShader{pixel_shader, "PS", "ps_3_0"},
                                          ShaderStage::fragment));
