@@ -203,7 +203,9 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
   std::vector<VkDescriptorImageInfo>& image_infos = image_infos_;
   std::vector<VkWriteDescriptorSet>& writes = writes_;
   buffers.resize(blocks.size());
-  image_infos.resize(images.size());
+  size_t elements = 0;
+  for (const ProgramImage& image : images) elements += std::max(1u, image.count);
+  image_infos.resize(elements);
   writes.clear();
   writes.reserve(blocks.size() + images.size());
   auto write_all = [&](VkDescriptorSet set) {
@@ -217,16 +219,20 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
       w.pBufferInfo = &buffers[i];
       writes.push_back(w);
     }
-    for (size_t i = 0; i < images.size(); ++i) {
+    for (size_t i = 0, first = 0; i < images.size(); ++i) {
       const PassResources::Bound& b = r.images_[i];
-      image_infos[i] = {b.sampler, b.view, b.layout};
+      // An array of textures binds its first element's texture to every element: no
+      // element is left unwritten for the shader to read.
+      const uint32_t count = std::max(1u, images[i].count);
+      for (uint32_t e = 0; e < count; ++e) image_infos[first + e] = {b.sampler, b.view, b.layout};
       auto w = structure<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
       w.dstSet = set;
       w.dstBinding = images[i].binding;
-      w.descriptorCount = 1;  // arrays of textures take their first element only
+      w.descriptorCount = count;
       w.descriptorType = to_vk_descriptor(images[i].kind, program.descriptor_mode());
-      w.pImageInfo = &image_infos[i];
+      w.pImageInfo = &image_infos[first];
       writes.push_back(w);
+      first += count;
     }
   };
 

@@ -145,6 +145,22 @@ technique T { pass P {
   EXPECT_FALSE(image->constant());
 }
 
+TEST(FxkitRender, ASamplerArrayDrawsWithEveryElementBound) {
+  // Every element of a sampler array gets a descriptor (the first element's texture): the
+  // second element, read by the shader, used to be left unwritten and crashed the driver.
+  const auto [r, image] = render("sampler_array", R"(
+texture A; texture B;
+sampler Samplers[2] = { sampler_state { Texture = <A>; }, sampler_state { Texture = <B>; } };
+float4x4 WorldViewProj;
+float4 VS(float4 p : POSITION, inout float2 uv : TEXCOORD0) : POSITION { return mul(p, WorldViewProj); }
+float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(Samplers[0], uv) * 0.5 + tex2D(Samplers[1], uv) * float4(uv, 0, 0.5); }
+technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)", "--validation --size 64x64");
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_TRUE(image);
+  EXPECT_FALSE(image->constant());
+}
+
 TEST(FxkitRender, AFlatImageIsAWarningNamingTheUnboundTransform) {
   const fxkit_test::CliRun r = render("unbound", R"(
 float4x4 ClipFromObjectXf;
