@@ -3,7 +3,8 @@
 // looked up with the tangent-space light, half and view vectors and multiplied. Expect a
 // sphere with the analytic BRDF's highlight shape (here an anisotropic Ward lobe,
 // stretched along the tangent), modulated by the object texture.
-// The factors come from the "brdf_factor" generator (parabolic maps, clamp addressing).
+// The factors come from the "brdf_factor" generator (parabolic maps, clamp addressing; cube
+// maps for the seed's listing).
 #include "common.fxh"
 #include "generated/costs.fxh"  // COST_<technique>: measured cost/error, scripts/accuracy-report
 
@@ -15,6 +16,11 @@ float4 CameraPosition : CAMERAPOSITION < string UIWidget = "None"; >;
 texture BRDFTexture1 < string Generator = "brdf_factor"; string Factor = "out"; int Width = 32; string Lobe = "ward"; float AlphaX = 0.15; float AlphaY = 0.35; int Samples = 16384; int Iterations = 300; int Seed = 1; string Format = "float32"; >;
 texture BRDFTexture2 < string Generator = "brdf_factor"; string Factor = "in"; int Width = 32; string Lobe = "ward"; float AlphaX = 0.15; float AlphaY = 0.35; int Samples = 16384; int Iterations = 300; int Seed = 1; string Format = "float32"; >;
 texture BRDFTexture3 < string Generator = "brdf_factor"; string Factor = "half"; int Width = 32; string Lobe = "ward"; float AlphaX = 0.15; float AlphaY = 0.35; int Samples = 16384; int Iterations = 300; int Seed = 1; string Format = "float32"; >;
+// The same fits resampled as cube maps (Shape = "cube"), for the seed's listing: its texture
+// stages sample the factors with the raw tangent-space directions.
+textureCUBE BRDFCube1 < string Generator = "brdf_factor"; string Factor = "out"; string Shape = "cube"; int Width = 32; string Lobe = "ward"; float AlphaX = 0.15; float AlphaY = 0.35; int Samples = 16384; int Iterations = 300; int Seed = 1; string Format = "float32"; >;
+textureCUBE BRDFCube2 < string Generator = "brdf_factor"; string Factor = "in"; string Shape = "cube"; int Width = 32; string Lobe = "ward"; float AlphaX = 0.15; float AlphaY = 0.35; int Samples = 16384; int Iterations = 300; int Seed = 1; string Format = "float32"; >;
+textureCUBE BRDFCube3 < string Generator = "brdf_factor"; string Factor = "half"; string Shape = "cube"; int Width = 32; string Lobe = "ward"; float AlphaX = 0.15; float AlphaY = 0.35; int Samples = 16384; int Iterations = 300; int Seed = 1; string Format = "float32"; >;
 // An engine binds the object's own texture here; a faint checker shows the detail layer
 // without hiding the lobe.
 texture ObjectTexture : DIFFUSEMAP < string Generator = "color_map"; string Pattern = "checker"; string Color0 = "0.8 0.8 0.8"; string Color1 = "1 1 1"; int Checks = 8; int Width = 256; string UIName = "Object texture"; >;
@@ -90,11 +96,10 @@ technique brdf_ps20
     }
 }
 
-// The seed's technique. Its factors are cube maps read with 3D texture coordinates, so it
-// needs cube-map factor textures (the generator bakes parabolic maps): it parses and
-// checks now and renders once legacy emulation supplies the cube-map path. The listing's
-// `dp3 oT2.z,-c16,r0` (light z into the half-vector register) is corrected to oT1.z, and
-// c10 (the camera, never set in the listing) is bound to CameraPosition.
+// The seed's technique. Its factors are cube maps read with 3D texture coordinates (the
+// BRDFCube textures). The listing's `dp3 oT2.z,-c16,r0` (light z into the half-vector
+// register) is corrected to oT1.z, and c10 (the camera, never set in the listing) is bound
+// to CameraPosition.
 technique tec0
 < string Requires = "vs_1_1 ps_1_1 cube_maps textures>=4"; string UIName = "BRDF Shader (seed, vs.1.1/ps.1.1)"; COST_tec0 >
 {
@@ -113,9 +118,9 @@ technique tec0
         // for BRDFs, these color constants are built into the texture maps
         VertexShaderConstant[16] = <lhtR>;           // light direction
 
-        Texture[0] = <BRDFTexture1>;
-        Texture[1] = <BRDFTexture2>;
-        Texture[2] = <BRDFTexture3>;
+        Texture[0] = <BRDFCube1>;
+        Texture[1] = <BRDFCube2>;
+        Texture[2] = <BRDFCube3>;
         Texture[3] = <ObjectTexture>;
 
         // Only one colour being used

@@ -116,6 +116,20 @@ glm::dvec2 parabolic_coords(const glm::dvec3& w) {
   return glm::dvec2(0.5 + 0.5 * w.x / d, 0.5 + 0.5 * w.y / d);
 }
 
+Table parabolic_to_cube(const Table& parabolic, int size) {
+  Table cube = Table::make(size, size, 6, parabolic.channels, parabolic.format);
+  cube.cube = true;
+  for (int face = 0; face < 6; ++face)
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        const glm::dvec3 w = glm::normalize(cube_direction(face, (x + 0.5) / size, (y + 0.5) / size));
+        const glm::dvec2 st = parabolic_coords(w);
+        const glm::vec4 v = sample_linear(parabolic, glm::vec3(float(st.x), float(st.y), 0.0f), AddressMode::clamp);
+        for (int c = 0; c < cube.channels; ++c) cube.store(x, y, face, c, v[c]);
+      }
+  return cube;
+}
+
 BrdfFactors factorize_brdf(const AnalyticBrdf& brdf, const BrdfFactorizationOptions& o) {
   BrdfFactors out;
   if (o.size < 2 || o.size > 256 || o.samples < 16 || o.samples > (1 << 22) || o.iterations < 1 ||

@@ -80,6 +80,7 @@ struct BrdfFactorRequest {
   AnalyticBrdf brdf;
   BrdfFactorizationOptions fit;
   int factor = 0;  // 0 in, 1 half, 2 out
+  bool cube = false;  // resampled as a cube map (parabolic_to_cube)
 };
 
 std::string validate(const BrdfFactorRequest& r) {
@@ -96,6 +97,7 @@ BakeResult bake_brdf_factor(ParamReader& in) {
   BrdfFactorRequest r;
   r.factor = in.choice("Factor", {"in", "half", "out"}, 0);
   r.fit.size = in.integer("Width", r.fit.size);
+  r.cube = in.choice("Shape", {"parabolic", "cube"}, 0) == 1;
   r.brdf.lobe = BrdfLobe(in.choice("Lobe", {"phong", "blinn_phong", "ward"}, 0));
   r.brdf.exponent = in.number("Exponent", r.brdf.exponent);
   r.brdf.alpha_x = in.number("AlphaX", r.brdf.alpha_x);
@@ -110,7 +112,18 @@ BakeResult bake_brdf_factor(ParamReader& in) {
     in.fail("brdf_factor tables are float32: the factors' range is not [0, 1]");
   return finish(in, r, [](const BrdfFactorRequest& q) {
     BrdfFactors f = factorize_brdf(q.brdf, q.fit);
-    return q.factor == 0 ? f.in : q.factor == 1 ? f.half : f.out;
+    const Table& factor = q.factor == 0 ? f.in : q.factor == 1 ? f.half : f.out;
+    if (!q.cube) return factor;
+    // DirectX 8 listings multiply the factors' texels whole: a luminance cube (rgb = the
+    // factor, alpha 1), as an L8/L16 factor map reads in D3D.
+    const Table one = parabolic_to_cube(factor, q.fit.size);
+    Table rgb = Table::make(one.width, one.height, one.depth, 3, one.format);
+    rgb.cube = true;
+    for (int z = 0; z < one.depth; ++z)
+      for (int y = 0; y < one.height; ++y)
+        for (int x = 0; x < one.width; ++x)
+          for (int c = 0; c < 3; ++c) rgb.store(x, y, z, c, one.fetch(x, y, z, 0));
+    return rgb;
   });
 }
 

@@ -41,6 +41,18 @@ float Table::fetch(int x, int y, int z, int c) const {
   return format == TableFormat::unorm8 ? float(unorm8[i]) / 255.0f : float32[i];
 }
 
+glm::dvec3 cube_direction(int face, double s, double t) {
+  const double a = 2.0 * s - 1.0, b = 2.0 * t - 1.0;
+  switch (face) {
+    case 0: return {1.0, -b, -a};
+    case 1: return {-1.0, -b, a};
+    case 2: return {a, 1.0, b};
+    case 3: return {a, -1.0, -b};
+    case 4: return {a, -b, 1.0};
+    default: return {-a, -b, -1.0};
+  }
+}
+
 namespace {
 
 // Texel index and weight along one axis of n texels for normalized coordinate s.

@@ -160,6 +160,15 @@ class EffectUnitBuilder {
   // fixed-function vertex stage; nullopt when it reads anything but colours, TEXCOORD0-7 and
   // fog (or its entry cannot be found).
   std::optional<FixedFunctionState::PixelShaderInputs> pixel_shader_inputs(const StageUnit& ps) const;
+  // What an HLSL vertex shader writes, from its entry's declaration (return value, out and
+  // inout parameters, their struct members), for a generated fixed-function pixel stage:
+  // colours, TEXCOORD0-7 and fog with their components; nullopt when its entry cannot be
+  // found or an output is an array. For a shader array, what every choice writes.
+  std::optional<FixedFunctionState::VertexShaderOutputs> vertex_shader_outputs(const StageUnit& vs) const;
+  // The HLSL entry function a stage compiles (its wrapper's function for compile-time arguments).
+  const ast::Function* entry_function(const StageUnit& s) const;
+  // The struct named `name` declared in the effect, or null.
+  const ast::Struct* structure(std::string_view name) const;
 
   // Whether a pixel shader takes D3D9's VPOS or VFACE (as a parameter, or a member of an
   // input struct), which its wrapper turns into Vulkan's.

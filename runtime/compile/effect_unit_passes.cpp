@@ -88,14 +88,16 @@ void EffectUnitBuilder::add_fixed_function_stages(const ast::Technique& t, Effec
   const StageUnit* ps = pass.find(ShaderStage::fragment);
   if (vs && ps) return;
   // Generated beside assembly or another generated stage, whose interface is D3D's full
-  // register set, and as the vertex stage of an HLSL pixel shader whose inputs are colours,
+  // register set; as the vertex stage of an HLSL pixel shader whose inputs are colours,
   // texture coordinates and fog (read from its entry's declaration: the generated stage
-  // writes exactly those). Beside an HLSL vertex shader the generated pixel stage would have
-  // to read exactly what it writes, which the generator does not know yet.
+  // writes exactly those); and as the pixel stage of an HLSL vertex shader, reading exactly
+  // the colours, texture coordinates and fog it writes (the rest at D3D's defaults).
   auto beside_hlsl = [](const StageUnit* other) { return other && other->kind != StageSourceKind::assembly; };
   std::optional<FixedFunctionState::PixelShaderInputs> hlsl_pixel_inputs;
   if (!vs && ps && ps->kind == StageSourceKind::hlsl) hlsl_pixel_inputs = pixel_shader_inputs(*ps);
-  if (beside_hlsl(vs) || (beside_hlsl(ps) && !hlsl_pixel_inputs)) {
+  std::optional<FixedFunctionState::VertexShaderOutputs> hlsl_vertex_outputs;
+  if (vs && !ps && vs->kind == StageSourceKind::hlsl) hlsl_vertex_outputs = vertex_shader_outputs(*vs);
+  if ((beside_hlsl(vs) && !hlsl_vertex_outputs) || (beside_hlsl(ps) && !hlsl_pixel_inputs)) {
     if (!vs) pass.unsupported.push_back("fixed-function vertex processing: the pass sets no VertexShader");
     if (!ps)
       pass.unsupported.push_back(std::string("fixed-function pixel processing (texture stage states): ") +
@@ -109,6 +111,7 @@ void EffectUnitBuilder::add_fixed_function_stages(const ast::Technique& t, Effec
   DiagnosticSink scratch;  // fixed_function_state reports nothing the model did not
   FixedFunctionState state = fixed_function_state(m, m.techniques[pass.technique_index].passes[pass.pass_index], scratch);
   if (hlsl_pixel_inputs) state.pixel_shader_inputs = *hlsl_pixel_inputs;
+  if (hlsl_vertex_outputs) state.vertex_shader_outputs = *hlsl_vertex_outputs;
   auto add = [&](ShaderStage stage, FixedFunctionShader shader, const char* what) {
     StageUnit s;
     s.stage = stage;
@@ -128,28 +131,72 @@ void EffectUnitBuilder::add_fixed_function_stages(const ast::Technique& t, Effec
                    [](const StageUnit& a, const StageUnit& b) { return a.stage < b.stage; });
 }
 
-std::optional<FixedFunctionState::PixelShaderInputs> EffectUnitBuilder::pixel_shader_inputs(const StageUnit& ps) const {
-  std::string name = ps.entry_point;
+namespace {
+
+// A varying the fixed-function stages exchange, by its D3D semantic.
+struct FixedVarying {
+  enum Kind { diffuse, specular, fog, texcoord, system, other } kind = other;
+  int index = 0;  // TEXCOORDn
+};
+
+FixedVarying fixed_varying(std::string semantic) {
+  for (char& c : semantic) c = char(std::toupper(static_cast<unsigned char>(c)));
+  if (semantic == "VPOS" || semantic == "VFACE" || semantic.starts_with("SV_")) return {FixedVarying::system};
+  if (semantic == "COLOR" || semantic == "COLOR0") return {FixedVarying::diffuse};
+  if (semantic == "COLOR1") return {FixedVarying::specular};
+  if (semantic == "FOG" || semantic == "FOG0") return {FixedVarying::fog};
+  if (!semantic.starts_with("TEXCOORD")) return {};
+  const std::string index = semantic.substr(8);
+  if (index.size() > 1 || (index.size() == 1 && (index[0] < '0' || index[0] > '7'))) return {};
+  return {FixedVarying::texcoord, index.empty() ? 0 : index[0] - '0'};
+}
+
+// Components of a float vector type (float, half3, min16float2, double4), 0 for any other.
+int float_components(const ast::TypeRef& t) {
+  std::string_view name = t.name;
+  for (std::string_view base : {"min16float", "min10float", "float", "half", "double"})
+    if (name.starts_with(base)) {
+      name.remove_prefix(base.size());
+      if (name.empty()) return 1;
+      return name.size() == 1 && name[0] >= '1' && name[0] <= '4' ? name[0] - '0' : 0;
+    }
+  return 0;
+}
+
+}  // namespace
+
+const ast::Function* EffectUnitBuilder::entry_function(const StageUnit& s) const {
+  std::string name = s.entry_point;
   if (name.ends_with("__fx_args")) name.resize(name.size() - std::string_view("__fx_args").size());
-  const ast::Function* entry = nullptr;
   for (const ast::Function* f : functions_)
-    if (f->name == name && !f->body.empty()) entry = entry ? entry : f;
+    if (f->name == name && !f->body.empty()) return f;
+  return nullptr;
+}
+
+const ast::Struct* EffectUnitBuilder::structure(std::string_view name) const {
+  for (const ast::Decl& d : effect_.decls)
+    if (d.kind == ast::DeclKind::structure && d.structure->name == name) return d.structure;
+  return nullptr;
+}
+
+std::optional<FixedFunctionState::PixelShaderInputs> EffectUnitBuilder::pixel_shader_inputs(const StageUnit& ps) const {
+  const ast::Function* entry = entry_function(ps);
   if (!entry) return std::nullopt;
   FixedFunctionState::PixelShaderInputs in;
   in.known = true;
   in.diffuse = in.specular = in.fog = false;
   // One varying by its semantic; false for one the generated vertex stage cannot write.
-  auto take = [&in](std::string semantic) {
-    for (char& c : semantic) c = char(std::toupper(static_cast<unsigned char>(c)));
-    if (semantic == "VPOS" || semantic == "VFACE" || semantic.starts_with("SV_")) return true;
-    if (semantic == "COLOR" || semantic == "COLOR0") return in.diffuse = true;
-    if (semantic == "COLOR1") return in.specular = true;
-    if (semantic == "FOG") return in.fog = true;
-    if (!semantic.starts_with("TEXCOORD")) return false;
-    const std::string index = semantic.substr(8);
-    if (index.size() > 1 || (index.size() == 1 && (index[0] < '0' || index[0] > '7'))) return false;
-    in.texcoords |= uint8_t(1u << (index.empty() ? 0 : index[0] - '0'));
-    return true;
+  auto take = [&in](const std::string& semantic) {
+    const FixedVarying v = fixed_varying(semantic);
+    switch (v.kind) {
+      case FixedVarying::system: return true;
+      case FixedVarying::diffuse: return in.diffuse = true;
+      case FixedVarying::specular: return in.specular = true;
+      case FixedVarying::fog: return in.fog = true;
+      case FixedVarying::texcoord: in.texcoords |= uint8_t(1u << v.index); return true;
+      case FixedVarying::other: return false;
+    }
+    return false;
   };
   for (const ast::Variable& p : entry->params) {
     if (p.storage & (ast::kUniform | ast::kOut)) continue;
@@ -157,14 +204,72 @@ std::optional<FixedFunctionState::PixelShaderInputs> EffectUnitBuilder::pixel_sh
       if (!take(p.semantic)) return std::nullopt;
       continue;
     }
-    const ast::Struct* fields = nullptr;  // an input struct: each member has a semantic
-    for (const ast::Decl& d : effect_.decls)
-      if (d.kind == ast::DeclKind::structure && d.structure->name == p.type.name) fields = d.structure;
+    const ast::Struct* fields = structure(p.type.name);  // an input struct: each member has a semantic
     if (!fields) return std::nullopt;  // a compile-time argument, or nothing D3D links
     for (const ast::Variable& m : fields->members)
       if (m.semantic.empty() || !take(m.semantic)) return std::nullopt;
   }
   return in;
+}
+
+std::optional<FixedFunctionState::VertexShaderOutputs> EffectUnitBuilder::vertex_shader_outputs(const StageUnit& vs) const {
+  if (!vs.choices.empty()) {  // a shader array: what every choice writes, at the fewest components
+    std::optional<FixedFunctionState::VertexShaderOutputs> all;
+    for (const StageUnit& c : vs.choices) {
+      if (c.kind != StageSourceKind::hlsl) return std::nullopt;
+      StageUnit single = c;
+      single.choices.clear();
+      std::optional<FixedFunctionState::VertexShaderOutputs> o = vertex_shader_outputs(single);
+      if (!o) return std::nullopt;
+      if (!all) {
+        all = o;
+        continue;
+      }
+      all->diffuse = std::min(all->diffuse, o->diffuse);
+      all->specular = std::min(all->specular, o->specular);
+      all->fog = std::min(all->fog, o->fog);
+      for (int t = 0; t < 8; ++t) all->texcoords[t] = std::min(all->texcoords[t], o->texcoords[t]);
+    }
+    return all;
+  }
+  const ast::Function* entry = entry_function(vs);
+  if (!entry) return std::nullopt;
+  FixedFunctionState::VertexShaderOutputs out;
+  out.known = true;
+  // One output: a value the pixel stage reads, or one it leaves alone (position, point size,
+  // clip distances, semantics the texture stages have no use for).
+  auto take = [&out](const std::string& semantic, const ast::TypeRef& type) {
+    const FixedVarying v = fixed_varying(semantic);
+    const uint8_t n = static_cast<uint8_t>(float_components(type));
+    switch (v.kind) {
+      case FixedVarying::diffuse: out.diffuse = n; break;
+      case FixedVarying::specular: out.specular = n; break;
+      case FixedVarying::fog: out.fog = n; break;
+      case FixedVarying::texcoord: out.texcoords[v.index] = n; break;
+      default: break;
+    }
+  };
+  // A value with a semantic, or a struct whose members have them.
+  auto value = [&](const ast::TypeRef& type, const ast::Text& semantic, bool array) {
+    if (array) return false;
+    if (!semantic.empty()) {
+      take(semantic, type);
+      return true;
+    }
+    const ast::Struct* fields = type.definition ? type.definition : structure(type.name);
+    if (!fields) return type.name == "void";
+    for (const ast::Variable& m : fields->members) {
+      if (!m.array_dims.empty()) return false;
+      if (!m.semantic.empty()) take(m.semantic, m.type);
+    }
+    return true;
+  };
+  if (!value(entry->return_type, entry->semantic, false)) return std::nullopt;
+  for (const ast::Variable& p : entry->params)
+    if ((p.storage & (ast::kOut | ast::kInOut)) && !(p.storage & ast::kUniform) &&
+        !value(p.type, p.semantic, !p.array_dims.empty()))
+      return std::nullopt;
+  return out;
 }
 
 const ast::Variable* EffectUnitBuilder::shader_variable(std::string_view name) const {

@@ -163,7 +163,10 @@ class Translator {
     AsmSource c = s;
     const bool plain = s.swizzle == std::array<uint8_t, 4>{0, 1, 2, 3};
     c.swizzle = {plain ? uint8_t(3) : s.swizzle[0], 0, 0, 0};
-    return "(" + read(c) + ").x";
+    std::string v = "(";  // appended: GCC 12's -Wrestrict misreads "(" + std::string here
+    v += read(c);
+    v += ").x";
+    return v;
   }
 
   // Texture coordinates of stage n (the interpolated TEXCOORDn), float4.
@@ -304,8 +307,11 @@ class Translator {
       compute += "    fx_m." + std::string(1, kComponents[pad_row_]) + " = dot(" + texcoord(n) + ".xyz, (" + src(0) +
                  ").xyz);\n";
       pad_row_ = 0;
-      if (op == "texm3x2depth") return error(ins.range, "'texm3x2depth' (depth output) is not translated yet");
-      if (op == "texm3x2tex") value = sample(n, "float4(fx_m.xy, 0.0, 1.0)");
+      if (op == "texm3x2depth") {
+        // z / w from the two rows (1 when w is 0), the pixel's depth; t(m+1) holds it too.
+        compute += "    fx_depth = " + depth("fx_m.x", "fx_m.y") + ";\n";
+        value = "fx_depth.xxxx";
+      } else if (op == "texm3x2tex") value = sample(n, "float4(fx_m.xy, 0.0, 1.0)");
       else if (op == "texm3x3") value = "float4(fx_m.xyz, 1.0)";
       else if (op == "texm3x3tex") value = sample(n, "float4(fx_m.xyz, 1.0)");
       else {
@@ -320,7 +326,10 @@ class Translator {
     } else if (op == "texdp3") {
       value = "dot(" + texcoord(n) + ".xyz, (" + src(0) + ").xyz).xxxx";
     } else if (op == "texdepth") {
-      return error(ins.range, "'texdepth' (depth output) is not translated yet");
+      // r5.r / r5.g (1 when r5.g is 0) is the pixel's depth; r5 is left as it is.
+      if (ins.dest.file != RegisterFile::temp || n != 5) return error(ins.dest.range, "'texdepth' writes r5 only");
+      compute += "    fx_depth = " + depth("r5.x", "r5.y") + ";\n";
+      return true;
     } else {
       return error(ins.range, "'" + op + "' is not translated");
     }
@@ -330,6 +339,12 @@ class Translator {
     compute += "    float4 " + name + " = " + quantize(value) + ";\n";
     store(ins.dest, name, 0xF, write);
     return true;
+  }
+
+  // The depth D3D computes as z / w (1 when w is 0), clamped to the depth range [0, 1].
+  std::string depth(const std::string& z, const std::string& w) {
+    depth_ = true;
+    return "saturate(" + w + " == 0.0 ? 1.0 : " + z + " / " + w + ")";
   }
 
   // The constant registers as locals (and as an array for c[a0.x + n]).
@@ -420,7 +435,10 @@ class Translator {
       for (uint32_t t : coords) s += "  float4 fx_tc" + std::to_string(t) + " : TEXCOORD" + std::to_string(t) + ";\n";
       s += "};\n";
     }
-    s += std::string("float4 fx_main(") + (inputs ? "fx_ps_in fx_in" : "") + ") : COLOR0 {\n";
+    // texdepth and texm3x2depth replace the pixel's depth: SV_Depth beside the colour.
+    if (depth_) s += "struct fx_ps_out {\n  float4 color : COLOR0;\n  float depth : SV_Depth;\n};\n";
+    s += std::string(depth_ ? "fx_ps_out" : "float4") + " fx_main(" + (inputs ? "fx_ps_in fx_in" : "") + ")" +
+         (depth_ ? "" : " : COLOR0") + " {\n";
     for (uint32_t c : colors_)
       s += "  float4 v" + std::to_string(c) + " = " + quantize("fx_in.v" + std::to_string(c)) + ";\n";
     for (uint32_t t : coords) s += "  float4 fx_tc" + std::to_string(t) + " = fx_in.fx_tc" + std::to_string(t) + ";\n";
@@ -428,8 +446,10 @@ class Translator {
     if (p_.version.minor < 4)
       for (uint32_t t = 0; t < textures_; ++t) s += "  float4 t" + std::to_string(t) + " = float4(0.0, 0.0, 0.0, 0.0);\n";
     s += "  float3 fx_m = float3(0.0, 0.0, 0.0);\n";
+    if (depth_) s += "  float fx_depth = 0.0;\n";
     s += body;
-    s += "  return r0;\n}\n";
+    if (depth_) s += "  fx_ps_out fx_out;\n  fx_out.color = r0;\n  fx_out.depth = fx_depth;\n  return fx_out;\n}\n";
+    else s += "  return r0;\n}\n";
     return s;
   }
 
@@ -439,7 +459,7 @@ class Translator {
   const AssemblyOptions& o_;
   DiagnosticSink& sink_;
   const bool pixel_;
-  bool failed_ = false, relative_ = false, fog_ = false, point_size_ = false;
+  bool failed_ = false, relative_ = false, fog_ = false, point_size_ = false, depth_ = false;
   uint32_t temps_ = 0, textures_ = 0;
   std::set<uint32_t> colors_;  // pixel shaders: the colour inputs v# read
   uint32_t pad_row_ = 0;  // texm3x2pad/texm3x3pad rows seen so far

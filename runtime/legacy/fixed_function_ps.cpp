@@ -30,11 +30,9 @@ bool table_fog(const FixedFunctionState& s) { return s.fog && s.fog_table_mode !
 
 class PixelShaderWriter {
  public:
-  explicit PixelShaderWriter(const FixedFunctionState& s) : s_(s), stages_(active_stages(s)) {}
+  explicit PixelShaderWriter(const FixedFunctionState& s) : s_(s), stages_(active_stages(s)), outputs_(outputs_of(s)) {}
 
   FixedFunctionShader write() {
-    body_ += "  float4 fx_diffuse = i.fx_diffuse;\n";
-    body_ += "  float4 fx_specular = i.fx_specular;\n";
     body_ += "  float4 fx_current = fx_diffuse;\n";
     body_ += "  float4 fx_temp = float4(0.0, 0.0, 0.0, 0.0);\n";
     body_ += "  float4 fx_tfactor = " + decl_.vector(s_.texture_factor) + ";\n";
@@ -51,21 +49,62 @@ class PixelShaderWriter {
     if (s_.alpha_test) alpha_test();
     body_ += "  return fx_current;\n";
 
-    std::string inputs = "  float4 fx_diffuse : COLOR0;\n  float4 fx_specular : COLOR1;\n";
+    input("fx_diffuse", "COLOR0", outputs_.diffuse, "1.0, 1.0, 1.0, 1.0");
+    input("fx_specular", "COLOR1", outputs_.specular, "0.0, 0.0, 0.0, 0.0");
+    // An HLSL vertex shader's outputs are all read, used or not (Vulkan warns about an
+    // output no stage reads).
+    const bool exact = s_.vertex_shader_outputs.known;
     for (int t = 0; t < 8; ++t)
-      if (texcoords_ & (1u << t)) inputs += "  float4 fx_tc" + std::to_string(t) + " : TEXCOORD" + std::to_string(t) + ";\n";
-    if (s_.fog && !table_fog(s_)) inputs += "  float fx_fog : FOG;\n";
-    if (table_fog(s_)) inputs += "  float4 fx_position : SV_Position;\n";
+      if ((texcoords_ & (1u << t)) || (exact && outputs_.texcoords[t]))
+        input("fx_tc" + std::to_string(t), "TEXCOORD" + std::to_string(t), outputs_.texcoords[t], "0.0, 0.0, 0.0, 1.0");
+    const bool vertex_fog = s_.fog && !table_fog(s_);
+    if (outputs_.fog && (vertex_fog || exact)) inputs_ += "  " + vector_type(outputs_.fog) + " fx_fog : FOG;\n";
+    if (vertex_fog)
+      prologue_ += std::string("  float fx_fog_in = ") + (outputs_.fog == 0 ? "1.0" : outputs_.fog == 1 ? "i.fx_fog" : "i.fx_fog.x") + ";\n";
+    if (table_fog(s_)) inputs_ += "  float4 fx_position : SV_Position;\n";
+    // A pass with no input at all still needs a member: SV_Position is always there.
+    if (inputs_.empty()) inputs_ = "  float4 fx_position : SV_Position;\n";
 
     FixedFunctionShader out;
     out.entry = "fx_ff_ps";
     out.profile = "ps_3_0";
-    out.source = "// fxkit fixed-function pixel shader (generated)\n" + decl_.text() + "struct fx_ff_ps_in {\n" + inputs +
-                 "};\nfloat4 fx_ff_ps(fx_ff_ps_in i) : COLOR0 {\n" + body_ + "}\n";
+    out.source = "// fxkit fixed-function pixel shader (generated)\n" + decl_.text() + "struct fx_ff_ps_in {\n" + inputs_ +
+                 "};\nfloat4 fx_ff_ps(fx_ff_ps_in i) : COLOR0 {\n" + prologue_ + body_ + "}\n";
     return out;
   }
 
  private:
+  static std::string vector_type(int components) { return components == 1 ? "float" : "float" + std::to_string(components); }
+
+  // The float4 local `name` from the varying `semantic` the vertex stage writes with
+  // `components` components: the rest, or all of it when it writes none, from `fallback`
+  // (D3D's defaults for a register a vertex shader leaves unwritten).
+  void input(const std::string& name, const std::string& semantic, int components, const std::string& fallback) {
+    if (components == 0) {
+      prologue_ += "  float4 " + name + " = float4(" + fallback + ");\n";
+      return;
+    }
+    inputs_ += "  " + vector_type(components) + " " + name + " : " + semantic + ";\n";
+    std::string value = "i." + name;
+    if (components < 4) {
+      size_t comma = 0;  // skip the fallback's first `components` values
+      for (int c = 0; c < components; ++c) comma = fallback.find(',', comma) + 1;
+      value = "float4(" + value + "," + fallback.substr(comma) + ")";
+    }
+    prologue_ += "  float4 " + name + " = " + value + ";\n";
+  }
+
+  // What the vertex stage writes: the exact outputs of an HLSL vertex shader, or D3D's full
+  // register set (four components each) from assembly or the generated vertex stage.
+  static FixedFunctionState::VertexShaderOutputs outputs_of(const FixedFunctionState& s) {
+    if (s.vertex_shader_outputs.known) return s.vertex_shader_outputs;
+    FixedFunctionState::VertexShaderOutputs all;
+    all.diffuse = all.specular = 4;
+    all.fog = 1;
+    all.texcoords.fill(4);
+    return all;
+  }
+
   // An argument register with its modifiers, as float4.
   std::string arg(uint32_t a, int i) {
     std::string v;
@@ -131,7 +170,7 @@ class PixelShaderWriter {
     const TextureStageState& st = s_.stages[i];
     const int r = texcoord_register(s_, i);
     texcoords_ |= 1u << r;
-    const std::string tc = "i.fx_tc" + std::to_string(r);
+    const std::string tc = "fx_tc" + std::to_string(r);
     const bool flat = st.texture == StageTexture::tex2d;
     std::string c = flat ? tc + ".xy" : tc + ".xyz";
     if (st.texture_transform_flags & texture_transform::projected) {
@@ -205,7 +244,7 @@ class PixelShaderWriter {
         default: f = "exp(-(" + density + " * fx_fog_depth) * (" + density + " * fx_fog_depth))"; break;
       }
     } else {
-      f = "i.fx_fog";
+      f = "fx_fog_in";
     }
     body_ += "  float fx_fog = saturate(" + f + ");\n";
     body_ += "  fx_current.rgb = lerp(" + decl_.vector(s_.fog_color) + ".rgb, fx_current.rgb, fx_fog);\n";
@@ -225,8 +264,9 @@ class PixelShaderWriter {
 
   const FixedFunctionState& s_;
   const int stages_;
+  const FixedFunctionState::VertexShaderOutputs outputs_;
   Declarations decl_;
-  std::string body_;
+  std::string inputs_, prologue_, body_;
   uint32_t texcoords_ = 0;
 };
 

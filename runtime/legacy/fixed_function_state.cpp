@@ -89,6 +89,13 @@ std::string fixed_function_description(const FixedFunctionState& s) {
   FIELD(pixel_shader_inputs.specular);
   FIELD(pixel_shader_inputs.fog);
   field(out, "pixel_shader_inputs.texcoords", uint32_t{s.pixel_shader_inputs.texcoords}, uint32_t{d.pixel_shader_inputs.texcoords});
+  FIELD(vertex_shader_outputs.known);
+  field(out, "vertex_shader_outputs.diffuse", uint32_t{s.vertex_shader_outputs.diffuse}, uint32_t{d.vertex_shader_outputs.diffuse});
+  field(out, "vertex_shader_outputs.specular", uint32_t{s.vertex_shader_outputs.specular}, uint32_t{d.vertex_shader_outputs.specular});
+  field(out, "vertex_shader_outputs.fog", uint32_t{s.vertex_shader_outputs.fog}, uint32_t{d.vertex_shader_outputs.fog});
+  for (int t = 0; t < 8; ++t)
+    field(out, "vertex_shader_outputs.texcoord" + std::to_string(t), uint32_t{s.vertex_shader_outputs.texcoords[t]},
+          uint32_t{d.vertex_shader_outputs.texcoords[t]});
   FIELD(pretransformed);
   FIELD(vertex_diffuse);
   FIELD(vertex_specular);

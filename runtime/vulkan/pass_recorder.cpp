@@ -204,7 +204,7 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
   std::vector<VkWriteDescriptorSet>& writes = writes_;
   buffers.resize(blocks.size());
   size_t elements = 0;
-  for (const ProgramImage& image : images) elements += image.count;
+  for (const ProgramImage& image : images) elements += std::max(1u, image.count);
   image_infos.resize(elements);
   writes.clear();
   writes.reserve(blocks.size() + images.size());
@@ -219,19 +219,21 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
       w.pBufferInfo = &buffers[i];
       writes.push_back(w);
     }
-    for (size_t i = 0, element = 0; i < images.size(); element += images[i].count, ++i) {
+    for (size_t i = 0, first = 0; i < images.size(); ++i) {
       const PassResources::Bound& b = r.images_[i];
       // Every element of an array is written (an unwritten one is undefined to sample); all
       // take the image bound to the array (EffectBinding warns, vk-image-array-first).
-      std::fill_n(image_infos.begin() + static_cast<std::ptrdiff_t>(element), images[i].count,
+      const uint32_t count = std::max(1u, images[i].count);
+      std::fill_n(image_infos.begin() + static_cast<std::ptrdiff_t>(first), count,
                   VkDescriptorImageInfo{b.sampler, b.view, b.layout});
       auto w = structure<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
       w.dstSet = set;
       w.dstBinding = images[i].binding;
-      w.descriptorCount = images[i].count;
+      w.descriptorCount = count;
       w.descriptorType = to_vk_descriptor(images[i].kind, program.descriptor_mode());
-      w.pImageInfo = &image_infos[element];
+      w.pImageInfo = &image_infos[first];
       writes.push_back(w);
+      first += count;
     }
   };
 

@@ -79,7 +79,7 @@ std::optional<RenderTarget> RenderTarget::create(const Context& ctx, const Rende
     depth.format = format;
     depth.width = desc.width;
     depth.height = desc.height;
-    depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | desc.extra_depth_usage;
     auto depth_image = GpuImage::create(ctx, depth, sink);
     if (!depth_image) return std::nullopt;
     rt.depth_ = std::move(*depth_image);

@@ -130,11 +130,15 @@ std::optional<Texture> Texture::from_table(const Context& ctx, const fx::shading
     sink.error("vk-texture-invalid", {}, "lookup table has no texels");
     return std::nullopt;
   }
+  if (table.cube && (table.depth != 6 || table.width != table.height)) {
+    sink.error("vk-texture-invalid", {}, "a cube lookup table has six square faces");
+    return std::nullopt;
+  }
   ImageDesc desc;
-  desc.kind = table.depth > 1 ? ImageKind::image3d : ImageKind::image2d;
+  desc.kind = table.cube ? ImageKind::cube : table.depth > 1 ? ImageKind::image3d : ImageKind::image2d;
   desc.width = uint32_t(table.width);
   desc.height = uint32_t(table.height);
-  desc.depth = uint32_t(table.depth);
+  desc.depth = table.cube ? 1u : uint32_t(table.depth);  // a cube's faces are its six layers, in order
   desc.debug_name = "fxkit lookup table";
   const uint32_t gpu_channels = table.channels == 3 ? 4 : uint32_t(table.channels);
   const size_t texels = size_t(table.width) * table.height * table.depth;

@@ -123,6 +123,48 @@ technique T { pass P { PixelShader = compile ps_2_0 PS(1.0); } }
   EXPECT_FALSE(image->constant());
 }
 
+TEST(FxkitRender, AnHlslVertexShaderWithoutAPixelShaderDraws) {
+  // D3D9 texture stages beside an HLSL vertex shader: the generated pixel stage reads the
+  // three-component colour and the coordinates it writes, and nothing it does not.
+  const auto [r, image] = render("texture_stages", R"(
+float4x4 WorldViewProj;
+struct Out { float4 p : SV_Position; float3 c : COLOR0; float2 uv : TEXCOORD0; };
+Out VS(float4 p : POSITION, float3 n : NORMAL, float2 uv : TEXCOORD0) {
+  Out o; o.p = mul(p, WorldViewProj); o.c = n * 0.5 + 0.5; o.uv = uv; return o;
+}
+technique T { pass P {
+  VertexShader = compile vs_2_0 VS();
+  PixelShader = NULL;
+  TextureFactor = 0xff80c0ff;
+  ColorOp[0] = Modulate; ColorArg1[0] = Diffuse; ColorArg2[0] = TFactor;
+} }
+)", "--validation --size 64x64");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("image is constant"), std::string::npos) << r.err;
+  ASSERT_TRUE(image);
+  EXPECT_FALSE(image->constant());
+}
+
+TEST(FxkitRender, ASamplerArrayDrawsWithEveryElementBound) {
+  // Every element of a sampler array gets a descriptor (the first element's texture): the
+  // second element, read by the shader, used to be left unwritten and crashed the driver.
+  const auto [r, image] = render("sampler_array", R"(
+texture A; texture B;
+sampler Samplers[2] = { sampler_state { Texture = <A>; }, sampler_state { Texture = <B>; } };
+float4x4 WorldViewProj;
+float4 VS(float4 p : POSITION, inout float2 uv : TEXCOORD0) : POSITION { return mul(p, WorldViewProj); }
+float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(Samplers[0], uv) * 0.5 + tex2D(Samplers[1], uv) * float4(uv, 0, 0.5); }
+technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)", "--validation --size 64x64");
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_TRUE(image);
+  EXPECT_FALSE(image->constant());
+  // What the user is told: the second element draws with the first element's texture.
+  EXPECT_NE(r.err.find("'Samplers' is an array of 2; every element samples its first element's texture"),
+            std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("[vk-image-array-first]"), std::string::npos) << r.err;
+}
+
 TEST(FxkitRender, AFlatImageIsAWarningNamingTheUnboundTransform) {
   const fxkit_test::CliRun r = render("unbound", R"(
 float4x4 ClipFromObjectXf;

@@ -62,10 +62,12 @@ TEST(EffectUnits, LeavesOutEffectSyntaxAndKeepsShaderCode) {
   EXPECT_EQ(p0.stages[0].entry_point, "RenderSceneVS__fx_args");
   EXPECT_EQ(p0.stages[0].arguments, (std::vector<std::string>{"1", "true", "true"}));
   EXPECT_TRUE(p0.unsupported.empty());
-  // PixelShader = NULL in a D3D9 technique: fixed-function pixel processing.
+  // PixelShader = NULL in a D3D9 technique: fixed-function pixel processing, generated to
+  // read what the HLSL vertex shader writes.
   const EffectPass& p1 = l->units->passes()[1];
-  ASSERT_EQ(p1.unsupported.size(), 1u);
-  EXPECT_NE(p1.unsupported[0].find("PixelShader = NULL"), std::string::npos);
+  EXPECT_TRUE(p1.unsupported.empty());
+  ASSERT_TRUE(p1.find(ShaderStage::fragment));
+  EXPECT_EQ(p1.find(ShaderStage::fragment)->kind, StageSourceKind::fixed_function);
   // D3D10: SetGeometryShader(NULL) is no stage and nothing unsupported.
   const EffectPass& p2 = l->units->passes()[2];
   EXPECT_EQ(p2.stages.size(), 2u);
@@ -142,6 +144,63 @@ TEST(EffectUnits, AShaderArrayIndexedInAPassOffersEveryElement) {
   EXPECT_EQ(vs->selector, "VSIndices[ShaderIndex]");
   EXPECT_EQ(vs->choices[2].function, "VSVertexColor");
   EXPECT_EQ(vs->choices[2].profile, "vs_2_0");
+}
+
+// A D3D9 pass with an HLSL vertex shader and no pixel shader: the generated texture stages
+// read the colours, texture coordinates and fog the vertex shader writes (return value or
+// struct, out and inout parameters, SV_ forms), each with its own components.
+TEST(EffectUnits, AGeneratedPixelStageReadsWhatTheHlslVertexShaderWrites) {
+  fs::path dir = temp_dir("ff_pixel");
+  write(dir / "ff_pixel.fx", R"(struct VsOut { float4 p : SV_Position; float3 c : COLOR0; float2 t : TEXCOORD2; float3 n : NORMAL; };
+VsOut Struct(float4 p : POSITION) { VsOut o; o.p = p; o.c = p.xyz; o.t = p.xy; o.n = p.xyz; return o; }
+void Params(inout float4 p : POSITION0, inout float2 uv : TEXCOORD, out float4 s : color1, out float f : FOG) { s = p; f = p.x; }
+float4 Returned(float4 p : POSITION, uniform float k) : POSITION { return p * k; }
+struct Wide { float4 p : POSITION; float4 t : TEXCOORD2; };
+Wide WideStruct(float4 p : POSITION) { Wide o; o.p = p; o.t = p; return o; }
+VertexShader Either[2] = { compile vs_2_0 Struct(), compile vs_2_0 WideStruct() };
+int Pick = 0;
+void Array(float4 p : POSITION, out float4 o : POSITION, out float2 t[2] : TEXCOORD0) { o = p; t[0] = p.xy; t[1] = p.zw; }
+technique T {
+  pass S { VertexShader = compile vs_2_0 Struct(); ColorOp[0] = SelectArg1; ColorArg1[0] = Diffuse; }
+  pass P { VertexShader = compile vs_2_0 Params(); PixelShader = NULL; FogEnable = TRUE; }
+  pass R { VertexShader = compile vs_2_0 Returned(2.0); }
+  pass E { VertexShader = (Either[Pick]); }
+  pass A { VertexShader = compile vs_2_0 Array(); }
+}
+)");
+  auto l = load((dir / "ff_pixel.fx").string());
+  ASSERT_FALSE(l->diags.has_errors()) << render_text(l->diags.diagnostics(), l->sm);
+  auto generated = [&](const char* pass) -> std::string {
+    const StageUnit* ps = l->units->find("T", pass)->find(ShaderStage::fragment);
+    return ps && ps->kind == StageSourceKind::fixed_function ? ps->translated : "";
+  };
+  const std::string s = generated("S"), p = generated("P"), r = generated("R"), e = generated("E");
+  EXPECT_NE(s.find("float3 fx_diffuse : COLOR0;"), std::string::npos) << s;
+  EXPECT_NE(s.find("float2 fx_tc2 : TEXCOORD2;"), std::string::npos) << s;
+  EXPECT_EQ(s.find("COLOR1"), std::string::npos) << s;
+  EXPECT_NE(p.find("float2 fx_tc0 : TEXCOORD0;"), std::string::npos) << p;
+  EXPECT_NE(p.find("float4 fx_specular : COLOR1;"), std::string::npos) << p;
+  EXPECT_NE(p.find("float fx_fog : FOG;"), std::string::npos) << p;
+  EXPECT_EQ(p.find("COLOR0;"), std::string::npos) << p;
+  EXPECT_NE(p.find("float4 fx_diffuse = float4(1.0, 1.0, 1.0, 1.0);"), std::string::npos) << p;
+  EXPECT_EQ(r.find("TEXCOORD"), std::string::npos) << r;
+  EXPECT_EQ(r.find("COLOR1"), std::string::npos) << r;
+  // A shader array: what every element writes, at the fewest components.
+  EXPECT_NE(e.find("float2 fx_tc2 : TEXCOORD2;"), std::string::npos) << e;
+  EXPECT_EQ(e.find("COLOR0;"), std::string::npos) << e;
+  // An output array: the pass says why it has no pixel stage.
+  const EffectPass* a = l->units->find("T", "A");
+  ASSERT_EQ(a->unsupported.size(), 1u);
+  EXPECT_NE(a->unsupported[0].find("fixed-function pixel processing"), std::string::npos);
+  ShaderCompiler compiler;
+  EffectPrograms programs(*l->units, compiler, l->sm);
+  for (const char* pass : {"S", "P", "R", "E"}) {
+    const PassProgram* program = programs.program("T", pass);
+    ASSERT_TRUE(program);
+    for (const StageProgram& st : program->stages)
+      EXPECT_TRUE(st.shader.ok) << pass << " " << to_string(st.stage) << "\n" << render_text(st.diagnostics, l->sm) << st.unit.source;
+    EXPECT_TRUE(program->ok()) << pass;
+  }
 }
 
 // fx_5_0 dynamic linkage: classes compile as the structs with methods they are; a stage

@@ -186,9 +186,10 @@ TEST(Effects, GeneratedTexturesNameKnownGeneratorsWithValidParameters) {
       EXPECT_TRUE(baked.ok()) << baked.error_id << ": " << baked.message;
     }
   }
-  // Tables: strand x2, pow, noise3d, ln_hn, brdf_factor x3; texture assets (no image files
-  // anywhere): strand 3, GLSL hair 3, per-pixel lighting 4, hemisphere 2, BRDF object 1.
-  EXPECT_EQ(generated, 21);
+  // Tables: strand x2, pow, noise3d, ln_hn, brdf_factor x6 (parabolic and cube); texture
+  // assets (no image files anywhere): strand 3, GLSL hair 3, per-pixel lighting 4,
+  // hemisphere 2, BRDF object 1.
+  EXPECT_EQ(generated, 24);
 }
 
 TEST(Effects, StrandFeatureVariantsCompileOnlyWhatTheSceneEnables) {

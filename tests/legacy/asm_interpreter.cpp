@@ -29,6 +29,8 @@ struct Interpreter {
   Vec4 matrix_rows{};             // texm3x2pad/texm3x3pad dot products
   uint32_t pad = 0;
 
+  static double depth(double z, double w) { return w == 0 ? 1.0 : std::clamp(z / w, 0.0, 1.0); }
+
   bool pixel() const { return p.version.pixel; }
   bool ps14() const { return pixel() && p.version.minor == 4; }
 
@@ -196,8 +198,14 @@ struct Interpreter {
     if (op == "texreg2rgb") { Vec4 a = s(0); return m.sample(n, {a[0], a[1], a[2], 1}); }
     if (op == "texdp3") return splat(dot3(tc, s(0)));
     if (op == "texdp3tex") return m.sample(n, {dot3(tc, s(0)), 0, 0, 1});
+    if (op == "texdepth") {  // r5.r / r5.g; r5 unchanged
+      m.depth = depth(r[5][0], r[5][1]);
+      produced = 0;
+      return r[5];
+    }
     matrix_rows[pad++] = dot3(tc, s(0));
     Vec4 N = matrix_rows;
+    if (op == "texm3x2depth") return pad = 0, m.depth = depth(N[0], N[1]), splat(*m.depth);
     if (op == "texm3x2tex") return pad = 0, m.sample(n, {N[0], N[1], 0, 1});
     if (op == "texm3x3") return pad = 0, Vec4{N[0], N[1], N[2], 1.0};
     if (op == "texm3x3tex") return pad = 0, m.sample(n, {N[0], N[1], N[2], 1});

@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <functional>
+#include <optional>
 
 #include "fx/legacy/assembly.h"
 #include "fx/legacy/assembly_program.h"
@@ -27,6 +28,8 @@ struct AsmMachine {
   std::array<Vec4, 2> color{};
   std::array<Vec4, 8> out_texcoord{};
   bool killed = false;
+  // texdepth / texm3x2depth: the depth the pixel writes (z / w, 1 when w is 0, clamped to [0, 1]).
+  std::optional<double> depth;
 
   void run(const AsmProgram& program);
 };

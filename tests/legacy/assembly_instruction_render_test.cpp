@@ -116,6 +116,12 @@ const Case kCases[] = {
     {"precision_mul", "ps.1.1\nmul r0, v0, v1\nmul r0, r0, v0", nullptr, true},
     {"precision_clamp_11", "ps.1.1\nmul_x4 r0, v0, c1", nullptr, true},
     {"precision_clamp_14", "ps.1.4\nmul_x8 r0, c0, c1\nadd_x8 r0, r0, c3", nullptr, true},
+    // Interpolated texture coordinates read as data take the register model: texcoord
+    // clamps to [0, 1], texcrd to [-8, 8], both at 8-bit fractions; texm3x3's rows too.
+    {"precision_texcoord", "ps.1.1\ntexcoord t2\ntexcoord t3\nmul r0, t2, t3", nullptr, true},
+    {"precision_texcrd_14", "ps.1.4\ntexcrd r1, t2\ntexcrd r2, t3\nmad r0, r1, c1, r2", nullptr, true},
+    {"precision_texcrd_range", nullptr, "    mul oT0, c10, c11.w\n", true},  // (40, -12, 6.4): clamped to +-8
+    {"precision_texm3x3", "ps.1.2\ntex t0\ntexm3x3pad t1, t0\ntexm3x3pad t2, t0\ntexm3x3 t3, t0\nmov r0, t3", nullptr, true},
     // Vertex shader instructions, result in oT0.
     {"vs_arithmetic", nullptr, "    add r0, c10, c11\n    mad r1, r0, c12, -c10\n    max r1, r1, c13\n    min oT0, r1, c11\n"},
     {"vs_dp_and_matrix", nullptr, "    m3x3 r0, c10, c12\n    dp4 r0.w, c10, c11\n    mov oT0, r0\n"},

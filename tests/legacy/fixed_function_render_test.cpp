@@ -270,5 +270,73 @@ TEST_F(FixedFunctionRender, TextureFactorBoundToAParameterIsRead) {
   EXPECT_EQ(generate_fixed_function_pixel_shader(s).source.find("0.75"), std::string::npos);
 }
 
+TEST_F(FixedFunctionRender, BesideAnHlslVertexShaderTheStagesReadWhatItWrites) {
+  // The vertex shader writes a three-component diffuse, TEXCOORD1 as float2 and TEXCOORD3
+  // (read by no stage), and no specular, TEXCOORD0 or fog: those read D3D's defaults
+  // (specular 0, coordinates (0, 0, 0, 1), fog 1) and the diffuse alpha is 1.
+  const char* vertex_shader = R"(
+struct Out { float4 position : POSITION; float3 colour : COLOR0; float2 uv : TEXCOORD1; float4 other : TEXCOORD3; };
+Out VS(float3 p : POSITION, float2 uv : TEXCOORD0) {
+  Out o;
+  o.position = float4(p, 1);
+  o.colour = float3(uv, 1 - uv.x);
+  o.uv = uv;
+  o.other = float4(uv, 0, 1);
+  return o;
+})";
+  FixedFunctionState s;
+  s.vertex_shader = true;
+  s.vertex_shader_outputs.known = true;
+  s.vertex_shader_outputs.diffuse = 3;
+  s.vertex_shader_outputs.texcoords[1] = 2;
+  s.vertex_shader_outputs.texcoords[3] = 4;
+  TextureStageState& st0 = s.stages[0];
+  st0.texture = StageTexture::tex2d;
+  st0.tex_coord_index = 1;
+  st0.color_op = TextureOp::modulate;
+  st0.color_arg = {ta::current, ta::texture, ta::diffuse};
+  st0.alpha_op = TextureOp::select_arg1;
+  st0.alpha_arg = {ta::current, ta::diffuse, ta::current};
+  TextureStageState& st1 = s.stages[1];
+  st1.texture = StageTexture::tex2d;
+  st1.tex_coord_index = 0;
+  st1.color_op = TextureOp::multiply_add;  // specular + current * texture
+  st1.color_arg = {ta::specular, ta::current, ta::texture};
+  st1.alpha_op = TextureOp::subtract;  // current - specular
+  st1.alpha_arg = {ta::current, ta::current, ta::specular};
+  s.fog = true;
+  s.fog_color.value = {0.9f, 0.1f, 0.1f, 1.0f};
+  const std::string ps = generate_fixed_function_pixel_shader(s).source;
+  for (const char* unread : {"COLOR1", "TEXCOORD0", "FOG"}) EXPECT_EQ(ps.find(unread), std::string::npos) << unread << "\n" << ps;
+  EXPECT_NE(ps.find("float3 fx_diffuse : COLOR0"), std::string::npos) << ps;
+  EXPECT_NE(ps.find("float4 fx_tc3 : TEXCOORD3"), std::string::npos) << ps;
+
+  std::mt19937 rng(7);
+  FixedFunctionRig rig(ctx(), kSize);
+  ASSERT_TRUE(rig.build(s, {}, vertex_shader));
+  const fx::Image texture0 = random_image(kSize, rng), texture1 = random_image(4, rng);
+  ASSERT_TRUE(rig.bind_texture(0, texture0));
+  ASSERT_TRUE(rig.bind_texture(1, texture1));
+  const fx::ImageF image = rig.render(screen_quad());
+  ASSERT_EQ(image.width, kSize);
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      const double u = (x + 0.5) / kSize, v = (y + 0.5) / kSize;
+      ff_model::PixelInputs in;
+      in.diffuse = {u, v, 1 - u, 1};
+      in.specular = {0, 0, 0, 0};
+      in.texel[0] = texel(texture0, x, y);
+      in.texel[1] = texel(texture1, 0, 0);  // TEXCOORD0 unwritten: (0, 0)
+      in.fog = 1;
+      const Color want = ff_model::texture_stages(s, in);
+      for (int c = 0; c < 4; ++c) {
+        const double e = std::fabs(image.at(x, y)[c] - want[c]);
+        worst_ = std::max(worst_, e);
+        ASSERT_LE(e, kTolerance) << x << "," << y << " channel " << c << ": GPU " << image.at(x, y)[c] << ", model "
+                                 << want[c] << "\n" << ps;
+      }
+    }
+}
+
 }  // namespace
 }  // namespace fx::vk::testing

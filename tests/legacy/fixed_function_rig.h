@@ -1,6 +1,7 @@
-// Draws a generated fixed-function pass on the Vulkan device into a float target: the
-// generated vertex and pixel shaders compiled by fx::ShaderCompiler, one quad whose vertex
-// colours, normals and positions the test chooses, 8-bit textures sampled at texel centres.
+// Draws a generated fixed-function pass (or any HLSL vertex and pixel shader pair) on the
+// Vulkan device into a float target, with a D32 depth target when asked: the shaders
+// compiled by fx::ShaderCompiler, one quad whose vertex colours, normals and positions the
+// test chooses, 8-bit textures sampled at texel centres.
 #pragma once
 #include <gtest/gtest.h>
 
@@ -56,20 +57,29 @@ inline fx::Image random_image(uint32_t size, std::mt19937& rng) {
 // The generated program of one state, its resources and a float render of it.
 class FixedFunctionRig {
  public:
-  FixedFunctionRig(Context& ctx, uint32_t size) : ctx_(ctx), size_(size), samplers_(ctx) {
-    harness_ = std::make_unique<PassHarness>(ctx, DynamicStateSet::none(), size, DepthAttachment::none,
+  // With `depth` the target has a D32 depth attachment, tested and written (LESS_OR_EQUAL).
+  FixedFunctionRig(Context& ctx, uint32_t size, bool depth = false) : ctx_(ctx), size_(size), samplers_(ctx), depth_(depth) {
+    harness_ = std::make_unique<PassHarness>(ctx, DynamicStateSet::none(), size, depth ? DepthAttachment::d32 : DepthAttachment::none,
                                              VK_FORMAT_R32G32B32A32_SFLOAT);
   }
 
-  // Compiles and links the generated shaders of `state` (or the generated vertex shader and
-  // `pixel_shader`, entry PS); false (with a failure) when they do not.
-  bool build(const FixedFunctionState& state, const std::string& pixel_shader = {}) {
+  // Compiles and links the generated shaders of `state` (or `pixel_shader`, entry PS, in
+  // place of the generated pixel shader, or `vertex_shader`, entry VS, in place of the
+  // generated vertex shader); false (with a failure) when they do not.
+  bool build(const FixedFunctionState& state, const std::string& pixel_shader = {}, const std::string& vertex_shader = {}) {
+    return build(vertex_shader.empty() ? generate_fixed_function_vertex_shader(state)
+                                       : FixedFunctionShader{vertex_shader, "VS", "vs_3_0"},
+                 pixel_shader.empty() ? generate_fixed_function_pixel_shader(state)
+                                      : FixedFunctionShader{pixel_shader, "PS", "ps_3_0"},
+                 state.pretransformed);
+  }
+
+  // Compiles and links `vs` and `ps` (any generated or hand-written HLSL pair).
+  bool build(const FixedFunctionShader& vs, const FixedFunctionShader& ps, bool pretransformed = false) {
     ShaderCompiler compiler;
     program_ = std::make_unique<TestProgram>();
-    program_->vs = compiler.compile(unit(generate_fixed_function_vertex_shader(state), ShaderStage::vertex));
-    program_->ps = compiler.compile(unit(pixel_shader.empty() ? generate_fixed_function_pixel_shader(state)
-                                                              : FixedFunctionShader{pixel_shader, "PS", "ps_3_0"},
-                                         ShaderStage::fragment));
+    program_->vs = compiler.compile(unit(vs, ShaderStage::vertex));
+    program_->ps = compiler.compile(unit(ps, ShaderStage::fragment));
     EXPECT_TRUE(program_->vs.ok && program_->ps.ok) << program_->vs.info_log << program_->ps.info_log;
     if (!program_->vs.ok || !program_->ps.ok) return false;
     DiagnosticSink sink;
@@ -79,7 +89,7 @@ class FixedFunctionRig {
     EXPECT_TRUE(program.has_value()) << describe(sink);
     if (!program) return false;
     program_->program = std::move(*program);
-    input_ = match_vertex_layout(fixed_vertex_layout(state.pretransformed), program_->program.vertex_inputs(), sink);
+    input_ = match_vertex_layout(fixed_vertex_layout(pretransformed), program_->program.vertex_inputs(), sink);
     EXPECT_TRUE(input_.has_value()) << describe(sink);
     resources_ = std::make_unique<PassResources>(program_->program);
     return input_.has_value();
@@ -124,7 +134,8 @@ class FixedFunctionRig {
     EXPECT_TRUE(b && b->write(vertices.data(), vertices.size() * sizeof(FixedVertex))) << describe(sink);
     if (!b) return {};
     VkBuffer vb = b->handle();
-    const PipelineState state;  // no culling, no blending
+    PipelineState state;  // no culling, no blending
+    state.depth_test = state.depth_write = depth_;
     fx::ImageF image = harness_->render_floats([&](VkCommandBuffer cmd, PassRecorder& r) {
       draw(cmd, r, {&program_->program, state, &*input_, resources_.get()}, vb, static_cast<uint32_t>(vertices.size()));
     }, {-1, -1, -1, -1});
@@ -132,12 +143,16 @@ class FixedFunctionRig {
     return image;
   }
 
+  // The depth the last render() left (a rig made with `depth`), row by row; cleared to 1.
+  std::vector<float> depth() { return harness_->read_depth(); }
+
   uint32_t size() const { return size_; }
 
  private:
   Context& ctx_;
   uint32_t size_;
   SamplerCache samplers_;
+  bool depth_ = false;
   std::unique_ptr<PassHarness> harness_;
   std::unique_ptr<TestProgram> program_;
   std::optional<VertexInput> input_;

@@ -68,6 +68,47 @@ TEST(Generator, EveryGeneratorBakesWithDefaults) {
   }
 }
 
+// Each face's texel (s, t) looks along the direction Vulkan's (and D3D's) cube lookup
+// selects that texel for: the major axis picks the face, the other two give s and t.
+TEST(CubeTable, FaceDirectionsFollowTheCubeLookup) {
+  for (int face = 0; face < 6; ++face)
+    for (double s : {0.1, 0.5, 0.8})
+      for (double t : {0.2, 0.5, 0.9}) {
+        const glm::dvec3 d = cube_direction(face, s, t);
+        const int axis = std::abs(d.x) >= std::abs(d.y) && std::abs(d.x) >= std::abs(d.z) ? 0
+                         : std::abs(d.y) >= std::abs(d.z)                                ? 1
+                                                                                         : 2;
+        const double ma = d[axis];
+        EXPECT_EQ(axis * 2 + (ma < 0), face);
+        // The specification's (sc, tc) for each face.
+        const double sc[6] = {-d.z, d.z, d.x, d.x, d.x, -d.x}, tc[6] = {-d.y, -d.y, d.z, -d.z, -d.y, -d.y};
+        EXPECT_NEAR(0.5 * (sc[face] / std::abs(ma) + 1), s, 1e-12) << face;
+        EXPECT_NEAR(0.5 * (tc[face] / std::abs(ma) + 1), t, 1e-12) << face;
+      }
+}
+
+// Shape = "cube": the parabolic factor resampled on six faces, as luminance (rgb equal).
+TEST(Generator, BrdfFactorCubeReadsTheParabolicMapAlongEachTexelsDirection) {
+  GeneratorParams p;
+  p.set("Width", 8).set("Samples", 2000).set("Iterations", 40).set("Factor", "half");
+  BakeResult flat = bake("brdf_factor", p);
+  BakeResult cube = bake("brdf_factor", GeneratorParams(p).set("Shape", "cube"));
+  ASSERT_TRUE(flat.ok() && cube.ok()) << flat.message << cube.message;
+  EXPECT_FALSE(flat.table->cube);
+  ASSERT_TRUE(cube.table->cube);
+  EXPECT_EQ(cube.table->depth, 6);
+  EXPECT_EQ(cube.table->channels, 3);
+  for (int face = 0; face < 6; ++face)
+    for (int y = 0; y < 8; y += 3)
+      for (int x = 0; x < 8; x += 3) {
+        const glm::dvec3 w = glm::normalize(cube_direction(face, (x + 0.5) / 8, (y + 0.5) / 8));
+        const glm::dvec2 st = parabolic_coords(w);
+        const float want = sample_linear(*flat.table, glm::vec3(float(st.x), float(st.y), 0), AddressMode::clamp).x;
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(cube.table->fetch(x, y, face, c), want) << face << " " << x << "," << y;
+      }
+  EXPECT_FALSE(bake("brdf_factor", GeneratorParams(p).set("Shape", "sphere")).ok());
+}
+
 TEST(Noise, DeterministicPeriodicAndTileable) {
   NoiseTableOptions o{.width = 16, .height = 16, .depth = 16, .channels = 3, .noise = {.period = 4, .seed = 7},
                       .format = TableFormat::float32};

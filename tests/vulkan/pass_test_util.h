@@ -11,6 +11,7 @@
 
 #include "fx/compile/program_link.h"
 #include "fx/compile/shader_compiler.h"
+#include "fx/vulkan/barrier.h"
 #include "fx/vulkan/buffer.h"
 #include "fx/vulkan/one_shot.h"
 #include "fx/vulkan/pass_recorder.h"
@@ -91,7 +92,7 @@ class PassHarness {
               DepthAttachment depth = DepthAttachment::d24s8, VkFormat color = VK_FORMAT_R8G8B8A8_UNORM)
       : ctx_(ctx) {
     DiagnosticSink sink;
-    target_ = RenderTarget::create(ctx, {size, size, color, depth, 0, "pass test"}, sink);
+    target_ = RenderTarget::create(ctx, {size, size, color, depth, 0, "pass test", VK_IMAGE_USAGE_TRANSFER_SRC_BIT}, sink);
     pipelines_ = PipelineCache::create(ctx, sink);
     frames_ = FrameResources::create(ctx, {}, sink);
     EXPECT_TRUE(target_ && pipelines_ && frames_) << describe(sink);
@@ -128,6 +129,31 @@ class PassHarness {
     auto image = target_->readback_floats(sink);
     EXPECT_TRUE(image.has_value()) << describe(sink);
     return image ? *image : fx::ImageF{};
+  }
+
+  // The depth values the last frame left in a d32 harness, row by row (empty when the
+  // target has another depth format or none).
+  std::vector<float> read_depth() {
+    DiagnosticSink sink;
+    GpuImage* depth = target_->depth();
+    if (!depth || depth->format() != VK_FORMAT_D32_SFLOAT) return {};
+    const uint32_t width = target_->width(), height = target_->height();
+    std::vector<float> values(size_t(width) * height);
+    auto b = Buffer::create(ctx_, {values.size() * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::readback,
+                                   "depth readback"}, sink);
+    EXPECT_TRUE(b) << describe(sink);
+    if (!b) return {};
+    const bool ok = submit_and_wait(ctx_, [&](VkCommandBuffer cmd) {
+      depth->transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+      VkBufferImageCopy region{};
+      region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+      region.imageExtent = {width, height, 1};
+      vkCmdCopyImageToBuffer(cmd, depth->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, b->handle(), 1, &region);
+      memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                     VK_ACCESS_HOST_READ_BIT);
+    }, sink);
+    EXPECT_TRUE(ok && b->read(values.data(), values.size() * sizeof(float))) << describe(sink);
+    return values;
   }
 
   PassRecorder& recorder() { return *recorder_; }

@@ -31,6 +31,13 @@ struct AnalyticBrdf {
 // Parabolic-map texture coordinate of a unit upper-hemisphere direction, in [0, 1]^2.
 glm::dvec2 parabolic_coords(const glm::dvec3& w);
 
+// A parabolic factor table resampled as a size x size cube map (Table::cube): each texel
+// holds the parabolic map's linearly filtered value at parabolic_coords of its direction,
+// so a cube lookup with any (unnormalised) direction reads what the parabolic lookup of the
+// normalised direction does, up to the second filtering. What the DirectX 8 listings
+// (texture stages sampling at the raw direction) need.
+Table parabolic_to_cube(const Table& parabolic, int size);
+
 struct BrdfFactorizationOptions {
   int size = 32;              // each factor is size x size
   int samples = 16384;        // direction pairs (uniform in parabolic coordinates)

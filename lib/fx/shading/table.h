@@ -16,6 +16,9 @@ struct Table {
   int width = 0, height = 1, depth = 1;
   int channels = 1;
   TableFormat format = TableFormat::float32;
+  // A cube map: depth 6 holds the faces +X, -X, +Y, -Y, +Z, -Z (cube_direction gives the
+  // direction of each texel); sample_linear does not read cube tables.
+  bool cube = false;
   std::vector<uint8_t> unorm8;   // used when format == unorm8
   std::vector<float> float32;    // used when format == float32
 
@@ -30,6 +33,11 @@ struct Table {
   // The stored value as float (unorm8 -> [0, 1]).
   float fetch(int x, int y, int z, int c) const;
 };
+
+// The (unnormalised) direction a cube-map lookup maps to face `face` (0..5: +X, -X, +Y,
+// -Y, +Z, -Z) at face coordinates (s, t) in [0, 1]: the face selection table of the
+// Vulkan specification, which Direct3D's cube maps share (s right, t down on each face).
+glm::dvec3 cube_direction(int face, double s, double t);
 
 enum class AddressMode { clamp, wrap };
 

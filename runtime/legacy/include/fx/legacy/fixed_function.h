@@ -137,6 +137,17 @@ struct FixedFunctionState {
     uint8_t texcoords = 0;  // bit n: TEXCOORDn
     bool operator==(const PixelShaderInputs&) const = default;
   } pixel_shader_inputs;
+  // The programmable vertex stage's outputs, when `known` (the caller read them from an HLSL
+  // entry's declaration): the pixel shader reads exactly those, each with the components it
+  // writes (0: not written). What it does not write reads D3D's default: diffuse (1,1,1,1),
+  // specular (0,0,0,0), texture coordinates (0,0,0,1) (missing components too), fog 1.
+  // Unknown (assembly, generated stages): the pixel shader reads D3D's full register set.
+  struct VertexShaderOutputs {
+    bool known = false;
+    uint8_t diffuse = 0, specular = 0, fog = 0;
+    std::array<uint8_t, 8> texcoords{};  // components of TEXCOORDn
+    bool operator==(const VertexShaderOutputs&) const = default;
+  } vertex_shader_outputs;
   // Vertex processing (ignored with vertex_shader).
   bool pretransformed = false;        // XYZRHW positions (D3DFVF_XYZRHW)
   bool vertex_diffuse = true, vertex_specular = true;  // the mesh has COLOR0 / COLOR1

@@ -31,6 +31,8 @@ struct RenderTargetDesc {
   // Extra usage for the color image (SAMPLED to read it in a later pass).
   VkImageUsageFlags extra_color_usage = 0;
   const char* debug_name = nullptr;
+  // Extra usage for the depth image (TRANSFER_SRC to copy it out).
+  VkImageUsageFlags extra_depth_usage = 0;
 };
 
 // How begin() initialises the attachments: a value clears, nullopt keeps the contents.
