@@ -29,9 +29,9 @@
 // aniso_lut_ward.fx ln_hn_per_vertex
 #define COST_ln_hn_per_vertex float CostNsPerPixel = 9.333; float CostNsPerVertex = 5.711; float MaxError = 84.88; string Substitutes = "table";
 // brdf.fx brdf_ps20
-#define COST_brdf_ps20 float CostNsPerPixel = 39.236; float CostNsPerVertex = 17.365; float MaxError = 179.53;
+#define COST_brdf_ps20 float CostNsPerPixel = 49.286; float CostNsPerVertex = 19.400; float MaxError = 179.53;
 // brdf.fx tec0
-#define COST_tec0 float CostNsPerPixel = 15.610; float CostNsPerVertex = 17.649; float MaxError = 255.00; float Ps1xPrecisionMaxError = 255.00; float Ps1xPrecisionCostNsPerPixel = 21.014;
+#define COST_tec0 float CostNsPerPixel = 32.310; float CostNsPerVertex = 16.382; float MaxError = 182.66; float Ps1xPrecisionMaxError = 253.00; float Ps1xPrecisionCostNsPerPixel = 45.540;
 // hemisphere.fx hemisphere_sun
 #define COST_hemisphere_sun float CostNsPerPixel = 19.711; float CostNsPerVertex = 11.417; float MaxError = 0.70;
 // hemisphere.fx hemisphere_vertex_occlusion_sun
