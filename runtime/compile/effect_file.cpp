@@ -28,9 +28,8 @@ std::unique_ptr<EffectFile> EffectFile::load(const std::string& path, const Fron
 }
 
 uint32_t EffectFile::find_technique(std::string_view name) const {
-  for (uint32_t t = 0; t < model->techniques.size(); ++t)
-    if (model->techniques[t].name == name) return t;
-  return kNoIndex;
+  const TechniqueInfo* t = model->find_technique(name);
+  return t ? static_cast<uint32_t>(t - model->techniques.data()) : kNoIndex;
 }
 
 }  // namespace fx

@@ -31,7 +31,7 @@ void EffectUnitBuilder::add_technique(const ast::Technique& t, const std::string
     pass_ = &p;
     EffectPass pass;
     pass.group = group;
-    pass.technique = t.name.empty() ? "technique" + std::to_string(index) : t.name;
+    pass.technique = technique_label(t.name, index);
     pass.pass = p.name.empty() ? "pass" + std::to_string(pass_index) : p.name;
     pass.technique_index = index;
     pass.pass_index = pass_index++;

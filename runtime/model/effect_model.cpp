@@ -326,7 +326,17 @@ uint32_t EffectModel::find_state_object(std::string_view name) const {
 const TechniqueInfo* EffectModel::find_technique(std::string_view name) const {
   for (const TechniqueInfo& t : techniques)
     if (t.name == name) return &t;
+  for (uint32_t i = 0; i < techniques.size(); ++i)
+    if (techniques[i].name.empty() && technique_label(i) == name) return &techniques[i];
   return nullptr;
+}
+
+std::string technique_label(std::string_view name, uint32_t index) {
+  return name.empty() ? "technique" + std::to_string(index) : std::string(name);
+}
+
+std::string EffectModel::technique_label(uint32_t index) const {
+  return fx::technique_label(index < techniques.size() ? techniques[index].name : "", index);
 }
 
 const TextureInfo* EffectModel::texture_of(uint32_t parameter) const {

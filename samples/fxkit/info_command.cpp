@@ -230,7 +230,7 @@ int run_info(const InfoArgs& args) {
                         {"vertex_inputs", vs ? interface(vs->shader.reflection.inputs) : json::array()},
                         {"location", location(sm, p.range)}});
     }
-    std::string name = t.name.empty() ? "technique" + std::to_string(techniques.size()) : t.name;
+    std::string name = fx::technique_label(t.name, static_cast<uint32_t>(techniques.size()));
     techniques.push_back({{"name", name},
                           {"group", group},
                           {"version", t.version},

@@ -165,6 +165,23 @@ technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile
   EXPECT_NE(r.err.find("[vk-image-array-first]"), std::string::npos) << r.err;
 }
 
+TEST(FxkitRender, AnUnnamedTechniqueIsNamedByItsIndexAsInfoAndCompileName) {
+  // `technique { ... }` is valid D3D; fxkit info and compile call it technique<index>.
+  const auto [r, image] = render("unnamed", R"(
+float4x4 WorldViewProj;
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProj); }
+float4 Red() : COLOR0 { return float4(1, 0, 0, 1); }
+float4 Green() : COLOR0 { return float4(0, 1, 0, 1); }
+technique { pass { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Red(); } }
+technique { pass { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Green(); } }
+)", "--technique technique1 --validation --size 16x16");
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_TRUE(image);
+  const uint8_t* centre = &image->pixels[(8 * image->width + 8) * 4];
+  EXPECT_EQ(centre[1], 255);  // the second technique's green
+  EXPECT_EQ(centre[0], 0);
+}
+
 TEST(FxkitRender, AFlatImageIsAWarningNamingTheUnboundTransform) {
   const fxkit_test::CliRun r = render("unbound", R"(
 float4x4 ClipFromObjectXf;

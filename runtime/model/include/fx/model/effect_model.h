@@ -167,6 +167,10 @@ struct TechniqueInfo {
   SourceRange range;
 };
 
+// What tools call the technique at `index` (declaration order, groups included): its name,
+// or "technique<index>" when the effect leaves it unnamed (`technique { pass ... }` is valid D3D).
+std::string technique_label(std::string_view name, uint32_t index);
+
 struct EffectModel {
   TypeTable types;
   std::vector<Parameter> parameters;
@@ -181,7 +185,10 @@ struct EffectModel {
   // Lookups by exact name; kNoIndex / nullptr when absent.
   uint32_t find_parameter(std::string_view name) const;
   uint32_t find_state_object(std::string_view name) const;
+  // By name, or by the label of an unnamed technique ("technique2"; see technique_label).
   const TechniqueInfo* find_technique(std::string_view name) const;
+  // What tools call technique `index` (the free technique_label below).
+  std::string technique_label(uint32_t index) const;
   const TextureInfo* texture_of(uint32_t parameter) const;
 
   std::unordered_map<std::string, uint32_t> parameter_index;
