@@ -230,10 +230,22 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
                            std::to_string(image.count) + "; every element samples its first element's texture and sampler state");
         if (image.kind != DescriptorKind::sampled_image) {
           SamplerKey vk_desc = sampler_desc ? to_sampler_key(*sampler_desc, pass_sink) : SamplerKey{};
+          // A depth format the device cannot filter linearly is sampled nearest.
+          if (image.shadow && !ctx.supports_format(Texture::depth_stand_in_format(ctx),
+                                                   VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
+            vk_desc.min_filter = vk_desc.mag_filter = VK_FILTER_NEAREST, vk_desc.mip_filter = VK_SAMPLER_MIPMAP_MODE_NEAREST;
           slot.sampler = b->samplers_.get(vk_desc, sink);
           if (!slot.sampler) return nullptr;
         }
-        if (image.kind != DescriptorKind::sampler) {
+        if (image.kind != DescriptorKind::sampler && image.shadow) {
+          // Vulkan compares only against depth formats: whatever the effect names (a colour
+          // file, nothing), a depth stand-in is bound until set_texture() gives a depth view.
+          sink.warning("vk-texture-depth-stand-in", pass_info.range,
+                       "pass '" + pass_info.name + "': '" + image.name +
+                           "' is sampled with depth comparison, which needs a depth texture; a depth of 1.0 "
+                           "(nothing in shadow) stands in until set_texture()");
+          slot.data = textures.depth_stand_in(image.dim, image.arrayed);
+        } else if (image.kind != DescriptorKind::sampler) {
           const TextureInfo* tex = slot.texture_param != kNoIndex ? model.texture_of(slot.texture_param) : nullptr;
           if (!tex) {
             sink.warning("vk-texture-unresolved", pass_info.range,

@@ -118,10 +118,24 @@ std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const Effec
   return cpu_.emplace(key, std::move(shared)).first->second;
 }
 
+std::shared_ptr<const EffectTextureData> EffectTextureCache::depth_stand_in(ImageDim dim, bool arrayed) {
+  EffectTextureData data;
+  data.key = "stand-in:depth:" + std::to_string(int(dim)) + (arrayed ? ":array" : "");
+  data.dim = dim;
+  data.arrayed = arrayed;
+  data.stand_in = data.depth = true;
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (auto it = cpu_.find(data.key); it != cpu_.end()) return it->second;
+  std::string key = data.key;
+  return cpu_.emplace(key, std::make_shared<const EffectTextureData>(std::move(data))).first->second;
+}
+
 const Texture* EffectTextureCache::gpu(const EffectTextureData& data, DiagnosticSink& sink) {
   if (auto it = gpu_.find(data.key); it != gpu_.end()) return &it->second;
   std::optional<Texture> texture;
-  if (data.stand_in) {
+  if (data.depth) {
+    texture = Texture::solid_depth(*ctx_, 1.0f, image_kind(data.dim), data.arrayed, sink);
+  } else if (data.stand_in) {
     const uint8_t* p = data.image->pixels.data();
     texture = Texture::solid(*ctx_, {p[0], p[1], p[2], p[3]}, image_kind(data.dim), data.arrayed, sink);
   } else if (data.table) texture = Texture::from_table(*ctx_, *data.table, sink);

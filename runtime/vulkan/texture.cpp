@@ -1,6 +1,7 @@
 // Texture uploads through a staging buffer and a blocking one-shot submission (load time).
 #include "fx/vulkan/texture.h"
 
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -46,11 +47,13 @@ bool check_image(const fx::Image& image, DiagnosticSink& sink) {
 std::optional<Texture> Texture::upload(const Context& ctx, const ImageDesc& desc,
                                        const uint8_t* bytes, size_t byte_count,
                                        DiagnosticSink& sink) {
+  // Depth textures are compared, not filtered: sampling them is enough.
+  const bool depth = is_depth_format(desc.format);
   if (!ctx.supports_format(desc.format, VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
-                                            VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT)) {
+                                            (depth ? 0 : VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))) {
     sink.error("vk-format-unsupported", {},
                "the device cannot sample format " + std::to_string(int(desc.format)) +
-                   " with linear filtering");
+                   (depth ? "" : " with linear filtering"));
     return std::nullopt;
   }
   std::optional<GpuImage> image = GpuImage::create(ctx, desc, sink);
@@ -63,7 +66,8 @@ std::optional<Texture> Texture::upload(const Context& ctx, const ImageDesc& desc
   const bool ok = submit_and_wait(ctx, [&](VkCommandBuffer cmd) {
     img.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
     VkBufferImageCopy copy{};
-    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, img.desc().array_layers};
+    copy.imageSubresource = {depth ? VkImageAspectFlags(VK_IMAGE_ASPECT_DEPTH_BIT) : VkImageAspectFlags(VK_IMAGE_ASPECT_COLOR_BIT),
+                             0, 0, img.desc().array_layers};
     copy.imageExtent = img.extent();
     vkCmdCopyBufferToImage(cmd, staging->handle(), img.handle(),
                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
@@ -97,6 +101,31 @@ std::optional<Texture> Texture::solid(const Context& ctx, const std::array<uint8
   const size_t layers = kind == ImageKind::cube ? 6 : 1;
   std::vector<uint8_t> texels;
   for (size_t i = 0; i < layers; ++i) texels.insert(texels.end(), rgba.begin(), rgba.end());
+  return upload(ctx, desc, texels.data(), texels.size(), sink);
+}
+
+VkFormat Texture::depth_stand_in_format(const Context& ctx) {
+  constexpr VkFormatFeatureFlags kLinear =
+      VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+  if (ctx.supports_format(VK_FORMAT_D32_SFLOAT, kLinear)) return VK_FORMAT_D32_SFLOAT;
+  if (ctx.supports_format(VK_FORMAT_D16_UNORM, kLinear)) return VK_FORMAT_D16_UNORM;
+  if (ctx.supports_format(VK_FORMAT_D32_SFLOAT, VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT)) return VK_FORMAT_D32_SFLOAT;
+  return VK_FORMAT_D16_UNORM;  // sampleable on every device
+}
+
+std::optional<Texture> Texture::solid_depth(const Context& ctx, float depth, ImageKind kind, bool array,
+                                            DiagnosticSink& sink) {
+  ImageDesc desc;
+  desc.kind = kind;
+  desc.array_view = array;
+  desc.debug_name = "fxkit depth stand-in texture";
+  desc.format = depth_stand_in_format(ctx);
+  const size_t layers = kind == ImageKind::cube ? 6 : 1;
+  const uint16_t unorm = static_cast<uint16_t>(std::clamp(depth, 0.0f, 1.0f) * 65535.0f + 0.5f);
+  const size_t texel = desc.format == VK_FORMAT_D32_SFLOAT ? sizeof depth : sizeof unorm;
+  std::vector<uint8_t> texels(layers * texel);
+  for (size_t i = 0; i < layers; ++i)
+    std::memcpy(texels.data() + i * texel, texel == sizeof depth ? static_cast<const void*>(&depth) : &unorm, texel);
   return upload(ctx, desc, texels.data(), texels.size(), sink);
 }
 

@@ -145,5 +145,33 @@ technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile
   std::filesystem::remove(file);
 }
 
+// Depth comparison (a shadow map lookup) with no depth texture: Vulkan compares only against
+// depth formats, so a depth of 1.0 stands in, in a format and with a filter the device
+// allows; the colour stand-in was a validation error and undefined.
+TEST_F(EffectRenderTest, ComparisonSamplingWithoutADepthTextureSeesNothingInShadow) {
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "fxkit_comparison.fx";
+  std::ofstream(file) << R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+Texture2D ShadowMap;
+SamplerComparisonState ShadowSampler { ComparisonFunc = LESS; Filter = COMPARISON_MIN_MAG_MIP_LINEAR; };
+struct V { float4 p : SV_Position; float2 uv : TEXCOORD0; };
+V VS(float4 p : POSITION, float2 uv : TEXCOORD0) { V o; o.p = mul(p, WorldViewProjection); o.uv = uv; return o; }
+float4 PS(V i) : SV_Target {
+  float lit = ShadowMap.SampleCmpLevelZero(ShadowSampler, i.uv, 0.5);
+  return float4(lit, lit * 0.5, 0, 1);
+}
+technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)";
+  auto r = bind_effect(ctx(), file.string(), "T", "sphere", 32);
+  ASSERT_TRUE(r);
+  const size_t errors = ctx().validation_error_count();
+  auto image = r->render();
+  ASSERT_TRUE(image);
+  EXPECT_EQ(ctx().validation_error_count(), errors) << describe_messages(ctx());
+  const uint8_t* centre = &image->pixels[(16 * image->width + 16) * 4];
+  EXPECT_EQ(centre[0], 255);  // 0.5 < 1.0: lit
+  EXPECT_NEAR(centre[1], 128, 1);
+  std::filesystem::remove(file);
+}
+
 }  // namespace
 }  // namespace fx::vk::testing

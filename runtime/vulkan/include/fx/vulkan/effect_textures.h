@@ -28,6 +28,7 @@ struct EffectTextureData {
   bool stand_in = false;                // a neutral texture for a missing file
   ImageDim dim = ImageDim::dim_2d;       // stand-ins take the shape the shader samples
   bool arrayed = false;                  // ... as an array view (Texture2DArray)
+  bool depth = false;                    // a depth stand-in, for sampling with depth comparison
 };
 
 class EffectTextureCache {
@@ -48,6 +49,9 @@ class EffectTextureCache {
   std::shared_ptr<const EffectTextureData> resolve(const EffectModel& model, const TextureInfo& texture,
                                                    const std::filesystem::path& effect_dir, ImageDim dim,
                                                    bool arrayed, DiagnosticSink& sink);
+  // A depth texture of 1.0 in the shape the shader samples, for an image sampled with depth
+  // comparison (Vulkan compares only against depth formats): a shadow map nothing is in front of.
+  std::shared_ptr<const EffectTextureData> depth_stand_in(ImageDim dim, bool arrayed);
 
   // The GPU texture for `data`, uploaded on first use. Render thread only.
   const Texture* gpu(const EffectTextureData& data, DiagnosticSink& sink);

@@ -39,6 +39,7 @@ struct ProgramImage {
   uint32_t binding = 0;
   uint32_t count = 1;
   bool arrayed = false;  // Texture2DArray, TextureCubeArray, Texture1DArray
+  bool shadow = false;   // sampled with depth comparison (SamplerComparisonState, sampler2DShadow)
 };
 
 class ShaderProgram {

@@ -36,6 +36,12 @@ class Texture {
   // array view when `array`): what stands in for a texture the effect names but has no data for.
   static std::optional<Texture> solid(const Context& ctx, const std::array<uint8_t, 4>& rgba, ImageKind kind,
                                       bool array, DiagnosticSink& sink);
+  // The same for a depth comparison: one texel of `depth` in depth_stand_in_format.
+  static std::optional<Texture> solid_depth(const Context& ctx, float depth, ImageKind kind, bool array,
+                                            DiagnosticSink& sink);
+  // D32_SFLOAT or D16_UNORM, whichever the device filters linearly (comparison samplers often
+  // filter), else whichever it samples.
+  static VkFormat depth_stand_in_format(const Context& ctx);
   // Borrows the application's view: the texture never destroys it. `layout` is the layout
   // the image will be in when the pass samples it.
   static Texture wrap(VkImageView view, VkImageLayout layout, ImageKind kind);
