@@ -2,6 +2,7 @@
 // every technique of every effect, and the dynamic and static pipeline paths agreeing.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -11,7 +12,26 @@
 namespace fx::vk::testing {
 namespace {
 
-class EffectRenderTest : public VulkanTest {};
+class EffectRenderTest : public VulkanTest {
+ protected:
+  // Renders technique T of `source` (written to a temporary file) at 32x32 with no new
+  // validation message; returns the centre pixel (RGBA).
+  std::array<uint8_t, 4> centre_of(const std::string& name, const std::string& source) {
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / (name + ".fx");
+    std::ofstream(file) << source;
+    auto r = bind_effect(ctx(), file.string(), "T", "sphere", 32);
+    std::filesystem::remove(file);
+    EXPECT_TRUE(r);
+    if (!r) return {};
+    const size_t errors = ctx().validation_error_count();
+    auto image = r->render();
+    EXPECT_TRUE(image);
+    EXPECT_EQ(ctx().validation_error_count(), errors) << describe_messages(ctx());
+    if (!image) return {};
+    const uint8_t* p = &image->pixels[(16 * image->width + 16) * 4];
+    return {p[0], p[1], p[2], p[3]};
+  }
+};
 
 struct GoldenCase {
   const char* file;
@@ -122,8 +142,7 @@ TEST_F(EffectRenderTest, ParameterChangesReachTheImage) {
 // is undefined to sample; lavapipe crashed reading it), all bound to the first element's
 // texture, here the white stand-in.
 TEST_F(EffectRenderTest, SamplerArrayElementsAreAllBound) {
-  const std::filesystem::path file = std::filesystem::temp_directory_path() / "fxkit_sampler_array.fx";
-  std::ofstream(file) << R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+  const std::array<uint8_t, 4> centre = centre_of("fxkit_sampler_array", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
 texture a;
 texture b;
 sampler s[2] = { sampler_state { Texture = <a>; }, sampler_state { Texture = <b>; } };
@@ -133,24 +152,15 @@ float4 VS(float4 p : POSITION, float2 uv : TEXCOORD0, out float2 t : TEXCOORD0) 
 }
 float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(s[1], uv) * 0.5 + tex2D(s[0], uv) * 0.25; }
 technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
-)";
-  auto r = bind_effect(ctx(), file.string(), "T", "sphere", 32);
-  ASSERT_TRUE(r);
-  const size_t errors = ctx().validation_error_count();
-  auto image = r->render();
-  ASSERT_TRUE(image);
-  EXPECT_EQ(ctx().validation_error_count(), errors) << describe_messages(ctx());
-  const uint8_t* centre = &image->pixels[(16 * image->width + 16) * 4];
+)");
   EXPECT_NEAR(centre[0], 191, 2);  // white * 0.5 + white * 0.25
-  std::filesystem::remove(file);
 }
 
 // Depth comparison (a shadow map lookup) with no depth texture: Vulkan compares only against
 // depth formats, so a depth of 1.0 stands in, in a format and with a filter the device
 // allows; the colour stand-in was a validation error and undefined.
 TEST_F(EffectRenderTest, ComparisonSamplingWithoutADepthTextureSeesNothingInShadow) {
-  const std::filesystem::path file = std::filesystem::temp_directory_path() / "fxkit_comparison.fx";
-  std::ofstream(file) << R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+  const std::array<uint8_t, 4> centre = centre_of("fxkit_comparison", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
 Texture2D ShadowMap;
 SamplerComparisonState ShadowSampler { ComparisonFunc = LESS; Filter = COMPARISON_MIN_MAG_MIP_LINEAR; };
 struct V { float4 p : SV_Position; float2 uv : TEXCOORD0; };
@@ -160,17 +170,9 @@ float4 PS(V i) : SV_Target {
   return float4(lit, lit * 0.5, 0, 1);
 }
 technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
-)";
-  auto r = bind_effect(ctx(), file.string(), "T", "sphere", 32);
-  ASSERT_TRUE(r);
-  const size_t errors = ctx().validation_error_count();
-  auto image = r->render();
-  ASSERT_TRUE(image);
-  EXPECT_EQ(ctx().validation_error_count(), errors) << describe_messages(ctx());
-  const uint8_t* centre = &image->pixels[(16 * image->width + 16) * 4];
+)");
   EXPECT_EQ(centre[0], 255);  // 0.5 < 1.0: lit
   EXPECT_NEAR(centre[1], 128, 1);
-  std::filesystem::remove(file);
 }
 
 }  // namespace
