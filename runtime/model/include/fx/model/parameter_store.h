@@ -159,15 +159,23 @@ class ParameterStore {
   // (its bound size, padding zero; valid until the next call on this store), `changed`
   // telling whether they differ from what the last update or write returned. Empty for
   // an invalid handle.
-  // Inline: a renderer calls it per block and draw, and a block nothing was logged for
-  // since its last update (its set_matrix values were written into it) needs no call.
+  // Inline: a renderer calls it per block and draw, and a block none of whose parameters
+  // was logged since its last update (its set_matrix values were written into it; the
+  // per-object matrices of the pass's other block are not its own) needs no call.
   std::span<const uint8_t> update_block(BlockHandle block, bool& changed) {
     if (block.slot < draw_->blocks.size()) [[likely]] {
-      DrawBlock& b = draw_->blocks[block.slot];
-      if (b.quiet && b.seen_changes == draw_->changes) [[likely]] {
-        changed = b.fresh;
-        b.fresh = false;
-        return {b.bytes, b.size};
+      DrawState& d = *draw_;
+      DrawBlock& b = d.blocks[block.slot];
+      const uint64_t changes = d.changes;
+      uint64_t k = b.seen_changes;
+      if (b.quiet && changes - k <= DrawState::kTouchLog) [[likely]] {
+        while (k != changes && !b.may_hold(d.touched[k % DrawState::kTouchLog])) ++k;
+        if (k == changes) [[likely]] {
+          b.seen_changes = changes;
+          changed = b.fresh;
+          b.fresh = false;
+          return {b.bytes, b.size};
+        }
       }
     }
     return update_block_slow(block, changed);
@@ -200,6 +208,10 @@ class ParameterStore {
                          // set_matrix's writes into `bytes` (fresh) can change it
     bool fresh = false;  // set_matrix wrote into `bytes` since they were last handed out
     uint64_t seen_changes = 0;  // DrawState::changes when the block was last brought up to date
+    // The top-level parameters the block holds, bit `index % 64` each: a logged change whose
+    // bit is clear is not this block's (a set bit may be another parameter's).
+    uint64_t holds = 0;
+    bool may_hold(uint32_t top) const { return (holds >> (top & 63)) & 1; }
   };
   // A per-object matrix (World, WorldViewProjection): when a block re-packs a whole 4x4
   // float group, that block becomes its parameter's hot block, and set_matrix writes the
