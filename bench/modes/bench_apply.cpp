@@ -172,8 +172,11 @@ int bench_apply(const BenchArgs& args) {
       return kUsageError;
     }
     std::vector<PublicGroup> pub;
+    std::map<std::string, fxkit::Effect> loaded;  // one Effect per file, as one EffectBinding per file below
     for (const Group& G : groups) {
-      fxkit::Effect effect = device->load(G.effect->path);
+      auto [at, fresh] = loaded.try_emplace(G.effect->path);
+      if (fresh) at->second = device->load(G.effect->path);
+      fxkit::Effect effect = at->second;
       const std::string name = G.effect->model->techniques[G.technique].name;
       fxkit::Technique technique = effect.technique(name);
       if (!technique.valid()) {

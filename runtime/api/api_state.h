@@ -56,6 +56,7 @@ struct EffectState {
   // The live version's parameter values (null when none): the setters' one indirection,
   // refreshed by the device where versions change (load, begin_frame, destruction).
   fx::ParameterStore* store = nullptr;
+  fxkit::detail::DrawState* draw = nullptr;  // store's per-object state: Effect::set_matrix's inline path
   fx::vk::RenderingFormats formats;
   VkBuffer default_attributes = VK_NULL_HANDLE;  // bound at default_binding by begin()
   fx::vk::EffectTextureCache* textures = nullptr;  // the device's; null once it is destroyed

@@ -54,7 +54,10 @@ fx::vk::PassTargetInfo pass_target(const Target& target) {
 void DeviceState::refresh_stores() {
   std::erase_if(effects, [](const std::weak_ptr<EffectState>& e) { return e.expired(); });
   for (const std::weak_ptr<EffectState>& weak : effects)
-    if (auto e = weak.lock()) e->store = e->handle.params();
+    if (auto e = weak.lock()) {
+      e->store = e->handle.params();
+      e->draw = e->store ? e->store->draw_state() : nullptr;
+    }
 }
 
 }  // namespace detail
@@ -171,6 +174,7 @@ std::unique_ptr<Device> Device::headless(const DeviceOptions& options, const Hea
 Effect Device::load(const std::string& path) {
   Effect e;
   e.state_ = std::make_shared<detail::EffectState>();
+  e.draw_ = &e.state_->draw;
   e.state_->handle = state_->library->load(path);
   e.state_->formats = state_->formats;
   e.state_->default_attributes = state_->default_attributes.handle();

@@ -30,13 +30,6 @@ bool kept(detail::EffectState& s, const fx::ParamStatus& status) {
   return false;
 }
 
-// Effect::set_matrix past its per-object path: the checked store and its status.
-[[gnu::noinline]] bool set_matrix_checked(detail::EffectState* s, Param p, const float* m16, MatrixOrder order) {
-  if (!s || !s->store) return false;
-  const fx::ParamStatus status = s->store->set_matrix(to_fx(p), std::span<const float>(m16, 16), to_fx(order));
-  return status || kept(*s, status);
-}
-
 }  // namespace
 
 bool Effect::ok() const { return state_ && state_->handle.ok(); }
@@ -140,12 +133,12 @@ bool Effect::set(Param p, std::span<const int32_t> values) {
   return store && kept(*state_, store->set(to_fx(p), values));
 }
 
-bool Effect::set_matrix(Param p, const float* m16, MatrixOrder order) {
-  // The per-object path with nothing to save or report; the rest out of line.
+// set_matrix past its inline per-object path: the checked store and its status.
+bool Effect::set_matrix_checked(Param p, const float* m16, MatrixOrder order) {
   detail::EffectState* s = state_.get();
-  if (s && s->store && s->store->set_matrix_hot(to_fx(p), m16, to_fx(order))) [[likely]]
-    return true;
-  return set_matrix_checked(s, p, m16, order);
+  if (!s || !s->store) return false;
+  const fx::ParamStatus status = s->store->set_matrix(to_fx(p), std::span<const float>(m16, 16), to_fx(order));
+  return status || kept(*s, status);
 }
 
 bool Effect::get(Param p, std::span<float> out) const {

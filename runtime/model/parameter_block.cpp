@@ -176,7 +176,9 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
   for (Impl::PooledRuns& p : b.pooled) p.packed_version = s.pool->entries_[p.entry].version;
   s.blocks[slot] = std::move(b);
   s.draw.blocks.resize(s.blocks.size());
-  s.draw.blocks[slot] = {s.blocks[slot].packed.data(), block_size, false, false, s.draw.changes};
+  uint64_t holds = 0;
+  for (const Impl::RunGroup& g : s.blocks[slot].groups) holds |= uint64_t{1} << (g.top & 63);
+  s.draw.blocks[slot] = {s.blocks[slot].packed.data(), block_size, false, false, s.draw.changes, holds};
   s.draw.hot.assign(s.top_count, {});  // `blocks` and `draw.blocks` may have moved
   if (!skipped.empty())
     return fail(ParamStatus::not_found, "no parameter (or a struct without member paths) for: " + skipped);

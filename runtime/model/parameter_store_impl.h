@@ -5,8 +5,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "fx/model/matrix_registers.h"
 #include "fx/model/parameter_store.h"
+#include "fx/model/matrix_registers.h"
 #include "model_internal.h"
 
 namespace fx::param_detail {
@@ -28,7 +28,7 @@ inline void write_columns4x4(uint8_t* to, const uint32_t* from) {
   __m128 r2 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 8));
   __m128 r3 = _mm_loadu_ps(reinterpret_cast<const float*>(from + 12));
   _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-  matrix_registers::store(to, r0, r1, r2, r3);
+  fxkit::detail::matrix_registers::store(to, r0, r1, r2, r3);
 #else
   uint32_t columns[16];
   transpose4x4(from, columns);

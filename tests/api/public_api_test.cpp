@@ -65,6 +65,19 @@ class PublicApiTest : public VulkanTest {
   fxkit::VulkanHandles handles() {
     return {ctx().instance(), ctx().physical_device(), ctx().device(), ctx().queue(), ctx().queue_family()};
   }
+  // Writes `text` over the effect file at `path` and runs frames until the device reports
+  // the reload (or 10 s pass); what begin_frame() reported.
+  static std::vector<fxkit::Reload> rewrite_and_reload(fxkit::Device& device, const std::string& path,
+                                                       const std::string& text) {
+    std::ofstream(path, std::ios::trunc) << text;
+    std::vector<fxkit::Reload> reloads;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (reloads.empty() && std::chrono::steady_clock::now() < deadline) {
+      device.wait_for_reload(std::chrono::milliseconds(20));
+      reloads = device.begin_frame();
+    }
+    return reloads;
+  }
   // One frame of `technique` on `mesh` into `image`; the centre pixel's RGB.
   static std::array<uint8_t, 3> draw(fxkit::Device& device, fxkit::Technique& technique, fxkit::Mesh& mesh,
                                      fxkit::Offscreen& image) {
@@ -189,16 +202,7 @@ TEST_F(PublicApiTest, BeginFrameSwapsInAnEditAndKeepsTheLastGoodEffectAfterABrok
   fxkit::Technique technique = effect.select();
   const auto before = draw(*r.device, technique, *r.mesh, *r.image);
 
-  auto reload_after = [&](const std::string& text) {
-    std::ofstream(path, std::ios::trunc) << text;
-    std::vector<fxkit::Reload> reloads;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-    while (reloads.empty() && std::chrono::steady_clock::now() < deadline) {
-      r.device->wait_for_reload(std::chrono::milliseconds(20));
-      reloads = r.device->begin_frame();
-    }
-    return reloads;
-  };
+  auto reload_after = [&](const std::string& text) { return rewrite_and_reload(*r.device, path, text); };
   auto failed = reload_after(lit_effect() + "technique broken { pass { VertexShader = compile vs_2_0 Nope(); } }");
   ASSERT_EQ(failed.size(), 1u);
   EXPECT_EQ(failed[0].kind, fxkit::Reload::Kind::failed);
@@ -213,6 +217,59 @@ TEST_F(PublicApiTest, BeginFrameSwapsInAnEditAndKeepsTheLastGoodEffectAfterABrok
   effect.set_scene(scene);
   const auto green = draw(*r.device, technique, *r.mesh, *r.image);
   EXPECT_GT(green[1], green[0] + 40) << "the edited default tint is drawn";
+}
+
+// Effect::set_matrix per object (inline once the matrix is the application's and its block
+// is hot): each object of a frame draws with its own value, a getter reads the last one back,
+// and a handle from before a reload sets the new version's matrix.
+TEST_F(PublicApiTest, SetMatrixPerObjectDrawsEachValueAndFollowsReloads) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  const std::string path = write_effect("api_per_object.fx", lit_effect());
+  fxkit::Effect effect = r.device->load(path);
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  const fxkit::Param wvp = effect.param("WorldViewProjection");
+  float on[16], off[16];
+  ASSERT_TRUE(effect.get(wvp, std::span<float>(on)));
+  std::copy_n(on, 16, off);
+  off[12] += 1000.f;  // row 3 (D3D order): clip x moved far off screen
+  fxkit::Technique technique = effect.select();
+  ASSERT_TRUE(effect.set_matrix(wvp, on));
+  const auto sphere = draw(*r.device, technique, *r.mesh, *r.image);
+  // Two objects in one frame, the matrix set before each; the centre pixel.
+  auto two_objects = [&](const float* first, const float* second) {
+    r.device->begin_frame();
+    EXPECT_TRUE(r.device->submit([&](VkCommandBuffer cmd) {
+      r.image->begin(cmd);
+      if (technique.begin(cmd, r.image->viewport(), r.image->scissor()))
+        for (const float* m : {first, second}) {
+          EXPECT_TRUE(effect.set_matrix(wvp, m));
+          for (uint32_t p = 0; p < technique.pass_count(); ++p)
+            if (technique.apply(p)) r.mesh->draw(cmd);
+        }
+      technique.end();
+      r.image->end(cmd);
+    }));
+    const auto rgba = r.image->read_rgba8();
+    const size_t c = (size_t(r.image->height() / 2) * r.image->width() + r.image->width() / 2) * 4;
+    return std::array<uint8_t, 3>{rgba.at(c), rgba.at(c + 1), rgba.at(c + 2)};
+  };
+  EXPECT_NE(two_objects(off, off), sphere) << "both off screen";
+  EXPECT_EQ(two_objects(off, on), sphere) << "the second object draws with its own matrix";
+  EXPECT_EQ(two_objects(on, off), sphere) << "the first object draws with its own matrix";
+  float back[16];
+  ASSERT_TRUE(effect.get(wvp, std::span<float>(back)));
+  EXPECT_TRUE(std::equal(back, back + 16, off)) << "the getter reads the last value set";
+
+  auto reloaded = rewrite_and_reload(*r.device, path, lit_effect("0.1, 0.9, 0.1"));
+  ASSERT_EQ(reloaded.size(), 1u);
+  EXPECT_EQ(reloaded[0].kind, fxkit::Reload::Kind::reloaded) << reloaded[0].str();
+  EXPECT_NE(two_objects(off, off), sphere) << "after the reload, both off screen";
+  const auto green = two_objects(on, off);
+  EXPECT_GT(green[1], green[0] + 40) << "the new version draws the object set on screen";
+  EXPECT_EQ(two_objects(off, on), green);
+  EXPECT_EQ(ctx().validation_error_count(), 0u) << describe_messages(ctx());
 }
 
 TEST_F(PublicApiTest, InputsTheLayoutLacksReadDefaultsOnlyWhenTheTargetSaysWhere) {

@@ -1,4 +1,4 @@
-// fx::matrix_registers::store_if_changed, the per-object matrix store: the registers it
+// fxkit::detail::matrix_registers::store_if_changed, the per-object matrix store: the registers it
 // writes (as given or transposed), and "changed" meaning a bit differs, so -0 against +0
 // is a change and the same NaN is not.
 #include "fx/model/matrix_registers.h"
@@ -11,7 +11,7 @@
 
 namespace {
 
-using fx::matrix_registers::store_if_changed;
+using fxkit::detail::matrix_registers::store_if_changed;
 
 struct Registers {
   alignas(16) uint8_t bytes[64 + 1];  // +1: stores at an odd address too

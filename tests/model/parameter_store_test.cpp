@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 
 #include "fx/model/parameter_store.h"
 #include "model_test_util.h"
@@ -339,6 +340,53 @@ TEST(ParameterStore, MovedStoreKeepsItsBlocks) {
   float back[16];
   ASSERT_TRUE(assigned.get_matrix(assigned.find("World"), back));
   EXPECT_EQ(back[5], 105.0f);
+}
+
+// Per object, the block of the pass that does not hold the per-object matrices passes over
+// their logged changes (update_block's inline check, by the block's parameter bits), and
+// still takes a change of its own parameter, also one whose index shares a bit with a
+// matrix it passes over (index 64 and index 0).
+TEST(ParameterStore, BlockPassesOverChangesItDoesNotHold) {
+  std::string text = "float4x4 World; ";
+  for (int i = 1; i < 64; ++i) text += "float p" + std::to_string(i) + "; ";
+  text += "float4 tint; float4 far;";
+  auto b = test::build(text);
+  ParameterStore store(b->model);
+  const Param world = store.find("World"), tint = store.find("tint"), far = store.find("far");
+  ASSERT_EQ(world.index, 0u);
+  ASSERT_EQ(tint.index, 64u);
+  const BlockMemberLayout object[] = {{"World", 0, 64, 0, 16, MatrixOrder::column_major}};
+  const BlockMemberLayout material[] = {{"far", 0, 16, 0, 16, MatrixOrder::column_major}};
+  const BlockMemberLayout shared_bit[] = {{"tint", 0, 16, 0, 16, MatrixOrder::column_major}};
+  ASSERT_TRUE(store.bind_layout(0, object, 64));
+  ASSERT_TRUE(store.bind_layout(1, material, 16));
+  ASSERT_TRUE(store.bind_layout(2, shared_bit, 16));
+  const BlockHandle h[3] = {store.block(0), store.block(1), store.block(2)};
+  bool changed = false;
+  for (const BlockHandle& k : h) store.update_block(k, changed);
+  float m[16] = {};
+  for (int draw = 0; draw < 40; ++draw) {  // past the change log's 16 entries
+    m[12] = float(draw + 1);
+    ASSERT_TRUE(store.set_matrix(world, m));
+    store.update_block(h[0], changed);
+    EXPECT_TRUE(changed) << "draw " << draw;
+    store.update_block(h[1], changed);
+    EXPECT_FALSE(changed) << "draw " << draw;
+    store.update_block(h[2], changed);
+    EXPECT_FALSE(changed) << "draw " << draw;
+    if (draw % 10 == 9) {
+      const float v[4] = {float(draw), 1, 2, 3};
+      ASSERT_TRUE(store.set(far, std::span<const float>(v)));
+      ASSERT_TRUE(store.set(tint, std::span<const float>(v)));
+      for (int k = 1; k < 3; ++k) {
+        const std::span<const uint8_t> bytes = store.update_block(h[k], changed);
+        EXPECT_TRUE(changed) << "draw " << draw << ", block " << k;
+        float at;
+        std::memcpy(&at, bytes.data(), 4);
+        EXPECT_EQ(at, float(draw)) << "block " << k;
+      }
+    }
+  }
 }
 
 // set_matrix writes a 4x4 matrix that blocks hold whole straight into the packed bytes of

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fx/model/draw_state.h"
 #include "fx/vulkan/apply_stats.h"
 #include "fxkit/message.h"
 
@@ -191,7 +192,15 @@ class Effect {
   bool set(Param p, bool value);
   bool set(Param p, std::span<const float> values);
   bool set(Param p, std::initializer_list<float> values) { return set(p, std::span<const float>(values)); }
-  bool set_matrix(Param p, const float* m16, MatrixOrder order = MatrixOrder::row_major);
+  // Inline for the per-object call (a matrix the application set before, drawn with the
+  // same pass object after object): it writes into the live version's uniform bytes; every
+  // other case takes the checked path.
+  bool set_matrix(Param p, const float* m16, MatrixOrder order = MatrixOrder::row_major) {
+    detail::DrawState* d = draw_ ? *draw_ : nullptr;
+    if (d && d->store_hot(p.index, p.generation, m16, order == MatrixOrder::column_major)) [[likely]]
+      return true;
+    return set_matrix_checked(p, m16, order);
+  }
   bool set(Param p, std::span<const int32_t> values);
   // The current value of ParamInfo::components: floats for float parameters, ints for int,
   // uint and bool ones (false when the kind or the count does not match).
@@ -225,7 +234,11 @@ class Effect {
 
  private:
   friend class Device;
+  bool set_matrix_checked(Param p, const float* m16, MatrixOrder order);
   std::shared_ptr<detail::EffectState> state_;
+  // The live version's per-object state (null when none), which the device refreshes where
+  // versions change: points into *state_.
+  detail::DrawState* const* draw_ = nullptr;
 };
 
 }  // namespace fxkit

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "fx/model/effect_model.h"
-#include "fx/model/matrix_registers.h"
+#include "fx/model/draw_state.h"
 
 namespace fx {
 
@@ -124,12 +124,6 @@ class ParameterStore {
     if (store_hot(p, v, order) || set_matrix_fast(p, v.data(), v.size(), order)) return {};
     return set_matrix_checked(p, v, order);
   }
-  // set_matrix's per-object path alone, for wrappers that keep their own slow path out of
-  // line: true when it stored one 16-float matrix; false means nothing was done (call
-  // set_matrix for the checked path and its status).
-  bool set_matrix_hot(Param p, const float* m16, HostMatrixOrder order) {
-    return store_hot(p, std::span<const float>(m16, 16), order);
-  }
   ParamStatus set_string(Param p, std::string_view v);
   // Getters fill `out` (its size must match the handle's component count).
   ParamStatus get(Param p, float& out) const;
@@ -159,21 +153,32 @@ class ParameterStore {
   // (its bound size, padding zero; valid until the next call on this store), `changed`
   // telling whether they differ from what the last update or write returned. Empty for
   // an invalid handle.
-  // Inline: a renderer calls it per block and draw, and a block nothing was logged for
-  // since its last update (its set_matrix values were written into it) needs no call.
+  // Inline: a renderer calls it per block and draw, and a block none of whose parameters
+  // was logged since its last update (its set_matrix values were written into it; the
+  // per-object matrices of the pass's other block are not its own) needs no call.
   std::span<const uint8_t> update_block(BlockHandle block, bool& changed) {
     if (block.slot < draw_->blocks.size()) [[likely]] {
-      DrawBlock& b = draw_->blocks[block.slot];
-      if (b.quiet && b.seen_changes == draw_->changes) [[likely]] {
-        changed = b.fresh;
-        b.fresh = false;
-        return {b.bytes, b.size};
+      DrawState& d = *draw_;
+      DrawBlock& b = d.blocks[block.slot];
+      const uint64_t changes = d.changes;
+      uint64_t k = b.seen_changes;
+      if (b.quiet && changes - k <= DrawState::kTouchLog) [[likely]] {
+        while (k != changes && !b.may_hold(d.touched[k % DrawState::kTouchLog])) ++k;
+        if (k == changes) [[likely]] {
+          b.seen_changes = changes;
+          changed = b.fresh;
+          b.fresh = false;
+          return {b.bytes, b.size};
+        }
       }
     }
     return update_block_slow(block, changed);
   }
 
   uint32_t generation() const;
+  // The per-object state store_hot and update_block read, for fxkit::Effect's inline
+  // set_matrix (valid for the store's life, a move included).
+  fxkit::detail::DrawState* draw_state() { return draw_; }
 
  private:
   friend std::vector<std::string> remap(const ParameterStore& old_store, ParameterStore& new_store);
@@ -190,77 +195,20 @@ class ParameterStore {
   // or an invalid handle (empty).
   std::span<const uint8_t> update_block_slow(BlockHandle block, bool& changed);
 
-  // The state the per-object calls (store_hot, update_block) read, declared here so that
-  // they inline into a renderer's loop. Impl owns it (draw_ points into *impl_, so a move
-  // keeps it) and keeps it current; docs/rendering.md tells the whole story.
-  struct alignas(32) DrawBlock {  // 32 bytes: a slot's address is a shift
-    const uint8_t* bytes = nullptr;  // the block's packed bytes (Impl::Block::packed)
-    uint32_t size = 0;
-    bool quiet = false;  // written since bind_layout, no pooled parameter: only logged changes or
-                         // set_matrix's writes into `bytes` (fresh) can change it
-    bool fresh = false;  // set_matrix wrote into `bytes` since they were last handed out
-    uint64_t seen_changes = 0;  // DrawState::changes when the block was last brought up to date
-  };
-  // A per-object matrix (World, WorldViewProjection): when a block re-packs a whole 4x4
-  // float group, that block becomes its parameter's hot block, and set_matrix writes the
-  // next value straight into the block's bytes, so drawing object after object with one
-  // pass re-packs nothing. Only a matrix the application has set becomes hot, so store_hot
-  // writes only the application's values and records nothing for remap(); reset() ends it.
-  // Other blocks re-pack from the change log. The pointers are into
-  // Impl's blocks, so bind_layout, which may move them, clears every HotMatrix; the next
-  // re-pack makes one again.
-  struct HotMatrix {
-    DrawBlock* block = nullptr;          // the hot block's; none when null
-    uint64_t* packed_version = nullptr;  // the version its bytes hold (Impl::RunGroup's)
-    uint8_t* to = nullptr;               // the matrix's first byte in the block
-    uint32_t words = 0;                  // the parameter's first word (Impl::Node::offset)
-    bool columns = false;                // the block holds column registers (HLSL's default)
-    // The value is in the hot block's bytes only: store_hot leaves the words behind, as
-    // D3DX effects keep a constant buffer's shadow as the one copy. Impl::sync() brings
-    // them back before anything else reads or partly writes them.
-    bool stale = false;
-  };
-  struct DrawState {
-    std::vector<DrawBlock> blocks;   // by BlockHandle::slot
-    std::vector<HotMatrix> hot;      // per top-level parameter
-    // Per top-level parameter, bumped on every change: a block compares it with what it
-    // packed, so a set costs the same however many blocks hold the parameter.
-    std::vector<uint64_t> versions;
-    // The last kTouchLog changes: touched[k % kTouchLog] is the top-level parameter of
-    // change k (`changes` so far), so a block refreshed a few changes ago re-packs just
-    // those instead of comparing every parameter's version.
-    static constexpr uint32_t kTouchLog = 16;
-    uint64_t changes = 0;
-    uint32_t touched[kTouchLog] = {};
-    uint32_t generation = 0;  // of the handles the store issues now
-  };
+  // The state the per-object calls (store_hot, update_block) read, declared in a header of
+  // its own (fx/model/draw_state.h) so that they inline into a renderer's loop, also through
+  // the public API. Impl owns it (draw_ points into *impl_, so a move keeps it) and keeps it
+  // current; docs/rendering.md tells the whole story.
+  using DrawBlock = fxkit::detail::DrawBlock;
+  using HotMatrix = fxkit::detail::HotMatrix;
+  using DrawState = fxkit::detail::DrawState;
   struct Impl;
   std::unique_ptr<Impl> impl_;
   DrawState* draw_ = nullptr;
 };
 
 inline bool ParameterStore::store_hot(Param p, std::span<const float> v, HostMatrixOrder order) {
-  DrawState& d = *draw_;
-  if (p.generation != d.generation || p.index >= d.hot.size() || v.size() != 16) [[unlikely]] return false;
-  HotMatrix& h = d.hot[p.index];
-  uint64_t& version = d.versions[p.index];
-  // No hot block, or it missed a change (a set through the words): the out-of-line path.
-  if (!h.block || *h.packed_version != version) [[unlikely]] return false;
-  if (!matrix_registers::store_if_changed(h.to, v.data(), h.columns != (order == HostMatrixOrder::column_major)))
-    return true;  // no bit changed
-  h.stale = true;
-  DrawBlock& b = *h.block;
-  b.fresh = true;
-  // Logged for the blocks other than the hot one, which sync() before they re-pack.
-  const uint64_t change = d.changes, next = version + 1;
-  d.touched[change % DrawState::kTouchLog] = p.index;
-  d.changes = change + 1;
-  version = next;
-  *h.packed_version = next;
-  // A block that had taken every earlier change has now taken this one too: its next
-  // update has no logged change to look at.
-  if (b.seen_changes == change) b.seen_changes = change + 1;
-  return true;
+  return v.size() == 16 && draw_->store_hot(p.index, p.generation, v.data(), order == HostMatrixOrder::column_major);
 }
 
 // After a reload: for every parameter of `old_store` that still exists in `new_store` with

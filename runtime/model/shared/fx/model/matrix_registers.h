@@ -1,6 +1,7 @@
-// A 4x4 float matrix stored as four 16-byte registers, for ParameterStore's per-object
-// path: the value is written only when a bit differs from what the registers hold, in the
-// order they hold it (the app's own order or its transpose). SSE2 where the target has it.
+// A 4x4 float matrix stored as four 16-byte registers, for the per-object matrix path
+// (fx/model/draw_state.h): the value is written only when a bit differs from what the registers
+// hold, in the order they hold it (the app's own order or its transpose). SSE2 where the
+// target has it, plain C++ elsewhere. Internal to fxkit (namespace detail).
 #pragma once
 #include <cstdint>
 #include <cstring>
@@ -9,7 +10,7 @@
 #include <xmmintrin.h>
 #endif
 
-namespace fx::matrix_registers {
+namespace fxkit::detail::matrix_registers {
 
 #if defined(__SSE2__)
 // Stores four 16-byte registers one after another at `to` (16 words, any alignment).
@@ -45,4 +46,4 @@ inline bool store_if_changed(uint8_t* to, const float* v, bool transpose) {
   return true;
 }
 
-}  // namespace fx::matrix_registers
+}  // namespace fxkit::detail::matrix_registers
