@@ -61,19 +61,23 @@ std::string preamble_for(const TranslationUnit& unit) {
   return out;
 }
 
-// Makes D3D semantics mean in Vulkan what they meant in Direct3D: a D3D9 vertex shader's
-// POSITION output is the clip position, a D3D9 pixel shader's POSITION input the pixel's
-// position (the vertex shader's output struct is often the pixel shader's input, and fxc
-// drops the input when unused), and pixel shader outputs COLORn / SV_TargetN go to colour
-// attachment n whatever order they were declared in.
+// Makes D3D semantics mean in Vulkan what they meant in Direct3D: a vertex shader's
+// SV_Position output is the clip position even as an `inout` parameter (glslang gives it a
+// location), and so is a D3D9 vertex shader's POSITION; a D3D9 pixel shader's POSITION input
+// is the pixel's position (the vertex shader's output struct is often the pixel shader's
+// input, and fxc drops the input when unused); pixel shader outputs COLORn / SV_TargetN go
+// to colour attachment n whatever order they were declared in.
 void apply_d3d_semantics(CompiledShader& out, const ShaderProfile& profile, ShaderStage stage) {
   ShaderReflection& r = out.reflection;
-  if ((stage == ShaderStage::vertex || stage == ShaderStage::fragment) && profile.dx9()) {
-    const bool vertex = stage == ShaderStage::vertex;
-    std::vector<InterfaceVariable>& side = vertex ? r.outputs : r.inputs;
-    if (std::optional<uint32_t> location =
-            spirv::promote_position(out.spirv, vertex ? spirv::Interface::output : spirv::Interface::input))
-      std::erase_if(side, [&](const InterfaceVariable& v) { return v.location == *location; });
+  std::optional<uint32_t> promoted;
+  if (stage == ShaderStage::vertex) {
+    promoted = profile.dx9() ? spirv::promote_position(out.spirv, spirv::Interface::output,
+                                                       {"POSITION", "POSITION0", "SV_POSITION"})
+                             : spirv::promote_position(out.spirv, spirv::Interface::output, {"SV_POSITION"});
+    if (promoted) std::erase_if(r.outputs, [&](const InterfaceVariable& v) { return v.location == *promoted; });
+  } else if (stage == ShaderStage::fragment && profile.dx9()) {
+    promoted = spirv::promote_position(out.spirv, spirv::Interface::input, {"POSITION", "POSITION0"});
+    if (promoted) std::erase_if(r.inputs, [&](const InterfaceVariable& v) { return v.location == *promoted; });
   }
   if (stage != ShaderStage::fragment) return;
   std::map<uint32_t, uint32_t> remap;

@@ -92,7 +92,8 @@ std::map<uint32_t, std::string> interface_semantics(const std::vector<uint32_t>&
   return out;
 }
 
-std::optional<uint32_t> promote_position(std::vector<uint32_t>& w, Interface side) {
+std::optional<uint32_t> promote_position(std::vector<uint32_t>& w, Interface side,
+                                         std::initializer_list<std::string_view> semantics) {
   constexpr uint32_t kOpTypeFloat = 22, kOpTypeVector = 23, kOpTypePointer = 32;
   constexpr uint32_t kBuiltInFragCoord = 15;
   InterfaceVariables v = interface_variables(w, side);
@@ -110,7 +111,7 @@ std::optional<uint32_t> promote_position(std::vector<uint32_t>& w, Interface sid
     return component != vec4_component.end() && float32.count(component->second);
   };
   for (auto& [id, semantic] : v.semantic_of) {
-    if (semantic != "POSITION" && semantic != "POSITION0") continue;
+    if (std::find(semantics.begin(), semantics.end(), semantic) == semantics.end()) continue;
     auto word = v.location_word.find(id);
     if (word == v.location_word.end() || (side == Interface::input && !is_float4(id))) continue;
     // OpDecorate %id Location N  ->  OpDecorate %id BuiltIn Position|FragCoord (same length).

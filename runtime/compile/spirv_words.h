@@ -2,10 +2,12 @@
 // (semantics, binding remaps, stripping Google HLSL extensions). Private to runtime/compile.
 #pragma once
 #include <cstdint>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -20,12 +22,14 @@ enum class Interface { input, output };
 // UserSemantic (emitted when glslang's hlslFunctionality1 is on). Upper-cased.
 std::map<uint32_t, std::string> interface_semantics(const std::vector<uint32_t>& words, Interface side);
 
-// D3D9 vertex shaders write the clip position to the POSITION semantic, which glslang treats
-// as a user varying: re-decorates that output as BuiltIn Position. A pixel shader's POSITION
-// input (the vertex shader's output struct reused as its input) becomes BuiltIn FragCoord, the
-// pixel's position, as SV_Position is in shader model 4; only a float4 input can. Returns
-// the variable's old location.
-std::optional<uint32_t> promote_position(std::vector<uint32_t>& words, Interface side);
+// Re-decorates the interface variable with one of `semantics` (upper case) as a builtin:
+// an output as BuiltIn Position (a D3D9 vertex shader's POSITION, which glslang treats as a
+// user varying, and an `inout ... : SV_Position` parameter, which glslang gives a location
+// on both sides), an input as BuiltIn FragCoord (a D3D9 pixel shader's POSITION input, the
+// vertex shader's output struct reused as its input: the pixel's position, as SV_Position
+// is in shader model 4; only a float4 input can). Returns the variable's old location.
+std::optional<uint32_t> promote_position(std::vector<uint32_t>& words, Interface side,
+                                         std::initializer_list<std::string_view> semantics);
 
 // Moves interface variables from one location to another (keys are current locations).
 size_t remap_locations(std::vector<uint32_t>& words, Interface side, const std::map<uint32_t, uint32_t>& remap);

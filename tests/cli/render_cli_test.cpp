@@ -182,6 +182,24 @@ technique { pass { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_
   EXPECT_EQ(centre[0], 0);
 }
 
+TEST(FxkitRender, ASpriteShaderTransformingItsPositionInPlaceDraws) {
+  // The stock sprite effects of XNA, FNA and MonoGame: `inout float4 position : SV_Position`.
+  const auto [r, image] = render("sprite", R"(
+float4x4 MatrixTransform;
+sampler TextureSampler : register(s0);
+void SpriteVertexShader(inout float4 color : COLOR0, inout float2 texCoord : TEXCOORD0, inout float4 position : SV_Position) {
+  position = mul(position, MatrixTransform);
+}
+float4 SpritePixelShader(float4 color : COLOR0, float2 texCoord : TEXCOORD0) : SV_Target0 {
+  return tex2D(TextureSampler, texCoord) * color;
+}
+technique SpriteBatch { pass { VertexShader = compile vs_2_0 SpriteVertexShader(); PixelShader = compile ps_2_0 SpritePixelShader(); } }
+)", "--validation --size 32x32");
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_TRUE(image);
+  EXPECT_FALSE(image->constant()) << r.err;
+}
+
 TEST(FxkitRender, AFlatImageIsAWarningNamingTheUnboundTransform) {
   const fxkit_test::CliRun r = render("unbound", R"(
 float4x4 ClipFromObjectXf;

@@ -159,6 +159,24 @@ TEST(ShaderCompiler, LegalizesOnlyShadersThatKeepSamplersInMemory) {
   }
 }
 
+TEST(ShaderCompiler, InoutSvPositionIsTheClipPosition) {
+  // XNA/FNA/MonoGame sprite shaders transform the position in place; glslang gives the
+  // `inout ... : SV_Position` output a location, so nothing reached the rasterizer.
+  const char* src = "float4x4 M;\n"
+                    "void VS(inout float4 color : COLOR0, inout float4 position : SV_Position) {\n"
+                    "  position = mul(position, M);\n}\n";
+  ShaderCompiler compiler;
+  for (const char* profile : {"vs_2_0", "vs_4_0_level_9_1", "vs_5_0"}) {
+    CompiledShader vs = compiler.compile(test::unit(src, ShaderStage::vertex, "VS", profile));
+    ASSERT_TRUE(vs.ok) << profile << vs.info_log;
+    EXPECT_NE(test::spirv_dis(vs.spirv).find("BuiltIn Position"), std::string::npos) << profile;
+    ASSERT_EQ(vs.reflection.outputs.size(), 1u) << profile;
+    EXPECT_EQ(vs.reflection.outputs[0].semantic, "COLOR0");
+    EXPECT_EQ(vs.reflection.inputs.size(), 2u) << profile;  // the input side reads the mesh
+    EXPECT_EQ(test::spirv_val(vs.spirv), "") << profile;
+  }
+}
+
 TEST(ShaderCompiler, D3D9SamplersUnderAnSm4ProfileCompile) {
   // fxc's backwards-compatibility mode: D3D9 sampler syntax with ps_4_0_level_9_1 (the
   // MonoGame templates) or ps_4_0. glslang alone wrote SPIR-V sampling a bare image here.
