@@ -76,14 +76,20 @@ std::string canonical_semantic(std::string s) {
 // vertex shader's output struct, POSITION included, as the pixel shader's input). When the
 // producer leaves one unwritten, the consumer is legalized now, which drops the loads of
 // inputs its code never uses; those are marked unread.
-void legalize_if_inputs_unwritten(const CompiledShader& producer, CompiledShader& consumer) {
+void legalize_if_inputs_unwritten(const CompiledShader& producer, CompiledShader& consumer, DiagnosticSink& sink) {
   if (consumer.legalized) return;
   std::set<std::string> written;
   for (const InterfaceVariable& v : producer.reflection.outputs) written.insert(canonical_semantic(v.semantic));
   if (std::all_of(consumer.reflection.inputs.begin(), consumer.reflection.inputs.end(),
                   [&](const InterfaceVariable& v) { return written.count(canonical_semantic(v.semantic)); }))
     return;
-  if (!spirv::legalize(consumer.spirv)) return;
+  if (!spirv::legalize(consumer.spirv)) {
+    sink.warning("shader-varying-unwritten", {},
+                 std::string(to_string(consumer.reflection.stage)) + " '" + consumer.entry_point +
+                     "': spirv-opt could not legalize it, so the inputs the " + to_string(producer.reflection.stage) +
+                     " stage does not write stay read; Vulkan calls their values undefined");
+    return;
+  }
   consumer.legalized = true;
   const std::set<uint32_t> read = spirv::read_input_locations(consumer.spirv);
   for (InterfaceVariable& v : consumer.reflection.inputs) v.unread = !read.count(v.location);
@@ -97,7 +103,7 @@ void link_varyings(CompiledShader& producer, CompiledShader& consumer, Diagnosti
   if (!std::all_of(producer.reflection.outputs.begin(), producer.reflection.outputs.end(), has_semantic) ||
       !std::all_of(consumer.reflection.inputs.begin(), consumer.reflection.inputs.end(), has_semantic))
     return;
-  legalize_if_inputs_unwritten(producer, consumer);
+  legalize_if_inputs_unwritten(producer, consumer, sink);
   uint32_t next = 0;
   for (InterfaceVariable& v : producer.reflection.outputs) {
     location_of[canonical_semantic(v.semantic)] = next;

@@ -123,6 +123,8 @@ bool spirv_valid(const std::vector<uint32_t>& spirv, spv_target_env env, const g
   auto validate = [&](bool friendly_names, spv_diagnostic* diagnostic) {
     spv_context context = spvContextCreate(env);
     spv_validator_options options = spvValidatorOptionsCreate();
+    // HLSL packing (EShMsgHlslOffsets) is relaxed block layout, implied from Vulkan 1.1 on.
+    spvValidatorOptionsSetRelaxBlockLayout(options, intermediate.usingHlslOffsets());
     spvValidatorOptionsSetScalarBlockLayout(options, intermediate.usingScalarBlockLayout());
     spvValidatorOptionsSetWorkgroupScalarBlockLayout(options, intermediate.usingScalarBlockLayout());
     spvValidatorOptionsSetFriendlyNames(options, friendly_names);

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <map>
 #include <optional>
+#include <set>
 
 namespace fx::vk {
 
@@ -132,6 +133,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
   // dynamic-state and a static one) never overwrite each other's block layouts.
   static std::atomic<uint32_t> next_block_id{0};
   std::vector<uint32_t> resolved;  // texture parameters already resolved (report once)
+  std::set<std::string> told;      // images whose array / depth stand-in warning was given (once)
   for (uint32_t t = 0; t < model.techniques.size(); ++t) {
     const TechniqueInfo& info = model.techniques[t];
     auto tech = std::make_unique<Technique>();
@@ -224,26 +226,29 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
         const fx::SamplerDesc* sampler_desc = nullptr;
         fx::SamplerDesc stage_sampler;
         resolve_image(model, pass_info, image.name, &sampler_desc, &slot.texture_param, stage_sampler);
-        if (image.count > 1)
+        const bool first_mention = told.insert(image.name).second;
+        if (image.count > 1 && first_mention)
           sink.warning("vk-image-array-first", pass_info.range,
                        "pass '" + pass_info.name + "': '" + image.name + "' is an array of " +
                            std::to_string(image.count) + "; every element samples its first element's texture and sampler state");
         if (image.kind != DescriptorKind::sampled_image) {
           SamplerKey vk_desc = sampler_desc ? to_sampler_key(*sampler_desc, pass_sink) : SamplerKey{};
-          // A depth format the device cannot filter linearly is sampled nearest.
-          if (image.shadow && !ctx.supports_format(Texture::depth_stand_in_format(ctx),
-                                                   VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
-            vk_desc.min_filter = vk_desc.mag_filter = VK_FILTER_NEAREST, vk_desc.mip_filter = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+          // A shader that compares (SampleCmp, a shadow sampler) needs a comparing sampler, as
+          // D3D requires a SamplerComparisonState; one declared without ComparisonFunc compares
+          // with LessEqual.
+          if (image.shadow) vk_desc.compare_enable = 1;
           slot.sampler = b->samplers_.get(vk_desc, sink);
           if (!slot.sampler) return nullptr;
         }
         if (image.kind != DescriptorKind::sampler && image.shadow) {
           // Vulkan compares only against depth formats: whatever the effect names (a colour
           // file, nothing), a depth stand-in is bound until set_texture() gives a depth view.
-          sink.warning("vk-texture-depth-stand-in", pass_info.range,
-                       "pass '" + pass_info.name + "': '" + image.name +
-                           "' is sampled with depth comparison, which needs a depth texture; a depth of 1.0 "
-                           "(nothing in shadow) stands in until set_texture()");
+          if (first_mention)
+            sink.warning("vk-texture-depth-stand-in", pass_info.range,
+                         "pass '" + pass_info.name + "': '" + image.name +
+                             "' is sampled with depth comparison, which needs a depth texture; a depth of 1.0 "
+                             "(nothing in shadow) stands in" +
+                             (slot.texture_param != kNoIndex ? " until set_texture() binds a depth view" : ""));
           slot.data = textures.depth_stand_in(image.dim, image.arrayed);
         } else if (image.kind != DescriptorKind::sampler) {
           const TextureInfo* tex = slot.texture_param != kNoIndex ? model.texture_of(slot.texture_param) : nullptr;

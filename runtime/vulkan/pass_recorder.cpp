@@ -204,7 +204,7 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
   std::vector<VkWriteDescriptorSet>& writes = writes_;
   buffers.resize(blocks.size());
   size_t elements = 0;
-  for (const ProgramImage& image : images) elements += std::max(1u, image.count);
+  for (const ProgramImage& image : images) elements += image.count;  // at least 1 (link_program)
   image_infos.resize(elements);
   writes.clear();
   writes.reserve(blocks.size() + images.size());
@@ -223,7 +223,7 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
       const PassResources::Bound& b = r.images_[i];
       // Every element of an array is written (an unwritten one is undefined to sample); all
       // take the image bound to the array (EffectBinding warns, vk-image-array-first).
-      const uint32_t count = std::max(1u, images[i].count);
+      const uint32_t count = images[i].count;
       std::fill_n(image_infos.begin() + static_cast<std::ptrdiff_t>(first), count,
                   VkDescriptorImageInfo{b.sampler, b.view, b.layout});
       auto w = structure<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);

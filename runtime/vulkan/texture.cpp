@@ -105,10 +105,6 @@ std::optional<Texture> Texture::solid(const Context& ctx, const std::array<uint8
 }
 
 VkFormat Texture::depth_stand_in_format(const Context& ctx) {
-  constexpr VkFormatFeatureFlags kLinear =
-      VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
-  if (ctx.supports_format(VK_FORMAT_D32_SFLOAT, kLinear)) return VK_FORMAT_D32_SFLOAT;
-  if (ctx.supports_format(VK_FORMAT_D16_UNORM, kLinear)) return VK_FORMAT_D16_UNORM;
   if (ctx.supports_format(VK_FORMAT_D32_SFLOAT, VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT)) return VK_FORMAT_D32_SFLOAT;
   return VK_FORMAT_D16_UNORM;  // sampleable on every device
 }
@@ -121,7 +117,8 @@ std::optional<Texture> Texture::solid_depth(const Context& ctx, float depth, Ima
   desc.debug_name = "fxkit depth stand-in texture";
   desc.format = depth_stand_in_format(ctx);
   const size_t layers = kind == ImageKind::cube ? 6 : 1;
-  const uint16_t unorm = static_cast<uint16_t>(std::clamp(depth, 0.0f, 1.0f) * 65535.0f + 0.5f);
+  depth = std::clamp(depth, 0.0f, 1.0f);  // what a depth attachment could hold
+  const uint16_t unorm = static_cast<uint16_t>(depth * 65535.0f + 0.5f);
   const size_t texel = desc.format == VK_FORMAT_D32_SFLOAT ? sizeof depth : sizeof unorm;
   std::vector<uint8_t> texels(layers * texel);
   for (size_t i = 0; i < layers; ++i)

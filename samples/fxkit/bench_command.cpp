@@ -33,6 +33,14 @@ void register_bench(CLI::App& app, Runner& run) {
       ->check(CLI::Range(1, 100));
   cmd->add_flag("--json", args->json, "Print the results as JSON");
   cmd->callback([args, &run] {
+#ifndef FXKIT_HAS_RUNTIME
+    run = [] {
+      std::fprintf(stderr, "fxkit bench: this fxkit was built without the runtime (FXKIT_VULKAN=OFF); "
+                           "every benchmark's baseline is glslang or Vulkan\n");
+      return kUsageError;
+    };
+    return;
+#endif
     if (args->processes > 1) {
       run = [args] { return bench_processes(*args); };
       return;
@@ -59,12 +67,6 @@ void register_bench(CLI::App& app, Runner& run) {
       return;
     }
     run = [args] { return bench_frontend(*args); };
-#else
-    run = [] {
-      std::fprintf(stderr, "fxkit bench: this fxkit was built without the runtime (FXKIT_VULKAN=OFF); "
-                           "every benchmark's baseline is glslang or Vulkan\n");
-      return kUsageError;
-    };
 #endif
   });
 }

@@ -159,6 +159,19 @@ TEST(ShaderCompiler, LegalizesOnlyShadersThatKeepSamplersInMemory) {
   }
 }
 
+TEST(ShaderCompiler, HlslPackingValidatesForVulkan10) {
+  // HLSL packs `float2 b` right after `float a` (offset 4): relaxed block layout, which
+  // SPIRV-Tools implies from Vulkan 1.1 on and fxkit's validation must allow for 1.0 too.
+  const char* src = "cbuffer C { float a; float2 b; };\n"
+                    "float4 PS() : SV_Target { return float4(b, a, 1); }\n";
+  CompileOptions options;
+  options.target = VulkanTarget::vulkan_1_0;
+  ShaderCompiler compiler(options);
+  CompiledShader ps = compiler.compile(test::unit(src, ShaderStage::fragment, "PS", "ps_4_0"));
+  ASSERT_TRUE(ps.ok) << ps.info_log;
+  EXPECT_EQ(test::spirv_val(ps.spirv, "vulkan1.0 --relax-block-layout"), "");
+}
+
 TEST(ShaderCompiler, InoutSvPositionIsTheClipPosition) {
   // XNA/FNA/MonoGame sprite shaders transform the position in place; glslang gives the
   // `inout ... : SV_Position` output a location, so nothing reached the rasterizer.

@@ -39,8 +39,7 @@ class Texture {
   // The same for a depth comparison: one texel of `depth` in depth_stand_in_format.
   static std::optional<Texture> solid_depth(const Context& ctx, float depth, ImageKind kind, bool array,
                                             DiagnosticSink& sink);
-  // D32_SFLOAT or D16_UNORM, whichever the device filters linearly (comparison samplers often
-  // filter), else whichever it samples.
+  // D32_SFLOAT where the device samples it, else D16_UNORM (sampleable on every device).
   static VkFormat depth_stand_in_format(const Context& ctx);
   // Borrows the application's view: the texture never destroys it. `layout` is the layout
   // the image will be in when the pass samples it.
