@@ -30,20 +30,26 @@ std::string generator_key(const TextureInfo& t) {
 }
 
 // A 1x1 texel that leaves the shading it feeds neutral: a normal map's "straight out of
-// the surface", or white for colours and masks. Made in the shape the shader samples.
-std::string stand_in_key(bool normal_map, ImageDim dim, bool arrayed) {
-  return std::string(normal_map ? "stand-in:normal:" : "stand-in:white:") + std::to_string(int(dim)) +
-         (arrayed ? ":array" : "");
+// the surface", white for colours and masks, a depth of 1.0 for a depth comparison (a shadow
+// map nothing is in front of). Made in the shape the shader samples.
+enum class StandIn { white, flat_normal, depth };
+
+std::string stand_in_key(StandIn kind, ImageDim dim, bool arrayed) {
+  const char* name = kind == StandIn::flat_normal ? "normal" : kind == StandIn::depth ? "depth" : "white";
+  return std::string("stand-in:") + name + ":" + std::to_string(int(dim)) + (arrayed ? ":array" : "");
 }
 
-EffectTextureData stand_in(bool normal_map, ImageDim dim, bool arrayed) {
+EffectTextureData stand_in(StandIn kind, ImageDim dim, bool arrayed) {
   EffectTextureData d;
-  d.key = stand_in_key(normal_map, dim, arrayed);
+  d.key = stand_in_key(kind, dim, arrayed);
   d.dim = dim;
   d.arrayed = arrayed;
   d.stand_in = true;
+  d.depth = kind == StandIn::depth;
+  if (d.depth) return d;  // uploaded by Texture::solid_depth
+  const uint8_t c = kind == StandIn::flat_normal ? 128 : 255;
   fx::Image image = fx::Image::blank(1, 1, 4);
-  const uint8_t texel[4] = {uint8_t(normal_map ? 128 : 255), uint8_t(normal_map ? 128 : 255), 255, 255};
+  const uint8_t texel[4] = {c, c, 255, 255};
   std::copy(texel, texel + 4, image.pixels.begin());
   d.image = std::move(image);
   return d;
@@ -66,6 +72,7 @@ std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const Effec
                                                                      ImageDim dim, bool arrayed, DiagnosticSink& sink) {
   const Parameter* param = texture.parameter < model.parameters.size() ? &model.parameters[texture.parameter] : nullptr;
   const bool normal_map = param && (iequals(param->semantic, "NORMALMAP") || iequals(param->semantic, "NORMAL"));
+  const StandIn neutral = normal_map ? StandIn::flat_normal : StandIn::white;
   std::string key;
   std::filesystem::path file;
   if (!texture.generator.empty()) {
@@ -83,20 +90,17 @@ std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const Effec
                    "texture file '" + file.string() + "' of '" + (param ? param->name : std::string()) +
                        "' cannot be read; a neutral " + (normal_map ? "flat normal" : "white") +
                        " texture stands in");
-      key = stand_in_key(normal_map, dim, arrayed);
+      key = stand_in_key(neutral, dim, arrayed);
     }
   } else {
-    key = stand_in_key(normal_map, dim, arrayed);
+    key = stand_in_key(neutral, dim, arrayed);
   }
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (auto it = cpu_.find(key); it != cpu_.end()) return it->second;
-  }
+  if (auto hit = cached(key)) return hit;
   // Baking can take a while (BRDF factorisation): done outside the lock, so two threads may
   // race to bake the same table; the first to insert wins and both get equal data.
   EffectTextureData data;
   if (key.rfind("stand-in:", 0) == 0) {
-    data = stand_in(normal_map, dim, arrayed);
+    data = stand_in(neutral, dim, arrayed);
   } else if (!texture.generator.empty()) {
     auto table = shading::bake(texture.generator, texture.generator_params, sink, texture.generator_range);
     if (!table) return nullptr;
@@ -107,27 +111,31 @@ std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const Effec
     if (!image) {
       sink.warning("vk-texture-file-missing", param ? param->range : SourceRange{},
                    "texture file '" + file.string() + "' cannot be decoded; a neutral texture stands in");
-      data = stand_in(normal_map, dim, arrayed);
+      data = stand_in(neutral, dim, arrayed);
     } else {
       data.image = std::move(*image);
     }
   }
   data.key = key;
-  auto shared = std::make_shared<const EffectTextureData>(std::move(data));
-  std::lock_guard<std::mutex> lock(mutex_);
-  return cpu_.emplace(key, std::move(shared)).first->second;
+  return keep(std::move(data));
 }
 
 std::shared_ptr<const EffectTextureData> EffectTextureCache::depth_stand_in(ImageDim dim, bool arrayed) {
-  EffectTextureData data;
-  data.key = "stand-in:depth:" + std::to_string(int(dim)) + (arrayed ? ":array" : "");
-  data.dim = dim;
-  data.arrayed = arrayed;
-  data.stand_in = data.depth = true;
+  if (auto hit = cached(stand_in_key(StandIn::depth, dim, arrayed))) return hit;
+  return keep(stand_in(StandIn::depth, dim, arrayed));
+}
+
+std::shared_ptr<const EffectTextureData> EffectTextureCache::cached(const std::string& key) const {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (auto it = cpu_.find(data.key); it != cpu_.end()) return it->second;
+  auto it = cpu_.find(key);
+  return it != cpu_.end() ? it->second : nullptr;
+}
+
+std::shared_ptr<const EffectTextureData> EffectTextureCache::keep(EffectTextureData data) {
   std::string key = data.key;
-  return cpu_.emplace(key, std::make_shared<const EffectTextureData>(std::move(data))).first->second;
+  auto shared = std::make_shared<const EffectTextureData>(std::move(data));
+  std::lock_guard<std::mutex> lock(mutex_);
+  return cpu_.emplace(std::move(key), std::move(shared)).first->second;  // the first to insert wins
 }
 
 const Texture* EffectTextureCache::gpu(const EffectTextureData& data, DiagnosticSink& sink) {

@@ -63,6 +63,11 @@ class EffectTextureCache {
   void clear();
 
  private:
+  // The entry for `key`, or null (thread-safe).
+  std::shared_ptr<const EffectTextureData> cached(const std::string& key) const;
+  // Inserts `data` under its key; an entry another thread inserted first wins (thread-safe).
+  std::shared_ptr<const EffectTextureData> keep(EffectTextureData data);
+
   const Context* ctx_;
   mutable std::mutex mutex_;  // guards cpu_
   std::map<std::string, std::shared_ptr<const EffectTextureData>> cpu_;
