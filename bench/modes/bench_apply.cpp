@@ -192,7 +192,11 @@ int bench_apply(const BenchArgs& args) {
 
     // The hand-written path's objects: the same pipelines, its own sets and ring.
     const VkDeviceSize align = std::max<VkDeviceSize>(ctx->info().limits.minUniformBufferOffsetAlignment, 16);
-    auto ring = fx::vk::Buffer::create(*ctx, {16u << 20, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, fx::vk::MemoryUsage::upload, "raw ring"}, sink);
+    // Its uniform ring has a slice per frame in flight, as fxkit's (DeviceOptions'
+    // default of two): an engine cannot overwrite what the GPU may still be reading.
+    constexpr VkDeviceSize kRawSlice = 8u << 20;
+    constexpr uint32_t kRawFramesInFlight = 2;
+    auto ring = fx::vk::Buffer::create(*ctx, {kRawSlice * kRawFramesInFlight, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, fx::vk::MemoryUsage::upload, "raw ring"}, sink);
     auto image = fx::Image::blank(1, 1, 4);
     std::fill(image.pixels.begin(), image.pixels.end(), 255);
     auto texture = fx::vk::Texture::from_image(*ctx, image, fx::vk::ColorSpace::linear, sink);
@@ -329,9 +333,10 @@ int bench_apply(const BenchArgs& args) {
     };
     uint8_t* ring_bytes = static_cast<uint8_t*>(ring->mapped());
     uint64_t raw_bytes = 0;  // uniform bytes the last raw frame copied into its ring
+    uint32_t raw_frame = 0;
     auto frame_raw = [&](VkCommandBuffer cmd) __attribute__((noinline)) {
       auto t0 = Clock::now();
-      VkDeviceSize head = 0;
+      VkDeviceSize head = kRawSlice * (raw_frame++ % kRawFramesInFlight);
       VkPipeline bound = VK_NULL_HANDLE;
       uint32_t offsets[8];
       raw_bytes = 0;

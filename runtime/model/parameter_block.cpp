@@ -233,7 +233,9 @@ bool ParameterStore::Impl::refresh(Block& b, DrawBlock& d) {
     // the application's values and has no set_by_app to record.
     if (g.whole4x4 && set_by_app[b.runs[g.first].src]) {
       const WordRun& r = b.runs[g.first];
-      draw.hot[g.top] = {&d, &g.packed_version, b.packed.data() + r.dst, r.src, r.kind == RunKind::columns4x4};
+      const bool shared = std::any_of(draw.blocks.begin(), draw.blocks.end(),
+                                      [&](const DrawBlock& other) { return &other != &d && other.may_hold(g.top); });
+      draw.hot[g.top] = {&d, &g.packed_version, b.packed.data() + r.dst, r.src, r.kind == RunKind::columns4x4, false, shared};
     }
   };
   const uint64_t changes = draw.changes;

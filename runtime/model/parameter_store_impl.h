@@ -249,15 +249,8 @@ struct ParameterStore::Impl {
   }
 
   void touch(const Node& n) {
-    log_change(n.top);
+    draw.log_change(n.top);
     if (n.pooled) ++pool->entries_[n.pool_entry].version;
-  }
-  // touch() without the pool: bumps top-level parameter `top`'s version, logs the change
-  // and returns the new version.
-  uint64_t log_change(uint32_t top) {
-    draw.touched[draw.changes % kTouchLog] = top;
-    ++draw.changes;
-    return ++draw.versions[top];
   }
 
   // Marks node `n`'s words as the application's (set_by_app), or as defaults again. A node

@@ -33,13 +33,14 @@ struct BlockSlot {
 };
 
 struct EffectBinding::Pass {
+  // What apply() reads, once per object, first.
+  std::vector<BlockSlot> blocks;       // in the program's uniform_blocks() order
+  std::vector<uint32_t> ring_offsets;  // of each block's last write, parallel to `blocks`
+  std::unique_ptr<PassResources> resources;
   const PassProgram* program = nullptr;
   ProgramLayout layout;  // the linked layout with same-named blocks told apart
   ShaderProgram shader;
-  std::unique_ptr<PassResources> resources;
   PipelineState state;
-  std::vector<BlockSlot> blocks;       // in the program's uniform_blocks() order
-  std::vector<uint32_t> ring_offsets;  // of each block's last write, parallel to `blocks`
   std::vector<ImageSlot> images;
   std::vector<std::optional<VertexInput>> inputs;  // per vertex layout id
   SourceRange vertex_shader;  // the state naming the vertex shader (where input errors point)
@@ -111,7 +112,7 @@ bool stage_is_glsl(const PassProgram& program) {
 }  // namespace
 
 EffectBinding::EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures)
-    : params_(&params), textures_(&textures), samplers_(ctx) {}
+    : params_(&params), draw_(params.draw_state()), textures_(&textures), samplers_(ctx) {}
 
 EffectBinding::~EffectBinding() {
   techniques_.clear();  // programs before the pipeline cache: nothing else depends on order
@@ -384,33 +385,43 @@ bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const Renderi
 }
 
 bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, DiagnosticSink& sink) {
-  if (!active_ || pass_index >= active_->passes.size()) return unknown_pass(pass_index, sink);
+  if (!active_ || pass_index >= active_->passes.size()) [[unlikely]] return unknown_pass(pass_index, sink);
   Pass& pass = *active_->passes[pass_index];
+  // Locals: the stores below (the ring, the blocks) may alias members as far as the
+  // compiler knows, and this runs once per object.
+  fxkit::detail::DrawState& draw = *draw_;
+  ParameterStore& params = *params_;
+  PassRecorder& recorder = *recorder_;
+  const uint64_t frame = frames_->frame();
   bool moved = false;  // a block was written to a new ring offset
   uint32_t* ring_offset = pass.ring_offsets.data();  // parallel to pass.blocks
   for (BlockSlot& block : pass.blocks) {
     bool changed;
-    const std::span<const uint8_t> bytes = params_->update_block(block.handle, changed);
-    if (!changed && frames_->still_valid(block.frame)) {
+    std::span<const uint8_t> bytes;
+    if (const fxkit::detail::DrawBlock* b = draw.up_to_date(block.handle.slot, changed)) [[likely]]
+      bytes = {b->bytes, b->size};
+    else
+      bytes = params.update_block(block.handle, changed);
+    if (!changed && block.frame == frame && frame != 0) {  // FrameResources::still_valid
       ++ring_offset;
       continue;
     }
-    std::optional<uint32_t> offset = recorder_->write_uniform(
+    std::optional<uint32_t> offset = recorder.write_uniform(
         block.size,
         [&](uint8_t* ring) {
           // A block bind_layout refused has no bytes: the shader reads zeros.
-          if (bytes.size() == block.size) std::memcpy(ring, bytes.data(), block.size);
+          if (bytes.size() == block.size) [[likely]] std::memcpy(ring, bytes.data(), block.size);
           else std::memset(ring, 0, block.size);
         },
         sink);
-    if (!offset) return false;
+    if (!offset) [[unlikely]] return false;
     *ring_offset++ = *offset;
-    block.frame = frames_->frame();
+    block.frame = frame;
     moved = true;
   }
   // The same pass again (the next object of a group): only the uniform offsets can differ.
   if (&pass == applied_ && vertex_layout == applied_layout_ &&
-      recorder_->reapply(*pass.resources, pass.ring_offsets, moved))
+      recorder.reapply(*pass.resources, pass.ring_offsets, moved)) [[likely]]
     return true;
   return apply_pass(pass, vertex_layout, sink);
 }

@@ -9,7 +9,7 @@ namespace fx::vk {
 
 PassRecorder::PassRecorder(const Context& ctx, PipelineCache& pipelines, FrameResources& frames,
                            DynamicStateSet dynamic)
-    : ctx_(&ctx), pipelines_(&pipelines), frames_(&frames), dynamic_(dynamic) {}
+    : frames_(&frames), ctx_(&ctx), pipelines_(&pipelines), dynamic_(dynamic) {}
 
 void PassRecorder::begin(VkCommandBuffer cmd, const RenderingFormats& formats,
                          const VkViewport& viewport, const VkRect2D& scissor) {

@@ -157,21 +157,8 @@ class ParameterStore {
   // was logged since its last update (its set_matrix values were written into it; the
   // per-object matrices of the pass's other block are not its own) needs no call.
   std::span<const uint8_t> update_block(BlockHandle block, bool& changed) {
-    if (block.slot < draw_->blocks.size()) [[likely]] {
-      DrawState& d = *draw_;
-      DrawBlock& b = d.blocks[block.slot];
-      const uint64_t changes = d.changes;
-      uint64_t k = b.seen_changes;
-      if (b.quiet && changes - k <= DrawState::kTouchLog) [[likely]] {
-        while (k != changes && !b.may_hold(d.touched[k % DrawState::kTouchLog])) ++k;
-        if (k == changes) [[likely]] {
-          b.seen_changes = changes;
-          changed = b.fresh;
-          b.fresh = false;
-          return {b.bytes, b.size};
-        }
-      }
-    }
+    if (const DrawBlock* b = draw_->up_to_date(block.slot, changed)) [[likely]]
+      return {b->bytes, b->size};
     return update_block_slow(block, changed);
   }
 

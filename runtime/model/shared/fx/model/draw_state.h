@@ -27,12 +27,12 @@ struct alignas(32) DrawBlock {  // 32 bytes: a slot's address is a shift
 // group, that block becomes its parameter's hot block, and store_hot writes the next value
 // straight into the block's bytes, so drawing object after object with one pass re-packs
 // nothing. Only a matrix the application has set becomes hot, so store_hot writes only the
-// application's values and records nothing for reloads; a reset ends it. Other blocks
-// re-pack from the change log. The pointers are into the store's blocks, which clears every
+// application's values and records nothing for reloads; a reset or a set through the words
+// ends it. Other blocks holding the matrix re-pack from the change log. The pointers are into the store's blocks, which clears every
 // HotMatrix when it may move them; the next re-pack makes one again.
 struct HotMatrix {
   DrawBlock* block = nullptr;          // the hot block's; none when null
-  uint64_t* packed_version = nullptr;  // the version its bytes hold
+  uint64_t* packed_version = nullptr;  // the version its bytes hold (bumped when `shared`)
   uint8_t* to = nullptr;               // the matrix's first byte in the block
   uint32_t words = 0;                  // the parameter's first word in the store
   bool columns = false;                // the block holds column registers (HLSL's default)
@@ -40,46 +40,87 @@ struct HotMatrix {
   // as D3DX effects keep a constant buffer's shadow as the one copy; the store brings them
   // back before anything else reads or partly writes them.
   bool stale = false;
+  // Another bound block may hold the parameter (DrawBlock::may_hold): store_hot logs its
+  // changes for that block. A matrix only its hot block holds (the usual World of one
+  // stage) is not logged, so the other blocks of the pass have no change to look at.
+  bool shared = true;
 };
 
 struct DrawState {
-  std::vector<DrawBlock> blocks;  // by block slot
-  std::vector<HotMatrix> hot;     // per top-level parameter
-  // Per top-level parameter, bumped on every change: a block compares it with what it
-  // packed, so a set costs the same however many blocks hold the parameter.
-  std::vector<uint64_t> versions;
+  // Ordered so that what store_hot and up_to_date read first shares a cache line.
+  uint32_t generation = 0;  // of the handles the store issues now
+  static constexpr uint32_t kTouchLog = 16;
   // The last kTouchLog changes: touched[k % kTouchLog] is the top-level parameter of change
   // k (`changes` so far), so a block refreshed a few changes ago re-packs just those instead
   // of comparing every parameter's version.
-  static constexpr uint32_t kTouchLog = 16;
   uint64_t changes = 0;
+  std::vector<HotMatrix> hot;     // per top-level parameter
+  std::vector<DrawBlock> blocks;  // by block slot
+  // Per top-level parameter, bumped on every change another block may need: a block
+  // compares it with what it packed, so a set costs the same however many blocks hold the
+  // parameter.
+  std::vector<uint64_t> versions;
   uint32_t touched[kTouchLog] = {};
-  uint32_t generation = 0;  // of the handles the store issues now
+
+  // update_block's inline way: block `slot` when no change since its last update is its
+  // own (store_hot's writes into its bytes aside), with `changed` telling whether store_hot
+  // wrote them since they were last handed out. Null: the store re-packs the block.
+  const DrawBlock* up_to_date(uint32_t slot, bool& changed) {
+    if (slot >= blocks.size()) [[unlikely]] return nullptr;
+    DrawBlock& b = blocks[slot];
+    uint64_t k = b.seen_changes;
+    if (!b.quiet || changes - k > kTouchLog) [[unlikely]] return nullptr;
+    while (k != changes && !b.may_hold(touched[k % kTouchLog])) ++k;
+    if (k != changes) return nullptr;
+    b.seen_changes = k;
+    changed = b.fresh;
+    b.fresh = false;
+    return &b;
+  }
 
   // The per-object matrix path: stores the 16 floats at `m16` (columns: in column order)
   // for the top-level parameter `index` of handle generation `generation` when it has a
-  // hot block that took every change to it. False: nothing done, take the store's checked
-  // path.
+  // hot block. False: nothing done, take the store's checked path.
   bool store_hot(uint32_t index, uint32_t handle_generation, const float* m16, bool m16_columns) {
     if (handle_generation != generation || index >= hot.size()) [[unlikely]] return false;
     HotMatrix& h = hot[index];
-    uint64_t& version = versions[index];
-    // No hot block, or it missed a change (a set through the words): the out-of-line path.
-    if (!h.block || *h.packed_version != version) [[unlikely]] return false;
+    // No hot block (none yet, or a set through the words ended it): the out-of-line path.
+    if (!h.block) [[unlikely]] return false;
     if (!matrix_registers::store_if_changed(h.to, m16, h.columns != m16_columns)) return true;  // no bit changed
     h.stale = true;
-    DrawBlock& b = *h.block;
-    b.fresh = true;
-    // Logged for the blocks other than the hot one, which re-pack from the words.
-    const uint64_t change = changes, next = version + 1;
-    touched[change % kTouchLog] = index;
-    changes = change + 1;
-    version = next;
+    h.block->fresh = true;
+    // Only the hot block holds the value: its version and the block's stay equal (nothing
+    // to re-pack). Otherwise the other blocks re-pack it from the words.
+    if (h.shared) [[unlikely]] log_shared(index, h);
+    return true;
+  }
+  // A change of top-level parameter `index` through the words (set(), a reload's remap):
+  // logged for every block holding it, and its hot block, whose bytes now lag the words,
+  // is no longer written in place until that block re-packs it.
+  // Callers bring stale words back (sync) before they write them; the words are then the
+  // value.
+  void log_change(uint32_t index) {
+    hot[index] = {};
+    log(index);
+    ++versions[index];
+  }
+
+ private:
+  void log(uint32_t index) {
+    touched[changes % kTouchLog] = index;
+    ++changes;
+  }
+  // store_hot's change of a matrix other blocks may hold: a new version, which its hot
+  // block has packed already, logged for the others.
+  void log_shared(uint32_t index, HotMatrix& h) {
+    const uint64_t next = versions[index] + 1;
+    versions[index] = next;
     *h.packed_version = next;
+    const uint64_t change = changes;
+    log(index);
     // A block that had taken every earlier change has now taken this one too: its next
     // update has no logged change to look at.
-    if (b.seen_changes == change) b.seen_changes = change + 1;
-    return true;
+    if (h.block->seen_changes == change) h.block->seen_changes = change + 1;
   }
 };
 

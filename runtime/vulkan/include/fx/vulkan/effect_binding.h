@@ -121,20 +121,23 @@ class EffectBinding {
   const VertexInput* vertex_input(Pass& pass, uint32_t layout, DiagnosticSink& sink);
   void update_object_count();
 
-  const EffectModel* model_ = nullptr;
+  // What apply() reads, once per object, first: with the recorder's own first fields, in
+  // as few cache lines as they fit.
   ParameterStore* params_;
+  fxkit::detail::DrawState* draw_;  // params_'s per-object state
+  FrameResources* frames_ = nullptr;
+  Technique* active_ = nullptr;
+  const Pass* applied_ = nullptr;  // the pass the last apply() recorded, and its vertex layout
+  uint32_t applied_layout_ = 0;
+  std::optional<PassRecorder> recorder_;
+  const EffectModel* model_ = nullptr;
   EffectTextureCache* textures_;
   std::optional<PipelineCache> pipelines_;
   SamplerCache samplers_;
-  FrameResources* frames_ = nullptr;
-  std::optional<PassRecorder> recorder_;
   std::vector<std::unique_ptr<Technique>> techniques_;
   std::vector<VertexLayout> layouts_;
   std::vector<std::pair<uint32_t, Texture>> app_textures_;  // texture parameter -> app view
   bool textures_pending_ = true;
-  Technique* active_ = nullptr;
-  const Pass* applied_ = nullptr;  // the pass the last apply() recorded, and its vertex layout
-  uint32_t applied_layout_ = 0;
   RenderingFormats formats_;  // of the begun technique
   int64_t counted_objects_ = 0;
   static std::atomic<int64_t> live_objects_;

@@ -81,16 +81,18 @@ class FrameResources {
  private:
   std::optional<UniformAllocation> ring_full(DiagnosticSink& sink) const;
 
-  const Context* ctx_ = nullptr;
-  Buffer ring_;
-  bool ring_coherent_ = true;
-  std::vector<VkDescriptorPool> pools_;
-  uint32_t frames_in_flight_ = 0;
-  VkDeviceSize slice_ = 0, alignment_ = 256;
+  // What reserve_uniform reads, once per block and draw, first: in one cache line.
+  uint64_t frame_ = 0;
   VkDeviceSize head_ = 0;         // within the current slice
   VkDeviceSize slice_start_ = 0;  // ring offset of the current frame's slice
-  uint64_t frame_ = 0;
-  uint64_t bytes_uploaded_ = 0, sets_allocated_ = 0;
+  VkDeviceSize slice_ = 0, alignment_ = 256;
+  uint64_t bytes_uploaded_ = 0;
+  bool ring_coherent_ = true;
+  Buffer ring_;
+  const Context* ctx_ = nullptr;
+  std::vector<VkDescriptorPool> pools_;
+  uint32_t frames_in_flight_ = 0;
+  uint64_t sets_allocated_ = 0;
 };
 
 }  // namespace fx::vk

@@ -51,15 +51,17 @@ class PassRecorder {
   // `resources` is not that pass's, its textures changed, it pushes descriptors or the
   // frame moved on since: call apply() then. Inline: it runs once per object.
   bool reapply(const PassResources& r, std::span<const uint32_t> uniform_offsets, bool moved = true) {
-    if (&r != applied_ || r.images_changed_ || uniform_offsets.size() != offsets_.size()) return false;
+    // The same resources are the same program: as many offsets as apply() bound.
+    if (&r != applied_ || r.images_changed_) return false;
     if (moved) {
       // apply() left a set valid for its frame bound; a pushed set is pushed by apply().
       if (!rebind_set_ || frames_->frame() != applied_frame_) return false;
       vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_,
                               uint32_t(uniform_offsets.size()), uniform_offsets.data());
       ++stats_.descriptor_binds;
-      // A plain loop: for one or two offsets a memcpy call costs more than the work.
-      for (size_t i = 0; i < uniform_offsets.size(); ++i) offsets_[i] = uniform_offsets[i];
+      // Not copied (this runs once per object): the next apply() finds no bound offsets
+      // and binds its own.
+      offsets_.clear();
     }
     ++stats_.passes;
     return true;
@@ -88,30 +90,32 @@ class PassRecorder {
   bool bind_descriptors(const PassDesc& pass, DiagnosticSink& sink);
   bool images_bound(const PassResources& r, DiagnosticSink& sink) const;
 
-  const Context* ctx_;
-  PipelineCache* pipelines_;
+  // What reapply() reads, once per object, first: together in one or two cache lines.
   FrameResources* frames_;
-  DynamicStateSet dynamic_;
   VkCommandBuffer cmd_ = VK_NULL_HANDLE;
-  RenderingFormats formats_;
-  // What is bound now.
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
-  std::optional<PipelineState> state_;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkDescriptorSet set_ = VK_NULL_HANDLE;
-  std::vector<uint32_t> offsets_;
-  // Scratch reused by every apply so recording allocates nothing once warm.
-  std::vector<uint32_t> next_offsets_;
-  std::vector<VkDescriptorBufferInfo> buffer_infos_;
-  std::vector<VkDescriptorImageInfo> image_infos_;
-  std::vector<VkWriteDescriptorSet> writes_;
-  const PassResources* pushed_ = nullptr;
   // The last successful apply(): its resources, frame, and whether reapply() may bind its
   // set with other offsets (a set, not a push).
   const PassResources* applied_ = nullptr;
   uint64_t applied_frame_ = 0;
   bool rebind_set_ = false;
+  // What is bound now.
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  std::vector<uint32_t> offsets_;  // empty after reapply(): unknown, apply() binds again
   ApplyStats stats_;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  std::optional<PipelineState> state_;
+  const PassResources* pushed_ = nullptr;
+
+  const Context* ctx_;
+  PipelineCache* pipelines_;
+  DynamicStateSet dynamic_;
+  RenderingFormats formats_;
+  // Scratch reused by every apply so recording allocates nothing once warm.
+  std::vector<uint32_t> next_offsets_;
+  std::vector<VkDescriptorBufferInfo> buffer_infos_;
+  std::vector<VkDescriptorImageInfo> image_infos_;
+  std::vector<VkWriteDescriptorSet> writes_;
 };
 
 }  // namespace fx::vk
