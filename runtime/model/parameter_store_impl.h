@@ -141,6 +141,8 @@ struct ParameterStore::Impl {
     if (draw.hot[top].stale) [[unlikely]] sync_words(top);
   }
   [[gnu::noinline]] void sync_words(uint32_t top) const;
+  // Rebuilds draw.holder_first / holder_slots from the blocks' groups (after a bind).
+  void index_holders();
   void sync_all() const {
     for (uint32_t top = 0; top < top_count; ++top) sync(top);
   }

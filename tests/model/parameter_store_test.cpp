@@ -461,6 +461,36 @@ TEST(ParameterStore, SetMatrixPacksBoundMatricesInPlace) {
   }
 }
 
+// A block that holds World with its registers apart (not one 4x4 group) never takes the
+// matrix in place: it re-packs from the words, at every update after set_matrix changed
+// the block that does (store_hot marks it outdated again each time it caught up). Checked
+// against a store given the same values through set().
+TEST(ParameterStore, SetMatrixReachesABlockThatRepacksIt) {
+  auto b = test::build("float4x4 World; float c;");
+  ParameterStore direct(b->model), logged(b->model);
+  const BlockMemberLayout whole[] = {{"World", 0, 64, 0, 16, MatrixOrder::column_major}};
+  const BlockMemberLayout apart[] = {{"World", 0, 128, 0, 32, MatrixOrder::column_major}};
+  for (ParameterStore* s : {&direct, &logged}) {
+    ASSERT_TRUE(s->bind_layout(1, whole, 64));
+    ASSERT_TRUE(s->bind_layout(2, apart, 128));
+  }
+  const Param world = direct.find("World");
+  float m[16];
+  for (int k = 0; k < 6; ++k) {
+    for (int i = 0; i < 16; ++i) m[i] = float(k * 16 + i);
+    ASSERT_TRUE(direct.set_matrix(world, m));
+    ASSERT_TRUE(logged.set(world, std::span<const float>(m)));
+    for (uint32_t id : {1u, 2u}) {
+      bool changed = false;
+      std::span<const uint8_t> got = direct.update_block(direct.block(id), changed);
+      EXPECT_TRUE(changed) << "step " << k << " block " << id;
+      std::vector<uint8_t> want(got.size(), 0xCD);
+      ASSERT_TRUE(logged.write_block(id, want));
+      EXPECT_TRUE(std::equal(got.begin(), got.end(), want.begin())) << "step " << k << " block " << id;
+    }
+  }
+}
+
 // A column-major host matrix takes the same paths as a row-major one (no allocation, the
 // hot block written in place): checked against a store given the transposed floats
 // row-major, into a block with column registers and one with row registers, before the

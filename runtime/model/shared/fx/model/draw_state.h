@@ -16,6 +16,9 @@ struct alignas(32) DrawBlock {  // 32 bytes: a slot's address is a shift
   bool quiet = false;  // written since its layout was bound, no pooled parameter: only logged
                        // changes or store_hot's writes into `bytes` (fresh) can change it
   bool fresh = false;  // store_hot wrote into `bytes` since they were last handed out
+  // store_hot changed a matrix the block holds in another block (its hot one), without a
+  // logged change: the block compares every parameter's version at its next update.
+  bool outdated = false;
   uint64_t seen_changes = 0;  // DrawState::changes when the block was last brought up to date
   // The top-level parameters the block holds, bit `index % 64` each: a logged change whose
   // bit is clear is not this block's (a set bit may be another parameter's).
@@ -40,10 +43,12 @@ struct HotMatrix {
   // as D3DX effects keep a constant buffer's shadow as the one copy; the store brings them
   // back before anything else reads or partly writes them.
   bool stale = false;
-  // Another bound block may hold the parameter (DrawBlock::may_hold): store_hot logs its
-  // changes for that block. A matrix only its hot block holds (the usual World of one
-  // stage) is not logged, so the other blocks of the pass have no change to look at.
-  bool shared = true;
+  // Other bound blocks hold the parameter (another pass's or stage's): the first store_hot
+  // after one of them re-packed it marks them outdated (others_outdated), and bumps the
+  // version they compare. Nothing is logged, so the blocks that do not hold the matrix
+  // (the pass's other stage, usually) have no change to look at.
+  bool shared = false;
+  bool others_outdated = false;
 };
 
 struct DrawState {
@@ -61,6 +66,9 @@ struct DrawState {
   // parameter.
   std::vector<uint64_t> versions;
   uint32_t touched[kTouchLog] = {};
+  // The block slots holding each top-level parameter: holder_slots[holder_first[top]] up
+  // to holder_first[top + 1].
+  std::vector<uint32_t> holder_first, holder_slots;
 
   // update_block's inline way: block `slot` when no change since its last update is its
   // own (store_hot's writes into its bytes aside), with `changed` telling whether store_hot
@@ -89,9 +97,7 @@ struct DrawState {
     if (!matrix_registers::store_if_changed(h.to, m16, h.columns != m16_columns)) return true;  // no bit changed
     h.stale = true;
     h.block->fresh = true;
-    // Only the hot block holds the value: its version and the block's stay equal (nothing
-    // to re-pack). Otherwise the other blocks re-pack it from the words.
-    if (h.shared) [[unlikely]] log_shared(index, h);
+    if (h.shared && !h.others_outdated) [[unlikely]] outdate_others(index, h);
     return true;
   }
   // A change of top-level parameter `index` through the words (set(), a reload's remap):
@@ -101,26 +107,26 @@ struct DrawState {
   // value.
   void log_change(uint32_t index) {
     hot[index] = {};
-    log(index);
+    touched[changes % kTouchLog] = index;
+    ++changes;
     ++versions[index];
   }
 
  private:
-  void log(uint32_t index) {
-    touched[changes % kTouchLog] = index;
-    ++changes;
-  }
-  // store_hot's change of a matrix other blocks may hold: a new version, which its hot
-  // block has packed already, logged for the others.
-  void log_shared(uint32_t index, HotMatrix& h) {
+  // store_hot's first change of a matrix since another block holding it re-packed it: a
+  // new version, which the hot block holds already and the others compare at their next
+  // update (their fast path refused until then).
+  void outdate_others(uint32_t index, HotMatrix& h) {
     const uint64_t next = versions[index] + 1;
     versions[index] = next;
     *h.packed_version = next;
-    const uint64_t change = changes;
-    log(index);
-    // A block that had taken every earlier change has now taken this one too: its next
-    // update has no logged change to look at.
-    if (h.block->seen_changes == change) h.block->seen_changes = change + 1;
+    for (uint32_t i = holder_first[index]; i < holder_first[index + 1]; ++i) {
+      DrawBlock& other = blocks[holder_slots[i]];
+      if (&other == h.block) continue;
+      other.outdated = true;
+      other.quiet = false;
+    }
+    h.others_outdated = true;
   }
 };
 
