@@ -59,6 +59,14 @@ class EffectUnitBuilder {
   // state, instead of glslang's parse error on `interface`.
   void mark_dynamic_linkage();
 
+  // glslang crashes on a geometry shader whose per-vertex input array carries
+  // SV_ClipDistance or SV_CullDistance (KhronosGroup/glslang#2392), as D3D10's
+  // FixedFuncEMU passes its vertex struct on: such a stage says why instead of being compiled.
+  void mark_clip_distance_inputs();
+  // Whether a variable of this type (a struct's members, nested ones too) carries a clip or
+  // cull distance semantic.
+  bool carries_clip_distance(const ast::Variable& v, int depth) const;
+
   // Functions that no HLSL stage of any pass reaches go into the effect's check unit
   // (EffectUnits::uncalled_check), unless they cannot compile in any (stream or patch
   // parameters, interfaces).

@@ -182,6 +182,36 @@ void EffectUnitBuilder::build() {
   collect_passes();
   mark_uncalled_functions();
   mark_dynamic_linkage();
+  mark_clip_distance_inputs();
+}
+
+bool EffectUnitBuilder::carries_clip_distance(const ast::Variable& v, int depth) const {
+  const std::string semantic = ascii_lower(v.semantic);
+  if (semantic.starts_with("sv_clipdistance") || semantic.starts_with("sv_culldistance")) return true;
+  const ast::Struct* s = v.type.definition ? v.type.definition : structure(v.type.name);
+  if (!s || depth > 8) return false;
+  for (const ast::Variable& m : s->members)
+    if (carries_clip_distance(m, depth + 1)) return true;
+  return false;
+}
+
+void EffectUnitBuilder::mark_clip_distance_inputs() {
+  auto check = [&](StageUnit& stage) {
+    if (stage.kind != StageSourceKind::hlsl || stage.stage != ShaderStage::geometry) return;
+    const ast::Function* f = entry_function(stage);
+    if (!f) return;
+    for (const ast::Variable& p : f->params)
+      if (!(p.storage & (ast::kOut | ast::kUniform)) && !p.array_dims.empty() && carries_clip_distance(p, 0)) {
+        invalid(stage, "geometry shader '" + std::string(f->name) + "' reads SV_ClipDistance/SV_CullDistance in its input '" +
+                           std::string(p.name) + "', which glslang cannot compile (KhronosGroup/glslang#2392)");
+        return;
+      }
+  };
+  for (EffectPass& pass : u_.passes_)
+    for (StageUnit& stage : pass.stages) {
+      check(stage);
+      for (StageUnit& choice : stage.choices) check(choice);
+    }
 }
 
 void EffectUnitBuilder::mark_dynamic_linkage() {
