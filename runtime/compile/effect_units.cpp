@@ -354,7 +354,20 @@ std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
   if (stage.kind == StageSourceKind::hlsl) {
     u.language = ShaderLanguage::hlsl;
     u.profile = normalize_profile(stage.profile);
-    u.source = hlsl_code_for(stage.function);
+    // A compile-time argument may name a parameter (`compile vs_2_0 VS(g_NumBones)`): the
+    // wrapper reads it, so the unit declares it too.
+    std::vector<std::string> argument_names;
+    for (const std::string& a : stage.arguments)
+      for (size_t i = 0; i < a.size();) {
+        if (!is_word_char(a[i])) { ++i; continue; }
+        size_t end = i;
+        while (end < a.size() && is_word_char(a[end])) ++end;
+        if (!std::isdigit(static_cast<unsigned char>(a[i]))) argument_names.push_back(a.substr(i, end - i));
+        i = end;
+      }
+    std::vector<std::string_view> roots{stage.function};
+    roots.insert(roots.end(), argument_names.begin(), argument_names.end());
+    u.source = code_for(reached_from(roots));
     if (stage.entry_point != stage.function)  // a wrapper: compile-time arguments, D3D9 system values
       for (const Wrapper& w : wrappers_)
         if (w.function == stage.function && w.arguments == stage.arguments) u.source += w.text;
