@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "effect_shader_text.h"
@@ -192,6 +193,8 @@ class EffectUnitBuilder {
   EffectUnits& u_;
   const ast::Effect& effect_;
   const std::vector<Token>& toks_;
+  // Respelled tokens of flat initializer lists (flat_initializer.h), by token index.
+  std::unordered_map<uint32_t, std::string> flat_initializers_;
   const SourceManager& sm_;
   DiagnosticSink& sink_;
   std::vector<const ast::Function*> functions_;

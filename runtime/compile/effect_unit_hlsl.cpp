@@ -6,6 +6,7 @@
 
 #include "array_cast.h"
 #include "effect_unit_builder.h"
+#include "flat_initializer.h"
 #include "fx/ascii_case.h"
 #include "fx/compile/hlsl_compat.h"
 #include "lvalue_constructor.h"
@@ -201,6 +202,7 @@ std::vector<std::string> EffectUnitBuilder::identifiers_in(ast::TokenSpan span) 
 }
 
 void EffectUnitBuilder::put_hlsl(detail::ShaderTextWriter& w, uint32_t i, uint32_t last) {
+  if (auto grouped = flat_initializers_.find(i); grouped != flat_initializers_.end()) return w.token(toks_[i], grouped->second);
   w.token(toks_[i], detail::glslang_spelling(toks_, i, last));
 }
 

@@ -7,6 +7,7 @@
 #include <unordered_set>
 
 #include "effect_unit_builder.h"
+#include "flat_initializer.h"
 #include "fx/ascii_case.h"
 #include "fx/state_table.h"
 
@@ -173,6 +174,7 @@ void EffectUnitBuilder::build() {
     }
   if (u_.name_.empty()) u_.name_ = "<effect>";
   index_declarations();
+  flat_initializers_ = detail::flat_initializer_spellings(toks_);
   emit_hlsl();
   for (uint32_t i = 0; i < u_.decls_.size(); ++i) {
     for (const std::string& name : u_.decls_[i].names) u_.decls_by_name_[name].push_back(i);
