@@ -75,6 +75,12 @@ class EffectUnitBuilder {
 
   void index_declarations();
 
+  // `uniform` on a parameter means something only to an entry point: a helper's, or an
+  // entry's that a wrapper calls with its compile-time arguments, is left out, since glslang
+  // then skips the argument's conversion (`2` for a uniform float stays an int constant:
+  // invalid SPIR-V). Functions some pass compiles without arguments keep it.
+  void respell_helper_uniforms();
+
   void emit_hlsl();
 
   // fx_5_0 dynamic linkage: glslang has no interfaces, so an interface declaration is left
@@ -193,8 +199,9 @@ class EffectUnitBuilder {
   EffectUnits& u_;
   const ast::Effect& effect_;
   const std::vector<Token>& toks_;
-  // Respelled tokens of flat initializer lists (flat_initializer.h), by token index.
-  std::unordered_map<uint32_t, std::string> flat_initializers_;
+  // Tokens the unit spells otherwise, by index: flat initializer lists (flat_initializer.h)
+  // and the `uniform` of helper functions' parameters (respell_helper_uniforms).
+  std::unordered_map<uint32_t, std::string> respelled_;
   const SourceManager& sm_;
   DiagnosticSink& sink_;
   std::vector<const ast::Function*> functions_;

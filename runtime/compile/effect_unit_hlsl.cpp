@@ -202,7 +202,7 @@ std::vector<std::string> EffectUnitBuilder::identifiers_in(ast::TokenSpan span) 
 }
 
 void EffectUnitBuilder::put_hlsl(detail::ShaderTextWriter& w, uint32_t i, uint32_t last) {
-  if (auto grouped = flat_initializers_.find(i); grouped != flat_initializers_.end()) return w.token(toks_[i], grouped->second);
+  if (auto grouped = respelled_.find(i); grouped != respelled_.end()) return w.token(toks_[i], grouped->second);
   w.token(toks_[i], detail::glslang_spelling(toks_, i, last));
 }
 

@@ -174,7 +174,8 @@ void EffectUnitBuilder::build() {
     }
   if (u_.name_.empty()) u_.name_ = "<effect>";
   index_declarations();
-  flat_initializers_ = detail::flat_initializer_spellings(toks_);
+  respelled_ = detail::flat_initializer_spellings(toks_);
+  respell_helper_uniforms();
   emit_hlsl();
   for (uint32_t i = 0; i < u_.decls_.size(); ++i) {
     for (const std::string& name : u_.decls_[i].names) u_.decls_by_name_[name].push_back(i);
@@ -214,6 +215,27 @@ void EffectUnitBuilder::mark_clip_distance_inputs() {
       check(stage);
       for (StageUnit& choice : stage.choices) check(choice);
     }
+}
+
+void EffectUnitBuilder::respell_helper_uniforms() {
+  std::unordered_set<std::string_view> direct;  // `compile vs_2_0 F()`, `CompileShader(vs_4_0, F())`
+  const size_t n = toks_.size();
+  for (size_t i = 0; i + 4 < n; ++i) {
+    if (toks_[i].is_identifier("compile") && toks_[i + 2].is(TokenKind::identifier) &&
+        toks_[i + 3].is(TokenKind::l_paren) && toks_[i + 4].is(TokenKind::r_paren))
+      direct.insert(toks_[i + 2].text());
+    if (i + 6 < n && toks_[i].is_identifier("CompileShader") && toks_[i + 3].is(TokenKind::comma) &&
+        toks_[i + 4].is(TokenKind::identifier) && toks_[i + 5].is(TokenKind::l_paren) && toks_[i + 6].is(TokenKind::r_paren))
+      direct.insert(toks_[i + 4].text());
+  }
+  for (const ast::Function* f : functions_) {
+    if (f->body.empty() || direct.count(f->name)) continue;
+    uint32_t open = f->tokens.first;
+    while (open + 1 < f->tokens.last && !(toks_[open].is_identifier(f->name) && toks_[open + 1].is(TokenKind::l_paren))) ++open;
+    const uint32_t close = matching_close(open + 1, f->tokens.last);
+    for (uint32_t i = open + 1; i < close; ++i)
+      if (toks_[i].is_identifier("uniform")) respelled_.insert_or_assign(i, std::string(" "));
+  }
 }
 
 void EffectUnitBuilder::mark_dynamic_linkage() {
