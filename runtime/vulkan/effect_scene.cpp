@@ -108,6 +108,35 @@ const std::vector<std::string>& transform_semantics() {
   return all;
 }
 
+// The space a name of one means: 0 object (model, local, mesh), 1 world, 2 view (camera,
+// eye), 3 clip (projection, NDC); -1 for none.
+int space_of(std::string_view word) {
+  for (std::string_view w : {"object", "obj", "model", "local", "mesh"})
+    if (word == w) return 0;
+  if (word == "world") return 1;
+  for (std::string_view w : {"view", "camera", "cam", "eye"})
+    if (word == w) return 2;
+  for (std::string_view w : {"clip", "ndc", "projection", "proj"})
+    if (word == w) return 3;
+  return -1;
+}
+
+// `WorldToCamera`, `ObjectToWorld`, `CameraToWorld`: the transform from one space to another
+// (the products of WORLD, VIEW, PROJECTION, or their inverses going back); "" for a name of
+// another form or one space to itself.
+std::string space_transform(std::string_view core) {
+  constexpr const char* kForward[4][4] = {{"", "WORLD", "WORLDVIEW", "WORLDVIEWPROJECTION"},
+                                          {"", "", "VIEW", "VIEWPROJECTION"},
+                                          {"", "", "", "PROJECTION"},
+                                          {"", "", "", ""}};
+  for (size_t at = core.find("to"); at != std::string_view::npos; at = core.find("to", at + 1)) {
+    const int from = space_of(core.substr(0, at)), to = space_of(core.substr(at + 2));
+    if (from < 0 || to < 0 || from == to) continue;
+    return from < to ? kForward[from][to] : std::string(kForward[to][from]) + "INVERSE";
+  }
+  return {};
+}
+
 }  // namespace
 
 std::string standard_semantic(std::string_view semantic) {
@@ -130,6 +159,8 @@ std::string_view semantic_by_name(std::string_view name) {
   std::string bare;
   for (char c : n)
     if (c != '_') bare.push_back(c);
+  // `WorldMatrixInverseTranspose`: the word Matrix inside the name too.
+  if (size_t at = bare.find("matrix"); at != std::string::npos && at > 0 && at + 6 < bare.size()) bare.erase(at, 6);
   for (std::string_view prefix : kNamePrefixes)
     for (std::string_view suffix : kNameSuffixes) {
       if (bare.size() <= prefix.size() + suffix.size() || !bare.starts_with(prefix) || !bare.ends_with(suffix)) continue;
@@ -138,7 +169,8 @@ std::string_view semantic_by_name(std::string_view name) {
         if (core.starts_with(inverse) && core.size() > inverse.size()) core = core.substr(inverse.size()) + "inverse";
       for (const NamedSemantic& e : kSceneNames)
         if (core == e.name) return e.semantic;
-      const std::string semantic = standard_semantic(core);
+      std::string semantic = standard_semantic(core);
+      if (const std::string between = space_transform(core); !between.empty()) semantic = between;
       for (const std::string& t : transform_semantics())
         if (semantic == t) return t;
     }

@@ -34,10 +34,21 @@ TEST(SceneSemantics, TransformNamesWithOtherDecorationsAreKnown) {
   EXPECT_EQ(semantic_by_name("g_mInvProj"), "PROJECTIONINVERSE");
   EXPECT_EQ(semantic_by_name("ViewProjMat"), "VIEWPROJECTION");
   EXPECT_EQ(semantic_by_name("gWorldXf"), "WORLD");
+  EXPECT_EQ(semantic_by_name("WorldMatrixInverseTranspose"), "WORLDINVERSETRANSPOSE");  // Matrix inside
+  // From one space to another: products going forward, inverses going back.
+  EXPECT_EQ(semantic_by_name("ObjectToWorld"), "WORLD");
+  EXPECT_EQ(semantic_by_name("WorldToCamera"), "VIEW");
+  EXPECT_EQ(semantic_by_name("WorldToNDC"), "VIEWPROJECTION");
+  EXPECT_EQ(semantic_by_name("g_mObjectToView"), "WORLDVIEW");
+  EXPECT_EQ(semantic_by_name("ModelToClip"), "WORLDVIEWPROJECTION");
+  EXPECT_EQ(semantic_by_name("CameraToWorld"), "VIEWINVERSE");
+  EXPECT_EQ(semantic_by_name("ClipToObject"), "WORLDVIEWPROJECTIONINVERSE");
   // A previous frame's transform, an unrelated matrix and non-transforms stay unknown.
   EXPECT_EQ(semantic_by_name("g_mWorldPrev"), "");
   EXPECT_EQ(semantic_by_name("g_mShadowMatrix"), "");
-  EXPECT_EQ(semantic_by_name("LocalToModel"), "");
+  EXPECT_EQ(semantic_by_name("LocalToModel"), "");  // one space: a preview stand-in's identity
+  EXPECT_EQ(semantic_by_name("WorldToShadow"), "");
+  EXPECT_EQ(semantic_by_name("Tonemap"), "");
   EXPECT_EQ(semantic_by_name("Matrix"), "");
   EXPECT_EQ(semantic_by_name("gInv"), "");
   EXPECT_EQ(semantic_by_name("g_vLightDir"), "");
