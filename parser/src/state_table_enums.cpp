@@ -70,8 +70,10 @@ constexpr EnumValue kDegreeValues[] = {
     {"Linear", 1}, {"Quadratic", 2}, {"Cubic", 3}, {"Quintic", 5}};
 constexpr P kDegreePrefix[] = {"D3DDEGREE_"};
 
+// `None` (no channel) is XNA's ColorWriteChannels.None, which MonoGame's effect compiler
+// accepts in a pass (its ParserTest.fx writes `ColorWriteEnable = None;`).
 constexpr EnumValue kColorWriteValues[] = {
-    {"Red", 1}, {"Green", 2}, {"Blue", 4}, {"Alpha", 8}, {"All", 15}};
+    {"Red", 1}, {"Green", 2}, {"Blue", 4}, {"Alpha", 8}, {"All", 15}, {"None", 0}};
 constexpr P kColorWritePrefix[] = {"D3DCOLORWRITEENABLE_", "D3D10_COLOR_WRITE_ENABLE_",
                                    "D3D11_COLOR_WRITE_ENABLE_", "COLOR_WRITE_ENABLE_"};
 

@@ -80,6 +80,9 @@ std::string glslang_safe_name(std::string_view word, bool identifier_follows) {
 
 std::string glslang_spelling(const std::vector<Token>& toks, uint32_t i, uint32_t last) {
   if (!toks[i].is(TokenKind::identifier)) return {};
+  // fxc takes C's `unsigned int` (and `unsigned` alone) for uint; glslang reserves `unsigned`.
+  if (toks[i].text() == "unsigned") return "uint";
+  if (toks[i].text() == "int" && i > 0 && toks[i - 1].is_identifier("unsigned")) return " ";
   return glslang_safe_name(toks[i].text(), i + 1 < last && toks[i + 1].is(TokenKind::identifier));
 }
 

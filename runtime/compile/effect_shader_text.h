@@ -53,7 +53,7 @@ std::string line_directive(uint32_t line, std::string_view file);
 // it (a type: the modifier use), the spelling for glslang ("point__fx"), or "" to keep it.
 std::string glslang_safe_name(std::string_view word, bool identifier_follows);
 // The spelling glslang gets for token `i` of `toks` (`last` ends its declaration): a
-// reserved name renamed, "" to keep the token as written.
+// reserved name renamed, C's `unsigned int` as uint, "" to keep the token as written.
 std::string glslang_spelling(const std::vector<Token>& toks, uint32_t i, uint32_t last);
 // The name as the effect wrote it, for reflection: "light.point__fx" -> "light.point".
 std::string effect_name(std::string_view glslang_name);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "effect_shader_text.h"
@@ -59,12 +60,26 @@ class EffectUnitBuilder {
   // state, instead of glslang's parse error on `interface`.
   void mark_dynamic_linkage();
 
+  // glslang crashes on a geometry shader whose per-vertex input array carries
+  // SV_ClipDistance or SV_CullDistance (KhronosGroup/glslang#2392), as D3D10's
+  // FixedFuncEMU passes its vertex struct on: such a stage says why instead of being compiled.
+  void mark_clip_distance_inputs();
+  // Whether a variable of this type (a struct's members, nested ones too) carries a clip or
+  // cull distance semantic.
+  bool carries_clip_distance(const ast::Variable& v, int depth) const;
+
   // Functions that no HLSL stage of any pass reaches go into the effect's check unit
   // (EffectUnits::uncalled_check), unless they cannot compile in any (stream or patch
   // parameters, interfaces).
   void mark_uncalled_functions();
 
   void index_declarations();
+
+  // `uniform` on a parameter means something only to an entry point: a helper's, or an
+  // entry's that a wrapper calls with its compile-time arguments, is left out, since glslang
+  // then skips the argument's conversion (`2` for a uniform float stays an int constant:
+  // invalid SPIR-V). Functions some pass compiles without arguments keep it.
+  void respell_helper_uniforms();
 
   void emit_hlsl();
 
@@ -184,6 +199,9 @@ class EffectUnitBuilder {
   EffectUnits& u_;
   const ast::Effect& effect_;
   const std::vector<Token>& toks_;
+  // Tokens the unit spells otherwise, by index: flat initializer lists (flat_initializer.h)
+  // and the `uniform` of helper functions' parameters (respell_helper_uniforms).
+  std::unordered_map<uint32_t, std::string> respelled_;
   const SourceManager& sm_;
   DiagnosticSink& sink_;
   std::vector<const ast::Function*> functions_;

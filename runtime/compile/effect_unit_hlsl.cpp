@@ -4,7 +4,9 @@
 #include <cctype>
 #include <unordered_set>
 
+#include "array_cast.h"
 #include "effect_unit_builder.h"
+#include "flat_initializer.h"
 #include "fx/ascii_case.h"
 #include "fx/compile/hlsl_compat.h"
 #include "lvalue_constructor.h"
@@ -167,8 +169,15 @@ void EffectUnitBuilder::emit_function(detail::ShaderTextWriter& w, const ast::Fu
 
 void EffectUnitBuilder::emit_function_tokens(detail::ShaderTextWriter& w, ast::TokenSpan span) {
   std::vector<detail::LvalueConstructor> rewrites = detail::find_lvalue_constructors(toks_, span);
+  std::vector<detail::ArrayCast> casts = detail::find_array_casts(toks_, span);
   auto next = rewrites.begin();
+  auto cast = casts.begin();
   for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) {
+    if (cast != casts.end() && i >= cast->open) {  // the initializer list, then the cast's tokens blank
+      w.token(toks_[i], i == cast->open ? detail::array_cast_initializer(*cast, join_tokens(toks_, {cast->operand, cast->end})) : " ");
+      if (i + 1 == cast->end) ++cast;
+      continue;
+    }
     if (next == rewrites.end() || i < next->type) {
       put_hlsl(w, i, span.last);
     } else if (i == next->type) {
@@ -193,6 +202,7 @@ std::vector<std::string> EffectUnitBuilder::identifiers_in(ast::TokenSpan span) 
 }
 
 void EffectUnitBuilder::put_hlsl(detail::ShaderTextWriter& w, uint32_t i, uint32_t last) {
+  if (auto grouped = respelled_.find(i); grouped != respelled_.end()) return w.token(toks_[i], grouped->second);
   w.token(toks_[i], detail::glslang_spelling(toks_, i, last));
 }
 

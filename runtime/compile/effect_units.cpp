@@ -7,6 +7,7 @@
 #include <unordered_set>
 
 #include "effect_unit_builder.h"
+#include "flat_initializer.h"
 #include "fx/ascii_case.h"
 #include "fx/state_table.h"
 
@@ -173,6 +174,8 @@ void EffectUnitBuilder::build() {
     }
   if (u_.name_.empty()) u_.name_ = "<effect>";
   index_declarations();
+  respelled_ = detail::flat_initializer_spellings(toks_);
+  respell_helper_uniforms();
   emit_hlsl();
   for (uint32_t i = 0; i < u_.decls_.size(); ++i) {
     for (const std::string& name : u_.decls_[i].names) u_.decls_by_name_[name].push_back(i);
@@ -182,6 +185,57 @@ void EffectUnitBuilder::build() {
   collect_passes();
   mark_uncalled_functions();
   mark_dynamic_linkage();
+  mark_clip_distance_inputs();
+}
+
+bool EffectUnitBuilder::carries_clip_distance(const ast::Variable& v, int depth) const {
+  const std::string semantic = ascii_lower(v.semantic);
+  if (semantic.starts_with("sv_clipdistance") || semantic.starts_with("sv_culldistance")) return true;
+  const ast::Struct* s = v.type.definition ? v.type.definition : structure(v.type.name);
+  if (!s || depth > 8) return false;
+  for (const ast::Variable& m : s->members)
+    if (carries_clip_distance(m, depth + 1)) return true;
+  return false;
+}
+
+void EffectUnitBuilder::mark_clip_distance_inputs() {
+  auto check = [&](StageUnit& stage) {
+    if (stage.kind != StageSourceKind::hlsl || stage.stage != ShaderStage::geometry) return;
+    const ast::Function* f = entry_function(stage);
+    if (!f) return;
+    for (const ast::Variable& p : f->params)
+      if (!(p.storage & (ast::kOut | ast::kUniform)) && !p.array_dims.empty() && carries_clip_distance(p, 0)) {
+        invalid(stage, "geometry shader '" + std::string(f->name) + "' reads SV_ClipDistance/SV_CullDistance in its input '" +
+                           std::string(p.name) + "', which glslang cannot compile (KhronosGroup/glslang#2392)");
+        return;
+      }
+  };
+  for (EffectPass& pass : u_.passes_)
+    for (StageUnit& stage : pass.stages) {
+      check(stage);
+      for (StageUnit& choice : stage.choices) check(choice);
+    }
+}
+
+void EffectUnitBuilder::respell_helper_uniforms() {
+  std::unordered_set<std::string_view> direct;  // `compile vs_2_0 F()`, `CompileShader(vs_4_0, F())`
+  const size_t n = toks_.size();
+  for (size_t i = 0; i + 4 < n; ++i) {
+    if (toks_[i].is_identifier("compile") && toks_[i + 2].is(TokenKind::identifier) &&
+        toks_[i + 3].is(TokenKind::l_paren) && toks_[i + 4].is(TokenKind::r_paren))
+      direct.insert(toks_[i + 2].text());
+    if (i + 6 < n && toks_[i].is_identifier("CompileShader") && toks_[i + 3].is(TokenKind::comma) &&
+        toks_[i + 4].is(TokenKind::identifier) && toks_[i + 5].is(TokenKind::l_paren) && toks_[i + 6].is(TokenKind::r_paren))
+      direct.insert(toks_[i + 4].text());
+  }
+  for (const ast::Function* f : functions_) {
+    if (f->body.empty() || direct.count(f->name)) continue;
+    uint32_t open = f->tokens.first;
+    while (open + 1 < f->tokens.last && !(toks_[open].is_identifier(f->name) && toks_[open + 1].is(TokenKind::l_paren))) ++open;
+    const uint32_t close = matching_close(open + 1, f->tokens.last);
+    for (uint32_t i = open + 1; i < close; ++i)
+      if (toks_[i].is_identifier("uniform")) respelled_.insert_or_assign(i, std::string(" "));
+  }
 }
 
 void EffectUnitBuilder::mark_dynamic_linkage() {
@@ -324,7 +378,20 @@ std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
   if (stage.kind == StageSourceKind::hlsl) {
     u.language = ShaderLanguage::hlsl;
     u.profile = normalize_profile(stage.profile);
-    u.source = hlsl_code_for(stage.function);
+    // A compile-time argument may name a parameter (`compile vs_2_0 VS(g_NumBones)`): the
+    // wrapper reads it, so the unit declares it too.
+    std::vector<std::string> argument_names;
+    for (const std::string& a : stage.arguments)
+      for (size_t i = 0; i < a.size();) {
+        if (!is_word_char(a[i])) { ++i; continue; }
+        size_t end = i;
+        while (end < a.size() && is_word_char(a[end])) ++end;
+        if (!std::isdigit(static_cast<unsigned char>(a[i]))) argument_names.push_back(a.substr(i, end - i));
+        i = end;
+      }
+    std::vector<std::string_view> roots{stage.function};
+    roots.insert(roots.end(), argument_names.begin(), argument_names.end());
+    u.source = code_for(reached_from(roots));
     if (stage.entry_point != stage.function)  // a wrapper: compile-time arguments, D3D9 system values
       for (const Wrapper& w : wrappers_)
         if (w.function == stage.function && w.arguments == stage.arguments) u.source += w.text;

@@ -2,6 +2,8 @@
 
 #include <spirv-tools/optimizer.hpp>
 
+#include "spirv_words.h"
+
 namespace fx::spirv {
 namespace {
 
@@ -32,6 +34,7 @@ bool legalize(std::vector<uint32_t>& words) {
 }
 
 void unroll_and_fold(std::vector<uint32_t>& words, spv_target_env env) {
+  request_loop_unroll(words);
   spvtools::Optimizer optimizer(env);
   optimizer.RegisterPass(spvtools::CreateLoopUnrollPass(true))
       .RegisterPass(spvtools::CreateCCPPass())

@@ -17,7 +17,8 @@ spv_target_env vulkan_env(const std::vector<uint32_t>& words);
 // were) when the optimizer fails.
 bool legalize(std::vector<uint32_t>& words);
 
-// fxc unrolls `[unroll]` loops and then needs every texture offset to be an immediate;
+// fxc unrolls `[unroll]` loops (and loops with a constant trip count whose counter reaches a
+// texture offset, unmarked too) and then needs every texture offset to be an immediate;
 // glslang's legalization unrolls nothing, so an offset stepped by the loop stays a variable,
 // which Vulkan allows only for gathers. Full unrolling and constant folding make it a
 // ConstOffset (the folder rewrites the operand once it is constant).

@@ -189,6 +189,16 @@ size_t variable_image_offsets(const std::vector<uint32_t>& w) {
   return found;
 }
 
+size_t request_loop_unroll(std::vector<uint32_t>& w) {
+  constexpr uint32_t kOpLoopMerge = 246, kUnroll = 0x1, kDontUnroll = 0x2;
+  std::vector<size_t> controls;  // word index of each loop's control mask
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t count) {
+    if (op == kOpLoopMerge && count >= 4) controls.push_back(i + 3);
+  });
+  for (size_t at : controls) w[at] = (w[at] | kUnroll) & ~kDontUnroll;
+  return controls.size();
+}
+
 bool opaque_values_in_memory(const std::vector<uint32_t>& w) {
   constexpr uint32_t kOpTypeImage = 25, kOpTypeSampler = 26, kOpTypeSampledImage = 27, kOpTypeArray = 28,
                      kOpTypeRuntimeArray = 29, kOpTypeStruct = 30, kOpTypePointer = 32, kOpFunctionParameter = 55,

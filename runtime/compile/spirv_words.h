@@ -42,6 +42,12 @@ bool strip_hlsl_semantics(std::vector<uint32_t>& words);
 // only for gathers (HLSL's `t.Sample(s, uv, int2(i, 0))` in an [unroll] loop).
 size_t variable_image_offsets(const std::vector<uint32_t>& words);
 
+// Sets the Unroll control (and clears DontUnroll) on every loop; returns how many loops.
+// fxc unrolls a loop with a constant trip count whose counter reaches a texture offset even
+// without `[unroll]`, so such a module's loops are all offered to spirv-opt's unroller,
+// which unrolls only the loops it can.
+size_t request_loop_unroll(std::vector<uint32_t>& words);
+
 // Whether the module keeps an image, sampler or sampled image (or an aggregate holding one)
 // anywhere but UniformConstant memory, or passes one by value: Vulkan forbids both, glslang
 // writes them for HLSL that copies a sampler into a local or passes it to a function, and

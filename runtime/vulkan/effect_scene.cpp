@@ -80,12 +80,100 @@ constexpr NamedSemantic kSceneNames[] = {
     {"screensize", "VIEWPORTPIXELSIZE"},
 };
 
+// The transforms set_standard_semantics computes, and the abbreviations effects write for
+// them (NVIDIA's and 3ds Max's WORLDVIEWPROJ, VIEWPROJ).
+constexpr NamedSemantic kTransformBases[] = {
+    {"WORLDVIEWPROJECTION", "WORLDVIEWPROJECTION"}, {"WORLDVIEWPROJ", "WORLDVIEWPROJECTION"},
+    {"VIEWPROJECTION", "VIEWPROJECTION"}, {"VIEWPROJ", "VIEWPROJECTION"}, {"WORLDVIEW", "WORLDVIEW"},
+    {"PROJECTION", "PROJECTION"}, {"PROJ", "PROJECTION"}, {"WORLD", "WORLD"}, {"VIEW", "VIEW"}};
+// Their derived forms' spellings, longest first: WORLDI, VIEWINV, WORLDIT, VIEWIT.
+constexpr NamedSemantic kTransformSuffixes[] = {
+    {"INVERSETRANSPOSE", "INVERSETRANSPOSE"}, {"INVTRANSPOSE", "INVERSETRANSPOSE"}, {"INVTRANS", "INVERSETRANSPOSE"},
+    {"TRANSPOSE", "TRANSPOSE"}, {"INVERSE", "INVERSE"}, {"INV", "INVERSE"}, {"IT", "INVERSETRANSPOSE"},
+    {"I", "INVERSE"}, {"", ""}};
+
+// What names put around a transform's name: g_m, g_f4x4, m, mat ... and ...Matrix, ...Xf.
+constexpr std::string_view kNamePrefixes[] = {"gm4x4", "gf4x4", "gmat", "gm", "g", "m4x4", "f4x4", "mat", "m", ""};
+constexpr std::string_view kNameSuffixes[] = {"matrix", "mtx", "mat", "xf", ""};
+
+// Every semantic a transform can have (the storage of semantic_by_name's answers).
+const std::vector<std::string>& transform_semantics() {
+  static const std::vector<std::string> all = [] {
+    std::vector<std::string> out;
+    for (std::string_view base : {"WORLD", "VIEW", "PROJECTION", "WORLDVIEW", "VIEWPROJECTION", "WORLDVIEWPROJECTION"})
+      for (std::string_view suffix : {"", "INVERSE", "TRANSPOSE", "INVERSETRANSPOSE"})
+        out.push_back(std::string(base) + std::string(suffix));
+    return out;
+  }();
+  return all;
+}
+
+// The space a name of one means: 0 object (model, local, mesh), 1 world, 2 view (camera,
+// eye), 3 clip (projection, NDC); -1 for none.
+int space_of(std::string_view word) {
+  for (std::string_view w : {"object", "obj", "model", "local", "mesh"})
+    if (word == w) return 0;
+  if (word == "world") return 1;
+  for (std::string_view w : {"view", "camera", "cam", "eye"})
+    if (word == w) return 2;
+  for (std::string_view w : {"clip", "ndc", "projection", "proj"})
+    if (word == w) return 3;
+  return -1;
+}
+
+// `WorldToCamera`, `ObjectToWorld`, `CameraToWorld`: the transform from one space to another
+// (the products of WORLD, VIEW, PROJECTION, or their inverses going back); "" for a name of
+// another form or one space to itself.
+std::string space_transform(std::string_view core) {
+  constexpr const char* kForward[4][4] = {{"", "WORLD", "WORLDVIEW", "WORLDVIEWPROJECTION"},
+                                          {"", "", "VIEW", "VIEWPROJECTION"},
+                                          {"", "", "", "PROJECTION"},
+                                          {"", "", "", ""}};
+  for (size_t at = core.find("to"); at != std::string_view::npos; at = core.find("to", at + 1)) {
+    const int from = space_of(core.substr(0, at)), to = space_of(core.substr(at + 2));
+    if (from < 0 || to < 0 || from == to) continue;
+    return from < to ? kForward[from][to] : std::string(kForward[to][from]) + "INVERSE";
+  }
+  return {};
+}
+
 }  // namespace
+
+std::string standard_semantic(std::string_view semantic) {
+  const std::string s = upper(semantic);
+  for (const NamedSemantic& suffix : kTransformSuffixes) {
+    const std::string_view end = suffix.name;
+    if (s.size() <= end.size() || !std::string_view(s).ends_with(end)) continue;
+    const std::string_view base = std::string_view(s).substr(0, s.size() - end.size());
+    for (const NamedSemantic& b : kTransformBases)
+      if (base == b.name) return std::string(b.semantic) + suffix.semantic;
+  }
+  return s;
+}
 
 std::string_view semantic_by_name(std::string_view name) {
   const std::string n = ascii_lower(name);
   for (const NamedSemantic& e : kSceneNames)
     if (n == e.name) return e.semantic;
+  // The same transforms with other decorations: g_mInvView, WorldViewProjMatrix, g_f4x4World.
+  std::string bare;
+  for (char c : n)
+    if (c != '_') bare.push_back(c);
+  // `WorldMatrixInverseTranspose`: the word Matrix inside the name too.
+  if (size_t at = bare.find("matrix"); at != std::string::npos && at > 0 && at + 6 < bare.size()) bare.erase(at, 6);
+  for (std::string_view prefix : kNamePrefixes)
+    for (std::string_view suffix : kNameSuffixes) {
+      if (bare.size() <= prefix.size() + suffix.size() || !bare.starts_with(prefix) || !bare.ends_with(suffix)) continue;
+      std::string core = bare.substr(prefix.size(), bare.size() - prefix.size() - suffix.size());
+      for (std::string_view inverse : {"inverse", "inv"})  // InvView: the inverse in front
+        if (core.starts_with(inverse) && core.size() > inverse.size()) core = core.substr(inverse.size()) + "inverse";
+      for (const NamedSemantic& e : kSceneNames)
+        if (core == e.name) return e.semantic;
+      std::string semantic = standard_semantic(core);
+      if (const std::string between = space_transform(core); !between.empty()) semantic = between;
+      for (const std::string& t : transform_semantics())
+        if (semantic == t) return t;
+    }
   return {};
 }
 
@@ -117,7 +205,7 @@ uint32_t set_standard_semantics(ParameterStore& params, const EffectModel& model
   uint32_t set = 0;
   for (const Parameter& param : model.parameters) {
     const bool by_name = param.semantic.empty();
-    const std::string sem = by_name ? std::string(semantic_by_name(param.name)) : upper(param.semantic);
+    const std::string sem = by_name ? std::string(semantic_by_name(param.name)) : standard_semantic(param.semantic);
     if (sem.empty() || (by_name && param.is_static())) continue;
     Param p = params.find(param.name);
     const Type* type = params.type(p);

@@ -23,6 +23,19 @@ std::vector<float> identities(const Type& type) {
   return v;
 }
 
+// Whether a name is a transform from object space to object space under two of its names
+// (`LocalToModel`, `MeshToObject`): a part's placement in its model, the identity in a preview.
+bool within_object_space(const std::string& lower_name) {
+  std::string bare;
+  for (char c : lower_name)
+    if (c != '_') bare.push_back(c);
+  constexpr std::string_view kObject[] = {"local", "model", "object", "mesh"};
+  auto object = [&](std::string_view w) { return std::find(std::begin(kObject), std::end(kObject), w) != std::end(kObject); };
+  for (size_t at = bare.find("to"); at != std::string::npos; at = bare.find("to", at + 1))
+    if (object(std::string_view(bare).substr(0, at)) && object(std::string_view(bare).substr(at + 2))) return true;
+  return false;
+}
+
 // The value a rule gives `param`, or empty when none applies.
 std::vector<float> stand_in(const Parameter& param, const Type& type, std::string& rule) {
   const std::string n = ascii_lower(param.name);
@@ -31,6 +44,9 @@ std::vector<float> stand_in(const Parameter& param, const Type& type, std::strin
   if (type.cls == TypeClass::matrix && type.base == BaseType::float32 && type.rows >= 3 && type.cols >= 3 &&
       holds(n, {"bone", "skin", "palette"}))
     return rule = "identity bone palette", identities(type);
+  if (type.cls == TypeClass::matrix && type.base == BaseType::float32 && type.rows >= 3 && type.cols >= 3 &&
+      within_object_space(n))
+    return rule = "identity object-space transform", identities(type);
   if (float_vector && holds(n, {"color", "colour", "diffuse", "albedo", "tint"}) &&
       !holds(n, {"ambient", "emissive", "specular", "fog"})) {
     rule = "visible colour";

@@ -69,6 +69,28 @@ TEST(FxkitRender, AnEngineEffectDrawsWithStandInsAndSaysWhichItGave) {
   EXPECT_GT(centre[0], 60);
 }
 
+// An engine's space-to-space names (Kodu's LocalToModel, WorldToCamera): the transforms
+// between scene spaces are bound by their names, one within object space is the identity.
+TEST(FxkitRender, SpaceToSpaceTransformsAreBoundByTheirNames) {
+  const auto [r, image] = render("spaces", R"(
+float4x4 LocalToModel;
+float4x4 ModelToWorld;
+float4x4 WorldToCamera;
+float4x4 CameraToClip;
+float4 VS(float4 p : POSITION) : POSITION {
+  return mul(mul(mul(mul(p, LocalToModel), ModelToWorld), WorldToCamera), CameraToClip);
+}
+float4 PS() : COLOR0 { return float4(1, 0.5, 0, 1); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)", "--verbose --validation");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* line : {"LocalToModel <- identity object-space transform (stand-in)", "ModelToWorld <- WORLD (by its name)",
+                           "WorldToCamera <- VIEW (by its name)", "CameraToClip <- PROJECTION (by its name)"})
+    EXPECT_NE(r.err.find(line), std::string::npos) << line << "\n" << r.err;
+  ASSERT_TRUE(image);
+  EXPECT_FALSE(image->constant());
+}
+
 TEST(FxkitRender, ParamOverridesAStandIn) {
   const auto [r, image] = render("skinned_param", kSkinned, "--param DiffuseColor=0,0,0,1");
   ASSERT_EQ(r.status, 0) << r.err;

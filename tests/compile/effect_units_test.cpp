@@ -236,6 +236,43 @@ technique11 T {
   EXPECT_TRUE(programs.program("T", "Interface")->find(ShaderStage::vertex)->shader.ok);
 }
 
+// glslang crashes on a geometry shader whose input array carries SV_ClipDistance
+// (KhronosGroup/glslang#2392): that stage says why instead of reaching glslang; a geometry
+// shader that only writes it, and the vertex shader, still compile.
+TEST(EffectUnits, GeometryInputWithClipDistanceSaysWhyInsteadOfCrashing) {
+  fs::path dir = temp_dir("clip_input");
+  write(dir / "clip.fx", R"(float4 g_plane;
+struct Inner { float2 d : SV_CullDistance1; };
+struct V { float4 pos : SV_Position; float d : SV_ClipDistance0; Inner inner; };
+struct G { float4 pos : SV_Position; float d : SV_ClipDistance0; };
+V VS(float4 p : POSITION) { V v; v.pos = p; v.d = dot(p, g_plane); v.inner.d = p.xy; return v; }
+struct P { float4 pos : SV_Position; };
+P VP(float4 p : POSITION) { P v; v.pos = p; return v; }
+[maxvertexcount(3)] void Reads(triangle V input[3], inout TriangleStream<V> s) { s.Append(input[0]); }
+[maxvertexcount(3)] void Writes(triangle P input[3], inout TriangleStream<G> s) {
+  G g; g.pos = input[0].pos; g.d = dot(input[0].pos, g_plane); s.Append(g); }
+float4 PS(float4 p : SV_Position) : SV_Target { return 1; }
+technique10 T {
+  pass Read { SetVertexShader(CompileShader(vs_4_0, VS())); SetGeometryShader(CompileShader(gs_4_0, Reads())); SetPixelShader(CompileShader(ps_4_0, PS())); }
+  pass Write { SetVertexShader(CompileShader(vs_4_0, VP())); SetGeometryShader(CompileShader(gs_4_0, Writes())); SetPixelShader(CompileShader(ps_4_0, PS())); }
+}
+)");
+  auto l = load((dir / "clip.fx").string());
+  ASSERT_FALSE(l->diags.has_errors()) << render_text(l->diags.diagnostics(), l->sm);
+  const StageUnit* reads = l->units->find("T", "Read")->find(ShaderStage::geometry);
+  ASSERT_TRUE(reads);
+  EXPECT_EQ(reads->kind, StageSourceKind::invalid);
+  EXPECT_NE(reads->unsupported.find("'Reads' reads SV_ClipDistance/SV_CullDistance in its input 'input'"),
+            std::string::npos) << reads->unsupported;
+  ShaderCompiler compiler;
+  EffectPrograms programs(*l->units, compiler, l->sm);
+  EXPECT_TRUE(programs.program("T", "Read")->find(ShaderStage::vertex)->shader.ok);
+  const PassProgram* writes = programs.program("T", "Write");
+  ASSERT_TRUE(writes);
+  for (const StageProgram& s : writes->stages)
+    EXPECT_TRUE(s.shader.ok) << to_string(s.stage) << "\n" << render_text(s.diagnostics, l->sm) << s.unit.source;
+}
+
 TEST(EffectPrograms, SdkSampleCompilesAndLinks) {
   auto l = load(data("tests/parser/data/sdk_sample.fx"));
   ShaderCompiler compiler;

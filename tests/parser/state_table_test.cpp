@@ -152,6 +152,12 @@ TEST(StateTable, EnumSpellingsOfD3D9AndD3D10) {
   EXPECT_EQ(find_enum(depth, "LESS_EQUAL"), 4);
   EXPECT_EQ(find_enum(depth, "D3DCMP_LESSEQUAL"), 4);
 
+  // XNA/MonoGame's ColorWriteChannels spell the empty mask None (MonoGame's ParserTest.fx).
+  const StateInfo& write = *find_state("ColorWriteEnable", StateBlock::pass);
+  EXPECT_EQ(find_enum(write, "None"), 0);
+  EXPECT_EQ(find_enum(write, "All"), 15);
+  EXPECT_EQ(find_enum(*find_state("RenderTargetWriteMask", StateBlock::blend_state), "D3D11_COLOR_WRITE_ENABLE_ALL"), 15);
+
   const StateInfo& arg = *find_state("ColorArg1", StateBlock::pass);
   EXPECT_EQ(find_enum(arg, "Complement"), 0x10);
   EXPECT_EQ(find_enum(arg, std::string(200, 'x')), std::nullopt);

@@ -41,7 +41,15 @@ struct SceneBinding {
 // "WORLDVIEWPROJECTION"; "" for other names. The table (docs/parameters.md, "Scene
 // parameters by name") holds the names of the DirectX SDK samples, FX Composer, RenderMonkey
 // and common engine conventions.
+// Beyond the table, a transform's name with other decorations is known too: prefixes
+// (g_m, g_f4x4, m, mat), suffixes (Matrix, Xf), Inv in front (g_mInvView -> VIEWINVERSE).
 std::string_view semantic_by_name(std::string_view name);
+
+// A semantic in the spelling set_standard_semantics reads, upper case: the abbreviations
+// effects write for transforms (WORLDVIEWPROJ, VIEWPROJ, WORLDI, VIEWINV, WORLDIT) become
+// WORLDVIEWPROJECTION, VIEWPROJECTION, WORLDINVERSE, VIEWINVERSE, WORLDINVERSETRANSPOSE;
+// any other semantic is only upper-cased.
+std::string standard_semantic(std::string_view semantic);
 
 // Sets every parameter whose semantic is a standard one: WORLD, VIEW, PROJECTION, their
 // products (WORLDVIEW, VIEWPROJECTION, WORLDVIEWPROJECTION), inverses and transposes
