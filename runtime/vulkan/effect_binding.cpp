@@ -406,12 +406,14 @@ bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, Diagnosti
       ++ring_offset;
       continue;
     }
+    // Captured by value: nothing of this loop has to live in memory across the copy.
+    const uint32_t size = block.size;
     std::optional<uint32_t> offset = recorder.write_uniform(
-        block.size,
-        [&](uint8_t* ring) {
+        size,
+        [from = bytes.data(), held = bytes.size(), size](uint8_t* ring) {
           // A block bind_layout refused has no bytes: the shader reads zeros.
-          if (bytes.size() == block.size) [[likely]] std::memcpy(ring, bytes.data(), block.size);
-          else std::memset(ring, 0, block.size);
+          if (held == size) [[likely]] std::memcpy(ring, from, size);
+          else std::memset(ring, 0, size);
         },
         sink);
     if (!offset) [[unlikely]] return false;
