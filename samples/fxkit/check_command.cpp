@@ -177,8 +177,11 @@ int run_check(CheckArgs args) {
     std::fprintf(stderr, "fxkit check: cannot write '%s'\n", args.output.c_str());
     return kUsageError;
   }
-  // Silent for one clean file, as compilers are; otherwise the counts a CI log shows.
-  if (n > 1 || run.errors() || run.warnings() || !args.output.empty())
+  // Silent for one clean file named on the command line, as compilers are; otherwise the
+  // counts a CI log shows (a folder or a shard that held one file, or none, included).
+  const bool one_named_file = n == 1 && args.paths.size() == 1 && args.shard.empty() &&
+                              std::filesystem::is_regular_file(args.paths[0]);
+  if (!one_named_file || run.errors() || run.warnings() || !args.output.empty())
     std::fprintf(stderr, "%s\n", summary_line(run).c_str());
   return run.failed() ? kInputErrors : kSuccess;
 }

@@ -92,6 +92,19 @@ TEST(CheckFolder, ShardsSplitTheFilesStably) {
     EXPECT_EQ(once, files());
   }
   EXPECT_EQ(total, 20u);
+  // A shard, or a folder, that holds one clean file still says what it checked (a named
+  // file alone is silent). The files' shards depend on their paths, which differ per run.
+  ShaderFolder one("one");
+  one.write("only/a.fx", "technique T { pass P { } }\n");
+  EXPECT_EQ(count(run_fxkit("check --syntax-only " + one.path("only"), true).err), 1u);
+  EXPECT_EQ(count(run_fxkit("check --syntax-only " + one.path("only/a.fx"), true).err), size_t(-1));
+  size_t in_shards = 0;
+  for (const char* shard : {"1/2", "2/2"}) {
+    const size_t c = count(run_fxkit(std::string("check --syntax-only --shard ") + shard + " " + one.path("only"), true).err);
+    EXPECT_NE(c, size_t(-1)) << shard << ": no summary";
+    if (c != size_t(-1)) in_shards += c;
+  }
+  EXPECT_EQ(in_shards, 1u);
   EXPECT_EQ(run_fxkit("check --shard 0/3 " + f.path("s")).status, 2);
   EXPECT_EQ(run_fxkit("check --shard 4/3 " + f.path("s")).status, 2);
   EXPECT_EQ(run_fxkit("check --shard x " + f.path("s")).status, 2);
