@@ -337,10 +337,16 @@ int bench_apply(const BenchArgs& args) {
     auto frame_raw = [&](VkCommandBuffer cmd) __attribute__((noinline)) {
       auto t0 = Clock::now();
       VkDeviceSize head = kRawSlice * (raw_frame++ % kRawFramesInFlight);
+      const VkDeviceSize slice_end = head + kRawSlice;
       VkPipeline bound = VK_NULL_HANDLE;
       uint32_t offsets[8];
       raw_bytes = 0;
       auto upload = [&](const RawPass::Block& block) {
+        if (head + block.size > slice_end) [[unlikely]] {  // a bench of more objects: fail, not overwrite
+          if (ok) sink.error("bench-raw-ring-full", {}, "the hand-written path's uniform slice is too small");
+          ok = false;
+          return uint32_t(slice_end - kRawSlice);
+        }
         std::memcpy(ring_bytes + head, block.bytes.data(), block.size);
         const auto at = uint32_t(head);
         head += (block.size + align - 1) / align * align;

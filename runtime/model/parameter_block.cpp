@@ -329,6 +329,7 @@ std::vector<std::string> remap(const ParameterStore& old_store, ParameterStore& 
     }
     if (!b.pooled && a.words == b.words && a.words != 0) {
       o.sync(i);
+      n.sync(j);  // the new store may hold a value set_matrix wrote in place: words first
       const uint32_t* from = o.data(a);
       uint32_t* to = n.data(b);
       for (uint32_t w = 0; w < a.words; ++w) {

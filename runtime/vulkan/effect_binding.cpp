@@ -36,7 +36,7 @@ struct EffectBinding::Pass {
   // What apply() reads, once per object, first.
   std::vector<BlockSlot> blocks;       // in the program's uniform_blocks() order
   std::vector<uint32_t> ring_offsets;  // of each block's last write, parallel to `blocks`
-  std::unique_ptr<PassResources> resources;
+  std::unique_ptr<PassResources> resources;  // of `shader`: released before it (~Pass)
   const PassProgram* program = nullptr;
   ProgramLayout layout;  // the linked layout with same-named blocks told apart
   ShaderProgram shader;
@@ -48,6 +48,8 @@ struct EffectBinding::Pass {
   // binding, so apply() looks the key up once per layout and format change, not per call.
   RenderingFormats pipeline_formats;
   std::vector<VkPipeline> pipelines;
+
+  ~Pass() { resources.reset(); }  // declared first for apply(), it must not outlive the program
 };
 
 struct EffectBinding::Technique {
@@ -112,9 +114,10 @@ bool stage_is_glsl(const PassProgram& program) {
 }  // namespace
 
 EffectBinding::EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures)
-    : params_(&params), draw_(params.draw_state()), textures_(&textures), samplers_(ctx) {}
+    : params_(&params), textures_(&textures), samplers_(ctx) {}
 
 EffectBinding::~EffectBinding() {
+  recorder_.reset();  // declared first for apply(), it must not outlive what it references
   techniques_.clear();  // programs before the pipeline cache: nothing else depends on order
   live_objects_ -= counted_objects_;
 }
@@ -389,7 +392,7 @@ bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, Diagnosti
   Pass& pass = *active_->passes[pass_index];
   // Locals: the stores below (the ring, the blocks) may alias members as far as the
   // compiler knows, and this runs once per object.
-  fxkit::detail::DrawState& draw = *draw_;
+  fxkit::detail::DrawState& draw = *params_->draw_state();
   ParameterStore& params = *params_;
   PassRecorder& recorder = *recorder_;
   const uint64_t frame = frames_->frame();

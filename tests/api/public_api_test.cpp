@@ -577,5 +577,73 @@ TEST_F(PublicApiTest, PreviewDefaultsGiveAColourWithoutADefaultAVisibleValue) {
   EXPECT_TRUE(effect.set_preview_defaults().empty()) << "a second call finds nothing left zero";
 }
 
+// A per-object matrix held by both passes of one technique and by another
+// technique's pass (shared: store_hot marks the other holders outdated), drawn object after
+// object with the matrix set before each, techniques mixed within a frame.
+TEST_F(PublicApiTest, APerObjectMatrixEveryPassAndTechniqueHoldsDrawsItsObjects) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  const std::string path = write_effect("api_shared_world.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float4 Tint = {0.9, 0.6, 0.3, 1};
+float4 Tint2 = {0.1, 0.2, 0.9, 1};
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
+float4 PS() : COLOR0 { return Tint; }
+float4 PS2() : COLOR0 { return Tint2; }
+technique two { pass p0 { CullMode = None; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); }
+                pass p1 { CullMode = None; ZFunc = LessEqual; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS2(); } }
+technique one { pass p0 { CullMode = None; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)");
+  fxkit::Effect effect = r.device->load(path);
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  const fxkit::Param wvp = effect.param("WorldViewProjection");
+  float on[16], off[16];
+  ASSERT_TRUE(effect.get(wvp, std::span<float>(on)));
+  std::copy_n(on, 16, off);
+  off[12] += 1000.f;
+  fxkit::Technique two = effect.technique("two"), one = effect.technique("one");
+  ASSERT_TRUE(effect.set_matrix(wvp, on));
+  struct Obj { fxkit::Technique* t; const float* m; };
+  auto frame = [&](std::vector<Obj> objs) {
+    r.device->begin_frame();
+    EXPECT_TRUE(r.device->submit([&](VkCommandBuffer cmd) {
+      r.image->begin(cmd);
+      fxkit::Technique* begun = nullptr;
+      for (const Obj& o : objs) {
+        if (o.t != begun) {
+          if (begun) begun->end();
+          begun = o.t;
+          EXPECT_TRUE(begun->begin(cmd, r.image->viewport(), r.image->scissor()));
+        }
+        EXPECT_TRUE(effect.set_matrix(wvp, o.m));
+        for (uint32_t p = 0; p < o.t->pass_count(); ++p)
+          if (o.t->apply(p)) r.mesh->draw(cmd);
+      }
+      if (begun) begun->end();
+      r.image->end(cmd);
+    }));
+    const auto rgba = r.image->read_rgba8();
+    const size_t c = (size_t(r.image->height() / 2) * r.image->width() + r.image->width() / 2) * 4;
+    return std::array<uint8_t, 3>{rgba.at(c), rgba.at(c + 1), rgba.at(c + 2)};
+  };
+  const auto blue = frame({{&two, on}});
+  const auto orange = frame({{&one, on}});
+  const auto none = frame({{&two, off}});
+  ASSERT_NE(blue, orange);
+  ASSERT_NE(blue, none);
+  for (int rep = 0; rep < 3; ++rep) {
+    EXPECT_EQ(frame({{&two, off}, {&two, on}}), blue) << rep;
+    EXPECT_EQ(frame({{&two, on}, {&two, off}}), blue) << rep;
+    EXPECT_EQ(frame({{&two, off}, {&two, on}, {&two, off}}), blue) << rep;
+    EXPECT_EQ(frame({{&two, off}, {&two, off}, {&two, off}}), none) << rep;
+    EXPECT_EQ(frame({{&one, off}, {&two, off}, {&one, on}, {&two, off}}), orange) << rep;
+    EXPECT_EQ(frame({{&one, on}, {&two, off}, {&one, off}, {&two, on}}), blue) << rep;
+    EXPECT_EQ(frame({{&two, on}, {&one, off}, {&two, off}, {&one, off}}), blue) << rep;
+    EXPECT_EQ(frame({{&one, off}, {&one, off}, {&two, off}, {&one, off}}), none) << rep;
+  }
+  EXPECT_EQ(ctx().validation_error_count(), 0u) << describe_messages(ctx());
+}
+
 }  // namespace
 }  // namespace fx::vk::testing

@@ -134,6 +134,27 @@ TEST(RemapDefaults, MatricesSetPerObjectAreTheApplications) {
 
 // Shared parameters keep the pool's value: the pool is the application's, shared with
 // effects whose files may give other defaults.
+// remap() into a store whose own matrix set_matrix last wrote in place (in its hot block
+// only): the value the old store never set is the new store's newest one, not the one its
+// words held before.
+TEST(RemapDefaults, AMatrixWrittenInPlaceInTheNewStoreKeepsItsNewestValue) {
+  auto b = test::build("float4x4 World; float c;");
+  ParameterStore old_store(b->model), next(b->model);
+  const BlockMemberLayout whole[] = {{"World", 0, 64, 0, 16, MatrixOrder::column_major}};
+  ASSERT_TRUE(next.bind_layout(1, whole, 64));
+  const Param world = next.find("World");
+  float x[16], y[16];
+  for (int i = 0; i < 16; ++i) x[i] = float(i), y[i] = float(100 + i);
+  ASSERT_TRUE(next.set_matrix(world, x));  // through the words
+  bool changed = false;
+  next.update_block(next.block(1), changed);  // the block takes World in place from now on
+  ASSERT_TRUE(next.set_matrix(world, y));     // in place: the words lag
+  remap(old_store, next);
+  float got[16];
+  ASSERT_TRUE(next.get(next.find("World"), std::span<float>(got)));
+  EXPECT_EQ(got[1], 101.0f);
+}
+
 TEST(RemapDefaults, SharedParametersKeepThePoolsValue) {
   auto v1 = test::build("shared float Time = 1; float Kd = 0.6;");
   auto v2 = test::build("shared float Time = 5; float Kd = 0.6;");

@@ -154,8 +154,8 @@ class ParameterStore {
   // telling whether they differ from what the last update or write returned. Empty for
   // an invalid handle.
   // Inline: a renderer calls it per block and draw, and a block none of whose parameters
-  // was logged since its last update (its set_matrix values were written into it; the
-  // per-object matrices of the pass's other block are not its own) needs no call.
+  // was logged since its last update and that set_matrix did not mark outdated (its
+  // set_matrix values were written into it) needs no call.
   std::span<const uint8_t> update_block(BlockHandle block, bool& changed) {
     if (const DrawBlock* b = draw_->up_to_date(block.slot, changed)) [[likely]]
       return {b->bytes, b->size};
@@ -172,8 +172,8 @@ class ParameterStore {
   // set_matrix's per-object path, inline: a current handle of a float4x4 with a hot block
   // (below), 16 floats. True when it stored the value (nothing to report).
   bool store_hot(Param p, std::span<const float> v, HostMatrixOrder order);
-  // set_matrix's out-of-line path for a current handle without a hot block (or whose hot
-  // block missed a change): into the words when the floats fit the node as they are; false
+  // set_matrix's out-of-line path for a current handle without a hot block (none yet, or
+  // a set through the words ended it): into the words when the floats fit the node as they are; false
   // sends the call to the checked path.
   bool set_matrix_fast(Param p, const float* v, size_t count, HostMatrixOrder order);
   // Everything else, with the status that says what is wrong.

@@ -13,8 +13,9 @@ namespace fxkit::detail {
 struct alignas(32) DrawBlock {  // 32 bytes: a slot's address is a shift
   const uint8_t* bytes = nullptr;  // the block's packed bytes
   uint32_t size = 0;
-  bool quiet = false;  // written since its layout was bound, no pooled parameter: only logged
-                       // changes or store_hot's writes into `bytes` (fresh) can change it
+  bool quiet = false;  // written since its layout was bound, no pooled parameter, not
+                       // outdated: only logged changes or store_hot's writes into `bytes`
+                       // (fresh) can change it
   bool fresh = false;  // store_hot wrote into `bytes` since they were last handed out
   // store_hot changed a matrix the block holds in another block (its hot one), without a
   // logged change: the block compares every parameter's version at its next update.
@@ -31,11 +32,12 @@ struct alignas(32) DrawBlock {  // 32 bytes: a slot's address is a shift
 // straight into the block's bytes, so drawing object after object with one pass re-packs
 // nothing. Only a matrix the application has set becomes hot, so store_hot writes only the
 // application's values and records nothing for reloads; a reset or a set through the words
-// ends it. Other blocks holding the matrix re-pack from the change log. The pointers are into the store's blocks, which clears every
+// ends it. Other blocks holding the matrix are marked outdated (not logged) and re-pack it
+// from the words. The pointers are into the store's blocks, which clears every
 // HotMatrix when it may move them; the next re-pack makes one again.
 struct HotMatrix {
   DrawBlock* block = nullptr;          // the hot block's; none when null
-  uint64_t* packed_version = nullptr;  // the version its bytes hold (bumped when `shared`)
+  uint64_t* packed_version = nullptr;  // the version its bytes hold (see outdate_others)
   uint8_t* to = nullptr;               // the matrix's first byte in the block
   uint32_t words = 0;                  // the parameter's first word in the store
   bool columns = false;                // the block holds column registers (HLSL's default)

@@ -122,9 +122,8 @@ class EffectBinding {
   void update_object_count();
 
   // What apply() reads, once per object, first: with the recorder's own first fields, in
-  // as few cache lines as they fit.
+  // as few cache lines as they fit. The recorder is released first (~EffectBinding).
   ParameterStore* params_;
-  fxkit::detail::DrawState* draw_;  // params_'s per-object state
   FrameResources* frames_ = nullptr;
   Technique* active_ = nullptr;
   const Pass* applied_ = nullptr;  // the pass the last apply() recorded, and its vertex layout
