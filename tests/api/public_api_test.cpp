@@ -219,6 +219,23 @@ TEST_F(PublicApiTest, BeginFrameSwapsInAnEditAndKeepsTheLastGoodEffectAfterABrok
   EXPECT_GT(green[1], green[0] + 40) << "the edited default tint is drawn";
 }
 
+// A framed scene's WorldViewProjection for per-object draws: `on` draws the mesh in view,
+// `off` moves clip x far off screen (row 3, D3D order).
+struct PerObjectMatrix {
+  fxkit::Param wvp;
+  float on[16] = {}, off[16] = {};
+  bool ok = false;
+};
+PerObjectMatrix per_object_matrix(fxkit::Effect& effect, float radius) {
+  PerObjectMatrix m;
+  effect.set_scene(fxkit::Scene::framing(radius, 1.0f));
+  m.wvp = effect.param("WorldViewProjection");
+  m.ok = effect.get(m.wvp, std::span<float>(m.on));
+  std::copy_n(m.on, 16, m.off);
+  m.off[12] += 1000.f;
+  return m;
+}
+
 // Effect::set_matrix per object (inline once the matrix is the application's and its block
 // is hot): each object of a frame draws with its own value, a getter reads the last one back,
 // and a handle from before a reload sets the new version's matrix.
@@ -228,12 +245,11 @@ TEST_F(PublicApiTest, SetMatrixPerObjectDrawsEachValueAndFollowsReloads) {
   const std::string path = write_effect("api_per_object.fx", lit_effect());
   fxkit::Effect effect = r.device->load(path);
   ASSERT_TRUE(effect.ok()) << text(effect.messages());
-  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
-  const fxkit::Param wvp = effect.param("WorldViewProjection");
-  float on[16], off[16];
-  ASSERT_TRUE(effect.get(wvp, std::span<float>(on)));
-  std::copy_n(on, 16, off);
-  off[12] += 1000.f;  // row 3 (D3D order): clip x moved far off screen
+  const PerObjectMatrix m = per_object_matrix(effect, r.mesh->radius());
+  ASSERT_TRUE(m.ok);
+  const fxkit::Param wvp = m.wvp;
+  const float* on = m.on;
+  const float* off = m.off;
   fxkit::Technique technique = effect.select();
   ASSERT_TRUE(effect.set_matrix(wvp, on));
   const auto sphere = draw(*r.device, technique, *r.mesh, *r.image);
@@ -596,12 +612,11 @@ technique one { pass p0 { CullMode = None; VertexShader = compile vs_2_0 VS(); P
 )");
   fxkit::Effect effect = r.device->load(path);
   ASSERT_TRUE(effect.ok()) << text(effect.messages());
-  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
-  const fxkit::Param wvp = effect.param("WorldViewProjection");
-  float on[16], off[16];
-  ASSERT_TRUE(effect.get(wvp, std::span<float>(on)));
-  std::copy_n(on, 16, off);
-  off[12] += 1000.f;
+  const PerObjectMatrix m = per_object_matrix(effect, r.mesh->radius());
+  ASSERT_TRUE(m.ok);
+  const fxkit::Param wvp = m.wvp;
+  const float* on = m.on;
+  const float* off = m.off;
   fxkit::Technique two = effect.technique("two"), one = effect.technique("one");
   ASSERT_TRUE(effect.set_matrix(wvp, on));
   struct Obj { fxkit::Technique* t; const float* m; };
