@@ -61,8 +61,10 @@ struct EffectState {
   VkBuffer default_attributes = VK_NULL_HANDLE;  // bound at default_binding by begin()
   fx::vk::EffectTextureCache* textures = nullptr;  // the device's; null once it is destroyed
   uint32_t default_binding = 0;
-  // The binding begin() started recording with (its version kept alive until end()).
+  // The binding begin() started recording with (its version kept alive until end()), and
+  // the same as Technique::apply's inline call.
   fx::vk::EffectBinding* recording = nullptr;
+  PassApply pass_apply{&fx::vk::EffectBinding::apply_layout0, nullptr, &sink};
   std::shared_ptr<const fx::EffectVersion> recording_version;
   // The application's images for texture parameters, bound to every version that goes live.
   struct AppTexture {

@@ -78,6 +78,7 @@ std::vector<std::string> caps_profiles() { return fx::caps_profile_names(); }
 Technique Effect::technique(std::string_view name) const {
   Technique t;
   t.effect_ = state_;
+  if (state_) t.pass_apply_ = &state_->pass_apply;
   t.name_ = std::string(name);
   return t;
 }
@@ -102,6 +103,7 @@ Technique Effect::select(const Criteria& criteria) const {
   }
   state_->handle.select(c, caps ? &*caps : nullptr);
   t.effect_ = state_;
+  t.pass_apply_ = &state_->pass_apply;
   return t;
 }
 

@@ -66,6 +66,7 @@ bool Technique::begin(VkCommandBuffer cmd, const VkViewport& viewport, const VkR
   if (!effect_) return false;
   detail::EffectState& s = *effect_;
   s.recording = nullptr;
+  s.pass_apply.binding = nullptr;
   s.recording_version = s.handle.version();
   if (!s.recording_version) return false;
   fx::vk::EffectBinding* binding = fx::vk::ReloadBackend::binding(*s.recording_version);
@@ -78,14 +79,8 @@ bool Technique::begin(VkCommandBuffer cmd, const VkViewport& viewport, const VkR
     vkCmdBindVertexBuffers(cmd, s.default_binding, 1, &s.default_attributes, &offset);
   }
   if (!s.sink.diagnostics().empty()) s.keep_problems();
-  if (ok) s.recording = binding;
+  if (ok) s.recording = binding, s.pass_apply.binding = binding;
   return ok;
-}
-
-bool Technique::apply(uint32_t pass) {
-  // A tail call: problems stay in the sink until end() keeps them.
-  detail::EffectState* s = effect_.get();
-  return s && s->recording && s->recording->apply(pass, 0, s->sink);
 }
 
 void Technique::end() {
@@ -93,6 +88,7 @@ void Technique::end() {
   if (effect_->recording) effect_->recording->end();
   if (!effect_->sink.diagnostics().empty()) effect_->keep_problems();
   effect_->recording = nullptr;
+  effect_->pass_apply.binding = nullptr;
   effect_->recording_version.reset();
 }
 

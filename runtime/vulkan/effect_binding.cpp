@@ -387,7 +387,8 @@ bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const Renderi
   return true;
 }
 
-bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, DiagnosticSink& sink) {
+[[gnu::always_inline]] inline bool EffectBinding::apply_inline(uint32_t pass_index, uint32_t vertex_layout,
+                                                               DiagnosticSink& sink) {
   if (!active_ || pass_index >= active_->passes.size()) [[unlikely]] return unknown_pass(pass_index, sink);
   Pass& pass = *active_->passes[pass_index];
   // Locals: the stores below (the ring, the blocks) may alias members as far as the
@@ -429,6 +430,14 @@ bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, Diagnosti
       recorder.reapply(*pass.resources, pass.ring_offsets, moved)) [[likely]]
     return true;
   return apply_pass(pass, vertex_layout, sink);
+}
+
+bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, DiagnosticSink& sink) {
+  return apply_inline(pass_index, vertex_layout, sink);
+}
+
+bool EffectBinding::apply_layout0(void* binding, uint32_t pass_index, void* sink) {
+  return static_cast<EffectBinding*>(binding)->apply_inline(pass_index, 0, *static_cast<DiagnosticSink*>(sink));
 }
 
 bool EffectBinding::unknown_pass(uint32_t pass_index, DiagnosticSink& sink) {

@@ -117,6 +117,36 @@ TEST_F(PublicApiTest, WrappedDeviceLoadsSelectsSetsDrawsAndReadsBack) {
   EXPECT_FALSE(effect.messages().empty());
 }
 
+// Technique::apply (inline, one call into the library) binds only between begin() and
+// end(): a default technique, one not begun, one ended, or one whose begin() failed apply
+// nothing; a pass past the last is refused with a message kept for messages().
+TEST_F(PublicApiTest, ApplyBindsOnlyBetweenBeginAndEnd) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  fxkit::Effect effect = r.device->load(write_effect("api_apply.fx", lit_effect()));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  fxkit::Technique none, lit = effect.technique("lit"), broken = effect.technique("nope");
+  EXPECT_FALSE(none.apply(0));
+  EXPECT_FALSE(lit.apply(0)) << "not begun";
+  r.device->begin_frame();
+  EXPECT_TRUE(r.device->submit([&](VkCommandBuffer cmd) {
+    r.image->begin(cmd);
+    EXPECT_FALSE(none.begin(cmd, r.image->viewport(), r.image->scissor()));
+    EXPECT_FALSE(broken.begin(cmd, r.image->viewport(), r.image->scissor()));
+    EXPECT_FALSE(broken.apply(0)) << "its begin() failed";
+    ASSERT_TRUE(lit.begin(cmd, r.image->viewport(), r.image->scissor()));
+    EXPECT_TRUE(lit.apply(0));
+    r.mesh->draw(cmd);
+    EXPECT_FALSE(lit.apply(1)) << "past the last pass";
+    lit.end();
+    EXPECT_FALSE(lit.apply(0)) << "ended";
+    r.image->end(cmd);
+  }));
+  bool told = false;
+  for (const fxkit::Message& m : effect.messages()) told = told || m.code == "vk-pass-unknown";
+  EXPECT_TRUE(told) << text(effect.messages());
+}
+
 TEST_F(PublicApiTest, TechniquesByNameSayWhyTheyCannotDraw) {
   std::vector<fxkit::Message> errors;
   auto device = fxkit::Device::create(handles(), options(), errors);

@@ -15,6 +15,7 @@
 
 #include "fx/model/draw_state.h"
 #include "fx/vulkan/apply_stats.h"
+#include "fx/vulkan/pass_apply.h"
 #include "fxkit/message.h"
 
 namespace fxkit {
@@ -152,14 +153,19 @@ class Technique {
   // (apply() then returns false too).
   bool begin(VkCommandBuffer cmd, const VkViewport& viewport, const VkRect2D& scissor);
   // Binds pass `pass` (pipeline, dynamic state, descriptors, changed uniform data); the app
-  // draws after it returns true.
-  bool apply(uint32_t pass);
+  // draws after it returns true. Inline: one call into the library per pass; problems stay
+  // in the effect's messages() from end() on.
+  bool apply(uint32_t pass) {
+    const detail::PassApply* a = pass_apply_;
+    return a && a->binding && a->apply(a->binding, pass, a->sink);
+  }
   // Ends the recording; the next begin() assumes nothing is bound.
   void end();
 
  private:
   friend class Effect;
   std::shared_ptr<detail::EffectState> effect_;
+  const detail::PassApply* pass_apply_ = nullptr;  // effect_'s, for the inline apply()
   std::string name_;  // "" follows selection
 };
 

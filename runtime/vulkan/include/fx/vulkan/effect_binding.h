@@ -87,6 +87,9 @@ class EffectBinding {
   // Binds pass `pass` of the begun technique for geometry of `vertex_layout`; the app draws
   // after it returns true.
   bool apply(uint32_t pass, uint32_t vertex_layout, DiagnosticSink& sink);
+  // apply() for vertex layout 0 as a plain function (fxkit::detail::PassApply): `binding` an
+  // EffectBinding, `sink` a DiagnosticSink.
+  static bool apply_layout0(void* binding, uint32_t pass, void* sink);
   // Ends the technique; the next begin() assumes nothing is bound.
   void end();
 
@@ -118,6 +121,8 @@ class EffectBinding {
   // pass index, and a pass bound from scratch (pipeline, state, descriptors).
   [[gnu::noinline]] static bool unknown_pass(uint32_t pass_index, DiagnosticSink& sink);
   [[gnu::noinline]] bool apply_pass(Pass& pass, uint32_t vertex_layout, DiagnosticSink& sink);
+  // apply()'s body, inline in both apply() and apply_layout0().
+  bool apply_inline(uint32_t pass, uint32_t vertex_layout, DiagnosticSink& sink);
   const VertexInput* vertex_input(Pass& pass, uint32_t layout, DiagnosticSink& sink);
   void update_object_count();
 
