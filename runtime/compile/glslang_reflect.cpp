@@ -152,6 +152,7 @@ ShaderReflection reflect_program(const glslang::TProgram& program, EShLanguage s
     img.dim = image_dim(s.dim);
     img.arrayed = s.isArrayed();
     img.shadow = s.isShadow();
+    img.multisampled = s.isMultiSample();
     img.set = set_of(*t);
     img.binding = binding_of(*t);
     if (t->isArray() && t->isSizedArray()) img.array_size = static_cast<uint32_t>(t->getOuterArraySize());

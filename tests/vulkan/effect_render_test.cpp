@@ -175,5 +175,22 @@ technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelS
   EXPECT_NEAR(centre[1], 128, 1);
 }
 
+// A multisampled texture read with Load(coord, sample): the stand-in is a multisampled image
+// (a single-sample one is a validation error), every sample cleared white.
+TEST_F(EffectRenderTest, MultisampledTextureLoadsReadAMultisampledStandIn) {
+  const std::array<uint8_t, 4> centre = centre_of("fxkit_multisampled", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+Texture2DMS<float4, 4> Colour;
+Texture2DMSArray<float4, 4> Layers;
+struct V { float4 p : SV_Position; float2 uv : TEXCOORD0; };
+V VS(float4 p : POSITION, float2 uv : TEXCOORD0) { V o; o.p = mul(p, WorldViewProjection); o.uv = uv; return o; }
+float4 PS(V i) : SV_Target {
+  float4 c = Colour.Load(int2(0, 0), 1) * 0.5 + Layers.Load(int3(0, 0, 0), 0) * 0.25;
+  return float4(c.rgb, 1);
+}
+technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_1, PS())); } }
+)");
+  EXPECT_NEAR(centre[0], 191, 2);  // white * 0.5 + white * 0.25
+}
+
 }  // namespace
 }  // namespace fx::vk::testing
