@@ -102,9 +102,11 @@ BlockMember make_member(const glslang::TObjectReflection& u, const UniformBlock&
     // glslang's reflection gives an array of row-major matrices the column-major stride (64
     // for HLSL's float4x3, whose SPIR-V ArrayStride is 48): in std140 the stride is the
     // element's size rounded up to 16 bytes.
-    if (t->isArray() && packing == glslang::ElpStd140)
-      m.array_stride = (static_cast<uint32_t>(size) + 15u) & ~15u;
   }
+  // The same for an array inside a struct (glslang gives `float scale[2]` of a struct in a
+  // cbuffer a stride of 4; SPIR-V says 16): in std140 every array element starts a register.
+  if (t->isArray() && packing == glslang::ElpStd140)
+    m.array_stride = (static_cast<uint32_t>(size) + 15u) & ~15u;
   uint32_t count = m.type.array_size ? m.type.array_size : 1;
   // The last element of an array takes its own size, not a full stride (std140 and HLSL).
   m.size = m.array_stride ? m.array_stride * (count - 1) + static_cast<uint32_t>(size)

@@ -192,5 +192,29 @@ technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelS
   EXPECT_NEAR(centre[0], 191, 2);  // white * 0.5 + white * 0.25
 }
 
+// Defaults of cbuffer members inside arrays of structs and structs inside structs reach the
+// shader: an array inside a struct has std140's 16-byte stride (glslang's reflection said 4,
+// so scale[1] read 0).
+TEST_F(EffectRenderTest, StructMembersOfACbufferReachTheShader) {
+  const std::array<uint8_t, 4> centre = centre_of("fxkit_struct_members", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+struct Light { float3 direction; float4 colour; };
+struct Rig { Light key; float scale[2]; };
+cbuffer Lights {
+  Light g_lights[2] = { { float3(0, 0, 1), float4(0.25, 0, 0, 1) }, { float3(0, 1, 0), float4(0, 0.5, 0, 1) } };
+  Rig g_rig = { { float3(1, 0, 0), float4(0, 0, 0.75, 1) }, { 0.5, 2 } };
+};
+int g_index = 1;
+struct V { float4 p : SV_Position; };
+V VS(float4 p : POSITION) { V o; o.p = mul(p, WorldViewProjection); return o; }
+float4 PS(V i) : SV_Target {
+  return float4(g_lights[0].colour.r, g_lights[g_index].colour.g, g_rig.key.colour.b * g_rig.scale[1] * 0.5, 1);
+}
+technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)");
+  EXPECT_NEAR(centre[0], 64, 1);
+  EXPECT_NEAR(centre[1], 128, 1);
+  EXPECT_NEAR(centre[2], 191, 1);
+}
+
 }  // namespace
 }  // namespace fx::vk::testing
