@@ -115,6 +115,25 @@ BlockMember make_member(const glslang::TObjectReflection& u, const UniformBlock&
   return m;
 }
 
+// D3D numbers the elements of an array varying on from its semantic's index (float3 n[6] :
+// NORMALS -> NORMALS0 ... NORMALS5, TEXCOORD2 -> TEXCOORD2 ... TEXCOORD7); glslang flattens
+// the array into one variable per element, in location order, each with the array's
+// semantic. Without the numbering, linking by semantic sent every element to one location.
+void number_array_elements(std::vector<InterfaceVariable>& vars) {
+  std::map<std::string, uint32_t> count, seen;
+  for (const InterfaceVariable& v : vars)
+    if (!v.semantic.empty()) ++count[v.semantic];
+  for (InterfaceVariable& v : vars) {
+    if (v.semantic.empty() || count[v.semantic] < 2) continue;
+    const uint32_t element = seen[v.semantic]++;
+    size_t digits = v.semantic.size();
+    while (digits > 0 && std::isdigit(static_cast<unsigned char>(v.semantic[digits - 1]))) --digits;
+    const std::string index = v.semantic.substr(digits);
+    const uint32_t first = !index.empty() && index.size() <= 6 ? static_cast<uint32_t>(std::stoul(index)) : 0;
+    v.semantic = v.semantic.substr(0, index.size() <= 6 ? digits : v.semantic.size()) + std::to_string(first + element);
+  }
+}
+
 }  // namespace
 
 ShaderReflection reflect_program(const glslang::TProgram& program, EShLanguage stage,
@@ -199,6 +218,7 @@ ShaderReflection reflect_program(const glslang::TProgram& program, EShLanguage s
     }
     std::sort(vars.begin(), vars.end(),
               [](const InterfaceVariable& a, const InterfaceVariable& b) { return a.location < b.location; });
+    number_array_elements(vars);
     return vars;
   };
   r.inputs = interface(false);
