@@ -102,15 +102,36 @@ BlockMember make_member(const glslang::TObjectReflection& u, const UniformBlock&
     // glslang's reflection gives an array of row-major matrices the column-major stride (64
     // for HLSL's float4x3, whose SPIR-V ArrayStride is 48): in std140 the stride is the
     // element's size rounded up to 16 bytes.
-    if (t->isArray() && packing == glslang::ElpStd140)
-      m.array_stride = (static_cast<uint32_t>(size) + 15u) & ~15u;
   }
+  // The same for an array inside a struct (glslang gives `float scale[2]` of a struct in a
+  // cbuffer a stride of 4; SPIR-V says 16): in std140 every array element starts a register.
+  if (t->isArray() && packing == glslang::ElpStd140)
+    m.array_stride = (static_cast<uint32_t>(size) + 15u) & ~15u;
   uint32_t count = m.type.array_size ? m.type.array_size : 1;
   // The last element of an array takes its own size, not a full stride (std140 and HLSL).
   m.size = m.array_stride ? m.array_stride * (count - 1) + static_cast<uint32_t>(size)
                           : static_cast<uint32_t>(size);
   (void)block;
   return m;
+}
+
+// D3D numbers the elements of an array varying on from its semantic's index (float3 n[6] :
+// NORMALS -> NORMALS0 ... NORMALS5, TEXCOORD2 -> TEXCOORD2 ... TEXCOORD7); glslang flattens
+// the array into one variable per element, in location order, each with the array's
+// semantic. Without the numbering, linking by semantic sent every element to one location.
+void number_array_elements(std::vector<InterfaceVariable>& vars) {
+  std::map<std::string, uint32_t> count, seen;
+  for (const InterfaceVariable& v : vars)
+    if (!v.semantic.empty()) ++count[v.semantic];
+  for (InterfaceVariable& v : vars) {
+    if (v.semantic.empty() || count[v.semantic] < 2) continue;
+    const uint32_t element = seen[v.semantic]++;
+    size_t digits = v.semantic.size();
+    while (digits > 0 && std::isdigit(static_cast<unsigned char>(v.semantic[digits - 1]))) --digits;
+    const std::string index = v.semantic.substr(digits);
+    const uint32_t first = !index.empty() && index.size() <= 6 ? static_cast<uint32_t>(std::stoul(index)) : 0;
+    v.semantic = v.semantic.substr(0, index.size() <= 6 ? digits : v.semantic.size()) + std::to_string(first + element);
+  }
 }
 
 }  // namespace
@@ -152,6 +173,7 @@ ShaderReflection reflect_program(const glslang::TProgram& program, EShLanguage s
     img.dim = image_dim(s.dim);
     img.arrayed = s.isArrayed();
     img.shadow = s.isShadow();
+    img.multisampled = s.isMultiSample();
     img.set = set_of(*t);
     img.binding = binding_of(*t);
     if (t->isArray() && t->isSizedArray()) img.array_size = static_cast<uint32_t>(t->getOuterArraySize());
@@ -196,6 +218,7 @@ ShaderReflection reflect_program(const glslang::TProgram& program, EShLanguage s
     }
     std::sort(vars.begin(), vars.end(),
               [](const InterfaceVariable& a, const InterfaceVariable& b) { return a.location < b.location; });
+    number_array_elements(vars);
     return vars;
   };
   r.inputs = interface(false);

@@ -63,7 +63,7 @@ std::string write_shader_metadata(const CompiledShader& s) {
   for (const ImageBinding& i : r.images)
     images.push_back({{"name", i.name}, {"kind", static_cast<int>(i.kind)}, {"dim", static_cast<int>(i.dim)},
                       {"arrayed", i.arrayed}, {"shadow", i.shadow}, {"set", i.set},
-                      {"binding", i.binding}, {"array", i.array_size}});
+                      {"binding", i.binding}, {"array", i.array_size}, {"multisampled", i.multisampled}});
   auto interface = [](const std::vector<InterfaceVariable>& vars) {
     json a = json::array();
     for (const InterfaceVariable& v : vars)
@@ -112,7 +112,8 @@ bool read_shader_metadata(std::string_view text, CompiledShader& s) {
       r.images.push_back({i.at("name").get<std::string>(), static_cast<ImageBinding::Kind>(i.at("kind").get<int>()),
                           static_cast<ImageDim>(i.at("dim").get<int>()), i.at("arrayed").get<bool>(),
                           i.at("shadow").get<bool>(), i.at("set").get<uint32_t>(),
-                          i.at("binding").get<uint32_t>(), i.at("array").get<uint32_t>()});
+                          i.at("binding").get<uint32_t>(), i.at("array").get<uint32_t>(),
+                          i.at("multisampled").get<bool>()});
     for (auto [key, list] : {std::pair{"inputs", &r.inputs}, std::pair{"outputs", &r.outputs}})
       for (const json& v : j.at(key))
         list->push_back({v.at("name").get<std::string>(), v.at("location").get<uint32_t>(),

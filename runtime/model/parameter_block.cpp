@@ -20,7 +20,7 @@ uint32_t default_element_stride(const Type& t, uint32_t matrix_stride) {
 
 }  // namespace
 
-uint32_t ParameterStore::Impl::find_path(std::string_view path) const {
+uint32_t ParameterStore::Impl::find_path(std::string_view path, bool* implied) const {
   size_t i = 0;
   auto name_end = [&](size_t from) {
     size_t e = from;
@@ -33,6 +33,10 @@ uint32_t ParameterStore::Impl::find_path(std::string_view path) const {
   uint32_t node = it->second;
   i = e;
   while (i < path.size()) {
+    if (path[i] == '.' && nodes[node].type.is_array() && nodes[node].child_count > 0) {
+      node = nodes[node].first_child;
+      if (implied) *implied = true;
+    }
     const Node& n = nodes[node];
     if (path[i] == '[') {
       size_t close = path.find(']', i);
@@ -137,12 +141,26 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
   b.size = block_size;
   std::string skipped;
   std::vector<std::pair<uint32_t, std::vector<Impl::WordRun>>> per_top;  // runs grouped by top-level node
-  for (const BlockMemberLayout& m : members) {
-    uint32_t node = s.find_path(m.name);
+  std::vector<uint32_t> nodes(members.size());
+  std::vector<bool> implied(members.size(), false);
+  for (size_t k = 0; k < members.size(); ++k) {
+    bool alias = false;
+    nodes[k] = s.find_path(members[k].name, &alias);
+    implied[k] = alias;
+  }
+  for (size_t k = 0; k < members.size(); ++k) {
+    const BlockMemberLayout& m = members[k];
+    const uint32_t node = nodes[k];
     if (node == kNoIndex || s.nodes[node].words == 0 || s.nodes[node].type.cls == TypeClass::structure) {
       skipped += (skipped.empty() ? "" : ", ") + m.name;
       continue;
     }
+    // An unindexed alias of a member the layout also names by its index writes the same
+    // bytes: packed once.
+    bool packed_elsewhere = false;
+    for (size_t j = 0; j < members.size() && implied[k] && !packed_elsewhere; ++j)
+      packed_elsewhere = j != k && nodes[j] == node && (!implied[j] || j < k);
+    if (packed_elsewhere) continue;
     if (m.offset > block_size || m.size > block_size - m.offset)
       return fail(ParamStatus::size_mismatch, "member '" + m.name + "' lies outside the block (" +
                                                   std::to_string(block_size) + " bytes)");

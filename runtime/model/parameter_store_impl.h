@@ -312,7 +312,10 @@ struct ParameterStore::Impl {
   }
 
   // The node a block member path names: "light", "light.dir", "bones[3]", "lights[1].dir".
-  uint32_t find_path(std::string_view path) const;
+  // A member of an array of structs named without an index ("lights.dir", glslang's name
+  // for the dynamically indexed access it also lists per element) is element 0's, where
+  // glslang places it; `*implied` is set then.
+  uint32_t find_path(std::string_view path, bool* implied = nullptr) const;
   // Every node index of this store mapped to `other`'s node with the same path and type.
   std::vector<uint32_t> match_into(const Impl& other) const;
 

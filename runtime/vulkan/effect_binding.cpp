@@ -254,6 +254,10 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
                              "(nothing in shadow) stands in" +
                              (slot.texture_param != kNoIndex ? " until set_texture() binds a depth view" : ""));
           slot.data = textures.depth_stand_in(image.dim, image.arrayed);
+        } else if (image.kind != DescriptorKind::sampler && image.multisampled) {
+          // No file fills a multisampled image: a white one stands in until set_texture()
+          // binds the application's multisampled view.
+          slot.data = textures.multisampled_stand_in(image.arrayed);
         } else if (image.kind != DescriptorKind::sampler) {
           const TextureInfo* tex = slot.texture_param != kNoIndex ? model.texture_of(slot.texture_param) : nullptr;
           if (!tex) {

@@ -32,10 +32,13 @@ std::string generator_key(const TextureInfo& t) {
 // A 1x1 texel that leaves the shading it feeds neutral: a normal map's "straight out of
 // the surface", white for colours and masks, a depth of 1.0 for a depth comparison (a shadow
 // map nothing is in front of). Made in the shape the shader samples.
-enum class StandIn { white, flat_normal, depth };
+enum class StandIn { white, flat_normal, depth, multisampled };
 
 std::string stand_in_key(StandIn kind, ImageDim dim, bool arrayed) {
-  const char* name = kind == StandIn::flat_normal ? "normal" : kind == StandIn::depth ? "depth" : "white";
+  const char* name = kind == StandIn::flat_normal    ? "normal"
+                     : kind == StandIn::depth        ? "depth"
+                     : kind == StandIn::multisampled ? "multisampled"
+                                                     : "white";
   return std::string("stand-in:") + name + ":" + std::to_string(int(dim)) + (arrayed ? ":array" : "");
 }
 
@@ -46,6 +49,7 @@ EffectTextureData stand_in(StandIn kind, ImageDim dim, bool arrayed) {
   d.arrayed = arrayed;
   d.stand_in = true;
   d.depth = kind == StandIn::depth;
+  d.multisampled = kind == StandIn::multisampled;
   if (d.depth) return d;  // uploaded by Texture::solid_depth
   const uint8_t c = kind == StandIn::flat_normal ? 128 : 255;
   fx::Image image = fx::Image::blank(1, 1, 4);
@@ -125,6 +129,11 @@ std::shared_ptr<const EffectTextureData> EffectTextureCache::depth_stand_in(Imag
   return keep(stand_in(StandIn::depth, dim, arrayed));
 }
 
+std::shared_ptr<const EffectTextureData> EffectTextureCache::multisampled_stand_in(bool arrayed) {
+  if (auto hit = cached(stand_in_key(StandIn::multisampled, ImageDim::dim_2d, arrayed))) return hit;
+  return keep(stand_in(StandIn::multisampled, ImageDim::dim_2d, arrayed));
+}
+
 std::shared_ptr<const EffectTextureData> EffectTextureCache::cached(const std::string& key) const {
   std::lock_guard<std::mutex> lock(mutex_);
   auto it = cpu_.find(key);
@@ -143,6 +152,9 @@ const Texture* EffectTextureCache::gpu(const EffectTextureData& data, Diagnostic
   std::optional<Texture> texture;
   if (data.depth) {
     texture = Texture::solid_depth(*ctx_, 1.0f, image_kind(data.dim), data.arrayed, sink);
+  } else if (data.multisampled) {
+    const uint8_t* p = data.image->pixels.data();
+    texture = Texture::solid_multisampled(*ctx_, {p[0], p[1], p[2], p[3]}, data.arrayed, sink);
   } else if (data.stand_in) {
     const uint8_t* p = data.image->pixels.data();
     texture = Texture::solid(*ctx_, {p[0], p[1], p[2], p[3]}, image_kind(data.dim), data.arrayed, sink);

@@ -177,7 +177,8 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx,
       ProgramImage image{b.name, b.kind, ImageDim::dim_2d, b.binding, b.count};
       for (const CompiledShader* s : ordered)
         for (const ImageBinding& i : s->reflection.images)
-          if (i.binding == b.binding) image.dim = i.dim, image.arrayed = i.arrayed, image.shadow |= i.shadow;
+          if (i.binding == b.binding) image.dim = i.dim, image.arrayed = i.arrayed, image.shadow |= i.shadow,
+          image.multisampled |= i.multisampled;
       p.images_.push_back(image);
     }
   }

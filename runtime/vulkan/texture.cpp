@@ -104,6 +104,46 @@ std::optional<Texture> Texture::solid(const Context& ctx, const std::array<uint8
   return upload(ctx, desc, texels.data(), texels.size(), sink);
 }
 
+std::optional<Texture> Texture::solid_multisampled(const Context& ctx, const std::array<uint8_t, 4>& rgba,
+                                                   bool array, DiagnosticSink& sink) {
+  ImageDesc desc;
+  desc.array_view = array;
+  desc.debug_name = "fxkit multisampled stand-in texture";
+  VkImageFormatProperties props{};
+  if (vkGetPhysicalDeviceImageFormatProperties(ctx.physical_device(), desc.format, VK_IMAGE_TYPE_2D,
+                                               VK_IMAGE_TILING_OPTIMAL, desc.usage, 0, &props) != VK_SUCCESS)
+    props.sampleCounts = 0;
+  // The shader's sample count (Texture2DMS<float4, N>) is not in SPIR-V; any count above one
+  // is valid to bind, and a sample index past it reads undefined values, not invalid memory.
+  for (VkSampleCountFlagBits count : {VK_SAMPLE_COUNT_4_BIT, VK_SAMPLE_COUNT_2_BIT, VK_SAMPLE_COUNT_8_BIT,
+                                      VK_SAMPLE_COUNT_16_BIT})
+    if (props.sampleCounts & count) {
+      desc.samples = count;
+      break;
+    }
+  if (desc.samples == VK_SAMPLE_COUNT_1_BIT) {
+    sink.error("vk-format-unsupported", {}, "device '" + ctx.info().name +
+                                                "' cannot sample a multisampled RGBA8 image (Texture2DMS)");
+    return std::nullopt;
+  }
+  std::optional<GpuImage> image = GpuImage::create(ctx, desc, sink);
+  if (!image) return std::nullopt;
+  GpuImage& img = *image;
+  const bool ok = submit_and_wait(ctx, [&](VkCommandBuffer cmd) {
+    img.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    VkClearColorValue colour{};
+    for (int c = 0; c < 4; ++c) colour.float32[c] = float(rgba[c]) / 255.0f;
+    const VkImageSubresourceRange range = img.full_range();
+    vkCmdClearColorImage(cmd, img.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &colour, 1, &range);
+    img.transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  }, sink);
+  if (!ok) return std::nullopt;
+  Texture t;
+  t.owned_ = std::move(img);
+  t.kind_ = ImageKind::image2d;
+  return t;
+}
+
 VkFormat Texture::depth_stand_in_format(const Context& ctx) {
   if (ctx.supports_format(VK_FORMAT_D32_SFLOAT, VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT)) return VK_FORMAT_D32_SFLOAT;
   return VK_FORMAT_D16_UNORM;  // sampleable on every device

@@ -1,11 +1,31 @@
 // Cross-stage linking: shared descriptor bindings and varyings matched by semantic.
 #include <gtest/gtest.h>
 
+#include <set>
+#include <string>
+#include <vector>
+
 #include "compile_test_util.h"
 #include "fx/compile/program_link.h"
 
 namespace fx {
 namespace {
+
+// VS and PS of a source compiled as shader model 4 and linked.
+struct LinkedPair {
+  CompiledShader vs, ps;
+  DiagnosticSink sink;
+  bool ok = false;  // both compiled
+};
+LinkedPair link_sm4(const char* src) {
+  ShaderCompiler compiler;
+  LinkedPair l;
+  l.vs = compiler.compile(test::unit(src, ShaderStage::vertex, "VS", "vs_4_0"));
+  l.ps = compiler.compile(test::unit(src, ShaderStage::fragment, "PS", "ps_4_0"));
+  l.ok = l.vs.ok && l.ps.ok;
+  if (l.ok) link_program({&l.vs, &l.ps}, l.sink);
+  return l;
+}
 
 TEST(ProgramLink, SameNameGetsTheSameBindingInEveryStage) {
   // Both stages read $Global; only the pixel shader has textures.
@@ -70,15 +90,11 @@ TEST(ProgramLink, UnwrittenInputIsAWarning) {
   const char* src = R"(float4 VS(float4 p : POSITION, out float2 uv : TEXCOORD0) : SV_Position { uv = p.xy; return p; }
 float4 PS(float2 uv : TEXCOORD0, float4 c : COLOR1) : SV_Target { return c * uv.x; }
 )";
-  ShaderCompiler compiler;
-  CompiledShader vs = compiler.compile(test::unit(src, ShaderStage::vertex, "VS", "vs_4_0"));
-  CompiledShader ps = compiler.compile(test::unit(src, ShaderStage::fragment, "PS", "ps_4_0"));
-  ASSERT_TRUE(vs.ok && ps.ok) << vs.info_log << ps.info_log;
-  DiagnosticSink sink;
-  link_program({&vs, &ps}, sink);
-  ASSERT_EQ(sink.warning_count(), 1u);
-  EXPECT_EQ(sink.diagnostics()[0].id, "shader-varying-unwritten");
-  EXPECT_NE(sink.diagnostics()[0].message.find("COLOR1"), std::string::npos);
+  LinkedPair l = link_sm4(src);
+  ASSERT_TRUE(l.ok) << l.vs.info_log << l.ps.info_log;
+  ASSERT_EQ(l.sink.warning_count(), 1u);
+  EXPECT_EQ(l.sink.diagnostics()[0].id, "shader-varying-unwritten");
+  EXPECT_NE(l.sink.diagnostics()[0].message.find("COLOR1"), std::string::npos);
 }
 
 TEST(ProgramLink, InputsTheCodeNeverReadsStillLinkBySemantic) {
@@ -111,6 +127,32 @@ float4 PS(P i) : COLOR0 { float4 unused = i.diffuse * i.fog; return i.uv; }
     EXPECT_EQ(!v.unread, v.semantic == "TEXCOORD0") << v.name;
   }
   EXPECT_EQ(read, written);
+}
+
+TEST(ProgramLink, ArrayVaryingElementsTakeConsecutiveSemanticIndices) {
+  // D3D numbers the elements of an array varying on from its semantic's index
+  // (float3 n[3] : NORMALS -> NORMALS0, NORMALS1, NORMALS2); glslang flattens the array into
+  // one variable per element, each with the array's semantic. Matched by that one name, every
+  // element read the last one's location: "conflicting input location" (CubeMapGS).
+  const char* src = R"(struct V { float4 p : SV_Position; float3 n[3] : NORMALS; float2 uv : TEXCOORD1; };
+V VS(float4 p : POSITION) { V o; o.p = p; o.n[0] = p.xyz; o.n[1] = p.yzx; o.n[2] = p.zxy; o.uv = p.xy; return o; }
+float4 PS(V i) : SV_Target { return float4(i.n[0].x, i.n[1].y, i.n[2].z, i.uv.x); }
+)";
+  LinkedPair l = link_sm4(src);
+  ASSERT_TRUE(l.ok) << l.vs.info_log << l.ps.info_log;
+  EXPECT_EQ(l.sink.warning_count(), 0u);
+  std::vector<std::string> semantics;
+  std::set<uint32_t> locations;
+  for (const InterfaceVariable& in : l.ps.reflection.inputs) {
+    semantics.push_back(in.semantic);
+    locations.insert(in.location);
+    for (const InterfaceVariable& out : l.vs.reflection.outputs)
+      if (out.semantic == in.semantic) EXPECT_EQ(out.location, in.location) << in.semantic;
+  }
+  EXPECT_EQ(semantics, (std::vector<std::string>{"NORMALS0", "NORMALS1", "NORMALS2", "TEXCOORD1"}));
+  EXPECT_EQ(locations.size(), semantics.size());
+  EXPECT_EQ(test::spirv_val(l.vs.spirv), "");
+  EXPECT_EQ(test::spirv_val(l.ps.spirv), "");
 }
 
 TEST(ProgramLink, D3D9PixelShaderPositionInputIsThePixelPosition) {

@@ -229,6 +229,56 @@ TEST(ParameterStore, DirtyTrackingPerBlock) {
   EXPECT_EQ(store.bind_layout(2, unknown, 4).code, ParamStatus::not_found);
 }
 
+// Members of an array of structs and of a struct inside a struct are bound by their paths;
+// glslang also lists a dynamically indexed member without its index ("lights.color", at
+// element 0's offset): an alias of element 0, packed once, and bound alone when it is alone.
+TEST(ParameterStore, StructArrayMembersAndUnindexedAliasesAreBound) {
+  auto b = test::build(R"(struct Light { float3 dir; float4 color; };
+    struct Rig { Light key; float scale[2]; };
+    Light lights[2] = { { float3(0, 0, 1), float4(1, 2, 3, 4) }, { float3(0, 1, 0), float4(5, 6, 7, 8) } };
+    Rig rig = { { float3(1, 0, 0), float4(9, 10, 11, 12) }, { 13, 14 } };)");
+  ASSERT_FALSE(b->diags.has_errors()) << b->text();
+  ParameterStore store(b->model);
+  const BlockMemberLayout layout[] = {
+      {"lights.color", 16, 16, 0, 16, MatrixOrder::column_major},
+      {"lights[0].dir", 0, 12, 0, 16, MatrixOrder::column_major},
+      {"lights[0].color", 16, 16, 0, 16, MatrixOrder::column_major},
+      {"lights[1].dir", 32, 12, 0, 16, MatrixOrder::column_major},
+      {"lights[1].color", 48, 16, 0, 16, MatrixOrder::column_major},
+      {"rig.key.dir", 64, 12, 0, 16, MatrixOrder::column_major},
+      {"rig.key.color", 80, 16, 0, 16, MatrixOrder::column_major},
+      {"rig.scale", 96, 20, 16, 16, MatrixOrder::column_major},
+  };
+  ParamStatus status = store.bind_layout(0, layout, 128);
+  EXPECT_TRUE(status) << status.message;
+  std::vector<uint8_t> bytes(128);
+  ASSERT_TRUE(store.write_block(0, bytes));
+  auto at = [&](size_t offset) {
+    float f;
+    std::memcpy(&f, bytes.data() + offset, 4);
+    return f;
+  };
+  EXPECT_EQ(at(8), 1.0f);    // lights[0].dir.z
+  EXPECT_EQ(at(16), 1.0f);   // lights[0].color.x
+  EXPECT_EQ(at(60), 8.0f);   // lights[1].color.w
+  EXPECT_EQ(at(88), 11.0f);  // rig.key.color.z
+  EXPECT_EQ(at(96), 13.0f);  // rig.scale[0]
+  EXPECT_EQ(at(112), 14.0f); // rig.scale[1], one register on
+  const float red[4] = {0.5f, 0, 0, 1};
+  ASSERT_TRUE(store.set(store.member(store.element(store.find("lights"), 0), "color"), std::span<const float>(red)));
+  ASSERT_TRUE(store.write_block(0, bytes));
+  EXPECT_EQ(at(16), 0.5f);
+  // The alias alone: element 0's member.
+  const BlockMemberLayout alone[] = {{"lights.color", 0, 16, 0, 16, MatrixOrder::column_major}};
+  status = store.bind_layout(1, alone, 16);
+  EXPECT_TRUE(status) << status.message;
+  std::vector<uint8_t> one(16);
+  ASSERT_TRUE(store.write_block(1, one));
+  float x;
+  std::memcpy(&x, one.data(), 4);
+  EXPECT_EQ(x, 0.5f);
+}
+
 // update_block through a handle: the same bytes write_block gives, `changed` only when a
 // bit changed, and the same result whether a few changes (the recent-change log) or more
 // than the log holds (the full comparison) happened since the last update.

@@ -175,5 +175,46 @@ technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelS
   EXPECT_NEAR(centre[1], 128, 1);
 }
 
+// A multisampled texture read with Load(coord, sample): the stand-in is a multisampled image
+// (a single-sample one is a validation error), every sample cleared white.
+TEST_F(EffectRenderTest, MultisampledTextureLoadsReadAMultisampledStandIn) {
+  const std::array<uint8_t, 4> centre = centre_of("fxkit_multisampled", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+Texture2DMS<float4, 4> Colour;
+Texture2DMSArray<float4, 4> Layers;
+struct V { float4 p : SV_Position; float2 uv : TEXCOORD0; };
+V VS(float4 p : POSITION, float2 uv : TEXCOORD0) { V o; o.p = mul(p, WorldViewProjection); o.uv = uv; return o; }
+float4 PS(V i) : SV_Target {
+  float4 c = Colour.Load(int2(0, 0), 1) * 0.5 + Layers.Load(int3(0, 0, 0), 0) * 0.25;
+  return float4(c.rgb, 1);
+}
+technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_1, PS())); } }
+)");
+  EXPECT_NEAR(centre[0], 191, 2);  // white * 0.5 + white * 0.25
+}
+
+// Defaults of cbuffer members inside arrays of structs and structs inside structs reach the
+// shader: an array inside a struct has std140's 16-byte stride (glslang's reflection said 4,
+// so scale[1] read 0).
+TEST_F(EffectRenderTest, StructMembersOfACbufferReachTheShader) {
+  const std::array<uint8_t, 4> centre = centre_of("fxkit_struct_members", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+struct Light { float3 direction; float4 colour; };
+struct Rig { Light key; float scale[2]; };
+cbuffer Lights {
+  Light g_lights[2] = { { float3(0, 0, 1), float4(0.25, 0, 0, 1) }, { float3(0, 1, 0), float4(0, 0.5, 0, 1) } };
+  Rig g_rig = { { float3(1, 0, 0), float4(0, 0, 0.75, 1) }, { 0.5, 2 } };
+};
+int g_index = 1;
+struct V { float4 p : SV_Position; };
+V VS(float4 p : POSITION) { V o; o.p = mul(p, WorldViewProjection); return o; }
+float4 PS(V i) : SV_Target {
+  return float4(g_lights[0].colour.r, g_lights[g_index].colour.g, g_rig.key.colour.b * g_rig.scale[1] * 0.5, 1);
+}
+technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)");
+  EXPECT_NEAR(centre[0], 64, 1);
+  EXPECT_NEAR(centre[1], 128, 1);
+  EXPECT_NEAR(centre[2], 191, 1);
+}
+
 }  // namespace
 }  // namespace fx::vk::testing

@@ -56,6 +56,7 @@ struct ImageBinding {
   bool shadow = false;       // comparison samplers
   uint32_t set = 0, binding = 0;
   uint32_t array_size = 0;   // descriptor count of an array of textures; 0 when not an array
+  bool multisampled = false; // Texture2DMS, Texture2DMSArray (SPIR-V OpTypeImage MS=1)
 };
 
 // A stage input or output (vertex attributes are the vertex stage's inputs), with its HLSL

@@ -29,6 +29,7 @@ struct EffectTextureData {
   ImageDim dim = ImageDim::dim_2d;       // stand-ins take the shape the shader samples
   bool arrayed = false;                  // ... as an array view (Texture2DArray)
   bool depth = false;                    // a depth stand-in, for sampling with depth comparison
+  bool multisampled = false;             // a multisampled stand-in, for Texture2DMS(Array)
 };
 
 class EffectTextureCache {
@@ -52,6 +53,10 @@ class EffectTextureCache {
   // A depth texture of 1.0 in the shape the shader samples, for an image sampled with depth
   // comparison (Vulkan compares only against depth formats): a shadow map nothing is in front of.
   std::shared_ptr<const EffectTextureData> depth_stand_in(ImageDim dim, bool arrayed);
+  // A white multisampled 2D texture (an array view when `arrayed`) for a Texture2DMS the
+  // shader reads with Load(coord, sample): no file can fill one, the application renders it
+  // and binds it with set_texture().
+  std::shared_ptr<const EffectTextureData> multisampled_stand_in(bool arrayed);
 
   // The GPU texture for `data`, uploaded on first use. Render thread only.
   const Texture* gpu(const EffectTextureData& data, DiagnosticSink& sink);

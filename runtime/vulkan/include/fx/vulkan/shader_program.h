@@ -40,6 +40,7 @@ struct ProgramImage {
   uint32_t count = 1;
   bool arrayed = false;  // Texture2DArray, TextureCubeArray, Texture1DArray
   bool shadow = false;   // sampled with depth comparison (SamplerComparisonState, sampler2DShadow)
+  bool multisampled = false;  // Texture2DMS, Texture2DMSArray: needs an image of more than one sample
 };
 
 class ShaderProgram {

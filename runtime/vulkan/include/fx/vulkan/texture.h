@@ -36,6 +36,11 @@ class Texture {
   // array view when `array`): what stands in for a texture the effect names but has no data for.
   static std::optional<Texture> solid(const Context& ctx, const std::array<uint8_t, 4>& rgba, ImageKind kind,
                                       bool array, DiagnosticSink& sink);
+  // A 1x1 2D texture of more than one sample (4 where the device has it), every sample
+  // `rgba`, for a Texture2DMS(Array) the effect reads with Load(coord, sample). Cleared, as no
+  // buffer copy can fill a multisampled image.
+  static std::optional<Texture> solid_multisampled(const Context& ctx, const std::array<uint8_t, 4>& rgba,
+                                                   bool array, DiagnosticSink& sink);
   // The same for a depth comparison: one texel of `depth` in depth_stand_in_format.
   static std::optional<Texture> solid_depth(const Context& ctx, float depth, ImageKind kind, bool array,
                                             DiagnosticSink& sink);
