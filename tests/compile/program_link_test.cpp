@@ -146,8 +146,11 @@ float4 PS(V i) : SV_Target { return float4(i.n[0].x, i.n[1].y, i.n[2].z, i.uv.x)
   for (const InterfaceVariable& in : l.ps.reflection.inputs) {
     semantics.push_back(in.semantic);
     locations.insert(in.location);
-    for (const InterfaceVariable& out : l.vs.reflection.outputs)
-      if (out.semantic == in.semantic) EXPECT_EQ(out.location, in.location) << in.semantic;
+    for (const InterfaceVariable& out : l.vs.reflection.outputs) {
+      if (out.semantic == in.semantic) {
+        EXPECT_EQ(out.location, in.location) << in.semantic;
+      }
+    }
   }
   EXPECT_EQ(semantics, (std::vector<std::string>{"NORMALS0", "NORMALS1", "NORMALS2", "TEXCOORD1"}));
   EXPECT_EQ(locations.size(), semantics.size());
