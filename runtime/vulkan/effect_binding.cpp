@@ -29,7 +29,7 @@ struct BlockSlot {
   uint32_t id = 0;
   BlockHandle handle;  // of `id`, for the per-draw update without an id lookup
   uint32_t size = 0;
-  uint64_t frame = 0;  // FrameResources::frame() of the last write (0: never)
+  uint64_t frame = UINT64_MAX;  // FrameResources::frame() of the last write (none yet)
 };
 
 struct EffectBinding::Pass {
@@ -410,7 +410,8 @@ bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const Renderi
       bytes = {b->bytes, b->size};
     else
       bytes = params.update_block(block.handle, changed);
-    if (!changed && block.frame == frame && frame != 0) {  // FrameResources::still_valid
+    // Written in this frame's ring slice already (begin_frame() recycles the slice).
+    if (!changed && block.frame == frame) {
       ++ring_offset;
       continue;
     }

@@ -79,6 +79,10 @@ struct DrawState {
     if (slot >= blocks.size()) [[unlikely]] return nullptr;
     DrawBlock& b = blocks[slot];
     uint64_t k = b.seen_changes;
+    if (k == changes && b.quiet && !b.fresh) {  // the usual other block of a pass: nothing new
+      changed = false;
+      return &b;
+    }
     if (!b.quiet || changes - k > kTouchLog) [[unlikely]] return nullptr;
     while (k != changes && !b.may_hold(touched[k % kTouchLog])) ++k;
     if (k != changes) return nullptr;
