@@ -431,8 +431,10 @@ bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const Renderi
     moved = true;
   }
   // The same pass again (the next object of a group): only the uniform offsets can differ.
-  if (&pass == applied_ && vertex_layout == applied_layout_ &&
-      recorder.reapply(*pass.resources, pass.ring_offsets, moved)) [[likely]]
+  // The recorder's last apply() was this pass's (apply_pass sets applied_ only then) and
+  // its images are bound only in begin(), which clears applied_: reapply()'s own checks
+  // would repeat these.
+  if (&pass == applied_ && vertex_layout == applied_layout_ && recorder.rebind(pass.ring_offsets, moved)) [[likely]]
     return true;
   return apply_pass(pass, vertex_layout, sink);
 }

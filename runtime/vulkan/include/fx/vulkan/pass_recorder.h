@@ -53,6 +53,11 @@ class PassRecorder {
   bool reapply(const PassResources& r, std::span<const uint32_t> uniform_offsets, bool moved = true) {
     // The same resources are the same program: as many offsets as apply() bound.
     if (&r != applied_ || r.images_changed_) return false;
+    return rebind(uniform_offsets, moved);
+  }
+  // reapply() for a caller that knows the last apply() was this pass's resources and no
+  // image of theirs was bound since (EffectBinding, between begin() and end()).
+  bool rebind(std::span<const uint32_t> uniform_offsets, bool moved) {
     if (moved) {
       // apply() left a set valid for its frame bound; a pushed set is pushed by apply().
       if (!rebind_set_ || frames_->frame() != applied_frame_) return false;
