@@ -55,6 +55,17 @@ class EffectUnitBuilder {
   void build();
 
  private:
+  // Calls `visit(StageUnit&)` for every stage of every pass and each of its choices, in
+  // pass order.
+  template <class Visit>
+  void for_each_stage(Visit&& visit) {
+    for (EffectPass& pass : u_.passes_)
+      for (StageUnit& stage : pass.stages) {
+        visit(stage);
+        for (StageUnit& choice : stage.choices) visit(choice);
+      }
+  }
+
   // A stage whose code calls through an interface needs the class bound to each instance
   // per pass (BindInterfaces), which fxkit does not compile: the stage says so, at the pass
   // state, instead of glslang's parse error on `interface`.

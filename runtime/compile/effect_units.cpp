@@ -210,11 +210,7 @@ void EffectUnitBuilder::mark_clip_distance_inputs() {
         return;
       }
   };
-  for (EffectPass& pass : u_.passes_)
-    for (StageUnit& stage : pass.stages) {
-      check(stage);
-      for (StageUnit& choice : stage.choices) check(choice);
-    }
+  for_each_stage(check);
 }
 
 void EffectUnitBuilder::respell_helper_uniforms() {
@@ -251,11 +247,7 @@ void EffectUnitBuilder::mark_dynamic_linkage() {
         return;
       }
   };
-  for (EffectPass& pass : u_.passes_)
-    for (StageUnit& stage : pass.stages) {
-      check(stage);
-      for (StageUnit& choice : stage.choices) check(choice);
-    }
+  for_each_stage(check);
 }
 
 void EffectUnitBuilder::mark_uncalled_functions() {
@@ -267,11 +259,7 @@ void EffectUnitBuilder::mark_uncalled_functions() {
     if (!first) first = &stage;
     if (seen.insert(stage.function).second) entries.push_back(stage.function);
   };
-  for (const EffectPass& pass : u_.passes_)
-    for (const StageUnit& stage : pass.stages) {
-      add(stage);
-      for (const StageUnit& choice : stage.choices) add(choice);
-    }
+  for_each_stage(add);
   if (!first) return;  // nothing compiles: no unit to check the functions in
   std::vector<bool> reached(u_.decls_.size(), false);
   for (uint32_t i : u_.reached_from(entries)) reached[i] = true;
