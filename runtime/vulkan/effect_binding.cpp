@@ -397,7 +397,6 @@ bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const Renderi
   Pass& pass = *active_->passes[pass_index];
   // Locals: the stores below (the ring, the blocks) may alias members as far as the
   // compiler knows, and this runs once per object.
-  fxkit::detail::DrawState& draw = *params_->draw_state();
   ParameterStore& params = *params_;
   PassRecorder& recorder = *recorder_;
   const uint64_t frame = frames_->frame();
@@ -405,11 +404,7 @@ bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const Renderi
   uint32_t* ring_offset = pass.ring_offsets.data();  // parallel to pass.blocks
   for (BlockSlot& block : pass.blocks) {
     bool changed;
-    std::span<const uint8_t> bytes;
-    if (const fxkit::detail::DrawBlock* b = draw.up_to_date(block.handle.slot, changed)) [[likely]]
-      bytes = {b->bytes, b->size};
-    else
-      bytes = params.update_block(block.handle, changed);
+    const std::span<const uint8_t> bytes = params.update_block(block.handle, changed);
     // Written in this frame's ring slice already (begin_frame() recycles the slice).
     if (!changed && block.frame == frame) {
       ++ring_offset;
