@@ -66,6 +66,9 @@ struct EffectState {
   fx::vk::EffectBinding* recording = nullptr;
   PassApply pass_apply{&fx::vk::EffectBinding::apply_layout0, nullptr, &sink};
   std::shared_ptr<const fx::EffectVersion> recording_version;
+  // The binding of the version of serial `binding_serial` (0: none looked up yet).
+  fx::vk::EffectBinding* binding = nullptr;
+  uint64_t binding_serial = 0;
   // The application's images for texture parameters, bound to every version that goes live.
   struct AppTexture {
     std::string name;

@@ -69,10 +69,21 @@ bool Technique::begin(VkCommandBuffer cmd, const VkViewport& viewport, const VkR
   s.pass_apply.binding = nullptr;
   s.recording_version = s.handle.version();
   if (!s.recording_version) return false;
-  fx::vk::EffectBinding* binding = fx::vk::ReloadBackend::binding(*s.recording_version);
-  const uint32_t t = resolve(s, *s.recording_version, name_);
+  const fx::EffectVersion& version = *s.recording_version;
+  if (s.binding_serial != version.serial) {
+    s.binding = fx::vk::ReloadBackend::binding(version);
+    s.binding_serial = version.serial;
+  }
+  fx::vk::EffectBinding* binding = s.binding;
+  uint32_t t;
+  if (name_.empty()) {
+    t = s.handle.technique();
+  } else {
+    if (resolved_serial_ != version.serial) resolved_ = resolve(s, version, name_), resolved_serial_ = version.serial;
+    t = resolved_;
+  }
   if (!binding || t >= binding->technique_count()) return false;
-  if (s.textures_serial != s.recording_version->serial) s.bind_app_textures(*s.recording_version, *binding);
+  if (s.textures_serial != version.serial) s.bind_app_textures(version, *binding);
   const bool ok = binding->begin(cmd, t, s.formats, viewport, scissor, s.sink);
   if (ok && s.default_attributes) {
     const VkDeviceSize offset = 0;

@@ -460,6 +460,7 @@ bool EffectBinding::apply_pass(Pass& pass, uint32_t vertex_layout, DiagnosticSin
   if (!pipeline) {
     pipeline = pipelines_->get(pass.shader, pass.state, *input, formats_, recorder_->dynamic(), sink);
     if (!pipeline) return false;
+    update_object_count();
   }
   PassDesc desc{&pass.shader, pass.state, input, pass.resources.get(), pipeline, pass.ring_offsets};
   if (!recorder_->apply(desc, sink)) return false;
@@ -488,7 +489,6 @@ void EffectBinding::end() {
   if (active_) recorder_->end();
   active_ = nullptr;
   applied_ = nullptr;
-  update_object_count();
 }
 
 size_t EffectBinding::pipeline_count() const { return pipelines_->size(); }

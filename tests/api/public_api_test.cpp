@@ -249,6 +249,37 @@ TEST_F(PublicApiTest, BeginFrameSwapsInAnEditAndKeepsTheLastGoodEffectAfterABrok
   EXPECT_GT(green[1], green[0] + 40) << "the edited default tint is drawn";
 }
 
+// A Technique held by name draws that technique after a reload moves it to another index
+// (begin() resolves the name once per version).
+TEST_F(PublicApiTest, ATechniqueHeldByNameFollowsItsNameAcrossAReloadThatReordersThem) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  auto colour = [](const char* name, const char* rgb) {
+    return std::string("technique ") + name + " { pass p0 { CullMode = None; VertexShader = compile vs_2_0 VS(); "
+           "PixelShader = compile ps_2_0 PS(float3(" + rgb + ")); } }\n";
+  };
+  const std::string common = R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
+float4 PS(uniform float3 c) : COLOR0 { return float4(c, 1.0); }
+)";
+  const std::string path = write_effect("api_reorder.fx", common + colour("red", "1, 0, 0") + colour("green", "0, 1, 0"));
+  fxkit::Effect effect = r.device->load(path);
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  fxkit::Technique green = effect.technique("green");
+  const auto before = draw(*r.device, green, *r.mesh, *r.image);
+  EXPECT_GT(before[1], 200);
+  EXPECT_LT(before[0], 50);
+  auto reloaded = rewrite_and_reload(*r.device, path, common + colour("green", "0, 1, 0") + colour("red", "1, 0, 0"));
+  ASSERT_EQ(reloaded.size(), 1u);
+  ASSERT_EQ(reloaded[0].kind, fxkit::Reload::Kind::reloaded) << reloaded[0].str();
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  const auto after = draw(*r.device, green, *r.mesh, *r.image);
+  EXPECT_GT(after[1], 200) << "still the technique called green";
+  EXPECT_LT(after[0], 50);
+}
+
 // A framed scene's WorldViewProjection for per-object draws: `on` draws the mesh in view,
 // `off` moves clip x far off screen (row 3, D3D order).
 struct PerObjectMatrix {

@@ -109,7 +109,8 @@ class EffectBinding {
 
   // Vulkan objects (shader modules, layouts, pipelines, samplers, pipeline caches) that
   // live bindings hold, summed over the process: returns to its baseline when every binding
-  // made after it is gone. Updated by create, warm, end and destruction.
+  // made after it is gone. Updated by create, warm, pass_objects, an apply() that creates a
+  // pipeline, and destruction.
   static int64_t live_vulkan_objects() { return live_objects_.load(); }
 
  private:
