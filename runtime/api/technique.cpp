@@ -15,6 +15,11 @@ uint32_t resolve(const detail::EffectState& s, const fx::EffectVersion& version,
   return fx::kNoIndex;
 }
 
+uint32_t pass_count_of(const fx::EffectVersion& version, uint32_t t) {
+  const auto& techniques = version.model->techniques;
+  return t < techniques.size() ? uint32_t(techniques[t].passes.size()) : 0;
+}
+
 }  // namespace
 
 namespace detail {
@@ -47,10 +52,15 @@ std::string Technique::name() const {
 }
 
 uint32_t Technique::pass_count() const {
-  auto version = effect_ ? effect_->handle.version() : nullptr;
+  if (!effect_) return 0;
+  // A named technique of the version begin() or the last call resolved: no lookup.
+  if (!name_.empty() && resolved_serial_ != 0 && resolved_serial_ == effect_->handle.serial()) return passes_;
+  auto version = effect_->handle.version();
   if (!version) return 0;
   const uint32_t t = resolve(*effect_, *version, name_);
-  return t < version->model->techniques.size() ? uint32_t(version->model->techniques[t].passes.size()) : 0;
+  const uint32_t count = pass_count_of(*version, t);
+  if (!name_.empty()) resolved_serial_ = version->serial, resolved_ = t, passes_ = count;
+  return count;
 }
 
 std::string Technique::reason() const {
@@ -79,7 +89,11 @@ bool Technique::begin(VkCommandBuffer cmd, const VkViewport& viewport, const VkR
   if (name_.empty()) {
     t = s.handle.technique();
   } else {
-    if (resolved_serial_ != version.serial) resolved_ = resolve(s, version, name_), resolved_serial_ = version.serial;
+    if (resolved_serial_ != version.serial) {
+      resolved_ = resolve(s, version, name_);
+      passes_ = pass_count_of(version, resolved_);
+      resolved_serial_ = version.serial;
+    }
     t = resolved_;
   }
   if (!binding || t >= binding->technique_count()) return false;

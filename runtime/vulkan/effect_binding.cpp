@@ -114,7 +114,7 @@ bool stage_is_glsl(const PassProgram& program) {
 }  // namespace
 
 EffectBinding::EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures)
-    : params_(&params), textures_(&textures), samplers_(ctx) {}
+    : params_(&params), textures_(&textures), samplers_(ctx), descriptor_sets_(ctx) {}
 
 EffectBinding::~EffectBinding() {
   recorder_.reset();  // declared first for apply(), it must not outlive what it references
@@ -194,6 +194,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
       }
       pass->shader = std::move(*shader);
       pass->resources = std::make_unique<PassResources>(pass->shader);
+      pass->resources->keep_sets_in(b->descriptor_sets_);
       // Uniform blocks: the store packs each under an id of its own.
       const bool glsl = stage_is_glsl(program);
       const auto& program_blocks = pass->shader.uniform_blocks();

@@ -194,8 +194,7 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
   const bool same_offsets = std::equal(offsets.begin(), offsets.end(), offsets_.begin(), offsets_.end());
   if (push && !layout_changed && pushed_ == &r && same_offsets && !r.images_changed_) return true;
   // A set or push is written only from validated images: unchanged ones were checked then.
-  if ((push || !r.set_ || r.images_changed_ || !frames_->still_valid(r.set_frame_)) && !images_bound(r, sink))
-    return false;
+  if (push && !images_bound(r, sink)) return false;
 
   // Descriptor writes: uniform blocks then images.
   // Reserved up front: the writes point into these arrays.
@@ -247,13 +246,34 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
     pushed_ = &r;
   } else {
     if (!r.set_ || r.images_changed_ || !frames_->still_valid(r.set_frame_)) {
-      VkDescriptorSet set = frames_->allocate_set(program.set_layout(), sink);
-      if (!set) return false;
-      write_all(set);
-      vkUpdateDescriptorSets(ctx_->device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
-      ++stats_.descriptor_writes;
+      const uint64_t frame = frames_->frame();
+      PassResources::KeptSet* kept = nullptr;
+      if (r.arena_) {
+        r.kept_.resize(frames_->frames_in_flight());
+        kept = &r.kept_[frame % r.kept_.size()];
+      }
+      VkDescriptorSet set = VK_NULL_HANDLE;
+      if (kept && kept->set && kept->images_version == r.images_version_ && kept->ring == frames_->ring_buffer()) {
+        set = kept->set;  // as it was written
+      } else {
+        if (!images_bound(r, sink)) return false;
+        // A kept set is written only when no command of this frame bound it (the frame that
+        // last did, of the same slot, has retired); else this frame takes one of its own.
+        if (kept && kept->frame != frame) {
+          if (!kept->set) kept->set = r.arena_->allocate(program, sink);
+          set = kept->set;
+        } else {
+          set = frames_->allocate_set(program.set_layout(), sink);
+        }
+        if (!set) return false;
+        write_all(set);
+        vkUpdateDescriptorSets(ctx_->device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
+        ++stats_.descriptor_writes;
+        if (kept && set == kept->set) kept->images_version = r.images_version_, kept->ring = frames_->ring_buffer();
+      }
+      if (kept && set == kept->set) kept->frame = frame;
       r.set_ = set;
-      r.set_frame_ = frames_->frame();
+      r.set_frame_ = frame;
       r.images_changed_ = false;
     }
     if (r.set_ != set_ || !same_offsets || layout_changed) {

@@ -76,6 +76,7 @@ bool PassResources::bind(std::string_view name, const Texture& texture, VkSample
     if (cur.view != b.view || cur.layout != b.layout || cur.sampler != b.sampler) {
       cur = b;
       images_changed_ = true;
+      ++images_version_;
     }
     return true;
   }

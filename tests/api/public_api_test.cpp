@@ -250,13 +250,16 @@ TEST_F(PublicApiTest, BeginFrameSwapsInAnEditAndKeepsTheLastGoodEffectAfterABrok
 }
 
 // A Technique held by name draws that technique after a reload moves it to another index
-// (begin() resolves the name once per version).
+// and counts its new passes (begin() and pass_count() resolve the name once per version).
 TEST_F(PublicApiTest, ATechniqueHeldByNameFollowsItsNameAcrossAReloadThatReordersThem) {
   Rig r = rig();
   ASSERT_TRUE(r) << text(r.errors);
-  auto colour = [](const char* name, const char* rgb) {
-    return std::string("technique ") + name + " { pass p0 { CullMode = None; VertexShader = compile vs_2_0 VS(); "
-           "PixelShader = compile ps_2_0 PS(float3(" + rgb + ")); } }\n";
+  auto colour = [](const char* name, const char* rgb, int passes = 1) {
+    std::string t = std::string("technique ") + name + " {";
+    for (int p = 0; p < passes; ++p)
+      t += " pass { CullMode = None; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(float3(" +
+           std::string(rgb) + ")); }";
+    return t + " }\n";
   };
   const std::string common = R"(
 float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
@@ -271,9 +274,11 @@ float4 PS(uniform float3 c) : COLOR0 { return float4(c, 1.0); }
   const auto before = draw(*r.device, green, *r.mesh, *r.image);
   EXPECT_GT(before[1], 200);
   EXPECT_LT(before[0], 50);
-  auto reloaded = rewrite_and_reload(*r.device, path, common + colour("green", "0, 1, 0") + colour("red", "1, 0, 0"));
+  EXPECT_EQ(green.pass_count(), 1u);
+  auto reloaded = rewrite_and_reload(*r.device, path, common + colour("green", "0, 1, 0", 2) + colour("red", "1, 0, 0"));
   ASSERT_EQ(reloaded.size(), 1u);
   ASSERT_EQ(reloaded[0].kind, fxkit::Reload::Kind::reloaded) << reloaded[0].str();
+  EXPECT_EQ(green.pass_count(), 2u) << "the reloaded technique's passes";
   effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
   const auto after = draw(*r.device, green, *r.mesh, *r.image);
   EXPECT_GT(after[1], 200) << "still the technique called green";

@@ -1,6 +1,7 @@
 // Pipeline keying and pass application bookkeeping: dynamic vs static paths give byte-equal
 // images, pipeline counts per distinct state, redundant state not re-recorded, dirty-only
-// uniform uploads, caller-written uniforms, push descriptors, vertex layout diagnostics, pipeline cache persistence,
+// uniform uploads, caller-written uniforms, descriptor sets kept across frames, push descriptors, vertex layout
+// diagnostics, pipeline cache persistence,
 // lookup-table textures.
 #include <gtest/gtest.h>
 
@@ -228,6 +229,76 @@ TEST_F(PassRecorderTest, PushDescriptorsRenderLikeDescriptorSets) {
     });
   }
   EXPECT_EQ(images[0].pixels, images[1].pixels);
+}
+
+// Sets kept in a DescriptorArena (as EffectBinding's passes keep them): written once per
+// frame in flight, not again while the images stay; a new texture rewrites each frame's set
+// when that frame comes round; a texture changed after this frame bound the kept set draws
+// through a set of the frame's own, the first draw still sampling the old one.
+TEST_F(PassRecorderTest, KeptDescriptorSetsAreWrittenOncePerFrameInFlightAndAgainForNewImages) {
+  PassHarness h(ctx(), DynamicStateSet::none());
+  auto prog = make_program(ctx(), "PSTex");
+  DiagnosticSink sink;
+  auto input = match_vertex_layout(quad_layout(), prog->program.vertex_inputs(), sink);
+  ASSERT_TRUE(input);
+  auto solid = [&](uint8_t r, uint8_t g) {
+    fx::Image image = fx::Image::blank(1, 1, 4);
+    image.pixels = {r, g, 0, 255};
+    return Texture::from_image(ctx(), image, ColorSpace::linear, sink);
+  };
+  auto red = solid(255, 0), green = solid(0, 255);
+  ASSERT_TRUE(red && green) << describe(sink);
+  SamplerCache samplers(ctx());
+  const VkSampler sampler = samplers.get({}, sink);
+  DescriptorArena arena(ctx());
+  PassResources res(prog->program);
+  res.keep_sets_in(arena);
+  std::vector<Vertex> left, right;
+  add_quad(left, -1, -1, 0, 1, 0.5f);
+  add_quad(right, 0, -1, 1, 1, 0.5f);
+  VkBuffer left_vb = h.vertices(left), right_vb = h.vertices(right);
+  const PassDesc pass{&prog->program, PipelineState{}, &*input, &res};
+  // One frame: the left half with `first`, the right half after binding `second`; the
+  // descriptor writes it made and the two halves' red and green.
+  struct Frame {
+    uint64_t writes;
+    int left_red, left_green, right_red, right_green;
+  };
+  auto frame = [&](const Texture& first, const Texture& second) {
+    EXPECT_TRUE(res.bind("Tex", first, sampler, sink));
+    uint64_t writes = 0;
+    fx::Image img = h.render([&](VkCommandBuffer cmd, PassRecorder& r) {
+      r.reset_stats();
+      draw(cmd, r, pass, left_vb, 6);
+      EXPECT_TRUE(res.bind("Tex", second, sampler, sink));
+      draw(cmd, r, pass, right_vb, 6);
+      writes = r.stats().descriptor_writes;
+    });
+    return Frame{writes, pixel(img, 1, 4)[0], pixel(img, 1, 4)[1], pixel(img, 6, 4)[0], pixel(img, 6, 4)[1]};
+  };
+  // Two frames in flight (FrameResourcesDesc's default): each writes its own set once.
+  for (int f = 0; f < 4; ++f) {
+    const Frame r = frame(*red, *red);
+    EXPECT_EQ(r.writes, f < 2 ? 1u : 0u) << "frame " << f;
+    EXPECT_EQ(r.left_red, 255);
+    EXPECT_EQ(r.right_red, 255);
+  }
+  // Green from the next frame on: each frame's set is written again when its frame comes.
+  for (int f = 0; f < 3; ++f) {
+    const Frame g = frame(*green, *green);
+    EXPECT_EQ(g.writes, f < 2 ? 1u : 0u) << "frame " << f;
+    EXPECT_EQ(g.left_green, 255);
+    EXPECT_EQ(g.right_green, 255);
+  }
+  // Red bound after the kept set drew the left half: the right half takes a new set.
+  const Frame mixed = frame(*green, *red);
+  EXPECT_EQ(mixed.writes, 1u);
+  EXPECT_EQ(mixed.left_green, 255);
+  EXPECT_EQ(mixed.left_red, 0);
+  EXPECT_EQ(mixed.right_red, 255);
+  EXPECT_EQ(mixed.right_green, 0);
+  EXPECT_EQ(arena.pool_count(), 1u);
+  EXPECT_FALSE(sink.has_errors()) << describe(sink);
 }
 
 TEST_F(PassRecorderTest, MissingVertexAttributeNamesTheSemantic) {

@@ -167,10 +167,10 @@ class Technique {
   std::shared_ptr<detail::EffectState> effect_;
   const detail::PassApply* pass_apply_ = nullptr;  // effect_'s, for the inline apply()
   std::string name_;  // "" follows selection
-  // name_'s technique index in the version of serial resolved_serial_ (0: none yet), so
-  // begin() compares no names while the version stays.
-  uint64_t resolved_serial_ = 0;
-  uint32_t resolved_ = 0;
+  // name_'s technique index and its pass count in the version of serial resolved_serial_
+  // (0: none yet), so that begin() and pass_count() compare no names while it stays.
+  mutable uint64_t resolved_serial_ = 0;
+  mutable uint32_t resolved_ = 0, passes_ = 0;
 };
 
 class Effect {

@@ -139,6 +139,7 @@ class EffectBinding {
   EffectTextureCache* textures_;
   std::optional<PipelineCache> pipelines_;
   SamplerCache samplers_;
+  DescriptorArena descriptor_sets_;  // the passes' sets, kept across frames
   std::vector<std::unique_ptr<Technique>> techniques_;
   std::vector<VertexLayout> layouts_;
   std::vector<std::pair<uint32_t, Texture>> app_textures_;  // texture parameter -> app view

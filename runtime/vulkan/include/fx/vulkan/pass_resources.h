@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fx/vulkan/descriptor_arena.h"
 #include "fx/vulkan/shader_program.h"
 #include "fx/vulkan/texture.h"
 
@@ -36,6 +37,10 @@ class PassResources {
   bool bind_sampler(std::string_view name, VkSampler sampler, DiagnosticSink& sink);
 
   const ShaderProgram& program() const { return *program_; }
+  // Descriptor sets (DescriptorMode::sets) kept in `arena` across frames, one per frame in
+  // flight, written again only when the images change: without it each frame allocates and
+  // writes a set from FrameResources. `arena` must outlive this.
+  void keep_sets_in(DescriptorArena& arena) { arena_ = &arena; }
 
  private:
   friend class PassRecorder;
@@ -54,8 +59,19 @@ class PassResources {
   std::vector<Block> blocks_;    // parallel to program.uniform_blocks()
   std::vector<Bound> images_;    // parallel to program.images()
   bool images_changed_ = true;   // descriptor set contents must be rewritten
+  uint64_t images_version_ = 1;  // bumped with every change of images_
   VkDescriptorSet set_ = VK_NULL_HANDLE;
   uint64_t set_frame_ = 0;
+  // keep_sets_in's sets, by frame % frames in flight: what each was written with and the
+  // last frame that bound it.
+  struct KeptSet {
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    uint64_t images_version = 0;
+    VkBuffer ring = VK_NULL_HANDLE;
+    uint64_t frame = 0;
+  };
+  DescriptorArena* arena_ = nullptr;
+  std::vector<KeptSet> kept_;
 };
 
 }  // namespace fx::vk
