@@ -197,17 +197,17 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
   if (push && !images_bound(r, sink)) return false;
 
   // Descriptor writes: uniform blocks then images.
-  // Reserved up front: the writes point into these arrays.
   std::vector<VkDescriptorBufferInfo>& buffers = buffer_infos_;
   std::vector<VkDescriptorImageInfo>& image_infos = image_infos_;
   std::vector<VkWriteDescriptorSet>& writes = writes_;
-  buffers.resize(blocks.size());
-  size_t elements = 0;
-  for (const ProgramImage& image : images) elements += image.count;  // at least 1 (link_program)
-  image_infos.resize(elements);
-  writes.clear();
-  writes.reserve(blocks.size() + images.size());
   auto write_all = [&](VkDescriptorSet set) {
+    // Sized up front: the writes point into these arrays.
+    buffers.resize(blocks.size());
+    size_t elements = 0;
+    for (const ProgramImage& image : images) elements += image.count;  // at least 1 (link_program)
+    image_infos.resize(elements);
+    writes.clear();
+    writes.reserve(blocks.size() + images.size());
     for (size_t i = 0; i < blocks.size(); ++i) {
       buffers[i] = {frames_->ring_buffer(), push ? offsets[i] : 0, blocks[i].size};
       auto w = structure<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
