@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <random>
 #include <string>
 
 #include "fx/model/parameter_store.h"
@@ -508,6 +509,73 @@ TEST(ParameterStore, SetMatrixPacksBoundMatricesInPlace) {
     if (k == 20) {
       for (ParameterStore* s : {&direct, &logged}) ASSERT_TRUE(s->bind_layout(3, strided, 128));
     }
+  }
+}
+
+// The same comparison under random operations: per-object matrices set in place (row- and
+// column-major input), other values and long runs of changes set through the words, blocks
+// handed out in random order (as passes of several techniques sharing one store are). Every
+// handed-out block must match the logged store's, and `changed` false must mean the bytes
+// handed out last.
+TEST(ParameterStore, SetMatrixAgreesWithSetUnderRandomOperations) {
+  auto b = test::build("float4x4 World; float4x4 Wvp; float c; float e[20];");
+  const BlockMemberLayout one[] = {{"World", 0, 64, 0, 16, MatrixOrder::column_major},
+                                   {"Wvp", 64, 64, 0, 16, MatrixOrder::row_major},
+                                   {"c", 128, 4, 0, 16, MatrixOrder::column_major}};
+  const BlockMemberLayout two[] = {{"c", 0, 4, 0, 16, MatrixOrder::column_major},
+                                   {"World", 16, 64, 0, 16, MatrixOrder::row_major}};
+  const BlockMemberLayout three[] = {{"Wvp", 0, 64, 0, 16, MatrixOrder::column_major}};
+  const BlockMemberLayout four[] = {{"e", 0, 320, 16, 16, MatrixOrder::column_major},
+                                    {"World", 320, 64, 0, 16, MatrixOrder::column_major}};
+  const std::pair<std::span<const BlockMemberLayout>, uint32_t> layouts[] = {{one, 144}, {two, 80}, {three, 64}, {four, 384}};
+  for (uint32_t seed = 1; seed <= 200; ++seed) {
+    ParameterStore direct(b->model), logged(b->model);
+    for (ParameterStore* s : {&direct, &logged})
+      for (uint32_t id = 1; id <= 4; ++id) ASSERT_TRUE(s->bind_layout(id, layouts[id - 1].first, layouts[id - 1].second));
+    const Param world = direct.find("World"), wvp = direct.find("Wvp"), c = direct.find("c"), e = direct.find("e");
+    std::mt19937 rng(seed);
+    auto pick = [&](uint32_t n) { return uint32_t(rng() % n); };
+    std::vector<std::vector<uint8_t>> last(5);  // by block id: the bytes handed out last
+    auto hand_out = [&](uint32_t id, int op) {
+      bool changed = false;
+      std::span<const uint8_t> got = direct.update_block(direct.block(id), changed);
+      std::vector<uint8_t> want(got.size(), 0xCD);
+      ASSERT_TRUE(logged.write_block(id, want));
+      ASSERT_TRUE(std::equal(got.begin(), got.end(), want.begin())) << "seed " << seed << " op " << op << " block " << id;
+      if (!changed && !last[id].empty()) {
+        ASSERT_TRUE(std::equal(got.begin(), got.end(), last[id].begin())) << "unchanged: seed " << seed << " op " << op;
+      }
+      last[id].assign(got.begin(), got.end());
+    };
+    float m[16], t[16];
+    for (int op = 0; op < 300; ++op) {
+      const uint32_t what = pick(100);
+      if (what < 50) {  // a per-object matrix, in place where it can be
+        const Param p = pick(2) ? world : wvp;
+        for (float& v : m) v = float(pick(7)) - 3.0f;  // small values repeat: unchanged sets too
+        for (int r = 0; r < 4; ++r)
+          for (int k = 0; k < 4; ++k) t[k * 4 + r] = m[r * 4 + k];
+        if (pick(2)) {
+          ASSERT_TRUE(direct.set_matrix(p, m));
+        } else {
+          ASSERT_TRUE(direct.set_matrix(p, t, HostMatrixOrder::column_major));
+        }
+        ASSERT_TRUE(logged.set(p, std::span<const float>(m)));
+      } else if (what < 58) {
+        const float v = float(pick(5));
+        for (ParameterStore* s : {&direct, &logged}) ASSERT_TRUE(s->set(c, v));
+      } else if (what < 61) {  // more changes than the recent-change log holds
+        for (ParameterStore* s : {&direct, &logged})
+          for (uint32_t j = 0; j < 20; ++j) ASSERT_TRUE(s->set(s->element(e, j), float(op + int(j))));
+      } else if (what < 64) {  // a per-object matrix through the words
+        for (float& v : m) v = float(pick(9));
+        const Param p = pick(2) ? world : wvp;
+        for (ParameterStore* s : {&direct, &logged}) ASSERT_TRUE(s->set(p, std::span<const float>(m)));
+      } else {
+        hand_out(1 + pick(4), op);
+      }
+    }
+    for (uint32_t id = 1; id <= 4; ++id) hand_out(id, 300);
   }
 }
 
