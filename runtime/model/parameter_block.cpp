@@ -196,9 +196,9 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
   s.draw.blocks.resize(s.blocks.size());
   uint64_t holds = 0;
   for (const Impl::RunGroup& g : s.blocks[slot].groups) holds |= uint64_t{1} << (g.top & 63);
-  s.draw.blocks[slot] = {s.blocks[slot].packed.data(), block_size, false, false, false, s.draw.changes, holds};
+  s.draw.blocks[slot] = {s.blocks[slot].packed.data(), block_size, false, false, s.draw.changes, holds};
   s.draw.hot.assign(s.top_count, {});  // `blocks` and `draw.blocks` may have moved
-  s.index_holders();
+  s.count_holders();
   if (!skipped.empty())
     return fail(ParamStatus::not_found, "no parameter (or a struct without member paths) for: " + skipped);
   return {};
@@ -215,16 +215,10 @@ void ParameterStore::Impl::sync_words(uint32_t top) const {
   h.stale = false;
 }
 
-void ParameterStore::Impl::index_holders() {
-  std::vector<uint32_t>& first = draw.holder_first;
-  first.assign(top_count + 1, 0);
+void ParameterStore::Impl::count_holders() {
+  holders.assign(top_count, 0);
   for (const Block& b : blocks)
-    for (const RunGroup& g : b.groups) ++first[g.top + 1];
-  for (uint32_t top = 0; top < top_count; ++top) first[top + 1] += first[top];
-  draw.holder_slots.resize(first[top_count]);
-  std::vector<uint32_t> next(first.begin(), first.end() - 1);
-  for (uint32_t slot = 0; slot < blocks.size(); ++slot)
-    for (const RunGroup& g : blocks[slot].groups) draw.holder_slots[next[g.top]++] = slot;
+    for (const RunGroup& g : b.groups) ++holders[g.top];
 }
 
 inline void ParameterStore::Impl::pack(Block& b, uint32_t first, uint32_t count) const {
@@ -264,21 +258,20 @@ bool ParameterStore::Impl::refresh(Block& b, DrawBlock& d) {
     // the application's values and has no set_by_app to record.
     if (g.whole4x4 && set_by_app[b.runs[g.first].src]) {
       const WordRun& r = b.runs[g.first];
-      const bool shared = draw.holder_first[g.top + 1] - draw.holder_first[g.top] > 1;
+      const bool shared = holders[g.top] > 1;
       draw.hot[g.top] = {&d, &g.packed_version, b.packed.data() + r.dst, r.src, r.kind == RunKind::columns4x4, false, shared};
     } else if (HotMatrix& h = draw.hot[g.top]; h.block) {
       h.others_outdated = false;  // this block is current: the next store_hot marks it again
     }
   };
   const uint64_t changes = draw.changes;
-  if (!d.outdated && changes - d.seen_changes <= kTouchLog) {
+  if (changes - d.seen_changes <= kTouchLog) {
     for (uint64_t k = d.seen_changes; k < changes; ++k)
       if (const uint32_t group = b.group_of[draw.touched[k % kTouchLog]]; group != kNoIndex) repack(b.groups[group]);
   } else {
     for (RunGroup& g : b.groups) repack(g);
   }
   d.seen_changes = changes;
-  d.outdated = false;
   for (PooledRuns& p : b.pooled) {
     const uint64_t version = pool->entries_[p.entry].version;
     if (version == p.packed_version) continue;

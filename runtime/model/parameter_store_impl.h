@@ -141,8 +141,8 @@ struct ParameterStore::Impl {
     if (draw.hot[top].stale) [[unlikely]] sync_words(top);
   }
   [[gnu::noinline]] void sync_words(uint32_t top) const;
-  // Rebuilds draw.holder_first / holder_slots from the blocks' groups (after a bind).
-  void index_holders();
+  // Recounts holders from the blocks' groups (after a bind).
+  void count_holders();
   void sync_all() const {
     for (uint32_t top = 0; top < top_count; ++top) sync(top);
   }
@@ -172,6 +172,7 @@ struct ParameterStore::Impl {
   // The per-object state (the header's DrawState): `blocks`' DrawBlocks (parallel), the hot
   // matrices, versions, change log and generation. Mutable: sync() clears a stale flag.
   mutable DrawState draw;
+  std::vector<uint32_t> holders;  // per top-level parameter: how many bound blocks hold it
   static constexpr uint32_t kTouchLog = DrawState::kTouchLog;
   std::vector<Block> blocks;
   std::unordered_map<uint32_t, uint32_t> block_slot;

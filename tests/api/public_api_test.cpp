@@ -660,7 +660,7 @@ TEST_F(PublicApiTest, PreviewDefaultsGiveAColourWithoutADefaultAVisibleValue) {
 }
 
 // A per-object matrix held by both passes of one technique and by another
-// technique's pass (shared: store_hot marks the other holders outdated), drawn object after
+// technique's pass (shared: store_hot logs a change for the other holders), drawn object after
 // object with the matrix set before each, techniques mixed within a frame.
 TEST_F(PublicApiTest, APerObjectMatrixEveryPassAndTechniqueHoldsDrawsItsObjects) {
   Rig r = rig();

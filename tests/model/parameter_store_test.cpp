@@ -581,7 +581,7 @@ TEST(ParameterStore, SetMatrixAgreesWithSetUnderRandomOperations) {
 
 // A block that holds World with its registers apart (not one 4x4 group) never takes the
 // matrix in place: it re-packs from the words, at every update after set_matrix changed
-// the block that does (store_hot marks it outdated again each time it caught up). Checked
+// the block that does (store_hot logs one change for it again each time it caught up). Checked
 // against a store given the same values through set().
 TEST(ParameterStore, SetMatrixReachesABlockThatRepacksIt) {
   auto b = test::build("float4x4 World; float c;");

@@ -154,8 +154,8 @@ class ParameterStore {
   // telling whether they differ from what the last update or write returned. Empty for
   // an invalid handle.
   // Inline: a renderer calls it per block and draw, and a block none of whose parameters
-  // was logged since its last update and that set_matrix did not mark outdated (its
-  // set_matrix values were written into it) needs no call.
+  // was logged since its last update (set_matrix values written into it aside) needs no
+  // call.
   std::span<const uint8_t> update_block(BlockHandle block, bool& changed) {
     if (const DrawBlock* b = draw_->up_to_date(block.slot, changed)) [[likely]]
       return {b->bytes, b->size};

@@ -13,13 +13,10 @@ namespace fxkit::detail {
 struct alignas(32) DrawBlock {  // 32 bytes: a slot's address is a shift
   const uint8_t* bytes = nullptr;  // the block's packed bytes
   uint32_t size = 0;
-  bool quiet = false;  // written since its layout was bound, no pooled parameter, not
-                       // outdated: only logged changes or store_hot's writes into `bytes`
-                       // (fresh) can change it
+  bool quiet = false;  // written since its layout was bound, no pooled parameter: only
+                       // logged changes or store_hot's writes into `bytes` (fresh) can
+                       // change it
   bool fresh = false;  // store_hot wrote into `bytes` since they were last handed out
-  // store_hot changed a matrix the block holds in another block (its hot one), without a
-  // logged change: the block compares every parameter's version at its next update.
-  bool outdated = false;
   uint64_t seen_changes = 0;  // DrawState::changes when the block was last brought up to date
   // The top-level parameters the block holds, bit `index % 64` each: a logged change whose
   // bit is clear is not this block's (a set bit may be another parameter's).
@@ -32,8 +29,8 @@ struct alignas(32) DrawBlock {  // 32 bytes: a slot's address is a shift
 // straight into the block's bytes, so drawing object after object with one pass re-packs
 // nothing. Only a matrix the application has set becomes hot, so store_hot writes only the
 // application's values and records nothing for reloads; a reset or a set through the words
-// ends it. Other blocks holding the matrix are marked outdated (not logged) and re-pack it
-// from the words. The pointers are into the store's blocks, which clears every
+// ends it. Other blocks holding the matrix learn of it from one logged change (see
+// others_outdated) and re-pack it from the words. The pointers are into the store's blocks, which clears every
 // HotMatrix when it may move them; the next re-pack makes one again.
 struct HotMatrix {
   DrawBlock* block = nullptr;          // the hot block's; none when null
@@ -46,9 +43,10 @@ struct HotMatrix {
   // back before anything else reads or partly writes them.
   bool stale = false;
   // Other bound blocks hold the parameter (another pass's or stage's): the first store_hot
-  // after one of them re-packed it marks them outdated (others_outdated), and bumps the
-  // version they compare. Nothing is logged, so the blocks that do not hold the matrix
-  // (the pass's other stage, usually) have no change to look at.
+  // after one of them re-packed it logs one change of the parameter for them
+  // (others_outdated), so that they re-pack just it at their next update; the store_hot
+  // calls after it log nothing, and the blocks that do not hold the matrix (the pass's
+  // other stage, usually) have no change to look at.
   bool shared = false;
   bool others_outdated = false;
 };
@@ -68,9 +66,6 @@ struct DrawState {
   // parameter.
   std::vector<uint64_t> versions;
   uint32_t touched[kTouchLog] = {};
-  // The block slots holding each top-level parameter: holder_slots[holder_first[top]] up
-  // to holder_first[top + 1].
-  std::vector<uint32_t> holder_first, holder_slots;
 
   // update_block's inline way: block `slot` when no change since its last update is its
   // own (store_hot's writes into its bytes aside), with `changed` telling whether store_hot
@@ -120,18 +115,15 @@ struct DrawState {
 
  private:
   // store_hot's first change of a matrix since another block holding it re-packed it: a
-  // new version, which the hot block holds already and the others compare at their next
-  // update (their fast path refused until then).
+  // logged change and a new version, which the hot block holds already (it skips the
+  // change when it had seen every one before it) and the others re-pack at their next
+  // update. The words stay behind (stale) until one of them syncs them.
   void outdate_others(uint32_t index, HotMatrix& h) {
-    const uint64_t next = versions[index] + 1;
-    versions[index] = next;
-    *h.packed_version = next;
-    for (uint32_t i = holder_first[index]; i < holder_first[index + 1]; ++i) {
-      DrawBlock& other = blocks[holder_slots[i]];
-      if (&other == h.block) continue;
-      other.outdated = true;
-      other.quiet = false;
-    }
+    const bool hot_current = h.block->seen_changes == changes;
+    touched[changes % kTouchLog] = index;
+    ++changes;
+    if (hot_current) h.block->seen_changes = changes;
+    *h.packed_version = ++versions[index];
     h.others_outdated = true;
   }
 };
