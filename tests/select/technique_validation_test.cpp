@@ -310,6 +310,41 @@ technique t
   EXPECT_EQ(line_of(*l, v[0].reasons[1]), 10u);
 }
 
+// SV_ClipDistance compiles to SPIR-V's ClipDistance capability, which a Vulkan device runs
+// only with shaderClipDistance: without it the technique is rejected at the vertex shader.
+TEST(TechniqueValidation, ShaderCapabilitiesNeedTheirVulkanFeature) {
+  auto l = parse(R"(float4x4 Wvp;
+struct V { float4 pos : SV_Position; float clip : SV_ClipDistance0; };
+V VS(float4 p : POSITION) { V o; o.pos = mul(p, Wvp); o.clip = p.y; return o; }
+float4 PS(V i) : SV_Target { return 1; }
+technique10 t
+{
+    pass p0
+    {
+        SetVertexShader(CompileShader(vs_4_0, VS()));
+        SetPixelShader(CompileShader(ps_4_0, PS()));
+    }
+}
+)");
+  fx::DeviceCaps device = caps("modern");
+  device.name = "gpu";
+  EXPECT_TRUE(validate(*l, device)[0].valid) << "caps without a Vulkan device list no features";
+  device.vulkan.present = true;
+  auto v = validate(*l, device);
+  ASSERT_FALSE(v[0].valid);
+  // The pixel shader reads the same struct, so its module declares the capability too.
+  ASSERT_EQ(v[0].reasons.size(), 2u) << all(*l, v[0]);
+  EXPECT_EQ(v[0].reasons[0].id, "shader-needs-feature");
+  EXPECT_EQ(v[0].reasons[0].message,
+            "vertex shader uses SV_ClipDistance (SPIR-V capability ClipDistance): "
+            "Vulkan feature shaderClipDistance not supported on gpu");
+  EXPECT_EQ(line_of(*l, v[0].reasons[0]), 9u);
+  EXPECT_EQ(v[0].reasons[1].message.substr(0, 36), "fragment shader uses SV_ClipDistance");
+  EXPECT_EQ(line_of(*l, v[0].reasons[1]), 10u);
+  device.vulkan.features = {"shaderClipDistance"};
+  EXPECT_TRUE(validate(*l, device)[0].valid) << all(*l, validate(*l, device)[0]);
+}
+
 TEST(TechniqueValidation, TextureFormatsAndCapsDependentStates) {
   auto l = parse(R"(texture F < string Format = "float32"; >;
 technique t

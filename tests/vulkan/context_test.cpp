@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 
+#include "fx/select/shader_capabilities.h"
 #include "fx/vulkan/one_shot.h"
 #include "vulkan_fixture.h"
 
@@ -49,6 +51,20 @@ TEST_F(ContextTest, CoreFeaturesAreEnabledAndExtensionEntryPointsMatchFeatures) 
   if (f.eds3.polygon_mode) {
     EXPECT_TRUE(f.eds3.any());
   }
+}
+
+// Every feature a SPIR-V capability needs is enabled exactly when the device has it, since
+// technique validation accepts the capability from the device's features.
+TEST_F(ContextTest, ShaderCapabilityFeaturesAreEnabledWhereSupported) {
+  VkPhysicalDeviceFeatures supported{};
+  vkGetPhysicalDeviceFeatures(ctx().physical_device(), &supported);
+  const auto* bits = reinterpret_cast<const unsigned char*>(&supported);
+  for (const ShaderCapabilityFeature& row : shader_capability_features()) {
+    VkBool32 on = VK_FALSE;
+    std::memcpy(&on, bits + row.feature_offset, sizeof on);
+    EXPECT_EQ(ctx().features().has_shader_feature(row.feature), on == VK_TRUE) << row.feature;
+  }
+  EXPECT_TRUE(std::is_sorted(ctx().features().shader_features.begin(), ctx().features().shader_features.end()));
 }
 
 TEST(DeviceFeaturesEds3, AnyIsTrueWhenOneDynamicStateIsSupported) {

@@ -216,5 +216,25 @@ technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelS
   EXPECT_NEAR(centre[2], 191, 1);
 }
 
+// SV_ClipDistance needs shaderClipDistance enabled on the device (creating the module was a
+// validation error without it); a negative distance clips the whole sphere away.
+TEST_F(EffectRenderTest, ClipDistancesClipWhereTheDeviceHasTheFeature) {
+  if (!ctx().features().has_shader_feature("shaderClipDistance")) GTEST_SKIP() << "no shaderClipDistance";
+  auto effect = [](const char* distance) {
+    return std::string(R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+struct V { float4 p : SV_Position; float clip : SV_ClipDistance0; };
+V VS(float4 p : POSITION) { V o; o.p = mul(p, WorldViewProjection); o.clip = )") +
+           distance + R"(; return o; }
+float4 PS(V i) : SV_Target { return float4(1, 0.5, 0, 1); }
+technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)";
+  };
+  const std::array<uint8_t, 4> kept = centre_of("fxkit_clip_kept", effect("1"));
+  EXPECT_EQ(kept[0], 255);
+  EXPECT_NEAR(kept[1], 128, 1);
+  const std::array<uint8_t, 4> clipped = centre_of("fxkit_clip_clipped", effect("-1"));
+  EXPECT_NE(clipped[0], 255) << "the sphere was not clipped";
+}
+
 }  // namespace
 }  // namespace fx::vk::testing
