@@ -12,15 +12,17 @@ namespace {
   ShaderCapabilityFeature { cap, name, #feature, offsetof(VkPhysicalDeviceFeatures, feature), written_as }
 // Capability numbers from the SPIR-V spec (spirv.hpp's Capability enum). Left out: those a
 // Vulkan 1.3 device may also meet without the feature (StorageImageReadWithoutFormat,
-// StorageImageWriteWithoutFormat, StorageImageExtendedFormats) and those of newer structs.
+// StorageImageWriteWithoutFormat, StorageImageExtendedFormats), those of newer structs, and
+// GeometryPointSize / TessellationPointSize: with shaderTessellationAndGeometryPointSize
+// enabled every geometry shader that emits points must write PointSize
+// (VUID-VkGraphicsPipelineCreateInfo-Geometry-07725), and Direct3D 10's stream-out
+// geometry shaders (particles) never do, since Direct3D 10 has no point size.
 constexpr ShaderCapabilityFeature kRows[] = {
     FX_NEEDS(2, "Geometry", geometryShader, "a geometry shader"),
     FX_NEEDS(3, "Tessellation", tessellationShader, "a hull or domain shader"),
     FX_NEEDS(10, "Float64", shaderFloat64, "double"),
     FX_NEEDS(11, "Int64", shaderInt64, "64-bit integers"),
     FX_NEEDS(22, "Int16", shaderInt16, "16-bit integers"),
-    FX_NEEDS(23, "TessellationPointSize", shaderTessellationAndGeometryPointSize, "PSIZE in a tessellation shader"),
-    FX_NEEDS(24, "GeometryPointSize", shaderTessellationAndGeometryPointSize, "PSIZE in a geometry shader"),
     FX_NEEDS(25, "ImageGatherExtended", shaderImageGatherExtended, "Gather with an offset or of a component"),
     FX_NEEDS(27, "StorageImageMultisample", shaderStorageImageMultisample, "a multisampled RW texture"),
     FX_NEEDS(28, "UniformBufferArrayDynamicIndexing", shaderUniformBufferArrayDynamicIndexing,

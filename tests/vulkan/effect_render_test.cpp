@@ -236,5 +236,23 @@ technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelS
   EXPECT_NE(clipped[0], 255) << "the sphere was not clipped";
 }
 
+// A Direct3D 10 geometry shader that emits points writes no point size (Direct3D 10 has
+// none): valid only while the context leaves shaderTessellationAndGeometryPointSize off.
+TEST_F(EffectRenderTest, GeometryShaderPointsNeedNoPointSize) {
+  if (!ctx().features().geometry_shader) GTEST_SKIP() << "no geometryShader";
+  centre_of("fxkit_gs_points", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+struct V { float4 p : SV_Position; };
+V VS(float4 p : POSITION) { V o; o.p = mul(p, WorldViewProjection); return o; }
+[maxvertexcount(1)]
+void GS(triangle V input[3], inout PointStream<V> points) { points.Append(input[0]); }
+float4 PS(V i) : SV_Target { return 1; }
+technique10 T { pass P {
+  SetVertexShader(CompileShader(vs_4_0, VS()));
+  SetGeometryShader(CompileShader(gs_4_0, GS()));
+  SetPixelShader(CompileShader(ps_4_0, PS()));
+} }
+)");
+}
+
 }  // namespace
 }  // namespace fx::vk::testing
