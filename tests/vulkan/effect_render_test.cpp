@@ -254,5 +254,20 @@ technique10 T { pass P {
 )");
 }
 
+// A pixel shader reading a float4 TEXCOORD0 the vertex shader writes as a float2 (D3D9
+// code does; `_centroid` names the same register): the missing components read 0 and 1,
+// and the validation layer sees them written.
+TEST_F(EffectRenderTest, NarrowVaryingsReadPaddedComponents) {
+  const std::array<uint8_t, 4> centre = centre_of("fxkit_narrow_varyings", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+struct V { float4 p : POSITION; float2 uv : TEXCOORD0; };
+V VS(float4 p : POSITION) { V o; o.p = mul(p, WorldViewProjection); o.uv = float2(0.5, 0.5); return o; }
+float4 PS(float4 uv : TEXCOORD0_centroid) : COLOR0 { return float4(uv.x, uv.z, uv.w, 1); }
+technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)");
+  EXPECT_NEAR(centre[0], 128, 1);
+  EXPECT_EQ(centre[1], 0);
+  EXPECT_EQ(centre[2], 255);
+}
+
 }  // namespace
 }  // namespace fx::vk::testing
