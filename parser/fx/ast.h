@@ -179,6 +179,11 @@ struct Function {
   TokenSpan body;             // tokens between the braces (empty for a prototype)
   SourceRange range;
   TokenSpan tokens;           // the whole definition
+  // A method defined outside its class (`float3 C::M(float3 n) { ... }` after
+  // `class C { float3 M(float3 n); };`): "C", and the prototype in the class it completes.
+  // The definition replaces that prototype in C's `methods`; it is no file-scope Decl.
+  Text owner;
+  TokenSpan prototype;
 };
 
 struct Pass {

@@ -159,6 +159,11 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
   uint32_t storage = parse_storage();
   ast::TypeRef type;
   if (!parse_type(type)) return;
+  if (attributes.empty() && at(TokenKind::identifier) && peek().is(TokenKind::coloncolon) &&
+      peek(2).is(TokenKind::identifier) && peek(3).is(TokenKind::l_paren)) {
+    parse_method_definition(out, first, storage, type);
+    return;
+  }
   if (at(TokenKind::identifier) && peek().is(TokenKind::l_paren)) {
     ast::Function* f = declarations_.make<ast::Function>();
     f->storage = storage;
@@ -207,6 +212,70 @@ void Parser::parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t fi
   // Declarators of one declaration share its token span: the shader compiler emits a
   // span once (see docs/effect-format.md).
   for (size_t i = first_decl; i < out.size(); ++i) out[i].variable->tokens = span_from(first);
+}
+
+namespace {
+
+bool same_parameter_types(const ast::Function& a, const ast::Function& b) {
+  if (a.params.size() != b.params.size()) return false;
+  for (size_t i = 0; i < a.params.size(); ++i)
+    if (a.params[i].type.name != b.params[i].type.name) return false;
+  return true;
+}
+
+}  // namespace
+
+void Parser::parse_method_definition(std::vector<ast::Decl>& out, uint32_t first, uint32_t storage,
+                                     const ast::TypeRef& return_type) {
+  const Token owner = tok();
+  advance();  // C
+  advance();  // ::
+  if (!check_name(tok(), "a function")) return;
+  ast::Function f;
+  f.storage = storage;
+  f.return_type = return_type;
+  f.owner = keep(owner.text());
+  f.name = keep(tok().text());
+  f.name_range = tok().range();
+  advance();
+  if (!parse_function(f)) return;
+  f.range = range_from(first);
+  f.tokens = span_from(first);
+  std::string qualified(f.owner);
+  qualified.append("::").append(f.name);
+  if (tokens_[pos_ - 1].is(TokenKind::semi)) {
+    // `float3 C::M(float3 n);` repeats the prototype: nothing to attach.
+    diags_.error("method-outside-class", f.name_range, "'" + qualified + "' outside its class needs a body");
+    return;
+  }
+  ast::Struct* cls = nullptr;
+  for (auto d = out.rbegin(); d != out.rend() && !cls; ++d)
+    if (d->kind == ast::DeclKind::structure && d->structure->name == f.owner) cls = d->structure;
+  if (!cls || cls->kind != ast::StructKind::class_type) {
+    std::string message = "'";
+    message.append(f.owner).append("' is not a class declared before the definition of '").append(qualified) += '\'';
+    diags_.error("method-outside-class", owner.range(), std::move(message));
+    return;
+  }
+  // The prototype it completes: same name and parameter types, else the only one of that
+  // name and arity (the types may be spelled through a typedef).
+  ast::Function* proto = nullptr;
+  for (int exact = 1; exact >= 0 && !proto; --exact)
+    for (ast::Function& m : cls->methods)
+      if (m.name == f.name && m.body.empty() && m.params.size() == f.params.size() &&
+          (!exact || same_parameter_types(m, f))) {
+        proto = &m;
+        break;
+      }
+  if (!proto) {
+    Diagnostic& d = diags_.error("method-outside-class", f.name_range,
+                                 "class '" + std::string(f.owner) + "' declares no method '" + std::string(f.name) +
+                                     "' with " + std::to_string(f.params.size()) + " parameters left to define");
+    d.notes.push_back({cls->name_range.begin, "class '" + std::string(f.owner) + "' declared here"});
+    return;
+  }
+  f.prototype = proto->tokens;
+  *proto = f;
 }
 
 void Parser::finish_state_object(std::vector<ast::Decl>& out, ast::Variable& head,

@@ -104,6 +104,10 @@ class Parser {
   bool parse_initializer(ast::Variable& v);
   void parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t first,
                                   std::vector<std::string> attributes);
+  // At `C` of `type C::M(...) { ... }`: the definition of class C's method M, which
+  // completes M's prototype in C (declared earlier in `out`).
+  void parse_method_definition(std::vector<ast::Decl>& out, uint32_t first, uint32_t storage,
+                               const ast::TypeRef& return_type);
   bool parse_function(ast::Function& f);
   bool parse_parameter(ast::Variable& p);
   // `{ members }` of a struct or buffer; with `methods`, member functions too (class,

@@ -97,6 +97,24 @@ std::string join_path(std::string_view folder, std::string_view name) {
   return normalize_path(std::string(folder) + "/" + n);
 }
 
+bool names_a_folder(std::string_view name) {
+  return !name.empty() && name[0] != '.' && name.find_first_of("/\\") != std::string_view::npos &&
+         !is_absolute(normalize_path(name));
+}
+
+std::vector<std::string> ancestor_folders(std::string_view folder, size_t levels) {
+  std::vector<std::string> out;
+  std::string f = normalize_path(folder);
+  while (out.size() < levels && f != "/" && !(f.size() == 2 && f[1] == ':')) {
+    const size_t slash = f.rfind('/');
+    const std::string_view last = slash == std::string::npos ? std::string_view(f) : std::string_view(f).substr(slash + 1);
+    if (f.empty() || last == "..") f = f.empty() ? std::string("..") : f + "/..";
+    else f = parent_folder(f);
+    out.push_back(f);
+  }
+  return out;
+}
+
 std::optional<ResolvedInclude> resolve_include(std::string_view name,
                                                const std::vector<std::string>& folders,
                                                const FileLoader& loader,

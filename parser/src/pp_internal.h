@@ -183,6 +183,12 @@ std::string normalize_path(std::string_view path);
 std::string parent_folder(std::string_view path);
 std::string join_path(std::string_view folder, std::string_view name);
 
+// Whether an include name is a relative path through folders ("Data/Effects/x.fx"), the form
+// an engine writes relative to the folder it runs from; not "./x" or "../x".
+bool names_a_folder(std::string_view name);
+// The folders above `folder`, nearest first, at most `levels` ("a/b" -> "a", "", "..", ...).
+std::vector<std::string> ancestor_folders(std::string_view folder, size_t levels);
+
 // Where an include resolved: the normalized path, its text, and whether only a
 // case-insensitive match was found.
 struct ResolvedInclude {

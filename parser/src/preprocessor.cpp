@@ -19,6 +19,8 @@ using pp::Macro;
 namespace {
 // Tokens lexed per batch: enough to amortise the call, small enough to stay in cache.
 constexpr size_t kLexBatch = 256;
+// How far above the including file a root-relative #include ("Data/Effects/x.fx") is looked for.
+constexpr size_t kAncestorLevels = 8;
 }  // namespace
 
 class Preprocessor::Impl final : public pp::FileTokenSource {
@@ -356,10 +358,23 @@ void Preprocessor::Impl::include_file(Frame& f, const Token& hash, SourceRange s
   folders.insert(folders.end(), options_.include_dirs.begin(), options_.include_dirs.end());
   std::optional<pp::ResolvedInclude> found =
       pp::resolve_include(name, folders, options_.loader, options_.lister);
+  // "Data/Effects/x.fx" found nowhere: written relative to the folder the engine runs
+  // from, which is then above the including file (tried nearest first, with a warning).
+  std::string ancestor;
+  if (!found && !angled && pp::names_a_folder(name))
+    for (std::string& folder : pp::ancestor_folders(f.folder, kAncestorLevels))
+      if ((found = pp::resolve_include(name, {folder}, options_.loader, options_.lister))) {
+        ancestor = folder.empty() ? std::string(".") : std::move(folder);
+        break;
+      }
   if (!found) {
     diags_.error("include-not-found", spelled, "'" + name + "' file not found");
     return;
   }
+  if (!ancestor.empty())
+    diags_.warning("include-from-ancestor", spelled,
+                   "'" + name + "' is found only from the folder '" + ancestor +
+                       "' above the including file (as a program run there would find it); add it to the include path");
   if (frames_.size() >= options_.limits.max_include_depth) {
     std::string message = "#include nested more than " +
                           std::to_string(options_.limits.max_include_depth) + " levels deep";

@@ -3,7 +3,7 @@
 #include <vulkan/vulkan.h>
 
 #include "api_state.h"
-#include "fx/select/caps_sources.h"
+#include "fx/vulkan/context_caps.h"
 #include "fx/vulkan/one_shot.h"
 
 namespace fxkit {
@@ -114,7 +114,7 @@ std::unique_ptr<detail::DeviceState> make_state(fx::vk::Context ctx, const Devic
   lib.defines = options.defines;
   lib.watch = options.watch;
   lib.backend = s->backend.get();
-  lib.caps = fx::caps_from_physical_device(c.physical_device());
+  lib.caps = fx::vk::context_caps(c);  // the device as created: the shader features it enabled
   lib.spirv_cache_dir = options.cache_dir;
   lib.compile_threads = options.compile_threads;
   lib.frames_in_flight = std::max(1u, options.frames_in_flight);

@@ -99,6 +99,8 @@ class EffectUnitBuilder {
   // -> `struct C {`). Functions that use an interface fail their stages (see
   // mark_dynamic_linkage).
   void emit_structure(detail::ShaderTextWriter& w, const ast::Struct& s);
+  // A class method defined outside the class, in the class's place of its prototype.
+  void emit_method_definition(detail::ShaderTextWriter& w, const ast::Function& m);
 
   // The first interface or interface instance a function's tokens name ("" for none).
   std::string dynamic_linkage_in(ast::TokenSpan span) const;

@@ -70,9 +70,16 @@ void EffectUnitBuilder::emit_hlsl() {
         break;
       }
       case ast::DeclKind::structure: {
-        const size_t from = begin();
+        const size_t from = begin(), count = u_.decls_.size();
         emit_structure(w, *d.structure);
         end(from, {d.structure->name}, d.structure->tokens);
+        if (u_.decls_.size() == count) break;
+        // Methods defined outside the class are emitted inside it: what they use comes along.
+        std::vector<std::string>& refs = u_.decls_.back().refs;
+        for (const ast::Function& m : d.structure->methods)
+          if (!m.owner.empty())
+            for (std::string& name : identifiers_in(m.tokens))
+              if (std::find(refs.begin(), refs.end(), name) == refs.end()) refs.push_back(std::move(name));
         break;
       }
       case ast::DeclKind::function: emit_function(w, *d.function); break;
@@ -122,10 +129,32 @@ void EffectUnitBuilder::emit_structure(detail::ShaderTextWriter& w, const ast::S
       w.token(t, "struct");
       continue;
     }
+    // glslang takes member functions only with their bodies: a prototype whose definition
+    // follows the class (`float3 C::M(...) { }`) becomes that definition, without `C::`.
+    auto defined = std::find_if(s.methods.begin(), s.methods.end(), [&](const ast::Function& m) {
+      return !m.owner.empty() && m.prototype.first == i;
+    });
+    if (defined != s.methods.end()) {
+      emit_method_definition(w, *defined);
+      i = defined->prototype.last - 1;
+      continue;
+    }
     if (!body && t.is(TokenKind::colon)) in_bases = true;
     if (t.is(TokenKind::l_brace)) body = true, in_bases = false;
     if (!in_bases) put_hlsl(w, i, s.tokens.last);
   }
+}
+
+void EffectUnitBuilder::emit_method_definition(detail::ShaderTextWriter& w, const ast::Function& m) {
+  uint32_t scope = m.tokens.first;  // the `::` after the class name
+  while (scope + 1 < m.tokens.last && !(toks_[scope].is(TokenKind::coloncolon) && toks_[scope + 1].is_identifier(m.name)))
+    ++scope;
+  w.end_line();
+  w.desync();
+  if (scope > m.tokens.first) emit_function_tokens(w, {m.tokens.first, scope - 1});
+  emit_function_tokens(w, {scope + 1, m.tokens.last});
+  w.end_line();
+  w.desync();
 }
 
 std::string EffectUnitBuilder::dynamic_linkage_in(ast::TokenSpan span) const {

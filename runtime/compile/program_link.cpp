@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "spirv_legalize.h"
@@ -65,8 +66,11 @@ void apply_binding(ShaderReflection& r, const StageResource& res, uint32_t bindi
       if (i.name == res.name && i.set == res.set && i.binding == res.binding) i.set = 0, i.binding = binding;
 }
 
-// "TEXCOORD" and "TEXCOORD0" name the same D3D register.
+// "TEXCOORD" and "TEXCOORD0" name the same D3D register, and so does D3D9's
+// "TEXCOORD0_centroid" (the same register, interpolated at the centroid).
 std::string canonical_semantic(std::string s) {
+  constexpr std::string_view kCentroid = "_CENTROID";
+  if (s.size() > kCentroid.size() && s.ends_with(kCentroid)) s.resize(s.size() - kCentroid.size());
   if (!s.empty() && !std::isdigit(static_cast<unsigned char>(s.back()))) s += '0';
   return s;
 }
@@ -93,6 +97,32 @@ void legalize_if_inputs_unwritten(const CompiledShader& producer, CompiledShader
   consumer.legalized = true;
   const std::set<uint32_t> read = spirv::read_input_locations(consumer.spirv);
   for (InterfaceVariable& v : consumer.reflection.inputs) v.unread = !read.count(v.location);
+}
+
+// A plain scalar or vector of 32-bit components: what an output can be padded to.
+std::optional<spirv::Scalar> paddable(const ReflectedType& t) {
+  if (t.rows != 1 || t.array_size || t.is_struct || t.columns > 4) return std::nullopt;
+  switch (t.scalar) {
+    case ScalarKind::float32: return spirv::Scalar::float32;
+    case ScalarKind::int32: return spirv::Scalar::int32;
+    case ScalarKind::uint32: return spirv::Scalar::uint32;
+    default: return std::nullopt;
+  }
+}
+
+// Direct3D pads a varying the pixel shader reads wider than the stage before writes it
+// (a float2 TEXCOORD0 read as a float4); Vulkan calls the missing components an error, so
+// the producer writes them (0, and 1 in w).
+void pad_narrow_outputs(CompiledShader& producer, const CompiledShader& consumer) {
+  for (const InterfaceVariable& in : consumer.reflection.inputs) {
+    if (in.unread) continue;
+    const std::optional<spirv::Scalar> scalar = paddable(in.type);
+    if (!scalar) continue;
+    for (const InterfaceVariable& out : producer.reflection.outputs)
+      if (out.location == in.location && canonical_semantic(out.semantic) == canonical_semantic(in.semantic) &&
+          paddable(out.type) && out.type.columns < in.type.columns)
+        spirv::pad_output(producer.spirv, out.location, out.type.columns, in.type.columns - out.type.columns, *scalar);
+  }
 }
 
 void link_varyings(CompiledShader& producer, CompiledShader& consumer, DiagnosticSink& sink) {
@@ -122,6 +152,7 @@ void link_varyings(CompiledShader& producer, CompiledShader& consumer, Diagnosti
   }
   spirv::remap_locations(producer.spirv, spirv::Interface::output, out_remap);
   spirv::remap_locations(consumer.spirv, spirv::Interface::input, in_remap);
+  if (consumer.reflection.stage == ShaderStage::fragment) pad_narrow_outputs(producer, consumer);
 }
 
 }  // namespace

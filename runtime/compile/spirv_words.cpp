@@ -289,4 +289,100 @@ size_t remap_bindings(std::vector<uint32_t>& w, const std::map<SetBinding, SetBi
   return targets.size();
 }
 
+bool pad_output(std::vector<uint32_t>& w, uint32_t location, uint32_t first, uint32_t count, Scalar scalar) {
+  constexpr uint32_t kOpEntryPoint = 15, kOpTypeInt = 21, kOpTypeFloat = 22, kOpTypeVector = 23,
+                     kOpTypePointer = 32, kOpConstant = 43, kOpConstantComposite = 44, kOpFunction = 54,
+                     kOpStore = 62, kOpEmitVertex = 218, kOpEmitStreamVertex = 220, kOpLabel = 248,
+                     kOpLine = 8, kOpNoLine = 317, kDecorationComponent = 31;
+  constexpr uint32_t kVertex = 0, kTessellationEvaluation = 2, kGeometry = 3;
+  if (count == 0 || first + count > 4) return false;
+  size_t entry_at = 0, first_type_at = 0, first_function_at = 0;
+  uint32_t scalar_type = 0;
+  const bool is_float = scalar == Scalar::float32;
+  bool ok = for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t n) {
+    if (op == kOpEntryPoint && !entry_at && n >= 3) entry_at = i;
+    if (op >= 19 && op <= 39 && !first_type_at) first_type_at = i;  // OpTypeVoid .. OpTypeForwardPointer
+    if (op == kOpFunction && !first_function_at) first_function_at = i;
+    if (is_float && op == kOpTypeFloat && n == 3 && w[i + 2] == 32) scalar_type = w[i + 1];
+    if (!is_float && op == kOpTypeInt && n == 4 && w[i + 2] == 32 && w[i + 3] == (scalar == Scalar::int32 ? 1u : 0u))
+      scalar_type = w[i + 1];
+  });
+  if (!ok || !entry_at || !first_type_at || !first_function_at) return false;
+  const uint32_t model = w[entry_at + 1], entry = w[entry_at + 2];
+  if (model != kVertex && model != kTessellationEvaluation && model != kGeometry) return false;
+
+  uint32_t bound = w[3];
+  std::vector<uint32_t> globals;  // new types, constants and the variable, before the functions
+  auto emit = [](std::vector<uint32_t>& to, uint32_t op, std::initializer_list<uint32_t> operands) {
+    to.push_back(uint32_t(operands.size() + 1) << 16 | op);
+    to.insert(to.end(), operands);
+  };
+  if (!scalar_type) {
+    scalar_type = bound++;
+    if (is_float) emit(globals, kOpTypeFloat, {scalar_type, 32});
+    else emit(globals, kOpTypeInt, {scalar_type, 32, scalar == Scalar::int32 ? 1u : 0u});
+  }
+  uint32_t value_type = scalar_type, pointer_type = 0;
+  if (count > 1) {
+    value_type = 0;
+    for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t n) {
+      if (op == kOpTypeVector && n == 4 && w[i + 2] == scalar_type && w[i + 3] == count) value_type = w[i + 1];
+    });
+    if (!value_type) emit(globals, kOpTypeVector, {value_type = bound++, scalar_type, count});
+  }
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t n) {
+    if (op == kOpTypePointer && n == 4 && w[i + 2] == kStorageOutput && w[i + 3] == value_type) pointer_type = w[i + 1];
+  });
+  if (!pointer_type) emit(globals, kOpTypePointer, {pointer_type = bound++, kStorageOutput, value_type});
+  const uint32_t zero = bound++, one = bound++;
+  emit(globals, kOpConstant, {scalar_type, zero, 0});
+  emit(globals, kOpConstant, {scalar_type, one, is_float ? 0x3f800000u : 1u});
+  std::vector<uint32_t> parts;
+  for (uint32_t c = first; c < first + count; ++c) parts.push_back(c == 3 ? one : zero);
+  uint32_t value = parts.front();
+  if (count > 1) {
+    value = bound++;
+    globals.push_back(uint32_t(parts.size() + 3) << 16 | kOpConstantComposite);
+    globals.insert(globals.end(), {value_type, value});
+    globals.insert(globals.end(), parts.begin(), parts.end());
+  }
+  const uint32_t variable = bound++;
+  emit(globals, kOpVariable, {pointer_type, variable, kStorageOutput});
+  std::vector<uint32_t> decorations, store;
+  emit(decorations, kOpDecorate, {variable, kDecorationLocation, location});
+  emit(decorations, kOpDecorate, {variable, kDecorationComponent, first});
+  emit(store, kOpStore, {variable, value});
+
+  // Where the stores go: before each emitted vertex, or once where the entry's code starts.
+  std::vector<size_t> store_at;
+  bool in_entry = false, at_start = false;
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t) {
+    if (model == kGeometry) {
+      if (op == kOpEmitVertex || op == kOpEmitStreamVertex) store_at.push_back(i);
+      return;
+    }
+    if (op == kOpFunction) in_entry = w[i + 2] == entry;
+    if (!in_entry) return;
+    if (op == kOpLabel && store_at.empty() && !at_start) {
+      at_start = true;
+      return;
+    }
+    if (at_start && op != kOpVariable && op != kOpLine && op != kOpNoLine) {
+      store_at.push_back(i);
+      at_start = false;
+    }
+  });
+  if (store_at.empty()) return false;
+
+  // Insert from the back so the earlier offsets stay valid.
+  for (auto at = store_at.rbegin(); at != store_at.rend(); ++at) w.insert(w.begin() + long(*at), store.begin(), store.end());
+  w.insert(w.begin() + long(first_function_at), globals.begin(), globals.end());
+  w.insert(w.begin() + long(first_type_at), decorations.begin(), decorations.end());
+  const uint32_t entry_words = w[entry_at] >> 16;
+  w.insert(w.begin() + long(entry_at + entry_words), variable);
+  w[entry_at] = (entry_words + 1) << 16 | kOpEntryPoint;
+  w[3] = bound;
+  return true;
+}
+
 }  // namespace fx::spirv

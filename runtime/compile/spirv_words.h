@@ -59,6 +59,18 @@ bool opaque_values_in_memory(const std::vector<uint32_t>& words);
 // which spirv-opt's legalization leaves behind with its loads removed, is not among them.
 std::set<uint32_t> read_input_locations(const std::vector<uint32_t>& words);
 
+// The 32-bit component type of a padded output.
+enum class Scalar { float32, int32, uint32 };
+
+// Gives the output at `location` components [first, first + count) it does not write: a new
+// Output variable there (Component `first`) of `scalar`s, holding 0 (1 in the fourth
+// component, Direct3D's default for a missing component), stored at the entry function's
+// start, or before every vertex a geometry shader emits. For a pixel shader that reads
+// a float4 TEXCOORD0 the vertex shader writes as a float2: Direct3D pads it, Vulkan calls the
+// missing components an error. False (and `words` unchanged) when the module is not a
+// vertex, tessellation evaluation or geometry shader.
+bool pad_output(std::vector<uint32_t>& words, uint32_t location, uint32_t first, uint32_t count, Scalar scalar);
+
 // (set, binding) pair of a descriptor.
 using SetBinding = std::pair<uint32_t, uint32_t>;
 // Rewrites DescriptorSet/Binding decorations of every variable whose current pair is a key

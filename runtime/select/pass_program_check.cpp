@@ -7,6 +7,7 @@
 #include "fx/compile/effect_units.h"
 #include "fx/compile/shader_compiler.h"
 #include "fx/select/caps_requirement.h"
+#include "fx/select/shader_capabilities.h"
 
 namespace fx::detail {
 namespace {
@@ -132,6 +133,16 @@ PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique
     if (samplers) limit("samplers", samplers, at(sp.stage), noun);
     if (uniform) limit("uniform_bytes", uniform, at(sp.stage), noun);
     if (sp.stage == ShaderStage::fragment && inputs) limit("interpolators", inputs, at(sp.stage), noun + " inputs");
+    // A module declaring a capability whose feature the device lacks is invalid to create
+    // (VUID-VkShaderModuleCreateInfo-pCode-01091). Only Vulkan caps list the features.
+    if (caps.vulkan.present)
+      for (const ShaderCapabilityFeature* f : features_needed_by(sp.shader.spirv)) {
+        const CapsRequirement feature{CapsRequirement::Kind::vulkan_feature, f->feature, 0, {}};
+        if (auto why = unmet_reason(caps, feature))
+          out.reasons.push_back(reason("shader-needs-feature", at(sp.stage),
+                                       noun + " uses " + f->written_as + " (SPIR-V capability " +
+                                           f->capability_name + "): " + *why));
+      }
     if (sp.stage == ShaderStage::vertex && inputs > kVertexInputs)
       out.reasons.push_back(reason("shader-exceeds-limit", at(sp.stage),
                                    noun + " reads " + std::to_string(inputs) + " vertex inputs, at most " +

@@ -296,6 +296,7 @@ class TechniqueValidator {
       if (!has(PassStage::vertex)) note_emulation("emulated: fixed-function vertex processing as generated HLSL");
       if (!has(PassStage::pixel)) note_emulation("emulated: fixed-function texture stages as generated HLSL");
     }
+    check_vertex_shader(technique, pass);
     const ShaderBinding* pixel = pass.shader(PassStage::pixel);
     const bool pixel_shader = pixel && pixel->source != ShaderSource::null;
     for (const ResolvedState& s : pass.states) {
@@ -325,6 +326,23 @@ class TechniqueValidator {
     }
     // Limits of a profile the device cannot run at all would only repeat the rejection.
     if (options_.programs && !profile_rejected_) check_program(technique, index);
+  }
+
+  // A Direct3D 10/11 pass that sets other stages draws only with a vertex shader, and a
+  // Vulkan graphics pipeline needs one (a Direct3D 9 pass gets the fixed-function one).
+  void check_vertex_shader(const TechniqueInfo& technique, const PassInfo& pass) {
+    if (technique_version(technique) < 10) return;
+    auto bound = [&](PassStage s) {
+      const ShaderBinding* b = pass.shader(s);
+      return b && b->source != ShaderSource::null ? b : nullptr;
+    };
+    if (bound(PassStage::vertex)) return;
+    for (PassStage s : {PassStage::hull, PassStage::domain, PassStage::geometry, PassStage::pixel})
+      if (const ShaderBinding* b = bound(s)) {
+        reasons_.add("missing-vertex-shader", b->range,
+                     std::string("pass sets a ") + stage_noun(s) + " but no vertex shader, which drawing needs");
+        return;
+      }
   }
 
   // The technique's `Requires`: located at the annotation. A need the passes already

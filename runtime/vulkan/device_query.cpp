@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "fx/select/shader_capabilities.h"
+
 namespace fx::vk {
 namespace {
 
@@ -83,6 +85,14 @@ DeviceFeatures features_from(const VkPhysicalDeviceFeatures& core, const VkPhysi
   f.image_gather_extended = core.shaderImageGatherExtended;
   f.fragment_stores_and_atomics = core.fragmentStoresAndAtomics;
   f.vertex_pipeline_stores_and_atomics = core.vertexPipelineStoresAndAtomics;
+  const auto* bits = reinterpret_cast<const unsigned char*>(&core);
+  for (const ShaderCapabilityFeature& row : shader_capability_features()) {
+    VkBool32 on = VK_FALSE;
+    std::memcpy(&on, bits + row.feature_offset, sizeof on);
+    if (on) f.shader_features.emplace_back(row.feature);
+  }
+  std::sort(f.shader_features.begin(), f.shader_features.end());
+  f.shader_features.erase(std::unique(f.shader_features.begin(), f.shader_features.end()), f.shader_features.end());
   return f;
 }
 
@@ -91,6 +101,10 @@ DeviceFeatures features_from(const VkPhysicalDeviceFeatures& core, const VkPhysi
 bool DeviceFeatures::Eds3::any() const {
   return std::any_of(std::begin(kEds3Fields), std::end(kEds3Fields),
                      [this](const Eds3Field& f) { return this->*f.ours; });
+}
+
+bool DeviceFeatures::has_shader_feature(std::string_view name) const {
+  return std::binary_search(shader_features.begin(), shader_features.end(), name);
 }
 
 bool DeviceSupport::has_extension(std::string_view name) const {
@@ -190,6 +204,14 @@ FeatureChain::FeatureChain(const DeviceSupport& supported) {
   core.shaderImageGatherExtended = f.image_gather_extended;
   core.fragmentStoresAndAtomics = f.fragment_stores_and_atomics;
   core.vertexPipelineStoresAndAtomics = f.vertex_pipeline_stores_and_atomics;
+  // Technique validation accepts a shader's capability when the device has its feature;
+  // creating the module is valid only with the feature enabled.
+  auto* bits = reinterpret_cast<unsigned char*>(&core);
+  for (const ShaderCapabilityFeature& row : shader_capability_features())
+    if (f.has_shader_feature(row.feature)) {
+      const VkBool32 on = VK_TRUE;
+      std::memcpy(bits + row.feature_offset, &on, sizeof on);
+    }
 
   v13.dynamicRendering = f.dynamic_rendering;
   v13.synchronization2 = f.synchronization2;

@@ -8,6 +8,7 @@
 
 #include "fx/select/caps_sources.h"
 #include "fx/vulkan/context.h"
+#include "fx/vulkan/context_caps.h"
 
 namespace fxkit {
 
@@ -21,7 +22,7 @@ std::optional<fx::DeviceCaps> load_caps_option(const std::string& value, fx::Dia
   if (value == "device") {
     auto ctx = fx::vk::Context::headless({}, sink);
     if (!ctx) return std::nullopt;
-    return fx::caps_from_physical_device(ctx->physical_device());
+    return fx::vk::context_caps(*ctx);
   }
   bool looks_like_file = value.find('/') != std::string::npos || value.ends_with(".json") ||
                          std::filesystem::is_regular_file(value);

@@ -236,6 +236,50 @@ technique11 T {
   EXPECT_TRUE(programs.program("T", "Interface")->find(ShaderStage::vertex)->shader.ok);
 }
 
+// Methods defined after their class (`float3 Ambient::Shade(...) { }`) are written into the
+// class in place of their prototypes, which glslang takes only with a body; the class then
+// compiles where a shader uses it directly, and the interface stage still says why not.
+TEST(EffectUnits, MethodsDefinedOutsideTheirClassCompileInsideIt) {
+  fs::path dir = temp_dir("out_of_class");
+  write(dir / "methods.fx", R"(interface ILight { float3 Shade(float3 n); float3 Tint(); };
+float3 g_scale = float3(0.5, 0.5, 0.5);
+class Ambient : ILight {
+  float3 color;
+  float3 Shade(float3 n);
+  float3 Shade(float3 n, float k);
+  float3 Tint() { return color; }
+};
+float3 Ambient::Shade(float3 n) { return color * n.x * g_scale + Tint(); }
+float3 Ambient::Shade(float3 n, float k) { return Shade(n) * k; }
+ILight g_light;
+float4 Through(float3 n : NORMAL) : SV_Target { return float4(g_light.Shade(n), 1); }
+float4 Direct(float3 n : NORMAL) : SV_Target { Ambient a; a.color = n; return float4(a.Shade(n, 2), 1); }
+float4 Plain(float3 n : NORMAL) : SV_Target { return float4(n, 1); }
+float4 VS(float4 p : POSITION, inout float3 n : NORMAL) : SV_Position { return p; }
+technique11 T {
+  pass Interface { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(BindInterfaces(CompileShader(ps_5_0, Through()), g_light)); }
+  pass Class { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, Direct())); }
+  pass Other { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, Plain())); }
+}
+)");
+  auto l = load((dir / "methods.fx").string());
+  ASSERT_FALSE(l->diags.has_errors()) << render_text(l->diags.diagnostics(), l->sm);
+  EXPECT_EQ(l->units->find("T", "Interface")->find(ShaderStage::fragment)->kind, StageSourceKind::invalid);
+  ShaderCompiler compiler;
+  EffectPrograms programs(*l->units, compiler, l->sm);
+  for (const char* pass : {"Class", "Other"}) {
+    const PassProgram* program = programs.program("T", pass);
+    ASSERT_TRUE(program) << pass;
+    for (const StageProgram& s : program->stages)
+      EXPECT_TRUE(s.shader.ok) << pass << " " << to_string(s.stage) << "\n" << render_text(s.diagnostics, l->sm) << s.unit.source;
+  }
+  const std::string direct = programs.program("T", "Class")->find(ShaderStage::fragment)->unit.source;
+  EXPECT_EQ(direct.find("Ambient::"), std::string::npos) << direct;
+  EXPECT_NE(direct.find("g_scale"), std::string::npos) << "what the methods use comes along\n" << direct;
+  EXPECT_EQ(programs.program("T", "Other")->find(ShaderStage::fragment)->unit.source.find("Ambient"), std::string::npos)
+      << "a stage that does not use the class leaves it out";
+}
+
 // glslang crashes on a geometry shader whose input array carries SV_ClipDistance
 // (KhronosGroup/glslang#2392): that stage says why instead of reaching glslang; a geometry
 // shader that only writes it, and the vertex shader, still compile.

@@ -97,6 +97,36 @@ float4 PS(float2 uv : TEXCOORD0, float4 c : COLOR1) : SV_Target { return c * uv.
   EXPECT_NE(l.sink.diagnostics()[0].message.find("COLOR1"), std::string::npos);
 }
 
+// Direct3D pads a varying the pixel shader reads wider than the stage before writes it;
+// Vulkan calls the missing components an error, so the producer writes them: 0, and 1 in
+// w. D3D9's `TEXCOORD0_centroid` is TEXCOORD0. A geometry shader writes them before each
+// vertex it emits.
+TEST(ProgramLink, NarrowOutputsArePaddedToWhatThePixelShaderReads) {
+  const char* src = R"(struct V { float4 p : SV_Position; float2 uv : TEXCOORD0; float k : TEXCOORD1; };
+V VS(float4 p : POSITION) { V o; o.p = p; o.uv = p.xy; o.k = p.z; return o; }
+[maxvertexcount(3)]
+void GS(triangle V input[3], inout TriangleStream<V> s) { for (int i = 0; i < 3; ++i) s.Append(input[i]); }
+float4 PS(float4 uv : TEXCOORD0_centroid, float3 k : TEXCOORD1) : SV_Target { return uv + k.xyzz; }
+)";
+  ShaderCompiler compiler;
+  for (bool geometry : {false, true}) {
+    CompiledShader vs = compiler.compile(test::unit(src, ShaderStage::vertex, "VS", "vs_4_0"));
+    CompiledShader gs = compiler.compile(test::unit(src, ShaderStage::geometry, "GS", "gs_4_0"));
+    CompiledShader ps = compiler.compile(test::unit(src, ShaderStage::fragment, "PS", "ps_4_0"));
+    ASSERT_TRUE(vs.ok && gs.ok && ps.ok) << vs.info_log << gs.info_log << ps.info_log;
+    DiagnosticSink sink;
+    std::vector<CompiledShader*> stages{&vs, &ps};
+    if (geometry) stages.push_back(&gs);
+    link_program(stages, sink);
+    EXPECT_EQ(sink.warning_count(), 0u) << "TEXCOORD0_centroid links to TEXCOORD0";
+    const CompiledShader& producer = geometry ? gs : vs;
+    const std::string text = test::spirv_dis(producer.spirv);
+    EXPECT_NE(text.find("Component 2"), std::string::npos) << text;  // uv.zw
+    EXPECT_NE(text.find("Component 1"), std::string::npos) << text;  // k.yz
+    EXPECT_EQ(test::spirv_val(producer.spirv), "");
+  }
+}
+
 TEST(ProgramLink, InputsTheCodeNeverReadsStillLinkBySemantic) {
   // spirv-opt drops the semantic of an input the pixel shader never reads (diffuse, fog);
   // the declaration still gives it, so TEXCOORD0 keeps matching the vertex output and the

@@ -171,6 +171,51 @@ TEST(EffectForms, InterfacesAndClasses) {
   ASSERT_EQ(g->ids(), std::vector<std::string>{"profile-mismatch"}) << g->text();
 }
 
+// A method defined after its class (`float3 Ambient::Shade(...) { }`) completes the
+// class's prototype: the class's method gets the body and says where it was defined.
+TEST(EffectForms, MethodsDefinedOutsideTheirClass) {
+  auto f = run_front_end(
+      "interface ILight { float3 Shade(float3 n); };\n"
+      "class Ambient : ILight {\n"
+      "  float3 color;\n"
+      "  float3 Shade(float3 n);\n"
+      "  float3 Shade(float4 n);\n"
+      "};\n"
+      "float3 Ambient::Shade(float4 n) { return color * n.w; }\n"
+      "float3 Ambient::Shade(float3 n) { return color * n.x; }\n"
+      "technique11 T { pass P { } }\n");
+  EXPECT_CLEAN(f);
+  ASSERT_EQ(f->parsed.ast.decls.size(), 3u) << "the definitions are no file-scope declarations";
+  const ast::Struct& ambient = *f->decl(1).structure;
+  ASSERT_EQ(ambient.methods.size(), 2u);
+  for (const ast::Function& m : ambient.methods) {
+    EXPECT_EQ(m.owner, "Ambient");
+    EXPECT_FALSE(m.body.empty());
+    EXPECT_FALSE(m.prototype.empty());
+    EXPECT_EQ(f->parsed.ast.tokens.at(m.prototype.first).text(), "float3");
+  }
+  EXPECT_EQ(f->sm.presumed(ambient.methods[0].name_range.begin).line, 8u) << "matched by parameter types";
+  EXPECT_EQ(f->sm.presumed(ambient.methods[1].name_range.begin).line, 7u);
+
+  auto g = run_front_end(
+      "struct S { float a; };\n"
+      "class C { float a; float F(); };\n"
+      "float S::F() { return 1; }\n"
+      "float C::G() { return 1; }\n"
+      "float C::F(float x) { return x; }\n"
+      "float4 Fine() : SV_Target { return 1; }\n"
+      "technique11 T { pass P { SetPixelShader(CompileShader(ps_5_0, Fine())); } }\n");
+  EXPECT_EQ(g->ids(), (std::vector<std::string>{"method-outside-class", "method-outside-class", "method-outside-class"}))
+      << g->text();
+  const std::string text = g->text();
+  EXPECT_NE(text.find("t.fx:3:7: error: 'S' is not a class declared before the definition of 'S::F'"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("t.fx:4:10: error: class 'C' declares no method 'G' with 0 parameters left to define"),
+            std::string::npos) << text;
+  EXPECT_NE(text.find("t.fx:2:7: note: class 'C' declared here"), std::string::npos) << text;
+  EXPECT_EQ(g->parsed.ast.decls.size(), 4u) << "parsing goes on after each";
+}
+
 // fxc reads a `sampler_state { }` initializer with the profile's sampler states: D3D9's
 // under fx_2_0, the D3D10 SamplerState fields under fx_4_0 and later. A state of the other
 // API is unknown, with a note naming the profile that reads it; except that a file whose

@@ -65,6 +65,34 @@ TEST(PreprocessorIncludes, CaseInsensitiveFallbackWarnsWithRealName) {
   EXPECT_EQ(p.ids(), "include-case-mismatch include-not-found");
 }
 
+// An engine that runs from its content root writes includes relative to it
+// ("Data/Effects/Inc/x.fxh" from Data/Effects/main.fx): found nowhere else, such a path is
+// looked for from the folders above the including file, nearest first, with a warning.
+// Names without a folder, and "./" or "../" ones, are not.
+TEST(PreprocessorIncludes, RootRelativeIncludesAreFoundFromAnAncestorFolder) {
+  Pp p;
+  p.files["game/Data/Effects/Inc/common.fxh"] = "common\n#include \"Data/Effects/Inc/more.fxh\"\n";
+  p.files["game/Data/Effects/Inc/more.fxh"] = "more\n";
+  p.files["game/Data/Effects/main.fx"] = "#include \"Data/Effects/Inc/common.fxh\"\nmain\n";
+  std::vector<Token> out;
+  Preprocessor pp(p.sm, p.diags, p.options);
+  EXPECT_TRUE(pp.run_file("game/Data/Effects/main.fx", out));
+  EXPECT_EQ(Pp::spell(out), "common more main");
+  EXPECT_EQ(p.ids(), "include-from-ancestor include-from-ancestor");
+  EXPECT_EQ(p.diags.diagnostics()[0].message,
+            "'Data/Effects/Inc/common.fxh' is found only from the folder 'game' above the including file (as a "
+            "program run there would find it); add it to the include path");
+  EXPECT_EQ(pp.files()[1], "game/Data/Effects/Inc/common.fxh");
+
+  Pp q;
+  q.files["game/util.fxh"] = "util\n";
+  q.files["game/Inc/x.fxh"] = "x\n";
+  q.files["game/Data/Effects/main.fx"] = "#include \"util.fxh\"\n#include \"./Inc/x.fxh\"\n";
+  Preprocessor qp(q.sm, q.diags, q.options);
+  qp.run_file("game/Data/Effects/main.fx", out);
+  EXPECT_EQ(q.ids(), "include-not-found include-not-found");
+}
+
 TEST(PreprocessorIncludes, NotFoundAndMalformed) {
   Pp p;
   p.files["lib/a.fxh"] = "a";

@@ -310,6 +310,63 @@ technique t
   EXPECT_EQ(line_of(*l, v[0].reasons[1]), 10u);
 }
 
+// SV_ClipDistance compiles to SPIR-V's ClipDistance capability, which a Vulkan device runs
+// only with shaderClipDistance: without it the technique is rejected at the vertex shader.
+TEST(TechniqueValidation, ShaderCapabilitiesNeedTheirVulkanFeature) {
+  auto l = parse(R"(float4x4 Wvp;
+struct V { float4 pos : SV_Position; float clip : SV_ClipDistance0; };
+V VS(float4 p : POSITION) { V o; o.pos = mul(p, Wvp); o.clip = p.y; return o; }
+float4 PS(V i) : SV_Target { return 1; }
+technique10 t
+{
+    pass p0
+    {
+        SetVertexShader(CompileShader(vs_4_0, VS()));
+        SetPixelShader(CompileShader(ps_4_0, PS()));
+    }
+}
+)");
+  fx::DeviceCaps device = caps("modern");
+  device.name = "gpu";
+  EXPECT_TRUE(validate(*l, device)[0].valid) << "caps without a Vulkan device list no features";
+  device.vulkan.present = true;
+  auto v = validate(*l, device);
+  ASSERT_FALSE(v[0].valid);
+  // The pixel shader reads the same struct, so its module declares the capability too.
+  ASSERT_EQ(v[0].reasons.size(), 2u) << all(*l, v[0]);
+  EXPECT_EQ(v[0].reasons[0].id, "shader-needs-feature");
+  EXPECT_EQ(v[0].reasons[0].message,
+            "vertex shader uses SV_ClipDistance (SPIR-V capability ClipDistance): "
+            "Vulkan feature shaderClipDistance not supported on gpu");
+  EXPECT_EQ(line_of(*l, v[0].reasons[0]), 9u);
+  EXPECT_EQ(v[0].reasons[1].message.substr(0, 36), "fragment shader uses SV_ClipDistance");
+  EXPECT_EQ(line_of(*l, v[0].reasons[1]), 10u);
+  device.vulkan.features = {"shaderClipDistance"};
+  EXPECT_TRUE(validate(*l, device)[0].valid) << all(*l, validate(*l, device)[0]);
+}
+
+// Direct3D 10/11 and Vulkan draw only with a vertex shader; a Direct3D 9 pass without one
+// gets the fixed-function vertex stage.
+TEST(TechniqueValidation, ADirect3D10PassWithoutAVertexShaderCannotDraw) {
+  auto l = parse(R"(struct V { float4 pos : SV_Position; };
+[maxvertexcount(1)]
+void GS(point V input[1], inout PointStream<V> s) { s.Append(input[0]); }
+float4 PS(V i) : SV_Target { return 1; }
+float4 VS(float4 p : POSITION) : SV_Position { return p; }
+technique11 stream_out { pass p0 { SetVertexShader(NULL); SetGeometryShader(CompileShader(gs_5_0, GS())); } }
+technique11 drawn { pass p0 { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+technique d3d9 { pass p0 { PixelShader = compile ps_2_0 PS(); } }
+)");
+  auto v = validate(*l, caps("modern"), /*compile=*/false);
+  ASSERT_EQ(v.size(), 3u);
+  ASSERT_EQ(v[0].reasons.size(), 1u) << all(*l, v[0]);
+  EXPECT_EQ(v[0].reasons[0].id, "missing-vertex-shader");
+  EXPECT_EQ(v[0].reasons[0].message, "pass sets a geometry shader but no vertex shader, which drawing needs");
+  EXPECT_EQ(line_of(*l, v[0].reasons[0]), 6u);
+  EXPECT_TRUE(v[1].valid) << all(*l, v[1]);
+  EXPECT_TRUE(v[2].valid) << all(*l, v[2]);
+}
+
 TEST(TechniqueValidation, TextureFormatsAndCapsDependentStates) {
   auto l = parse(R"(texture F < string Format = "float32"; >;
 technique t

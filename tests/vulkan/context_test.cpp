@@ -4,7 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 
+#include "fx/select/caps_sources.h"
+#include "fx/select/shader_capabilities.h"
+#include "fx/vulkan/context_caps.h"
 #include "fx/vulkan/one_shot.h"
 #include "vulkan_fixture.h"
 
@@ -49,6 +53,20 @@ TEST_F(ContextTest, CoreFeaturesAreEnabledAndExtensionEntryPointsMatchFeatures) 
   if (f.eds3.polygon_mode) {
     EXPECT_TRUE(f.eds3.any());
   }
+}
+
+// Every feature a SPIR-V capability needs is enabled exactly when the device has it, since
+// technique validation accepts the capability from the device's features.
+TEST_F(ContextTest, ShaderCapabilityFeaturesAreEnabledWhereSupported) {
+  VkPhysicalDeviceFeatures supported{};
+  vkGetPhysicalDeviceFeatures(ctx().physical_device(), &supported);
+  const auto* bits = reinterpret_cast<const unsigned char*>(&supported);
+  for (const ShaderCapabilityFeature& row : shader_capability_features()) {
+    VkBool32 on = VK_FALSE;
+    std::memcpy(&on, bits + row.feature_offset, sizeof on);
+    EXPECT_EQ(ctx().features().has_shader_feature(row.feature), on == VK_TRUE) << row.feature;
+  }
+  EXPECT_TRUE(std::is_sorted(ctx().features().shader_features.begin(), ctx().features().shader_features.end()));
 }
 
 TEST(DeviceFeaturesEds3, AnyIsTrueWhenOneDynamicStateIsSupported) {
@@ -133,6 +151,31 @@ TEST_F(ContextTest, WrapReportsTheFeaturesTheApplicationEnabled) {
   EXPECT_TRUE(borrowed.features().dynamic_rendering);
   EXPECT_FALSE(borrowed.features().push_descriptor);
   EXPECT_EQ(borrowed.functions().push_descriptor_set, nullptr);
+}
+
+// Validation reads the caps of the device as it was created: an application device that
+// did not enable shaderClipDistance does not offer it, though its physical device has it.
+TEST_F(ContextTest, CapsOfAContextHaveOnlyTheShaderFeaturesItsDeviceEnabled) {
+  const DeviceCaps physical = caps_from_physical_device(ctx().physical_device());
+  const DeviceCaps own = context_caps(ctx());
+  EXPECT_EQ(own.vulkan.features, physical.vulkan.features) << "a headless context enables every one it has";
+  DeviceFeatures enabled;
+  enabled.dynamic_rendering = true;
+  Context borrowed = Context::wrap(ctx().instance(), ctx().physical_device(), ctx().device(),
+                                   ctx().queue(), ctx().queue_family(), enabled);
+  const DeviceCaps caps = context_caps(borrowed);
+  for (const ShaderCapabilityFeature& row : shader_capability_features())
+    EXPECT_FALSE(std::binary_search(caps.vulkan.features.begin(), caps.vulkan.features.end(), std::string(row.feature)))
+        << row.feature;
+  auto in_table = [](const std::string& f) {
+    const auto rows = shader_capability_features();
+    return std::any_of(rows.begin(), rows.end(), [&](const ShaderCapabilityFeature& row) { return f == row.feature; });
+  };
+  for (const std::string& f : physical.vulkan.features) {  // the others stay
+    if (!in_table(f)) {
+      EXPECT_TRUE(std::binary_search(caps.vulkan.features.begin(), caps.vulkan.features.end(), f)) << f;
+    }
+  }
 }
 
 TEST(ContextOwnership, MovedFromContextIsEmptyAndContextWithoutValidationWorks) {

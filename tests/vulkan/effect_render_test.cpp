@@ -216,5 +216,58 @@ technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelS
   EXPECT_NEAR(centre[2], 191, 1);
 }
 
+// SV_ClipDistance needs shaderClipDistance enabled on the device (creating the module was a
+// validation error without it); a negative distance clips the whole sphere away.
+TEST_F(EffectRenderTest, ClipDistancesClipWhereTheDeviceHasTheFeature) {
+  if (!ctx().features().has_shader_feature("shaderClipDistance")) GTEST_SKIP() << "no shaderClipDistance";
+  auto effect = [](const char* distance) {
+    return std::string(R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+struct V { float4 p : SV_Position; float clip : SV_ClipDistance0; };
+V VS(float4 p : POSITION) { V o; o.p = mul(p, WorldViewProjection); o.clip = )") +
+           distance + R"(; return o; }
+float4 PS(V i) : SV_Target { return float4(1, 0.5, 0, 1); }
+technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+)";
+  };
+  const std::array<uint8_t, 4> kept = centre_of("fxkit_clip_kept", effect("1"));
+  EXPECT_EQ(kept[0], 255);
+  EXPECT_NEAR(kept[1], 128, 1);
+  const std::array<uint8_t, 4> clipped = centre_of("fxkit_clip_clipped", effect("-1"));
+  EXPECT_NE(clipped[0], 255) << "the sphere was not clipped";
+}
+
+// A Direct3D 10 geometry shader that emits points writes no point size (Direct3D 10 has
+// none): valid only while the context leaves shaderTessellationAndGeometryPointSize off.
+TEST_F(EffectRenderTest, GeometryShaderPointsNeedNoPointSize) {
+  if (!ctx().features().geometry_shader) GTEST_SKIP() << "no geometryShader";
+  centre_of("fxkit_gs_points", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+struct V { float4 p : SV_Position; };
+V VS(float4 p : POSITION) { V o; o.p = mul(p, WorldViewProjection); return o; }
+[maxvertexcount(1)]
+void GS(triangle V input[3], inout PointStream<V> points) { points.Append(input[0]); }
+float4 PS(V i) : SV_Target { return 1; }
+technique10 T { pass P {
+  SetVertexShader(CompileShader(vs_4_0, VS()));
+  SetGeometryShader(CompileShader(gs_4_0, GS()));
+  SetPixelShader(CompileShader(ps_4_0, PS()));
+} }
+)");
+}
+
+// A pixel shader reading a float4 TEXCOORD0 the vertex shader writes as a float2 (D3D9
+// code does; `_centroid` names the same register): the missing components read 0 and 1,
+// and the validation layer sees them written.
+TEST_F(EffectRenderTest, NarrowVaryingsReadPaddedComponents) {
+  const std::array<uint8_t, 4> centre = centre_of("fxkit_narrow_varyings", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+struct V { float4 p : POSITION; float2 uv : TEXCOORD0; };
+V VS(float4 p : POSITION) { V o; o.p = mul(p, WorldViewProjection); o.uv = float2(0.5, 0.5); return o; }
+float4 PS(float4 uv : TEXCOORD0_centroid) : COLOR0 { return float4(uv.x, uv.z, uv.w, 1); }
+technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)");
+  EXPECT_NEAR(centre[0], 128, 1);
+  EXPECT_EQ(centre[1], 0);
+  EXPECT_EQ(centre[2], 255);
+}
+
 }  // namespace
 }  // namespace fx::vk::testing

@@ -35,9 +35,11 @@ struct ProgramLayout {
 //    stage's declaration order; the same name and kind (and, for blocks, the same size) in two
 //    stages gets the same binding; same-named but different resources get their own;
 //  - for HLSL stages, each stage's inputs take the locations of the previous stage's outputs
-//    with the same semantic (TEXCOORD = TEXCOORD0), as Direct3D links by semantic. Outputs
-//    are numbered densely in location order. An input no earlier stage writes is a warning
-//    ("shader-varying-unwritten") and gets a location past the outputs.
+//    with the same semantic (TEXCOORD = TEXCOORD0 = D3D9's TEXCOORD0_centroid), as Direct3D
+//    links by semantic. Outputs are numbered densely in location order. An input no earlier
+//    stage writes is a warning ("shader-varying-unwritten") and gets a location past the
+//    outputs. A pixel shader input wider than the output it reads (float4 from a float2)
+//    gets the missing components written by the stage before: 0, and 1 in w, as Direct3D pads.
 // Stages must be ok() and listed once each; their order in `stages` does not matter.
 ProgramLayout link_program(const std::vector<CompiledShader*>& stages, DiagnosticSink& sink);
 
