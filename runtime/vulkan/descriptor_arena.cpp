@@ -52,7 +52,12 @@ VkDescriptorSet DescriptorArena::allocate(const ShaderProgram& program, Diagnost
   // The newest pool first; a full one (out of pool memory, fragmented) gets a successor.
   if (!pools_.empty()) {
     info.descriptorPool = pools_.back();
-    if (vkAllocateDescriptorSets(ctx_->device(), &info, &set) == VK_SUCCESS) return set;
+    const VkResult result = vkAllocateDescriptorSets(ctx_->device(), &info, &set);
+    if (result == VK_SUCCESS) return set;
+    if (result != VK_ERROR_OUT_OF_POOL_MEMORY && result != VK_ERROR_FRAGMENTED_POOL) {
+      check(result, sink, "vkAllocateDescriptorSets");
+      return VK_NULL_HANDLE;
+    }
   }
   info.descriptorPool = add_pool(program, sink);
   if (!info.descriptorPool) return VK_NULL_HANDLE;

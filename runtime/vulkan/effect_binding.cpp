@@ -330,7 +330,8 @@ bool EffectBinding::set_texture(std::string_view texture, VkImageView view, VkIm
 
 bool EffectBinding::bind_textures(DiagnosticSink& sink) {
   for (auto& tech : techniques_)
-    for (auto& pass : tech->passes)
+    for (auto& pass : tech->passes) {
+      pass->resources->rewrite_sets();  // set_texture's view may have another's handle
       for (ImageSlot& slot : pass->images) {
         if (slot.kind == DescriptorKind::sampler) {
           if (!pass->resources->bind_sampler(slot.name, slot.sampler, sink)) return false;
@@ -342,6 +343,7 @@ bool EffectBinding::bind_textures(DiagnosticSink& sink) {
         if (!texture) texture = textures_->gpu(*slot.data, sink);
         if (!texture || !pass->resources->bind(slot.name, *texture, slot.sampler, sink)) return false;
       }
+    }
   textures_pending_ = false;
   return true;
 }
@@ -464,7 +466,9 @@ bool EffectBinding::apply_pass(Pass& pass, uint32_t vertex_layout, DiagnosticSin
     update_object_count();
   }
   PassDesc desc{&pass.shader, pass.state, input, pass.resources.get(), pipeline, pass.ring_offsets};
+  const size_t pools = descriptor_sets_.pool_count();
   if (!recorder_->apply(desc, sink)) return false;
+  if (descriptor_sets_.pool_count() != pools) update_object_count();  // the apply kept its first set
   applied_ = &pass;
   applied_layout_ = vertex_layout;
   return true;
@@ -496,7 +500,8 @@ size_t EffectBinding::pipeline_count() const { return pipelines_->size(); }
 const PipelineCacheStats& EffectBinding::pipeline_stats() const { return pipelines_->stats(); }
 
 void EffectBinding::update_object_count() {
-  int64_t owned = 1 + int64_t(pipelines_->size()) + int64_t(samplers_.size());  // + the VkPipelineCache
+  // + the VkPipelineCache and the descriptor pools of the kept sets
+  int64_t owned = 1 + int64_t(pipelines_->size()) + int64_t(samplers_.size()) + int64_t(descriptor_sets_.pool_count());
   for (const auto& tech : techniques_)
     for (const auto& pass : tech->passes)
       owned += int64_t(pass->shader.stage_infos().size()) + 2;  // modules, set and pipeline layout

@@ -1,6 +1,7 @@
 // FrameResources: uniform ring slices and descriptor pools per frame in flight.
 #include "fx/vulkan/frame_resources.h"
 
+#include <atomic>
 #include <bit>
 #include <cstring>
 
@@ -12,6 +13,8 @@ std::optional<FrameResources> FrameResources::create(const Context& ctx,
                                                      const FrameResourcesDesc& desc,
                                                      DiagnosticSink& sink) {
   FrameResources f;
+  static std::atomic<uint64_t> next_id{1};
+  f.id_ = next_id++;
   f.ctx_ = &ctx;
   f.frames_in_flight_ = std::max(1u, desc.frames_in_flight);
   // A power of two per the Vulkan spec; rounded up anyway, reserve_uniform masks with it.
@@ -56,6 +59,7 @@ FrameResources& FrameResources::operator=(FrameResources&& o) noexcept {
   pools_ = std::move(o.pools_);
   o.pools_.clear();
   frames_in_flight_ = o.frames_in_flight_;
+  id_ = o.id_;
   slice_ = o.slice_, alignment_ = o.alignment_, head_ = o.head_, slice_start_ = o.slice_start_, frame_ = o.frame_;
   bytes_uploaded_ = o.bytes_uploaded_, sets_allocated_ = o.sets_allocated_;
   return *this;

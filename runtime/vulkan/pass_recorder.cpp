@@ -248,12 +248,13 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
     if (!r.set_ || r.images_changed_ || !frames_->still_valid(r.set_frame_)) {
       const uint64_t frame = frames_->frame();
       PassResources::KeptSet* kept = nullptr;
-      if (r.arena_) {
+      if (r.arena_ && (r.kept_for_ == 0 || r.kept_for_ == frames_->id())) {
+        r.kept_for_ = frames_->id();
         r.kept_.resize(frames_->frames_in_flight());
         kept = &r.kept_[frame % r.kept_.size()];
       }
       VkDescriptorSet set = VK_NULL_HANDLE;
-      if (kept && kept->set && kept->images_version == r.images_version_ && kept->ring == frames_->ring_buffer()) {
+      if (kept && kept->set && kept->images_version == r.images_version_) {
         set = kept->set;  // as it was written
       } else {
         if (!images_bound(r, sink)) return false;
@@ -269,7 +270,7 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
         write_all(set);
         vkUpdateDescriptorSets(ctx_->device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
         ++stats_.descriptor_writes;
-        if (kept && set == kept->set) kept->images_version = r.images_version_, kept->ring = frames_->ring_buffer();
+        if (kept && set == kept->set) kept->images_version = r.images_version_;
       }
       if (kept && set == kept->set) kept->frame = frame;
       r.set_ = set;

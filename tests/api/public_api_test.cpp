@@ -285,6 +285,46 @@ float4 PS(uniform float3 c) : COLOR0 { return float4(c, 1.0); }
   EXPECT_LT(after[0], 50);
 }
 
+// Effect::set_texture on the application's views: each frame in flight writes its kept
+// descriptor set once, later frames write none, and setting a view again writes them again
+// even when the handle is the same (a view made anew may reuse the old one's handle).
+TEST_F(PublicApiTest, SetTextureWritesEachKeptDescriptorSetOnceAndAgainWhenSetAgain) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  const std::string path = write_effect("api_texture.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+texture Tex;
+sampler2D S = sampler_state { Texture = <Tex>; };
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
+float4 PS() : COLOR0 { return tex2D(S, float2(0.5, 0.5)); }
+technique t { pass { CullMode = None; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)");
+  fxkit::Effect effect = r.device->load(path);
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  DiagnosticSink sink;
+  auto red = solid_texture(ctx(), 255, 0, sink), green = solid_texture(ctx(), 0, 255, sink);
+  ASSERT_TRUE(red && green) << describe(sink);
+  fxkit::Technique technique = effect.technique("t");
+  auto frame = [&](std::array<uint8_t, 3>& rgb) {
+    effect.reset_stats();
+    rgb = draw(*r.device, technique, *r.mesh, *r.image);
+    return effect.stats().descriptor_writes;
+  };
+  std::array<uint8_t, 3> rgb{};
+  ASSERT_TRUE(effect.set_texture("Tex", red->view(), red->layout()));
+  for (uint64_t want : {1u, 1u, 0u, 0u}) {  // two frames in flight (DeviceOptions' default)
+    EXPECT_EQ(frame(rgb), want);
+    EXPECT_GT(rgb[0], 200);
+  }
+  ASSERT_TRUE(effect.set_texture("Tex", red->view(), red->layout())) << "the same handle again";
+  for (uint64_t want : {1u, 1u, 0u}) EXPECT_EQ(frame(rgb), want);
+  ASSERT_TRUE(effect.set_texture("Tex", green->view(), green->layout()));
+  EXPECT_EQ(frame(rgb), 1u);
+  EXPECT_GT(rgb[1], 200);
+  EXPECT_LT(rgb[0], 50);
+}
+
 // A framed scene's WorldViewProjection for per-object draws: `on` draws the mesh in view,
 // `off` moves clip x far off screen (row 3, D3D order).
 struct PerObjectMatrix {

@@ -234,19 +234,15 @@ TEST_F(PassRecorderTest, PushDescriptorsRenderLikeDescriptorSets) {
 // Sets kept in a DescriptorArena (as EffectBinding's passes keep them): written once per
 // frame in flight, not again while the images stay; a new texture rewrites each frame's set
 // when that frame comes round; a texture changed after this frame bound the kept set draws
-// through a set of the frame's own, the first draw still sampling the old one.
+// through a set of the frame's own, the first draw still sampling the old one; a recorder
+// on other frames does not touch the kept sets.
 TEST_F(PassRecorderTest, KeptDescriptorSetsAreWrittenOncePerFrameInFlightAndAgainForNewImages) {
   PassHarness h(ctx(), DynamicStateSet::none());
   auto prog = make_program(ctx(), "PSTex");
   DiagnosticSink sink;
   auto input = match_vertex_layout(quad_layout(), prog->program.vertex_inputs(), sink);
   ASSERT_TRUE(input);
-  auto solid = [&](uint8_t r, uint8_t g) {
-    fx::Image image = fx::Image::blank(1, 1, 4);
-    image.pixels = {r, g, 0, 255};
-    return Texture::from_image(ctx(), image, ColorSpace::linear, sink);
-  };
-  auto red = solid(255, 0), green = solid(0, 255);
+  auto red = solid_texture(ctx(), 255, 0, sink), green = solid_texture(ctx(), 0, 255, sink);
   ASSERT_TRUE(red && green) << describe(sink);
   SamplerCache samplers(ctx());
   const VkSampler sampler = samplers.get({}, sink);
@@ -298,6 +294,22 @@ TEST_F(PassRecorderTest, KeptDescriptorSetsAreWrittenOncePerFrameInFlightAndAgai
   EXPECT_EQ(mixed.right_red, 255);
   EXPECT_EQ(mixed.right_green, 0);
   EXPECT_EQ(arena.pool_count(), 1u);
+  // A recorder on other FrameResources (another window's frames) takes sets of its own
+  // frames each time: the kept sets serve the first one, whose frames may still read them.
+  PassHarness other(ctx(), DynamicStateSet::none());
+  VkBuffer other_vb = other.vertices(left);
+  for (int f = 0; f < 3; ++f) {
+    uint64_t writes = 0;
+    other.render([&](VkCommandBuffer cmd, PassRecorder& r) {
+      r.reset_stats();
+      draw(cmd, r, pass, other_vb, 6);
+      writes = r.stats().descriptor_writes;
+    });
+    EXPECT_EQ(writes, 1u) << "other frames " << f;
+  }
+  EXPECT_EQ(frame(*red, *red).writes, 1u) << "the kept set of this slot held green";
+  EXPECT_EQ(frame(*red, *red).writes, 1u);
+  EXPECT_EQ(frame(*red, *red).writes, 0u) << "the kept sets again";
   EXPECT_FALSE(sink.has_errors()) << describe(sink);
 }
 

@@ -10,7 +10,9 @@
 #include <string>
 
 #include "fx/diagnostic.h"
+#include "fx/image.h"
 #include "fx/vulkan/context.h"
+#include "fx/vulkan/texture.h"
 
 namespace fx::vk::testing {
 
@@ -90,5 +92,12 @@ class VulkanTest : public ::testing::Test {
     return context;
   }
 };
+
+// A 1x1 linear texture of colour (red, green, 0, 255).
+inline std::optional<Texture> solid_texture(const Context& ctx, uint8_t red, uint8_t green, DiagnosticSink& sink) {
+  fx::Image image = fx::Image::blank(1, 1, 4);
+  image.pixels = {red, green, 0, 255};
+  return Texture::from_image(ctx, image, ColorSpace::linear, sink);
+}
 
 }  // namespace fx::vk::testing

@@ -231,7 +231,8 @@ class Effect {
   void reset_stats();
 
   // Samples the application's image for texture parameter `name` (from the next begin()).
-  // The view stays the application's; it must outlive the frames that use it.
+  // The view stays the application's; it must outlive the frames that use it. Call it again
+  // for a view made anew (after a resize), even when its handle equals the old one's.
   bool set_texture(std::string_view name, VkImageView view, VkImageLayout layout,
                    VkImageViewType type = VK_IMAGE_VIEW_TYPE_2D);
   // Reads an image file (PNG, JPEG, TGA, BMP: what stb_image reads) for texture parameter

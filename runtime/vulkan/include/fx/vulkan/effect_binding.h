@@ -107,10 +107,10 @@ class EffectBinding {
   const PipelineCacheStats& pipeline_stats() const;
   const DynamicStateSet& dynamic() const { return recorder_->dynamic(); }
 
-  // Vulkan objects (shader modules, layouts, pipelines, samplers, pipeline caches) that
-  // live bindings hold, summed over the process: returns to its baseline when every binding
-  // made after it is gone. Updated by create, warm, pass_objects, an apply() that creates a
-  // pipeline, and destruction.
+  // Vulkan objects (shader modules, layouts, pipelines, samplers, pipeline caches, descriptor
+  // pools) that live bindings hold, summed over the process: returns to its baseline when
+  // every binding made after it is gone. Updated by create, warm, pass_objects, an apply()
+  // that creates a pipeline or a descriptor pool, and destruction.
   static int64_t live_vulkan_objects() { return live_objects_.load(); }
 
  private:

@@ -46,6 +46,9 @@ class FrameResources {
   // Frame counter (0 before the first begin_frame()).
   uint64_t frame() const { return frame_; }
   uint32_t frames_in_flight() const { return frames_in_flight_; }
+  // Unique in the process per create() (a moved-into FrameResources takes the source's):
+  // what kept descriptor sets are written for.
+  uint64_t id() const { return id_; }
   // Whether data written (or a set allocated) in frame `written` may be used by the frame
   // being recorded: only this frame's. An earlier frame's data is still intact, but its slot
   // is recycled once that frame's fence is waited, while this frame may still be reading it.
@@ -91,6 +94,7 @@ class FrameResources {
   Buffer ring_;
   const Context* ctx_ = nullptr;
   std::vector<VkDescriptorPool> pools_;
+  uint64_t id_ = 0;
   uint32_t frames_in_flight_ = 0;
   uint64_t sets_allocated_ = 0;
 };

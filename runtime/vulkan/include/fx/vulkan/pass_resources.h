@@ -39,8 +39,16 @@ class PassResources {
   const ShaderProgram& program() const { return *program_; }
   // Descriptor sets (DescriptorMode::sets) kept in `arena` across frames, one per frame in
   // flight, written again only when the images change: without it each frame allocates and
-  // writes a set from FrameResources. `arena` must outlive this.
+  // writes a set from FrameResources. `arena` must outlive this. The kept sets serve the
+  // first FrameResources that records them; a recorder on another one takes sets of its
+  // frames instead.
   void keep_sets_in(DescriptorArena& arena) { arena_ = &arena; }
+  // The next apply writes the descriptor set again even where every bound handle is equal:
+  // an image view destroyed and made again may come back with the same handle.
+  void rewrite_sets() {
+    images_changed_ = true;
+    ++images_version_;
+  }
 
  private:
   friend class PassRecorder;
@@ -67,11 +75,11 @@ class PassResources {
   struct KeptSet {
     VkDescriptorSet set = VK_NULL_HANDLE;
     uint64_t images_version = 0;
-    VkBuffer ring = VK_NULL_HANDLE;
     uint64_t frame = 0;
   };
   DescriptorArena* arena_ = nullptr;
   std::vector<KeptSet> kept_;
+  uint64_t kept_for_ = 0;  // FrameResources::id() of the frames the kept sets serve (0: none yet)
 };
 
 }  // namespace fx::vk
