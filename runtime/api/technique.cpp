@@ -20,6 +20,16 @@ uint32_t pass_count_of(const fx::EffectVersion& version, uint32_t t) {
   return t < techniques.size() ? uint32_t(techniques[t].passes.size()) : 0;
 }
 
+// A named technique's index and pass count in `version`, kept in the Technique's fields
+// (`serial`, `index`, `passes`): looked up only when the version is another.
+void remember(const detail::EffectState& s, const fx::EffectVersion& version, const std::string& name,
+              uint64_t& serial, uint32_t& index, uint32_t& passes) {
+  if (serial == version.serial) return;
+  index = resolve(s, version, name);
+  passes = pass_count_of(version, index);
+  serial = version.serial;
+}
+
 }  // namespace
 
 namespace detail {
@@ -57,10 +67,9 @@ uint32_t Technique::pass_count() const {
   if (!name_.empty() && resolved_serial_ != 0 && resolved_serial_ == effect_->handle.serial()) return passes_;
   auto version = effect_->handle.version();
   if (!version) return 0;
-  const uint32_t t = resolve(*effect_, *version, name_);
-  const uint32_t count = pass_count_of(*version, t);
-  if (!name_.empty()) resolved_serial_ = version->serial, resolved_ = t, passes_ = count;
-  return count;
+  if (name_.empty()) return pass_count_of(*version, effect_->handle.technique());
+  remember(*effect_, *version, name_, resolved_serial_, resolved_, passes_);
+  return passes_;
 }
 
 std::string Technique::reason() const {
@@ -89,11 +98,7 @@ bool Technique::begin(VkCommandBuffer cmd, const VkViewport& viewport, const VkR
   if (name_.empty()) {
     t = s.handle.technique();
   } else {
-    if (resolved_serial_ != version.serial) {
-      resolved_ = resolve(s, version, name_);
-      passes_ = pass_count_of(version, resolved_);
-      resolved_serial_ = version.serial;
-    }
+    remember(s, version, name_, resolved_serial_, resolved_, passes_);
     t = resolved_;
   }
   if (!binding || t >= binding->technique_count()) return false;

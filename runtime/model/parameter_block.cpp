@@ -261,7 +261,7 @@ bool ParameterStore::Impl::refresh(Block& b, DrawBlock& d) {
       const bool shared = holders[g.top] > 1;
       draw.hot[g.top] = {&d, &g.packed_version, b.packed.data() + r.dst, r.src, r.kind == RunKind::columns4x4, false, shared};
     } else if (HotMatrix& h = draw.hot[g.top]; h.block) {
-      h.others_outdated = false;  // this block is current: the next store_hot marks it again
+      h.others_outdated = false;  // this block is current: the next store_hot logs a change again
     }
   };
   const uint64_t changes = draw.changes;

@@ -30,8 +30,9 @@ struct alignas(32) DrawBlock {  // 32 bytes: a slot's address is a shift
 // nothing. Only a matrix the application has set becomes hot, so store_hot writes only the
 // application's values and records nothing for reloads; a reset or a set through the words
 // ends it. Other blocks holding the matrix learn of it from one logged change (see
-// others_outdated) and re-pack it from the words. The pointers are into the store's blocks, which clears every
-// HotMatrix when it may move them; the next re-pack makes one again.
+// others_outdated) and re-pack it from the words. The pointers are into the store's
+// blocks, which clears every HotMatrix when it may move them; the next re-pack makes one
+// again.
 struct HotMatrix {
   DrawBlock* block = nullptr;          // the hot block's; none when null
   uint64_t* packed_version = nullptr;  // the version its bytes hold (see outdate_others)
@@ -108,22 +109,25 @@ struct DrawState {
   // value.
   void log_change(uint32_t index) {
     hot[index] = {};
+    log(index);
+  }
+
+ private:
+  // A change of top-level parameter `index`: in the recent-change log, and a new version.
+  void log(uint32_t index) {
     touched[changes % kTouchLog] = index;
     ++changes;
     ++versions[index];
   }
-
- private:
   // store_hot's first change of a matrix since another block holding it re-packed it: a
   // logged change and a new version, which the hot block holds already (it skips the
   // change when it had seen every one before it) and the others re-pack at their next
   // update. The words stay behind (stale) until one of them syncs them.
   void outdate_others(uint32_t index, HotMatrix& h) {
     const bool hot_current = h.block->seen_changes == changes;
-    touched[changes % kTouchLog] = index;
-    ++changes;
+    log(index);
     if (hot_current) h.block->seen_changes = changes;
-    *h.packed_version = ++versions[index];
+    *h.packed_version = versions[index];
     h.others_outdated = true;
   }
 };

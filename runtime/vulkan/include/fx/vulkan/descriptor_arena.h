@@ -14,11 +14,8 @@ namespace fx::vk {
 class DescriptorArena {
  public:
   explicit DescriptorArena(const Context& ctx) : ctx_(&ctx) {}
-  DescriptorArena(DescriptorArena&& other) noexcept : ctx_(other.ctx_), pools_(std::move(other.pools_)) {
-    other.pools_.clear();
-  }
-  DescriptorArena& operator=(DescriptorArena&&) = delete;
-  DescriptorArena(const DescriptorArena&) = delete;
+  DescriptorArena(const DescriptorArena&) = delete;  // the sets point into its pools
+  DescriptorArena& operator=(const DescriptorArena&) = delete;
   ~DescriptorArena();
 
   // A set of `program`'s layout (DescriptorMode::sets), kept until the arena is destroyed.
