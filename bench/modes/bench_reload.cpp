@@ -1,7 +1,9 @@
 // `fxkit bench reload [--effects DIR] [--repeats N] [--json]`: edit-to-first-new-frame
 // latency of hot reload over 50 edits of the seed effects (round robin), split into detect /
 // parse / compile / pipeline / first frame, with the Vulkan backend building each new
-// version's pipelines and a headless frame drawn with it. Each edit appends a new function
+// version's pipelines and a headless frame drawn with it; once with glslang in this process
+// and once in compile worker processes (the default of the tools and of fxkit::Device), in
+// the same run, with the difference of their medians. Each edit appends a new function
 // to the effect, so the shared shader text changes and every stage goes back through
 // glslang (the realistic worst case: an edit to shader code). The baseline is glslang's own
 // time for the same units; the framework's share is everything except glslang and the
@@ -17,8 +19,10 @@
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "bench.h"
+#include "fx/compile/compile_workers.h"
 #include "fx/mesh.h"
 #include "fx/model/parameter_store.h"
 #include "fx/reload/effect_library.h"
@@ -57,9 +61,16 @@ void save(const fs::path& file, const std::string& text) {
   fs::rename(temp, file);
 }
 
-}  // namespace
+// One series of edits, with glslang where `workers` says.
+struct ReloadRun {
+  std::vector<Sample> samples;
+  int failures = 0, timeouts = 0;
+  size_t effects = 0;
+  std::string device;
+  double worker_start_ms = 0, worker_warm_up_ms = 0;  // the pool's last worker start, and its warm-up
+};
 
-int bench_reload(const BenchArgs& args) {
+bool measure_reloads(const BenchArgs& args, const std::optional<fx::CompileWorkerOptions>& workers, ReloadRun& run) {
   const int reloads = 50;
   fs::path scratch = fs::temp_directory_path() / ("fxkit_bench_reload_" + std::to_string(::getpid()));
   std::error_code ec;
@@ -75,12 +86,13 @@ int bench_reload(const BenchArgs& args) {
   std::sort(effects.begin(), effects.end());
   if (effects.empty()) {
     std::fprintf(stderr, "fxkit bench reload: no .fx files in '%s'\n", args.effects_dir.c_str());
-    return kUsageError;
+    return false;
   }
 
   fx::EffectLibraryOptions options;
   options.include_dirs = {scratch.string()};
   options.coalesce = std::chrono::milliseconds(0);  // latency of the machinery, not of the window
+  options.compile_workers = workers;
   // The GPU side: a headless device, a sphere framed by the camera, a binding per version.
   fx::DiagnosticSink gpu_sink;
   auto mesh = fx::make_mesh("sphere", gpu_sink);
@@ -91,7 +103,7 @@ int bench_reload(const BenchArgs& args) {
   if (!preview) {
     for (const fx::Diagnostic& d : gpu_sink.diagnostics())
       std::fprintf(stderr, "fxkit bench reload: %s [%s]\n", d.message.c_str(), d.id.c_str());
-    return kUsageError;
+    return false;
   }
   fx::vk::EffectPreview* p = preview.get();
   fx::vk::ReloadBackend backend(*ctx, preview->textures(), preview->frames(),
@@ -101,6 +113,10 @@ int bench_reload(const BenchArgs& args) {
                                                           }});
   options.backend = &backend;
   fx::EffectLibrary lib(std::move(options));
+  if (workers && !lib.compile_workers()) {
+    std::fprintf(stderr, "fxkit bench reload: compile workers: %s\n", lib.compile_workers_error().c_str());
+    return false;
+  }
   // Draws one frame of an effect's live version; false if it has nothing drawable.
   auto draw = [&](fx::EffectHandle& effect) {
     auto version = effect.version();
@@ -126,8 +142,9 @@ int bench_reload(const BenchArgs& args) {
     }
   }
 
-  std::vector<Sample> samples;
-  int failures = 0, timeouts = 0;
+  std::vector<Sample>& samples = run.samples;
+  int& failures = run.failures;
+  int& timeouts = run.timeouts;
   for (int i = 0, k = 0; i < reloads && k < reloads * 4; ++k) {
     size_t e = static_cast<size_t>(k) % effects.size();
     if (!handles[e].ok()) continue;
@@ -159,53 +176,93 @@ int bench_reload(const BenchArgs& args) {
     s.ms.first_frame = std::chrono::duration<double, std::milli>(drawn - swapped).count();
     samples.push_back(s);
   }
-
-  std::vector<double> total, detect, parse, compile, glslang, pipeline, first, framework;
-  for (const Sample& s : samples) {
-    total.push_back(s.edit_to_frame);
-    detect.push_back(s.ms.detect);
-    parse.push_back(s.ms.parse);
-    compile.push_back(s.ms.compile);
-    glslang.push_back(s.ms.glslang);
-    pipeline.push_back(s.ms.pipeline);
-    first.push_back(s.ms.first_frame);
-    framework.push_back(s.edit_to_frame - s.ms.glslang - s.ms.pipeline - s.ms.first_frame);
+  run.effects = effects.size();
+  run.device = ctx->info().name;
+  if (lib.compile_workers()) {
+    run.worker_start_ms = lib.compile_workers()->stats().start_ms;
+    run.worker_warm_up_ms = lib.compile_workers()->stats().warm_up_ms;
   }
-  double share = median(total) > 0 ? median(framework) / median(total) : 0;
-  double ratio = median(glslang) > 0 ? median(total) / median(glslang) : 0;
   fs::remove_all(scratch, ec);
+  return true;
+}
 
+// The medians of one run, as JSON.
+struct Medians {
+  std::vector<double> total, detect, parse, compile, glslang, pipeline, first, framework;
+
+  explicit Medians(const std::vector<Sample>& samples) {
+    for (const Sample& s : samples) {
+      total.push_back(s.edit_to_frame);
+      detect.push_back(s.ms.detect);
+      parse.push_back(s.ms.parse);
+      compile.push_back(s.ms.compile);
+      glslang.push_back(s.ms.glslang);
+      pipeline.push_back(s.ms.pipeline);
+      first.push_back(s.ms.first_frame);
+      framework.push_back(s.edit_to_frame - s.ms.glslang - s.ms.pipeline - s.ms.first_frame);
+    }
+  }
+  double share() const { return median(total) > 0 ? median(framework) / median(total) : 0; }
+  double ratio() const { return median(glslang) > 0 ? median(total) / median(glslang) : 0; }
+};
+
+nlohmann::json run_json(const ReloadRun& run) {
+  Medians m(run.samples);
+  return {{"reloads", run.samples.size()},
+          {"failures", run.failures},
+          {"timeouts", run.timeouts},
+          {"effects", run.effects},
+          {"median_ms",
+           {{"total", median(m.total)}, {"detect", median(m.detect)}, {"parse", median(m.parse)},
+            {"compile", median(m.compile)}, {"glslang", median(m.glslang)}, {"pipeline", median(m.pipeline)},
+            {"first_frame", median(m.first)}, {"framework", median(m.framework)}}},
+          {"max_ms", {{"total", maximum(m.total)}, {"framework", maximum(m.framework)}}},
+          {"framework_share", m.share()},
+          {"baseline", "glslang time of the same units"},
+          {"ratio_to_baseline", m.ratio()},
+          {"device", run.device}};
+}
+
+void print_run(const char* where, const ReloadRun& run) {
+  Medians m(run.samples);
+  std::printf("glslang %s: %zu reloads of %zu seed effects (%d failed, %d timed out)\n", where, run.samples.size(),
+              run.effects, run.failures, run.timeouts);
+  std::printf("  edit -> frame  median %7.2f ms  max %7.2f ms\n", median(m.total), maximum(m.total));
+  std::printf("  detect         median %7.2f ms  max %7.2f ms\n", median(m.detect), maximum(m.detect));
+  std::printf("  parse+model    median %7.2f ms  max %7.2f ms\n", median(m.parse), maximum(m.parse));
+  std::printf("  compile        median %7.2f ms  max %7.2f ms  (glslang %7.2f ms median)\n", median(m.compile),
+              maximum(m.compile), median(m.glslang));
+  std::printf("  pipeline       median %7.2f ms  first frame median %7.2f ms\n", median(m.pipeline), median(m.first));
+  std::printf("  framework      median %7.2f ms  max %7.2f ms  = %.1f%% of edit -> frame (target <= 10%%)\n",
+              median(m.framework), maximum(m.framework), 100 * m.share());
+  std::printf("  baseline: glslang alone %.2f ms median; edit -> frame is %.2fx the baseline\n", median(m.glslang),
+              m.ratio());
+}
+
+}  // namespace
+
+int bench_reload(const BenchArgs& args) {
+  ReloadRun here, workers;
+  if (!measure_reloads(args, std::nullopt, here) || !measure_reloads(args, fx::CompileWorkerOptions{}, workers))
+    return kUsageError;
+  const double difference = median(Medians(workers.samples).total) - median(Medians(here.samples).total);
   if (args.json) {
-    nlohmann::json j = {{"reloads", samples.size()},
-                        {"failures", failures},
-                        {"timeouts", timeouts},
-                        {"effects", effects.size()},
-                        {"median_ms",
-                         {{"total", median(total)}, {"detect", median(detect)}, {"parse", median(parse)},
-                          {"compile", median(compile)}, {"glslang", median(glslang)},
-                          {"pipeline", median(pipeline)}, {"first_frame", median(first)},
-                          {"framework", median(framework)}}},
-                        {"max_ms", {{"total", maximum(total)}, {"framework", maximum(framework)}}},
-                        {"framework_share", share},
-                        {"baseline", "glslang time of the same units"},
-                        {"ratio_to_baseline", ratio},
-                        {"device", ctx->info().name}};
+    nlohmann::json j = run_json(workers);
+    j["in_process"] = run_json(here);
+    j["workers_minus_in_process_ms"] = difference;
+    j["worker_start_ms"] = workers.worker_start_ms;
+    j["worker_warm_up_ms"] = workers.worker_warm_up_ms;
     std::printf("%s\n", json_text(j).c_str());
   } else {
-    std::printf("fxkit bench reload on %s: %zu reloads of %zu seed effects (%d failed, %d timed out), coalescing 0 ms\n",
-                ctx->info().name.c_str(), samples.size(), effects.size(), failures, timeouts);
-    std::printf("  edit -> frame  median %7.2f ms  max %7.2f ms\n", median(total), maximum(total));
-    std::printf("  detect         median %7.2f ms  max %7.2f ms\n", median(detect), maximum(detect));
-    std::printf("  parse+model    median %7.2f ms  max %7.2f ms\n", median(parse), maximum(parse));
-    std::printf("  compile        median %7.2f ms  max %7.2f ms  (glslang %7.2f ms median)\n", median(compile),
-                maximum(compile), median(glslang));
-    std::printf("  pipeline       median %7.2f ms  first frame median %7.2f ms\n", median(pipeline), median(first));
-    std::printf("  framework      median %7.2f ms  max %7.2f ms  = %.1f%% of edit -> frame (target <= 10%%)\n",
-                median(framework), maximum(framework), 100 * share);
-    std::printf("  baseline: glslang alone %.2f ms median; edit -> frame is %.2fx the baseline\n", median(glslang),
-                ratio);
+    std::printf("fxkit bench reload on %s, coalescing 0 ms\n", workers.device.c_str());
+    print_run("in this process", here);
+    print_run("in compile workers", workers);
+    std::printf("  workers - in-process: %+.2f ms median edit -> frame (target within 2 ms)\n", difference);
+    std::printf("  a worker starts in %.1f ms, then warms glslang up in %.1f ms (once, at the first compile)\n",
+                workers.worker_start_ms, workers.worker_warm_up_ms);
   }
-  return failures || timeouts ? kInputErrors : kSuccess;
+  const bool failed = here.failures || here.timeouts || workers.failures || workers.timeouts;
+  return failed ? kInputErrors : kSuccess;
 }
 
 }  // namespace fxkit

@@ -46,6 +46,7 @@ struct DeviceState {
   std::unique_ptr<fx::EffectLibrary> library;
   fx::vk::Buffer default_attributes;  // (0, 0, 0, 1) for Target::default_attribute_binding
   std::vector<std::weak_ptr<struct EffectState>> effects;  // loaded through this device
+  std::vector<Message> warnings;  // Device::warnings()
 
   // After load() and every poll(): each effect's `store` is its live version's.
   void refresh_stores();

@@ -118,7 +118,12 @@ std::unique_ptr<detail::DeviceState> make_state(fx::vk::Context ctx, const Devic
   lib.spirv_cache_dir = options.cache_dir;
   lib.compile_threads = options.compile_threads;
   lib.frames_in_flight = std::max(1u, options.frames_in_flight);
+  if (options.compile_in_workers)
+    lib.compile_workers = fx::CompileWorkerOptions{.executable = options.compile_worker, .workers = options.compile_threads};
   s->library = std::make_unique<fx::EffectLibrary>(std::move(lib));
+  if (const std::string& why = s->library->compile_workers_error(); !why.empty())
+    s->warnings.push_back(detail::to_message(fx::Severity::warning, "compile-workers-unavailable",
+                                             "shaders compile in this process: " + why));
   return s;
 }
 
@@ -217,6 +222,8 @@ VkDevice Device::vk_device() const { return state_->ctx->device(); }
 VkPhysicalDevice Device::vk_physical_device() const { return state_->ctx->physical_device(); }
 const Target& Device::target() const { return state_->target; }
 const std::string& Device::device_name() const { return state_->ctx->info().name; }
+
+const std::vector<Message>& Device::warnings() const { return state_->warnings; }
 
 std::vector<Message> Device::take_validation_messages() {
   std::vector<Message> out;

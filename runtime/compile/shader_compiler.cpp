@@ -14,6 +14,7 @@
 #include <glslang/SPIRV/SpvTools.h>
 #include <spirv-tools/libspirv.h>
 
+#include "fx/compile/compile_workers.h"
 #include "fx/compile/spirv_cache.h"
 #include "effect_shader_text.h"
 #include "glslang_reflect.h"
@@ -181,14 +182,14 @@ bool append_spirv_log(const std::string& log, const std::string& entry, std::str
 CompiledShader rejected(std::string text) {
   CompiledShader r;
   r.info_log = "ERROR: " + text + "\n";
-  r.messages.push_back({Severity::error, {}, 0, 0, std::move(text)});
+  r.messages.push_back({Severity::error, {}, 0, 0, std::move(text), {}});
   return r;
 }
 
 }  // namespace
 
-ShaderCompiler::ShaderCompiler(CompileOptions options, SpirvCache* cache)
-    : options_(options), cache_(cache) {}
+ShaderCompiler::ShaderCompiler(CompileOptions options, SpirvCache* cache, CompileWorkers* workers)
+    : options_(options), cache_(cache), workers_(workers) {}
 
 bool ShaderCompiler::glslang_started() { return glslang_process_started.load(); }
 
@@ -221,7 +222,13 @@ CompiledShader ShaderCompiler::compile(const TranslationUnit& unit) const {
       return std::move(*hit);
     }
   }
-  CompiledShader result = run_glslang(unit, *profile);
+  CompiledShader result;
+  if (workers_) {
+    ++glslang_runs_;
+    result = workers_->compile(unit, options_);
+  } else {
+    result = run_glslang(unit, *profile);
+  }
   if (cache_ && result.ok) cache_->store(key, result);
   result.total_ms = ms_since(start);
   return result;

@@ -173,7 +173,8 @@ void report_messages(const std::vector<ShaderMessage>& messages, const ShaderLoc
       text = where + ": " + text;
     }
     bool link = m.file.empty() && m.text.find("Linking") != std::string::npos;
-    const char* id = m.severity == Severity::warning ? "shader-compile-warning"
+    const char* id = !m.id.empty()                   ? m.id.c_str()
+                     : m.severity == Severity::warning ? "shader-compile-warning"
                      : m.severity == Severity::note  ? "shader-compile-note"
                      : link                          ? "shader-link-error"
                                                      : "shader-compile-error";

@@ -72,9 +72,11 @@ std::string write_shader_metadata(const CompiledShader& s) {
     return a;
   };
   json messages = json::array();
-  for (const ShaderMessage& m : s.messages)
+  for (const ShaderMessage& m : s.messages) {
     messages.push_back({{"severity", static_cast<int>(m.severity)}, {"file", m.file},
                         {"line", m.line}, {"column", m.column}, {"text", m.text}});
+    if (!m.id.empty()) messages.back()["id"] = m.id;
+  }
   json j = {{"entry_point", s.entry_point},
             {"legalized", s.legalized},
             {"info_log", s.info_log},
@@ -101,7 +103,7 @@ bool read_shader_metadata(std::string_view text, CompiledShader& s) {
     for (const json& m : j.at("messages"))
       s.messages.push_back({static_cast<Severity>(m.at("severity").get<int>()), m.at("file").get<std::string>(),
                             m.at("line").get<uint32_t>(), m.at("column").get<uint32_t>(),
-                            m.at("text").get<std::string>()});
+                            m.at("text").get<std::string>(), m.value("id", std::string())});
     ShaderReflection& r = s.reflection;
     r.stage = static_cast<ShaderStage>(j.at("stage").get<int>());
     r.entry_point = s.entry_point;

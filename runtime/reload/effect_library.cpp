@@ -114,6 +114,8 @@ struct EffectLibrary::Impl {
   EffectLibraryOptions options;
   FrontEndOptions front_end;
   SpirvCache cache;
+  std::string workers_error;                // written by start_workers()
+  std::unique_ptr<CompileWorkers> workers;  // before `compiler`, which points at it
   ShaderCompiler compiler;
   std::unique_ptr<WorkerPool> own_pool;  // when the options give no executor
   TaskExecutor* executor = nullptr;      // compiles stages and effects in parallel
@@ -143,7 +145,8 @@ struct EffectLibrary::Impl {
   std::atomic<bool> stop{false};
 
   explicit Impl(EffectLibraryOptions o)
-      : options(std::move(o)), cache(options.spirv_cache_dir), compiler({}, &cache) {
+      : options(std::move(o)), cache(options.spirv_cache_dir), workers(start_workers()),
+        compiler({}, &cache, workers.get()) {
     front_end.preprocessor.include_dirs = options.include_dirs;
     for (const std::string& d : options.defines) front_end.preprocessor.defines.push_back(parse_define(d));
     front_end.check.profile = options.profile;
@@ -160,6 +163,11 @@ struct EffectLibrary::Impl {
   }
 
   ~Impl() { stop_worker(); }
+
+  std::unique_ptr<CompileWorkers> start_workers() {
+    if (!options.compile_workers) return nullptr;
+    return CompileWorkers::start(*options.compile_workers, workers_error);
+  }
 
   void stop_worker() {
     if (!worker.joinable()) return;
@@ -479,6 +487,10 @@ void EffectLibrary::reload_all() {
   }
   d.watcher->interrupt();
 }
+
+CompileWorkers* EffectLibrary::compile_workers() const { return impl_->workers.get(); }
+
+const std::string& EffectLibrary::compile_workers_error() const { return impl_->workers_error; }
 
 EffectLibraryStats EffectLibrary::stats() const {
   const Impl& d = *impl_;

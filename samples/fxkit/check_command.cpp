@@ -2,7 +2,7 @@
 //  [--syntax-only | --compile] [--jobs N] [--cache DIR [--cache-limit-mb N]]
 //  [--include-glob G]... [--exclude-glob G]... [--shard K/N]
 //  [--format text|json|sarif|junit | --json] [-o FILE]
-//  [--caps dx7|modern|FILE.json|device [--no-compile]] PATH...`
+//  [--caps dx7|modern|FILE.json|device [--no-compile]] [--in-process] PATH...`
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -24,6 +24,7 @@
 #ifdef FXKIT_HAS_RUNTIME
 #include "caps_option.h"
 #include "check_cache.h"
+#include "compile_workers_option.h"
 #include "fx/compile/spirv_cache.h"
 #include "fx/select/device_caps.h"
 #endif
@@ -47,6 +48,9 @@ struct CheckArgs {
   std::string shard;
   std::string caps;             // --caps: validate every technique on these caps ("" = don't)
   bool no_compile = false;      // --no-compile: validate without compiling shaders
+#ifdef FXKIT_HAS_RUNTIME
+  CompileWorkersFlag workers;   // glslang in worker processes, one per job
+#endif
 };
 
 #ifdef FXKIT_HAS_RUNTIME
@@ -125,7 +129,9 @@ int run_check(CheckArgs args) {
   std::optional<CheckCache> cache;
   if (!args.cache_dir.empty()) cache.emplace(args.cache_dir, cache_options(args), uint64_t{args.cache_limit_mb} << 20);
   fx::SpirvCache spirv(cache ? cache->spirv_directory() : std::filesystem::path());
-  fx::ShaderCompiler compiler({}, &spirv);
+  const bool compiles = !args.syntax_only && (args.caps.empty() || !args.no_compile);
+  std::unique_ptr<fx::CompileWorkers> workers = compiles ? args.workers.start("check", args.jobs) : nullptr;
+  fx::ShaderCompiler compiler({}, &spirv, workers.get());
   settings.compiler = &compiler;
 #endif
   fx::WorkerPool pool(args.jobs);
@@ -217,6 +223,7 @@ void register_check(CLI::App& app, Runner& run) {
       ->capture_default_str();
   cmd->add_option("--caps", args->caps, "Validate every technique on: " + caps_option_help());
   cmd->add_flag("--no-compile", args->no_compile, "With --caps: validate without compiling shaders");
+  args->workers.add_to(*cmd);
 #else
   args->syntax_only = true;  // a parser-only build has no shader compiler: the flag is what it does anyway
 #endif

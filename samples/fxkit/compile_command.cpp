@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "compile_workers_option.h"
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/spirv_cache.h"
 #include "fx/diagnostic_render.h"
@@ -48,6 +49,7 @@ struct CompileArgs {
   std::string output_dir;
   std::string cache_dir;
   bool json = false;
+  CompileWorkersFlag workers;
 };
 
 std::vector<fx::ShaderDefine> shader_defines(const fx::FrontEndOptions& options) {
@@ -87,7 +89,9 @@ int run_compile(const CompileArgs& args) {
   fx::ParsedEffect parsed = fx::parse_effect_file(args.file, sm, diags, options);
   fx::EffectUnits units(parsed.ast, sm, diags, {.defines = shader_defines(options)});
   fx::SpirvCache cache(args.cache_dir);
-  fx::ShaderCompiler compiler({}, &cache);
+  // One worker: the passes below compile one after another.
+  std::unique_ptr<fx::CompileWorkers> workers = args.workers.start("compile", 1);
+  fx::ShaderCompiler compiler({}, &cache, workers.get());
   fx::EffectPrograms programs(units, compiler, sm);
 
   bool failed = diags.has_errors();
@@ -186,7 +190,8 @@ int run_compile(const CompileArgs& args) {
                           {"shaders", std::move(shaders)},
                           {"diagnostics", fx::render_json(effect_level, sm)},
                           {"ok", !failed},
-                          {"glslang_started", fx::ShaderCompiler::glslang_started()}};
+                          {"glslang_started", fx::ShaderCompiler::glslang_started() ||
+                                                  (workers && workers->stats().started > 0)}};
     std::puts(json_text(out).c_str());
   } else {
     std::fputs(fx::render_text(all.diagnostics(), sm).c_str(), stderr);
@@ -204,6 +209,7 @@ void register_compile(CLI::App& app, Runner& run) {
   cmd->add_option("-o", args->output_dir, "Write DIR/<technique>.<pass>.<stage>.spv");
   cmd->add_option("--cache", args->cache_dir, "SPIR-V cache directory (default: memory only)");
   cmd->add_flag("--json", args->json, "Print one JSON document: shaders with their diagnostics");
+  args->workers.add_to(*cmd);
   cmd->add_option("FILE", args->file, "Effect file")->required();
   cmd->callback([args, &run] { run = [args] { return run_compile(*args); }; });
 }

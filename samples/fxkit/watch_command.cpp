@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "compile_workers_option.h"
 #include "fx/diagnostic_render.h"
 #include "fx/reload/effect_library.h"
 #include "fx/reload/reload_transaction.h"
@@ -30,6 +31,7 @@ struct WatchArgs {
   int events = 0;       // stop after this many events (0: no limit)
   double timeout = 0;   // stop after this many seconds (0: no limit)
   int coalesce_ms = 50;
+  CompileWorkersFlag workers;
 };
 
 nlohmann::json event_json(const fx::ReloadEvent& ev) {
@@ -86,6 +88,7 @@ int run_watch(const WatchArgs& args) {
   }
   options.profile = profile.value_or(fx::EffectProfile::automatic);
   options.coalesce = std::chrono::milliseconds(args.coalesce_ms);
+  options.compile_workers = args.workers.options(0);
   if (!std::filesystem::is_regular_file(args.file)) {
     std::fprintf(stderr, "fxkit watch: cannot read '%s'\n", args.file.c_str());
     return kUsageError;
@@ -113,6 +116,9 @@ int run_watch(const WatchArgs& args) {
   }
 
   fx::EffectLibrary lib(std::move(options));
+  if (!lib.compile_workers_error().empty())
+    std::fprintf(stderr, "fxkit watch: warning: compiling in this process: %s [compile-workers-unavailable]\n",
+                 lib.compile_workers_error().c_str());
   fx::EffectHandle effect = lib.load(args.file);
   fx::ReloadEvent loaded;  // the initial load, reported like a reload
   loaded.kind = effect.ok() ? fx::ReloadEventKind::reloaded : fx::ReloadEventKind::failed;
@@ -176,6 +182,7 @@ void register_watch(CLI::App& app, Runner& run) {
       ->capture_default_str();
   cmd->add_option("--mesh", args->mesh, "Mesh to render: sphere, torus, quad, teapot or an .obj (default sphere)");
   cmd->add_option("--out", args->out, "PNG rewritten after the first frame of each new version");
+  args->workers.add_to(*cmd);
   cmd->add_option("FILE", args->file, "Effect file")->required();
   cmd->callback([args, &run] { run = [args] { return run_watch(*args); }; });
 }

@@ -130,6 +130,7 @@ int main(int argc, char** argv) {
                                       options, errors);
   auto mesh = device ? fxkit::Mesh::create(*device, opt.mesh, errors) : nullptr;
   if (!mesh) return print(errors), 2;
+  print(device->warnings());
   auto ui_layer = ImGuiLayer::create(*window);
   if (!ui_layer) return std::fprintf(stderr, "fxkit-view: ImGui's Vulkan backend could not be set up\n"), 2;
 

@@ -45,6 +45,38 @@ TEST(CheckCli, ErrorsExitOneWithFileLineColumnAndCaret) {
       << r.err;
 }
 
+#ifdef FXKIT_COMPILE_WORKER_BINARY
+// A glslang crash, forced by a worker that aborts on a marker in the unit (through a
+// wrapper named by FXKIT_COMPILE_WORKER, as a user points fxkit at another worker), is a
+// located error on that shader; the replaced worker goes on to the next file.
+TEST(CheckCli, ACompilerCrashIsALocatedErrorAndTheNextFileIsStillChecked) {
+  std::string crash = write_temp("crash/a.fx",
+                                 "float FXKIT_TEST_CRASH = 1;\n"
+                                 "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
+                                 "float4 PS() : COLOR { return FXKIT_TEST_CRASH; }\n"
+                                 "technique T { pass P { VertexShader = compile vs_3_0 VS();\n"
+                                 "  PixelShader = compile ps_3_0 PS(); } }\n");
+  write_temp("crash/b.fx",
+             "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
+             "float4 PS() : COLOR { return undefined_name; }\n"
+             "technique T { pass P { VertexShader = compile vs_3_0 VS();\n"
+             "  PixelShader = compile ps_3_0 PS(); } }\n");
+  std::string wrapper = write_temp("crash-worker.sh", std::string("#!/bin/sh\nexec ") + FXKIT_COMPILE_WORKER_BINARY +
+                                                          " \"$@\" --abort-on FXKIT_TEST_CRASH\n");
+  fs::permissions(wrapper, fs::perms::owner_all);
+  std::string folder = fs::path(crash).parent_path().string();
+  ::setenv("FXKIT_COMPILE_WORKER", wrapper.c_str(), 1);
+  auto r = run_fxkit("check --jobs 1 " + folder, true);
+  ::unsetenv("FXKIT_COMPILE_WORKER");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find(crash + ":3:8: error: the shader compiler (glslang) was killed by signal 6"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("[compiler-crashed]"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("b.fx:2:"), std::string::npos) << "b.fx is compiled after the crash: " << r.err;
+  EXPECT_NE(r.err.find("undefined_name"), std::string::npos) << r.err;
+}
+#endif
+
 // The case: a one-letter typo in a vertex shader. `check` compiles the shaders by
 // default, so it fails, once, at the token's column, naming the declared parameter; the
 // pixel shader, which does not call the function, adds nothing.

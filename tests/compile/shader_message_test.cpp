@@ -100,7 +100,7 @@ TEST(ShaderDiagnostics, HlslParseFailureCarriesAColumn) {
 
 TEST(ShaderDiagnostics, UnresolvableLocationsKeepTheGlslangPosition) {
   DiagnosticSink sink;
-  report_messages({{Severity::error, "gone.fx", 4, 2, "'x' : bad"}, {Severity::error, "", 0, 0, "Linking: oops"}},
+  report_messages({{Severity::error, "gone.fx", 4, 2, "'x' : bad", {}}, {Severity::error, "", 0, 0, "Linking: oops", {}}},
                   {}, sink);
   ASSERT_EQ(sink.diagnostics().size(), 2u);
   EXPECT_EQ(sink.diagnostics()[0].message, "gone.fx:4:2: 'x' : bad");

@@ -1,6 +1,7 @@
 // docs/preprocessor.md, docs/effect-compilation.md and docs/shader-compilation.md: the
 // front end and the compiler on their own, without a device.
 #include "example_fixture.h"
+#include "fx/compile/compile_workers.h"
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/effect_units.h"
 #include "fx/compile/program_link.h"
@@ -70,6 +71,24 @@ TEST_F(ExampleTest, ShaderCompilation) {
   EXPECT_FALSE(sink.has_errors());
   EXPECT_FALSE(vs.spirv.empty());
   EXPECT_FALSE(layout.bindings.empty());
+}
+
+TEST_F(ExampleTest, CompileWorkers) {
+  fx::SourceManager sm;
+  fx::DiagnosticSink sink;
+  fx::ParsedEffect parsed = fx::parse_effect_file("effects/wood.fx", sm, sink);
+  fx::EffectUnits units(parsed.ast, sm, sink);
+  const fx::TranslationUnit vs_unit = *units.unit(*units.passes().front().find(fx::ShaderStage::vertex));
+  fx::SpirvCache cache;
+
+  std::string error;
+  auto workers = fx::CompileWorkers::start({.workers = 2}, error);  // nullptr + error if not found
+  fx::ShaderCompiler compiler({}, &cache, workers.get());          // compile() is unchanged
+
+  ASSERT_TRUE(workers) << error;
+  fx::CompiledShader vs = compiler.compile(vs_unit);
+  EXPECT_TRUE(vs.ok) << vs.info_log;
+  EXPECT_EQ(workers->stats().compiles, 1u);
 }
 
 }  // namespace

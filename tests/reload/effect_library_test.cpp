@@ -120,6 +120,34 @@ TEST_F(EffectLibraryTest, BrokenEditKeepsTheLastGoodEffectThenTheFixApplies) {
   EXPECT_EQ(value, 0.75f) << "values survive a reload";
 }
 
+TEST_F(EffectLibraryTest, ACompilerCrashFailsTheReloadAndKeepsTheLastGoodEffect) {
+  EffectLibraryOptions options = test_options();
+  // The worker aborts on a unit whose text holds the marker, as glslang does on what it
+  // cannot survive; the marker is a name the pixel shader reaches, so it is in the unit.
+  options.compile_workers = CompileWorkerOptions{.workers = 1, .arguments = {"--abort-on", "FXKIT_TEST_CRASH"}};
+  EffectLibrary lib(std::move(options));
+  ASSERT_NE(lib.compile_workers(), nullptr) << lib.compile_workers_error();
+  EffectHandle e = lib.load(path("a.fx"));
+  ASSERT_TRUE(e.ok());
+  auto good = e.version();
+
+  save_truncate_write(dir / "common.fxh", "float FXKIT_TEST_CRASH = 1;\nfloat Scale() { return FXKIT_TEST_CRASH; }\n");
+  std::vector<ReloadEvent> events = next_events(lib);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, ReloadEventKind::failed);
+  ASSERT_TRUE(has_id(events[0].diagnostics, "compiler-crashed"));
+  std::string text = render_text(events[0].diagnostics, *events[0].sources);
+  EXPECT_NE(text.find("a.fx:5:"), std::string::npos) << "at the pixel shader's definition: " << text;
+  EXPECT_EQ(e.version(), good) << "the last good version stays live";
+  EXPECT_EQ(lib.compile_workers()->stats().crashed, 1u);
+
+  save_truncate_write(dir / "common.fxh", common_text("2.0"));
+  events = next_events(lib);
+  ASSERT_GE(events.size(), 1u);
+  EXPECT_EQ(events.back().kind, ReloadEventKind::reloaded) << render_text(events.back().diagnostics, *events.back().sources);
+  EXPECT_NE(e.version(), good) << "the replaced worker compiles the fix";
+}
+
 TEST_F(EffectLibraryTest, RemovedParameterHandleBecomesInertWithAWarning) {
   EffectLibrary lib(test_options());
   EffectHandle e = lib.load(path("a.fx"));

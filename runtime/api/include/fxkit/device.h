@@ -54,6 +54,16 @@ struct DeviceOptions {
   bool dynamic_state = true;
   std::string cache_dir{};                  // SPIR-V cache on disk; "": in memory only
   uint32_t compile_threads = 0;             // threads compiling an effect's shaders; 0: one per core
+  // glslang runs in fxkit-compile-worker processes that stay alive (one per compile thread),
+  // so a compiler crash or hang on an edited effect fails that reload with a
+  // `compiler-crashed` error instead of taking the application down. false compiles in this
+  // process: no extra processes, but glslang's crashes are the application's.
+  // docs/shader-compilation.md weighs the two.
+  bool compile_in_workers = true;
+  // The worker program; "": $FXKIT_COMPILE_WORKER, then beside the running program (where
+  // the fxkit tool installs it), then fxkit's build tree. Not found: in-process, with a
+  // warning in Device::warnings().
+  std::string compile_worker{};
 };
 
 // What begin_frame() swapped in or could not.
@@ -107,6 +117,9 @@ class Device {
   VkPhysicalDevice vk_physical_device() const;
   const Target& target() const;
   const std::string& device_name() const;
+  // What create() worked around and the application may want to know (compile workers
+  // that did not start: shaders compile in this process).
+  const std::vector<Message>& warnings() const;
   // Errors the validation layer reported (headless with validation), as messages; cleared.
   std::vector<Message> take_validation_messages();
 

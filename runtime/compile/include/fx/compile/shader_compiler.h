@@ -11,6 +11,7 @@
 
 namespace fx {
 
+class CompileWorkers;
 class SpirvCache;
 
 // The result of compiling one stage. `ok` is false when glslang reported errors (see
@@ -32,17 +33,21 @@ struct CompiledShader {
 
 // Compiles translation units. compile() is safe to call from several threads at once:
 // each call owns its glslang TShader/TProgram, and glslang's process-wide tables are
-// initialised once (and released at exit).
+// initialised once (and released at exit); with workers, each call takes a worker process.
 class ShaderCompiler {
  public:
   // `cache` (optional, not owned) is consulted before glslang and filled after it.
-  explicit ShaderCompiler(CompileOptions options = {}, SpirvCache* cache = nullptr);
+  // `workers` (optional, not owned): glslang runs in those processes instead of this one
+  // (fx/compile/compile_workers.h).
+  explicit ShaderCompiler(CompileOptions options = {}, SpirvCache* cache = nullptr,
+                          CompileWorkers* workers = nullptr);
 
   // Compiles `unit`; never throws. Errors are in the result's messages.
   CompiledShader compile(const TranslationUnit& unit) const;
 
   const CompileOptions& options() const { return options_; }
-  // How many times this compiler ran glslang (cache hits do not count).
+  CompileWorkers* workers() const { return workers_; }
+  // How many times this compiler ran glslang, here or in a worker (cache hits do not count).
   uint64_t glslang_runs() const { return glslang_runs_.load(); }
 
   // Whether this process has initialised glslang (its process tables; the built-in symbol
@@ -59,6 +64,7 @@ class ShaderCompiler {
 
   CompileOptions options_;
   SpirvCache* cache_ = nullptr;
+  CompileWorkers* workers_ = nullptr;
   mutable std::atomic<uint64_t> glslang_runs_{0};
 };
 

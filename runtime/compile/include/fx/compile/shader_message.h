@@ -19,6 +19,7 @@ struct ShaderMessage {
   uint32_t line = 0;     // 1-based; 0 when unknown
   uint32_t column = 0;   // 1-based; 0 when glslang gave none
   std::string text;      // glslang's message without the "ERROR: file:line:" prefix
+  std::string id;        // the diagnostic id; "": chosen from the message (report_messages)
 };
 
 // Parses an info log ("ERROR: a.fx:12: 'x' : undeclared identifier", "WARNING: a.fx:3:7: ...",
@@ -33,8 +34,8 @@ using ShaderLocationResolver =
 // `line` plus column-1 (the line start when glslang gave no column). `sm` must outlive it.
 ShaderLocationResolver resolver_for(const SourceManager& sm);
 
-// Reports messages into `sink` with stable ids ("shader-compile-error", "shader-compile-warning",
-// "shader-link-error"). Messages the resolver cannot place keep their glslang location in
+// Reports messages into `sink` with their own id, or a stable one chosen from the message
+// ("shader-compile-error", "shader-compile-warning", "shader-link-error"). Messages the resolver cannot place keep their glslang location in
 // the message text ("a.fx:12: ...") so nothing is lost when rendered as <unknown>.
 void report_messages(const std::vector<ShaderMessage>& messages, const ShaderLocationResolver& resolve,
                      DiagnosticSink& sink);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "fx/checker.h"
+#include "fx/compile/compile_workers.h"
 #include "fx/diagnostic.h"
 #include "fx/reload/effect_backend.h"
 #include "fx/reload/file_watcher.h"
@@ -47,6 +48,11 @@ struct EffectLibraryOptions {
   // 0: one per hardware thread; 1: the calling thread alone. Ignored when `executor` is set.
   uint32_t compile_threads = 0;
   TaskExecutor* executor = nullptr;       // not owned: the application's own job system
+  // Set: glslang runs in worker processes (fx/compile/compile_workers.h), so a compiler
+  // crash on an edited file fails that load or reload instead of the application. When the
+  // workers cannot start, shaders compile in this process and compile_workers_error() says
+  // why. Unset: in this process.
+  std::optional<CompileWorkerOptions> compile_workers;
   uint32_t frames_in_flight = 2;          // how long replaced versions are kept (poll frames)
   std::function<void(const ReloadEvent&)> on_event;  // called from poll(), before it returns
 };
@@ -157,6 +163,10 @@ class EffectLibrary {
   void reload_all();
 
   EffectLibraryStats stats() const;
+  // The compile worker pool (null: shaders compile in this process), and why it is null
+  // although the options asked for one ("" otherwise).
+  CompileWorkers* compile_workers() const;
+  const std::string& compile_workers_error() const;
   // Problems of the watcher itself (inotify unavailable, watch limits).
   std::vector<Diagnostic> watcher_diagnostics() const;
   const EffectLibraryOptions& options() const;
