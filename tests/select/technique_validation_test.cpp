@@ -348,8 +348,7 @@ technique10 t
 // Hull and domain shaders compile to SPIR-V's Tessellation capability: a Vulkan device
 // without tessellationShader rejects the technique at each tessellation stage instead of
 // calling it valid and failing when its pipeline is made.
-TEST(TechniqueValidation, TessellationNeedsTheDevicesTessellationShaderFeature) {
-  auto l = parse(R"(float4x4 Wvp;
+constexpr const char* kTessellationEffect = R"(float4x4 Wvp;
 struct V { float4 pos : SV_Position; };
 struct F { float edges[3] : SV_TessFactor; float inside : SV_InsideTessFactor; };
 V VS(float4 p : POSITION) { V o; o.pos = mul(p, Wvp); return o; }
@@ -370,7 +369,10 @@ technique11 t
         SetPixelShader(CompileShader(ps_5_0, PS()));
     }
 }
-)");
+)";
+
+TEST(TechniqueValidation, TessellationNeedsTheDevicesTessellationShaderFeature) {
+  auto l = parse(kTessellationEffect);
   fx::DeviceCaps device = caps("modern");
   device.name = "gpu";
   device.vulkan.present = true;
@@ -384,6 +386,18 @@ technique11 t
   EXPECT_EQ(v[0].reasons[1].message.substr(0, 31), "domain shader uses tessellation");
   device.vulkan.features = {"tessellationShader"};
   EXPECT_TRUE(validate(*l, device)[0].valid) << all(*l, validate(*l, device)[0]);
+
+  // A hull shader without its domain shader cannot tessellate, on any device.
+  std::string text = kTessellationEffect;
+  const std::string domain_line = "        SetDomainShader(CompileShader(ds_5_0, DS()));\n";
+  text.erase(text.find(domain_line), domain_line.size());
+  auto hull_only = parse(text);
+  auto h = validate(*hull_only, device);
+  ASSERT_FALSE(h[0].valid);
+  ASSERT_EQ(h[0].reasons.size(), 1u) << all(*hull_only, h[0]);
+  EXPECT_EQ(h[0].reasons[0].id, "missing-tessellation-stage");
+  EXPECT_EQ(h[0].reasons[0].message, "pass sets a hull shader but no domain shader; tessellation needs both");
+  EXPECT_EQ(line_of(*hull_only, h[0].reasons[0]), 17u);
 }
 
 // Direct3D 10/11 and Vulkan draw only with a vertex shader; a Direct3D 9 pass without one
