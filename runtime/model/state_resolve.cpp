@@ -175,6 +175,9 @@ ShaderBinding shader_from(const ast::Expr& e, PassStage stage, ResolveContext& c
       return b;
     }
     case ast::ExprKind::null: return b;
+    case ast::ExprKind::int_literal:  // `SetGeometryShader(0)`: fx_4_0 takes 0 for NULL
+      if (is_null(e)) return b;
+      break;
     default: break;
   }
   ctx.diags.error("bad-state-value", e.range, "not a shader: expected compile, CompileShader, asm, a GLSL block or NULL");

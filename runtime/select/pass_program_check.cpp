@@ -118,7 +118,11 @@ PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique
   };
   for (const StageProgram& sp : program.stages) {
     const ShaderReflection& r = sp.shader.reflection;
-    const std::string noun = std::string(to_string(sp.stage)) + " shader";
+    // Effects name the tessellation stages as Direct3D 11 does.
+    const std::string noun = std::string(sp.stage == ShaderStage::tess_control      ? "hull"
+                                         : sp.stage == ShaderStage::tess_evaluation ? "domain"
+                                                                                    : to_string(sp.stage)) +
+                             " shader";
     uint32_t textures = 0, samplers = 0, uniform = 0, inputs = 0;
     for (const ImageBinding& img : r.images) {
       uint32_t n = std::max<uint32_t>(1, img.array_size);

@@ -19,7 +19,7 @@ namespace {
 // geometry shaders (particles) never do, since Direct3D 10 has no point size.
 constexpr ShaderCapabilityFeature kRows[] = {
     FX_NEEDS(2, "Geometry", geometryShader, "a geometry shader"),
-    FX_NEEDS(3, "Tessellation", tessellationShader, "a hull or domain shader"),
+    FX_NEEDS(3, "Tessellation", tessellationShader, "tessellation"),
     FX_NEEDS(10, "Float64", shaderFloat64, "double"),
     FX_NEEDS(11, "Int64", shaderInt64, "64-bit integers"),
     FX_NEEDS(22, "Int16", shaderInt16, "16-bit integers"),

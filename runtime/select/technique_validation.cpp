@@ -329,13 +329,22 @@ class TechniqueValidator {
   }
 
   // A Direct3D 10/11 pass that sets other stages draws only with a vertex shader, and a
-  // Vulkan graphics pipeline needs one (a Direct3D 9 pass gets the fixed-function one).
+  // Vulkan graphics pipeline needs one (a Direct3D 9 pass gets the fixed-function one); a
+  // hull shader goes with a domain shader.
   void check_vertex_shader(const TechniqueInfo& technique, const PassInfo& pass) {
     if (technique_version(technique) < 10) return;
     auto bound = [&](PassStage s) {
       const ShaderBinding* b = pass.shader(s);
       return b && b->source != ShaderSource::null ? b : nullptr;
     };
+    // Tessellation takes both stages (Direct3D 11 and Vulkan alike).
+    const ShaderBinding* hull = bound(PassStage::hull);
+    const ShaderBinding* domain = bound(PassStage::domain);
+    if (!hull != !domain)
+      reasons_.add("missing-tessellation-stage", hull ? hull->range : domain->range,
+                   std::string("pass sets a ") +
+                       (hull ? "hull shader but no domain shader" : "domain shader but no hull shader") +
+                       "; tessellation needs both");
     if (bound(PassStage::vertex)) return;
     for (PassStage s : {PassStage::hull, PassStage::domain, PassStage::geometry, PassStage::pixel})
       if (const ShaderBinding* b = bound(s)) {

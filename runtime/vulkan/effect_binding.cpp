@@ -193,6 +193,16 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
         break;
       }
       pass->shader = std::move(*shader);
+      // A tessellating pass draws patches of the hull shader's input size.
+      const uint32_t points = pass->shader.patch_control_points();
+      if (points && desc.patch_control_points && points != desc.patch_control_points) {
+        tech->reason = "pass '" + pass_info.name + "': its hull shader takes patches of " + std::to_string(points) +
+                       " control points; the geometry comes in patches of " +
+                       std::to_string(desc.patch_control_points) +
+                       (desc.patch_control_points == 3 ? " (triangle lists)" : "");
+        break;
+      }
+      pass->state = with_patches(pass->state, points);
       pass->resources = std::make_unique<PassResources>(pass->shader);
       pass->resources->keep_sets_in(b->descriptor_sets_);
       // Uniform blocks: the store packs each under an id of its own.

@@ -1,7 +1,9 @@
 // Fills VkGraphicsPipelineCreateInfo from a GraphicsPipelineDesc (see graphics_pipeline.h).
 #include "fx/vulkan/graphics_pipeline.h"
 
+#include <algorithm>
 #include <cstring>
+#include <string>
 
 #include "vk_check.h"
 
@@ -10,6 +12,19 @@ namespace fx::vk {
 VkPipeline create_graphics_pipeline(VkDevice device, VkPipelineCache cache, const GraphicsPipelineDesc& desc,
                                     DiagnosticSink& sink) {
   const PipelineState& s = desc.state;
+  // Vulkan allows patch lists exactly when the stages tessellate; the driver may crash on
+  // either mismatch rather than fail, so it is a diagnostic here.
+  const bool tessellates = std::any_of(
+      desc.stages.begin(), desc.stages.end(),
+      [](const VkPipelineShaderStageCreateInfo& i) { return i.stage == VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT; });
+  const bool patches = s.topology == VK_PRIMITIVE_TOPOLOGY_PATCH_LIST && s.patch_control_points > 0;
+  if (tessellates != patches) {
+    sink.error("vk-tessellation-patches", {},
+               tessellates ? "a pipeline with a hull (tessellation control) shader must draw patch lists "
+                             "(PipelineState::patch_control_points, see with_patches())"
+                           : "a pipeline draws patch lists only with hull and domain (tessellation) shaders");
+    return VK_NULL_HANDLE;
+  }
   auto vertex =
       structure<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
   vertex.vertexBindingDescriptionCount = uint32_t(desc.vertex_bindings.size());
@@ -21,6 +36,13 @@ VkPipeline create_graphics_pipeline(VkDevice device, VkPipelineCache cache, cons
       structure<VkPipelineInputAssemblyStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
   assembly.topology = VkPrimitiveTopology(s.topology);
   assembly.primitiveRestartEnable = s.primitive_restart;
+
+  // Vulkan's default domain origin, upper left, is Direct3D's: glslang keeps an HLSL hull
+  // shader's outputtopology("triangle_cw") as VertexOrderCw, so the winding comes out as in
+  // Direct3D (TessellationRenderTest checks it with SV_IsFrontFace).
+  auto tessellation =
+      structure<VkPipelineTessellationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO);
+  tessellation.patchControlPoints = s.patch_control_points;
 
   auto viewport = structure<VkPipelineViewportStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
   viewport.viewportCount = 1;
@@ -92,6 +114,7 @@ VkPipeline create_graphics_pipeline(VkDevice device, VkPipelineCache cache, cons
   info.pStages = desc.stages.data();
   info.pVertexInputState = &vertex;
   info.pInputAssemblyState = &assembly;
+  info.pTessellationState = tessellates ? &tessellation : nullptr;
   info.pViewportState = &viewport;
   info.pRasterizationState = &raster;
   info.pMultisampleState = &multisample;

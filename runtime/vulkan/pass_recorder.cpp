@@ -96,6 +96,9 @@ void PassRecorder::record_dynamic_state(const PipelineState& s, bool all) {
     if (FX_CHANGED(primitive_restart)) vkCmdSetPrimitiveRestartEnable(cmd, s.primitive_restart), ++calls;
   }
   const DeviceFunctions& fn = ctx_->functions();
+  if (dynamic_.patch_control_points && s.topology == VK_PRIMITIVE_TOPOLOGY_PATCH_LIST &&
+      FX_CHANGED(patch_control_points))
+    fn.set_patch_control_points(cmd, s.patch_control_points), ++calls;
   if (dynamic_.polygon_mode && FX_CHANGED(polygon_mode))
     fn.set_polygon_mode(cmd, VkPolygonMode(s.polygon_mode)), ++calls;
   if (dynamic_.depth_clamp && FX_CHANGED(depth_clamp))

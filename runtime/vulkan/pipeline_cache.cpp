@@ -92,7 +92,8 @@ VkPipeline PipelineCache::create_pipeline(const ShaderProgram& program, const Pi
   desc.vertex_bindings = vi.bindings;
   desc.vertex_attributes = vi.attributes;
   desc.formats = formats;
-  desc.dynamic_states = {dynamic_states, dynamic.dynamic_state_list(dynamic_states, formats.color_count)};
+  desc.dynamic_states = {dynamic_states, dynamic.dynamic_state_list(dynamic_states, formats.color_count,
+                                                                    s.topology == VK_PRIMITIVE_TOPOLOGY_PATCH_LIST)};
   return create_graphics_pipeline(ctx_->device(), cache_, desc, sink);
 }
 

@@ -18,6 +18,7 @@ DynamicStateSet DynamicStateSet::from_features(const DeviceFeatures& f) {
   DynamicStateSet d;
   d.eds1 = f.extended_dynamic_state;
   d.eds2 = f.extended_dynamic_state2;
+  d.patch_control_points = f.eds2_patch_control_points;
   d.polygon_mode = f.eds3.polygon_mode;
   d.depth_clamp = f.eds3.depth_clamp_enable && f.depth_clamp;
   d.sample_mask = f.eds3.sample_mask;
@@ -31,13 +32,13 @@ DynamicStateSet DynamicStateSet::from_features(const DeviceFeatures& f) {
 uint32_t DynamicStateSet::bits() const {
   const bool flags[] = {eds1, eds2, polygon_mode, depth_clamp, sample_mask,
                         alpha_to_coverage, color_blend_enable, color_blend_equation,
-                        color_write_mask};
+                        color_write_mask, patch_control_points};
   uint32_t b = 0;
   for (uint32_t i = 0; i < std::size(flags); ++i) b |= uint32_t(flags[i]) << i;
   return b;
 }
 
-uint32_t DynamicStateSet::dynamic_state_list(VkDynamicState* out, uint32_t) const {
+uint32_t DynamicStateSet::dynamic_state_list(VkDynamicState* out, uint32_t, bool patches) const {
   uint32_t n = 0;
   out[n++] = VK_DYNAMIC_STATE_VIEWPORT;
   out[n++] = VK_DYNAMIC_STATE_SCISSOR;
@@ -57,6 +58,7 @@ uint32_t DynamicStateSet::dynamic_state_list(VkDynamicState* out, uint32_t) cons
     out[n++] = VK_DYNAMIC_STATE_RASTERIZER_DISCARD_ENABLE;
     out[n++] = VK_DYNAMIC_STATE_PRIMITIVE_RESTART_ENABLE;
   }
+  if (patch_control_points && patches) out[n++] = VK_DYNAMIC_STATE_PATCH_CONTROL_POINTS_EXT;
   if (polygon_mode) out[n++] = VK_DYNAMIC_STATE_POLYGON_MODE_EXT;
   if (depth_clamp) out[n++] = VK_DYNAMIC_STATE_DEPTH_CLAMP_ENABLE_EXT;
   if (sample_mask) out[n++] = VK_DYNAMIC_STATE_SAMPLE_MASK_EXT;
@@ -65,6 +67,13 @@ uint32_t DynamicStateSet::dynamic_state_list(VkDynamicState* out, uint32_t) cons
   if (color_blend_equation) out[n++] = VK_DYNAMIC_STATE_COLOR_BLEND_EQUATION_EXT;
   if (color_write_mask) out[n++] = VK_DYNAMIC_STATE_COLOR_WRITE_MASK_EXT;
   return n;
+}
+
+PipelineState with_patches(PipelineState state, uint32_t control_points) {
+  if (control_points == 0) return state;
+  state.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
+  state.patch_control_points = control_points;
+  return state;
 }
 
 VkPrimitiveTopology topology_class_representative(VkPrimitiveTopology t) {

@@ -8,6 +8,7 @@
 #include <span>
 #include <utility>
 
+#include "tessellation_patch.h"
 #include "vk_check.h"
 
 namespace fx::vk {
@@ -83,6 +84,7 @@ ShaderProgram& ShaderProgram::operator=(ShaderProgram&& o) noexcept {
   pipeline_layout_ = std::exchange(o.pipeline_layout_, VK_NULL_HANDLE);
   vertex_inputs_ = std::move(o.vertex_inputs_);
   color_outputs_ = o.color_outputs_;
+  patch_control_points_ = o.patch_control_points_;
   blocks_ = std::move(o.blocks_);
   images_ = std::move(o.images_);
   o.modules_.clear();
@@ -147,6 +149,19 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx,
     sink.error("vk-program-no-vertex-stage", {}, "a graphics program needs a vertex shader");
     return std::nullopt;
   }
+  const auto has = [&](ShaderStage stage) {
+    return std::any_of(ordered.begin(), ordered.end(),
+                       [&](const CompiledShader* s) { return s->reflection.stage == stage; });
+  };
+  if (has(ShaderStage::tess_control) != has(ShaderStage::tess_evaluation)) {
+    sink.error("vk-program-tessellation-stages", {},
+               "a tessellating program needs both a hull (tessellation control) and a domain (tessellation "
+               "evaluation) shader");
+    return std::nullopt;
+  }
+  for (const CompiledShader* s : ordered)
+    if (s->reflection.stage == ShaderStage::tess_control)
+      p.patch_control_points_ = tessellation_patch_sizes(s->spirv).input;
   const std::vector<uint32_t> live = input_locations(vertex->spirv);
   for (const InterfaceVariable& input : vertex->reflection.inputs)
     if (std::find(live.begin(), live.end(), input.location) != live.end()) p.vertex_inputs_.push_back(input);

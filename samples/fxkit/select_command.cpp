@@ -64,16 +64,22 @@ int run_select(const SelectArgs& args) {
                                  .scheme = args.scheme, .cost_budget_ms = args.budget_ms,
                                  .max_error = args.max_error};
   fx::SelectionResult result = sel.plan.explain(sel.plan.query(criteria));
-  const bool ok = parsed.ok && !diags.has_errors() && result.ok();
+  // An effect with errors does not load (render, the viewer and EffectLibrary refuse it), so
+  // none of its techniques is valid or chosen, whatever its passes would need.
+  const bool loads = parsed.ok && !diags.has_errors();
+  const bool ok = loads && result.ok();
+  const std::string not_loaded = "the effect has errors, so it does not load";
 
   if (args.json) {
     nlohmann::json techniques = nlohmann::json::array();
     for (size_t i = 0; i < sel.techniques.size(); ++i) {
       const fx::TechniqueValidation& t = sel.techniques[i];
       techniques.push_back({{"name", t.name},
-                            {"valid", t.valid},
-                            {"chosen", i == result.chosen},
-                            {"reason", i < result.reasons.size() ? result.reasons[i] : std::string()},
+                            {"valid", loads && t.valid},
+                            {"chosen", ok && i == result.chosen},
+                            {"reason", !loads                      ? not_loaded
+                                       : i < result.reasons.size() ? result.reasons[i]
+                                                                   : std::string()},
                             {"emulation", t.emulation},
                             {"rejections", fx::render_json(t.reasons, sm)}});
     }
@@ -86,7 +92,7 @@ int run_select(const SelectArgs& args) {
                       {"vertices", args.vertices},
                       {"scheme", args.scheme}, {"budget_ms", number_or_null(args.budget_ms)},
                       {"max_error", number_or_null(args.max_error)}}},
-        {"chosen", result.ok() ? nlohmann::json(std::string(sel.plan.name(result.chosen))) : nlohmann::json(nullptr)},
+        {"chosen", ok ? nlohmann::json(std::string(sel.plan.name(result.chosen))) : nlohmann::json(nullptr)},
         {"route", fx::to_string(result.route)},
         {"fallback_path", std::move(path)},
         {"techniques", std::move(techniques)},
@@ -102,13 +108,15 @@ int run_select(const SelectArgs& args) {
         for (const std::string& e : sel.techniques[i].emulation) out += " [" + e + "]";
       return out;
     };
-    if (result.ok())
+    if (ok)
       std::printf("%s on %s: %s (%s)%s\n", name.c_str(), caps->name.c_str(),
                   std::string(sel.plan.name(result.chosen)).c_str(), fx::to_string(result.route),
                   emulation(result.chosen).c_str());
     else
-      std::printf("%s on %s: no technique\n", name.c_str(), caps->name.c_str());
+      std::printf("%s on %s: no technique%s\n", name.c_str(), caps->name.c_str(),
+                  loads ? "" : (" (" + not_loaded + ")").c_str());
     for (size_t i = 0; i < sel.techniques.size(); ++i) {
+      if (!loads) break;
       if (i == result.chosen) continue;
       std::printf("  %s: %s%s\n", sel.techniques[i].name.c_str(),
                   i < result.reasons.size() ? result.reasons[i].c_str() : "", emulation(i).c_str());

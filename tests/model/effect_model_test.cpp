@@ -78,6 +78,24 @@ TEST(EffectModel, ProceduralTexture) {
   EXPECT_TRUE(b->has("unknown-generator")) << b->text();
 }
 
+// fx_4_0 takes 0 for NULL in a shader state (SharpDX's MiniTri: `SetGeometryShader( 0 );`); any
+// other number is still no shader.
+TEST(EffectModel, ZeroIsANullShader) {
+  auto b = test::build(R"(
+    float4 VS(float4 p : POSITION) : SV_Position { return p; }
+    float4 PS() : SV_Target { return 1; }
+    technique10 T { pass { SetGeometryShader( 0 ); SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
+  )",
+                       true);
+  ASSERT_FALSE(b->diags.has_errors()) << b->text();
+  EXPECT_EQ(b->model.find_technique("T")->passes[0].shader(PassStage::geometry)->source, ShaderSource::null);
+  auto one = test::build(R"(
+    technique10 T { pass { SetGeometryShader( 1 ); } }
+  )",
+                         true);
+  EXPECT_TRUE(one->diags.has_errors());
+}
+
 TEST(EffectModel, TechniquesPassesAndShaders) {
   auto b = test::build(R"(
     float4x4 WorldViewProj : WorldViewProjection;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <string>
@@ -64,6 +65,26 @@ TEST(SelectCli, SelectWithNothingValidExitsOne) {
   ASSERT_FALSE(j.is_discarded());
   EXPECT_TRUE(j["chosen"].is_null());
   EXPECT_EQ(j["route"], "none");
+}
+
+// An effect with errors does not load, so `render` draws none of its techniques: `select`
+// calls none valid either, however well the technique itself would run.
+TEST(SelectCli, SelectCallsNoTechniqueOfAnEffectWithErrorsValid) {
+  const std::string path = ::testing::TempDir() + "fxkit_select_errors.fx";
+  std::ofstream(path) << "undeclared_type Broken;\n"
+                         "float4 VS(float4 p : POSITION) : SV_Position { return p; }\n"
+                         "float4 PS() : SV_Target { return 1; }\n"
+                         "technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); "
+                         "SetPixelShader(CompileShader(ps_4_0, PS())); } }\n";
+  CliRun r = fxkit("select " + path + " --caps modern --json");
+  EXPECT_EQ(r.status, 1) << r.out;
+  nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_FALSE(j.is_discarded()) << r.out;
+  EXPECT_TRUE(j["chosen"].is_null());
+  ASSERT_EQ(j["techniques"].size(), 1u);
+  EXPECT_FALSE(j["techniques"][0]["valid"].get<bool>());
+  EXPECT_EQ(j["techniques"][0]["reason"], "the effect has errors, so it does not load");
+  std::remove(path.c_str());
 }
 
 TEST(SelectCli, CheckCapsListsEveryTechniqueWithReasons) {

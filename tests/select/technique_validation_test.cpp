@@ -345,6 +345,61 @@ technique10 t
   EXPECT_TRUE(validate(*l, device)[0].valid) << all(*l, validate(*l, device)[0]);
 }
 
+// Hull and domain shaders compile to SPIR-V's Tessellation capability: a Vulkan device
+// without tessellationShader rejects the technique at each tessellation stage instead of
+// calling it valid and failing when its pipeline is made.
+constexpr const char* kTessellationEffect = R"(float4x4 Wvp;
+struct V { float4 pos : SV_Position; };
+struct F { float edges[3] : SV_TessFactor; float inside : SV_InsideTessFactor; };
+V VS(float4 p : POSITION) { V o; o.pos = mul(p, Wvp); return o; }
+F Factors(InputPatch<V, 3> patch) { F f; f.edges[0] = f.edges[1] = f.edges[2] = 2; f.inside = 2; return f; }
+[domain("tri")] [partitioning("integer")] [outputtopology("triangle_cw")] [outputcontrolpoints(3)]
+[patchconstantfunc("Factors")]
+V HS(InputPatch<V, 3> patch, uint i : SV_OutputControlPointID) { return patch[i]; }
+[domain("tri")] V DS(F f, float3 uvw : SV_DomainLocation, const OutputPatch<V, 3> patch) {
+  V o; o.pos = uvw.x * patch[0].pos + uvw.y * patch[1].pos + uvw.z * patch[2].pos; return o; }
+float4 PS(V i) : SV_Target { return 1; }
+technique11 t
+{
+    pass p0
+    {
+        SetVertexShader(CompileShader(vs_5_0, VS()));
+        SetHullShader(CompileShader(hs_5_0, HS()));
+        SetDomainShader(CompileShader(ds_5_0, DS()));
+        SetPixelShader(CompileShader(ps_5_0, PS()));
+    }
+}
+)";
+
+TEST(TechniqueValidation, TessellationNeedsTheDevicesTessellationShaderFeature) {
+  auto l = parse(kTessellationEffect);
+  fx::DeviceCaps device = caps("modern");
+  device.name = "gpu";
+  device.vulkan.present = true;
+  auto v = validate(*l, device);
+  ASSERT_FALSE(v[0].valid);
+  ASSERT_EQ(v[0].reasons.size(), 2u) << all(*l, v[0]);
+  EXPECT_EQ(v[0].reasons[0].id, "shader-needs-feature");
+  EXPECT_EQ(v[0].reasons[0].message,
+            "hull shader uses tessellation (SPIR-V capability Tessellation): "
+            "Vulkan feature tessellationShader not supported on gpu");
+  EXPECT_EQ(v[0].reasons[1].message.substr(0, 31), "domain shader uses tessellation");
+  device.vulkan.features = {"tessellationShader"};
+  EXPECT_TRUE(validate(*l, device)[0].valid) << all(*l, validate(*l, device)[0]);
+
+  // A hull shader without its domain shader cannot tessellate, on any device.
+  std::string text = kTessellationEffect;
+  const std::string domain_line = "        SetDomainShader(CompileShader(ds_5_0, DS()));\n";
+  text.erase(text.find(domain_line), domain_line.size());
+  auto hull_only = parse(text);
+  auto h = validate(*hull_only, device);
+  ASSERT_FALSE(h[0].valid);
+  ASSERT_EQ(h[0].reasons.size(), 1u) << all(*hull_only, h[0]);
+  EXPECT_EQ(h[0].reasons[0].id, "missing-tessellation-stage");
+  EXPECT_EQ(h[0].reasons[0].message, "pass sets a hull shader but no domain shader; tessellation needs both");
+  EXPECT_EQ(line_of(*hull_only, h[0].reasons[0]), 17u);
+}
+
 // Direct3D 10/11 and Vulkan draw only with a vertex shader; a Direct3D 9 pass without one
 // gets the fixed-function vertex stage.
 TEST(TechniqueValidation, ADirect3D10PassWithoutAVertexShaderCannotDraw) {

@@ -35,6 +35,11 @@ struct EffectBindingDesc {
   DescriptorMode descriptors = DescriptorMode::sets;
   // Pipeline path: DynamicStateSet::from_features(ctx.features()) or DynamicStateSet::none().
   std::optional<DynamicStateSet> dynamic;  // unset: from the context's features
+  // Control points per patch of the geometry drawn with tessellating passes (hull + domain
+  // shaders): a triangle list, as every fxkit mesh is, is a patch list of 3. A technique
+  // whose hull shader takes another input patch size (InputPatch<T, N>) cannot run; 0
+  // accepts any size (the application draws patches of each pass's hull shader size).
+  uint32_t patch_control_points = 3;
   // Render target facts the pass states are mapped for (attachment count, samples, depth
   // bits, winding). See pass_state_mapping.h.
   PassTargetInfo target;

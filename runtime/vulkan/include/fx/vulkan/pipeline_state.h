@@ -24,7 +24,8 @@ struct AttachmentBlend {
   uint32_t reserved : 1 = 0;
 };
 
-// Static state of a graphics pipeline. Default-constructed: triangle lists, no culling,
+// Static state of a graphics pipeline. Default-constructed: triangle lists (a program with
+// tessellation stages draws patch lists: see with_patches()), no culling,
 // counter-clockwise front faces, depth test and write off (compare LESS_OR_EQUAL; D3D
 // defaults are applied by the pass-state mapping, not here), no stencil, no blending, 1 sample.
 struct PipelineState {
@@ -44,7 +45,9 @@ struct PipelineState {
   uint32_t color_attachment_count : 3 = 1;
   uint32_t rasterizer_discard : 1 = 0;
   uint32_t primitive_restart : 1 = 0;
-  uint32_t reserved0 : 6 = 0;
+  // Control points per patch (1..32) when topology is PATCH_LIST (a tessellating program's
+  // ShaderProgram::patch_control_points()), 0 otherwise.
+  uint32_t patch_control_points : 6 = 0;
   // Word 1: stencil operations, front and back.
   uint32_t front_fail : 3 = VK_STENCIL_OP_KEEP;
   uint32_t front_pass : 3 = VK_STENCIL_OP_KEEP;
@@ -98,6 +101,9 @@ struct DynamicStateSet {
   // Vulkan 1.3 core (extended dynamic state 2): depth bias enable, rasterizer discard,
   // primitive restart.
   bool eds2 = false;
+  // VK_EXT_extended_dynamic_state2's patch control points (pipelines with tessellation stages
+  // only; their count stays in the key too, being the program's).
+  bool patch_control_points = false;
   // VK_EXT_extended_dynamic_state3, per state.
   bool polygon_mode = false, depth_clamp = false, sample_mask = false,
        alpha_to_coverage = false, color_blend_enable = false, color_blend_equation = false,
@@ -109,13 +115,19 @@ struct DynamicStateSet {
   static DynamicStateSet none() { return {}; }
   // Packs the toggles into bits (part of the pipeline key).
   uint32_t bits() const;
-  // How many VkDynamicState values a pipeline built with this set declares.
-  uint32_t dynamic_state_list(VkDynamicState* out, uint32_t attachment_count) const;
+  // How many VkDynamicState values a pipeline built with this set declares (`patches`: the
+  // pipeline draws patch lists, so it has tessellation stages).
+  uint32_t dynamic_state_list(VkDynamicState* out, uint32_t attachment_count, bool patches = false) const;
 };
 
 // The part of `state` a pipeline bakes in: fields that `dynamic` records at apply time are
 // reset to their defaults, so states differing only in them hash and compare equal.
 PipelineState static_part(const PipelineState& state, const DynamicStateSet& dynamic);
+
+// `state` drawing patches of `control_points` (PATCH_LIST) when a program tessellates
+// (control_points > 0), `state` unchanged otherwise: Vulkan requires a pipeline with
+// tessellation stages to take patch lists, and its patch size is the hull shader's.
+PipelineState with_patches(PipelineState state, uint32_t control_points);
 
 // The topology class that stays baked in when topology is dynamic (points, lines, triangles,
 // patches): Vulkan requires the dynamic topology to be of the pipeline's class.

@@ -47,6 +47,7 @@ class ShaderProgram {
  public:
   // `stages` must be compiled, linked with link_program (giving `layout`) and outlive the
   // program (reflection is referenced, not copied). Reports "vk-program-no-vertex-stage",
+  // "vk-program-tessellation-stages" (a hull shader without a domain shader or the reverse),
   // "vk-descriptor-unsupported" (storage resources, arrays in push mode) and
   // "vk-call-failed".
   static std::optional<ShaderProgram> create(const Context& ctx,
@@ -73,6 +74,9 @@ class ShaderProgram {
   const std::vector<InterfaceVariable>& vertex_inputs() const { return vertex_inputs_; }
   // Colour outputs of the fragment stage (0 without a fragment stage).
   uint32_t color_output_count() const { return color_outputs_; }
+  // Control points per patch the hull (tessellation control) shader takes: its pipelines
+  // draw patch lists of this size. 0 for a program without tessellation stages.
+  uint32_t patch_control_points() const { return patch_control_points_; }
   const std::vector<ProgramUniformBlock>& uniform_blocks() const { return blocks_; }
   const std::vector<ProgramImage>& images() const { return images_; }
   // Descriptor counts of the set layout, for pool sizing.
@@ -91,6 +95,7 @@ class ShaderProgram {
   VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
   std::vector<InterfaceVariable> vertex_inputs_;
   uint32_t color_outputs_ = 0;
+  uint32_t patch_control_points_ = 0;
   std::vector<ProgramUniformBlock> blocks_;
   std::vector<ProgramImage> images_;
 };
