@@ -40,11 +40,14 @@ std::string_view block_phrase(StateBlock block) {
 const std::vector<std::string>& shader_profiles() {
   static const std::vector<std::string> profiles = [] {
     std::vector<std::string> p;
-    for (const char* v : {"1_1", "2_0", "2_a", "2_sw", "3_0", "3_sw", "4_0", "4_0_level_9_1",
-                          "4_0_level_9_3", "4_1", "5_0"})
+    // fxc's targets (vkd3d's profile table lists the same), the shader model 1.0 ones too:
+    // D3DX9's stock effects name them, and the DirectX 10 compiler, in its backwards
+    // compatibility mode, compiles every ps_1_x target of an effect as ps_2_0.
+    for (const char* v :
+         {"1_0", "1_1", "2_0", "2_a", "2_sw", "3_0", "3_sw", "4_0", "4_0_level_9_1", "4_0_level_9_3", "4_1", "5_0"})
       p.push_back(std::string("vs_") + v);
-    for (const char* v : {"1_1", "1_2", "1_3", "1_4", "2_0", "2_a", "2_b", "2_sw", "3_0", "3_sw",
-                          "4_0", "4_0_level_9_1", "4_0_level_9_3", "4_1", "5_0"})
+    for (const char* v : {"1_0", "1_1", "1_2", "1_3", "1_4", "2_0", "2_a", "2_b", "2_sw", "3_0", "3_sw", "4_0",
+                          "4_0_level_9_1", "4_0_level_9_3", "4_1", "5_0"})
       p.push_back(std::string("ps_") + v);
     for (const char* v : {"gs_4_0", "gs_4_1", "gs_5_0", "hs_5_0", "ds_5_0", "cs_4_0", "cs_4_1",
                           "cs_5_0"})
