@@ -163,6 +163,10 @@ void Checker::run() {
         if (auto [entry, fresh] = groups.emplace(g.name, g.name_range); !fresh)
           report_duplicate("fxgroup", g.name, g.name_range, entry->second);
         check_annotations(g.annotations);
+        // fxc refuses a group without techniques (vkd3d's effect-technique-fx_5 tests).
+        if (g.techniques.empty())
+          diags_.error("empty-fxgroup", g.name_range.valid() ? g.name_range : g.range,
+                       "fxgroup " + quote(g.name) + " holds no technique; fxc refuses an empty group");
         NameTable<SourceRange> in_group;
         for (const ast::Technique& t : g.techniques) technique(t, in_group);
         break;
@@ -286,8 +290,9 @@ void Checker::check_against_profile(EffectProfile profile) {
   };
   auto technique = [&](const ast::Technique& t) {
     SourceRange at = t.name_range.valid() ? t.name_range : t.range;
-    if (t.version == 11) require(EffectProfile::fx_5_0, at, "technique11");
-    if (t.version == 10) require(EffectProfile::fx_4_0, at, "technique10");
+    // fxc takes technique10 under every effect profile and technique11 from fx_4_0 on
+    // (vkd3d's effect-technique tests: "fx_5_0 keyword fails with fx_2_0 profile").
+    if (t.version == 11) require(EffectProfile::fx_4_0, at, "technique11");
     // An inferred profile comes from the newest forms in the file; D3D9 techniques beside
     // them mean the file targets both runtimes (as SDK samples did), which is no mistake.
     bool explicit_profile = options_.profile != EffectProfile::automatic;
