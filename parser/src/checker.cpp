@@ -195,10 +195,13 @@ void Checker::collect_symbols() {
   globals_.reserve(effect_.decls.size());
   for (const ast::Decl& d : effect_.decls) {
     switch (d.kind) {
-      case ast::DeclKind::variable:
-        define(d.variable->name, d.variable->name_range,
-               {Symbol::variable, d.variable->type.name, {}}, "parameter");
+      case ast::DeclKind::variable: {
+        const ast::Variable& v = *d.variable;
+        std::optional<int64_t> size;
+        if (v.array_dims.size() == 1 && v.array_dims[0]) size = literal_int(*v.array_dims[0]);
+        define(v.name, v.name_range, {Symbol::variable, v.type.name, {}, size.value_or(0)}, "parameter");
         break;
+      }
       case ast::DeclKind::constant_buffer:
         for (const ast::Variable& v : d.constant_buffer->members)
           define(v.name, v.name_range, {Symbol::variable, v.type.name, {}}, "parameter");
@@ -236,6 +239,8 @@ void Checker::collect_symbols() {
 }
 
 void Checker::check_functions() {
+  for (const auto& [name, f] : functions_)
+    if (!f->body.empty()) check_local_annotations(*f);
   std::vector<std::pair<std::string, const ast::Function*>> defined;
   for (auto group = functions_.begin(); group != functions_.end();) {
     std::string_view name = group->first;
@@ -420,8 +425,21 @@ void Checker::check_technique(const ast::Technique& t) {
   FirstSeen<std::string_view> passes;
   for (const ast::Pass& p : t.passes) {
     if (!p.name.empty()) {
-      if (const SourceRange* previous = passes.insert(p.name, p.name_range))
-        report_duplicate("pass", p.name, p.name_range, *previous);
+      if (const SourceRange* previous = passes.insert(p.name, p.name_range)) {
+        // D3DX9 effects that ship with two passes of one name load: ID3DXEffect addresses
+        // passes by index, and a name finds the first. The D3D10/11 effect compilers keep
+        // passes in a scope per technique, where a second one is a redefinition (vkd3d,
+        // which follows them, reports "already declared in this scope").
+        if (t.version == 9 && profile() < EffectProfile::fx_4_0) {
+          Diagnostic& d = diags_.warning("duplicate-pass-name", p.name_range,
+                                         "pass " + quote(p.name) +
+                                             " is already defined in this technique; D3DX9 loads it, but by name only "
+                                             "the first is found (address passes by index)");
+          if (previous->valid()) d.notes.push_back({previous->begin, "previous definition is here"});
+        } else {
+          report_duplicate("pass", p.name, p.name_range, *previous);
+        }
+      }
     }
     check_annotations(p.annotations);
     check_states(p.states, StateBlock::pass, t.version);
@@ -450,6 +468,7 @@ std::string_view to_string(EffectProfile profile) {
     case EffectProfile::automatic: return "auto";
     case EffectProfile::fx_2_0: return "fx_2_0";
     case EffectProfile::fx_4_0: return "fx_4_0";
+    case EffectProfile::fx_4_1: return "fx_4_1";
     case EffectProfile::fx_5_0: return "fx_5_0";
   }
   return "auto";
@@ -459,7 +478,8 @@ std::optional<EffectProfile> parse_effect_profile(std::string_view text) {
   std::string t;
   for (char c : text) t.push_back(c == '.' ? '_' : ascii_lower(c));
   if (t == "fx_2_0") return EffectProfile::fx_2_0;
-  if (t == "fx_4_0" || t == "fx_4_1") return EffectProfile::fx_4_0;
+  if (t == "fx_4_0") return EffectProfile::fx_4_0;
+  if (t == "fx_4_1") return EffectProfile::fx_4_1;
   if (t == "fx_5_0") return EffectProfile::fx_5_0;
   if (t == "auto") return EffectProfile::automatic;
   return std::nullopt;
