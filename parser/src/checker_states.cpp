@@ -388,6 +388,9 @@ void Checker::check_value(const StateInfo& info, const ast::Expr& e) {
     case K::cast:
     case K::member:
       if (is_object_type(t)) {
+        // A constant expression that folds to 0 is NULL, as the literal 0 is: fxc takes
+        // `SetRasterizerState(1-1)` (vkd3d's effect-pass-states-fx_5 tests).
+        if (std::optional<int64_t> v = literal_int(e); v && *v == 0 && e.kind != K::member) return;
         if (e.kind != K::member && e.kind != K::ternary) type_mismatch(info, e, "an expression");
         return;
       }

@@ -116,6 +116,16 @@ TEST(FxcRules, NoAnnotationsOnLocals) {
             "annotations are allowed on global variables only; fxc refuses them on the local 'v'");
 }
 
+// A constant expression that folds to 0 stands for NULL where an object is expected, as
+// the literal 0 does (vkd3d's effect-pass-states-fx_5 tests: `SetRasterizerState(1-1)`).
+TEST(FxcRules, ZeroExpressionIsNull) {
+  auto f = run_front_end(
+      "technique11 T { pass P { SetRasterizerState(1-1); SetHullShader(1-1); SetGeometryShader(0u); } }\n"
+      "technique11 U { pass P { SetRasterizerState(2-1); } }\n",
+      EffectProfile::fx_5_0);
+  EXPECT_EQ(f->ids(), (Ids{"state-type-mismatch"})) << f->text();
+}
+
 TEST(FxcRules, FxGroupNeedsFx50) {
   auto f = run_front_end("fxgroup G { technique11 T { pass P { } } }\n", EffectProfile::fx_4_0);
   EXPECT_EQ(f->ids(), (Ids{"profile-mismatch"})) << f->text();
