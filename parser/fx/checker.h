@@ -14,7 +14,7 @@
 namespace fx {
 
 // The effect dialect: D3DX9 (fx_2_0), FX10 (fx_4_0), FX11 (fx_5_0), or inferred.
-enum class EffectProfile : uint8_t { automatic, fx_2_0, fx_4_0, fx_5_0 };
+enum class EffectProfile : uint8_t { automatic, fx_2_0, fx_4_0, fx_4_1, fx_5_0 };
 std::string_view to_string(EffectProfile profile);
 // Parses "fx_2_0", "fx.2.0", "fx_4_0", "fx_4_1", "fx_5_0" (case-insensitive).
 std::optional<EffectProfile> parse_effect_profile(std::string_view text);

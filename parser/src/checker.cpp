@@ -163,6 +163,10 @@ void Checker::run() {
         if (auto [entry, fresh] = groups.emplace(g.name, g.name_range); !fresh)
           report_duplicate("fxgroup", g.name, g.name_range, entry->second);
         check_annotations(g.annotations);
+        // fxc refuses a group without techniques (vkd3d's effect-technique-fx_5 tests).
+        if (g.techniques.empty())
+          diags_.error("empty-fxgroup", g.name_range.valid() ? g.name_range : g.range,
+                       "fxgroup " + quote(g.name) + " holds no technique; fxc refuses an empty group");
         NameTable<SourceRange> in_group;
         for (const ast::Technique& t : g.techniques) technique(t, in_group);
         break;
@@ -191,10 +195,13 @@ void Checker::collect_symbols() {
   globals_.reserve(effect_.decls.size());
   for (const ast::Decl& d : effect_.decls) {
     switch (d.kind) {
-      case ast::DeclKind::variable:
-        define(d.variable->name, d.variable->name_range,
-               {Symbol::variable, d.variable->type.name, {}}, "parameter");
+      case ast::DeclKind::variable: {
+        const ast::Variable& v = *d.variable;
+        std::optional<int64_t> size;
+        if (v.array_dims.size() == 1 && v.array_dims[0]) size = literal_int(*v.array_dims[0]);
+        define(v.name, v.name_range, {Symbol::variable, v.type.name, {}, size.value_or(0)}, "parameter");
         break;
+      }
       case ast::DeclKind::constant_buffer:
         for (const ast::Variable& v : d.constant_buffer->members)
           define(v.name, v.name_range, {Symbol::variable, v.type.name, {}}, "parameter");
@@ -232,6 +239,8 @@ void Checker::collect_symbols() {
 }
 
 void Checker::check_functions() {
+  for (const auto& [name, f] : functions_)
+    if (!f->body.empty()) check_local_annotations(*f);
   std::vector<std::pair<std::string, const ast::Function*>> defined;
   for (auto group = functions_.begin(); group != functions_.end();) {
     std::string_view name = group->first;
@@ -286,8 +295,9 @@ void Checker::check_against_profile(EffectProfile profile) {
   };
   auto technique = [&](const ast::Technique& t) {
     SourceRange at = t.name_range.valid() ? t.name_range : t.range;
-    if (t.version == 11) require(EffectProfile::fx_5_0, at, "technique11");
-    if (t.version == 10) require(EffectProfile::fx_4_0, at, "technique10");
+    // fxc takes technique10 under every effect profile and technique11 from fx_4_0 on
+    // (vkd3d's effect-technique tests: "fx_5_0 keyword fails with fx_2_0 profile").
+    if (t.version == 11) require(EffectProfile::fx_4_0, at, "technique11");
     // An inferred profile comes from the newest forms in the file; D3D9 techniques beside
     // them mean the file targets both runtimes (as SDK samples did), which is no mistake.
     bool explicit_profile = options_.profile != EffectProfile::automatic;
@@ -415,8 +425,21 @@ void Checker::check_technique(const ast::Technique& t) {
   FirstSeen<std::string_view> passes;
   for (const ast::Pass& p : t.passes) {
     if (!p.name.empty()) {
-      if (const SourceRange* previous = passes.insert(p.name, p.name_range))
-        report_duplicate("pass", p.name, p.name_range, *previous);
+      if (const SourceRange* previous = passes.insert(p.name, p.name_range)) {
+        // D3DX9 effects that ship with two passes of one name load: ID3DXEffect addresses
+        // passes by index, and a name finds the first. The D3D10/11 effect compilers keep
+        // passes in a scope per technique, where a second one is a redefinition (vkd3d,
+        // which follows them, reports "already declared in this scope").
+        if (t.version == 9 && profile() < EffectProfile::fx_4_0) {
+          Diagnostic& d = diags_.warning("duplicate-pass-name", p.name_range,
+                                         "pass " + quote(p.name) +
+                                             " is already defined in this technique; D3DX9 loads it, but by name only "
+                                             "the first is found (address passes by index)");
+          if (previous->valid()) d.notes.push_back({previous->begin, "previous definition is here"});
+        } else {
+          report_duplicate("pass", p.name, p.name_range, *previous);
+        }
+      }
     }
     check_annotations(p.annotations);
     check_states(p.states, StateBlock::pass, t.version);
@@ -445,6 +468,7 @@ std::string_view to_string(EffectProfile profile) {
     case EffectProfile::automatic: return "auto";
     case EffectProfile::fx_2_0: return "fx_2_0";
     case EffectProfile::fx_4_0: return "fx_4_0";
+    case EffectProfile::fx_4_1: return "fx_4_1";
     case EffectProfile::fx_5_0: return "fx_5_0";
   }
   return "auto";
@@ -454,7 +478,8 @@ std::optional<EffectProfile> parse_effect_profile(std::string_view text) {
   std::string t;
   for (char c : text) t.push_back(c == '.' ? '_' : ascii_lower(c));
   if (t == "fx_2_0") return EffectProfile::fx_2_0;
-  if (t == "fx_4_0" || t == "fx_4_1") return EffectProfile::fx_4_0;
+  if (t == "fx_4_0") return EffectProfile::fx_4_0;
+  if (t == "fx_4_1") return EffectProfile::fx_4_1;
   if (t == "fx_5_0") return EffectProfile::fx_5_0;
   if (t == "auto") return EffectProfile::automatic;
   return std::nullopt;

@@ -74,6 +74,7 @@ struct Symbol {
   Kind kind = variable;
   std::string_view type;  // variable: its type name; state_object: its kind
   SourceRange range;      // the name, for "previous definition" notes
+  int64_t elements = 0;   // variable: a one-dimensional array's literal size, 0 otherwise
 };
 
 // 'text' for messages.
@@ -131,6 +132,8 @@ class Checker {
   // states under fx_2_0, the D3D10 SamplerState fields under fx_4_0 and later.
   void check_sampler_state(const ast::List<ast::StateAssignment>& states);
   EffectProfile profile() const;
+  // fxc's rules for a function body's local declarations (checker_locals.cpp).
+  void check_local_annotations(const ast::Function& f);
 
   const Symbol* lookup(std::string_view name) const;
   std::vector<std::string_view> names_of(std::initializer_list<Symbol::Kind> kinds) const;

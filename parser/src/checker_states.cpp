@@ -40,11 +40,14 @@ std::string_view block_phrase(StateBlock block) {
 const std::vector<std::string>& shader_profiles() {
   static const std::vector<std::string> profiles = [] {
     std::vector<std::string> p;
-    for (const char* v : {"1_1", "2_0", "2_a", "2_sw", "3_0", "3_sw", "4_0", "4_0_level_9_1",
-                          "4_0_level_9_3", "4_1", "5_0"})
+    // fxc's targets (vkd3d's profile table lists the same), the shader model 1.0 ones too:
+    // D3DX9's stock effects name them, and the DirectX 10 compiler, in its backwards
+    // compatibility mode, compiles every ps_1_x target of an effect as ps_2_0.
+    for (const char* v :
+         {"1_0", "1_1", "2_0", "2_a", "2_sw", "3_0", "3_sw", "4_0", "4_0_level_9_1", "4_0_level_9_3", "4_1", "5_0"})
       p.push_back(std::string("vs_") + v);
-    for (const char* v : {"1_1", "1_2", "1_3", "1_4", "2_0", "2_a", "2_b", "2_sw", "3_0", "3_sw",
-                          "4_0", "4_0_level_9_1", "4_0_level_9_3", "4_1", "5_0"})
+    for (const char* v : {"1_0", "1_1", "1_2", "1_3", "1_4", "2_0", "2_a", "2_b", "2_sw", "3_0", "3_sw", "4_0",
+                          "4_0_level_9_1", "4_0_level_9_3", "4_1", "5_0"})
       p.push_back(std::string("ps_") + v);
     for (const char* v : {"gs_4_0", "gs_4_1", "gs_5_0", "hs_5_0", "ds_5_0", "cs_4_0", "cs_4_1",
                           "cs_5_0"})
@@ -225,6 +228,13 @@ void Checker::check_state(const ast::StateAssignment& a, StateBlock block, int t
       diags_.error("state-not-indexable", a.index->range,
                    "state " + quote(info->name) + " takes no index");
       index_known = false;
+    } else if (block == StateBlock::blend_state && info->target == kEveryTarget &&
+               options_.profile == EffectProfile::fx_4_0) {
+      // Direct3D 10.0 blends every target alike: only BlendEnable and RenderTargetWriteMask
+      // are per target, as fxc's fx_4_0 has it (vkd3d's effect-variables-fx_4 tests).
+      diags_.error("state-not-indexable", a.index->range,
+                   "state " + quote(info->name) + " takes an index from fx_4_1 on; fx_4_0 blends every target alike");
+      index_known = false;
     } else if (std::optional<int64_t> v = literal_int(*a.index)) {
       index = *v;
       if (*v < 0 || *v >= info->index_count) {
@@ -357,11 +367,20 @@ void Checker::check_value(const StateInfo& info, const ast::Expr& e) {
       return;
     case K::index:
       // `Blends[1]`, `Textures[i]`: the array must exist; element types are not tracked.
-      if (!e.args.empty() && e.args[0] &&
-          (e.args[0]->kind == K::identifier || e.args[0]->kind == K::reference) &&
-          !lookup(e.args[0]->text))
-        undefined("parameter", e.args[0]->text, e.args[0]->range,
-                  names_of({Symbol::variable, Symbol::state_object}));
+      if (!e.args.empty() && e.args[0] && (e.args[0]->kind == K::identifier || e.args[0]->kind == K::reference)) {
+        const Symbol* array = lookup(e.args[0]->text);
+        if (!array) {
+          undefined("parameter", e.args[0]->text, e.args[0]->range, names_of({Symbol::variable, Symbol::state_object}));
+          return;
+        }
+        // fxc folds a literal index into a parameter array and refuses one past its end
+        // (vkd3d's effect-assignments-fx_5 tests: `stencil_refs[10]` of a uint[2]).
+        std::optional<int64_t> at = e.args.size() > 1 && e.args[1] ? literal_int(*e.args[1]) : std::nullopt;
+        if (array->elements > 0 && at && (*at < 0 || *at >= array->elements))
+          diags_.error("array-index-out-of-range", e.args[1]->range,
+                       "index " + std::to_string(*at) + " is out of range for " + quote(e.args[0]->text) + " (" +
+                           std::to_string(array->elements) + " elements)");
+      }
       return;
     case K::unary:
     case K::binary:
@@ -369,6 +388,9 @@ void Checker::check_value(const StateInfo& info, const ast::Expr& e) {
     case K::cast:
     case K::member:
       if (is_object_type(t)) {
+        // A constant expression that folds to 0 is NULL, as the literal 0 is: fxc takes
+        // `SetRasterizerState(1-1)` (vkd3d's effect-pass-states-fx_5 tests).
+        if (std::optional<int64_t> v = literal_int(e); v && *v == 0 && e.kind != K::member) return;
         if (e.kind != K::member && e.kind != K::ternary) type_mismatch(info, e, "an expression");
         return;
       }

@@ -369,9 +369,11 @@ bool is_storage_keyword(std::string_view word, uint32_t& bit) {
 }
 
 int technique_version(std::string_view word) {
+  // `technique` in any case, `technique10` and `technique11` in lower case only: fxc rejects
+  // `tEchnique10 { }` and takes `float4 technIque10;` (vkd3d's effect-technique tests).
   if (iequals(word, "technique")) return 9;
-  if (iequals(word, "technique10")) return 10;
-  if (iequals(word, "technique11")) return 11;
+  if (word == "technique10") return 10;
+  if (word == "technique11") return 11;
   return 0;
 }
 
@@ -380,11 +382,10 @@ bool is_effect_keyword(std::string_view word) {
   // `Technique` and `Pass`); HLSL's own keywords (`float`, `struct`, `return`) are
   // case-sensitive and stay ordinary identifiers here.
   static constexpr std::string_view kWords[] = {
-      "technique", "technique10", "technique11", "pass", "compile", "sampler_state",
-      "stateblock", "stateblock_state", "pixelshader", "vertexshader"};
+      "technique", "pass", "compile", "sampler_state", "stateblock", "stateblock_state", "pixelshader", "vertexshader"};
   for (std::string_view k : kWords)
     if (iequals(word, k)) return true;
-  return false;
+  return word == "technique10" || word == "technique11";
 }
 
 bool Parser::check_name(const Token& name, std::string_view what) {

@@ -354,7 +354,12 @@ void Preprocessor::Impl::include(Frame& f, const Token& hash) {
 void Preprocessor::Impl::include_file(Frame& f, const Token& hash, SourceRange spelled,
                                       const std::string& name, bool angled) {
   std::vector<std::string> folders;
-  if (!angled) folders.push_back(f.folder);
+  // fxc, like MSVC, looks for a quoted name beside the file holding the directive, then
+  // beside each file that included it, innermost first, and only then in the -I folders.
+  if (!angled)
+    for (auto open = frames_.rbegin(); open != frames_.rend(); ++open)
+      if (std::find(folders.begin(), folders.end(), (*open)->folder) == folders.end())
+        folders.push_back((*open)->folder);
   folders.insert(folders.end(), options_.include_dirs.begin(), options_.include_dirs.end());
   std::optional<pp::ResolvedInclude> found =
       pp::resolve_include(name, folders, options_.loader, options_.lister);

@@ -141,7 +141,9 @@ class EffectUnitBuilder {
   // (one for vs, one for ps), and glslang would turn both into the same offset of one
   // $Global block, which SPIR-V validation rejects. Parameters are matched by name, so
   // glslang's own packing loses nothing.
-  void emit_filtered(detail::ShaderTextWriter& w, ast::TokenSpan span, bool drop_constant_registers = false);
+  // Tokens inside one of `leave_out` (sorted) are not written.
+  void emit_filtered(detail::ShaderTextWriter& w, ast::TokenSpan span, bool drop_constant_registers = false,
+                     const std::vector<ast::TokenSpan>& leave_out = {});
 
   // D3D10 `SamplerState s { Filter = ...; };` -> `SamplerState s;` (the states are ours).
   void emit_sampler_object(detail::ShaderTextWriter& w, const ast::StateObject& so);

@@ -88,7 +88,16 @@ void EffectUnitBuilder::emit_hlsl() {
         std::vector<std::string> names{cb.name};
         for (const ast::Variable& m : cb.members) names.emplace_back(m.name);
         const size_t from = begin();
-        emit_filtered(w, cb.tokens);
+        // A static member is a constant of the shader, not of the buffer: fxc lets it size a
+        // member array (`static const int N = 4; float4 a[N];`). glslang drops a member's
+        // initializer, so it is written before the buffer, whole.
+        std::vector<ast::TokenSpan> statics;
+        for (const ast::Variable& m : cb.members)
+          if ((m.storage & ast::kStatic) && (statics.empty() || statics.back().first != m.tokens.first)) {
+            emit_filtered(w, m.tokens);
+            statics.push_back(m.tokens);
+          }
+        emit_filtered(w, cb.tokens, false, statics);
         end(from, std::move(names), cb.tokens);
         break;
       }
@@ -270,9 +279,16 @@ uint32_t EffectUnitBuilder::register_end(uint32_t colon, uint32_t last) const {
   return close < last ? close : 0;
 }
 
-void EffectUnitBuilder::emit_filtered(detail::ShaderTextWriter& w, ast::TokenSpan span, bool drop_constant_registers) {
+void EffectUnitBuilder::emit_filtered(detail::ShaderTextWriter& w, ast::TokenSpan span, bool drop_constant_registers,
+                                      const std::vector<ast::TokenSpan>& leave_out) {
   int depth = 0, init_depth = -1;
+  auto left_out = leave_out.begin();
   for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) {
+    while (left_out != leave_out.end() && left_out->last <= i) ++left_out;
+    if (left_out != leave_out.end() && left_out->first <= i) {
+      i = left_out->last - 1;
+      continue;
+    }
     const Token& t = toks_[i];
     bool in_init = init_depth >= 0;
     if (drop_constant_registers && !in_init && depth == 0 && t.is(TokenKind::colon)) {

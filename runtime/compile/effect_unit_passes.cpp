@@ -477,7 +477,12 @@ bool EffectUnitBuilder::hlsl(StageUnit& stage, const std::string& profile, const
   const ast::Function* f = function(name, args.size());
   // The checker reports unknown functions (undefined-reference).
   if (!f) return invalid(stage, "no shader function '" + name + "' with a body");
-  if (args.empty() && !(stage.stage == ShaderStage::fragment && has_d3d9_system_value(*f))) return true;
+  // Entry points overloaded by their uniform parameters (`PS()` beside `PS(uniform int mode)`)
+  // share a name glslang cannot take as an entry point: a wrapper calls the one chosen.
+  const bool overloaded = std::count_if(functions_.begin(), functions_.end(), [&](const ast::Function* g) {
+                            return g->name == name && !g->body.empty();
+                          }) > 1;
+  if (args.empty() && !overloaded && !(stage.stage == ShaderStage::fragment && has_d3d9_system_value(*f))) return true;
   size_t uniforms = 0;
   for (const ast::Variable& p : f->params) uniforms += (p.storage & ast::kUniform) != 0;
   if (args.size() > uniforms) {

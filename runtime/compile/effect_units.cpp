@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "case_insensitive_types.h"
 #include "effect_unit_builder.h"
 #include "flat_initializer.h"
 #include "fx/ascii_case.h"
@@ -175,6 +176,7 @@ void EffectUnitBuilder::build() {
   if (u_.name_.empty()) u_.name_ = "<effect>";
   index_declarations();
   respelled_ = detail::flat_initializer_spellings(toks_);
+  respelled_.merge(detail::case_insensitive_type_spellings(toks_, u_.symbols_));
   respell_helper_uniforms();
   emit_hlsl();
   for (uint32_t i = 0; i < u_.decls_.size(); ++i) {

@@ -311,6 +311,7 @@ CompiledShader ShaderCompiler::run_glslang(const TranslationUnit& unit, const Sh
     const glslang::TIntermediate& intermediate = *program->getIntermediate(stage);
     spv::SpvBuildLogger logger;
     glslang::GlslangToSpv(intermediate, out.spirv, &logger, &spv);
+    if (hlsl) spirv::scalar_any_all(out.spirv);
     const spv_target_env env = glslang::MapToSpirvToolsEnv(intermediate.getSpv(), &logger);
     // HLSL may need spirv-opt's legalization (opaque types copied into locals or passed to
     // functions, as D3D9 code does with samplers), which costs ten times the rest of the

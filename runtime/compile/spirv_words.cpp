@@ -199,6 +199,28 @@ size_t request_loop_unroll(std::vector<uint32_t>& w) {
   return controls.size();
 }
 
+size_t scalar_any_all(std::vector<uint32_t>& w) {
+  constexpr uint32_t kOpTypeBool = 20, kOpConstantTrue = 41, kOpConstantFalse = 42, kOpSpecConstantTrue = 48,
+                     kOpSpecConstantFalse = 49, kOpFunction = 54, kOpCopyObject = 83, kOpAny = 154, kOpAll = 155;
+  std::set<uint32_t> bool_type, bool_value;
+  std::vector<size_t> rewrite;
+  bool in_function = false;
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t count) {
+    if (op == kOpFunction) in_function = true;
+    if (op == kOpTypeBool && count == 2) bool_type.insert(w[i + 1]);
+    // Inside functions every instruction whose first operand is the bool type has it as its
+    // result type; outside, only the constants do (OpName or OpDecorate may name the type).
+    const bool typed = in_function || op == kOpConstantTrue || op == kOpConstantFalse || op == kOpSpecConstantTrue ||
+                       op == kOpSpecConstantFalse;
+    if (typed && count >= 3 && bool_type.count(w[i + 1])) {
+      if ((op == kOpAny || op == kOpAll) && count == 4 && bool_value.count(w[i + 3])) rewrite.push_back(i);
+      bool_value.insert(w[i + 2]);
+    }
+  });
+  for (size_t at : rewrite) w[at] = (4u << 16) | kOpCopyObject;
+  return rewrite.size();
+}
+
 bool opaque_values_in_memory(const std::vector<uint32_t>& w) {
   constexpr uint32_t kOpTypeImage = 25, kOpTypeSampler = 26, kOpTypeSampledImage = 27, kOpTypeArray = 28,
                      kOpTypeRuntimeArray = 29, kOpTypeStruct = 30, kOpTypePointer = 32, kOpFunctionParameter = 55,

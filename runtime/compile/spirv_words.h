@@ -48,6 +48,11 @@ size_t variable_image_offsets(const std::vector<uint32_t>& words);
 // which unrolls only the loops it can.
 size_t request_loop_unroll(std::vector<uint32_t>& words);
 
+// Rewrites OpAny and OpAll of a scalar bool, which glslang writes for HLSL's any(x) and
+// all(x) of a scalar (fxc takes them: x != 0), as OpCopyObject: the SPIR-V instructions take
+// only bool vectors. Returns how many it rewrote.
+size_t scalar_any_all(std::vector<uint32_t>& words);
+
 // Whether the module keeps an image, sampler or sampled image (or an aggregate holding one)
 // anywhere but UniformConstant memory, or passes one by value: Vulkan forbids both, glslang
 // writes them for HLSL that copies a sampler into a local or passes it to a function, and

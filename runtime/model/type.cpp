@@ -259,6 +259,11 @@ Type TypeTable::lookup(std::string_view name) const {
   if (auto it = typedefs_.find(name); it != typedefs_.end()) return it->second;
   if (auto t = object_name(name, {})) return *t;
   if (auto t = pre_release_name(name)) return *t;
+  // fxc reads these in any case (`Matrix transform;`, `FLOAT scale;`): vkd3d, which follows
+  // it, looks up dword, float, matrix, vector and string case-insensitively.
+  if (std::string lower = ascii_lower(name); lower != name)
+    for (std::string_view word : {"dword", "float", "matrix", "vector", "string"})
+      if (lower == word) return lookup(word);
   return {};
 }
 
@@ -267,7 +272,8 @@ Type TypeTable::resolve(const ast::TypeRef& ref, uint32_t storage, const ast::Li
   Type t;
   std::string_view name = ref.name;
   if (name == "struct" || name == "const") name = ref.template_arg;  // defensive: never produced today
-  if (!ref.template_arg.empty() && (name == "vector" || name == "matrix")) {
+  if (!ref.template_arg.empty() && (iequals(name, "vector") || iequals(name, "matrix"))) {
+    name = iequals(name, "vector") ? "vector" : "matrix";
     std::vector<std::string> args = split_args(ref.template_arg);
     auto base = args.empty() ? std::nullopt : scalar_name(args[0]);
     bool ok = base.has_value();

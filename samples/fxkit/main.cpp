@@ -10,7 +10,7 @@ void FrontEndFlags::add_to(CLI::App& command) {
   // FILE after `-I DIR` would be read as a second folder.
   command.add_option("-I", include_dirs, "Add a folder to the include search path")->allow_extra_args(false);
   command.add_option("-D", defines, "Define a macro: NAME or NAME=VALUE")->allow_extra_args(false);
-  command.add_option("--profile", profile, "Effect profile: fx_2_0, fx_4_0, fx_5_0 or auto")
+  command.add_option("--profile", profile, "Effect profile: fx_2_0, fx_4_0, fx_4_1, fx_5_0 or auto")
       ->capture_default_str();
 }
 
@@ -19,7 +19,7 @@ bool FrontEndFlags::to_options(fx::FrontEndOptions& options, std::string& error)
   for (const std::string& d : defines) options.preprocessor.defines.push_back(fx::parse_define(d));
   auto parsed = fx::parse_effect_profile(profile);
   if (profile != "auto" && !parsed) {
-    error = "unknown --profile '" + profile + "' (use fx_2_0, fx_4_0, fx_5_0 or auto)";
+    error = "unknown --profile '" + profile + "' (use fx_2_0, fx_4_0, fx_4_1, fx_5_0 or auto)";
     return false;
   }
   options.check.profile = parsed.value_or(fx::EffectProfile::automatic);

@@ -174,7 +174,7 @@ TEST(Checker, DuplicateDefinitionsPointAtThePreviousOne) {
       "float g(float a);\n"
       "float g(float a) { return a; }\n"
       "float f(float b) { return b; }\n"
-      "technique t { pass p {} pass p {} }\n"
+      "technique10 t { pass p {} pass p {} }\n"
       "technique u { pass p {} }\n"
       "technique t { pass q {} }\n");
   EXPECT_EQ(c->ids(), (Ids{"duplicate-definition", "duplicate-definition", "duplicate-definition",
@@ -186,10 +186,21 @@ TEST(Checker, DuplicateDefinitionsPointAtThePreviousOne) {
             std::string::npos)
       << c->text();
   EXPECT_NE(c->text().find("t.fx:7:7: error: function 'f' is already defined"), std::string::npos);
-  EXPECT_NE(c->text().find("t.fx:8:30: error: pass 'p' is already defined"), std::string::npos)
-      << c->text();
+  EXPECT_NE(c->text().find("t.fx:8:32: error: pass 'p' is already defined"), std::string::npos) << c->text();
   EXPECT_NE(c->text().find("t.fx:10:11: error: technique 't' is already defined"),
             std::string::npos);
+}
+
+// D3DX9 effects that ship with two passes of one name load (passes are addressed by index):
+// a warning in a D3D9 technique of an fx_2_0 effect, an error where the D3D10/11 compilers
+// keep passes in a scope per technique.
+TEST(Checker, DuplicatePassNamesOfD3D9TechniquesWarn) {
+  const char* source = "technique t { pass p {} pass p {} }\n";
+  auto c = check(source, {.profile = EffectProfile::fx_2_0});
+  EXPECT_EQ(c->ids(), (Ids{"duplicate-pass-name"})) << c->text();
+  EXPECT_EQ(c->diags.diagnostics()[0].severity, Severity::warning);
+  EXPECT_EQ(check(source)->ids(), (Ids{"duplicate-pass-name"}));
+  EXPECT_EQ(check(source, {.profile = EffectProfile::fx_5_0})->ids(), (Ids{"d3d9-technique", "duplicate-definition"}));
 }
 
 TEST(Checker, UndefinedReferences) {
@@ -327,7 +338,11 @@ TEST(Checker, D3D11PassCallRules) {
 TEST(Checker, ProfileRules) {
   std::string_view d3d11 = "technique11 t { pass p {} }\n";
   EXPECT_EQ(check(d3d11, {.profile = EffectProfile::fx_2_0})->ids(), (Ids{"profile-mismatch"}));
-  EXPECT_EQ(check(d3d11, {.profile = EffectProfile::fx_4_0})->ids(), (Ids{"profile-mismatch"}));
+  // fxc takes technique11 under fx_4_0 and technique10 under fx_2_0 (vkd3d's tests).
+  EXPECT_EQ(check(d3d11, {.profile = EffectProfile::fx_4_0})->ids(), Ids{});
+  EXPECT_EQ(
+      check("technique t { pass p {} }\ntechnique10 u { pass p {} }\n", {.profile = EffectProfile::fx_2_0})->ids(),
+      Ids{});
   EXPECT_EQ(check(d3d11)->ids(), Ids{});
 
   auto objects = check("BlendState B { BlendEnable[0] = FALSE; };\ntechnique t { pass p {} }\n",
@@ -406,7 +421,7 @@ TEST(Checker, InfersTheProfileFromWhatTheEffectUses) {
   EXPECT_EQ(infer("technique t { pass p { SETGEOMETRYSHADER(NULL); } }"), EffectProfile::fx_4_0);
   EXPECT_EQ(infer("fxgroup g { technique11 t { pass p {} } }"), EffectProfile::fx_5_0);
   EXPECT_EQ(parse_effect_profile("fx.2.0"), EffectProfile::fx_2_0);
-  EXPECT_EQ(parse_effect_profile("FX_4_1"), EffectProfile::fx_4_0);
+  EXPECT_EQ(parse_effect_profile("FX_4_1"), EffectProfile::fx_4_1);
   EXPECT_EQ(parse_effect_profile("fx_6_0"), std::nullopt);
 }
 

@@ -17,8 +17,8 @@ TEST(KeywordCase, EffectKeywordsInAnyCase) {
       "VertexShader vs = COMPILE vs_2_0 VS();\n"
       "sampler s = Sampler_State { MinFilter = Linear; };\n"
       "Technique T { Pass { VertexShader = Compile vs_2_0 VS(); } PASS P1 { } }\n"
-      "TECHNIQUE10 T10 { pass { } }\n"
-      "Technique11 T11 { pass { } }\n");
+      "technique10 T10 { pass { } }\n"
+      "technique11 T11 { pass { } }\n");
   EXPECT_EQ(p->text(), "");
   ASSERT_EQ(p->effect.decls.size(), 5u);
   EXPECT_EQ(var(*p, 0).initializer->kind, ast::ExprKind::compile);
@@ -47,12 +47,15 @@ TEST(KeywordCase, KeywordCannotNameAnything) {
             "variable [keyword-as-name]\n"
             "float Pass;\n"
             "      ^~~~\n");
-  const char* cases[] = {
-      "float4 a, COMPILE;",          "technique technique11 { }",
-      "technique T { pass Pass { } }", "float4 VertexShader(float4 p) { return p; }",
-      "float4 F(float sampler_state) { return 0; }", "struct Stateblock { float a; };",
-      "float x < int PixelShader = 1; >;", "struct S { float4 stateblock_state; };",
-      "typedef float Technique10;"};
+  const char* cases[] = {"float4 a, COMPILE;",
+                         "technique technique11 { }",
+                         "technique T { pass Pass { } }",
+                         "float4 VertexShader(float4 p) { return p; }",
+                         "float4 F(float sampler_state) { return 0; }",
+                         "struct Stateblock { float a; };",
+                         "float x < int PixelShader = 1; >;",
+                         "struct S { float4 stateblock_state; };",
+                         "typedef float technique10;"};
   for (const char* source : cases) {
     auto q = parse(std::string(source) + "\nfloat after;\n");
     ASSERT_EQ(q->diags.diagnostics().size(), 1u) << source << "\n" << q->text();
@@ -60,6 +63,18 @@ TEST(KeywordCase, KeywordCannotNameAnything) {
     // Recovery goes on with the next declaration.
     EXPECT_EQ(q->effect.decls.back().kind, ast::DeclKind::variable) << source;
   }
+}
+
+// technique10 and technique11 are keywords in lower case only: fxc rejects `tEchnique10 { }`
+// and takes `float4 technIque10;` and `typedef float4 Technique11;` (vkd3d's
+// effect-technique-fx_4/fx_5 tests, which record what the native compiler does).
+TEST(KeywordCase, TechniqueTenAndElevenOnlyInLowerCase) {
+  auto p = parse("float4 technIque10; typedef float4 Technique11;\ntechnique10 T { pass { } }\n");
+  EXPECT_EQ(p->text(), "");
+  EXPECT_EQ(var(*p, 0).name, "technIque10");
+  EXPECT_EQ(p->decl(2).technique->version, 10);
+  auto q = parse("tEchnique10 T { pass { } }\n");
+  EXPECT_TRUE(q->diags.has_errors()) << q->text();
 }
 
 }  // namespace

@@ -34,6 +34,26 @@ TEST(PreprocessorIncludes, QuotedSearchesIncluderFolderFirst) {
   EXPECT_EQ(pp.includes()[3].included, "lib/common.fxh");
 }
 
+// fxc, like MSVC, looks for a quoted name beside the file holding the directive, then beside
+// each file that included it, innermost first, then in the -I folders.
+TEST(PreprocessorIncludes, QuotedSearchesTheIncludeStackInnermostFirst) {
+  Pp p;
+  p.options.include_dirs = {"lib"};
+  p.files["fx/main.fx"] = "#include \"sub/material.fxh\"\n";
+  p.files["fx/sub/material.fxh"] = "#include \"parts/light.fxh\"\n";
+  p.files["fx/sub/parts/light.fxh"] = "#include \"palette.fxh\"\n#include \"root.fxh\"\n#include \"lib.fxh\"\n";
+  p.files["fx/sub/palette.fxh"] = "sub_palette\n";
+  p.files["fx/palette.fxh"] = "root_palette\n";
+  p.files["fx/root.fxh"] = "root\n";
+  p.files["lib/root.fxh"] = "lib_root\n";
+  p.files["lib/lib.fxh"] = "lib\n";
+  std::vector<Token> out;
+  Preprocessor pp(p.sm, p.diags, p.options);
+  EXPECT_TRUE(pp.run_file("fx/main.fx", out));
+  EXPECT_EQ(Pp::spell(out), "sub_palette root lib");
+  EXPECT_EQ(p.ids(), "");
+}
+
 TEST(PreprocessorIncludes, BackslashesMacrosAndDotDot) {
   Pp p;
   p.files["shaders/sub/light.fxh"] = "#include \"..\\util.fxh\"\nlight\n";
