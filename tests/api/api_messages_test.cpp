@@ -1,6 +1,7 @@
 // What the public API tells an application about its effect (Effect::messages, Reload): a
 // broken edit reported as `fxkit check` reports it (once per distinct error, with the source
-// line, caret and did-you-mean).
+// line, caret and did-you-mean), and a refused set() that leaves the messages once it is no
+// longer true.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -107,6 +108,31 @@ TEST_F(ApiMessagesTest, ABrokenEditIsReportedOnceWithCaretAndDidYouMeanAsCheckRe
   fxkit::Effect never = device_->load(broken);
   EXPECT_FALSE(never.ok());
   EXPECT_EQ(text(never.messages()), checked_text(broken));
+}
+
+TEST_F(ApiMessagesTest, ARefusedSetLeavesTheMessagesWhenTheParameterIsSetOrTheEffectReloads) {
+  const std::string path = write_effect("api_messages_set.fx", shared_function_effect("LightDirection"));
+  fxkit::Effect effect = device_->load(path);
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  auto refusals = [&effect] { return count(text(effect.messages()), "[parameter-set]"); };
+  const fxkit::Param tint = effect.param("Tint");
+
+  EXPECT_FALSE(effect.set(tint, 1.0f)) << "a float for a float4";
+  EXPECT_EQ(refusals(), 1u);
+  device_->begin_frame();
+  EXPECT_EQ(refusals(), 1u) << "still true: the value is not the application's";
+  EXPECT_FALSE(effect.set(tint, 2.0f));
+  EXPECT_EQ(refusals(), 1u) << "one parameter, one reason: the latest";
+  EXPECT_TRUE(effect.set(tint, {0.1f, 0.2f, 0.3f, 1.0f}));
+  EXPECT_EQ(refusals(), 0u) << text(effect.messages());
+
+  EXPECT_FALSE(effect.set(tint, 1.0f));
+  EXPECT_EQ(refusals(), 1u);
+  const std::vector<fxkit::Reload> reloads =
+      rewrite_and_reload(path, shared_function_effect("LightDirection") + "float Extra = 1;\n");
+  ASSERT_EQ(reloads.size(), 1u);
+  EXPECT_EQ(reloads[0].kind, fxkit::Reload::Kind::reloaded) << reloads[0].str();
+  EXPECT_EQ(refusals(), 0u) << "a refusal of the replaced version\n" << text(effect.messages());
 }
 
 }  // namespace
