@@ -197,8 +197,7 @@ int run_render(const RenderArgs& args) {
   ctx->wait_idle();
   if (args.validation) {
     // Every error and warning fails the run. (A vertex output the pixel shader does not
-    // read, which Direct3D allows, is no warning: the Context enables maintenance4 when the
-    // device has it.)
+    // read, which Direct3D allows, is no warning: linking removes it.)
     size_t failing = 0;
     for (const fx::vk::ValidationMessage& m : ctx->validation_messages()) {
       ++failing;
