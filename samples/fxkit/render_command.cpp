@@ -189,9 +189,10 @@ int run_render(const RenderArgs& args) {
       std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
       std::printf(", %.2f ms/frame (median of %zu)", ms[ms.size() / 2], ms.size());
     }
-    // The measured error of the technique's approximation (effects/generated/costs.fxh).
+    // The measured error of the technique's approximation (effects/generated/costs.fxh),
+    // said as what it is: not this image's error, nor a limit.
     if (const fx::Annotation* e = fx::find_annotation(t.annotations, "MaxError"))
-      std::printf(", max error %.3g", e->value.number());
+      std::printf(", technique's measured max error %.3g (8-bit levels, its MaxError annotation)", e->value.number());
     std::printf("\n");
   }
   ctx->wait_idle();
