@@ -372,8 +372,7 @@ void Preprocessor::Impl::include_file(Frame& f, const Token& hash, SourceRange s
     std::string message = "'" + name + "' file not found";
     if (!missing.searched.empty()) {
       message += " (searched";
-      for (size_t i = 0; i < missing.searched.size(); ++i)
-        message += (i ? ", '" : " '") + missing.searched[i] + "'";
+      for (size_t i = 0; i < missing.searched.size(); ++i) message += (i ? ", '" : " '") + missing.searched[i] + "'";
       message += ")";
     }
     if (!missing.near.empty()) message += "; did you mean '" + missing.near + "'?";

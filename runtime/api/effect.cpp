@@ -28,7 +28,7 @@ bool kept(detail::EffectState& s, Param p, const fx::ParamStatus& status) {
   if (status) return true;
   s.refused_serial = s.handle.serial();
   s.refused_sets.push_back({p.index, detail::to_message(status.code == fx::ParamStatus::removed ? fx::Severity::warning
-                                                                                                  : fx::Severity::error,
+                                                                                                : fx::Severity::error,
                                                         "parameter-set", status.message)});
   return false;
 }

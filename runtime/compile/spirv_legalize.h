@@ -1,5 +1,6 @@
 // spirv-opt passes fxkit runs on glslang's HLSL output: legalization after the fact, the
-// unrolling that makes loop-stepped texture offsets constant, and unconsumed outputs removed. Private to runtime/compile.
+// unrolling that makes loop-stepped texture offsets constant, and unconsumed outputs
+// removed. Private to runtime/compile.
 #pragma once
 #include <cstdint>
 #include <set>

@@ -97,8 +97,7 @@ std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool 
     why = "error measured: " + theirs + number(c.error) + " LSB, this one's not measured";
   else if (c.group != e.group)
     why = "its substitute group is declared first";
-  else if (c.error != e.error)
-    why = "lower error: " + versus(number(c.error) + " LSB", number(e.error) + " LSB");
+  else if (c.error != e.error) why = "lower error: " + versus(number(c.error) + " LSB", number(e.error) + " LSB");
   else if (c.priority != e.priority)
     why = "priority: " + versus(std::to_string(c.priority), std::to_string(e.priority));
   else

@@ -13,11 +13,16 @@ nlohmann::json annotations(const fx::ast::List<fx::ast::Annotation>& list) {
 nlohmann::json technique(const fx::ast::Technique& t, const fx::SourceManager& sm) {
   nlohmann::json passes = nlohmann::json::array();
   for (const fx::ast::Pass& p : t.passes)
-    passes.push_back({{"name", p.name}, {"states", p.states.size()},
-                      {"annotations", annotations(p.annotations)}, {"location", source_location(sm, p.range)}});
+    passes.push_back({{"name", p.name},
+                      {"states", p.states.size()},
+                      {"annotations", annotations(p.annotations)},
+                      {"location", source_location(sm, p.range)}});
   std::string keyword = t.version == 9 ? "technique" : "technique" + std::to_string(t.version);
-  return {{"name", t.name}, {"keyword", keyword}, {"annotations", annotations(t.annotations)},
-          {"passes", std::move(passes)}, {"location", source_location(sm, t.range)}};
+  return {{"name", t.name},
+          {"keyword", keyword},
+          {"annotations", annotations(t.annotations)},
+          {"passes", std::move(passes)},
+          {"location", source_location(sm, t.range)}};
 }
 
 }  // namespace
@@ -51,7 +56,9 @@ nlohmann::json summarize_effect(const fx::ast::Effect& effect, const fx::SourceM
     switch (d.kind) {
       case fx::ast::DeclKind::variable: {
         const fx::ast::Variable& v = *d.variable;
-        parameters.push_back({{"name", v.name}, {"type", v.type.name}, {"semantic", v.semantic},
+        parameters.push_back({{"name", v.name},
+                              {"type", v.type.name},
+                              {"semantic", v.semantic},
                               {"annotations", annotations(v.annotations)},
                               {"location", source_location(sm, v.name_range)}});
         break;

@@ -49,8 +49,8 @@ void draw_overlay(const std::vector<fxkit::Message>& problems) {
   // As `fxkit check` prints them: the source line, the caret, did-you-mean and notes (the
   // default font is monospaced, so the caret lines up).
   for (const fxkit::Message& m : problems)
-    ImGui::TextColored(m.severity == fxkit::Severity::error ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(1, 0.9f, 0.4f, 1),
-                       "%s", m.rendered.c_str());
+    ImGui::TextColored(m.severity == fxkit::Severity::error ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(1, 0.9f, 0.4f, 1), "%s",
+                       m.rendered.c_str());
   ImGui::End();
 }
 

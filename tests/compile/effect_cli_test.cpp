@@ -157,7 +157,8 @@ TEST(FxkitInfo, JsonMatchesTheSchemaAndReflectsTheEffect) {
 // key at the same column, annotation values typed (a string without its quotes), and a
 // parameter's block offset with the stage whose block it is.
 TEST(FxkitInfo, JsonAgreesWithCheckJsonOnLocationsAndValues) {
-  const std::string file = (fs::path(::testing::TempDir()) / ("info_check_" + std::to_string(::getpid()) + ".fx")).string();
+  const std::string file =
+      (fs::path(::testing::TempDir()) / ("info_check_" + std::to_string(::getpid()) + ".fx")).string();
   std::ofstream(file) << R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
 float4 Sky < string UIName = "Sky"; float UIMin = -1; bool Hidden = true; > = {0.2, 0.4, 0.8, 1};
 float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }

@@ -120,7 +120,8 @@ TEST_F(ExampleTest, EmbeddingFrameLoopDrawsWhatSetSceneDraws) {
   options.target.y_flip = fxkit::YFlip::negative_viewport;
   std::vector<fxkit::Message> errors;
   auto device = fxkit::Device::create(
-      {ctx().instance(), ctx().physical_device(), ctx().device(), ctx().queue(), ctx().queue_family()}, options, errors);
+      {ctx().instance(), ctx().physical_device(), ctx().device(), ctx().queue(), ctx().queue_family()}, options,
+      errors);
   ASSERT_TRUE(device) << (errors.empty() ? "" : errors[0].rendered);
   auto mesh = fxkit::Mesh::create(*device, "sphere", errors);
   auto image = fxkit::Offscreen::create(*device, 64, 64, errors);

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "fx/reload/effect_library.h"
-#include "watch_test_support.h"
 #include "patience.h"
+#include "watch_test_support.h"
 
 namespace fx::testing {
 

@@ -180,7 +180,8 @@ TEST(Selection, ErrorLimitPicksTheCheapestMeasuredTechnique) {
                                      tech("pow", {{"CostNsPerPixel", 5.f}, {"MaxError", 3.f}})});
   fx::SelectionQuery pq = partial.query({.pixels = 1e6f, .max_error = 4.f});
   EXPECT_EQ(partial.select(pq), 1u);
-  EXPECT_EQ(partial.explain(pq).reasons[0], "ranks below 'pow' (cheaper within the error limit: 'pow' 5.0 ms, this one's cost not measured)");
+  EXPECT_EQ(partial.explain(pq).reasons[0],
+            "ranks below 'pow' (cheaper within the error limit: 'pow' 5.0 ms, this one's cost not measured)");
   // Equal costs keep rank order (lower error first).
   fx::SelectionPlan tie = build({tech("a", {{"CostMs", 1.f}, {"MaxError", 2.f}}),
                                  tech("b", {{"CostMs", 1.f}, {"MaxError", 1.f}})});
@@ -205,7 +206,8 @@ TEST(Selection, UnmeasuredErrorIsUnknownNotExact) {
   fx::SelectionResult r = plan.explain(q);
   EXPECT_EQ(r.chosen, 1u);  // no pixel count: the lower ns per pixel decides
   EXPECT_EQ(r.reasons[0], "error not measured (not drawable on Vulkan: ps.1.1 assembly) under limit 32 LSB");
-  EXPECT_EQ(r.reasons[2], "ranks below 'seed' (cheaper within the error limit: 'seed' 3 ns per pixel, this one 5 ns per pixel)");
+  EXPECT_EQ(r.reasons[2],
+            "ranks below 'seed' (cheaper within the error limit: 'seed' 3 ns per pixel, this one 5 ns per pixel)");
   EXPECT_EQ(plan.select(plan.query({.max_error = 2.f})), 2u);
   // Nothing within the limit and no fallback chain: no technique, not the unmeasured one.
   EXPECT_EQ(plan.select(plan.query({.max_error = 0.1f})), fx::kNoIndex);
@@ -249,7 +251,8 @@ TEST(Selection, CostNsPerVertexCountsWithTheVertices) {
   });
   fx::SelectionQuery q = tie.query({.max_error = 2.f});
   EXPECT_EQ(tie.select(q), 1u);
-  EXPECT_EQ(tie.explain(q).reasons[0], "ranks below 'b' (cheaper within the error limit: 'b' 3 ns per vertex, this one 9 ns per vertex)");
+  EXPECT_EQ(tie.explain(q).reasons[0],
+            "ranks below 'b' (cheaper within the error limit: 'b' 3 ns per vertex, this one 9 ns per vertex)");
 }
 
 TEST(Selection, TiesGoToPriorityThenDeclarationOrder) {
