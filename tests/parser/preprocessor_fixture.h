@@ -12,7 +12,7 @@
 #include "fx/diagnostic_render.h"
 #include "fx/lexer.h"
 #include "fx/preprocessor.h"
-#include "patience.h"
+#include "../support/patience.h"
 
 namespace fx::test {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "fx/reload/effect_library.h"
-#include "patience.h"
+#include "../support/patience.h"
 #include "watch_test_support.h"
 
 namespace fx::testing {

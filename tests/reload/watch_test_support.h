@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "fx/reload/file_watcher.h"
-#include "patience.h"
+#include "../support/patience.h"
 
 namespace fx::testing {
 
