@@ -63,7 +63,8 @@ class DiagnosticSink {
   bool werror_ = false;
 };
 
-// Closest candidate by edit distance (case-insensitive), or "" if none is close enough.
+// Closest candidate by edit distance (case-insensitive; a swap of two neighbouring letters
+// is one edit, as an insertion, deletion or substitution is), or "" if none is close enough.
 std::string closest_match(std::string_view word, const std::vector<std::string_view>& candidates);
 
 }  // namespace fx

@@ -1,11 +1,13 @@
 // #include path handling: normalization, search order, the case-insensitive fallback for
 // effects written on Windows, and the default disk hooks.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <system_error>
 
 #include "fx/ascii_case.h"
+#include "fx/diagnostic.h"
 #include "pp_internal.h"
 
 namespace fx {
@@ -159,6 +161,26 @@ std::optional<ResolvedInclude> resolve_include(std::string_view name,
       return ResolvedInclude{real, std::move(*text), true};
   }
   return std::nullopt;
+}
+
+MissingInclude describe_missing_include(std::string_view name, const std::vector<std::string>& folders,
+                                        const DirectoryLister& lister) {
+  MissingInclude out;
+  const std::string wanted = normalize_path(name);
+  const std::string subfolder = parent_folder(wanted);
+  const size_t slash = wanted.rfind('/');
+  const std::string file = slash == std::string::npos ? wanted : wanted.substr(slash + 1);
+  std::vector<std::string> names;
+  for (const std::string& folder : folders) {
+    const std::string shown = folder.empty() ? "." : folder;
+    if (std::find(out.searched.begin(), out.searched.end(), shown) == out.searched.end()) out.searched.push_back(shown);
+    if (!lister || is_absolute(wanted)) continue;
+    for (std::string& entry : lister(join_path(folder, subfolder))) names.push_back(std::move(entry));
+  }
+  if (lister && is_absolute(wanted)) names = lister(parent_folder(wanted));
+  const std::string guess = closest_match(file, std::vector<std::string_view>(names.begin(), names.end()));
+  if (!guess.empty() && guess != file) out.near = subfolder.empty() ? guess : subfolder + "/" + guess;
+  return out;
 }
 
 }  // namespace pp

@@ -203,4 +203,14 @@ std::optional<ResolvedInclude> resolve_include(std::string_view name,
                                                const FileLoader& loader,
                                                const DirectoryLister& lister);
 
+// An include found nowhere, said helpfully: the name as it could be reached with the
+// closest file name in the folders searched (swaps and one-letter slips; "" when none is
+// near), and the folders, as written ("." for the working directory).
+struct MissingInclude {
+  std::string near;
+  std::vector<std::string> searched;
+};
+MissingInclude describe_missing_include(std::string_view name, const std::vector<std::string>& folders,
+                                        const DirectoryLister& lister);
+
 }  // namespace fx::pp

@@ -373,7 +373,15 @@ void Preprocessor::Impl::include_file(Frame& f, const Token& hash, SourceRange s
         break;
       }
   if (!found) {
-    diags_.error("include-not-found", spelled, "'" + name + "' file not found");
+    const pp::MissingInclude missing = pp::describe_missing_include(name, folders, options_.lister);
+    std::string message = "'" + name + "' file not found";
+    if (!missing.searched.empty()) {
+      message += " (searched";
+      for (size_t i = 0; i < missing.searched.size(); ++i) message += (i ? ", '" : " '") + missing.searched[i] + "'";
+      message += ")";
+    }
+    if (!missing.near.empty()) message += "; did you mean '" + missing.near + "'?";
+    diags_.error("include-not-found", spelled, message);
     return;
   }
   if (!ancestor.empty())

@@ -83,6 +83,14 @@ struct EffectState {
   fx::DiagnosticSink sink;        // problems of set/apply calls, moved to `problems`
   std::vector<Message> problems;  // the newest kRecentProblems of them
   static constexpr size_t kRecentProblems = 32;
+  // The last refused set() of each parameter: true until the parameter is set (or reset)
+  // or another version goes live, so it leaves messages() then.
+  struct RefusedSet {
+    uint32_t param = 0;
+    Message message;
+  };
+  std::vector<RefusedSet> refused_sets;
+  uint64_t refused_serial = 0;  // the version refused_sets were refused by
 
   // Moves what `sink` collected into `problems`.
   void keep_problems();

@@ -21,12 +21,15 @@ fx::HostMatrixOrder to_fx(MatrixOrder order) {
   return order == MatrixOrder::row_major ? fx::HostMatrixOrder::row_major : fx::HostMatrixOrder::column_major;
 }
 
-// Keeps a failed set's reason for messages().
-bool kept(detail::EffectState& s, const fx::ParamStatus& status) {
+// Keeps a refused set's reason for messages() while it is true: until the parameter is set
+// (or reset), replacing the previous reason for it.
+bool kept(detail::EffectState& s, Param p, const fx::ParamStatus& status) {
+  std::erase_if(s.refused_sets, [&](const detail::EffectState::RefusedSet& r) { return r.param == p.index; });
   if (status) return true;
-  s.sink.report(status.code == fx::ParamStatus::removed ? fx::Severity::warning : fx::Severity::error,
-                "parameter-set", {}, status.message);
-  s.keep_problems();
+  s.refused_serial = s.handle.serial();
+  s.refused_sets.push_back({p.index, detail::to_message(status.code == fx::ParamStatus::removed ? fx::Severity::warning
+                                                                                                : fx::Severity::error,
+                                                        "parameter-set", status.message)});
   return false;
 }
 
@@ -44,6 +47,9 @@ std::vector<Message> Effect::messages() const {
   auto sources = state_->handle.diagnostic_sources();
   std::vector<Message> out = detail::to_messages(state_->handle.diagnostics(), sources.get());
   out.insert(out.end(), state_->problems.begin(), state_->problems.end());
+  // A refused set() speaks of the version that refused it, not of one reloaded since.
+  if (state_->refused_serial == state_->handle.serial())
+    for (const detail::EffectState::RefusedSet& r : state_->refused_sets) out.push_back(r.message);
   return out;
 }
 
@@ -115,24 +121,24 @@ Param Effect::param(std::string_view name_or_semantic) const {
 
 bool Effect::set(Param p, float value) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && kept(*state_, store->set(to_fx(p), value));
+  return store && kept(*state_, p, store->set(to_fx(p), value));
 }
 bool Effect::set(Param p, int32_t value) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && kept(*state_, store->set(to_fx(p), value));
+  return store && kept(*state_, p, store->set(to_fx(p), value));
 }
 bool Effect::set(Param p, bool value) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && kept(*state_, store->set(to_fx(p), value));
+  return store && kept(*state_, p, store->set(to_fx(p), value));
 }
 bool Effect::set(Param p, std::span<const float> values) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && kept(*state_, store->set(to_fx(p), values));
+  return store && kept(*state_, p, store->set(to_fx(p), values));
 }
 
 bool Effect::set(Param p, std::span<const int32_t> values) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && kept(*state_, store->set(to_fx(p), values));
+  return store && kept(*state_, p, store->set(to_fx(p), values));
 }
 
 // set_matrix past its inline per-object path: the checked store and its status.
@@ -140,7 +146,7 @@ bool Effect::set_matrix_checked(Param p, const float* m16, MatrixOrder order) {
   detail::EffectState* s = state_.get();
   if (!s || !s->store) return false;
   const fx::ParamStatus status = s->store->set_matrix(to_fx(p), std::span<const float>(m16, 16), to_fx(order));
-  return status || kept(*s, status);
+  return kept(*s, p, status);
 }
 
 bool Effect::get(Param p, std::span<float> out) const {
@@ -155,7 +161,7 @@ bool Effect::get(Param p, std::span<int32_t> out) const {
 
 bool Effect::reset(Param p) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && kept(*state_, store->reset(to_fx(p)));
+  return store && kept(*state_, p, store->reset(to_fx(p)));
 }
 
 uint32_t Effect::set_scene(const Scene& scene) {

@@ -26,9 +26,7 @@ Message to_message(const fx::Diagnostic& d, const fx::SourceManager* sources) {
     m.column = at.column;
   }
   if (sources) {
-    fx::TextRenderOptions options;
-    options.show_source_line = false;
-    m.rendered = fx::render_text(d, *sources, options);
+    m.rendered = fx::render_text(d, *sources);  // as `fxkit check` prints it
   } else {
     m.rendered = std::string(fx::to_string(d.severity)) + ": " + m.text + " [" + m.code + "]\n";
   }

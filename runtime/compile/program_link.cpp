@@ -125,6 +125,20 @@ void pad_narrow_outputs(CompiledShader& producer, const CompiledShader& consumer
   }
 }
 
+// The outputs of the stage before the pixel shader that it does not declare: Direct3D ignores
+// them, Vulkan without maintenance4 warns about each (Shader-OutputNotConsumed), so they go.
+// Every declared input stays written, read or not.
+void remove_unconsumed_outputs(CompiledShader& producer, const CompiledShader& consumer) {
+  std::set<uint32_t> consumed;
+  for (const InterfaceVariable& in : consumer.reflection.inputs) consumed.insert(in.location);
+  if (std::all_of(producer.reflection.outputs.begin(), producer.reflection.outputs.end(),
+                  [&](const InterfaceVariable& out) { return consumed.count(out.location) > 0; }))
+    return;
+  if (!spirv::remove_unconsumed_outputs(producer.spirv, consumed)) return;  // they stay: a warning, not wrong
+  std::erase_if(producer.reflection.outputs,
+                [&](const InterfaceVariable& out) { return consumed.count(out.location) == 0; });
+}
+
 void link_varyings(CompiledShader& producer, CompiledShader& consumer, DiagnosticSink& sink) {
   std::map<std::string, uint32_t> location_of;  // canonical semantic -> new location
   std::map<uint32_t, uint32_t> out_remap, in_remap;
@@ -152,7 +166,10 @@ void link_varyings(CompiledShader& producer, CompiledShader& consumer, Diagnosti
   }
   spirv::remap_locations(producer.spirv, spirv::Interface::output, out_remap);
   spirv::remap_locations(consumer.spirv, spirv::Interface::input, in_remap);
-  if (consumer.reflection.stage == ShaderStage::fragment) pad_narrow_outputs(producer, consumer);
+  if (consumer.reflection.stage == ShaderStage::fragment) {
+    pad_narrow_outputs(producer, consumer);
+    remove_unconsumed_outputs(producer, consumer);
+  }
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "spirv_legalize.h"
 
+#include <unordered_set>
+
 #include <spirv-tools/optimizer.hpp>
 
 #include "spirv_words.h"
@@ -15,6 +17,20 @@ bool run(spvtools::Optimizer& optimizer, std::vector<uint32_t>& words) {
   if (!optimizer.Run(words.data(), words.size(), &out, options)) return false;
   words = std::move(out);
   return true;
+}
+
+// Every builtin the module decorates (OpDecorate and OpMemberDecorate BuiltIn).
+std::unordered_set<uint32_t> decorated_builtins(const std::vector<uint32_t>& words) {
+  constexpr uint32_t kOpDecorate = 71, kOpMemberDecorate = 72, kDecorationBuiltIn = 11, kHeader = 5;
+  std::unordered_set<uint32_t> out;
+  for (size_t i = kHeader; i < words.size();) {
+    const uint32_t op = words[i] & 0xffff, count = words[i] >> 16;
+    if (count == 0 || i + count > words.size()) break;
+    if (op == kOpDecorate && count >= 4 && words[i + 2] == kDecorationBuiltIn) out.insert(words[i + 3]);
+    if (op == kOpMemberDecorate && count >= 5 && words[i + 3] == kDecorationBuiltIn) out.insert(words[i + 4]);
+    i += count;
+  }
+  return out;
 }
 
 }  // namespace
@@ -41,6 +57,18 @@ void unroll_and_fold(std::vector<uint32_t>& words, spv_target_env env) {
       .RegisterPass(spvtools::CreateSimplificationPass())
       .RegisterPass(spvtools::CreateAggressiveDCEPass());
   run(optimizer, words);
+}
+
+bool remove_unconsumed_outputs(std::vector<uint32_t>& words, const std::set<uint32_t>& consumed) {
+  std::unordered_set<uint32_t> live_locations(consumed.begin(), consumed.end());
+  std::unordered_set<uint32_t> live_builtins = decorated_builtins(words);
+  spvtools::Optimizer optimizer(vulkan_env(words));
+  optimizer.RegisterPass(spvtools::CreateEliminateDeadOutputStoresPass(&live_locations, &live_builtins))
+      .RegisterPass(spvtools::CreateAggressiveDCEPass(false, true));
+  std::vector<uint32_t> out = words;
+  if (!run(optimizer, out)) return false;
+  words = std::move(out);
+  return true;
 }
 
 }  // namespace fx::spirv

@@ -1,7 +1,9 @@
-// spirv-opt passes fxkit runs on glslang's HLSL output: legalization after the fact, and the
-// unrolling that makes loop-stepped texture offsets constant. Private to runtime/compile.
+// spirv-opt passes fxkit runs on glslang's HLSL output: legalization after the fact, the
+// unrolling that makes loop-stepped texture offsets constant, and unconsumed outputs
+// removed. Private to runtime/compile.
 #pragma once
 #include <cstdint>
+#include <set>
 #include <vector>
 
 #include <spirv-tools/libspirv.h>
@@ -23,5 +25,13 @@ bool legalize(std::vector<uint32_t>& words);
 // which Vulkan allows only for gathers. Full unrolling and constant folding make it a
 // ConstOffset (the folder rewrites the operand once it is constant).
 void unroll_and_fold(std::vector<uint32_t>& words, spv_target_env env);
+
+// Direct3D links stages by semantic and ignores a vertex output no pixel shader input
+// takes; Vulkan without maintenance4 calls each such output a performance problem (the
+// validation layer's Shader-OutputNotConsumed, once per pipeline). This drops the stores to
+// outputs of a pre-rasterization stage at locations not in `consumed` and then the outputs
+// themselves; builtins (Position, clip distances) stay. Returns false (and leaves `words` as
+// they were) when the optimizer fails.
+bool remove_unconsumed_outputs(std::vector<uint32_t>& words, const std::set<uint32_t>& consumed);
 
 }  // namespace fx::spirv

@@ -75,27 +75,31 @@ std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool 
   if (f & fail_cost)
     return "cost " + millis(cost_ms(e, q)) + " ms over budget " + millis(q.cost_budget_ms) + " ms";
   if (chosen == kNoIndex) return "passed";
-  // It passed every filter: it lost on rank to the chosen technique.
+  // It passed every filter: it lost on rank to the chosen technique. Each comparison names
+  // whose figure is whose: the chosen technique's first, then this one's.
   const Entry& c = entries_[chosen];
+  const std::string theirs = "'" + names_[chosen] + "' ";
+  auto versus = [&](const std::string& chosen_figure, const std::string& this_figure) {
+    return theirs + chosen_figure + ", this one " + this_figure;
+  };
   std::string why;
   if (has_error_limit(q) && c.cost_known && !e.cost_known)
-    why = "cheaper within the error limit: " + millis(cost_ms(c, q)) + " ms vs cost not measured";
+    why = "cheaper within the error limit: " + theirs + millis(cost_ms(c, q)) + " ms, this one's cost not measured";
   else if (has_error_limit(q) && cost_ms(c, q) != cost_ms(e, q))
-    why = "cheaper within the error limit: " + millis(cost_ms(c, q)) + " vs " + millis(cost_ms(e, q)) + " ms";
+    why = "cheaper within the error limit: " + versus(millis(cost_ms(c, q)) + " ms", millis(cost_ms(e, q)) + " ms");
   else if (has_error_limit(q) && c.cost_ns_per_pixel != e.cost_ns_per_pixel)
-    why = "cheaper within the error limit: " + number(c.cost_ns_per_pixel) + " vs " + number(e.cost_ns_per_pixel) +
-          " ns per pixel";
+    why = "cheaper within the error limit: " +
+          versus(number(c.cost_ns_per_pixel) + " ns per pixel", number(e.cost_ns_per_pixel) + " ns per pixel");
   else if (has_error_limit(q) && c.cost_ns_per_vertex != e.cost_ns_per_vertex)
-    why = "cheaper within the error limit: " + number(c.cost_ns_per_vertex) + " vs " +
-          number(e.cost_ns_per_vertex) + " ns per vertex";
+    why = "cheaper within the error limit: " +
+          versus(number(c.cost_ns_per_vertex) + " ns per vertex", number(e.cost_ns_per_vertex) + " ns per vertex");
   else if (c.error_known != e.error_known)
-    why = "error measured (" + number(c.error) + " LSB) vs not measured";
+    why = "error measured: " + theirs + number(c.error) + " LSB, this one's not measured";
   else if (c.group != e.group)
     why = "its substitute group is declared first";
-  else if (c.error != e.error)
-    why = "lower error " + number(c.error) + " vs " + number(e.error) + " LSB";
+  else if (c.error != e.error) why = "lower error: " + versus(number(c.error) + " LSB", number(e.error) + " LSB");
   else if (c.priority != e.priority)
-    why = "priority " + std::to_string(c.priority) + " vs " + std::to_string(e.priority);
+    why = "priority: " + versus(std::to_string(c.priority), std::to_string(e.priority));
   else
     why = "declared earlier";
   return "ranks below '" + names_[chosen] + "' (" + why + ")";

@@ -4,7 +4,7 @@
 
 #include "effect_summary.h"
 #include "fx/diagnostic_render.h"
-#include "shown_once.h"
+#include "fx/shown_once.h"
 #include "fx/worker_pool.h"
 #ifdef FXKIT_HAS_RUNTIME
 #include "check_cache.h"
@@ -44,7 +44,7 @@ bool report_techniques(const fx::ParsedEffect& parsed, const EffectCheckSettings
 // defect of the effect (`fxkit compile` lists them, as it is asked for SPIR-V). A stage
 // fxkit cannot run at all is an error.
 void compile_shaders(const fx::ParsedEffect& parsed, const EffectCheckSettings& settings, fx::SourceManager& sm,
-                     fx::DiagnosticSink& diags, ShownOnce& shown) {
+                     fx::DiagnosticSink& diags, fx::ShownOnce& shown) {
   fx::EffectUnitOptions unit_options;
   for (const auto& [name, value] : settings.front_end.preprocessor.defines) unit_options.defines.push_back({name, value});
   fx::EffectUnits units(parsed.ast, sm, diags, std::move(unit_options));
@@ -87,7 +87,7 @@ EffectCheck check_effect(const std::string& file, const EffectCheckSettings& set
   out.effect["file"] = file;
   out.effect["ok"] = parsed.ok;
   out.effect["includes"] = parsed.files;
-  ShownOnce shown;
+  fx::ShownOnce shown;
 #ifdef FXKIT_HAS_RUNTIME
   // The shaders of an effect whose front end failed would only repeat its errors.
   if (settings.compile && settings.compiler && !diags.has_errors()) compile_shaders(parsed, settings, sm, diags, shown);

@@ -1,6 +1,6 @@
 // `fxkit check [-I DIR]... [-D NAME[=VALUE]]... [--profile P] [--werror]
 //  [--syntax-only | --compile] [--jobs N] [--cache DIR [--cache-limit-mb N]]
-//  [--include-glob G]... [--exclude-glob G]... [--shard K/N]
+//  [--include-glob G]... [--exclude-glob G]... [--shard K/N] [--allow-empty]
 //  [--format text|json|sarif|junit | --json] [-o FILE]
 //  [--caps dx7|modern|FILE.json|device [--no-compile]] [--in-process] PATH...`
 #include <sys/stat.h>
@@ -46,12 +46,19 @@ struct CheckArgs {
   unsigned cache_limit_mb = 512;
   std::vector<std::string> include_globs{"*.fx"}, exclude_globs;
   std::string shard;
+  bool allow_empty = false;     // --allow-empty: no effect found is a success
   std::string caps;             // --caps: validate every technique on these caps ("" = don't)
   bool no_compile = false;      // --no-compile: validate without compiling shaders
 #ifdef FXKIT_HAS_RUNTIME
   CompileWorkersFlag workers;   // glslang in worker processes, one per job
 #endif
 };
+
+std::string joined(const std::vector<std::string>& items, const char* separator) {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : separator) + item;
+  return out;
+}
 
 #ifdef FXKIT_HAS_RUNTIME
 // What besides the files decides a cached result: the flags, fxkit's own build (a rebuilt
@@ -105,6 +112,15 @@ int run_check(CheckArgs args) {
   CheckInputs inputs;
   if (!find_check_inputs(args.paths, input_options, inputs, error)) {
     std::fprintf(stderr, "fxkit check: %s\n", error.c_str());
+    return kUsageError;
+  }
+  // A CI job whose paths or globs match nothing checks nothing: that passes nothing either.
+  // A shard left empty while other shards hold files is fine.
+  if (inputs.files.empty() && inputs.other_shards == 0 && !args.allow_empty) {
+    std::fprintf(stderr,
+                 "fxkit check: no effect files found in %s (include globs:%s); pass --allow-empty if an "
+                 "empty run should pass\n",
+                 joined(args.paths, ", ").c_str(), (" " + joined(input_options.include_globs, " ")).c_str());
     return kUsageError;
   }
   ReportOutput report;
@@ -212,6 +228,7 @@ void register_check(CLI::App& app, Runner& run) {
   cmd->add_option("--exclude-glob", args->exclude_globs, "Files in PATH folders not to check")
       ->allow_extra_args(false);
   cmd->add_option("--shard", args->shard, "Check shard K of N (1-based): a stable 1/N of the files, for CI machines");
+  cmd->add_flag("--allow-empty", args->allow_empty, "Succeed when the paths hold no effect file (default: exit 2)");
   cmd->add_option("PATH", args->paths, "Effect files and folders (searched recursively)")->required();
   [[maybe_unused]] auto* syntax = cmd->add_flag("--syntax-only", args->syntax_only,
                                "The front end's checks alone: preprocess, parse, effect-level checks; no shader compiled");

@@ -11,7 +11,7 @@
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/spirv_cache.h"
 #include "fx/diagnostic_render.h"
-#include "shown_once.h"
+#include "fx/shown_once.h"
 
 namespace fxkit {
 namespace {
@@ -97,7 +97,7 @@ int run_compile(const CompileArgs& args) {
   bool failed = diags.has_errors();
   bool matched = args.technique.empty();
   nlohmann::json shaders = nlohmann::json::array();
-  ShownOnce all;
+  fx::ShownOnce all;
   all.add(diags.diagnostics(), "");
   std::vector<fx::Diagnostic> effect_level = diags.diagnostics();  // the front end's and linking's
   for (const fx::EffectPass& pass : units.passes()) {

@@ -1,5 +1,6 @@
 // `fxkit info FILE [-I DIR]... [-D NAME[=VALUE]]... [--profile P] [--cache DIR] --json`:
 // the effect's full reflection (schema: docs/info-json-schema.md, docs/info.schema.json).
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
@@ -7,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "effect_summary.h"
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/spirv_cache.h"
 #include "fx/diagnostic_render.h"
@@ -44,18 +46,17 @@ std::string type_name(const fx::ast::TypeRef& t) {
   return t.template_arg.empty() ? t.name : t.name + "<" + t.template_arg + ">";
 }
 
-json location(const fx::SourceManager& sm, fx::SourceRange range) {
-  fx::PresumedLocation p = range.valid() ? sm.presumed(range.begin) : fx::PresumedLocation{};
-  if (!p.valid()) return nullptr;
-  return {{"file", std::string(p.file)}, {"line", p.line}, {"column", p.column}};
-}
+// The forms `fxkit check --json` writes too (effect_summary.h).
+json location(const fx::SourceManager& sm, fx::SourceRange range) { return source_location(sm, range); }
 
+// As `fxkit check --json`: the value typed (a string without its quotes); and as written.
 json annotations(const fx::ast::List<fx::ast::Annotation>& list) {
   json out = json::array();
   for (const fx::ast::Annotation& a : list)
     out.push_back({{"name", a.name},
                    {"type", type_name(a.type)},
-                   {"value", a.value ? fx::spell_expression(*a.value) : ""}});
+                   {"value", annotation_value(a.value)},
+                   {"value_text", a.value ? fx::spell_expression(*a.value) : ""}});
   return out;
 }
 
@@ -132,18 +133,25 @@ json shader_json(const fx::StageProgram& s, const fx::StageUnit* stage, const fx
           {"diagnostics", fx::render_json(s.diagnostics, sm)}};
 }
 
-// Where a parameter landed in the compiled programs: first uniform block member of that name.
+// Where a parameter landed in the compiled programs: each stage's uniform block has its own
+// layout (a stage's `$Global` holds only the globals it reads), so two parameters can both be
+// at offset 0 of `$Global`, in different stages' blocks. Each distinct place once, in pass
+// order.
 struct Placement {
-  std::string block;
+  std::string stage, block;
   uint32_t offset = 0, size = 0;
+  bool operator==(const Placement&) const = default;
 };
-std::optional<Placement> find_placement(const std::vector<const fx::PassProgram*>& programs, const std::string& name) {
+std::vector<Placement> find_placements(const std::vector<const fx::PassProgram*>& programs, const std::string& name) {
+  std::vector<Placement> out;
   for (const fx::PassProgram* p : programs)
     for (const fx::StageProgram& s : p->stages)
       for (const fx::UniformBlock& b : s.shader.reflection.uniform_blocks)
-        for (const fx::BlockMember& m : b.members)
-          if (m.name == name) return Placement{b.name, m.offset, m.size};
-  return std::nullopt;
+        for (const fx::BlockMember& m : b.members) {
+          Placement at{fx::to_string(s.shader.reflection.stage), b.name, m.offset, m.size};
+          if (m.name == name && std::find(out.begin(), out.end(), at) == out.end()) out.push_back(std::move(at));
+        }
+  return out;
 }
 
 // `model`: the effect model's parameter for `v` (its folded default), or null.
@@ -164,10 +172,16 @@ json parameter_json(const fx::ast::Variable& v, const std::string& cbuffer, cons
   j["value"] = numeric ? json((*folded)->components) : json(nullptr);
   j["value_text"] = folded && *folded ? json((*folded)->to_string()) : json(nullptr);
   j["cbuffer"] = cbuffer.empty() ? json(nullptr) : json(cbuffer);
-  std::optional<Placement> at = find_placement(programs, v.name);
+  const std::vector<Placement> placements = find_placements(programs, v.name);
+  const Placement* at = placements.empty() ? nullptr : &placements.front();
+  j["stage"] = at ? json(at->stage) : json(nullptr);
   j["block"] = at ? json(at->block) : json(nullptr);
   j["offset"] = at ? json(at->offset) : json(nullptr);
   j["size"] = at ? json(at->size) : json(nullptr);
+  json all = json::array();
+  for (const Placement& p : placements)
+    all.push_back({{"stage", p.stage}, {"block", p.block}, {"offset", p.offset}, {"size", p.size}});
+  j["placements"] = std::move(all);
   return j;
 }
 

@@ -189,16 +189,16 @@ int run_render(const RenderArgs& args) {
       std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
       std::printf(", %.2f ms/frame (median of %zu)", ms[ms.size() / 2], ms.size());
     }
-    // The measured error of the technique's approximation (effects/generated/costs.fxh).
+    // The measured error of the technique's approximation (effects/generated/costs.fxh),
+    // said as what it is: not this image's error, nor a limit.
     if (const fx::Annotation* e = fx::find_annotation(t.annotations, "MaxError"))
-      std::printf(", max error %.3g", e->value.number());
+      std::printf(", technique's measured max error %.3g (8-bit levels, its MaxError annotation)", e->value.number());
     std::printf("\n");
   }
   ctx->wait_idle();
   if (args.validation) {
     // Every error and warning fails the run. (A vertex output the pixel shader does not
-    // read, which Direct3D allows, is no warning: the Context enables maintenance4 when the
-    // device has it.)
+    // read, which Direct3D allows, is no warning: linking removes it.)
     size_t failing = 0;
     for (const fx::vk::ValidationMessage& m : ctx->validation_messages()) {
       ++failing;

@@ -46,9 +46,11 @@ void draw_overlay(const std::vector<fxkit::Message>& problems) {
   ImGui::Begin("Errors", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing);
   ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "The last good version is on screen until the next good save:");
+  // As `fxkit check` prints them: the source line, the caret, did-you-mean and notes (the
+  // default font is monospaced, so the caret lines up).
   for (const fxkit::Message& m : problems)
-    ImGui::TextColored(m.severity == fxkit::Severity::error ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(1, 0.9f, 0.4f, 1),
-                       "%s:%u:%u: %s", m.file.c_str(), m.line, m.column, m.text.c_str());
+    ImGui::TextColored(m.severity == fxkit::Severity::error ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(1, 0.9f, 0.4f, 1), "%s",
+                       m.rendered.c_str());
   ImGui::End();
 }
 

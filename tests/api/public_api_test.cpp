@@ -10,6 +10,7 @@
 
 #include "../vulkan/effect_test_util.h"
 #include "fxkit/fxkit.h"
+#include "patience.h"
 
 namespace fx::vk::testing {
 namespace {
@@ -66,13 +67,13 @@ class PublicApiTest : public VulkanTest {
     return {ctx().instance(), ctx().physical_device(), ctx().device(), ctx().queue(), ctx().queue_family()};
   }
   // Writes `text` over the effect file at `path` and runs frames until the device reports
-  // the reload (or 10 s pass); what begin_frame() reported.
+  // the reload (giving up after fxkit_test::patience()); what begin_frame() reported.
   static std::vector<fxkit::Reload> rewrite_and_reload(fxkit::Device& device, const std::string& path,
                                                        const std::string& text) {
     std::ofstream(path, std::ios::trunc) << text;
     std::vector<fxkit::Reload> reloads;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-    while (reloads.empty() && std::chrono::steady_clock::now() < deadline) {
+    const auto give_up = std::chrono::steady_clock::now() + fxkit_test::patience();
+    while (reloads.empty() && std::chrono::steady_clock::now() < give_up) {
       device.wait_for_reload(std::chrono::milliseconds(20));
       reloads = device.begin_frame();
     }
@@ -662,8 +663,8 @@ technique sm2 { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = comp
       << common + "technique sm1_first { pass p0 { VertexShader = compile vs_1_1 VS(); "
                   "PixelShader = compile ps_1_1 Bright(); } }\n" + sm1;
   std::vector<fxkit::Reload> reloads;
-  for (auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-       reloads.empty() && std::chrono::steady_clock::now() < deadline;) {
+  for (auto give_up = std::chrono::steady_clock::now() + fxkit_test::patience();
+       reloads.empty() && std::chrono::steady_clock::now() < give_up;) {
     r.device->wait_for_reload(std::chrono::milliseconds(20));
     reloads = r.device->begin_frame();
   }

@@ -110,6 +110,22 @@ TEST(CheckFolder, ShardsSplitTheFilesStably) {
   EXPECT_EQ(run_fxkit("check --shard x " + f.path("s")).status, 2);
 }
 
+// A CI job pointed at the wrong folder, or with globs matching nothing, must not pass green.
+TEST(CheckFolder, AFolderWithNoEffectsFailsUnlessAllowed) {
+  fxkit_test::EffectFolder f("empty");
+  f.write("empty/readme.txt", "no effects here\n");
+  auto r = run_fxkit("check --syntax-only " + f.path("empty"), true);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("no effect files found in " + f.path("empty")), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--allow-empty"), std::string::npos) << r.err;
+  auto globs = run_fxkit("check --syntax-only --include-glob '*.hlsl' " + f.path("empty"), true);
+  EXPECT_EQ(globs.status, 2) << globs.err;
+  EXPECT_NE(globs.err.find("include globs: *.hlsl"), std::string::npos) << globs.err;
+  auto allowed = run_fxkit("check --syntax-only --allow-empty " + f.path("empty"), true);
+  EXPECT_EQ(allowed.status, 0) << allowed.err;
+  EXPECT_NE(allowed.err.find("checked 0 files"), std::string::npos) << allowed.err;
+}
+
 TEST(CheckFolder, CacheServesUnchangedFilesAndSeesEditedIncludes) {
 #ifndef FXKIT_CLI_COMPILES
   GTEST_SKIP() << "--cache needs the runtime build";

@@ -234,4 +234,18 @@ technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile
   EXPECT_NE(r.err.find("warning: the image is constant"), std::string::npos) << r.err;
 }
 
+// The summary line's error figure says whose error it is and in what unit.
+TEST(FxkitRender, TheSummarySaysTheErrorIsTheTechniquesMeasuredOneIn8BitLevels) {
+  const std::string source = R"(
+float4x4 WorldViewProj : WORLDVIEWPROJECTION;
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProj); }
+float4 PS() : COLOR0 { return float4(0.5, 0.5, 0.5, 1); }
+technique T < float MaxError = 180; > { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)";
+  const auto [r, image] = render("measured", source, "");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("technique's measured max error 180 (8-bit levels, its MaxError annotation)"), std::string::npos)
+      << r.out;
+}
+
 }  // namespace

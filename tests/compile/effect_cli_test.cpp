@@ -2,6 +2,8 @@
 // structure, and info's output validated against docs/info.schema.json.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -149,6 +151,51 @@ TEST(FxkitInfo, JsonMatchesTheSchemaAndReflectsTheEffect) {
   EXPECT_TRUE(pass["ok"].get<bool>());
   EXPECT_EQ(pass["vertex_inputs"].size(), 3u);
   EXPECT_TRUE(doc["techniques"][1]["passes"][0]["ok"].get<bool>());  // fixed-function pixel, generated
+}
+
+// `info --json` and `check --json` describe the same declarations alike: locations under one
+// key at the same column, annotation values typed (a string without its quotes), and a
+// parameter's block offset with the stage whose block it is.
+TEST(FxkitInfo, JsonAgreesWithCheckJsonOnLocationsAndValues) {
+  const std::string file =
+      (fs::path(::testing::TempDir()) / ("info_check_" + std::to_string(::getpid()) + ".fx")).string();
+  std::ofstream(file) << R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float4 Sky < string UIName = "Sky"; float UIMin = -1; bool Hidden = true; > = {0.2, 0.4, 0.8, 1};
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
+float4 PS() : COLOR0 { return Sky; }
+technique T < string Scheme = "preview"; > { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)";
+  CliRun info = run("info --json " + file);
+  CliRun check = run("check --json " + file);
+  ASSERT_EQ(info.exit_code, 0) << info.out;
+  ASSERT_EQ(check.exit_code, 0) << check.out;
+  const json i = json::parse(info.out), c = json::parse(check.out)["effects"][0];
+  auto named = [](const json& list, const std::string& name) {
+    for (const json& e : list)
+      if (e["name"] == name) return e;
+    return json();
+  };
+  const json info_sky = named(i["parameters"], "Sky"), check_sky = named(c["parameters"], "Sky");
+  ASSERT_FALSE(info_sky.is_null() || check_sky.is_null()) << info.out << check.out;
+  EXPECT_EQ(info_sky["location"], check_sky["location"]);
+  EXPECT_EQ(info_sky["location"]["column"], 8) << "the name's column";
+  for (const json* sky : {&info_sky, &check_sky}) {
+    EXPECT_EQ(named((*sky)["annotations"], "UIName")["value"], "Sky") << *sky;
+    EXPECT_EQ(named((*sky)["annotations"], "UIMin")["value"], -1.0) << *sky;
+    EXPECT_EQ(named((*sky)["annotations"], "Hidden")["value"], true) << *sky;
+  }
+  EXPECT_EQ(named(info_sky["annotations"], "UIName")["value_text"], "\"Sky\"");
+  EXPECT_EQ(named(i["techniques"], "T")["location"], named(c["techniques"], "T")["location"]);
+  EXPECT_EQ(named(named(i["techniques"], "T")["annotations"], "Scheme")["value"], "preview");
+  // WorldViewProjection and Sky both start their stage's $Global: the stage tells them apart.
+  const json wvp = named(i["parameters"], "WorldViewProjection");
+  EXPECT_EQ(wvp["offset"], 0);
+  EXPECT_EQ(info_sky["offset"], 0);
+  EXPECT_EQ(wvp["stage"], "vertex");
+  EXPECT_EQ(info_sky["stage"], "fragment");
+  ASSERT_EQ(info_sky["placements"].size(), 1u);
+  EXPECT_EQ(info_sky["placements"][0]["block"], "$Global");
+  fs::remove(file);
 }
 
 TEST(FxkitInfo, ExitCodes) {

@@ -1,8 +1,14 @@
 // docs/embedding.md: the device made from the fixture's Vulkan handles as an engine's, an
 // effect loaded and set up, and one frame recorded the way the page shows (into an
-// Offscreen image standing in for the engine's swapchain image).
+// Offscreen image standing in for the engine's swapchain image). The frame loop followed
+// literally with a glm::mat4's memory draws what set_scene draws with the same transforms.
+#include <algorithm>
+#include <cstdlib>
 #include <string>
 #include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "example_fixture.h"
 #include "fx/vulkan/buffer.h"
@@ -84,7 +90,7 @@ TEST_F(ExampleTest, EmbeddingDeviceEffectFrame) {
     begin_rendering(cmd);  // the engine's vkCmdBeginRendering, attachments as Target::formats
     if (technique.begin(cmd, viewport, scissor)) {
       for (const Object& object : objects) {
-        effect.set_matrix(world_view_projection, object.world_view_projection, fxkit::MatrixOrder::column_major);
+        effect.set_matrix(world_view_projection, object.world_view_projection, fxkit::MatrixOrder::row_major);
         for (uint32_t pass = 0; pass < technique.pass_count(); ++pass)
           if (technique.apply(pass)) object.draw(cmd);
       }
@@ -98,6 +104,88 @@ TEST_F(ExampleTest, EmbeddingDeviceEffectFrame) {
   const std::vector<uint8_t> rgba = image->read_rgba8();
   EXPECT_GT(int(rgba[(8 * 16 + 8) * 4]) + rgba[(8 * 16 + 8) * 4 + 1], 0) << "the triangle covers the centre";
   EXPECT_TRUE(effect.stats().passes > 0);
+}
+
+// The page's frame loop, word for word, with each object's matrix the memory of a glm::mat4
+// (P * V * W of samples/minimal's camera): it draws the image set_scene draws from the same
+// transforms, samples/minimal's sphere centred and lit. A wrong MatrixOrder in the page
+// draws a transposed matrix: a cropped smear, and no message.
+TEST_F(ExampleTest, EmbeddingFrameLoopDrawsWhatSetSceneDraws) {
+  std::vector<std::string> logged;
+  auto log = [&logged](const std::string& line) { logged.push_back(line); };
+  fxkit::DeviceOptions options;
+  options.target.formats = {.color = {VK_FORMAT_R8G8B8A8_UNORM}, .depth = VK_FORMAT_D32_SFLOAT};
+  options.target.vertex_layout = fxkit::Mesh::vertex_layout();
+  options.target.front_faces = fxkit::Winding::counter_clockwise;
+  options.target.y_flip = fxkit::YFlip::negative_viewport;
+  std::vector<fxkit::Message> errors;
+  auto device = fxkit::Device::create(
+      {ctx().instance(), ctx().physical_device(), ctx().device(), ctx().queue(), ctx().queue_family()}, options,
+      errors);
+  ASSERT_TRUE(device) << (errors.empty() ? "" : errors[0].rendered);
+  auto mesh = fxkit::Mesh::create(*device, "sphere", errors);
+  auto image = fxkit::Offscreen::create(*device, 64, 64, errors);
+  ASSERT_TRUE(mesh && image);
+  const fxkit::Scene scene = fxkit::Scene::framing(mesh->radius(), 1.0f);
+
+  struct Object {
+    float world_view_projection[16] = {};
+    const fxkit::Mesh* mesh = nullptr;
+    void draw(VkCommandBuffer cmd) const { mesh->draw(cmd); }
+  };
+  Object sphere{.mesh = mesh.get()};
+  const glm::mat4 wvp = glm::make_mat4(scene.projection) * glm::make_mat4(scene.view) * glm::make_mat4(scene.world);
+  std::copy_n(glm::value_ptr(wvp), 16, sphere.world_view_projection);
+  const std::vector<Object> objects = {sphere};
+  const VkViewport viewport = image->viewport();
+  const VkRect2D scissor = image->scissor();
+  auto begin_rendering = [&](VkCommandBuffer cmd) { image->begin(cmd); };
+  auto end_rendering = [&](VkCommandBuffer cmd) { image->end(cmd); };
+
+  // As the page: the effect's matrices set by the application, each frame, in its loop.
+  fxkit::Effect effect = device->load(FXKIT_SOURCE_DIR "/samples/minimal/lit.fx");
+  ASSERT_TRUE(effect.ok()) << (effect.messages().empty() ? "" : effect.messages()[0].rendered);
+  fxkit::Technique technique = effect.technique("lit");
+  const fxkit::Param world_view_projection = effect.param("WORLDVIEWPROJECTION");  // name or semantic
+  ASSERT_TRUE(effect.set_matrix(effect.param("WORLD"), scene.world));
+  ASSERT_TRUE(device->submit([&](VkCommandBuffer cmd) {
+    for (const fxkit::Reload& r : device->begin_frame()) log(r.str());
+    begin_rendering(cmd);  // the engine's vkCmdBeginRendering, attachments as Target::formats
+    if (technique.begin(cmd, viewport, scissor)) {
+      for (const Object& object : objects) {
+        effect.set_matrix(world_view_projection, object.world_view_projection, fxkit::MatrixOrder::row_major);
+        for (uint32_t pass = 0; pass < technique.pass_count(); ++pass)
+          if (technique.apply(pass)) object.draw(cmd);
+      }
+    }
+    technique.end();
+    end_rendering(cmd);
+  }));
+  const std::vector<uint8_t> looped = image->read_rgba8();
+
+  // As samples/minimal: every transform from the scene.
+  effect.set_scene(scene);
+  ASSERT_TRUE(device->submit([&](VkCommandBuffer cmd) {
+    device->begin_frame();
+    image->begin(cmd);
+    if (technique.begin(cmd, viewport, scissor))
+      for (uint32_t pass = 0; pass < technique.pass_count(); ++pass)
+        if (technique.apply(pass)) mesh->draw(cmd);
+    technique.end();
+    image->end(cmd);
+  }));
+  const std::vector<uint8_t> framed = image->read_rgba8();
+  EXPECT_TRUE(logged.empty()) << logged[0];
+
+  const size_t centre = (32 * 64 + 32) * 4;
+  EXPECT_GT(framed[centre] + framed[centre + 1] + framed[centre + 2], 3 * 60) << "samples/minimal's sphere is lit";
+  ASSERT_EQ(looped.size(), framed.size());
+  size_t differing = 0;
+  for (size_t i = 0; i < framed.size(); ++i) differing += std::abs(int(looped[i]) - int(framed[i])) > 1 ? 1 : 0;
+  EXPECT_EQ(differing, 0u) << "bytes of the page's frame loop differ from set_scene's image (centre "
+                           << int(looped[centre]) << " " << int(looped[centre + 1]) << " " << int(looped[centre + 2])
+                           << " against " << int(framed[centre]) << " " << int(framed[centre + 1]) << " "
+                           << int(framed[centre + 2]) << ")";
 }
 
 }  // namespace

@@ -104,5 +104,14 @@ TEST(Diagnostic, ClosestMatchIsCaseInsensitive) {
   EXPECT_EQ(closest_match("Zzzzzzz", {"CullMode", "FillMode"}), "");
 }
 
+// Two letters typed in the wrong order are one slip, as one letter left out is.
+TEST(Diagnostic, ClosestMatchCountsASwapOfNeighboursAsOneEdit) {
+  EXPECT_EQ(closest_match("Clmp", {"Clamp", "Wrap", "Mirror", "Border"}), "Clamp");
+  EXPECT_EQ(closest_match("Clmap", {"Clamp", "Wrap", "Mirror", "Border"}), "Clamp");
+  EXPECT_EQ(closest_match("Lienar", {"Linear", "Point", "Anisotropic"}), "Linear");
+  EXPECT_EQ(closest_match("ZEnalbe", {"ZEnable", "ZFunc", "ZWriteEnable"}), "ZEnable");
+  EXPECT_EQ(closest_match("Wrpa", {"Clamp", "Mirror"}), "") << "nothing near";
+}
+
 }  // namespace
 }  // namespace fx

@@ -12,6 +12,7 @@
 #include "fx/diagnostic_render.h"
 #include "fx/lexer.h"
 #include "fx/preprocessor.h"
+#include "../support/patience.h"
 
 namespace fx::test {
 
@@ -92,7 +93,8 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
 
 // Catches a hang only (a limit that no longer stops the work), never slowness: a loaded
 // 2-core CI machine must not fail a unit test. What the limits bound is checked by counts
-// (tokens, include depth); speed is measured by `fxkit bench frontend`.
-constexpr double kHangSeconds = 20.0;
+// (tokens, include depth); speed is measured by `fxkit bench frontend`. Sanitizer builds
+// run several times slower (FXKIT_TEST_SLOWDOWN, tests/CMakeLists.txt).
+constexpr double kHangSeconds = 20.0 * FXKIT_TEST_SLOWDOWN;
 
 }  // namespace fx::test

@@ -123,6 +123,26 @@ TEST(PreprocessorIncludes, NotFoundAndMalformed) {
   EXPECT_EQ(p.diags.diagnostics()[0].message, "'a.fxh' file not found");
 }
 
+// A misspelt include says where it looked and which file it probably meant.
+TEST(PreprocessorIncludes, NotFoundListsTheFoldersSearchedAndANearName) {
+  Pp p;
+  p.options.include_dirs = {"lib", "shared"};
+  p.files["fx/common/lighting.fxh"] = "lit\n";
+  p.files["shared/common/shadows.fxh"] = "shadows\n";
+  p.files["fx/main.fx"] = "#include \"common/lihgting.fxh\"\n#include \"common/shadwos.fxh\"\n#include \"zzz.fxh\"\n";
+  std::vector<Token> out;
+  Preprocessor pp(p.sm, p.diags, p.options);
+  pp.run_file("fx/main.fx", out);
+  ASSERT_EQ(p.ids(), "include-not-found include-not-found include-not-found");
+  EXPECT_EQ(p.diags.diagnostics()[0].message,
+            "'common/lihgting.fxh' file not found (searched 'fx', 'lib', 'shared'); did you mean "
+            "'common/lighting.fxh'?");
+  EXPECT_EQ(p.diags.diagnostics()[1].message,
+            "'common/shadwos.fxh' file not found (searched 'fx', 'lib', 'shared'); did you mean "
+            "'common/shadows.fxh'?");
+  EXPECT_EQ(p.diags.diagnostics()[2].message, "'zzz.fxh' file not found (searched 'fx', 'lib', 'shared')");
+}
+
 TEST(PreprocessorIncludes, PragmaOnce) {
   Pp p;
   p.files["once.fxh"] = "#pragma once\nonce\n";

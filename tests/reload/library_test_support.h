@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fx/reload/effect_library.h"
+#include "../support/patience.h"
 #include "watch_test_support.h"
 
 namespace fx::testing {
@@ -43,9 +44,9 @@ inline EffectLibraryOptions test_options() {
   return o;
 }
 
-// Polls until at least `count` events arrived or `limit` passed.
+// Waits until at least `count` events arrived (giving up after fxkit_test::patience()).
 inline std::vector<ReloadEvent> next_events(EffectLibrary& lib, size_t count = 1,
-                                            std::chrono::milliseconds limit = std::chrono::milliseconds(10000)) {
+                                            std::chrono::milliseconds limit = fxkit_test::patience()) {
   std::vector<ReloadEvent> out;
   auto deadline = std::chrono::steady_clock::now() + limit;
   while (out.size() < count) {

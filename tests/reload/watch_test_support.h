@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fx/reload/file_watcher.h"
+#include "../support/patience.h"
 
 namespace fx::testing {
 
@@ -60,9 +61,10 @@ inline void save_backup_rename(const fs::path& file, const std::string& text) {
   fs::remove(backup);
 }
 
-// Polls until at least one event arrives or `limit` passes; returns what arrived.
+// Waits until at least one event arrives (giving up after fxkit_test::patience()); returns
+// what arrived.
 inline std::vector<FileEvent> wait_for_events(FileWatcher& watcher,
-                                              std::chrono::milliseconds limit = 3000ms) {
+                                              std::chrono::milliseconds limit = fxkit_test::patience()) {
   auto deadline = std::chrono::steady_clock::now() + limit;
   for (;;) {
     auto left = std::chrono::duration_cast<std::chrono::milliseconds>(

@@ -128,7 +128,7 @@ TEST(Selection, SchemesFilterAndUnknownSchemesMatchOnlyUntagged) {
   EXPECT_EQ(plan.select(plan.query({})), 0u);
   fx::SelectionResult r = plan.explain(plan.query({.scheme = "quality"}));
   EXPECT_EQ(r.reasons[1], "scheme 'performance, low_power' not in 'quality'");
-  EXPECT_EQ(r.reasons[2], "ranks below 'fancy' (lower error 0 vs 3 LSB)");
+  EXPECT_EQ(r.reasons[2], "ranks below 'fancy' (lower error: 'fancy' 0 LSB, this one 3 LSB)");
   fx::SelectionPlan perf = build({tech("perf", {{"Scheme", std::string("performance")}}), tech("q", {})});
   EXPECT_EQ(perf.explain(perf.query({.scheme = "quality"})).reasons[0],
             "scheme 'performance' not in 'quality'");
@@ -146,7 +146,7 @@ TEST(Selection, CostAndErrorBudgets) {
   EXPECT_EQ(plan.select(q), 1u);
   fx::SelectionResult r = plan.explain(q);
   EXPECT_EQ(r.reasons[0], "cost 1.8 ms over budget 1.0 ms");
-  EXPECT_EQ(r.reasons[2], "ranks below 'lut' (lower error 1 vs 4 LSB)");
+  EXPECT_EQ(r.reasons[2], "ranks below 'lut' (lower error: 'lut' 1 LSB, this one 4 LSB)");
   q.pixels = 1e6f;  // 2 ms now
   EXPECT_EQ(plan.select(q), 2u);
   EXPECT_EQ(plan.explain(q).reasons[1], "cost 2.0 ms over budget 1.0 ms");
@@ -171,7 +171,7 @@ TEST(Selection, ErrorLimitPicksTheCheapestMeasuredTechnique) {
   EXPECT_EQ(plan.select(q), 2u);
   fx::SelectionResult r = plan.explain(q);
   EXPECT_EQ(r.reasons[0], "error not measured (no MaxError annotation) under limit 4 LSB");
-  EXPECT_EQ(r.reasons[1], "ranks below 'lut' (cheaper within the error limit: 4.0 vs 6.0 ms)");
+  EXPECT_EQ(r.reasons[1], "ranks below 'lut' (cheaper within the error limit: 'lut' 4.0 ms, this one 6.0 ms)");
   EXPECT_EQ(r.reasons[3], "error 20 LSB over limit 4 LSB");
   EXPECT_EQ(plan.select(plan.query({.pixels = 1e6f, .max_error = 0.5f})), 1u);
   EXPECT_EQ(plan.select(plan.query({.pixels = 1e6f, .max_error = 100.f})), 3u);
@@ -180,13 +180,14 @@ TEST(Selection, ErrorLimitPicksTheCheapestMeasuredTechnique) {
                                      tech("pow", {{"CostNsPerPixel", 5.f}, {"MaxError", 3.f}})});
   fx::SelectionQuery pq = partial.query({.pixels = 1e6f, .max_error = 4.f});
   EXPECT_EQ(partial.select(pq), 1u);
-  EXPECT_EQ(partial.explain(pq).reasons[0], "ranks below 'pow' (cheaper within the error limit: 5.0 ms vs cost not measured)");
+  EXPECT_EQ(partial.explain(pq).reasons[0],
+            "ranks below 'pow' (cheaper within the error limit: 'pow' 5.0 ms, this one's cost not measured)");
   // Equal costs keep rank order (lower error first).
   fx::SelectionPlan tie = build({tech("a", {{"CostMs", 1.f}, {"MaxError", 2.f}}),
                                  tech("b", {{"CostMs", 1.f}, {"MaxError", 1.f}})});
   fx::SelectionQuery tq = tie.query({.max_error = 5.f});
   EXPECT_EQ(tie.select(tq), 1u);
-  EXPECT_EQ(tie.explain(tq).reasons[0], "ranks below 'b' (lower error 1 vs 2 LSB)");
+  EXPECT_EQ(tie.explain(tq).reasons[0], "ranks below 'b' (lower error: 'b' 1 LSB, this one 2 LSB)");
 }
 
 // An unknown error is unknown, not zero: the technique ranks after the measured ones (so
@@ -205,7 +206,8 @@ TEST(Selection, UnmeasuredErrorIsUnknownNotExact) {
   fx::SelectionResult r = plan.explain(q);
   EXPECT_EQ(r.chosen, 1u);  // no pixel count: the lower ns per pixel decides
   EXPECT_EQ(r.reasons[0], "error not measured (not drawable on Vulkan: ps.1.1 assembly) under limit 32 LSB");
-  EXPECT_EQ(r.reasons[2], "ranks below 'seed' (cheaper within the error limit: 3 vs 5 ns per pixel)");
+  EXPECT_EQ(r.reasons[2],
+            "ranks below 'seed' (cheaper within the error limit: 'seed' 3 ns per pixel, this one 5 ns per pixel)");
   EXPECT_EQ(plan.select(plan.query({.max_error = 2.f})), 2u);
   // Nothing within the limit and no fallback chain: no technique, not the unmeasured one.
   EXPECT_EQ(plan.select(plan.query({.max_error = 0.1f})), fx::kNoIndex);
@@ -226,7 +228,7 @@ TEST(Selection, ErrorsRankWithinTheirSubstituteGroup) {
   fx::SelectionResult r = plan.explain(plan.query({}));
   EXPECT_EQ(r.chosen, 0u);
   EXPECT_EQ(r.reasons[2], "ranks below 'bump_renormalized' (its substitute group is declared first)");
-  EXPECT_EQ(r.reasons[1], "ranks below 'bump_renormalized' (lower error 21 vs 43 LSB)");
+  EXPECT_EQ(r.reasons[1], "ranks below 'bump_renormalized' (lower error: 'bump_renormalized' 21 LSB, this one 43 LSB)");
   // Without the bump techniques (a variant without them), the analytic one leads.
   fx::SelectionPlan plain = build({tech("lut", {{"MaxError", 16.f}}), tech("analytic", {{"MaxError", 6.f}})});
   EXPECT_EQ(plain.select(plain.query({})), 1u);
@@ -249,7 +251,8 @@ TEST(Selection, CostNsPerVertexCountsWithTheVertices) {
   });
   fx::SelectionQuery q = tie.query({.max_error = 2.f});
   EXPECT_EQ(tie.select(q), 1u);
-  EXPECT_EQ(tie.explain(q).reasons[0], "ranks below 'b' (cheaper within the error limit: 3 vs 9 ns per vertex)");
+  EXPECT_EQ(tie.explain(q).reasons[0],
+            "ranks below 'b' (cheaper within the error limit: 'b' 3 ns per vertex, this one 9 ns per vertex)");
 }
 
 TEST(Selection, TiesGoToPriorityThenDeclarationOrder) {
@@ -258,7 +261,7 @@ TEST(Selection, TiesGoToPriorityThenDeclarationOrder) {
   EXPECT_EQ(std::vector<uint32_t>(plan.rank_order().begin(), plan.rank_order().end()),
             (std::vector<uint32_t>{1, 2, 0}));
   fx::SelectionResult r = plan.explain(plan.query({}));
-  EXPECT_EQ(r.reasons[0], "ranks below 'b' (priority 2 vs 0)");
+  EXPECT_EQ(r.reasons[0], "ranks below 'b' (priority: 'b' 2, this one 0)");
   EXPECT_EQ(r.reasons[2], "ranks below 'b' (declared earlier)");
 }
 

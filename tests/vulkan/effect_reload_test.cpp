@@ -11,6 +11,7 @@
 #include "fx/reload/effect_library.h"
 #include "fx/reload/reload_transaction.h"
 #include "fx/reload/vulkan_reload_backend.h"
+#include "patience.h"
 
 namespace fx::vk::testing {
 namespace {
@@ -85,11 +86,12 @@ struct ReloadHarness {
     return image;
   }
 
-  // Renders frames until a reload event arrives (bounded: 10 s); the frames are checked.
+  // Renders frames until a reload event arrives (giving up after fxkit_test::patience());
+  // the frames are checked.
   ReloadEvent frames_until_event(std::vector<fx::Image>* images = nullptr) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    const auto give_up = std::chrono::steady_clock::now() + fxkit_test::patience();
     std::vector<ReloadEvent> events;
-    while (events.empty() && std::chrono::steady_clock::now() < deadline) {
+    while (events.empty() && std::chrono::steady_clock::now() < give_up) {
       lib->wait(std::chrono::milliseconds(2));
       auto image = frame_once(&events);
       EXPECT_TRUE(image) << "dropped frame " << frame;

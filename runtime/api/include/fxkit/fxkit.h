@@ -4,7 +4,7 @@
 //   Effect   a loaded .fx file, live-reloaded; Param, Technique, Criteria, Scene
 //   Mesh, Offscreen   built-in geometry and a readable image, for tools and samples
 //
-// samples/minimal is the whole integration in 35 lines; docs/embedding.md explains it.
+// samples/minimal is the whole integration in one short file; docs/embedding.md explains it.
 #pragma once
 #include "fxkit/device.h"
 #include "fxkit/effect.h"

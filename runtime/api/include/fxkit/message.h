@@ -14,8 +14,10 @@ struct Message {
   std::string file{};               // "" when the message is not about a file
   uint32_t line = 0, column = 0;  // 1-based; 0 when unknown
   std::string text{};               // the message alone
-  // "file:line:col: error: text [code]" with the include stack and notes, as a terminal
-  // or an editor's problem matcher reads it (ends with a newline).
+  // "file:line:col: error: text [code]", the source line with a caret under the place, then
+  // the notes (include stack, "also reported for" the other passes of a shared function),
+  // exactly as `fxkit check` prints it and an editor's problem matcher reads it (ends with
+  // a newline).
   std::string rendered{};
 };
 

@@ -1,11 +1,11 @@
-#include "shown_once.h"
+#include "fx/shown_once.h"
 
 #include <algorithm>
 
-namespace fxkit {
+namespace fx {
 
-void ShownOnce::add(const std::vector<fx::Diagnostic>& diagnostics, const std::string& where) {
-  for (const fx::Diagnostic& d : diagnostics) {
+void ShownOnce::add(const std::vector<Diagnostic>& diagnostics, const std::string& where) {
+  for (const Diagnostic& d : diagnostics) {
     auto same = std::find_if(shown_.begin(), shown_.end(), [&](const Shown& s) {
       return s.diagnostic.id == d.id && s.diagnostic.severity == d.severity &&
              s.diagnostic.range.begin == d.range.begin && s.diagnostic.message == d.message;
@@ -15,8 +15,8 @@ void ShownOnce::add(const std::vector<fx::Diagnostic>& diagnostics, const std::s
   }
 }
 
-std::vector<fx::Diagnostic> ShownOnce::diagnostics() const {
-  std::vector<fx::Diagnostic> out;
+std::vector<Diagnostic> ShownOnce::diagnostics() const {
+  std::vector<Diagnostic> out;
   for (const Shown& s : shown_) {
     out.push_back(s.diagnostic);
     if (s.also.empty()) continue;
@@ -27,4 +27,4 @@ std::vector<fx::Diagnostic> ShownOnce::diagnostics() const {
   return out;
 }
 
-}  // namespace fxkit
+}  // namespace fx
