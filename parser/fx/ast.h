@@ -309,6 +309,9 @@ struct Effect {
   DeclPool declarations;       // every node the decls point to
   ExprPool expressions;        // every Expr the declarations point to
   Arena arena;                 // the texts and lists inside those nodes
+  // Set by the front end (fx/frontend.h) when it reported an error: the tree may be partial
+  // and its shader code unchecked, so none of it goes to the shader compiler.
+  bool front_end_failed = false;
 };
 
 }  // namespace fx::ast

@@ -133,6 +133,7 @@ void Checker::run() {
   collect_symbols();
   check_functions();
   check_profile_rules();
+  check_shader_code();
   NameTable<SourceRange> techniques, groups;
   auto technique = [&](const ast::Technique& t, NameTable<SourceRange>& names) {
     if (!t.name.empty()) {

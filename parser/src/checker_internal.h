@@ -110,6 +110,13 @@ class Checker {
   void report_duplicate(std::string_view what, std::string_view name, SourceRange range,
                         SourceRange previous);
 
+  // --- checker_shader_code.cpp ---
+  // The effect's shader code (functions, globals, structs, cbuffers, GLSL blocks) within
+  // what glslang survives: one error per declaration that is not.
+  enum class ShaderCode : uint8_t { hlsl, glsl };
+  void check_shader_code();
+  void check_shader_code(ast::TokenSpan span, ShaderCode code);
+
   // --- checker_states.cpp ---
   // `also`: a second block whose names count too (see check_sampler_state).
   void check_states(const ast::List<ast::StateAssignment>& states, StateBlock block,

@@ -12,6 +12,7 @@ ParsedEffect finish(Preprocessor& pp, std::vector<Token> tokens, size_t errors_b
   // Checking a tree the parser gave up on would only repeat its errors as new ones.
   if (diags.error_count() == errors_before) check_effect(result.ast, sm, diags, options.check);
   result.ok = diags.error_count() == errors_before;
+  result.ast.front_end_failed = !result.ok;
   return result;
 }
 

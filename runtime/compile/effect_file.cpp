@@ -5,10 +5,8 @@ namespace fx {
 
 EffectUnitOptions effect_unit_options(const FrontEndOptions& options) {
   EffectUnitOptions unit_options;
-  for (const auto& [name, value] : options.preprocessor.defines) {
-    unit_options.defines.push_back({name, value});
+  for (const auto& [name, value] : options.preprocessor.defines)
     if (name == kPs1xPrecisionMacro && value != "0") unit_options.ps1x_precision = true;
-  }
   return unit_options;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "effect_shader_text.h"
@@ -105,6 +106,21 @@ class EffectUnitBuilder {
   // The first interface or interface instance a function's tokens name ("" for none).
   std::string dynamic_linkage_in(ast::TokenSpan span) const;
 
+  // --- effect_unit_initializers.cpp ---
+  // Global initializers that call a function of the effect (glslang crashes on them): a
+  // static's is run at the start of the entry point, as fxc runs it; a parameter's is left
+  // out (its default is the model's). Found before emit_hlsl.
+  void find_lowered_globals();
+  // Whether a declaration's initializers call a function of the effect, or name a static
+  // already lowered (it must run after that one's initialization).
+  bool initializer_calls(ast::TokenSpan span) const;
+  // Writes a lowered static's declaration without `const` and initializers; returns its
+  // initialization, for the prologue of the entry points that reach it.
+  std::string emit_lowered_static(detail::ShaderTextWriter& w, ast::TokenSpan span);
+  std::unordered_set<uint32_t> lowered_statics_;       // declarations' first tokens
+  std::unordered_set<uint32_t> dropped_initializers_;  // parameters' declarations
+  std::unordered_set<std::string> lowered_names_;
+
   // A function as a declaration range of the text (see emit_hlsl), with what it names.
   void emit_function(detail::ShaderTextWriter& w, const ast::Function& f);
 
@@ -141,9 +157,10 @@ class EffectUnitBuilder {
   // (one for vs, one for ps), and glslang would turn both into the same offset of one
   // $Global block, which SPIR-V validation rejects. Parameters are matched by name, so
   // glslang's own packing loses nothing.
-  // Tokens inside one of `leave_out` (sorted) are not written.
+  // With `drop_initializers`, a global's `= value` goes too. Tokens inside one of
+  // `leave_out` (sorted) are not written.
   void emit_filtered(detail::ShaderTextWriter& w, ast::TokenSpan span, bool drop_constant_registers = false,
-                     const std::vector<ast::TokenSpan>& leave_out = {});
+                     bool drop_initializers = false, const std::vector<ast::TokenSpan>& leave_out = {});
 
   // D3D10 `SamplerState s { Filter = ...; };` -> `SamplerState s;` (the states are ours).
   void emit_sampler_object(detail::ShaderTextWriter& w, const ast::StateObject& so);

@@ -57,8 +57,14 @@ void EffectUnitBuilder::emit_hlsl() {
         if (shares_last(v.tokens.first, v.name)) break;
         last_span = v.tokens.first;
         const size_t from = begin();
-        emit_filtered(w, v.tokens, !is_shader_object_type(v.type.name));
+        const bool lowered = lowered_statics_.count(v.tokens.first) > 0;
+        const bool dropped = dropped_initializers_.count(v.tokens.first) > 0;
+        std::string initialization;
+        if (lowered) initialization = emit_lowered_static(w, v.tokens);
+        else emit_filtered(w, v.tokens, !is_shader_object_type(v.type.name), dropped);
         end(from, {v.name}, v.tokens);
+        if (!initialization.empty() && !u_.decls_.empty() && u_.decls_.back().begin == from)
+          u_.decls_.back().initialization = std::move(initialization);
         break;
       }
       case ast::DeclKind::type_alias: {
@@ -97,7 +103,7 @@ void EffectUnitBuilder::emit_hlsl() {
             emit_filtered(w, m.tokens);
             statics.push_back(m.tokens);
           }
-        emit_filtered(w, cb.tokens, false, statics);
+        emit_filtered(w, cb.tokens, false, false, statics);
         end(from, std::move(names), cb.tokens);
         break;
       }
@@ -185,7 +191,16 @@ void EffectUnitBuilder::emit_function(detail::ShaderTextWriter& w, const ast::Fu
   text.names = {std::string(f.name)};
   text.function = true;
   text.begin = w.out().size();
-  emit_function_tokens(w, f.tokens);
+  if (!lowered_statics_.empty() && !f.body.empty() && f.body.first > f.tokens.first) {
+    // The body's first token starts a line of its own, so initializations can go before it.
+    emit_function_tokens(w, {f.tokens.first, f.body.first});
+    w.end_line();
+    w.desync();
+    text.prologue = w.out().size();
+    emit_function_tokens(w, {f.body.first, f.tokens.last});
+  } else {
+    emit_function_tokens(w, f.tokens);
+  }
   w.end_line();
   w.desync();
   text.end = w.out().size();
@@ -280,7 +295,7 @@ uint32_t EffectUnitBuilder::register_end(uint32_t colon, uint32_t last) const {
 }
 
 void EffectUnitBuilder::emit_filtered(detail::ShaderTextWriter& w, ast::TokenSpan span, bool drop_constant_registers,
-                                      const std::vector<ast::TokenSpan>& leave_out) {
+                                      bool drop_initializers, const std::vector<ast::TokenSpan>& leave_out) {
   int depth = 0, init_depth = -1;
   auto left_out = leave_out.begin();
   for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) {
@@ -317,14 +332,14 @@ void EffectUnitBuilder::emit_filtered(detail::ShaderTextWriter& w, ast::TokenSpa
         i = matching_close(i + 1, span.last);
         continue;
       }
-      if (depth > 0) {  // cbuffer member initializer: skip to its ';'
+      if (depth > 0 || drop_initializers) {  // cbuffer member or dropped initializer: skip to its ';'
         int d = 0;
         uint32_t j = i + 1;
         for (; j < span.last; ++j) {
           TokenKind k = toks_[j].kind;
           if (k == TokenKind::l_brace || k == TokenKind::l_paren || k == TokenKind::l_square) ++d;
           if (k == TokenKind::r_brace || k == TokenKind::r_paren || k == TokenKind::r_square) --d;
-          if (d == 0 && k == TokenKind::semi) break;
+          if (d == 0 && (k == TokenKind::semi || (depth == 0 && k == TokenKind::comma))) break;
         }
         i = j - 1;
         continue;

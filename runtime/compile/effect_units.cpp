@@ -175,6 +175,7 @@ void EffectUnitBuilder::build() {
     }
   if (u_.name_.empty()) u_.name_ = "<effect>";
   index_declarations();
+  find_lowered_globals();
   respelled_ = detail::flat_initializer_spellings(toks_);
   respelled_.merge(detail::case_insensitive_type_spellings(toks_, u_.symbols_));
   respell_helper_uniforms();
@@ -188,6 +189,13 @@ void EffectUnitBuilder::build() {
   mark_uncalled_functions();
   mark_dynamic_linkage();
   mark_clip_distance_inputs();
+  if (effect_.front_end_failed) {
+    // Its errors are reported; a partial tree or unchecked shader code never reaches glslang.
+    for_each_stage([&](StageUnit& stage) {
+      if (stage.kind != StageSourceKind::invalid) invalid(stage, "the effect has front-end errors");
+    });
+    u_.check_.reset();
+  }
 }
 
 bool EffectUnitBuilder::carries_clip_distance(const ast::Variable& v, int depth) const {
@@ -339,30 +347,44 @@ std::vector<uint32_t> EffectUnits::reached_from(const std::vector<std::string_vi
   return reached;
 }
 
-std::string EffectUnits::code_for(const std::vector<uint32_t>& reached) const {
+std::string EffectUnits::initializations(const std::vector<uint32_t>& reached, uint32_t before) const {
   std::string out;
-  // What comes before the first declaration (the pre-release prelude) is in every unit.
-  out.append(hlsl_, 0, decls_.empty() ? hlsl_.size() : decls_.front().begin);
-  for (uint32_t i : reached) out.append(hlsl_, decls_[i].begin, decls_[i].end - decls_[i].begin);
+  for (uint32_t i : reached)
+    if (i < before) out += decls_[i].initialization;
   return out;
 }
 
-std::string EffectUnits::hlsl_code_for(std::string_view entry) const {
-  return code_for(reached_from({entry}));
+std::string EffectUnits::code_for(const std::vector<uint32_t>& reached, std::string_view entry) const {
+  std::string out;
+  // What comes before the first declaration (the pre-release prelude) is in every unit.
+  out.append(hlsl_, 0, decls_.empty() ? hlsl_.size() : decls_.front().begin);
+  for (uint32_t i : reached) {
+    const DeclText& d = decls_[i];
+    if (d.prologue && !entry.empty() && d.function && d.names.front() == entry) {
+      out.append(hlsl_, d.begin, d.prologue - d.begin);
+      out += initializations(reached, i);
+      out.append(hlsl_, d.prologue, d.end - d.prologue);
+    } else {
+      out.append(hlsl_, d.begin, d.end - d.begin);
+    }
+  }
+  return out;
 }
+
+std::string EffectUnits::hlsl_code_for(std::string_view entry) const { return code_for(reached_from({entry}), entry); }
 
 std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
   TranslationUnit u;
   u.stage = stage.stage;
   u.entry_point = stage.entry_point;
-  u.defines = options_.defines;
   u.name = name_;
   if (check_ && &stage == &*check_) {
     u.language = ShaderLanguage::hlsl;
     u.profile = normalize_profile(stage.profile);
     std::vector<std::string_view> roots(uncalled_.begin(), uncalled_.end());
-    u.source = code_for(reached_from(roots));
-    u.source += "void " + stage.entry_point + "() {}\n";
+    const std::vector<uint32_t> reached = reached_from(roots);
+    u.source = code_for(reached);
+    u.source += "void " + stage.entry_point + "() {\n" + initializations(reached, UINT32_MAX) + "}\n";
     return u;
   }
   if (stage.kind == StageSourceKind::hlsl) {
@@ -381,7 +403,7 @@ std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
       }
     std::vector<std::string_view> roots{stage.function};
     roots.insert(roots.end(), argument_names.begin(), argument_names.end());
-    u.source = code_for(reached_from(roots));
+    u.source = code_for(reached_from(roots), stage.function);
     if (stage.entry_point != stage.function)  // a wrapper: compile-time arguments, D3D9 system values
       for (const Wrapper& w : wrappers_)
         if (w.function == stage.function && w.arguments == stage.arguments) u.source += w.text;

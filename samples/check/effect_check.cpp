@@ -8,6 +8,7 @@
 #include "fx/worker_pool.h"
 #ifdef FXKIT_HAS_RUNTIME
 #include "check_cache.h"
+#include "fx/compile/effect_file.h"
 #include "fx/compile/effect_programs.h"
 #include "fx/select/technique_validation.h"
 #endif
@@ -45,9 +46,7 @@ bool report_techniques(const fx::ParsedEffect& parsed, const EffectCheckSettings
 // fxkit cannot run at all is an error.
 void compile_shaders(const fx::ParsedEffect& parsed, const EffectCheckSettings& settings, fx::SourceManager& sm,
                      fx::DiagnosticSink& diags, fx::ShownOnce& shown) {
-  fx::EffectUnitOptions unit_options;
-  for (const auto& [name, value] : settings.front_end.preprocessor.defines) unit_options.defines.push_back({name, value});
-  fx::EffectUnits units(parsed.ast, sm, diags, std::move(unit_options));
+  fx::EffectUnits units(parsed.ast, sm, diags, fx::effect_unit_options(settings.front_end));
   fx::EffectPrograms programs(units, *settings.compiler, sm);
   if (settings.executor) programs.compile_all(*settings.executor, true);
   shown.add(diags.diagnostics(), "");

@@ -8,6 +8,7 @@
 
 #include "command.h"
 #include "compile_workers_option.h"
+#include "fx/compile/effect_file.h"
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/spirv_cache.h"
 #include "fx/diagnostic_render.h"
@@ -52,12 +53,6 @@ struct CompileArgs {
   CompileWorkersFlag workers;
 };
 
-std::vector<fx::ShaderDefine> shader_defines(const fx::FrontEndOptions& options) {
-  std::vector<fx::ShaderDefine> out;
-  for (const auto& [name, value] : options.preprocessor.defines) out.push_back({name, value});
-  return out;
-}
-
 bool write_spirv(const std::filesystem::path& path, const std::vector<uint32_t>& words) {
   std::ofstream out(path, std::ios::binary);
   out.write(reinterpret_cast<const char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
@@ -87,7 +82,7 @@ int run_compile(const CompileArgs& args) {
   fx::SourceManager sm;
   fx::DiagnosticSink diags;
   fx::ParsedEffect parsed = fx::parse_effect_file(args.file, sm, diags, options);
-  fx::EffectUnits units(parsed.ast, sm, diags, {.defines = shader_defines(options)});
+  fx::EffectUnits units(parsed.ast, sm, diags, fx::effect_unit_options(options));
   fx::SpirvCache cache(args.cache_dir);
   // One worker: the passes below compile one after another.
   std::unique_ptr<fx::CompileWorkers> workers = args.workers.start("compile", 1);

@@ -9,6 +9,7 @@
 
 #include "command.h"
 #include "effect_summary.h"
+#include "fx/compile/effect_file.h"
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/spirv_cache.h"
 #include "fx/diagnostic_render.h"
@@ -199,9 +200,7 @@ int run_info(const InfoArgs& args) {
   fx::SourceManager sm;
   fx::DiagnosticSink diags;
   fx::ParsedEffect parsed = fx::parse_effect_file(args.file, sm, diags, options);
-  std::vector<fx::ShaderDefine> defines;
-  for (const auto& [name, value] : options.preprocessor.defines) defines.push_back({name, value});
-  fx::EffectUnits units(parsed.ast, sm, diags, {.defines = defines});
+  fx::EffectUnits units(parsed.ast, sm, diags, fx::effect_unit_options(options));
   fx::SpirvCache cache(args.cache_dir);
   fx::ShaderCompiler compiler({}, &cache);
   fx::EffectPrograms programs(units, compiler, sm);

@@ -2,6 +2,7 @@
 // front end and the compiler on their own, without a device.
 #include "example_fixture.h"
 #include "fx/compile/compile_workers.h"
+#include "fx/compile/effect_file.h"
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/effect_units.h"
 #include "fx/compile/program_link.h"
@@ -34,13 +35,12 @@ TEST_F(ExampleTest, EffectCompilation) {
   fx::SourceManager sm;
   fx::DiagnosticSink diags;
   fx::FrontEndOptions options;
-  std::vector<fx::ShaderDefine> app_defines;
   size_t used = 0, reported = 0;
   auto use = [&](const std::vector<fx::StageProgram>& stages, const fx::ProgramLayout&) { used = stages.size(); };
   auto report = [&](const std::string&) { ++reported; };
 
   fx::ParsedEffect parsed = fx::parse_effect_file("effects/wood.fx", sm, diags, options);
-  fx::EffectUnits units(parsed.ast, sm, diags, {.defines = app_defines});
+  fx::EffectUnits units(parsed.ast, sm, diags, fx::effect_unit_options(options));
   fx::SpirvCache cache(".fxkit-cache");                 // memory + optional directory
   fx::ShaderCompiler compiler({}, &cache);
   fx::EffectPrograms programs(units, compiler, sm);

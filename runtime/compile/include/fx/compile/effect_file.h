@@ -17,10 +17,10 @@
 
 namespace fx {
 
-// The translation-unit options of an effect compiled with `options`: its preprocessor
-// defines, which every shader unit sees again.
-// The macro FXKIT_PS1X_PRECISION among its defines turns on ps1x_precision (what `fxkit
-// render --ps1x-precision` defines), so reloads and tools see the same option.
+// The translation-unit options of an effect compiled with `options`. Its preprocessor
+// defines are not among them: the front end expanded them, and glslang gets preprocessed
+// text only. The macro FXKIT_PS1X_PRECISION among them turns on ps1x_precision (what
+// `fxkit render --ps1x-precision` defines), so reloads and tools see the same option.
 EffectUnitOptions effect_unit_options(const FrontEndOptions& options);
 inline constexpr const char* kPs1xPrecisionMacro = "FXKIT_PS1X_PRECISION";
 

@@ -71,10 +71,6 @@ struct EffectPass {
 
 // Options for building units.
 struct EffectUnitOptions {
-  // App defines. The preprocessor already expanded them in the effect's tokens; they are
-  // also given to glslang so code that tests them after the effect preprocessor (GLSL
-  // blocks with their own #if) sees them too.
-  std::vector<ShaderDefine> defines;
   // Models ps.1.x register range and precision in translated assembly pixel shaders
   // (AssemblyOptions::hardware_precision) for every technique; a technique or pass turns it
   // on for itself with the annotation `bool Ps1xPrecision = true;`.
@@ -140,6 +136,12 @@ class EffectUnits {
     bool always = false;             // a #pragma: in every unit
     bool stage_only = false;         // has a stream or patch parameter (geometry, hull, domain)
     std::string dynamic_linkage;     // the interface (instance) it uses, "" for none
+    // A function: where in hlsl_ its body starts, for the initializations of the statics an
+    // entry point reaches (0: none, the effect lowers no static).
+    size_t prologue = 0;
+    // A static global whose initializer calls a function: its initialization, run at the
+    // start of each entry point that reaches it (effect_unit_initializers.cpp).
+    std::string initialization;
   };
   std::vector<DeclText> decls_;
   // Indices into decls_ by declared name (every overload), so reach costs what it visits
@@ -153,7 +155,11 @@ class EffectUnits {
   // The declarations the roots reach, with the #pragma lines: indices into decls_, in source
   // order. Costs what it reaches, not the effect's size.
   std::vector<uint32_t> reached_from(const std::vector<std::string_view>& roots) const;
-  std::string code_for(const std::vector<uint32_t>& reached) const;
+  // The text of the reached declarations; the functions named `entry` start with the
+  // initializations of the lowered statics they reach, declared before them.
+  std::string code_for(const std::vector<uint32_t>& reached, std::string_view entry = {}) const;
+  // The initializations of the lowered statics among `reached` declared before `before`.
+  std::string initializations(const std::vector<uint32_t>& reached, uint32_t before) const;
   std::optional<StageUnit> check_;  // uncalled_check()
   std::vector<std::string> uncalled_;  // the functions it checks
   bool pre_release_ = false;
