@@ -178,7 +178,7 @@ std::optional<CompiledShader> decode_reply(std::string_view payload) {
   s.ok = flags & 1u;
   s.legalized = flags & 2u;
   s.spirv.resize(words.size() / sizeof(uint32_t));
-  std::memcpy(s.spirv.data(), words.data(), words.size());
+  if (!words.empty()) std::memcpy(s.spirv.data(), words.data(), words.size());  // a failed compile has none
   return s;
 }
 
