@@ -166,16 +166,19 @@ bool CompileWorkers::spawn(Process& p, std::string& error) {
   return true;
 }
 
-void CompileWorkers::retire(Process& p) {
+int CompileWorkers::retire(Process& p) {
+  int status = 0;
   if (p.fd >= 0) ::close(p.fd);
   if (p.pid > 0) {
-    ::kill(p.pid, SIGKILL);  // it holds nothing worth a clean exit, and must not keep us waiting
-    int status = 0;
+    // It holds nothing worth a clean exit, and must not keep us waiting. A worker that has
+    // already died keeps the status it died with: a signal to it changes nothing.
+    ::kill(p.pid, SIGKILL);
     while (::waitpid(p.pid, &status, 0) < 0 && errno == EINTR) {
     }
   }
   p.fd = -1;
   p.pid = -1;
+  return status;
 }
 
 size_t CompileWorkers::acquire() {
@@ -216,14 +219,7 @@ CompiledShader CompileWorkers::compile(const TranslationUnit& unit, const Compil
     return std::move(*shader);
   }
   // The worker died, hung or answered nonsense: it is not trusted with another unit.
-  if (timed_out || reply) ::kill(p.pid, SIGKILL);
-  int status = 0;
-  pid_t pid = p.pid;
-  ::close(p.fd);
-  p.fd = -1;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  p.pid = -1;
+  const int status = retire(p);
   char limit[32];
   std::snprintf(limit, sizeof limit, "%.1f", options_.time_limit_ms / 1000.0);
   std::string what = timed_out ? "did not finish within " + std::string(limit) + " s (it was stopped)"

@@ -66,7 +66,7 @@ class CompileWorkers {
   struct Process;
   CompileWorkers(std::string executable, const CompileWorkerOptions& options);
   bool spawn(Process& p, std::string& error);
-  void retire(Process& p);
+  int retire(Process& p);  // stops and reaps it; its wait status
   size_t acquire();
   void release(size_t slot);
 
