@@ -68,7 +68,7 @@ BrdfPixel BrdfVS(BrdfVertex IN)
 }
 
 // Parabolic-map coordinates of an upper-hemisphere direction (parabolic_coords in
-// lib/fx/shading/brdf_factorization.h); below the horizon the map's rim is reused.
+// lib/shading/fx/shading/brdf_factorization.h); below the horizon the map's rim is reused.
 float2 parabolic(float3 w)
 {
     float3 d = normalize_or(w, float3(0.0, 0.0, 1.0));

@@ -1,5 +1,5 @@
 // Shared HLSL for the seed effects: standard transforms (SAS semantics) and the guarded
-// operations of lib/fx/shading/guarded.h, written in the same operation order so the CPU
+// operations of lib/shading/fx/shading/guarded.h, written in the same operation order so the CPU
 // mirrors there predict these shaders' results. Include once per effect.
 #ifndef FXKIT_EFFECTS_COMMON_FXH
 #define FXKIT_EFFECTS_COMMON_FXH

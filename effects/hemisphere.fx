@@ -5,7 +5,7 @@
 // Sky fraction forms (q = angle between N and the sky axis):
 //   cosine:  a = 0.5 + 0.5 cos q. The seed calls it a simplification; it is the EXACT
 //            cosine-weighted integral of the sky hemisphere (verified by quadrature in
-//            lib/fx/shading/hemisphere.h, 4.3e-5 off at 600x1200 cells).
+//            lib/shading/fx/shading/hemisphere.h, 4.3e-5 off at 600x1200 cells).
 //   seed:    a = 1 - 0.5 sin q (q < 90), 0.5 sin q (q > 90), the seed's "actual integral".
 //            A different model: up to (sqrt 2 - 1)/2 = 0.207 away at 45 and 135 degrees.
 //            Kept as the "measurement" technique for comparison.
@@ -54,7 +54,7 @@ struct HemiPixel
 #define FORM_COSINE 0
 #define FORM_SEED 1
 
-// Sky fraction from cos q: mirrors hemisphere_sky_fraction / _seed in lib/fx/shading.
+// Sky fraction from cos q: mirrors hemisphere_sky_fraction / _seed in lib/shading/fx/shading.
 float sky_fraction(float cos_q, uniform int form)
 {
     float c = clamp(cos_q, -1.0, 1.0);

@@ -3,7 +3,7 @@
 #include <vulkan/vulkan.h>
 
 #include "api_state.h"
-#include "fx/vulkan/context_caps.h"
+#include "fx/binding/context_caps.h"
 #include "fx/vulkan/one_shot.h"
 
 namespace fxkit {

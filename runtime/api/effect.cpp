@@ -7,9 +7,9 @@
 #include "fx/reload/reload_transaction.h"
 #include "fx/select/caps_sources.h"
 #include "fx/select/selection.h"
-#include "fx/vulkan/effect_scene.h"
-#include "fx/vulkan/effect_textures.h"
-#include "fx/vulkan/preview_defaults.h"
+#include "fx/binding/effect_scene.h"
+#include "fx/binding/effect_textures.h"
+#include "fx/binding/preview_defaults.h"
 #include "api_state.h"
 
 namespace fxkit {

@@ -3,7 +3,7 @@
 
 #include "fx/mesh.h"
 #include "fx/vulkan/buffer.h"
-#include "fx/vulkan/vertex_layout.h"
+#include "fx/binding/vertex_layout.h"
 #include "api_state.h"
 
 namespace fxkit {

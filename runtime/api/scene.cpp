@@ -1,7 +1,7 @@
 // fxkit::Scene::framing: the preview camera of fx::vk::frame_bounds, in public form.
 #include <algorithm>
 
-#include "fx/vulkan/effect_scene.h"
+#include "fx/binding/effect_scene.h"
 #include "fxkit/effect.h"
 
 namespace fxkit {

@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "fx/reload/reload_transaction.h"
-#include "fx/vulkan/effect_preview.h"
+#include "fx/binding/effect_preview.h"
 
 namespace fx::vk {
 

@@ -7,7 +7,7 @@
 #include "fx/compile/effect_units.h"
 #include "fx/compile/shader_compiler.h"
 #include "fx/select/caps_requirement.h"
-#include "fx/select/shader_capabilities.h"
+#include "fx/vulkan/shader_capabilities.h"
 
 namespace fx::detail {
 namespace {

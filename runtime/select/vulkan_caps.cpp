@@ -153,7 +153,7 @@ DeviceCaps derive_caps(VulkanFacts facts) {
   caps.generation = CapsGeneration::vulkan;
   std::sort(facts.features.begin(), facts.features.end());
   // What glslang's HLSL front end compiles, and shader model 1 assembly, which the legacy
-  // layer translates to HLSL (fx/legacy/assembly.h).
+  // layer translates to HLSL (fx/emulation/assembly.h).
   for (const char* p : {"vs_1_0", "vs_1_1", "ps_1_0", "ps_1_1", "ps_1_2", "ps_1_3", "ps_1_4", "vs_2_0", "ps_2_0", "vs_3_0", "ps_3_0", "vs_4_0", "ps_4_0", "vs_4_1",
                         "ps_4_1", "vs_5_0", "ps_5_0", "cs_5_0"})
     caps.shader_profiles.push_back(p);

@@ -1,7 +1,7 @@
 // Layout -> (stage, access) mapping and barrier recording.
 #include "fx/vulkan/barrier.h"
 
-#include "vk_check.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 

@@ -4,7 +4,7 @@
 #include <cstring>
 #include <utility>
 
-#include "vk_check.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 

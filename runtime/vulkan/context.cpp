@@ -7,7 +7,7 @@
 
 #include "device_query.h"
 #include "validation_log.h"
-#include "vk_check.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 namespace {

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "fx/select/shader_capabilities.h"
+#include "fx/vulkan/shader_capabilities.h"
 
 namespace fx::vk {
 namespace {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "fx/vulkan/context.h"
-#include "vk_check.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 

@@ -5,7 +5,7 @@
 #include <bit>
 #include <cstring>
 
-#include "vk_check.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 

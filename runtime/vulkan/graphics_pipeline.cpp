@@ -5,7 +5,7 @@
 #include <cstring>
 #include <string>
 
-#include "vk_check.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 

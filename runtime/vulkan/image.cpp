@@ -6,7 +6,7 @@
 
 #include "fx/vulkan/barrier.h"
 #include "fx/vulkan/memory.h"
-#include "vk_check.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 

@@ -1,7 +1,7 @@
 // Memory type choice per usage, with fallbacks for devices that lack the ideal type.
 #include "fx/vulkan/memory.h"
 
-#include "vk_check.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 

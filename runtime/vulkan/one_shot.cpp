@@ -3,7 +3,7 @@
 
 #include <utility>
 
-#include "vk_check.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 

@@ -8,7 +8,7 @@
 
 #include "fx/vulkan/barrier.h"
 #include "fx/vulkan/one_shot.h"
-#include "vk_check.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 namespace {

@@ -1,7 +1,7 @@
 // RenderingFormats -> VkPipelineRenderingCreateInfo.
 #include "fx/vulkan/rendering_formats.h"
 
-#include "vk_check.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 

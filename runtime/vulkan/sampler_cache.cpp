@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-#include "vk_check.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 

@@ -1,7 +1,7 @@
 // Recording validation messages: counted always, stored up to a bound.
 #include "validation_log.h"
 
-#include "vk_check.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 

@@ -26,7 +26,7 @@ std::map<std::string, std::string> reported_ids() {
   static const std::regex reported(
       R"re(\b(?:error|warning|note|report|to_message)\(\s*(?:(?:fx::)?Severity::\w+\s*,\s*|[^,()]*\?[^,()]*:\s*[^,()]*,\s*)?"([a-z0-9]+(?:-[a-z0-9]+)+)")re");
   std::map<std::string, std::string> out;
-  for (const char* root : {"lib", "parser", "runtime", "samples", "bench"})
+  for (const char* root : {"lib", "parser", "runtime", "tools", "samples", "bench"})
     for (const fs::directory_entry& e : fs::recursive_directory_iterator(fs::path(FXKIT_SOURCE_DIR) / root)) {
       const std::string ext = e.path().extension().string();
       if (!e.is_regular_file() || (ext != ".cpp" && ext != ".h")) continue;

@@ -10,7 +10,7 @@
 #include "fx/reload/file_watcher.h"
 #include "fx/select/caps_sources.h"
 #include "fx/select/selection.h"
-#include "fx/vulkan/effect_preview.h"
+#include "fx/binding/effect_preview.h"
 #include "fx/reload/vulkan_reload_backend.h"
 
 namespace fx::docs {

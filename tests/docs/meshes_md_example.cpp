@@ -1,7 +1,7 @@
 // docs/meshes.md: a built-in mesh, its vertex layout by semantic, in Vulkan terms, bounds.
 #include "example_fixture.h"
 #include "fx/mesh.h"
-#include "fx/vulkan/vertex_layout.h"
+#include "fx/binding/vertex_layout.h"
 
 namespace fx::docs {
 namespace {

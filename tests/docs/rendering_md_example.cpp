@@ -2,7 +2,7 @@
 // command buffer (here a RenderTarget's, with a quad as "my mesh").
 #include "example_fixture.h"
 #include "fx/mesh.h"
-#include "fx/vulkan/effect_binding.h"
+#include "fx/binding/effect_binding.h"
 #include "fx/compile/effect_file.h"
 #include "fx/vulkan/one_shot.h"
 #include "fx/vulkan/render_target.h"

@@ -4,7 +4,7 @@
 #include <functional>
 
 #include "fx/compile/program_link.h"
-#include "fx/vulkan/pass_recorder.h"
+#include "fx/binding/pass_recorder.h"
 #include "fx/vulkan/sampler_cache.h"
 #include "fx/vulkan/texture.h"
 

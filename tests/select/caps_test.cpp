@@ -176,7 +176,7 @@ TEST_F(LiveDevice, CapsMatchWhatVulkanGuarantees) {
     EXPECT_TRUE(caps.vulkan.present);
     EXPECT_EQ(caps.generation, fx::CapsGeneration::vulkan);
     EXPECT_TRUE(fx::supports(caps, "vs_2_0") && fx::supports(caps, "ps_5_0"));
-    // Emulated: assembly translated to HLSL, texture stages generated (fx/legacy).
+    // Emulated: assembly translated to HLSL, texture stages generated (fx/emulation).
     EXPECT_TRUE(fx::supports(caps, "ps_1_1"));
     EXPECT_TRUE(caps.features.fixed_function_stages);
     // Vulkan 1.0 minimum limits.

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "fx/state_table.h"
-#include "fx/vulkan/pass_state_mapping.h"
+#include "fx/binding/pass_state_mapping.h"
 #include "model_test_util.h"
 
 namespace fx {

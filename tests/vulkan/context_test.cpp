@@ -7,8 +7,8 @@
 #include <cstring>
 
 #include "fx/select/caps_sources.h"
-#include "fx/select/shader_capabilities.h"
-#include "fx/vulkan/context_caps.h"
+#include "fx/vulkan/shader_capabilities.h"
+#include "fx/binding/context_caps.h"
 #include "fx/vulkan/one_shot.h"
 #include "vulkan_fixture.h"
 

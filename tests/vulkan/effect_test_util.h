@@ -10,7 +10,7 @@
 #include <string>
 
 #include "fx/compile/effect_file.h"
-#include "fx/vulkan/effect_preview.h"
+#include "fx/binding/effect_preview.h"
 #include "vulkan_fixture.h"
 
 namespace fx::vk::testing {

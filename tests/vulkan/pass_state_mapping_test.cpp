@@ -1,7 +1,7 @@
 // Mapping the effect model's pass state summary and samplers into Vulkan state.
 #include <gtest/gtest.h>
 
-#include "fx/vulkan/pass_state_mapping.h"
+#include "fx/binding/pass_state_mapping.h"
 
 namespace fx::vk {
 namespace {

@@ -14,7 +14,7 @@
 #include "fx/vulkan/barrier.h"
 #include "fx/vulkan/buffer.h"
 #include "fx/vulkan/one_shot.h"
-#include "fx/vulkan/pass_recorder.h"
+#include "fx/binding/pass_recorder.h"
 #include "fx/vulkan/render_target.h"
 #include "fx/vulkan/sampler_cache.h"
 #include "vulkan_fixture.h"

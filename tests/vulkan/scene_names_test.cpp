@@ -2,7 +2,7 @@
 // what fxkit render binds in effects written for other tools.
 #include <gtest/gtest.h>
 
-#include "fx/vulkan/effect_scene.h"
+#include "fx/binding/effect_scene.h"
 
 namespace fx::vk {
 namespace {

@@ -15,7 +15,7 @@
 #include "asm_interpreter.h"
 #include "fx/bench/technique_accuracy.h"
 #include "fx/compile/effect_file.h"
-#include "fx/legacy/assembly_program.h"
+#include "fx/emulation/assembly_program.h"
 #include "vulkan_fixture.h"
 
 namespace fx::vk {
@@ -145,9 +145,9 @@ TEST_F(TechniqueAccuracyTest, ThePrecisionModelRowOfTheSquaringListingShowsItsBa
   ASSERT_NE(t, kNoIndex);
   const ShaderBinding* ps = effect->model->techniques[t].passes[0].shader(PassStage::pixel);
   ASSERT_TRUE(ps);
-  auto program = legacy::parse_assembly(*effect->model->ast, ps->asm_code, ps->decl_code, sink);
+  auto program = emulation::parse_assembly(*effect->model->ast, ps->asm_code, ps->decl_code, sink);
   ASSERT_TRUE(program) << describe(sink);
-  using legacy::testing::Vec4;
+  using emulation::testing::Vec4;
   auto biased = [](double x, double y, double z) { return Vec4{0.5 * x + 0.5, 0.5 * y + 0.5, 0.5 * z + 0.5, 1.0}; };
   auto direction = [](double theta, double phi) {
     return std::array<double, 3>{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
@@ -165,7 +165,7 @@ TEST_F(TechniqueAccuracyTest, ThePrecisionModelRowOfTheSquaringListingShowsItsBa
             const auto h = direction(ht, hp);
             Vec4 out[2];
             for (int precise = 0; precise < 2; ++precise) {
-              legacy::testing::AsmMachine m;
+              emulation::testing::AsmMachine m;
               m.hardware_precision = precise == 1;
               m.v[1] = biased(h[0], h[1], h[2]);
               m.sample = [&](uint32_t stage, const Vec4&) { return stage == 0 ? colour : biased(n[0], n[1], n[2]); };

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "fx/mesh.h"
-#include "fx/vulkan/vertex_layout.h"
+#include "fx/binding/vertex_layout.h"
 
 namespace fx::vk {
 namespace {

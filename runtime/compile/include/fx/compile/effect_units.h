@@ -38,8 +38,8 @@ struct StageUnit {
   std::vector<std::string> arguments;   // compile-time arguments, spelled as HLSL
   std::string entry_point;              // the unit's entry: "PS", "PS__fx_args" or "main"
   std::string unsupported;              // why no unit is built (invalid)
-  // Assembly and fixed-function stages: the generated HLSL (fx/legacy/assembly.h,
-  // fx/legacy/fixed_function.h) and what emulates it ("ps.1.1 assembly translated to
+  // Assembly and fixed-function stages: the generated HLSL (fx/emulation/assembly.h,
+  // fx/emulation/fixed_function.h) and what emulates it ("ps.1.1 assembly translated to
   // HLSL"); `profile` is the assembly's ("ps_1_1"), "fixed_function" for generated stages.
   std::string translated;
   std::string emulation;

@@ -17,7 +17,7 @@
 #include <span>
 
 #include "fx/reload/effect_backend.h"
-#include "fx/vulkan/effect_binding.h"
+#include "fx/binding/effect_binding.h"
 
 namespace fx::vk {
 

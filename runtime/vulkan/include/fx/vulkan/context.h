@@ -86,7 +86,7 @@ struct DeviceFeatures {
   // Vulkan 1.3 maintenance4: among others, a vertex output the next stage does not read is
   // well defined (Direct3D links stages by semantic), so the layer does not warn about it.
   bool maintenance4 = false;
-  // The core features SPIR-V capabilities need (fx/select/shader_capabilities.h: clip and
+  // The core features SPIR-V capabilities need (fx/vulkan/shader_capabilities.h: clip and
   // cull distances, 64-bit floats, sample-rate shading, ...) that are enabled, named as
   // VkPhysicalDeviceFeatures names them; sorted.
   std::vector<std::string> shader_features;

@@ -1,0 +1,522 @@
+// EffectBinding: effect passes -> programs, pipeline states, descriptors and uniforms.
+#include "fx/binding/effect_binding.h"
+
+#include "fx/emulation/stage_texture.h"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <optional>
+#include <set>
+
+namespace fx::vk {
+
+std::atomic<int64_t> EffectBinding::live_objects_{0};
+
+// One image, sampler or combined image-sampler descriptor of a pass and what feeds it.
+struct ImageSlot {
+  std::string name;
+  DescriptorKind kind = DescriptorKind::combined_image_sampler;
+  VkSampler sampler = VK_NULL_HANDLE;
+  uint32_t texture_param = kNoIndex;                // the texture parameter it samples
+  std::shared_ptr<const EffectTextureData> data;    // the effect's own texture
+};
+
+// A uniform block of a pass, packed by the parameter store (block id `id`) straight into
+// the frame's uniform ring: rewritten when a parameter in it changed or the ring slice
+// holding its last copy was recycled.
+struct BlockSlot {
+  uint32_t id = 0;
+  BlockHandle handle;  // of `id`, for the per-draw update without an id lookup
+  uint32_t size = 0;
+  uint64_t frame = UINT64_MAX;  // FrameResources::frame() of the last write (none yet)
+};
+
+struct EffectBinding::Pass {
+  // What apply() reads, once per object, first.
+  std::vector<BlockSlot> blocks;       // in the program's uniform_blocks() order
+  std::vector<uint32_t> ring_offsets;  // of each block's last write, parallel to `blocks`
+  std::unique_ptr<PassResources> resources;  // of `shader`: released before it (~Pass)
+  const PassProgram* program = nullptr;
+  ProgramLayout layout;  // the linked layout with same-named blocks told apart
+  ShaderProgram shader;
+  PipelineState state;
+  std::vector<ImageSlot> images;
+  std::vector<std::optional<VertexInput>> inputs;  // per vertex layout id
+  SourceRange vertex_shader;  // the state naming the vertex shader (where input errors point)
+  // Pipelines per vertex layout id for `pipeline_formats`: pipelines live as long as the
+  // binding, so apply() looks the key up once per layout and format change, not per call.
+  RenderingFormats pipeline_formats;
+  std::vector<VkPipeline> pipelines;
+
+  ~Pass() { resources.reset(); }  // declared first for apply(), it must not outlive the program
+};
+
+struct EffectBinding::Technique {
+  std::vector<std::unique_ptr<Pass>> passes;
+  std::string reason;
+};
+
+namespace {
+
+const EffectPass* find_pass(const EffectUnits& units, uint32_t technique, uint32_t pass) {
+  for (const EffectPass& p : units.passes())
+    if (p.technique_index == technique && p.pass_index == pass) return &p;
+  return nullptr;
+}
+
+// Block and image names must be unique for PassResources (it finds blocks by name), but an
+// HLSL vertex and pixel stage each have a "$Global" block of their own. Later duplicates
+// get "@binding" appended.
+void make_names_unique(ProgramLayout& layout) {
+  std::map<std::string, int> seen;
+  for (ProgramBinding& b : layout.bindings)
+    if (seen[b.name]++ > 0) b.name.append("@").append(std::to_string(b.binding));
+}
+
+// The parameter the reflected member path ("light.dir", "bones[3]") starts with.
+std::string_view root_name(std::string_view path) {
+  size_t end = path.find_first_of(".[");
+  return end == std::string_view::npos ? path : path.substr(0, end);
+}
+
+// The model sampler (and the texture it reads) behind a program image named `name`; a
+// generated shader's stage sampler (fx_stage<n>) reads the pass's texture stage n.
+void resolve_image(const EffectModel& model, const PassInfo& pass, std::string_view name,
+                   const fx::SamplerDesc** sampler, uint32_t* texture_param, fx::SamplerDesc& stage_sampler) {
+  *sampler = nullptr;
+  *texture_param = kNoIndex;
+  if (std::optional<uint32_t> stage = emulation::stage_of_sampler(name)) {
+    emulation::StageTexture t = emulation::stage_texture(pass, *stage);
+    stage_sampler = t.sampler;
+    *sampler = &stage_sampler;
+    *texture_param = t.texture;
+    return;
+  }
+  for (const SamplerInfo& s : model.samplers) {
+    if (s.name != name) continue;
+    *sampler = &s.desc;
+    *texture_param = s.texture;
+    return;
+  }
+  // GLSL combined samplers and D3D10 Texture2D objects are named after the texture.
+  uint32_t p = model.find_parameter(name);
+  if (p != kNoIndex && model.texture_of(p)) *texture_param = p;
+}
+
+bool stage_is_glsl(const PassProgram& program) {
+  if (!program.pass) return false;
+  for (const StageUnit& s : program.pass->stages)
+    if (s.kind == StageSourceKind::glsl) return true;
+  return false;
+}
+
+}  // namespace
+
+EffectBinding::EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures)
+    : params_(&params), textures_(&textures), samplers_(ctx), descriptor_sets_(ctx) {}
+
+EffectBinding::~EffectBinding() {
+  recorder_.reset();  // declared first for apply(), it must not outlive what it references
+  techniques_.clear();  // programs before the pipeline cache: nothing else depends on order
+  live_objects_ -= counted_objects_;
+}
+
+std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const EffectModel& model,
+                                                     EffectPrograms& programs, ParameterStore& params,
+                                                     EffectTextureCache& textures, FrameResources& frames,
+                                                     const EffectBindingDesc& desc, DiagnosticSink& sink) {
+  std::unique_ptr<EffectBinding> b(new EffectBinding(ctx, params, textures));
+  b->model_ = &model;
+  b->pipelines_ = PipelineCache::create(ctx, sink);
+  if (!b->pipelines_) return nullptr;
+  b->frames_ = &frames;
+  b->recorder_.emplace(ctx, *b->pipelines_, frames,
+                       desc.dynamic.value_or(DynamicStateSet::from_features(ctx.features())));
+  // Block ids are unique in the process, so two bindings of one ParameterStore (say a
+  // dynamic-state and a static one) never overwrite each other's block layouts.
+  static std::atomic<uint32_t> next_block_id{0};
+  std::vector<uint32_t> resolved;  // texture parameters already resolved (report once)
+  std::set<std::string> told;      // images whose array / depth stand-in warning was given (once)
+  for (uint32_t t = 0; t < model.techniques.size(); ++t) {
+    const TechniqueInfo& info = model.techniques[t];
+    auto tech = std::make_unique<Technique>();
+    for (uint32_t p = 0; p < info.passes.size() && tech->reason.empty(); ++p) {
+      const PassInfo& pass_info = info.passes[p];
+      const EffectPass* unit = find_pass(programs.units(), t, p);
+      if (!unit) {
+        tech->reason = "pass '" + pass_info.name + "' has no shader units";
+        break;
+      }
+      const PassProgram& program = programs.program(*unit);
+      if (!program.ok()) {
+        tech->reason = "pass '" + pass_info.name + "': " +
+                       (program.unsupported.empty() ? std::string("its shaders did not compile")
+                                                    : program.unsupported.front());
+        break;
+      }
+      // Fixed-function states are generated stages' input (fx/emulation/fixed_function.h) or,
+      // beside shaders, ignored as D3D9 ignores them: only other states stop the pass.
+      auto blocking = std::find_if(pass_info.unsupported.begin(), pass_info.unsupported.end(), [](const UnsupportedState& u) {
+        return !u.info || u.info->lands != StateLanding::fixed_function;
+      });
+      if (blocking != pass_info.unsupported.end()) {
+        tech->reason = "pass '" + pass_info.name + "': " + blocking->reason;
+        break;
+      }
+      const StageUnit* pixel = unit->find(ShaderStage::fragment);
+      const bool generated_pixel = pixel && pixel->kind == StageSourceKind::fixed_function;  // emulates alpha test
+      if (!generated_pixel && pass_info.summary.alpha_test && pass_info.summary.alpha_compare != CompareOp::always) {
+        // Emulation needs a discard spliced into the pixel shader's translation unit.
+        tech->reason = "pass '" + pass_info.name + "': alpha test (AlphaTestEnable) is not emulated yet";
+        break;
+      }
+      DiagnosticSink pass_sink;
+      auto state = to_pipeline_state(pass_info.summary, desc.target, ctx.features(), pass_sink);
+      if (!state) {
+        tech->reason = "pass '" + pass_info.name + "': " +
+                       (pass_sink.diagnostics().empty() ? std::string("state") : pass_sink.diagnostics().front().message);
+        break;
+      }
+      auto pass = std::make_unique<Pass>();
+      pass->program = &program;
+      if (const StageUnit* vs = unit->find(ShaderStage::vertex)) pass->vertex_shader = vs->range;
+      pass->state = *state;
+      pass->layout = program.layout;
+      make_names_unique(pass->layout);
+      std::vector<const CompiledShader*> stages;
+      for (const StageProgram& s : program.stages) stages.push_back(&s.shader);
+      auto shader = ShaderProgram::create(ctx, stages, pass->layout, desc.descriptors, pass_sink);
+      if (!shader) {
+        tech->reason = "pass '" + pass_info.name + "': " +
+                       (pass_sink.diagnostics().empty() ? std::string("program") : pass_sink.diagnostics().front().message);
+        break;
+      }
+      pass->shader = std::move(*shader);
+      // A tessellating pass draws patches of the hull shader's input size.
+      const uint32_t points = pass->shader.patch_control_points();
+      if (points && desc.patch_control_points && points != desc.patch_control_points) {
+        tech->reason = "pass '" + pass_info.name + "': its hull shader takes patches of " + std::to_string(points) +
+                       " control points; the geometry comes in patches of " +
+                       std::to_string(desc.patch_control_points) +
+                       (desc.patch_control_points == 3 ? " (triangle lists)" : "");
+        break;
+      }
+      pass->state = with_patches(pass->state, points);
+      pass->resources = std::make_unique<PassResources>(pass->shader);
+      pass->resources->keep_sets_in(b->descriptor_sets_);
+      // Uniform blocks: the store packs each under an id of its own.
+      const bool glsl = stage_is_glsl(program);
+      const auto& program_blocks = pass->shader.uniform_blocks();
+      for (uint32_t index = 0; index < program_blocks.size(); ++index) {
+        const ProgramUniformBlock& block = program_blocks[index];
+        BlockSlot slot{next_block_id++, {}, block.size, 0};
+        std::vector<BlockMemberLayout> members;
+        if (block.reflection)
+          for (const BlockMember& m : block.reflection->members) {
+            BlockMemberLayout l{m.name, m.offset, m.size, m.array_stride,
+                                m.matrix_stride ? m.matrix_stride : 16u, MatrixOrder::column_major};
+            // An HLSL matrix keeps its declared meaning; a GLSL mat4 M * v stores HLSL's
+            // mul(v, M) transposed (column c of the GLSL matrix is row c of M).
+            Param root = params.find(root_name(m.name));
+            const Type* type = root.valid() ? params.type(root) : nullptr;
+            if (glsl) l.order = MatrixOrder::row_major;
+            else if (type) l.order = type->order;
+            members.push_back(std::move(l));
+          }
+        ParamStatus status = params.bind_layout(slot.id, members, block.size);
+        if (!status.message.empty())
+          sink.warning("vk-uniform-unbound", pass_info.range,
+                       "pass '" + pass_info.name + "', block '" + block.name + "': " + status.message);
+        slot.handle = params.block(slot.id);
+        pass->blocks.push_back(slot);
+      }
+      pass->ring_offsets.resize(pass->blocks.size(), 0);
+      // Images and samplers: sampler states -> cached samplers, textures resolved (baked,
+      // decoded) now, uploaded at the first begin().
+      for (const ProgramImage& image : pass->shader.images()) {
+        ImageSlot slot;
+        slot.name = image.name;
+        slot.kind = image.kind;
+        const fx::SamplerDesc* sampler_desc = nullptr;
+        fx::SamplerDesc stage_sampler;
+        resolve_image(model, pass_info, image.name, &sampler_desc, &slot.texture_param, stage_sampler);
+        const bool first_mention = told.insert(image.name).second;
+        if (image.count > 1 && first_mention)
+          sink.warning("vk-image-array-first", pass_info.range,
+                       "pass '" + pass_info.name + "': '" + image.name + "' is an array of " +
+                           std::to_string(image.count) + "; every element samples its first element's texture and sampler state");
+        if (image.kind != DescriptorKind::sampled_image) {
+          SamplerKey vk_desc = sampler_desc ? to_sampler_key(*sampler_desc, pass_sink) : SamplerKey{};
+          // A shader that compares (SampleCmp, a shadow sampler) needs a comparing sampler, as
+          // D3D requires a SamplerComparisonState; one declared without ComparisonFunc compares
+          // with LessEqual.
+          if (image.shadow) vk_desc.compare_enable = 1;
+          slot.sampler = b->samplers_.get(vk_desc, sink);
+          if (!slot.sampler) return nullptr;
+        }
+        if (image.kind != DescriptorKind::sampler && image.shadow) {
+          // Vulkan compares only against depth formats: whatever the effect names (a colour
+          // file, nothing), a depth stand-in is bound until set_texture() gives a depth view.
+          if (first_mention)
+            sink.warning("vk-texture-depth-stand-in", pass_info.range,
+                         "pass '" + pass_info.name + "': '" + image.name +
+                             "' is sampled with depth comparison, which needs a depth texture; a depth of 1.0 "
+                             "(nothing in shadow) stands in" +
+                             (slot.texture_param != kNoIndex ? " until set_texture() binds a depth view" : ""));
+          slot.data = textures.depth_stand_in(image.dim, image.arrayed);
+        } else if (image.kind != DescriptorKind::sampler && image.multisampled) {
+          // No file fills a multisampled image: a white one stands in until set_texture()
+          // binds the application's multisampled view.
+          slot.data = textures.multisampled_stand_in(image.arrayed);
+        } else if (image.kind != DescriptorKind::sampler) {
+          const TextureInfo* tex = slot.texture_param != kNoIndex ? model.texture_of(slot.texture_param) : nullptr;
+          if (!tex) {
+            sink.warning("vk-texture-unresolved", pass_info.range,
+                         "pass '" + pass_info.name + "': '" + image.name +
+                             "' names no texture parameter; a white texture stands in until set_texture()");
+            slot.data = textures.resolve(model, TextureInfo{}, desc.effect_dir, image.dim, image.arrayed, sink);
+          } else {
+            const bool first = std::find(resolved.begin(), resolved.end(), slot.texture_param) == resolved.end();
+            DiagnosticSink repeat;  // the same warning for every pass sampling the texture is noise
+            slot.data = textures.resolve(model, *tex, desc.effect_dir, image.dim, image.arrayed, first ? sink : repeat);
+            if (first) resolved.push_back(slot.texture_param);
+          }
+          if (!slot.data) {
+            tech->reason = "pass '" + pass_info.name + "': texture '" + image.name + "' could not be made";
+            break;
+          }
+        }
+        pass->images.push_back(std::move(slot));
+      }
+      tech->passes.push_back(std::move(pass));
+    }
+    if (!tech->reason.empty()) tech->passes.clear();
+    b->techniques_.push_back(std::move(tech));
+  }
+  b->update_object_count();
+  return b;
+}
+
+bool EffectBinding::technique_ok(uint32_t t) const {
+  return t < techniques_.size() && techniques_[t]->reason.empty() && !techniques_[t]->passes.empty();
+}
+
+const std::string& EffectBinding::technique_reason(uint32_t t) const {
+  static const std::string no_such = "no such technique", no_passes = "the technique has no passes";
+  if (t >= techniques_.size()) return no_such;
+  if (techniques_[t]->reason.empty() && techniques_[t]->passes.empty()) return no_passes;
+  return techniques_[t]->reason;
+}
+
+uint32_t EffectBinding::pass_count(uint32_t t) const {
+  return t < techniques_.size() ? uint32_t(techniques_[t]->passes.size()) : 0;
+}
+
+uint32_t EffectBinding::first_ok_technique() const {
+  for (uint32_t t = 0; t < techniques_.size(); ++t)
+    if (technique_ok(t)) return t;
+  return kNoIndex;
+}
+
+uint32_t EffectBinding::add_vertex_layout(VertexLayout layout) {
+  layouts_.push_back(std::move(layout));
+  return uint32_t(layouts_.size() - 1);
+}
+
+bool EffectBinding::set_texture(std::string_view texture, VkImageView view, VkImageLayout layout,
+                                ImageKind kind, DiagnosticSink& sink) {
+  uint32_t p = model_->find_parameter(texture);
+  if (p == kNoIndex || !model_->texture_of(p)) {
+    sink.error("vk-resource-unknown", {}, "the effect has no texture parameter '" + std::string(texture) + "'");
+    return false;
+  }
+  auto it = std::find_if(app_textures_.begin(), app_textures_.end(), [&](const auto& e) { return e.first == p; });
+  if (it != app_textures_.end()) it->second = Texture::wrap(view, layout, kind);
+  else app_textures_.emplace_back(p, Texture::wrap(view, layout, kind));
+  textures_pending_ = true;
+  return true;
+}
+
+bool EffectBinding::bind_textures(DiagnosticSink& sink) {
+  for (auto& tech : techniques_)
+    for (auto& pass : tech->passes) {
+      pass->resources->rewrite_sets();  // set_texture's view may have another's handle
+      for (ImageSlot& slot : pass->images) {
+        if (slot.kind == DescriptorKind::sampler) {
+          if (!pass->resources->bind_sampler(slot.name, slot.sampler, sink)) return false;
+          continue;
+        }
+        const Texture* texture = nullptr;
+        for (const auto& [param, app] : app_textures_)
+          if (param == slot.texture_param) texture = &app;
+        if (!texture) texture = textures_->gpu(*slot.data, sink);
+        if (!texture || !pass->resources->bind(slot.name, *texture, slot.sampler, sink)) return false;
+      }
+    }
+  textures_pending_ = false;
+  return true;
+}
+
+const VertexInput* EffectBinding::vertex_input(Pass& pass, uint32_t layout, DiagnosticSink& sink) {
+  if (layout >= layouts_.size()) {
+    sink.error("vk-vertex-layout-unknown", {}, "vertex layout id " + std::to_string(layout) + " was not registered");
+    return nullptr;
+  }
+  if (pass.inputs.size() <= layout) pass.inputs.resize(layouts_.size());
+  if (!pass.inputs[layout]) {
+    // Located at the pass's VertexShader state, so the error reads as a line of the effect.
+    DiagnosticSink matched;
+    pass.inputs[layout] = match_vertex_layout(layouts_[layout], pass.shader.vertex_inputs(), matched);
+    for (const Diagnostic& d : matched.diagnostics())
+      sink.report(d.severity, d.id, d.range.begin.valid() ? d.range : pass.vertex_shader, d.message);
+  }
+  return pass.inputs[layout] ? &*pass.inputs[layout] : nullptr;
+}
+
+bool EffectBinding::warm(uint32_t technique, const RenderingFormats& formats, uint32_t vertex_layout,
+                         DiagnosticSink& sink) {
+  if (!technique_ok(technique)) {
+    sink.error("vk-technique-invalid", {}, technique_reason(technique));
+    return false;
+  }
+  bool ok = true;
+  for (auto& pass : techniques_[technique]->passes) {
+    const VertexInput* input = vertex_input(*pass, vertex_layout, sink);
+    ok = input && pipelines_->get(pass->shader, pass->state, *input, formats, recorder_->dynamic(), sink) && ok;
+  }
+  update_object_count();
+  return ok;
+}
+
+bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const RenderingFormats& formats,
+                          const VkViewport& viewport, const VkRect2D& scissor, DiagnosticSink& sink) {
+  active_ = nullptr;
+  if (!technique_ok(technique)) {
+    sink.error("vk-technique-invalid", {}, technique_reason(technique));
+    return false;
+  }
+  if (textures_pending_ && !bind_textures(sink)) return false;
+  active_ = techniques_[technique].get();
+  applied_ = nullptr;
+  formats_ = formats;
+  recorder_->begin(cmd, formats, viewport, scissor);
+  return true;
+}
+
+[[gnu::always_inline]] inline bool EffectBinding::apply_inline(uint32_t pass_index, uint32_t vertex_layout,
+                                                               DiagnosticSink& sink) {
+  if (!active_ || pass_index >= active_->passes.size()) [[unlikely]] return unknown_pass(pass_index, sink);
+  Pass& pass = *active_->passes[pass_index];
+  // Locals: the stores below (the ring, the blocks) may alias members as far as the
+  // compiler knows, and this runs once per object.
+  ParameterStore& params = *params_;
+  PassRecorder& recorder = *recorder_;
+  const uint64_t frame = frames_->frame();
+  bool moved = false;  // a block was written to a new ring offset
+  uint32_t* ring_offset = pass.ring_offsets.data();  // parallel to pass.blocks
+  for (BlockSlot& block : pass.blocks) {
+    bool changed;
+    const std::span<const uint8_t> bytes = params.update_block(block.handle, changed);
+    // Written in this frame's ring slice already (begin_frame() recycles the slice).
+    if (!changed && block.frame == frame) {
+      ++ring_offset;
+      continue;
+    }
+    // Captured by value: nothing of this loop has to live in memory across the copy.
+    const uint32_t size = block.size;
+    std::optional<uint32_t> offset = recorder.write_uniform(
+        size,
+        [from = bytes.data(), held = bytes.size(), size](uint8_t* ring) {
+          // A block bind_layout refused has no bytes: the shader reads zeros.
+          if (held == size) [[likely]] std::memcpy(ring, from, size);
+          else std::memset(ring, 0, size);
+        },
+        sink);
+    if (!offset) [[unlikely]] return false;
+    *ring_offset++ = *offset;
+    block.frame = frame;
+    moved = true;
+  }
+  // The same pass again (the next object of a group): only the uniform offsets can differ.
+  // The recorder's last apply() was this pass's (apply_pass sets applied_ only then) and
+  // its images are bound only in begin(), which clears applied_: reapply()'s own checks
+  // would repeat these.
+  if (&pass == applied_ && vertex_layout == applied_layout_ && recorder.rebind(pass.ring_offsets, moved)) [[likely]]
+    return true;
+  return apply_pass(pass, vertex_layout, sink);
+}
+
+bool EffectBinding::apply(uint32_t pass_index, uint32_t vertex_layout, DiagnosticSink& sink) {
+  return apply_inline(pass_index, vertex_layout, sink);
+}
+
+bool EffectBinding::apply_layout0(void* binding, uint32_t pass_index, void* sink) {
+  return static_cast<EffectBinding*>(binding)->apply_inline(pass_index, 0, *static_cast<DiagnosticSink*>(sink));
+}
+
+bool EffectBinding::unknown_pass(uint32_t pass_index, DiagnosticSink& sink) {
+  sink.error("vk-pass-unknown", {}, "apply() of pass " + std::to_string(pass_index) + " outside begin()/end() or past the last pass");
+  return false;
+}
+
+bool EffectBinding::apply_pass(Pass& pass, uint32_t vertex_layout, DiagnosticSink& sink) {
+  applied_ = nullptr;
+  const VertexInput* input = vertex_input(pass, vertex_layout, sink);
+  if (!input) return false;
+  if (!(pass.pipeline_formats == formats_)) {
+    pass.pipeline_formats = formats_;
+    std::fill(pass.pipelines.begin(), pass.pipelines.end(), VK_NULL_HANDLE);
+  }
+  if (pass.pipelines.size() <= vertex_layout) pass.pipelines.resize(layouts_.size(), VK_NULL_HANDLE);
+  VkPipeline& pipeline = pass.pipelines[vertex_layout];
+  if (!pipeline) {
+    pipeline = pipelines_->get(pass.shader, pass.state, *input, formats_, recorder_->dynamic(), sink);
+    if (!pipeline) return false;
+    update_object_count();
+  }
+  PassDesc desc{&pass.shader, pass.state, input, pass.resources.get(), pipeline, pass.ring_offsets};
+  const size_t pools = descriptor_sets_.pool_count();
+  if (!recorder_->apply(desc, sink)) return false;
+  if (descriptor_sets_.pool_count() != pools) update_object_count();  // the apply kept its first set
+  applied_ = &pass;
+  applied_layout_ = vertex_layout;
+  return true;
+}
+
+bool EffectBinding::pass_objects(uint32_t technique, uint32_t pass_index, const RenderingFormats& formats,
+                                 uint32_t vertex_layout, VkPipeline& pipeline, const ShaderProgram*& program,
+                                 DiagnosticSink& sink) {
+  if (!technique_ok(technique) || pass_index >= techniques_[technique]->passes.size()) {
+    sink.error("vk-pass-unknown", {}, "no drawable pass " + std::to_string(pass_index) + " in technique " + std::to_string(technique));
+    return false;
+  }
+  Pass& pass = *techniques_[technique]->passes[pass_index];
+  const VertexInput* input = vertex_input(pass, vertex_layout, sink);
+  if (!input) return false;
+  pipeline = pipelines_->get(pass.shader, pass.state, *input, formats, recorder_->dynamic(), sink);
+  program = &pass.shader;
+  update_object_count();
+  return pipeline != VK_NULL_HANDLE;
+}
+
+void EffectBinding::end() {
+  if (active_) recorder_->end();
+  active_ = nullptr;
+  applied_ = nullptr;
+}
+
+size_t EffectBinding::pipeline_count() const { return pipelines_->size(); }
+const PipelineCacheStats& EffectBinding::pipeline_stats() const { return pipelines_->stats(); }
+
+void EffectBinding::update_object_count() {
+  // + the VkPipelineCache and the descriptor pools of the kept sets
+  int64_t owned = 1 + int64_t(pipelines_->size()) + int64_t(samplers_.size()) + int64_t(descriptor_sets_.pool_count());
+  for (const auto& tech : techniques_)
+    for (const auto& pass : tech->passes)
+      owned += int64_t(pass->shader.stage_infos().size()) + 2;  // modules, set and pipeline layout
+  live_objects_ += owned - counted_objects_;
+  counted_objects_ = owned;
+}
+
+}  // namespace fx::vk

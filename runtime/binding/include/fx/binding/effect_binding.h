@@ -1,0 +1,157 @@
+// fx::vk::EffectBinding: one effect (model + compiled programs + parameter values) made
+// drawable in the application's command buffers. Per pass it holds the ShaderProgram, the
+// pipeline state mapped from the pass's states, its descriptors (samplers from the sampler
+// states, textures from generators, files or the app's image views) and uniform blocks fed
+// from the ParameterStore (only blocks whose parameters changed are re-packed, straight
+// into the frame's uniform ring). Usage (create, add_vertex_layout, then per frame
+// begin_frame, begin, apply per pass around the app's draw, end): docs/rendering.md.
+//
+// Threading: create() and warm() may run on any thread (a reload worker) while other
+// bindings render; begin/apply/end/set_texture belong to the render thread. Texture
+// uploads happen in begin() because they use the context's queue.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <atomic>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fx/compile/effect_programs.h"
+#include "fx/model/effect_model.h"
+#include "fx/model/parameter_store.h"
+#include "fx/binding/effect_textures.h"
+#include "fx/binding/pass_recorder.h"
+#include "fx/binding/pass_state_mapping.h"
+#include "fx/vulkan/sampler_cache.h"
+
+namespace fx::vk {
+
+// How an effect is bound.
+struct EffectBindingDesc {
+  DescriptorMode descriptors = DescriptorMode::sets;
+  // Pipeline path: DynamicStateSet::from_features(ctx.features()) or DynamicStateSet::none().
+  std::optional<DynamicStateSet> dynamic;  // unset: from the context's features
+  // Control points per patch of the geometry drawn with tessellating passes (hull + domain
+  // shaders): a triangle list, as every fxkit mesh is, is a patch list of 3. A technique
+  // whose hull shader takes another input patch size (InputPatch<T, N>) cannot run; 0
+  // accepts any size (the application draws patches of each pass's hull shader size).
+  uint32_t patch_control_points = 3;
+  // Render target facts the pass states are mapped for (attachment count, samples, depth
+  // bits, winding). See pass_state_mapping.h.
+  PassTargetInfo target;
+  // Folder that texture ResourceNames are relative to (the effect file's folder).
+  std::filesystem::path effect_dir;
+};
+
+class EffectBinding {
+ public:
+  // Builds every pass of every technique whose programs compiled. A technique that cannot
+  // run (assembly or fixed-function stages, compile errors, unsupported states, a missing
+  // device feature, alpha test) is kept with its reason. Null only when nothing at all could
+  // be set up (diagnostics say why). Everything referenced must outlive the binding.
+  static std::unique_ptr<EffectBinding> create(const Context& ctx, const EffectModel& model,
+                                               EffectPrograms& programs, ParameterStore& params,
+                                               EffectTextureCache& textures, FrameResources& frames,
+                                               const EffectBindingDesc& desc, DiagnosticSink& sink);
+  ~EffectBinding();
+  EffectBinding(const EffectBinding&) = delete;
+  EffectBinding& operator=(const EffectBinding&) = delete;
+
+  // Techniques, indexed as EffectModel::techniques.
+  uint32_t technique_count() const { return uint32_t(techniques_.size()); }
+  bool technique_ok(uint32_t technique) const;
+  // Why the technique cannot run ("" when it can).
+  const std::string& technique_reason(uint32_t technique) const;
+  uint32_t pass_count(uint32_t technique) const;
+  // The first technique that can run, or kNoIndex.
+  uint32_t first_ok_technique() const;
+
+  // Registers a layout of the application's vertex buffers; apply() takes the returned id.
+  // Shader inputs are matched to it per pass on first use ("vk-vertex-attribute-missing").
+  uint32_t add_vertex_layout(VertexLayout layout);
+
+  // Samples the application's image instead of the effect's own texture for the texture
+  // parameter `texture` (render thread; takes effect at the next begin()). False and
+  // "vk-resource-unknown" when the effect has no such texture parameter.
+  bool set_texture(std::string_view texture, VkImageView view, VkImageLayout layout, ImageKind kind,
+                   DiagnosticSink& sink);
+
+  // Creates the technique's pipelines for these formats and layout now (instead of at the
+  // first apply). False with diagnostics if one cannot be made.
+  bool warm(uint32_t technique, const RenderingFormats& formats, uint32_t vertex_layout, DiagnosticSink& sink);
+
+  // Starts applying `technique` into `cmd` (inside the app's dynamic rendering with
+  // attachments of `formats`); uploads textures not yet on the GPU. False (nothing is
+  // recorded by apply then) when the technique cannot run or an upload failed.
+  bool begin(VkCommandBuffer cmd, uint32_t technique, const RenderingFormats& formats,
+             const VkViewport& viewport, const VkRect2D& scissor, DiagnosticSink& sink);
+  // Binds pass `pass` of the begun technique for geometry of `vertex_layout`; the app draws
+  // after it returns true.
+  bool apply(uint32_t pass, uint32_t vertex_layout, DiagnosticSink& sink);
+  // apply() for vertex layout 0 as a plain function (fxkit::detail::PassApply): `binding` an
+  // EffectBinding, `sink` a DiagnosticSink.
+  static bool apply_layout0(void* binding, uint32_t pass, void* sink);
+  // Ends the technique; the next begin() assumes nothing is bound.
+  void end();
+
+  // The pipeline (created if needed) and program that pass `pass` of `technique` binds for
+  // these formats and vertex layout: for tools that record the same work by hand (fxkit
+  // bench apply). False with diagnostics when the pass cannot be drawn.
+  bool pass_objects(uint32_t technique, uint32_t pass, const RenderingFormats& formats, uint32_t vertex_layout,
+                    VkPipeline& pipeline, const ShaderProgram*& program, DiagnosticSink& sink);
+
+  const ApplyStats& stats() const { return recorder_->stats(); }
+  void reset_stats() { recorder_->reset_stats(); }
+  // Pipelines created and samplers held by this binding.
+  size_t pipeline_count() const;
+  size_t sampler_count() const { return samplers_.size(); }
+  const PipelineCacheStats& pipeline_stats() const;
+  const DynamicStateSet& dynamic() const { return recorder_->dynamic(); }
+
+  // Vulkan objects (shader modules, layouts, pipelines, samplers, pipeline caches, descriptor
+  // pools) that live bindings hold, summed over the process: returns to its baseline when
+  // every binding made after it is gone. Updated by create, warm, pass_objects, an apply()
+  // that creates a pipeline or a descriptor pool, and destruction.
+  static int64_t live_vulkan_objects() { return live_objects_.load(); }
+
+ private:
+  struct Pass;
+  struct Technique;
+  EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures);
+  bool bind_textures(DiagnosticSink& sink);
+  // apply()'s out-of-line parts, so the per-object path stays small: the error for a bad
+  // pass index, and a pass bound from scratch (pipeline, state, descriptors).
+  [[gnu::noinline]] static bool unknown_pass(uint32_t pass_index, DiagnosticSink& sink);
+  [[gnu::noinline]] bool apply_pass(Pass& pass, uint32_t vertex_layout, DiagnosticSink& sink);
+  // apply()'s body, inline in both apply() and apply_layout0().
+  bool apply_inline(uint32_t pass, uint32_t vertex_layout, DiagnosticSink& sink);
+  const VertexInput* vertex_input(Pass& pass, uint32_t layout, DiagnosticSink& sink);
+  void update_object_count();
+
+  // What apply() reads, once per object, first: with the recorder's own first fields, in
+  // as few cache lines as they fit. The recorder is released first (~EffectBinding).
+  ParameterStore* params_;
+  FrameResources* frames_ = nullptr;
+  Technique* active_ = nullptr;
+  const Pass* applied_ = nullptr;  // the pass the last apply() recorded, and its vertex layout
+  uint32_t applied_layout_ = 0;
+  std::optional<PassRecorder> recorder_;
+  const EffectModel* model_ = nullptr;
+  EffectTextureCache* textures_;
+  std::optional<PipelineCache> pipelines_;
+  SamplerCache samplers_;
+  DescriptorArena descriptor_sets_;  // the passes' sets, kept across frames
+  std::vector<std::unique_ptr<Technique>> techniques_;
+  std::vector<VertexLayout> layouts_;
+  std::vector<std::pair<uint32_t, Texture>> app_textures_;  // texture parameter -> app view
+  bool textures_pending_ = true;
+  RenderingFormats formats_;  // of the begun technique
+  int64_t counted_objects_ = 0;
+  static std::atomic<int64_t> live_objects_;
+};
+
+}  // namespace fx::vk
