@@ -29,12 +29,15 @@ fx::TechniqueCandidate tech(std::string name, Ann annotations, bool valid = true
 // An effect with the usual spread: LOD bands, two schemes, costs, errors, a fallback.
 std::vector<fx::TechniqueCandidate> effect() {
   return {
-      tech("sm3_quality", {{"Scheme", std::string("quality")}, {"MaxDistance", 15.f}, {"CostMs", 0.02f},
-                           {"Fallback", std::string("sm2_near")}}, false),
-      tech("sm2_near", {{"Scheme", std::string("quality")}, {"MaxDistance", 25.f}, {"MaxError", 0.5f},
-                        {"CostNsPerPixel", 0.8f}}),
-      tech("sm2_mid", {{"MinDistance", 20.f}, {"MaxDistance", 80.f}, {"MaxError", 1.5f},
-                       {"CostNsPerPixel", 0.4f}}),
+      tech("sm3_quality",
+           {{"Scheme", std::string("quality")},
+            {"MaxDistance", 15.f},
+            {"CostMs", 0.02f},
+            {"Fallback", std::string("sm2_near")}},
+           false),
+      tech("sm2_near",
+           {{"Scheme", std::string("quality")}, {"MaxDistance", 25.f}, {"MaxError", 0.5f}, {"CostNsPerPixel", 0.8f}}),
+      tech("sm2_mid", {{"MinDistance", 20.f}, {"MaxDistance", 80.f}, {"MaxError", 1.5f}, {"CostNsPerPixel", 0.4f}}),
       tech("perf", {{"Scheme", std::string("performance")}, {"MaxError", 3.f}, {"CostMs", 0.005f}}),
       tech("far_lut", {{"MinDistance", 70.f}, {"MaxError", 4.f}, {"MinScreenSize", 4.f}}),
       tech("billboard", {{"MaxError", 12.f}, {"MaxScreenSize", 8.f}}),
@@ -64,10 +67,8 @@ uint32_t naive_select(const std::vector<fx::TechniqueCandidate>& list, const fx:
   for (uint32_t i = 0; i < list.size(); ++i) {
     const fx::AnnotationMap& a = list[i].annotations;
     if (!list[i].valid) continue;
-    if (auto s = a.string("Scheme"); s && !c.scheme.empty() && s->find(c.scheme) == std::string_view::npos)
-      continue;
-    if (c.distance < a.number("MinDistance").value_or(-1e30f) ||
-        c.distance >= a.number("MaxDistance").value_or(1e30f))
+    if (auto s = a.string("Scheme"); s && !c.scheme.empty() && s->find(c.scheme) == std::string_view::npos) continue;
+    if (c.distance < a.number("MinDistance").value_or(-1e30f) || c.distance >= a.number("MaxDistance").value_or(1e30f))
       continue;
     if (c.screen_size >= 0.f && (c.screen_size < a.number("MinScreenSize").value_or(-1e30f) ||
                                  c.screen_size >= a.number("MaxScreenSize").value_or(1e30f)))
@@ -110,8 +111,11 @@ void BM_NaiveAnnotations10k(benchmark::State& state) {
   for (auto _ : state) {
     uint64_t sum = 0;
     for (size_t i = 0; i < kObjects; ++i) {
-      fx::SelectionCriteria c{.distance = objs[i].distance, .screen_size = objs[i].screen_size,
-                              .pixels = objs[i].pixels, .scheme = "quality", .cost_budget_ms = 0.5f};
+      fx::SelectionCriteria c{.distance = objs[i].distance,
+                              .screen_size = objs[i].screen_size,
+                              .pixels = objs[i].pixels,
+                              .scheme = "quality",
+                              .cost_budget_ms = 0.5f};
       sum += naive_select(list, c);
     }
     benchmark::DoNotOptimize(sum);
@@ -170,8 +174,11 @@ int main(int argc, char** argv) {
   fx::DiagnosticSink sink;
   fx::SelectionPlan plan = fx::SelectionPlan::build(list, sink);
   for (const Object& o : objects()) {
-    fx::SelectionCriteria c{.distance = o.distance, .screen_size = o.screen_size, .pixels = o.pixels,
-                            .scheme = "quality", .cost_budget_ms = 0.5f};
+    fx::SelectionCriteria c{.distance = o.distance,
+                            .screen_size = o.screen_size,
+                            .pixels = o.pixels,
+                            .scheme = "quality",
+                            .cost_budget_ms = 0.5f};
     uint32_t fast = plan.select(plan.query(c)), naive = naive_select(list, c);
     // The naive baseline has no fallback chains; compare only where it found something.
     if (naive != fx::kNoIndex && fast != naive) {
@@ -188,21 +195,20 @@ int main(int argc, char** argv) {
     auto it = reporter.cpu_micros.find(name);
     return it == reporter.cpu_micros.end() ? 0.0 : it->second;
   };
-  double plan_us = get("BM_SelectPlan10k"), naive_us = get("BM_NaiveAnnotations10k"),
-         explain_us = get("BM_Explain10k");
-  std::printf("\nfxkit_select_bench on %s (%u hardware threads, one used); CPU time per frame\n",
-              cpu_model().c_str(), std::thread::hardware_concurrency());
+  double plan_us = get("BM_SelectPlan10k"), naive_us = get("BM_NaiveAnnotations10k"), explain_us = get("BM_Explain10k");
+  std::printf("\nfxkit_select_bench on %s (%u hardware threads, one used); CPU time per frame\n", cpu_model().c_str(),
+              std::thread::hardware_concurrency());
   if (auto it = reporter.micros.find("BM_SelectPlan10k"); it != reporter.micros.end())
     std::printf("  (wall time of select: %.1f us/frame; higher when the cores are shared)\n", it->second);
   if (plan_us > 0) {
     std::printf("  SelectionPlan::select, 10k objects, 6 techniques: %.1f us/frame (%.1f ns/object; budget 1000 us)\n",
                 plan_us, plan_us * 1000.0 / kObjects);
     if (naive_us > 0)
-      std::printf("  baseline (annotations read per object): %.1f us/frame -> plan is %.1fx faster\n",
-                  naive_us, naive_us / plan_us);
+      std::printf("  baseline (annotations read per object): %.1f us/frame -> plan is %.1fx faster\n", naive_us,
+                  naive_us / plan_us);
     if (explain_us > 0)
-      std::printf("  SelectionPlan::explain (reason texts, allocates): %.1f us/frame (%.1fx select)\n",
-                  explain_us, explain_us / plan_us);
+      std::printf("  SelectionPlan::explain (reason texts, allocates): %.1f us/frame (%.1fx select)\n", explain_us,
+                  explain_us / plan_us);
   }
   return 0;
 }

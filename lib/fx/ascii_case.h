@@ -9,9 +9,7 @@
 namespace fx {
 
 // `c` with 'A'-'Z' folded to lower case; every other byte unchanged.
-constexpr char ascii_lower(char c) {
-  return c >= 'A' && c <= 'Z' ? static_cast<char>(c + ('a' - 'A')) : c;
-}
+constexpr char ascii_lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c + ('a' - 'A')) : c; }
 
 // A copy of `s` with 'A'-'Z' folded to lower case.
 inline std::string ascii_lower(std::string_view s) {

@@ -2,8 +2,8 @@
 // Library code reports them into a DiagnosticSink; it never prints or aborts.
 #pragma once
 #include <cstddef>
-#include <string_view>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fx/source_location.h"

@@ -17,8 +17,7 @@ struct TextRenderOptions {
 };
 
 // `file:line:col: error: message [id]`, source line, caret, then notes, one per line.
-std::string render_text(const Diagnostic& d, const SourceManager& sm,
-                        const TextRenderOptions& options = {});
+std::string render_text(const Diagnostic& d, const SourceManager& sm, const TextRenderOptions& options = {});
 std::string render_text(const std::vector<Diagnostic>& ds, const SourceManager& sm,
                         const TextRenderOptions& options = {});
 

@@ -27,8 +27,8 @@ struct PresumedLocation {
 // where the macro was invoked (expansion).
 struct MacroExpansion {
   std::string macro_name;
-  SourceLocation spelling;     // start of the macro body in its definition
-  SourceRange expansion;       // the invocation, e.g. FOO(a, b)
+  SourceLocation spelling;  // start of the macro body in its definition
+  SourceRange expansion;    // the invocation, e.g. FOO(a, b)
 };
 
 class SourceManager {
@@ -96,7 +96,7 @@ class SourceManager {
     uint32_t base = 0;  // first raw location value
     uint32_t size = 0;  // characters (+1 for the end position)
     std::string name;
-    std::unique_ptr<std::string> text;          // null for expansions
+    std::unique_ptr<std::string> text;  // null for expansions
     SourceLocation included_from;
     std::unique_ptr<MacroExpansion> expansion;  // non-null for expansions
     mutable std::vector<uint32_t> line_starts;  // computed on demand

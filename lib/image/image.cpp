@@ -46,8 +46,7 @@ Image to_unorm8(const ImageF& image) {
 
 ImageDiff compare(const Image& a, const Image& b, uint32_t tolerance) {
   ImageDiff diff;
-  if (a.width != b.width || a.height != b.height || a.channels != b.channels ||
-      a.pixels.size() != b.pixels.size())
+  if (a.width != b.width || a.height != b.height || a.channels != b.channels || a.pixels.size() != b.pixels.size())
     return diff;
   diff.comparable = true;
   for (size_t i = 0; i < a.pixels.size(); ++i) {

@@ -28,8 +28,7 @@
 namespace fx {
 namespace {
 
-std::optional<std::vector<uint8_t>> read_file_bytes(const std::filesystem::path& path,
-                                                    DiagnosticSink& sink) {
+std::optional<std::vector<uint8_t>> read_file_bytes(const std::filesystem::path& path, DiagnosticSink& sink) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) {
     sink.error("image-open-failed", {}, "cannot open image '" + path.string() + "'");
@@ -38,8 +37,7 @@ std::optional<std::vector<uint8_t>> read_file_bytes(const std::filesystem::path&
   std::vector<uint8_t> bytes;
   uint8_t chunk[1 << 16];
   size_t n;
-  while ((n = std::fread(chunk, 1, sizeof chunk, f)) > 0)
-    bytes.insert(bytes.end(), chunk, chunk + n);
+  while ((n = std::fread(chunk, 1, sizeof chunk, f)) > 0) bytes.insert(bytes.end(), chunk, chunk + n);
   bool failed = std::ferror(f) != 0;
   std::fclose(f);
   if (failed) {
@@ -58,13 +56,12 @@ void append_bytes(void* context, void* data, int size) {
 }
 
 // `origin` names the data in messages ("" for memory).
-std::optional<Image> decode(std::span<const uint8_t> bytes, DiagnosticSink& sink,
-                            uint32_t want_channels, const std::string& origin) {
+std::optional<Image> decode(std::span<const uint8_t> bytes, DiagnosticSink& sink, uint32_t want_channels,
+                            const std::string& origin) {
   std::string from = origin.empty() ? "" : " '" + origin + "'";
   if (want_channels > 4) {
     sink.error("image-decode-failed", {},
-               "requested " + std::to_string(want_channels) + " channels from image" + from +
-                   "; images have 1 to 4");
+               "requested " + std::to_string(want_channels) + " channels from image" + from + "; images have 1 to 4");
     return std::nullopt;
   }
   if (bytes.size() > size_t(INT32_MAX)) {
@@ -72,11 +69,9 @@ std::optional<Image> decode(std::span<const uint8_t> bytes, DiagnosticSink& sink
     return std::nullopt;
   }
   int w = 0, h = 0, file_channels = 0;
-  stbi_uc* data = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &file_channels,
-                                        int(want_channels));
+  stbi_uc* data = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &file_channels, int(want_channels));
   if (!data) {
-    sink.error("image-decode-failed", {},
-               "cannot decode image" + from + ": " + stbi_failure_reason());
+    sink.error("image-decode-failed", {}, "cannot decode image" + from + ": " + stbi_failure_reason());
     return std::nullopt;
   }
   Image image;
@@ -90,13 +85,11 @@ std::optional<Image> decode(std::span<const uint8_t> bytes, DiagnosticSink& sink
 
 }  // namespace
 
-std::optional<Image> decode_image(std::span<const uint8_t> bytes, DiagnosticSink& sink,
-                                  uint32_t want_channels) {
+std::optional<Image> decode_image(std::span<const uint8_t> bytes, DiagnosticSink& sink, uint32_t want_channels) {
   return decode(bytes, sink, want_channels, "");
 }
 
-std::optional<Image> read_png(const std::filesystem::path& path, DiagnosticSink& sink,
-                              uint32_t want_channels) {
+std::optional<Image> read_png(const std::filesystem::path& path, DiagnosticSink& sink, uint32_t want_channels) {
   auto bytes = read_file_bytes(path, sink);
   if (!bytes) return std::nullopt;
   return decode(*bytes, sink, want_channels, path.string());
@@ -121,11 +114,9 @@ std::optional<ImageF> read_image_float(const std::filesystem::path& path, Diagno
     return to_float(*image);
   }
   int w = 0, h = 0, file_channels = 0;
-  float* data = stbi_loadf_from_memory(bytes->data(), int(bytes->size()), &w, &h, &file_channels,
-                                       int(want_channels));
+  float* data = stbi_loadf_from_memory(bytes->data(), int(bytes->size()), &w, &h, &file_channels, int(want_channels));
   if (!data) {
-    sink.error("image-decode-failed", {},
-               "cannot decode '" + path.string() + "': " + stbi_failure_reason());
+    sink.error("image-decode-failed", {}, "cannot decode '" + path.string() + "': " + stbi_failure_reason());
     return std::nullopt;
   }
   ImageF image;
@@ -143,13 +134,13 @@ std::vector<uint8_t> encode_png(const Image& image, DiagnosticSink& sink) {
       image.pixels.size() != size_t(image.width) * image.height * image.channels ||
       image.row_bytes() > size_t(INT32_MAX)) {
     sink.error("image-encode-failed", {},
-               "cannot encode a " + std::to_string(image.width) + "x" +
-                   std::to_string(image.height) + "x" + std::to_string(image.channels) +
-                   " image holding " + std::to_string(image.pixels.size()) + " bytes as PNG");
+               "cannot encode a " + std::to_string(image.width) + "x" + std::to_string(image.height) + "x" +
+                   std::to_string(image.channels) + " image holding " + std::to_string(image.pixels.size()) +
+                   " bytes as PNG");
     return out;
   }
-  int ok = stbi_write_png_to_func(append_bytes, &out, int(image.width), int(image.height),
-                                  int(image.channels), image.pixels.data(), int(image.row_bytes()));
+  int ok = stbi_write_png_to_func(append_bytes, &out, int(image.width), int(image.height), int(image.channels),
+                                  image.pixels.data(), int(image.row_bytes()));
   if (!ok) {
     sink.error("image-encode-failed", {}, "PNG encoder failed");
     out.clear();

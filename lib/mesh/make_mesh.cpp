@@ -16,9 +16,9 @@ std::optional<Mesh> make_mesh(std::string_view name, DiagnosticSink& sink) {
   const bool looks_like_path = name.find_first_of("/\\.") != std::string_view::npos;
   if (obj_suffix || looks_like_path) return load_obj(std::filesystem::path(std::string(name)), sink);
 
-  Diagnostic& d = sink.error("unknown-mesh", {},
-                             "unknown mesh '" + std::string(name) +
-                                 "': expected sphere, torus, quad, teapot or a path to an .obj file");
+  Diagnostic& d = sink.error(
+      "unknown-mesh", {},
+      "unknown mesh '" + std::string(name) + "': expected sphere, torus, quad, teapot or a path to an .obj file");
   std::string guess = closest_match(name, {"sphere", "torus", "quad", "teapot"});
   if (!guess.empty()) d.message += "; did you mean '" + guess + "'?";
   return std::nullopt;

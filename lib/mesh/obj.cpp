@@ -45,9 +45,9 @@ std::optional<Mesh> load_obj(const std::filesystem::path& path, DiagnosticSink& 
   const std::string name = path.string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    sink.error("mesh-open-failed", {}, "cannot open mesh file '" + name + "'" +
-                                           (std::filesystem::exists(path, ec) ? ": not a regular file"
-                                                                              : ": no such file"));
+    sink.error("mesh-open-failed", {},
+               "cannot open mesh file '" + name + "'" +
+                   (std::filesystem::exists(path, ec) ? ": not a regular file" : ": no such file"));
     return std::nullopt;
   }
 
@@ -93,8 +93,9 @@ std::optional<Mesh> load_obj(const std::filesystem::path& path, DiagnosticSink& 
           sink.error("obj-index-out-of-range", {},
                      name + ": face " + std::to_string(f + 1) + " of '" + shape.name +
                          "' refers to a vertex, texture coordinate or normal that the file does "
-                         "not define (" + std::to_string(positions) + " v, " +
-                         std::to_string(texcoords) + " vt, " + std::to_string(normals) + " vn)");
+                         "not define (" +
+                         std::to_string(positions) + " v, " + std::to_string(texcoords) + " vt, " +
+                         std::to_string(normals) + " vn)");
           return std::nullopt;
         }
         CornerKey key{ix.vertex_index, ix.texcoord_index, ix.normal_index};

@@ -21,15 +21,14 @@ void append_grid(Mesh& mesh, uint32_t columns, uint32_t rows,
     }
   }
   auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
-    const glm::vec3 &pa = mesh.vertices[a].position, &pb = mesh.vertices[b].position,
-                    &pc = mesh.vertices[c].position;
+    const glm::vec3 &pa = mesh.vertices[a].position, &pb = mesh.vertices[b].position, &pc = mesh.vertices[c].position;
     if (pa == pb || pb == pc || pa == pc) return;
     mesh.indices.insert(mesh.indices.end(), {a, b, c});
   };
   for (uint32_t j = 0; j < rows; ++j) {
     for (uint32_t i = 0; i < columns; ++i) {
       uint32_t a = base + j * stride + i, c = a + 1;  // top-left, top-right
-      uint32_t b = a + stride, d = b + 1;              // bottom-left, bottom-right
+      uint32_t b = a + stride, d = b + 1;             // bottom-left, bottom-right
       add(a, b, c);
       add(c, b, d);
     }

@@ -26,9 +26,7 @@ constexpr float kTinySquared = 1e-30f;
 // noise of a vector parallel to the normal (float cancellation leaves ~1e-7 relative).
 constexpr float kResidueSquared = 1e-10f;
 
-bool finite(const glm::vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Unit vector or `fallback` when `v` has no usable direction.
 glm::vec3 normalize_or(const glm::vec3& v, const glm::vec3& fallback) {
@@ -108,8 +106,7 @@ void smooth_normals(Mesh& mesh, bool only_unusable) {
   for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     uint32_t idx[3] = {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]};
     if (idx[0] >= slot.size() || idx[1] >= slot.size() || idx[2] >= slot.size()) continue;
-    glm::vec3 p[3] = {mesh.vertices[idx[0]].position, mesh.vertices[idx[1]].position,
-                      mesh.vertices[idx[2]].position};
+    glm::vec3 p[3] = {mesh.vertices[idx[0]].position, mesh.vertices[idx[1]].position, mesh.vertices[idx[2]].position};
     glm::vec3 face = normalize_or(glm::cross(p[1] - p[0], p[2] - p[0]), glm::vec3(0.0f));
     if (glm::dot(face, face) == 0.0f) continue;
     // Weight by the corner angle (Thurmer and Wuthrich): unlike area weighting, the result
@@ -150,8 +147,7 @@ void compute_tangents(Mesh& mesh) {
     // Relative test: a uv triangle whose area is ~1e-7 of its edge lengths' product is a
     // rounding artefact of equal uvs, not a parametrisation.
     float uv_scale = glm::length(d1) * glm::length(d2);
-    if (!(area2 > 0.0f) || !std::isfinite(area2) || !(std::abs(det) > 1e-7f * uv_scale) ||
-        !std::isfinite(det))
+    if (!(area2 > 0.0f) || !std::isfinite(area2) || !(std::abs(det) > 1e-7f * uv_scale) || !std::isfinite(det))
       continue;
     // Solve [e1 e2] = [dPdu dPdv] [d1 d2]: dP/du and dP/dv of the triangle's plane.
     glm::vec3 dpdu = (e1 * d2.y - e2 * d1.y) / det;

@@ -31,15 +31,14 @@ const char* to_string(VertexFormat format) {
 }
 
 const MeshVertexLayout& mesh_vertex_layout() {
-  static const MeshVertexLayout layout{
-      uint32_t(sizeof(Vertex)),
-      {
-          {"POSITION", 0, VertexFormat::float3, uint32_t(offsetof(Vertex, position))},
-          {"NORMAL", 0, VertexFormat::float3, uint32_t(offsetof(Vertex, normal))},
-          {"TANGENT", 0, VertexFormat::float4, uint32_t(offsetof(Vertex, tangent))},
-          {"BINORMAL", 0, VertexFormat::float3, uint32_t(offsetof(Vertex, binormal))},
-          {"TEXCOORD", 0, VertexFormat::float2, uint32_t(offsetof(Vertex, uv))},
-      }};
+  static const MeshVertexLayout layout{uint32_t(sizeof(Vertex)),
+                                       {
+                                           {"POSITION", 0, VertexFormat::float3, uint32_t(offsetof(Vertex, position))},
+                                           {"NORMAL", 0, VertexFormat::float3, uint32_t(offsetof(Vertex, normal))},
+                                           {"TANGENT", 0, VertexFormat::float4, uint32_t(offsetof(Vertex, tangent))},
+                                           {"BINORMAL", 0, VertexFormat::float3, uint32_t(offsetof(Vertex, binormal))},
+                                           {"TEXCOORD", 0, VertexFormat::float2, uint32_t(offsetof(Vertex, uv))},
+                                       }};
   return layout;
 }
 
@@ -55,8 +54,7 @@ const MeshVertexAttribute* MeshVertexLayout::find(std::string_view semantic) con
   }
   auto same = [](std::string_view a, std::string_view b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-             return std::toupper(static_cast<unsigned char>(x)) ==
-                    std::toupper(static_cast<unsigned char>(y));
+             return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
            });
   };
   for (const MeshVertexAttribute& a : attributes)

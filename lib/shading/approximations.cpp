@@ -39,12 +39,10 @@ const char* name_of(LutMapping m) {
 
 // Runs measure_error and files the result.
 ApproximationError measured(std::string id, std::string family, std::string description,
-                            std::vector<std::pair<std::string, std::string>> params,
-                            const ShadingTerm& reference, const ShadingTerm& approximation,
-                            std::span<const ShadingSample> samples) {
+                            std::vector<std::pair<std::string, std::string>> params, const ShadingTerm& reference,
+                            const ShadingTerm& approximation, std::span<const ShadingSample> samples) {
   ErrorReport r = measure_error(reference, approximation, samples);
-  return {std::move(id), std::move(family), std::move(description), std::move(params), r.all,
-          r.near_degenerate};
+  return {std::move(id), std::move(family), std::move(description), std::move(params), r.all, r.near_degenerate};
 }
 
 float n_dot_h_float(const ShadingSample& s) {
@@ -67,27 +65,29 @@ void strand_tables(const ApproximationOptions& o, std::span<const ShadingSample>
           if (table.width == 0) continue;
           ShadingTerm approx = [&](const ShadingSample& s) {
             glm::vec3 l = to_float(s.l), v = to_float(s.v), tt = to_float(s.t);
-            return double(lookup_strand_table(table, t, lut_u_from_vectors(index, l, tt),
-                                              lut_u_from_vectors(index, v, tt))
-                              .specular);
+            return double(
+                lookup_strand_table(table, t, lut_u_from_vectors(index, l, tt), lut_u_from_vectors(index, v, tt))
+                    .specular);
           };
-          out.push_back(measured(
-              std::string("strand_lut/") + name_of(index) + "/" + name_of(format) + "/n" +
-                  number(exponent) + "/s" + std::to_string(size),
-              "strand_lut",
-              "strand table specular, " + std::string(name_of(index)) + " index, " +
-                  name_of(format) + ", " + std::to_string(size) + "^2, exponent " + number(exponent),
-              {{"index", name_of(index)}, {"format", name_of(format)}, {"exponent", number(exponent)},
-               {"size", std::to_string(size)}, {"mapping", "texel_centre"}},
-              reference, approx, samples));
+          out.push_back(measured(std::string("strand_lut/") + name_of(index) + "/" + name_of(format) + "/n" +
+                                     number(exponent) + "/s" + std::to_string(size),
+                                 "strand_lut",
+                                 "strand table specular, " + std::string(name_of(index)) + " index, " +
+                                     name_of(format) + ", " + std::to_string(size) + "^2, exponent " + number(exponent),
+                                 {{"index", name_of(index)},
+                                  {"format", name_of(format)},
+                                  {"exponent", number(exponent)},
+                                  {"size", std::to_string(size)},
+                                  {"mapping", "texel_centre"}},
+                                 reference, approx, samples));
         }
       }
     }
   }
   // Texel mappings at the seed's sizes: the corner error of naive and wrap addressing.
   for (int size : {64, 256}) {
-    for (LutMapping m : {LutMapping::naive, LutMapping::seed_wrap, LutMapping::texel_centre,
-                         LutMapping::texel_centre_wrap}) {
+    for (LutMapping m :
+         {LutMapping::naive, LutMapping::seed_wrap, LutMapping::texel_centre, LutMapping::texel_centre_wrap}) {
       for (bool diffuse : {false, true}) {
         StrandTableOptions t{size, 32, m, LutIndex::cosine, TableFormat::unorm8};
         Table table = bake_strand_table(t);
@@ -97,18 +97,17 @@ void strand_tables(const ApproximationOptions& o, std::span<const ShadingSample>
         };
         ShadingTerm approx = [&](const ShadingSample& s) {
           glm::vec3 l = to_float(s.l), v = to_float(s.v), tt = to_float(s.t);
-          StrandTerms<float> f = lookup_strand_table(
-              table, t, lut_u_from_vectors(LutIndex::cosine, l, tt), lut_u_from_vectors(LutIndex::cosine, v, tt));
+          StrandTerms<float> f = lookup_strand_table(table, t, lut_u_from_vectors(LutIndex::cosine, l, tt),
+                                                     lut_u_from_vectors(LutIndex::cosine, v, tt));
           return double(diffuse ? f.diffuse : f.specular);
         };
         const char* term = diffuse ? "diffuse" : "specular";
         out.push_back(measured(
-            std::string("strand_mapping/") + name_of(m) + "/" + term + "/s" + std::to_string(size),
-            "strand_mapping",
-            std::string("strand table ") + term + ", " + name_of(m) + " mapping, unorm8 " +
-                std::to_string(size) + "^2, exponent 32",
-            {{"mapping", name_of(m)}, {"term", term}, {"size", std::to_string(size)}, {"exponent", "32"}},
-            reference, approx, samples));
+            std::string("strand_mapping/") + name_of(m) + "/" + term + "/s" + std::to_string(size), "strand_mapping",
+            std::string("strand table ") + term + ", " + name_of(m) + " mapping, unorm8 " + std::to_string(size) +
+                "^2, exponent 32",
+            {{"mapping", name_of(m)}, {"term", term}, {"size", std::to_string(size)}, {"exponent", "32"}}, reference,
+            approx, samples));
       }
     }
   }
@@ -132,13 +131,10 @@ void strand_arithmetic(std::span<const ShadingSample> samples, std::vector<Appro
     };
     out.push_back(measured(std::string("strand_analytic/stable/") + term, "strand_analytic",
                            std::string("analytic strand ") + term + ", float, |L x T| sines, exponent 32",
-                           {{"form", "stable"}, {"term", term}, {"exponent", "32"}}, reference, stable,
-                           samples));
+                           {{"form", "stable"}, {"term", term}, {"exponent", "32"}}, reference, stable, samples));
     out.push_back(measured(std::string("strand_analytic/seed_sqrt/") + term, "strand_analytic",
-                           std::string("analytic strand ") + term +
-                               ", float, the seed's sqrt(1-(L.T)^2), exponent 32",
-                           {{"form", "seed_sqrt"}, {"term", term}, {"exponent", "32"}}, reference, naive,
-                           samples));
+                           std::string("analytic strand ") + term + ", float, the seed's sqrt(1-(L.T)^2), exponent 32",
+                           {{"form", "seed_sqrt"}, {"term", term}, {"exponent", "32"}}, reference, naive, samples));
   }
 }
 
@@ -194,19 +190,17 @@ void specular_powers(const ApproximationOptions& o, std::span<const ShadingSampl
   // The cosine is computed once in float and fed to both sides: this isolates the power's
   // approximation from the half vector's own ill-conditioning at L = -V.
   ShadingTerm reference = [](const ShadingSample& s) { return specular_power_reference(n_dot_h_float(s), 16); };
-  out.push_back(measured("specular/pow_native", "specular_power", "(N.H)^16, native pow in float",
-                         {{"method", "pow"}, {"exponent", "16"}}, reference,
-                         [](const ShadingSample& s) { return double(specular_power(n_dot_h_float(s), 16.f)); },
-                         samples));
-  out.push_back(measured("specular/squaring_float", "specular_power", "(N.H)^16 by four float squarings",
-                         {{"method", "squaring"}, {"register", "float"}, {"exponent", "16"}}, reference,
-                         [](const ShadingSample& s) { return double(pow16_by_squaring(n_dot_h_float(s), false)); },
-                         samples));
-  out.push_back(measured("specular/squaring_8bit", "specular_power",
-                         "(N.H)^16 by four squarings in 8-bit registers (ps.1.1)",
-                         {{"method", "squaring"}, {"register", "unorm8"}, {"exponent", "16"}}, reference,
-                         [](const ShadingSample& s) { return double(pow16_by_squaring(n_dot_h_float(s), true)); },
-                         samples));
+  out.push_back(measured(
+      "specular/pow_native", "specular_power", "(N.H)^16, native pow in float", {{"method", "pow"}, {"exponent", "16"}},
+      reference, [](const ShadingSample& s) { return double(specular_power(n_dot_h_float(s), 16.f)); }, samples));
+  out.push_back(measured(
+      "specular/squaring_float", "specular_power", "(N.H)^16 by four float squarings",
+      {{"method", "squaring"}, {"register", "float"}, {"exponent", "16"}}, reference,
+      [](const ShadingSample& s) { return double(pow16_by_squaring(n_dot_h_float(s), false)); }, samples));
+  out.push_back(measured(
+      "specular/squaring_8bit", "specular_power", "(N.H)^16 by four squarings in 8-bit registers (ps.1.1)",
+      {{"method", "squaring"}, {"register", "unorm8"}, {"exponent", "16"}}, reference,
+      [](const ShadingSample& s) { return double(pow16_by_squaring(n_dot_h_float(s), true)); }, samples));
   for (TableFormat format : {TableFormat::unorm8, TableFormat::float32}) {
     for (int size : o.lut_sizes) {
       PowTableOptions t{2, size, 16, LutMapping::texel_centre, format};
@@ -217,7 +211,8 @@ void specular_powers(const ApproximationOptions& o, std::span<const ShadingSampl
           "(N.H)^16 from the LightEval table, " + std::string(name_of(format)) + ", " + std::to_string(size) +
               " entries",
           {{"method", "table"}, {"format", name_of(format)}, {"size", std::to_string(size)}, {"exponent", "16"}},
-          reference, [&](const ShadingSample& s) { return double(lookup_pow_table(table, t, saturate(n_dot_h_float(s)))); },
+          reference,
+          [&](const ShadingSample& s) { return double(lookup_pow_table(table, t, saturate(n_dot_h_float(s)))); },
           samples));
     }
   }
@@ -254,8 +249,8 @@ void per_vertex(const ApproximationOptions& o, std::vector<ApproximationError>& 
             for (int a = 0; a <= k; ++a) {
               for (int b = 0; a + b <= k; ++b) {
                 double w0 = double(a) / k, w1 = double(b) / k, w2 = 1.0 - w0 - w1;
-                glm::dvec3 n = glm::normalize(w0 * quad[idx[0]].first + w1 * quad[idx[1]].first +
-                                              w2 * quad[idx[2]].first);
+                glm::dvec3 n =
+                    glm::normalize(w0 * quad[idx[0]].first + w1 * quad[idx[1]].first + w2 * quad[idx[2]].first);
                 glm::dvec3 t = w0 * quad[idx[0]].second + w1 * quad[idx[1]].second + w2 * quad[idx[2]].second;
                 t = gram_schmidt_tangent(t, n);
                 ref.push_back(strand_reference(l, view, t, 32).specular);
@@ -267,11 +262,13 @@ void per_vertex(const ApproximationOptions& o, std::vector<ApproximationError>& 
       }
     }
     double edge_deg = 180.0 / rings;
-    out.push_back({"per_vertex/rings" + std::to_string(rings), "per_vertex",
+    out.push_back({"per_vertex/rings" + std::to_string(rings),
+                   "per_vertex",
                    "strand specular n=32 per vertex, interpolated, sphere " + std::to_string(rings) + "x" +
                        std::to_string(segments) + " (edge " + number(edge_deg) + " deg)",
                    {{"rings", std::to_string(rings)}, {"edge_deg", number(edge_deg)}},
-                   compare_values(ref, approx), {}});
+                   compare_values(ref, approx),
+                   {}});
   }
 }
 
@@ -299,10 +296,13 @@ void hemisphere(const ApproximationOptions& o, std::vector<ApproximationError>& 
   const char* what[] = {"0.5 + 0.5 cos q in float", "the seed's 'actual integral' 1 - 0.5 sin q in float",
                         "0.5 + 0.5 cos q in double (quadrature's own error)"};
   for (int form = 0; form < 3; ++form) {
-    out.push_back({std::string("hemisphere/") + names[form], "hemisphere",
+    out.push_back({std::string("hemisphere/") + names[form],
+                   "hemisphere",
                    std::string("sky fraction, ") + what[form] + " vs quadrature (" +
                        std::to_string(o.hemisphere_quadrature_steps) + " steps)",
-                   {{"form", names[form]}}, forms(uniform_q, form), forms(near_q, form)});
+                   {{"form", names[form]}},
+                   forms(uniform_q, form),
+                   forms(near_q, form)});
     ErrorStats all = out.back().all;  // fold near-degenerate into `all` as measure_error does
     const ErrorStats& nd = out.back().near_degenerate;
     double sq = all.rmse * all.rmse * all.count + nd.rmse * nd.rmse * nd.count;
@@ -319,7 +319,8 @@ void half_angle(const ApproximationOptions& o, std::span<const ShadingSample> sa
     double shape = lobe == HalfAngleLobe::blinn_phong ? 32 : 0.3;
     const char* lobe_name = lobe == HalfAngleLobe::blinn_phong ? "blinn_phong" : "gaussian";
     ShadingTerm reference = [=](const ShadingSample& s) {
-      return ln_hn_terms(double(glm::dot(to_float(s.n), to_float(s.l))), double(n_dot_h_float(s)), lobe, shape).specular;
+      return ln_hn_terms(double(glm::dot(to_float(s.n), to_float(s.l))), double(n_dot_h_float(s)), lobe, shape)
+          .specular;
     };
     for (int size : o.lut_sizes) {
       HalfAngleTableOptions t{size, lobe, shape, LutMapping::texel_centre, TableFormat::unorm8};
@@ -330,7 +331,8 @@ void half_angle(const ApproximationOptions& o, std::span<const ShadingSample> sa
           std::string("(L.N, H.N) table, ") + lobe_name + " lobe, unorm8 " + std::to_string(size) + "^2",
           {{"lobe", lobe_name}, {"size", std::to_string(size)}, {"format", "unorm8"}}, reference,
           [&](const ShadingSample& s) {
-            return double(lookup_ln_hn_table(table, t, glm::dot(to_float(s.n), to_float(s.l)), n_dot_h_float(s)).specular);
+            return double(
+                lookup_ln_hn_table(table, t, glm::dot(to_float(s.n), to_float(s.l)), n_dot_h_float(s)).specular);
           },
           samples));
     }
@@ -366,11 +368,13 @@ void brdf(const ApproximationOptions& o, std::vector<ApproximationError>& out) {
       s.max_abs = e.max_abs;
       s.rmse = e.rmse;
       s.max_lsb8 = e.max_abs * 255;
-      out.push_back({std::string("brdf/") + lobe_name + "/s" + std::to_string(size), "brdf",
-                     std::string("homomorphic factorization of ") + lobe_name + " n=8, 3 x " +
-                         std::to_string(size) + "^2 float (relative RMSE " + number(e.relative_rmse) + ")",
+      out.push_back({std::string("brdf/") + lobe_name + "/s" + std::to_string(size),
+                     "brdf",
+                     std::string("homomorphic factorization of ") + lobe_name + " n=8, 3 x " + std::to_string(size) +
+                         "^2 float (relative RMSE " + number(e.relative_rmse) + ")",
                      {{"lobe", lobe_name}, {"size", std::to_string(size)}, {"relative_rmse", number(e.relative_rmse)}},
-                     s, {}});
+                     s,
+                     {}});
     }
   }
 }

@@ -229,7 +229,7 @@ int gloss_angle_code(double angle_rad) {
   double deg = std::fmod(angle_rad * 180.0 / kPi, 180.0);
   if (!(deg > 0)) deg += 180.0;  // (-180, 0] -> (0, 180]; NaN stays NaN and is caught below
   long whole = std::isfinite(deg) ? std::lround(deg) : 180;
-  if (whole < 1) whole = 180;    // 0.4 degrees is next to 180 for a signless strand
+  if (whole < 1) whole = 180;  // 0.4 degrees is next to 180 for a signless strand
   return int(std::min(whole, 180L)) + 2;
 }
 

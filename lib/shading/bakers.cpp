@@ -16,8 +16,8 @@ constexpr long kMaxTexels = 1L << 24;
 
 std::string check_size(const char* what, int n, int min = 2) {
   if (n < min || n > kMaxEdge)
-    return std::string(what) + " must be in [" + std::to_string(min) + ", " + std::to_string(kMaxEdge) +
-           "], got " + std::to_string(n);
+    return std::string(what) + " must be in [" + std::to_string(min) + ", " + std::to_string(kMaxEdge) + "], got " +
+           std::to_string(n);
   return {};
 }
 

@@ -47,7 +47,11 @@ struct Row {
   std::array<double, 12> w{};
   int count = 0;
   double rhs = 0;
-  void add(int c, double v) { col[count] = c; w[count] = v; ++count; }
+  void add(int c, double v) {
+    col[count] = c;
+    w[count] = v;
+    ++count;
+  }
 };
 
 void add_factor_taps(Row& row, int offset, int n, const glm::dvec3& dir) {
@@ -176,8 +180,18 @@ BrdfFactors factorize_brdf(const AnalyticBrdf& brdf, const BrdfFactorizationOpti
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) {
         int a = f * texels + y * n + x;
-        if (x + 1 < n) { Row r; r.add(a, lambda); r.add(a + 1, -lambda); rows.push_back(r); }
-        if (y + 1 < n) { Row r; r.add(a, lambda); r.add(a + n, -lambda); rows.push_back(r); }
+        if (x + 1 < n) {
+          Row r;
+          r.add(a, lambda);
+          r.add(a + 1, -lambda);
+          rows.push_back(r);
+        }
+        if (y + 1 < n) {
+          Row r;
+          r.add(a, lambda);
+          r.add(a + n, -lambda);
+          rows.push_back(r);
+        }
       }
 
   // CGLS on min |A x - b|^2, from x = 0 (converges toward the minimum-norm solution,
@@ -223,8 +237,7 @@ double evaluate_factored(const BrdfFactors& f, const glm::dvec3& wi, const glm::
   return fetch(f.in, wi) * fetch(f.half, glm::normalize(wi + wo)) * fetch(f.out, wo);
 }
 
-FactorizationError measure_factorization(const BrdfFactors& f, const AnalyticBrdf& brdf, int samples,
-                                         uint32_t seed) {
+FactorizationError measure_factorization(const BrdfFactors& f, const AnalyticBrdf& brdf, int samples, uint32_t seed) {
   FactorizationError e;
   if (samples < 1) return e;
   UniformStream rng{seed ^ 0xa5a5a5a5U};

@@ -15,8 +15,8 @@ namespace {
 
 using detail::failure;
 using detail::finish;
-using fx::ascii_lower;
 using detail::ParamReader;
+using fx::ascii_lower;
 
 BakeResult bake_strand(ParamReader& in) {
   StrandTableOptions o;
@@ -43,8 +43,8 @@ BakeResult bake_pow(ParamReader& in) {
 BakeResult bake_ln_hn(ParamReader& in) {
   HalfAngleTableOptions o;
   o.size = in.integer("Width", o.size);
-  o.lobe = in.choice("Lobe", {"blinn_phong", "gaussian"}, 0) == 0 ? HalfAngleLobe::blinn_phong
-                                                                   : HalfAngleLobe::gaussian;
+  o.lobe =
+      in.choice("Lobe", {"blinn_phong", "gaussian"}, 0) == 0 ? HalfAngleLobe::blinn_phong : HalfAngleLobe::gaussian;
   double exponent = in.number("Exponent", 32.0), roughness = in.number("Roughness", 0.3);
   o.shape = o.lobe == HalfAngleLobe::blinn_phong ? exponent : roughness;
   o.mapping = in.mapping(o.mapping);
@@ -79,7 +79,7 @@ BakeResult bake_hemisphere(ParamReader& in) {
 struct BrdfFactorRequest {
   AnalyticBrdf brdf;
   BrdfFactorizationOptions fit;
-  int factor = 0;  // 0 in, 1 half, 2 out
+  int factor = 0;     // 0 in, 1 half, 2 out
   bool cube = false;  // resampled as a cube map (parabolic_to_cube)
 };
 
@@ -133,11 +133,17 @@ struct GeneratorEntry {
 };
 
 constexpr GeneratorEntry kGenerators[] = {
-    {"strand", bake_strand},   {"pow", bake_pow},           {"ln_hn", bake_ln_hn},
-    {"noise3d", bake_noise},   {"hemisphere", bake_hemisphere}, {"brdf_factor", bake_brdf_factor},
+    {"strand", bake_strand},
+    {"pow", bake_pow},
+    {"ln_hn", bake_ln_hn},
+    {"noise3d", bake_noise},
+    {"hemisphere", bake_hemisphere},
+    {"brdf_factor", bake_brdf_factor},
     // Texture assets (asset_generators.h): stand-ins for an engine's own textures.
-    {"direction_field", detail::bake_direction_field_asset}, {"normal_map", detail::bake_normal_map_asset},
-    {"height_map", detail::bake_height_map_asset},           {"color_map", detail::bake_color_map_asset},
+    {"direction_field", detail::bake_direction_field_asset},
+    {"normal_map", detail::bake_normal_map_asset},
+    {"height_map", detail::bake_height_map_asset},
+    {"color_map", detail::bake_color_map_asset},
     {"gloss_map", detail::bake_gloss_map_asset},
 };
 

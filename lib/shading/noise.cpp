@@ -17,7 +17,10 @@ namespace {
 
 // Hash of a lattice point, wrapped to the period so the noise tiles.
 uint32_t lattice_hash(const NoiseSpec& s, int period, int x, int y, int z, int channel, int octave) {
-  auto wrap = [period](int i) { int m = i % period; return uint32_t(m < 0 ? m + period : m); };
+  auto wrap = [period](int i) {
+    int m = i % period;
+    return uint32_t(m < 0 ? m + period : m);
+  };
   uint32_t h = hash32(s.seed ^ 0x9e3779b9U);
   h = hash32(h ^ wrap(x));
   h = hash32(h ^ (wrap(y) * 0x85ebca6bU));
@@ -36,8 +39,8 @@ double lattice_value(const NoiseSpec& s, int period, int x, int y, int z, int ch
   uint32_t h = lattice_hash(s, period, x, y, z, ch, oct);
   if (s.kind == NoiseKind::value) return unit(h);
   // Gradient: one of the 12 cube-edge directions (Perlin's improved-noise set).
-  static const int g[12][3] = {{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {1, 0, 1}, {-1, 0, 1},
-                               {1, 0, -1}, {-1, 0, -1}, {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
+  static const int g[12][3] = {{1, 1, 0},  {-1, 1, 0},  {1, -1, 0}, {-1, -1, 0}, {1, 0, 1},  {-1, 0, 1},
+                               {1, 0, -1}, {-1, 0, -1}, {0, 1, 1},  {0, -1, 1},  {0, 1, -1}, {0, -1, -1}};
   const int* d = g[h % 12];
   return d[0] * fx + d[1] * fy + d[2] * fz;
 }
@@ -46,7 +49,10 @@ double octave_noise(const NoiseSpec& s, int period, const glm::dvec3& p, int ch,
   double bx = std::floor(p.x), by = std::floor(p.y), bz = std::floor(p.z);
   double fx = p.x - bx, fy = p.y - by, fz = p.z - bz;
   // Reduce the cell index modulo the period before converting, so large p cannot overflow.
-  auto cell = [period](double b) { double m = std::fmod(b, double(period)); return int(m < 0 ? m + period : m); };
+  auto cell = [period](double b) {
+    double m = std::fmod(b, double(period));
+    return int(m < 0 ? m + period : m);
+  };
   int x = cell(bx), y = cell(by), z = cell(bz);
   double u = fade(fx), v = fade(fy), w = fade(fz);
   double acc = 0.0;

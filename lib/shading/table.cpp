@@ -11,16 +11,12 @@ Table Table::make(int width, int height, int depth, int channels, TableFormat fo
   t.depth = depth > 0 ? depth : 1;
   t.channels = channels < 1 ? 1 : channels > 4 ? 4 : channels;
   t.format = format;
-  if (format == TableFormat::unorm8)
-    t.unorm8.assign(t.value_count(), 0);
-  else
-    t.float32.assign(t.value_count(), 0.0f);
+  if (format == TableFormat::unorm8) t.unorm8.assign(t.value_count(), 0);
+  else t.float32.assign(t.value_count(), 0.0f);
   return t;
 }
 
-size_t Table::value_count() const {
-  return size_t(width) * size_t(height) * size_t(depth) * size_t(channels);
-}
+size_t Table::value_count() const { return size_t(width) * size_t(height) * size_t(depth) * size_t(channels); }
 
 size_t Table::index(int x, int y, int z, int c) const {
   return ((size_t(z) * size_t(height) + size_t(y)) * size_t(width) + size_t(x)) * size_t(channels) + size_t(c);
@@ -92,8 +88,8 @@ AxisTaps axis_taps(float s, int n, AddressMode address) {
 
 glm::vec4 sample_linear(const Table& table, const glm::vec3& coord, AddressMode address) {
   glm::vec4 out(0.0f);
-  if (table.value_count() == 0 || (table.format == TableFormat::unorm8 ? table.unorm8.size() : table.float32.size()) !=
-                                      table.value_count())
+  if (table.value_count() == 0 ||
+      (table.format == TableFormat::unorm8 ? table.unorm8.size() : table.float32.size()) != table.value_count())
     return out;
   AxisTaps ax = axis_taps(coord.x, table.width, address);
   AxisTaps ay = axis_taps(coord.y, table.height, address);

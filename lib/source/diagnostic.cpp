@@ -16,8 +16,7 @@ const char* to_string(Severity s) {
   return "error";
 }
 
-Diagnostic& DiagnosticSink::report(Severity severity, std::string id, SourceRange range,
-                                   std::string message) {
+Diagnostic& DiagnosticSink::report(Severity severity, std::string id, SourceRange range, std::string message) {
   if (severity == Severity::warning && werror_) severity = Severity::error;
   if (severity >= Severity::error) {
     if (error_limit_reached()) {

@@ -1,8 +1,8 @@
 #include "fx/diagnostic_render.h"
 
 #include <algorithm>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace fx {
 namespace {
@@ -62,14 +62,12 @@ std::vector<DiagnosticNote> context_notes(SourceLocation loc, const SourceManage
     notes.push_back({m->expansion.begin, "in expansion of macro '" + m->macro_name + "'"});
     loc = m->expansion.begin;
   }
-  for (SourceLocation inc = sm.included_from(sm.buffer_of(loc)); inc.valid();
-       inc = sm.included_from(sm.buffer_of(inc)))
+  for (SourceLocation inc = sm.included_from(sm.buffer_of(loc)); inc.valid(); inc = sm.included_from(sm.buffer_of(inc)))
     notes.push_back({inc, "included from here"});
   return notes;
 }
 
-std::string render_text(const Diagnostic& d, const SourceManager& sm,
-                        const TextRenderOptions& options) {
+std::string render_text(const Diagnostic& d, const SourceManager& sm, const TextRenderOptions& options) {
   std::string out = position(sm, d.range.begin);
   out += to_string(d.severity);
   out += ": " + d.message;
@@ -80,8 +78,8 @@ std::string render_text(const Diagnostic& d, const SourceManager& sm,
     const std::optional<SourceRange> range = editable_range(f, sm);
     if (!range) continue;
     bool insertion = !range->end.valid() || range->end == range->begin;
-    out += position(sm, range->begin) + "note: fix-it: " +
-           (insertion ? "insert '" : "replace with '") + f.replacement + "'\n";
+    out += position(sm, range->begin) + "note: fix-it: " + (insertion ? "insert '" : "replace with '") + f.replacement +
+           "'\n";
   }
   std::vector<DiagnosticNote> notes = d.notes;
   std::vector<DiagnosticNote> context = context_notes(d.range.begin, sm);
@@ -90,8 +88,7 @@ std::string render_text(const Diagnostic& d, const SourceManager& sm,
   return out;
 }
 
-std::string render_text(const std::vector<Diagnostic>& ds, const SourceManager& sm,
-                        const TextRenderOptions& options) {
+std::string render_text(const std::vector<Diagnostic>& ds, const SourceManager& sm, const TextRenderOptions& options) {
   std::string out;
   for (const Diagnostic& d : ds) out += render_text(d, sm, options);
   return out;

@@ -18,8 +18,7 @@ BufferId SourceManager::append(Entry e) {
   return static_cast<BufferId>(entries_.size() - 1);
 }
 
-BufferId SourceManager::add_buffer(std::string name, std::string contents,
-                                   SourceLocation included_from) {
+BufferId SourceManager::add_buffer(std::string name, std::string contents, SourceLocation included_from) {
   Entry e;
   e.size = static_cast<uint32_t>(contents.size());
   e.name = std::move(name);
@@ -31,8 +30,7 @@ BufferId SourceManager::add_buffer(std::string name, std::string contents,
 SourceLocation SourceManager::add_scratch(std::string_view text, SourceLocation origin) {
   // Scratch chunks reserve their address range and capacity up front, so earlier
   // string_views into them stay valid.
-  bool fits = scratch_ != 0 &&
-              entries_[scratch_].text->size() + text.size() + 1 <= entries_[scratch_].size;
+  bool fits = scratch_ != 0 && entries_[scratch_].text->size() + text.size() + 1 <= entries_[scratch_].size;
   if (!fits) {
     Entry e;
     e.size = std::max<uint32_t>(kScratchChunk, static_cast<uint32_t>(text.size()) + 1);
@@ -62,8 +60,7 @@ SourceLocation SourceManager::add_expansion(MacroExpansion expansion, uint32_t l
   return {entries_[append(std::move(e))].base};
 }
 
-void SourceManager::add_line_directive(SourceLocation at_next_line, uint32_t line,
-                                       std::string file) {
+void SourceManager::add_line_directive(SourceLocation at_next_line, uint32_t line, std::string file) {
   BufferId id = buffer_of(at_next_line);
   if (id == 0) return;
   Entry& e = entries_[id];
@@ -108,9 +105,7 @@ std::string_view SourceManager::buffer_text(BufferId id) const {
   return e.text ? std::string_view(*e.text) : std::string_view();
 }
 
-SourceLocation SourceManager::included_from(BufferId id) const {
-  return entry_checked(id).included_from;
-}
+SourceLocation SourceManager::included_from(BufferId id) const { return entry_checked(id).included_from; }
 
 const MacroExpansion* SourceManager::expansion_of(SourceLocation loc) const {
   const Entry* e = entry(loc);
@@ -141,8 +136,7 @@ const MacroExpansion* SourceManager::written_in_macro(SourceLocation loc, Source
 }
 
 SourceLocation SourceManager::file_location(SourceLocation loc) const {
-  for (const Entry* e = entry(loc); e && e->expansion; e = entry(loc))
-    loc = e->expansion->expansion.begin;
+  for (const Entry* e = entry(loc); e && e->expansion; e = entry(loc)) loc = e->expansion->expansion.begin;
   return loc;
 }
 
@@ -179,8 +173,8 @@ PresumedLocation SourceManager::presumed(SourceLocation loc) const {
     if (d.offset <= offset) active = &d;
   if (!active) return p;
   const auto& starts = line_starts(*e);
-  uint32_t directive_line = static_cast<uint32_t>(
-      std::upper_bound(starts.begin(), starts.end(), active->offset) - starts.begin());
+  uint32_t directive_line =
+      static_cast<uint32_t>(std::upper_bound(starts.begin(), starts.end(), active->offset) - starts.begin());
   p.line = active->line + (p.line - directive_line);
   if (!active->file.empty()) p.file = active->file;
   // Later directives without a file name keep the name of the latest one that had one.

@@ -93,8 +93,8 @@ class Arena {
 
   std::vector<std::unique_ptr<std::byte[]>> blocks_;
   std::byte* next_ = nullptr;
-  size_t left_ = 0;        // bytes free after next_ in the current block
-  size_t last_size_ = 0;   // size of the last regular block
+  size_t left_ = 0;       // bytes free after next_ in the current block
+  size_t last_size_ = 0;  // size of the last regular block
 };
 
 // A list whose elements live in an Arena: the read side of a std::vector (iteration,

@@ -27,17 +27,34 @@ struct TokenSpan {
 
 // Storage classes and modifiers in front of a declaration (bit set).
 enum StorageClass : uint32_t {
-  kShared = 1u << 0, kStatic = 1u << 1, kUniform = 1u << 2, kConst = 1u << 3,
-  kExtern = 1u << 4, kVolatile = 1u << 5, kRowMajor = 1u << 6, kColumnMajor = 1u << 7,
-  kGroupShared = 1u << 8, kIn = 1u << 9, kOut = 1u << 10, kInOut = 1u << 11,
-  kNoInterpolation = 1u << 12, kLinear = 1u << 13, kCentroid = 1u << 14, kPrecise = 1u << 15,
-  kNoPerspective = 1u << 16, kSample = 1u << 17,
+  kShared = 1u << 0,
+  kStatic = 1u << 1,
+  kUniform = 1u << 2,
+  kConst = 1u << 3,
+  kExtern = 1u << 4,
+  kVolatile = 1u << 5,
+  kRowMajor = 1u << 6,
+  kColumnMajor = 1u << 7,
+  kGroupShared = 1u << 8,
+  kIn = 1u << 9,
+  kOut = 1u << 10,
+  kInOut = 1u << 11,
+  kNoInterpolation = 1u << 12,
+  kLinear = 1u << 13,
+  kCentroid = 1u << 14,
+  kPrecise = 1u << 15,
+  kNoPerspective = 1u << 16,
+  kSample = 1u << 17,
   kInline = 1u << 18,
   // Geometry shader input primitives in front of a parameter (`triangle VSOut v[3]`).
-  kPoint = 1u << 19, kLine = 1u << 20, kTriangle = 1u << 21, kLineAdj = 1u << 22,
+  kPoint = 1u << 19,
+  kLine = 1u << 20,
+  kTriangle = 1u << 21,
+  kLineAdj = 1u << 22,
   kTriangleAdj = 1u << 23,
   // Resource element normalisation (`unorm float4`), for typed buffers and textures.
-  kUnorm = 1u << 24, kSnorm = 1u << 25,
+  kUnorm = 1u << 24,
+  kSnorm = 1u << 25,
 };
 
 // A type as written: `float4x4`, `texture2D`, `Texture2D<float4>`, `sampler_state`, a
@@ -82,12 +99,12 @@ struct Expr {
   ExprKind kind{};
   SourceRange range;
   Text text;
-  Text callee;              // compile: the entry function
-  double number = 0;        // numeric literals
+  Text callee;                    // compile: the entry function
+  double number = 0;              // numeric literals
   std::span<const ExprPtr> args;  // stored in the effect's ExprPool
-  List<StateAssignment> states;  // state_block
-  TokenSpan code;           // asm_block: tokens between the braces
-  TokenSpan decl_code;      // asm_block: `decl { }` tokens (empty if absent)
+  List<StateAssignment> states;   // state_block
+  TokenSpan code;                 // asm_block: tokens between the braces
+  TokenSpan decl_code;            // asm_block: `decl { }` tokens (empty if absent)
 };
 
 // Owns an effect's expression nodes and argument lists. Both live in blocks, so a tree
@@ -111,7 +128,7 @@ class ExprPool {
 
 struct Annotation {
   uint32_t storage = 0;  // StorageClass bits written in front (fxc allows none of `static`)
-  TypeRef type;  // string, float, float2, int, bool, ... (may carry array dims below)
+  TypeRef type;          // string, float, float2, int, bool, ... (may carry array dims below)
   Text name;
   List<ExprPtr> array_dims;
   ExprPtr value = nullptr;
@@ -119,9 +136,9 @@ struct Annotation {
 };
 
 struct StateAssignment {
-  Text name;                  // as written; the state table is case-insensitive
+  Text name;  // as written; the state table is case-insensitive
   SourceRange name_range;
-  ExprPtr index = nullptr;    // `Texture[3]` (null if not indexed)
+  ExprPtr index = nullptr;  // `Texture[3]` (null if not indexed)
   ExprPtr value = nullptr;
   SourceRange range;
   // D3D10/11 call form `SetVertexShader(CompileShader(vs_4_0, VS()));`: name is the
@@ -130,18 +147,18 @@ struct StateAssignment {
 };
 
 struct Variable {
-  uint32_t storage = 0;       // StorageClass bits
+  uint32_t storage = 0;  // StorageClass bits
   TypeRef type;
   Text name;
   SourceRange name_range;
   List<ExprPtr> array_dims;  // `float4 a[4][2]`: {4, 2}; an empty dim is null
-  Text semantic;              // `: POSITION` (empty if none)
-  Text register_binding;  // `: register(c0)` (empty if none)
-  Text packoffset;            // `: packoffset(c0.y)` -> "c0.y" (empty if none)
+  Text semantic;             // `: POSITION` (empty if none)
+  Text register_binding;     // `: register(c0)` (empty if none)
+  Text packoffset;           // `: packoffset(c0.y)` -> "c0.y" (empty if none)
   List<Annotation> annotations;
   ExprPtr initializer = nullptr;
   SourceRange range;
-  TokenSpan tokens;           // the whole declaration, for the shader compiler
+  TokenSpan tokens;  // the whole declaration, for the shader compiler
 };
 
 // What declared a Struct: HLSL `struct`, or fx_5_0 dynamic linkage's `interface` (methods
@@ -153,9 +170,9 @@ struct Struct {
   StructKind kind = StructKind::structure;
   Text name;
   SourceRange name_range;
-  List<Text> bases;           // `class C : I, J` -> I, J: the interfaces it implements
+  List<Text> bases;  // `class C : I, J` -> I, J: the interfaces it implements
   List<Variable> members;
-  List<Function> methods;     // interface and class member functions
+  List<Function> methods;  // interface and class member functions
   SourceRange range;
   TokenSpan tokens;
 };
@@ -170,15 +187,15 @@ struct Typedef {
 
 struct Function {
   TypeRef return_type;
-  uint32_t storage = 0;       // `inline`, `static` etc. in front of it
+  uint32_t storage = 0;  // `inline`, `static` etc. in front of it
   Text name;
   SourceRange name_range;
   List<Variable> params;  // storage carries in/out/inout/uniform
   Text semantic;
   List<Text> attributes;  // `[numthreads(8,8,1)]` as written
-  TokenSpan body;             // tokens between the braces (empty for a prototype)
+  TokenSpan body;         // tokens between the braces (empty for a prototype)
   SourceRange range;
-  TokenSpan tokens;           // the whole definition
+  TokenSpan tokens;  // the whole definition
   // A method defined outside its class (`float3 C::M(float3 n) { ... }` after
   // `class C { float3 M(float3 n); };`): "C", and the prototype in the class it completes.
   // The definition replaces that prototype in C's `methods`; it is no file-scope Decl.
@@ -187,7 +204,7 @@ struct Function {
 };
 
 struct Pass {
-  Text name;                  // may be empty
+  Text name;  // may be empty
   SourceRange name_range;
   List<Annotation> annotations;
   List<StateAssignment> states;
@@ -195,8 +212,8 @@ struct Pass {
 };
 
 struct Technique {
-  int version = 9;            // 9: technique, 10: technique10, 11: technique11
-  Text name;                  // may be empty
+  int version = 9;  // 9: technique, 10: technique10, 11: technique11
+  Text name;        // may be empty
   SourceRange name_range;
   List<Annotation> annotations;
   List<Pass> passes;
@@ -205,8 +222,8 @@ struct Technique {
 
 // D3D10/11 state objects: `BlendState name { ... };`, also arrays `SamplerState s[2] {...}`.
 struct StateObject {
-  Text kind;                  // BlendState, DepthStencilState, RasterizerState, SamplerState,
-                              // SamplerComparisonState (as written)
+  Text kind;  // BlendState, DepthStencilState, RasterizerState, SamplerState,
+              // SamplerComparisonState (as written)
   Text name;
   SourceRange name_range;
   List<ExprPtr> array_dims;
@@ -255,8 +272,16 @@ struct Directive {
 };
 
 enum class DeclKind : uint8_t {
-  variable, structure, type_alias, function, technique, state_object, constant_buffer,
-  group, glsl_block, directive,
+  variable,
+  structure,
+  type_alias,
+  function,
+  technique,
+  state_object,
+  constant_buffer,
+  group,
+  glsl_block,
+  directive,
 };
 
 // Owns an effect's declarations (the nodes a Decl points to), each type in blocks of its
@@ -271,9 +296,9 @@ class DeclPool {
   }
 
  private:
-  std::tuple<NodeBlocks<Variable>, NodeBlocks<Struct>, NodeBlocks<Typedef>, NodeBlocks<Function>,
-             NodeBlocks<Technique>, NodeBlocks<StateObject>, NodeBlocks<ConstantBuffer>,
-             NodeBlocks<FxGroup>, NodeBlocks<GlslBlock>, NodeBlocks<Directive>>
+  std::tuple<NodeBlocks<Variable>, NodeBlocks<Struct>, NodeBlocks<Typedef>, NodeBlocks<Function>, NodeBlocks<Technique>,
+             NodeBlocks<StateObject>, NodeBlocks<ConstantBuffer>, NodeBlocks<FxGroup>, NodeBlocks<GlslBlock>,
+             NodeBlocks<Directive>>
       nodes_;
 };
 
@@ -296,10 +321,8 @@ struct Decl {
 // Every node is trivially destructible (its texts and lists live in the Arena), so an
 // effect's teardown frees blocks and destroys no node.
 static_assert(std::is_trivially_destructible_v<Expr> && std::is_trivially_destructible_v<Variable> &&
-              std::is_trivially_destructible_v<Function> &&
-              std::is_trivially_destructible_v<Technique> &&
-              std::is_trivially_destructible_v<StateObject> &&
-              std::is_trivially_destructible_v<FxGroup> &&
+              std::is_trivially_destructible_v<Function> && std::is_trivially_destructible_v<Technique> &&
+              std::is_trivially_destructible_v<StateObject> && std::is_trivially_destructible_v<FxGroup> &&
               std::is_trivially_destructible_v<Directive>);
 
 struct Effect {

@@ -35,9 +35,7 @@ class Lexer {
   BufferId buffer() const { return buffer_; }
 
  private:
-  char peek(size_t ahead = 0) const {
-    return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
-  }
+  char peek(size_t ahead = 0) const { return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0'; }
   // The location of a buffer offset; the buffer's base is cached because this runs once
   // per token (SourceManager::location is an out-of-line bounds-checked lookup).
   SourceLocation at(size_t offset) const {

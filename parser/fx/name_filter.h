@@ -27,8 +27,7 @@ class NameFilter {
   // The first character picks the bit (its low six bits tell letters and '_' apart), the
   // length and last character the word: two loads beside the length, no multiply.
   static size_t slot(std::string_view n) {
-    return (n.size() * 8 + static_cast<unsigned char>(n.back())) % kWords * 64 +
-           static_cast<unsigned char>(n[0]) % 64;
+    return (n.size() * 8 + static_cast<unsigned char>(n.back())) % kWords * 64 + static_cast<unsigned char>(n[0]) % 64;
   }
   std::array<uint64_t, kWords> bits_{};
 };

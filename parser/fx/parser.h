@@ -22,8 +22,8 @@ struct ParseOptions {
 // Parses `tokens` (ending in TokenKind::eof; one is appended if missing). Errors are
 // reported into `diags`; the returned Effect holds every declaration that parsed, and
 // owns the tokens its TokenSpans index.
-ast::Effect parse_effect(std::vector<Token> tokens, const SourceManager& sm,
-                         DiagnosticSink& diags, const ParseOptions& options = {});
+ast::Effect parse_effect(std::vector<Token> tokens, const SourceManager& sm, DiagnosticSink& diags,
+                         const ParseOptions& options = {});
 
 // Lexes a whole buffer without preprocessing (tests, tools that skip the preprocessor).
 // The result ends with the eof token. Characters that start no token are reported and left

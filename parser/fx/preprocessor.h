@@ -41,8 +41,8 @@ struct PreprocessorOptions {
   std::vector<std::string> include_dirs;  // searched in order (after the includer's folder)
   // Each pair is `#define first second`; see parse_define for the `-D` syntax.
   std::vector<std::pair<std::string, std::string>> defines;
-  FileLoader loader;        // empty: disk_file_loader()
-  DirectoryLister lister;   // empty: the disk when `loader` is empty, else no case fallback
+  FileLoader loader;       // empty: disk_file_loader()
+  DirectoryLister lister;  // empty: the disk when `loader` is empty, else no case fallback
   PreprocessorLimits limits;
 };
 

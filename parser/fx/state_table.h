@@ -60,8 +60,16 @@ std::string_view to_string(VulkanMeaning meaning);
 
 // Where on Vulkan a state lands (for the runtime's pipeline key and validation).
 enum class VulkanArea : uint8_t {
-  none, shader_stage, shader_constants, resource_binding, input_assembly, rasterization,
-  depth_stencil, color_blend, multisample, sampler,
+  none,
+  shader_stage,
+  shader_constants,
+  resource_binding,
+  input_assembly,
+  rasterization,
+  depth_stencil,
+  color_blend,
+  multisample,
+  sampler,
 };
 std::string_view to_string(VulkanArea area);
 
@@ -88,27 +96,76 @@ std::string_view to_string(StateLanding landing);
 enum class StateField : uint8_t {
   none,
   // Depth and stencil.
-  depth_test, depth_write, depth_compare, stencil_test, stencil_read_mask, stencil_write_mask,
-  stencil_front_fail, stencil_front_depth_fail, stencil_front_pass, stencil_front_compare,
-  stencil_back_fail, stencil_back_depth_fail, stencil_back_pass, stencil_back_compare,
+  depth_test,
+  depth_write,
+  depth_compare,
+  stencil_test,
+  stencil_read_mask,
+  stencil_write_mask,
+  stencil_front_fail,
+  stencil_front_depth_fail,
+  stencil_front_pass,
+  stencil_front_compare,
+  stencil_back_fail,
+  stencil_back_depth_fail,
+  stencil_back_pass,
+  stencil_back_compare,
   stencil_two_sided,  // D3D9: without it the back face copies the front
   stencil_ref,
   // Rasterization.
-  fill, cull, front_face_ccw, depth_bias_d3d9, depth_bias_units, depth_bias_clamp, depth_bias_slope,
-  depth_clip, scissor, multisample, antialiased_lines,
+  fill,
+  cull,
+  front_face_ccw,
+  depth_bias_d3d9,
+  depth_bias_units,
+  depth_bias_clamp,
+  depth_bias_slope,
+  depth_clip,
+  scissor,
+  multisample,
+  antialiased_lines,
   // Blending and output: the blend fields write TargetBlend of StateInfo::target (or the index).
-  blend_enable, src_color, dst_color, color_op, src_alpha, dst_alpha, alpha_op,
+  blend_enable,
+  src_color,
+  dst_color,
+  color_op,
+  src_alpha,
+  dst_alpha,
+  alpha_op,
   separate_alpha,  // D3D9: without it alpha blends like colour
-  write_mask, blend_constants, alpha_to_coverage, sample_mask, srgb_write, alpha_test, alpha_compare,
+  write_mask,
+  blend_constants,
+  alpha_to_coverage,
+  sample_mask,
+  srgb_write,
+  alpha_test,
+  alpha_compare,
   alpha_ref,
   state_object,  // applies a D3D10/11 state object of StateInfo::object_kind
   // Bindings.
-  shader, shader_constants, texture, sampler,
+  shader,
+  shader_constants,
+  texture,
+  sampler,
   // Sampler descriptions.
-  address_u, address_v, address_w, border_color, mag_filter, min_filter, mip_filter, lod_bias,
-  max_mip_level, max_anisotropy, srgb_texture, min_lod, max_lod, compare, filter_bits,
+  address_u,
+  address_v,
+  address_w,
+  border_color,
+  mag_filter,
+  min_filter,
+  mip_filter,
+  lod_bias,
+  max_mip_level,
+  max_anisotropy,
+  srgb_texture,
+  min_lod,
+  max_lod,
+  compare,
+  filter_bits,
   // Fixed-function texture stages (validated against the device's stages).
-  stage_color_op, stage_alpha_op,
+  stage_color_op,
+  stage_alpha_op,
 };
 std::string_view to_string(StateField field);
 
@@ -143,24 +200,24 @@ struct EnumValue {
 // A set of enumeration values. Names match case-insensitively, ignoring underscores and
 // any of the prefixes: `D3DBLEND_SRCALPHA`, `SrcAlpha`, `SRC_ALPHA` are one name.
 struct EnumSet {
-  std::string_view name;                     // "blend", "cmp", ...
+  std::string_view name;  // "blend", "cmp", ...
   std::span<const EnumValue> values;
   std::span<const std::string_view> prefixes;  // "D3DBLEND_", "D3D10_BLEND_", ...
 };
 
 // One row of the state table.
 struct StateInfo {
-  std::string_view name;       // canonical spelling; lookup is case-insensitive
+  std::string_view name;  // canonical spelling; lookup is case-insensitive
   StateBlock block = StateBlock::pass;
   StateValueType type = StateValueType::integer;
   const EnumSet* enums = nullptr;  // for enumeration and flags
-  uint16_t index_count = 0;    // 0: not indexable; else valid indices are [0, index_count)
-  bool index_required = false; // `VertexShaderConstant[n]`; others default to index 0
-  uint8_t call_args = 0;       // D3D10/11 pass calls (`SetBlendState(b, f, m)`): arguments
+  uint16_t index_count = 0;        // 0: not indexable; else valid indices are [0, index_count)
+  bool index_required = false;     // `VertexShaderConstant[n]`; others default to index 0
+  uint8_t call_args = 0;           // D3D10/11 pass calls (`SetBlendState(b, f, m)`): arguments
   StateApi api = StateApi::d3d9;
   VulkanMeaning vulkan = VulkanMeaning::maps_to_vulkan;
   VulkanArea area = VulkanArea::none;
-  std::string_view object_kind;  // state_object: the block the argument must be
+  std::string_view object_kind;    // state_object: the block the argument must be
   std::optional<PassStage> stage;  // shader states: the stage whose code they name
   StateLanding lands = StateLanding::unsupported;
   StateField field = StateField::none;

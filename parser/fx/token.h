@@ -21,14 +21,54 @@ enum class TokenKind : uint8_t {
   character,   // 'c' with its quotes
   directive,   // a kept directive line for the shader compiler: #pragma, #version, #extension
   // punctuators
-  l_paren, r_paren, l_square, r_square, l_brace, r_brace,
-  semi, comma, period, colon, coloncolon, question, tilde, exclaim,
-  plus, minus, star, slash, percent, caret, amp, pipe, equal, less, greater,
-  plusplus, minusminus, arrow,
-  plusequal, minusequal, starequal, slashequal, percentequal,
-  ampequal, pipeequal, caretequal, lessless, greatergreater, lesslessequal, greatergreaterequal,
-  equalequal, exclaimequal, lessequal, greaterequal, ampamp, pipepipe,
-  hash, hashhash,
+  l_paren,
+  r_paren,
+  l_square,
+  r_square,
+  l_brace,
+  r_brace,
+  semi,
+  comma,
+  period,
+  colon,
+  coloncolon,
+  question,
+  tilde,
+  exclaim,
+  plus,
+  minus,
+  star,
+  slash,
+  percent,
+  caret,
+  amp,
+  pipe,
+  equal,
+  less,
+  greater,
+  plusplus,
+  minusminus,
+  arrow,
+  plusequal,
+  minusequal,
+  starequal,
+  slashequal,
+  percentequal,
+  ampequal,
+  pipeequal,
+  caretequal,
+  lessless,
+  greatergreater,
+  lesslessequal,
+  greatergreaterequal,
+  equalequal,
+  exclaimequal,
+  lessequal,
+  greaterequal,
+  ampamp,
+  pipepipe,
+  hash,
+  hashhash,
   unknown,  // a character that starts no token; the lexer has reported it
 };
 
@@ -36,10 +76,10 @@ enum class TokenKind : uint8_t {
 const char* spelling(TokenKind kind);
 
 enum TokenFlags : uint8_t {
-  kAtLineStart = 1 << 0,    // first token on its line (directives start here)
-  kLeadingSpace = 1 << 1,   // whitespace or a comment before it (for # stringizing)
-  kNoExpand = 1 << 2,       // an identifier naming a macro that must not expand again
-  kFromMacro = 1 << 3,      // produced by a macro expansion
+  kAtLineStart = 1 << 0,   // first token on its line (directives start here)
+  kLeadingSpace = 1 << 1,  // whitespace or a comment before it (for # stringizing)
+  kNoExpand = 1 << 2,      // an identifier naming a macro that must not expand again
+  kFromMacro = 1 << 3,     // produced by a macro expansion
 };
 
 // 16 bytes, since a 10 MB effect makes over 3 million tokens and the parser walks them
@@ -61,12 +101,14 @@ struct Token {
 
   // The spelling, owned by the SourceManager.
   std::string_view text() const {
-    if (text_size_ != kLongText) [[likely]] return {text_.data, text_size_};
+    if (text_size_ != kLongText) [[likely]]
+      return {text_.data, text_size_};
     return *text_.long_view;
   }
   // Sets the spelling to text the SourceManager owns (a buffer's or scratch space's).
   void set_text(std::string_view text, SourceManager& sm) {
-    if (text.size() < kLongText) [[likely]] set_short_text(text);
+    if (text.size() < kLongText) [[likely]]
+      set_short_text(text);
     else set_long_text(text, sm);
   }
   // The same for a spelling shorter than kLongText, such as a punctuator's or a part of
@@ -78,14 +120,10 @@ struct Token {
   }
 
   bool is(TokenKind k) const { return kind == k; }
-  bool is_identifier(std::string_view name) const {
-    return kind == TokenKind::identifier && text() == name;
-  }
+  bool is_identifier(std::string_view name) const { return kind == TokenKind::identifier && text() == name; }
   bool at_line_start() const { return flags & kAtLineStart; }
   bool leading_space() const { return flags & kLeadingSpace; }
-  SourceRange range() const {
-    return {loc, loc.offset(static_cast<uint32_t>(text().size()))};
-  }
+  SourceRange range() const { return {loc, loc.offset(static_cast<uint32_t>(text().size()))}; }
 
  private:
   [[gnu::noinline]] void set_long_text(std::string_view text, SourceManager& sm);

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <array>
 
-#include "fx/name_filter.h"
 #include "checker_internal.h"
+#include "fx/name_filter.h"
 
 namespace fx {
 namespace check {
@@ -15,21 +15,19 @@ namespace {
 // Components of a numeric type name (`float3` 3, `float4x4` 16, `int` 1), or 0 when the
 // type is not numeric (string, texture, struct names).
 int numeric_components(std::string_view type) {
-  static constexpr std::string_view kScalars[] = {
-      "bool", "int", "uint", "dword", "half", "float", "double", "min16float", "min10float",
-      "min16int", "min12int", "min16uint"};
+  static constexpr std::string_view kScalars[] = {"bool",       "int",      "uint",     "dword",
+                                                  "half",       "float",    "double",   "min16float",
+                                                  "min10float", "min16int", "min12int", "min16uint"};
   if (type.empty()) return 0;
   const char first = ascii_lower(type[0]);
   for (std::string_view scalar : kScalars) {
     // The first letter rules out most rows before a case-folding compare.
-    if (scalar[0] != first || type.size() < scalar.size() ||
-        !iequals(type.substr(0, scalar.size()), scalar))
-      continue;
+    if (scalar[0] != first || type.size() < scalar.size() || !iequals(type.substr(0, scalar.size()), scalar)) continue;
     std::string_view rest = type.substr(scalar.size());
     if (rest.empty()) return 1;
     if (rest.size() == 1 && rest[0] >= '1' && rest[0] <= '4') return rest[0] - '0';
-    if (rest.size() == 3 && ascii_lower(rest[1]) == 'x' && rest[0] >= '1' && rest[0] <= '4' &&
-        rest[2] >= '1' && rest[2] <= '4')
+    if (rest.size() == 3 && ascii_lower(rest[1]) == 'x' && rest[0] >= '1' && rest[0] <= '4' && rest[2] >= '1' &&
+        rest[2] <= '4')
       return (rest[0] - '0') * (rest[2] - '0');
   }
   return 0;
@@ -38,8 +36,7 @@ int numeric_components(std::string_view type) {
 // A type an annotation may have: numeric (scalars, vectors, matrices, `vector`/`matrix`
 // templates), bool or string.
 bool annotation_type(std::string_view type) {
-  return numeric_components(type) > 0 || iequals(type, "string") || type == "vector" ||
-         type == "matrix";
+  return numeric_components(type) > 0 || iequals(type, "string") || type == "vector" || type == "matrix";
 }
 
 // The first identifier in `e` that names one of `annotations`, or nullptr.
@@ -58,12 +55,10 @@ const ast::Expr* annotation_named_in(const ast::Expr& e, const ast::List<ast::An
 // Leaves of a (possibly nested) initializer list; nullopt if any is not a literal.
 std::optional<size_t> literal_leaves(const ast::Expr& e) {
   if (e.kind != ast::ExprKind::init_list) {
-    bool literal = e.kind == ast::ExprKind::int_literal ||
-                   e.kind == ast::ExprKind::float_literal ||
+    bool literal = e.kind == ast::ExprKind::int_literal || e.kind == ast::ExprKind::float_literal ||
                    e.kind == ast::ExprKind::bool_literal ||
                    (e.kind == ast::ExprKind::unary && e.args.size() == 1 && e.args[0] &&
-                    (e.args[0]->kind == ast::ExprKind::int_literal ||
-                     e.args[0]->kind == ast::ExprKind::float_literal));
+                    (e.args[0]->kind == ast::ExprKind::int_literal || e.args[0]->kind == ast::ExprKind::float_literal));
     return literal ? std::optional<size_t>(1) : std::nullopt;
   }
   size_t n = 0;
@@ -79,15 +74,13 @@ std::optional<size_t> literal_leaves(const ast::Expr& e) {
 bool contains_string(const ast::Expr& e) {
   if (e.kind == ast::ExprKind::string_literal) return true;
   if (e.kind != ast::ExprKind::init_list) return false;
-  return std::any_of(e.args.begin(), e.args.end(),
-                     [](const ast::ExprPtr& a) { return a && contains_string(*a); });
+  return std::any_of(e.args.begin(), e.args.end(), [](const ast::ExprPtr& a) { return a && contains_string(*a); });
 }
 
 bool only_strings(const ast::Expr& e) {
   if (e.kind == ast::ExprKind::string_literal) return true;
   if (e.kind != ast::ExprKind::init_list) return false;
-  return std::all_of(e.args.begin(), e.args.end(),
-                     [](const ast::ExprPtr& a) { return a && only_strings(*a); });
+  return std::all_of(e.args.begin(), e.args.end(), [](const ast::ExprPtr& a) { return a && only_strings(*a); });
 }
 
 // A function's parameter types as one string, to tell overloads from redefinitions.
@@ -118,8 +111,7 @@ std::string quote(std::string_view text) {
   return quoted;
 }
 
-Checker::Checker(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& diags,
-                 const CheckOptions& options)
+Checker::Checker(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& diags, const CheckOptions& options)
     : effect_(effect), sm_(sm), diags_(diags), options_(options) {
   profile_ = options.profile == EffectProfile::automatic ? header_profile(effect) : options.profile;
 }
@@ -154,8 +146,7 @@ void Checker::run() {
         check_annotations(o.annotations);
         if (std::optional<StateBlock> block = state_object_block(o.kind)) {
           check_states(o.states, *block, 10);
-          for (const ast::List<ast::StateAssignment>& element : o.element_states)
-            check_states(element, *block, 10);
+          for (const ast::List<ast::StateAssignment>& element : o.element_states) check_states(element, *block, 10);
         }
         break;
       }
@@ -177,15 +168,13 @@ void Checker::run() {
   }
 }
 
-void Checker::report_duplicate(std::string_view what, std::string_view name, SourceRange range,
-                               SourceRange previous) {
-  Diagnostic& d = diags_.error("duplicate-definition", range,
-                               std::string(what) + " " + quote(name) + " is already defined");
+void Checker::report_duplicate(std::string_view what, std::string_view name, SourceRange range, SourceRange previous) {
+  Diagnostic& d =
+      diags_.error("duplicate-definition", range, std::string(what) + " " + quote(name) + " is already defined");
   if (previous.valid()) d.notes.push_back({previous.begin, "previous definition is here"});
 }
 
-void Checker::define(std::string_view name, SourceRange range, Symbol symbol,
-                     std::string_view what) {
+void Checker::define(std::string_view name, SourceRange range, Symbol symbol, std::string_view what) {
   if (name.empty()) return;
   symbol.range = range;
   auto [entry, fresh] = globals_.emplace(name, symbol);
@@ -208,8 +197,8 @@ void Checker::collect_symbols() {
           define(v.name, v.name_range, {Symbol::variable, v.type.name, {}}, "parameter");
         break;
       case ast::DeclKind::state_object:
-        define(d.state_object->name, d.state_object->name_range,
-               {Symbol::state_object, d.state_object->kind, {}}, "state object");
+        define(d.state_object->name, d.state_object->name_range, {Symbol::state_object, d.state_object->kind, {}},
+               "state object");
         break;
       case ast::DeclKind::structure:
         define(d.structure->name, d.structure->name_range, {Symbol::structure, {}, {}}, "struct");
@@ -219,12 +208,9 @@ void Checker::collect_symbols() {
         define(d.type_alias->name, d.type_alias->range, {Symbol::type_alias, {}, {}}, "typedef");
         break;
       case ast::DeclKind::glsl_block:
-        define(d.glsl_block->name, d.glsl_block->name_range, {Symbol::glsl_block, {}, {}},
-               "GLSL block");
+        define(d.glsl_block->name, d.glsl_block->name_range, {Symbol::glsl_block, {}, {}}, "GLSL block");
         break;
-      case ast::DeclKind::function:
-        functions_.emplace_back(d.function->name, d.function);
-        break;
+      case ast::DeclKind::function: functions_.emplace_back(d.function->name, d.function); break;
       case ast::DeclKind::technique:
         has_technique_ = true;
         has_d3d9_technique_ |= d.technique->version == 9;
@@ -245,8 +231,7 @@ void Checker::check_functions() {
   std::vector<std::pair<std::string, const ast::Function*>> defined;
   for (auto group = functions_.begin(); group != functions_.end();) {
     std::string_view name = group->first;
-    auto group_end = std::find_if(group, functions_.end(),
-                                  [&](const auto& f) { return f.first != name; });
+    auto group_end = std::find_if(group, functions_.end(), [&](const auto& f) { return f.first != name; });
     if (const Symbol* s = lookup(name)) {
       report_duplicate("function", name, group->second->name_range, s->range);
     }
@@ -260,8 +245,7 @@ void Checker::check_functions() {
       const ast::Function* f = group->second;
       if (f->body.empty()) continue;
       std::string sig = signature(*f);
-      auto prev = std::find_if(defined.begin(), defined.end(),
-                               [&](const auto& p) { return p.first == sig; });
+      auto prev = std::find_if(defined.begin(), defined.end(), [&](const auto& p) { return p.first == sig; });
       if (prev != defined.end()) {
         report_duplicate("function", name, f->name_range, prev->second->name_range);
       } else {
@@ -304,8 +288,7 @@ void Checker::check_against_profile(EffectProfile profile) {
     bool explicit_profile = options_.profile != EffectProfile::automatic;
     if (t.version == 9 && profile >= EffectProfile::fx_4_0 && explicit_profile)
       diags_.warning("d3d9-technique", at,
-                     "a Direct3D 9 'technique' in an " + std::string(to_string(profile)) +
-                         " effect; use technique" +
+                     "a Direct3D 9 'technique' in an " + std::string(to_string(profile)) + " effect; use technique" +
                          (profile == EffectProfile::fx_5_0 ? "11" : "10"));
   };
   for (const ast::Decl& d : effect_.decls) {
@@ -316,9 +299,8 @@ void Checker::check_against_profile(EffectProfile profile) {
         for (const ast::Technique& t : d.group->techniques) technique(t);
         break;
       case ast::DeclKind::state_object:
-        require(EffectProfile::fx_4_0, d.state_object->name_range.valid()
-                                           ? d.state_object->name_range
-                                           : d.state_object->range,
+        require(EffectProfile::fx_4_0,
+                d.state_object->name_range.valid() ? d.state_object->name_range : d.state_object->range,
                 d.state_object->kind);
         break;
       case ast::DeclKind::constant_buffer:
@@ -335,30 +317,26 @@ void Checker::check_against_profile(EffectProfile profile) {
   }
 }
 
-void Checker::check_value_type(std::string_view type_name, size_t array_dims,
-                               const ast::Expr& value, std::string_view what,
-                               std::string_view name, std::string_view id) {
+void Checker::check_value_type(std::string_view type_name, size_t array_dims, const ast::Expr& value,
+                               std::string_view what, std::string_view name, std::string_view id) {
   // Built only for a report: this runs for every parameter and annotation.
   auto subject = [&] { return std::string(what) + " " + quote(name); };
   if (iequals(type_name, "string")) {
-    if (!only_strings(value))
-      diags_.error(std::string(id), value.range, subject() + " is a string; its value is not");
+    if (!only_strings(value)) diags_.error(std::string(id), value.range, subject() + " is a string; its value is not");
     return;
   }
   int components = numeric_components(type_name);
   if (components == 0) return;
   if (contains_string(value)) {
-    diags_.error(std::string(id), value.range,
-                 subject() + " is " + quote(type_name) + "; its value is a string");
+    diags_.error(std::string(id), value.range, subject() + " is " + quote(type_name) + "; its value is a string");
     return;
   }
   if (array_dims != 0 || value.kind != ast::ExprKind::init_list) return;
   std::optional<size_t> leaves = literal_leaves(value);
   if (leaves && *leaves != static_cast<size_t>(components))
     diags_.error(std::string(id), value.range,
-                 subject() + " is " + quote(type_name) + " with " + std::to_string(components) +
-                     " component" + (components == 1 ? "" : "s") + "; its value has " +
-                     std::to_string(*leaves));
+                 subject() + " is " + quote(type_name) + " with " + std::to_string(components) + " component" +
+                     (components == 1 ? "" : "s") + "; its value has " + std::to_string(*leaves));
 }
 
 void Checker::check_annotations(const ast::List<ast::Annotation>& annotations) {
@@ -368,8 +346,7 @@ void Checker::check_annotations(const ast::List<ast::Annotation>& annotations) {
       report_duplicate("annotation", a.name, a.range, *previous);
     // fxc's rules for annotations: literal values of numeric, bool or string type.
     if (a.storage & ast::kStatic)
-      diags_.error("annotation-static", a.range,
-                   "annotation " + quote(a.name) + " cannot be 'static'");
+      diags_.error("annotation-static", a.range, "annotation " + quote(a.name) + " cannot be 'static'");
     if (!annotation_type(a.type.name))
       diags_.error("annotation-type", a.type.range,
                    "annotation " + quote(a.name) + " has type " + quote(a.type.name) +
@@ -379,8 +356,7 @@ void Checker::check_annotations(const ast::List<ast::Annotation>& annotations) {
       diags_.error("annotation-reference", other->range,
                    "annotation " + quote(a.name) + " refers to annotation " + quote(other->text) +
                        "; an annotation's value cannot use another annotation");
-    check_value_type(a.type.name, a.array_dims.size(), *a.value, "annotation", a.name,
-                     "annotation-type-mismatch");
+    check_value_type(a.type.name, a.array_dims.size(), *a.value, "annotation", a.name, "annotation-type-mismatch");
   }
 }
 
@@ -391,11 +367,9 @@ std::string Checker::object_member(const ast::TypeRef& type, int depth) const {
   if (!s || depth > 32) return {};  // struct types nest only this deep in real effects
   for (const ast::Variable& m : s->members) {
     std::string_view t = m.type.name;
-    if (starts_with_i(t, "texture") || starts_with_i(t, "sampler") || shader_type_stage(t) ||
-        state_object_block(t))
+    if (starts_with_i(t, "texture") || starts_with_i(t, "sampler") || shader_type_stage(t) || state_object_block(t))
       return std::string(m.name) + " (" + std::string(t) + ")";
-    if (std::string inner = object_member(m.type, depth + 1); !inner.empty())
-      return std::string(m.name) + "." + inner;
+    if (std::string inner = object_member(m.type, depth + 1); !inner.empty()) return std::string(m.name) + "." + inner;
   }
   return {};
 }
@@ -407,8 +381,8 @@ void Checker::check_variable(const ast::Variable& v) {
   if (!(v.storage & ast::kStatic))
     if (std::string member = object_member(v.type, 0); !member.empty())
       diags_.error("object-in-struct", v.name_range,
-                   "parameter " + quote(v.name) + " is a struct holding the object member " +
-                       member + "; an effect parameter's struct cannot hold objects");
+                   "parameter " + quote(v.name) + " is a struct holding the object member " + member +
+                       "; an effect parameter's struct cannot hold objects");
   if (!v.initializer) return;
   const ast::Expr& init = *v.initializer;
   if (init.kind == ast::ExprKind::state_block) {
@@ -417,8 +391,7 @@ void Checker::check_variable(const ast::Variable& v) {
     else check_sampler_state(init.states);
     return;
   }
-  check_value_type(v.type.name, v.array_dims.size(), init, "parameter", v.name,
-                   "parameter-type-mismatch");
+  check_value_type(v.type.name, v.array_dims.size(), init, "parameter", v.name, "parameter-type-mismatch");
 }
 
 void Checker::check_technique(const ast::Technique& t) {
@@ -447,9 +420,7 @@ void Checker::check_technique(const ast::Technique& t) {
   }
 }
 
-const Symbol* Checker::lookup(std::string_view name) const {
-  return globals_.find(name);
-}
+const Symbol* Checker::lookup(std::string_view name) const { return globals_.find(name); }
 
 std::vector<std::string_view> Checker::names_of(std::initializer_list<Symbol::Kind> kinds) const {
   std::vector<std::string_view> names;

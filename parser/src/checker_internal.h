@@ -39,8 +39,7 @@ class FirstSeen {
       return nullptr;
     }
     overflow_.reserve(2 * kSmall);
-    for (size_t i = 0; i < count_; ++i)
-      overflow_.emplace(small_.entries[i].first, small_.entries[i].second);
+    for (size_t i = 0; i < count_; ++i) overflow_.emplace(small_.entries[i].first, small_.entries[i].second);
     overflow_.emplace(key, value);
     return nullptr;
   }
@@ -88,8 +87,7 @@ std::optional<int64_t> literal_int(const ast::Expr& e);
 
 class Checker {
  public:
-  Checker(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& diags,
-          const CheckOptions& options);
+  Checker(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& diags, const CheckOptions& options);
   void run();
 
  private:
@@ -105,10 +103,9 @@ class Checker {
   // empty when there is none or `type` is no struct.
   std::string object_member(const ast::TypeRef& type, int depth) const;
   void check_technique(const ast::Technique& t);
-  void check_value_type(std::string_view type_name, size_t array_dims, const ast::Expr& value,
-                        std::string_view what, std::string_view name, std::string_view id);
-  void report_duplicate(std::string_view what, std::string_view name, SourceRange range,
-                        SourceRange previous);
+  void check_value_type(std::string_view type_name, size_t array_dims, const ast::Expr& value, std::string_view what,
+                        std::string_view name, std::string_view id);
+  void report_duplicate(std::string_view what, std::string_view name, SourceRange range, SourceRange previous);
 
   // --- checker_shader_code.cpp ---
   // The effect's shader code (functions, globals, structs, cbuffers, GLSL blocks) within
@@ -119,8 +116,8 @@ class Checker {
 
   // --- checker_states.cpp ---
   // `also`: a second block whose names count too (see check_sampler_state).
-  void check_states(const ast::List<ast::StateAssignment>& states, StateBlock block,
-                    int technique_version, std::optional<StateBlock> also = std::nullopt);
+  void check_states(const ast::List<ast::StateAssignment>& states, StateBlock block, int technique_version,
+                    std::optional<StateBlock> also = std::nullopt);
   void check_state(const ast::StateAssignment& a, StateBlock block, int technique_version,
                    FirstSeen<StateSlot, StateSlotHash>& seen, std::optional<StateBlock> also);
   void check_call_args(const StateInfo& info, const ast::StateAssignment& a);
@@ -154,7 +151,7 @@ class Checker {
   // and technique pass state needs, since inference reads exactly those: none of them can
   // mismatch it, so most effects never need it, and its walk over every pass is saved.
   mutable std::optional<EffectProfile> profile_;
-  bool has_technique_ = false;  // in the effect or one of its fxgroups
+  bool has_technique_ = false;       // in the effect or one of its fxgroups
   bool has_d3d9_technique_ = false;  // a `technique` (not technique10/11) at file scope
   // Keys view names owned by the effect, which outlives the checker.
   NameTable<Symbol> globals_;

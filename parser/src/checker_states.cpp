@@ -11,17 +11,15 @@ namespace fx::check {
 namespace {
 
 bool is_object_type(StateValueType t) {
-  return t == StateValueType::texture || t == StateValueType::sampler ||
-         t == StateValueType::shader || t == StateValueType::state_object;
+  return t == StateValueType::texture || t == StateValueType::sampler || t == StateValueType::shader ||
+         t == StateValueType::state_object;
 }
 // A state whose values have names: its enumeration's, or TRUE/FALSE for a boolean (the
 // sets find_enum and enum_names read).
-bool takes_value_names(const StateInfo& info) {
-  return info.enums || info.type == StateValueType::boolean;
-}
+bool takes_value_names(const StateInfo& info) { return info.enums || info.type == StateValueType::boolean; }
 bool takes_vector(StateValueType t) {
-  return t == StateValueType::color || t == StateValueType::float4 ||
-         t == StateValueType::matrix || t == StateValueType::shader_constant;
+  return t == StateValueType::color || t == StateValueType::float4 || t == StateValueType::matrix ||
+         t == StateValueType::shader_constant;
 }
 
 std::string_view block_phrase(StateBlock block) {
@@ -49,8 +47,7 @@ const std::vector<std::string>& shader_profiles() {
     for (const char* v : {"1_0", "1_1", "1_2", "1_3", "1_4", "2_0", "2_a", "2_b", "2_sw", "3_0", "3_sw", "4_0",
                           "4_0_level_9_1", "4_0_level_9_3", "4_1", "5_0"})
       p.push_back(std::string("ps_") + v);
-    for (const char* v : {"gs_4_0", "gs_4_1", "gs_5_0", "hs_5_0", "ds_5_0", "cs_4_0", "cs_4_1",
-                          "cs_5_0"})
+    for (const char* v : {"gs_4_0", "gs_4_1", "gs_5_0", "hs_5_0", "ds_5_0", "cs_4_0", "cs_4_1", "cs_5_0"})
       p.push_back(v);
     return p;
   }();
@@ -64,8 +61,7 @@ using PackedProfile = std::array<uint64_t, 2>;
 std::optional<PackedProfile> pack_profile(std::string_view profile) {
   std::array<char, sizeof(PackedProfile)> folded{};
   // A trailing '\0' would pack as the padding does (a string literal may hold one).
-  if (profile.size() > folded.size() || (!profile.empty() && profile.back() == '\0'))
-    return std::nullopt;
+  if (profile.size() > folded.size() || (!profile.empty() && profile.back() == '\0')) return std::nullopt;
   for (size_t i = 0; i < profile.size(); ++i) folded[i] = ascii_lower(profile[i]);
   PackedProfile packed;
   std::memcpy(packed.data(), folded.data(), folded.size());
@@ -122,8 +118,7 @@ std::optional<int64_t> literal_int(const ast::Expr& e) {
       if (e.text == "+") return *a + *b;
       if (e.text == "-") return *a - *b;
       if (e.text == "*") return *a * *b;
-      if ((e.text == "<<" || e.text == ">>") && *b >= 0 && *b < 63)
-        return e.text == "<<" ? *a << *b : *a >> *b;
+      if ((e.text == "<<" || e.text == ">>") && *b >= 0 && *b < 63) return e.text == "<<" ? *a << *b : *a >> *b;
       return std::nullopt;
     }
     default: return std::nullopt;
@@ -147,22 +142,20 @@ void Checker::check_sampler_state(const ast::List<ast::StateAssignment>& states)
   // An inferred fx_4_0+ profile beside a D3D9 technique: the file targets both runtimes
   // (as the SDK samples did), each compiling the sampler with its own names.
   const bool both = options_.profile == EffectProfile::automatic && has_d3d9_technique_;
-  check_states(states, StateBlock::sampler_object, 10,
-               both ? std::optional(StateBlock::sampler_state) : std::nullopt);
+  check_states(states, StateBlock::sampler_object, 10, both ? std::optional(StateBlock::sampler_state) : std::nullopt);
 }
 
-void Checker::check_states(const ast::List<ast::StateAssignment>& states, StateBlock block,
-                           int technique_version, std::optional<StateBlock> also) {
+void Checker::check_states(const ast::List<ast::StateAssignment>& states, StateBlock block, int technique_version,
+                           std::optional<StateBlock> also) {
   FirstSeen<StateSlot, StateSlotHash> seen;
   for (const ast::StateAssignment& a : states) check_state(a, block, technique_version, seen, also);
 }
 
 // A fix-it replacing `word` where it is written inside `range` (not through a macro).
-static std::optional<SourceRange> word_in(const SourceManager& sm, SourceRange range,
-                                          std::string_view word) {
+static std::optional<SourceRange> word_in(const SourceManager& sm, SourceRange range, std::string_view word) {
   if (!range.valid() || sm.is_expansion(range.begin) || word.empty()) return std::nullopt;
-  uint32_t length = range.end.raw > range.begin.raw ? range.end.raw - range.begin.raw
-                                                    : static_cast<uint32_t>(word.size());
+  uint32_t length =
+      range.end.raw > range.begin.raw ? range.end.raw - range.begin.raw : static_cast<uint32_t>(word.size());
   std::string_view text = sm.text_at(range.begin).substr(0, length);
   for (size_t at = text.find(word); at != std::string_view::npos; at = text.find(word, at + 1)) {
     auto is_ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
@@ -190,10 +183,10 @@ void Checker::check_state(const ast::StateAssignment& a, StateBlock block, int t
     const bool d3d9_block = block == StateBlock::sampler_state;
     if ((d3d9_block || block == StateBlock::sampler_object) &&
         find_state(a.name, d3d9_block ? StateBlock::sampler_object : StateBlock::sampler_state))
-      d.notes.push_back({a.name_range.begin,
-                         std::string(d3d9_block ? "a Direct3D 10 sampler state, read in fx_4_0 and later"
-                                                : "a Direct3D 9 sampler state, read in fx_2_0 only") +
-                             "; this effect is " + std::string(to_string(profile()))});
+      d.notes.push_back(
+          {a.name_range.begin, std::string(d3d9_block ? "a Direct3D 10 sampler state, read in fx_4_0 and later"
+                                                      : "a Direct3D 9 sampler state, read in fx_2_0 only") +
+                                   "; this effect is " + std::string(to_string(profile()))});
     return;
   }
   if (info->call_args && !a.call_style) {
@@ -203,8 +196,7 @@ void Checker::check_state(const ast::StateAssignment& a, StateBlock block, int t
   }
   if (!info->call_args && a.call_style) {
     diags_.error("state-call-form", a.name_range,
-                 quote(info->name) + " is assigned, not called: " + std::string(info->name) +
-                     " = value;");
+                 quote(info->name) + " is assigned, not called: " + std::string(info->name) + " = value;");
     return;
   }
   if (block == StateBlock::pass && !profile_allows(info->api)) {
@@ -216,8 +208,7 @@ void Checker::check_state(const ast::StateAssignment& a, StateBlock block, int t
   if (block == StateBlock::pass && technique_version >= 10 && info->api == StateApi::d3d9 &&
       info->area != VulkanArea::shader_stage) {
     diags_.warning("mixed-state-api", a.name_range,
-                   "Direct3D 9 state " + quote(info->name) + " in a technique" +
-                       std::to_string(technique_version) +
+                   "Direct3D 9 state " + quote(info->name) + " in a technique" + std::to_string(technique_version) +
                        " pass; Direct3D 10/11 passes set state through state objects");
   }
 
@@ -225,8 +216,7 @@ void Checker::check_state(const ast::StateAssignment& a, StateBlock block, int t
   bool index_known = true;
   if (a.index) {
     if (info->index_count == 0) {
-      diags_.error("state-not-indexable", a.index->range,
-                   "state " + quote(info->name) + " takes no index");
+      diags_.error("state-not-indexable", a.index->range, "state " + quote(info->name) + " takes no index");
       index_known = false;
     } else if (block == StateBlock::blend_state && info->target == kEveryTarget &&
                options_.profile == EffectProfile::fx_4_0) {
@@ -239,9 +229,8 @@ void Checker::check_state(const ast::StateAssignment& a, StateBlock block, int t
       index = *v;
       if (*v < 0 || *v >= info->index_count) {
         diags_.error("state-index-out-of-range", a.index->range,
-                     "index " + std::to_string(*v) + " is out of range for state " +
-                         quote(info->name) + "; valid indices are 0.." +
-                         std::to_string(info->index_count - 1));
+                     "index " + std::to_string(*v) + " is out of range for state " + quote(info->name) +
+                         "; valid indices are 0.." + std::to_string(info->index_count - 1));
         index_known = false;
       }
     } else {
@@ -249,14 +238,13 @@ void Checker::check_state(const ast::StateAssignment& a, StateBlock block, int t
     }
   } else if (info->index_required) {
     diags_.error("state-index-required", a.name_range,
-                 "state " + quote(info->name) + " needs an index: " + std::string(info->name) +
-                     "[n] (0.." + std::to_string(info->index_count - 1) + ")");
+                 "state " + quote(info->name) + " needs an index: " + std::string(info->name) + "[n] (0.." +
+                     std::to_string(info->index_count - 1) + ")");
   }
   if (index_known) {
     if (SourceRange* previous = seen.insert({info, index}, a.range)) {
       Diagnostic& d = diags_.warning("duplicate-state", a.name_range,
-                                     "state " + quote(info->name) +
-                                         (a.index ? "[" + std::to_string(index) + "]" : "") +
+                                     "state " + quote(info->name) + (a.index ? "[" + std::to_string(index) + "]" : "") +
                                          " is set twice in this block; the last value wins");
       if (previous->valid()) d.notes.push_back({previous->begin, "previous assignment is here"});
       *previous = a.range;
@@ -297,12 +285,12 @@ void Checker::check_call_args(const StateInfo& info, const ast::StateAssignment&
 }
 
 void Checker::type_mismatch(const StateInfo& info, const ast::Expr& value, std::string_view found) {
-  diags_.error("state-type-mismatch", value.range,
-               "state " + quote(info.name) + " expects " +
-                   (info.type == StateValueType::state_object
-                        ? "a " + std::string(info.object_kind)
-                        : "a value of type " + std::string(to_string(info.type))) +
-                   ", found " + std::string(found));
+  diags_.error(
+      "state-type-mismatch", value.range,
+      "state " + quote(info.name) + " expects " +
+          (info.type == StateValueType::state_object ? "a " + std::string(info.object_kind)
+                                                     : "a value of type " + std::string(to_string(info.type))) +
+          ", found " + std::string(found));
 }
 
 void Checker::undefined(std::string_view what, std::string_view name, SourceRange range,
@@ -350,8 +338,7 @@ void Checker::check_value(const StateInfo& info, const ast::Expr& e) {
         if (t != StateValueType::shader) type_mismatch(info, e, "a shader");
         else check_shader(info, e);
       } else if (is_numeric_constructor(e.text) &&
-                 (is_object_type(t) || t == StateValueType::enumeration ||
-                  t == StateValueType::flags)) {
+                 (is_object_type(t) || t == StateValueType::enumeration || t == StateValueType::flags)) {
         type_mismatch(info, e, "a " + quote(e.text) + " value");
       }
       return;
@@ -400,9 +387,8 @@ void Checker::check_value(const StateInfo& info, const ast::Expr& e) {
       }
       // Names inside the expression must still resolve (enum names, parameters).
       for (size_t i = e.kind == K::ternary ? 1 : 0; i < e.args.size(); ++i)
-        if (const ast::Expr* arg = e.args[i];
-            arg && (arg->kind == K::identifier || arg->kind == K::reference ||
-                    arg->kind == K::string_literal || arg->args.size()))
+        if (const ast::Expr* arg = e.args[i]; arg && (arg->kind == K::identifier || arg->kind == K::reference ||
+                                                      arg->kind == K::string_literal || arg->args.size()))
           check_value(info, *arg);
       return;
   }
@@ -422,8 +408,7 @@ void Checker::check_leaf(const StateInfo& info, const ast::Expr& e) {
     }
     const auto& values = info.enums->values;
     if (std::none_of(values.begin(), values.end(), [&](const EnumValue& ev) { return ev.value == *v; }))
-      diags_.error("unknown-state-value", e.range,
-                   std::to_string(*v) + " is not a value of state " + quote(info.name));
+      diags_.error("unknown-state-value", e.range, std::to_string(*v) + " is not a value of state " + quote(info.name));
   }
 }
 
@@ -436,8 +421,7 @@ void Checker::check_name(const StateInfo& info, const ast::Expr& e) {
     return;
   }
   if (iequals(e.text, "NULL") && is_object_type(t)) return;
-  if ((iequals(e.text, "TRUE") || iequals(e.text, "FALSE")) && !info.enums && !is_object_type(t))
-    return;
+  if ((iequals(e.text, "TRUE") || iequals(e.text, "FALSE")) && !info.enums && !is_object_type(t)) return;
   if (named_values) {
     std::string guess = closest_match(e.text, enum_names(info));
     std::string message = "unknown value " + quote(e.text) + " for state " + quote(info.name);
@@ -453,9 +437,7 @@ void Checker::check_name(const StateInfo& info, const ast::Expr& e) {
     case StateValueType::state_object:
       undefined(std::string(info.object_kind), e.text, e.range, names_of({Symbol::state_object}));
       return;
-    default:
-      undefined("parameter", e.text, e.range, names_of({Symbol::variable}));
-      return;
+    default: undefined("parameter", e.text, e.range, names_of({Symbol::variable})); return;
   }
 }
 
@@ -474,9 +456,7 @@ void Checker::check_symbol_type(const StateInfo& info, const Symbol& s, const as
   switch (info.type) {
     case StateValueType::texture: ok = variable && starts_with_i(s.type, "texture"); break;
     case StateValueType::sampler: ok = variable && starts_with_i(s.type, "sampler"); break;
-    case StateValueType::shader:
-      ok = s.kind == Symbol::glsl_block || (variable && shader_type_stage(s.type));
-      break;
+    case StateValueType::shader: ok = s.kind == Symbol::glsl_block || (variable && shader_type_stage(s.type)); break;
     case StateValueType::state_object: {
       // A D3D10/11 state object of the row's block, or a D3D9 `stateblock` variable.
       std::optional<StateBlock> block = state_object_block(info.object_kind);
@@ -486,8 +466,8 @@ void Checker::check_symbol_type(const StateInfo& info, const Symbol& s, const as
     }
     default: {
       std::string type = ascii_lower(s.type);
-      bool object_var = type.rfind("texture", 0) == 0 || type.rfind("sampler", 0) == 0 ||
-                        type == "string" || shader_type_stage(type);
+      bool object_var =
+          type.rfind("texture", 0) == 0 || type.rfind("sampler", 0) == 0 || type == "string" || shader_type_stage(type);
       ok = variable && !object_var;
       break;
     }
@@ -502,17 +482,16 @@ void Checker::check_shader(const StateInfo& info, const ast::Expr& e) {
     case K::call:
       if (iequals(e.text, "CompileShader")) {
         if (e.args.size() >= 2 && e.args[0] && e.args[1] && e.args[1]->kind == K::call)
-          check_compile(info, e.args[0]->text, e.args[0]->range, e.args[1]->text,
-                        e.args[1]->range);
+          check_compile(info, e.args[0]->text, e.args[0]->range, e.args[1]->text, e.args[1]->range);
       } else if (!e.args.empty() && e.args[0]) {
         // ConstructGSWithSO(shader, ...): the shader may be a vertex shader, whose output is
         // then streamed out with no geometry stage.
         const ast::Expr& shader = *e.args[0];
-        std::string_view profile = shader.kind == K::compile ? std::string_view(shader.text)
-                                   : shader.kind == K::call && iequals(shader.text, "CompileShader") &&
-                                           !shader.args.empty() && shader.args[0]
-                                       ? std::string_view(shader.args[0]->text)
-                                       : std::string_view();
+        std::string_view profile =
+            shader.kind == K::compile ? std::string_view(shader.text)
+            : shader.kind == K::call && iequals(shader.text, "CompileShader") && !shader.args.empty() && shader.args[0]
+                ? std::string_view(shader.args[0]->text)
+                : std::string_view();
         if (iequals(e.text, "ConstructGSWithSO") && starts_with_i(profile, profile_prefix(PassStage::vertex))) {
           StateInfo vertex = info;
           vertex.stage = PassStage::vertex;
@@ -534,9 +513,8 @@ void Checker::check_shader(const StateInfo& info, const ast::Expr& e) {
   }
 }
 
-void Checker::check_compile(const StateInfo& info, std::string_view profile,
-                            SourceRange profile_range, std::string_view function,
-                            SourceRange range) {
+void Checker::check_compile(const StateInfo& info, std::string_view profile, SourceRange profile_range,
+                            std::string_view function, SourceRange range) {
   if (!is_shader_profile(profile)) {
     const std::vector<std::string>& profiles = shader_profiles();
     std::vector<std::string_view> names(profiles.begin(), profiles.end());
@@ -545,13 +523,12 @@ void Checker::check_compile(const StateInfo& info, std::string_view profile,
     if (!guess.empty()) message += "; did you mean " + quote(guess) + "?";
     Diagnostic& d = diags_.error("unknown-shader-profile", profile_range, std::move(message));
     if (!guess.empty())
-      if (std::optional<SourceRange> at = word_in(sm_, profile_range, profile))
-        d.fixits.push_back({*at, guess});
+      if (std::optional<SourceRange> at = word_in(sm_, profile_range, profile)) d.fixits.push_back({*at, guess});
   } else if (std::string_view stage = info.stage ? profile_prefix(*info.stage) : std::string_view();
              !stage.empty() && !starts_with_i(profile, stage)) {
-    diags_.error("shader-stage-mismatch", profile_range,
-                 "state " + quote(info.name) + " needs a " + std::string(stage) +
-                     "_* profile, found " + quote(profile));
+    diags_.error(
+        "shader-stage-mismatch", profile_range,
+        "state " + quote(info.name) + " needs a " + std::string(stage) + "_* profile, found " + quote(profile));
   }
   if (!function.empty() && !function_names_.find(function))
     undefined("function", function, range, names_of({Symbol::function}));

@@ -3,8 +3,8 @@
 namespace fx {
 namespace {
 
-ParsedEffect finish(Preprocessor& pp, std::vector<Token> tokens, size_t errors_before,
-                    const SourceManager& sm, DiagnosticSink& diags, const FrontEndOptions& options) {
+ParsedEffect finish(Preprocessor& pp, std::vector<Token> tokens, size_t errors_before, const SourceManager& sm,
+                    DiagnosticSink& diags, const FrontEndOptions& options) {
   ParsedEffect result;
   result.files = pp.files();
   result.includes = pp.includes();
@@ -27,8 +27,8 @@ ParsedEffect parse_effect_file(const std::string& path, SourceManager& sm, Diagn
   return finish(pp, std::move(tokens), errors_before, sm, diags, options);
 }
 
-ParsedEffect parse_effect_text(std::string name, std::string text, SourceManager& sm,
-                               DiagnosticSink& diags, const FrontEndOptions& options) {
+ParsedEffect parse_effect_text(std::string name, std::string text, SourceManager& sm, DiagnosticSink& diags,
+                               const FrontEndOptions& options) {
   size_t errors_before = diags.error_count();
   Preprocessor pp(sm, diags, options.preprocessor);
   std::vector<Token> tokens;

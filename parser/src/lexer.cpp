@@ -2,9 +2,9 @@
 
 #include <array>
 #include <cerrno>
-#include <cstring>
 #include <charconv>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -63,11 +63,9 @@ inline bool starts_hex(const char* p) { return p[0] == '0' && (p[1] == 'x' || p[
 inline NumberChar number_char(const char* p, bool hex) {
   const char c = *p;
   if (c == '.') return NumberChar::floating;
-  if (c == '+' || c == '-')
-    return !hex && (p[-1] == 'e' || p[-1] == 'E') ? NumberChar::floating : NumberChar::end;
+  if (c == '+' || c == '-') return !hex && (p[-1] == 'e' || p[-1] == 'E') ? NumberChar::floating : NumberChar::end;
   if (!is_ident_char(c)) return NumberChar::end;
-  if (!hex && (c == 'e' || c == 'E' || c == 'f' || c == 'F' || c == 'h' || c == 'H'))
-    return NumberChar::floating;
+  if (!hex && (c == 'e' || c == 'E' || c == 'f' || c == 'F' || c == 'h' || c == 'H')) return NumberChar::floating;
   return NumberChar::part;
 }
 
@@ -90,8 +88,7 @@ constexpr std::array<Start, 256> kStart = [] {
     else if (kClass[c] & kDigit) t[c] = Start::digit;
   }
   t['.'] = Start::period;
-  for (char c : std::string_view("()[]{};,?~:!=*/%^#+-&|<>"))
-    t[static_cast<unsigned char>(c)] = Start::punct;
+  for (char c : std::string_view("()[]{};,?~:!=*/%^#+-&|<>")) t[static_cast<unsigned char>(c)] = Start::punct;
   return t;
 }();
 
@@ -205,8 +202,7 @@ const char* spelling(TokenKind k) {
 }
 
 Lexer::Lexer(SourceManager& sm, BufferId buffer, DiagnosticSink& diags)
-    : sm_(sm), diags_(diags), buffer_(buffer), text_(sm.buffer_text(buffer)),
-      base_(sm.location(buffer, 0).raw) {
+    : sm_(sm), diags_(diags), buffer_(buffer), text_(sm.buffer_text(buffer)), base_(sm.location(buffer, 0).raw) {
   if (!text_.data()) text_ = "";  // an invalid buffer: still a '\0' after the text
   // Windows editors save effects (and their .fxh includes) with a UTF-8 byte-order mark,
   // which fxc skips. Its bytes stay in the buffer, so line 1 columns still count them.
@@ -308,8 +304,7 @@ Token Lexer::make(TokenKind kind, size_t begin) {
 }
 
 // Out of line so that make(), which runs for every token, needs no stack frame.
-[[gnu::noinline]] std::string_view Lexer::clean_spelling(std::string_view raw,
-                                                         SourceLocation loc) {
+[[gnu::noinline]] std::string_view Lexer::clean_spelling(std::string_view raw, SourceLocation loc) {
   // The token was split by continuations: give it its clean spelling.
   std::string clean;
   for (size_t i = 0; i < raw.size(); ++i) {
@@ -404,16 +399,14 @@ size_t Lexer::next_batch(Token* out, size_t max, const NameFilter* stop_after) {
         bool floating = false;
         for (NumberChar c; (c = number_char(p, hex)) != NumberChar::end; ++p)
           floating = floating || c == NumberChar::floating;
-        if (*p != '\\' && short_spelling())
-          kind = floating ? TokenKind::floating : TokenKind::integer;
+        if (*p != '\\' && short_spelling()) kind = floating ? TokenKind::floating : TokenKind::integer;
         break;
       }
       case Start::punct:
         kind = punctuator(p);
         last = kind == TokenKind::hash && (flags & kAtLineStart);
         break;
-      case Start::other:
-        break;
+      case Start::other: break;
     }
     if (kind == TokenKind::unknown) [[unlikely]] {
       pos_ = static_cast<size_t>(begin - text);
@@ -421,8 +414,7 @@ size_t Lexer::next_batch(Token* out, size_t max, const NameFilter* stop_after) {
       const Token& t = out[n++] = next_token();
       p = text + pos_;
       flags = pending_flags_;
-      if ((t.kind == TokenKind::hash && t.at_line_start()) || t.kind == TokenKind::eof ||
-          reported() != before ||
+      if ((t.kind == TokenKind::hash && t.at_line_start()) || t.kind == TokenKind::eof || reported() != before ||
           (t.kind == TokenKind::identifier && stops.may_contain(t.text())))
         break;
       continue;
@@ -462,8 +454,7 @@ Token Lexer::lex_quoted(size_t begin, char quote) {
   }
   if (pos_ >= text_.size() || text_[pos_] != quote) {
     diags_.error("unterminated-string", {at(begin), {}},
-                 quote == '"' ? "missing terminating '\"' character"
-                              : "missing terminating ' character");
+                 quote == '"' ? "missing terminating '\"' character" : "missing terminating ' character");
   } else {
     ++pos_;
   }
@@ -518,8 +509,8 @@ std::optional<NumberValue> parse_number(std::string_view s, std::string* error) 
   bool floating = !hex && s.find_first_of(".eEfFhH") != std::string_view::npos;
   if (floating) {
     std::string_view body = s;
-    if (body.back() == 'f' || body.back() == 'F' || body.back() == 'h' || body.back() == 'H' ||
-        body.back() == 'l' || body.back() == 'L')
+    if (body.back() == 'f' || body.back() == 'F' || body.back() == 'h' || body.back() == 'H' || body.back() == 'l' ||
+        body.back() == 'L')
       body.remove_suffix(1);
     std::string copy(body);
     if (copy.empty() || copy.back() == '.') copy.push_back('0');
@@ -531,8 +522,7 @@ std::optional<NumberValue> parse_number(std::string_view s, std::string* error) 
     return NumberValue{v};
   }
   std::string_view body = s;
-  while (!body.empty() && (body.back() == 'u' || body.back() == 'U' || body.back() == 'l' ||
-                           body.back() == 'L'))
+  while (!body.empty() && (body.back() == 'u' || body.back() == 'U' || body.back() == 'l' || body.back() == 'L'))
     body.remove_suffix(1);
   int base = 10;
   if (hex) body.remove_prefix(2), base = 16;
@@ -551,8 +541,7 @@ std::string unquote(std::string_view s) {
 }
 
 void append_unquoted(std::string& out, std::string_view s) {
-  if (s.size() >= 2 && (s.front() == '"' || s.front() == '\'' || s.front() == '<'))
-    s = s.substr(1, s.size() - 2);
+  if (s.size() >= 2 && (s.front() == '"' || s.front() == '\'' || s.front() == '<')) s = s.substr(1, s.size() - 2);
   // Most literals have no escape: one append instead of a push_back per character.
   size_t plain = s.find('\\');
   out.append(s.substr(0, plain));

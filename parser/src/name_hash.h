@@ -11,8 +11,16 @@ namespace fx {
 // std::hash (libstdc++'s _Hash_bytes) cost about 60 instructions for each of them.
 inline size_t name_hash(std::string_view name) {
   constexpr uint64_t kMultiplier = 0x9E3779B97F4A7C15ull;
-  auto load64 = [](const char* p) { uint64_t v; std::memcpy(&v, p, 8); return v; };
-  auto load32 = [](const char* p) { uint32_t v; std::memcpy(&v, p, 4); return uint64_t{v}; };
+  auto load64 = [](const char* p) {
+    uint64_t v;
+    std::memcpy(&v, p, 8);
+    return v;
+  };
+  auto load32 = [](const char* p) {
+    uint32_t v;
+    std::memcpy(&v, p, 4);
+    return uint64_t{v};
+  };
   const char* p = name.data();
   const size_t n = name.size();
   uint64_t h = n * kMultiplier;

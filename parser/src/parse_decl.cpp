@@ -10,8 +10,7 @@ uint32_t Parser::parse_storage() {
   uint32_t bits = 0, bit = 0;
   // A modifier is always followed by the type name; the look-ahead keeps a type or
   // variable that happens to be called `line` or `sample` from being swallowed.
-  while (at(TokenKind::identifier) && peek().is(TokenKind::identifier) &&
-         is_storage_keyword(tok().text(), bit)) {
+  while (at(TokenKind::identifier) && peek().is(TokenKind::identifier) && is_storage_keyword(tok().text(), bit)) {
     bits |= bit;
     advance();
   }
@@ -74,7 +73,8 @@ bool Parser::parse_template_args(std::string& out) {
       case TokenKind::r_brace:
         if (Diagnostic* d = error_here("expected-token",
                                        "expected '>' to close the template argument list, "
-                                       "found " + describe(tok())))
+                                       "found " +
+                                           describe(tok())))
           d->notes.push_back({open.loc, "to match this '<'"});
         return false;
       default: break;
@@ -102,8 +102,7 @@ bool Parser::parse_array_dims(ast::List<ast::ExprPtr>& dims) {
 bool Parser::parse_semantics(ast::Variable& v) {
   while (accept(TokenKind::colon)) {
     if (!at(TokenKind::identifier)) {
-      error_here("expected-semantic",
-                 "expected a semantic or register after ':', found " + describe(tok()));
+      error_here("expected-semantic", "expected a semantic or register after ':', found " + describe(tok()));
       return false;
     }
     std::string_view word = tok().text();
@@ -114,9 +113,8 @@ bool Parser::parse_semantics(ast::Variable& v) {
       advance();
       while (!at(TokenKind::r_paren)) {
         if (at_eof() || at(TokenKind::semi) || at(TokenKind::l_brace)) {
-          if (Diagnostic* d = error_here("expected-token",
-                                         "expected ')' after register binding, found " +
-                                             describe(tok())))
+          if (Diagnostic* d =
+                  error_here("expected-token", "expected ')' after register binding, found " + describe(tok())))
             d->notes.push_back({open.loc, "in this binding"});
           return false;
         }
@@ -135,8 +133,7 @@ bool Parser::parse_semantics(ast::Variable& v) {
 
 bool Parser::parse_declarator_head(ast::Variable& v) {
   if (!at(TokenKind::identifier)) {
-    error_here("expected-identifier",
-               "expected a name for the declaration, found " + describe(tok()));
+    error_here("expected-identifier", "expected a name for the declaration, found " + describe(tok()));
     return false;
   }
   if (!check_name(tok(), "a variable")) return false;
@@ -278,8 +275,7 @@ void Parser::parse_method_definition(std::vector<ast::Decl>& out, uint32_t first
   *proto = f;
 }
 
-void Parser::finish_state_object(std::vector<ast::Decl>& out, ast::Variable& head,
-                                 uint32_t first) {
+void Parser::finish_state_object(std::vector<ast::Decl>& out, ast::Variable& head, uint32_t first) {
   ast::StateObject* so = declarations_.make<ast::StateObject>();
   so->kind = head.type.name;
   so->name = head.name;
@@ -299,9 +295,8 @@ void Parser::finish_state_object(std::vector<ast::Decl>& out, ast::Variable& hea
 }
 
 bool Parser::parse_element_states(ast::List<ast::List<ast::StateAssignment>>& out) {
-  return parse_braced_list("after a state object element", [&] {
-    return parse_state_list(out.emplace_back(arena_), "state object element");
-  });
+  return parse_braced_list("after a state object element",
+                           [&] { return parse_state_list(out.emplace_back(arena_), "state object element"); });
 }
 
 bool Parser::parse_function(ast::Function& f) {
@@ -318,9 +313,8 @@ bool Parser::parse_function(ast::Function& f) {
       }
       if (accept(TokenKind::comma)) continue;
       if (!at(TokenKind::r_paren)) {
-        if (Diagnostic* d = error_here("expected-token",
-                                       "expected ')' or ',' in parameter list, found " +
-                                           describe(tok())))
+        if (Diagnostic* d =
+                error_here("expected-token", "expected ')' or ',' in parameter list, found " + describe(tok())))
           d->notes.push_back({open.loc, "to match this '('"});
         return false;
       }
@@ -386,8 +380,8 @@ bool Parser::parse_member_list(ast::List<ast::Variable>& members, std::string_vi
     uint32_t storage = parse_storage();
     ast::TypeRef type;
     const bool defines_struct =
-        at_ident("struct") && (peek().is(TokenKind::l_brace) ||
-                               (peek().is(TokenKind::identifier) && peek(2).is(TokenKind::l_brace)));
+        at_ident("struct") &&
+        (peek().is(TokenKind::l_brace) || (peek().is(TokenKind::identifier) && peek(2).is(TokenKind::l_brace)));
     if (defines_struct ? parse_member_struct(type) : parse_type(type)) {
       if (methods && at(TokenKind::identifier) && peek().is(TokenKind::l_paren)) {
         parse_method(*methods, storage, type, first);
@@ -405,8 +399,7 @@ bool Parser::parse_member_list(ast::List<ast::Variable>& members, std::string_vi
         v.range = range_from(first);
         if (!accept(TokenKind::comma)) {
           if (expect_semi("after member declaration"))
-            for (size_t i = first_member; i < members.size(); ++i)
-              members[i].tokens = span_from(first);
+            for (size_t i = first_member; i < members.size(); ++i) members[i].tokens = span_from(first);
           break;
         }
       }
@@ -417,8 +410,8 @@ bool Parser::parse_member_list(ast::List<ast::Variable>& members, std::string_vi
   return true;
 }
 
-void Parser::parse_method(ast::List<ast::Function>& methods, uint32_t storage,
-                          const ast::TypeRef& return_type, uint32_t first) {
+void Parser::parse_method(ast::List<ast::Function>& methods, uint32_t storage, const ast::TypeRef& return_type,
+                          uint32_t first) {
   if (!check_name(tok(), "a function")) return;
   ast::Function& f = methods.emplace_back(arena_);  // in place, see parse_annotations
   f.storage = storage;
@@ -464,8 +457,7 @@ void Parser::parse_struct(std::vector<ast::Decl>& out) {
             : keyword == "interface" ? ast::StructKind::interface_type
                                      : ast::StructKind::structure;
   if (!at(TokenKind::identifier)) {
-    error_here("expected-identifier",
-               "expected a " + std::string(keyword) + " name, found " + describe(tok()));
+    error_here("expected-identifier", "expected a " + std::string(keyword) + " name, found " + describe(tok()));
     return;
   }
   if (!check_name(tok(), "a type")) return;
@@ -494,7 +486,7 @@ void Parser::parse_struct(std::vector<ast::Decl>& out) {
 
 void Parser::parse_typedef(std::vector<ast::Decl>& out) {
   uint32_t first = pos_;
-  advance();  // typedef
+  advance();        // typedef
   parse_storage();  // `typedef const float4 c4;`: the qualifier is not kept on aliases
   ast::TypeRef type;
   if (!parse_type(type)) return;

@@ -36,13 +36,13 @@ int binary_precedence(TokenKind k) {
 // A token after which no expression continues: what follows most state, annotation and
 // argument values (`ZEnable = true;`, `{0, 1}`, `f(a, b)`).
 bool ends_expression(TokenKind k) {
-  return k == TokenKind::semi || k == TokenKind::comma || k == TokenKind::r_paren ||
-         k == TokenKind::r_brace || k == TokenKind::r_square;
+  return k == TokenKind::semi || k == TokenKind::comma || k == TokenKind::r_paren || k == TokenKind::r_brace ||
+         k == TokenKind::r_square;
 }
 
 bool starts_operand(TokenKind k) {
-  return k == TokenKind::identifier || k == TokenKind::integer || k == TokenKind::floating ||
-         k == TokenKind::l_paren || k == TokenKind::string;
+  return k == TokenKind::identifier || k == TokenKind::integer || k == TokenKind::floating || k == TokenKind::l_paren ||
+         k == TokenKind::string;
 }
 
 // Fast path for the common plain decimal integer (`0`, `16`): no copy, no strtod.
@@ -63,8 +63,7 @@ bool decimal_value(std::string_view s, double& out) {
 bool simple_float_value(std::string_view s, double& out) {
   static constexpr double kPow10[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                       1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
-  if (!s.empty() && (s.back() == 'f' || s.back() == 'F' || s.back() == 'h' || s.back() == 'H'))
-    s.remove_suffix(1);
+  if (!s.empty() && (s.back() == 'f' || s.back() == 'F' || s.back() == 'h' || s.back() == 'H')) s.remove_suffix(1);
   uint64_t mantissa = 0;
   int digits = 0, fraction = -1;
   for (char c : s) {
@@ -86,8 +85,8 @@ bool simple_float_value(std::string_view s, double& out) {
 
 bool Parser::nesting_too_deep() {
   --nesting_;
-  error_here("nesting-too-deep", "expression nested too deeply (more than " +
-                                     std::to_string(options_.max_nesting) + " levels)");
+  error_here("nesting-too-deep",
+             "expression nested too deeply (more than " + std::to_string(options_.max_nesting) + " levels)");
   return false;
 }
 
@@ -205,8 +204,7 @@ ast::ExprPtr Parser::parse_unary() {
 size_t Parser::cast_close() const {
   if (!peek(1).is(TokenKind::identifier)) return 0;
   size_t i = 2;
-  while (peek(i).is(TokenKind::l_square) && peek(i + 1).is(TokenKind::integer) &&
-         peek(i + 2).is(TokenKind::r_square))
+  while (peek(i).is(TokenKind::l_square) && peek(i + 1).is(TokenKind::integer) && peek(i + 2).is(TokenKind::r_square))
     i += 3;
   return peek(i).is(TokenKind::r_paren) && starts_operand(peek(i + 1).kind) ? i : 0;
 }
@@ -245,13 +243,11 @@ ast::ExprPtr Parser::parse_primary() {
   switch (t.kind) {
     case TokenKind::integer:
     case TokenKind::floating: {
-      auto e = make(t.is(TokenKind::integer) ? ast::ExprKind::int_literal
-                                             : ast::ExprKind::float_literal,
-                    first);
+      auto e = make(t.is(TokenKind::integer) ? ast::ExprKind::int_literal : ast::ExprKind::float_literal, first);
       const std::string_view spelling = t.text();
       e->text = keep(spelling);
-      bool fast = t.is(TokenKind::integer) ? decimal_value(spelling, e->number)
-                                           : simple_float_value(spelling, e->number);
+      bool fast =
+          t.is(TokenKind::integer) ? decimal_value(spelling, e->number) : simple_float_value(spelling, e->number);
       if (!fast) {
         std::string why;
         std::optional<NumberValue> value = parse_number(spelling, &why);
@@ -278,9 +274,7 @@ ast::ExprPtr Parser::parse_primary() {
       ast::ExprPtr inner = parse_expression();
       if (failed_) return nullptr;
       if (!at(TokenKind::r_paren)) {
-        if (Diagnostic* d = error_here("expected-token",
-                                       "expected ')' after expression, found " +
-                                           describe(tok())))
+        if (Diagnostic* d = error_here("expected-token", "expected ')' after expression, found " + describe(tok())))
           d->notes.push_back({open.loc, "to match this '('"});
         return nullptr;
       }
@@ -292,8 +286,7 @@ ast::ExprPtr Parser::parse_primary() {
       // `<name>` after '=' refers to a parameter (D3D9 state values).
       advance();
       if (!at(TokenKind::identifier)) {
-        error_here("expected-identifier",
-                   "expected a parameter name after '<', found " + describe(tok()));
+        error_here("expected-identifier", "expected a parameter name after '<', found " + describe(tok()));
         return nullptr;
       }
       ast::ExprPtr e = make(ast::ExprKind::reference, first);
@@ -306,9 +299,7 @@ ast::ExprPtr Parser::parse_primary() {
       e->range = range_from(first);
       return e;
     }
-    default:
-      error_here("expected-expression", "expected an expression, found " + describe(t));
-      return nullptr;
+    default: error_here("expected-expression", "expected an expression, found " + describe(t)); return nullptr;
   }
 }
 
@@ -356,14 +347,12 @@ ast::ExprPtr Parser::parse_compile() {
   advance();  // compile
   auto e = make(ast::ExprKind::compile, first);
   if (!at(TokenKind::identifier)) {
-    error_here("expected-profile",
-               "expected a shader profile after 'compile', found " + describe(tok()));
+    error_here("expected-profile", "expected a shader profile after 'compile', found " + describe(tok()));
     return nullptr;
   }
   e->text = keep(advance().text());
   if (!at(TokenKind::identifier)) {
-    error_here("expected-identifier",
-               "expected a shader function after the profile, found " + describe(tok()));
+    error_here("expected-identifier", "expected a shader function after the profile, found " + describe(tok()));
     return nullptr;
   }
   e->callee = keep(advance().text());
@@ -378,10 +367,8 @@ ast::ExprPtr Parser::parse_asm() {
   if (iequals(tok().text(), "decl")) {
     advance();
     if (!skip_braced(e->decl_code, "decl block")) return nullptr;
-    if (!tok().is(TokenKind::identifier) || !iequals(tok().text(), "asm") ||
-        !peek().is(TokenKind::l_brace)) {
-      error_here("expected-token", "expected 'asm { }' after 'decl { }', found " +
-                                       describe(tok()));
+    if (!tok().is(TokenKind::identifier) || !iequals(tok().text(), "asm") || !peek().is(TokenKind::l_brace)) {
+      error_here("expected-token", "expected 'asm { }' after 'decl { }', found " + describe(tok()));
       return nullptr;
     }
   }
@@ -421,9 +408,7 @@ bool Parser::parse_call_args(std::span<const ast::ExprPtr>& args) {
       args = expressions_.list(std::span(pending_args_).subspan(mark));
       break;
     }
-    if (Diagnostic* d = error_here("expected-token",
-                                   "expected ')' or ',' in argument list, found " +
-                                       describe(tok())))
+    if (Diagnostic* d = error_here("expected-token", "expected ')' or ',' in argument list, found " + describe(tok())))
       d->notes.push_back({open.loc, "to match this '('"});
     break;
   }

@@ -18,8 +18,7 @@ namespace fx::detail {
 
 class Parser {
  public:
-  Parser(std::vector<Token> tokens, const SourceManager& sm, DiagnosticSink& diags,
-         const ParseOptions& options);
+  Parser(std::vector<Token> tokens, const SourceManager& sm, DiagnosticSink& diags, const ParseOptions& options);
   ast::Effect run();
 
  private:
@@ -51,9 +50,7 @@ class Parser {
   // Consumes `k` or reports `expected-token`: "expected 'k' <context>".
   bool expect(TokenKind k, std::string_view context);
   // A missing ';' before a token on a new line is reported without derailing the parse.
-  bool expect_semi(std::string_view context) {
-    return accept(TokenKind::semi) || missing_semi(context);
-  }
+  bool expect_semi(std::string_view context) { return accept(TokenKind::semi) || missing_semi(context); }
   bool missing_semi(std::string_view context);
   // Splits `>>`, `>=`, `>>=` so that the current token is a single `>`.
   void split_greater();
@@ -102,8 +99,7 @@ class Parser {
   bool parse_semantics(ast::Variable& v);
   bool parse_declarator_head(ast::Variable& v);
   bool parse_initializer(ast::Variable& v);
-  void parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t first,
-                                  std::vector<std::string> attributes);
+  void parse_variable_or_function(std::vector<ast::Decl>& out, uint32_t first, std::vector<std::string> attributes);
   // At `C` of `type C::M(...) { ... }`: the definition of class C's method M, which
   // completes M's prototype in C (declared earlier in `out`).
   void parse_method_definition(std::vector<ast::Decl>& out, uint32_t first, uint32_t storage,
@@ -115,8 +111,8 @@ class Parser {
   bool parse_member_list(ast::List<ast::Variable>& members, std::string_view what,
                          ast::List<ast::Function>* methods = nullptr);
   // A member function, at its name after the return type.
-  void parse_method(ast::List<ast::Function>& methods, uint32_t storage,
-                    const ast::TypeRef& return_type, uint32_t first);
+  void parse_method(ast::List<ast::Function>& methods, uint32_t storage, const ast::TypeRef& return_type,
+                    uint32_t first);
   // `struct`, `interface` or `class` at file scope.
   void parse_struct(std::vector<ast::Decl>& out);
   // `struct [Name] { members }` as a member's type (at `struct`).
@@ -176,9 +172,9 @@ class Parser {
   // in the pool once complete, so none needs a vector of its own.
   std::vector<ast::ExprPtr> pending_args_;
   uint32_t pos_ = 0;
-  uint32_t depth_ = 0;    // unclosed '{' consumed so far
-  size_t nesting_ = 0;    // current recursion depth of expressions
-  bool failed_ = false;   // an error was reported and not yet recovered from
+  uint32_t depth_ = 0;      // unclosed '{' consumed so far
+  size_t nesting_ = 0;      // current recursion depth of expressions
+  bool failed_ = false;     // an error was reported and not yet recovered from
   bool eof_error_ = false;  // recovery ran into eof: further errors would be echoes
   std::string profile_header_;
   const SourceManager& sm_;

@@ -22,14 +22,11 @@ bool Parser::parse_annotations(ast::List<ast::Annotation>& out) {
       case TokenKind::eof:
       case TokenKind::l_brace:
       case TokenKind::r_brace:
-        if (Diagnostic* d = error_here("expected-token",
-                                       "expected '>' to close the annotation list, found " +
-                                           describe(tok())))
+        if (Diagnostic* d =
+                error_here("expected-token", "expected '>' to close the annotation list, found " + describe(tok())))
           d->notes.push_back({open.loc, "to match this '<'"});
         return false;
-      case TokenKind::semi:
-        advance();
-        continue;
+      case TokenKind::semi: advance(); continue;
       default: break;
     }
     uint32_t depth = depth_;
@@ -101,8 +98,7 @@ bool Parser::parse_technique(ast::Technique& t) {
     if (tok().is(TokenKind::identifier) && iequals(tok().text(), "pass")) {
       if (!parse_pass(t.passes.emplace_back(arena_))) t.passes.pop_back();  // in place, see parse_annotations
     } else {
-      error_here("expected-pass",
-                 "expected 'pass' in technique body, found " + describe(tok()));
+      error_here("expected-pass", "expected 'pass' in technique body, found " + describe(tok()));
     }
     if (failed_) recover(depth);
   }
@@ -182,12 +178,10 @@ bool Parser::parse_state(ast::StateAssignment& s) {
   advance();
   s.value = parse_assignment();
   if (failed_) return false;
-  if (s.value->kind == ast::ExprKind::init_list && shader_state_stage(s.name) &&
-      !s.value->args.empty()) {
+  if (s.value->kind == ast::ExprKind::init_list && shader_state_stage(s.name) && !s.value->args.empty()) {
     // `VertexShader = { Common, Lighting };` names GLSL blocks joined into one stage.
     bool names_only = true;
-    for (const ast::ExprPtr& a : s.value->args)
-      names_only = names_only && a && a->kind == ast::ExprKind::identifier;
+    for (const ast::ExprPtr& a : s.value->args) names_only = names_only && a && a->kind == ast::ExprKind::identifier;
     if (names_only) s.value->kind = ast::ExprKind::glsl_list;
   }
   s.range = range_from(first);
@@ -223,8 +217,7 @@ void Parser::parse_group(std::vector<ast::Decl>& out) {
       ast::Technique t;
       if (parse_technique(t)) g->techniques.push_back(arena_, t);
     } else {
-      error_here("expected-technique",
-                 "expected a technique in fxgroup body, found " + describe(tok()));
+      error_here("expected-technique", "expected a technique in fxgroup body, found " + describe(tok()));
     }
     if (failed_) recover(depth);
   }

@@ -22,8 +22,8 @@ std::vector<Token> lex_all(SourceManager& sm, BufferId buffer, DiagnosticSink& d
   }
 }
 
-ast::Effect parse_effect(std::vector<Token> tokens, const SourceManager& sm,
-                         DiagnosticSink& diags, const ParseOptions& options) {
+ast::Effect parse_effect(std::vector<Token> tokens, const SourceManager& sm, DiagnosticSink& diags,
+                         const ParseOptions& options) {
   detail::Parser parser(std::move(tokens), sm, diags, options);
   return parser.run();
 }
@@ -36,14 +36,12 @@ std::string quote(std::string_view text) {
   return out;
 }
 
-std::string describe(const Token& t) {
-  return t.is(TokenKind::eof) ? std::string("end of file") : quote(t.text());
-}
+std::string describe(const Token& t) { return t.is(TokenKind::eof) ? std::string("end of file") : quote(t.text()); }
 
 void append_spelling(std::string& out, const Token& t) {
   auto wordy = [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-           c == '_' || c == '"' || c == '.';
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '"' ||
+           c == '.';
   };
   const std::string_view spelling = t.text();
   if (!out.empty() && !spelling.empty() && wordy(out.back()) && wordy(spelling.front()) && t.leading_space())
@@ -51,8 +49,7 @@ void append_spelling(std::string& out, const Token& t) {
   out.append(spelling);
 }
 
-Parser::Parser(std::vector<Token> tokens, const SourceManager& sm, DiagnosticSink& diags,
-               const ParseOptions& options)
+Parser::Parser(std::vector<Token> tokens, const SourceManager& sm, DiagnosticSink& diags, const ParseOptions& options)
     : tokens_(std::move(tokens)), sm_(sm), diags_(diags), options_(options) {
   if (tokens_.empty() || !tokens_.back().is(TokenKind::eof)) {
     Token eof;
@@ -80,8 +77,7 @@ bool Parser::missing_semi(std::string_view context) {
     SourceLocation end = end_of_previous();
     std::string message = "expected ';' ";
     message.append(context);
-    if (Diagnostic* d = error("expected-token", {end, {}}, std::move(message)))
-      d->fixits.push_back({{end, end}, ";"});
+    if (Diagnostic* d = error("expected-token", {end, {}}, std::move(message))) d->fixits.push_back({{end, end}, ";"});
     failed_ = false;
     // A truncated file: whatever else is unclosed at the end is the same mistake.
     if (at_eof()) eof_error_ = true;
@@ -255,9 +251,7 @@ void Parser::parse_top_level(std::vector<ast::Decl>& out) {
       return;
     }
     case TokenKind::identifier: break;
-    default:
-      error_here("expected-declaration", "expected a declaration, found " + describe(t));
-      return;
+    default: error_here("expected-declaration", "expected a declaration, found " + describe(t)); return;
   }
   std::string_view word = t.text();
   if (technique_version(word)) {
@@ -274,7 +268,7 @@ void Parser::parse_top_level(std::vector<ast::Decl>& out) {
     advance();  // shared: kept as a flag, the buffer's tokens start at `cbuffer`
     parse_constant_buffer(out, first);
   } else if ((word == "struct" && !peek().is(TokenKind::l_brace) &&  // not `struct { ... } s;`
-              !(peek().is(TokenKind::identifier) &&                 // not `struct S s;`
+              !(peek().is(TokenKind::identifier) &&                  // not `struct S s;`
                 peek(2).is(TokenKind::identifier))) ||
              ((word == "interface" || word == "class") && peek().is(TokenKind::identifier))) {
     parse_struct(out);
@@ -296,11 +290,9 @@ bool Parser::parse_attributes(std::vector<std::string>& out) {
     for (;;) {
       if (at(TokenKind::l_square)) ++brackets;
       if (at(TokenKind::r_square) && --brackets == 0) break;
-      if (at_eof() || at(TokenKind::semi) || at(TokenKind::l_brace) ||
-          at(TokenKind::r_brace)) {
-        if (Diagnostic* d = error_here("expected-token",
-                                       "expected ']' to close the attribute, found " +
-                                           describe(tok())))
+      if (at_eof() || at(TokenKind::semi) || at(TokenKind::l_brace) || at(TokenKind::r_brace)) {
+        if (Diagnostic* d =
+                error_here("expected-token", "expected ']' to close the attribute, found " + describe(tok())))
           d->notes.push_back({open.loc, "to match this '['"});
         return false;
       }
@@ -336,19 +328,32 @@ bool is_storage_keyword(std::string_view word, uint32_t& bit) {
     std::string_view word;
     uint32_t bit;
   } kWords[] = {
-      {"shared", ast::kShared},         {"static", ast::kStatic},
-      {"uniform", ast::kUniform},       {"const", ast::kConst},
-      {"extern", ast::kExtern},         {"volatile", ast::kVolatile},
-      {"row_major", ast::kRowMajor},    {"column_major", ast::kColumnMajor},
-      {"groupshared", ast::kGroupShared}, {"in", ast::kIn},
-      {"out", ast::kOut},               {"inout", ast::kInOut},
-      {"nointerpolation", ast::kNoInterpolation}, {"linear", ast::kLinear},
-      {"centroid", ast::kCentroid},     {"precise", ast::kPrecise},
-      {"noperspective", ast::kNoPerspective}, {"sample", ast::kSample},
-      {"inline", ast::kInline},         {"point", ast::kPoint},
-      {"line", ast::kLine},             {"triangle", ast::kTriangle},
-      {"lineadj", ast::kLineAdj},       {"triangleadj", ast::kTriangleAdj},
-      {"unorm", ast::kUnorm},           {"snorm", ast::kSnorm},
+      {"shared", ast::kShared},
+      {"static", ast::kStatic},
+      {"uniform", ast::kUniform},
+      {"const", ast::kConst},
+      {"extern", ast::kExtern},
+      {"volatile", ast::kVolatile},
+      {"row_major", ast::kRowMajor},
+      {"column_major", ast::kColumnMajor},
+      {"groupshared", ast::kGroupShared},
+      {"in", ast::kIn},
+      {"out", ast::kOut},
+      {"inout", ast::kInOut},
+      {"nointerpolation", ast::kNoInterpolation},
+      {"linear", ast::kLinear},
+      {"centroid", ast::kCentroid},
+      {"precise", ast::kPrecise},
+      {"noperspective", ast::kNoPerspective},
+      {"sample", ast::kSample},
+      {"inline", ast::kInline},
+      {"point", ast::kPoint},
+      {"line", ast::kLine},
+      {"triangle", ast::kTriangle},
+      {"lineadj", ast::kLineAdj},
+      {"triangleadj", ast::kTriangleAdj},
+      {"unorm", ast::kUnorm},
+      {"snorm", ast::kSnorm},
   };
   // Most words are not modifiers: the first letter picks the few rows to compare (a bit
   // per row of kWords), and most letters pick none.
@@ -398,9 +403,8 @@ bool Parser::check_name(const Token& name, std::string_view what) {
 }
 
 bool is_state_object_kind(std::string_view word) {
-  return iequals(word, "BlendState") || iequals(word, "DepthStencilState") ||
-         iequals(word, "RasterizerState") || iequals(word, "SamplerState") ||
-         iequals(word, "SamplerComparisonState");
+  return iequals(word, "BlendState") || iequals(word, "DepthStencilState") || iequals(word, "RasterizerState") ||
+         iequals(word, "SamplerState") || iequals(word, "SamplerComparisonState");
 }
 
 }  // namespace detail

@@ -8,15 +8,13 @@ namespace {
 
 bool is_ellipsis(std::span<const Token> t, size_t i) {
   return i + 2 < t.size() && t[i].is(TokenKind::period) && t[i + 1].is(TokenKind::period) &&
-         t[i + 2].is(TokenKind::period) && !t[i + 1].leading_space() &&
-         !t[i + 2].leading_space();
+         t[i + 2].is(TokenKind::period) && !t[i + 1].leading_space() && !t[i + 2].leading_space();
 }
 
 }  // namespace
 
 bool Macro::same_definition(const Macro& o) const {
-  if (function_like != o.function_like || variadic != o.variadic || params != o.params ||
-      body.size() != o.body.size())
+  if (function_like != o.function_like || variadic != o.variadic || params != o.params || body.size() != o.body.size())
     return false;
   for (size_t i = 0; i < body.size(); ++i) {
     if (body[i].kind != o.body[i].kind || body[i].text() != o.body[i].text()) return false;
@@ -26,11 +24,10 @@ bool Macro::same_definition(const Macro& o) const {
   return true;
 }
 
-std::unique_ptr<Macro> parse_macro_definition(std::span<const Token> line,
-                                              SourceLocation directive, DiagnosticSink& diags) {
+std::unique_ptr<Macro> parse_macro_definition(std::span<const Token> line, SourceLocation directive,
+                                              DiagnosticSink& diags) {
   if (line.empty() || !line[0].is(TokenKind::identifier)) {
-    diags.error("invalid-macro-name",
-                line.empty() ? SourceRange{directive, {}} : line[0].range(),
+    diags.error("invalid-macro-name", line.empty() ? SourceRange{directive, {}} : line[0].range(),
                 "macro name must be an identifier");
     return nullptr;
   }
@@ -59,8 +56,7 @@ std::unique_ptr<Macro> parse_macro_definition(std::span<const Token> line,
       } else if (line[i].is(TokenKind::identifier)) {
         for (std::string_view p : m->params)
           if (p == line[i].text()) {
-            diags.error("macro-definition", line[i].range(),
-                        "duplicate macro parameter '" + std::string(p) + "'");
+            diags.error("macro-definition", line[i].range(), "duplicate macro parameter '" + std::string(p) + "'");
             return nullptr;
           }
         if (line[i].text() == "__VA_ARGS__") {
@@ -86,8 +82,7 @@ std::unique_ptr<Macro> parse_macro_definition(std::span<const Token> line,
       return nullptr;
     }
   } else if (i < line.size() && !line[i].leading_space()) {
-    diags.warning("macro-definition", line[i].range(),
-                  "whitespace is required after the macro name");
+    diags.warning("macro-definition", line[i].range(), "whitespace is required after the macro name");
   }
   for (; i < line.size(); ++i) {
     Token t = line[i];
@@ -97,33 +92,28 @@ std::unique_ptr<Macro> parse_macro_definition(std::span<const Token> line,
       for (size_t p = 0; p < m->params.size(); ++p)
         if (m->params[p] == t.text()) param = static_cast<int32_t>(p);
       if (param < 0 && t.text() == "__VA_ARGS__") {
-        diags.error("macro-definition", t.range(),
-                    "__VA_ARGS__ can only appear in the body of a variadic macro");
+        diags.error("macro-definition", t.range(), "__VA_ARGS__ can only appear in the body of a variadic macro");
         return nullptr;
       }
     }
-    if (t.is(TokenKind::hashhash) || (m->function_like && t.is(TokenKind::hash)))
-      m->has_operators = true;
+    if (t.is(TokenKind::hashhash) || (m->function_like && t.is(TokenKind::hash))) m->has_operators = true;
     m->body.push_back(t);
     m->param_of.push_back(param);
   }
   const auto& body = m->body;
   for (size_t b = 0; b < body.size(); ++b) {
     if (body[b].is(TokenKind::hashhash) && (b == 0 || b + 1 == body.size())) {
-      diags.error("macro-definition", body[b].range(),
-                  "'##' cannot appear at either end of a macro expansion");
+      diags.error("macro-definition", body[b].range(), "'##' cannot appear at either end of a macro expansion");
       return nullptr;
     }
-    if (m->function_like && body[b].is(TokenKind::hash) &&
-        (b + 1 == body.size() || m->param_of[b + 1] < 0)) {
+    if (m->function_like && body[b].is(TokenKind::hash) && (b + 1 == body.size() || m->param_of[b + 1] < 0)) {
       diags.error("macro-definition", body[b].range(), "'#' is not followed by a macro parameter");
       return nullptr;
     }
   }
   if (!body.empty()) {
     m->body_start = body.front().loc;
-    m->body_length = body.back().loc.raw + static_cast<uint32_t>(body.back().text().size()) -
-                     body.front().loc.raw;
+    m->body_length = body.back().loc.raw + static_cast<uint32_t>(body.back().text().size()) - body.front().loc.raw;
   }
   return m;
 }

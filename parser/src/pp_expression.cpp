@@ -20,12 +20,19 @@ Value signed_value(int64_t v) { return {v, false}; }
 
 int precedence(TokenKind k) {
   switch (k) {
-    case TokenKind::star: case TokenKind::slash: case TokenKind::percent: return 10;
-    case TokenKind::plus: case TokenKind::minus: return 9;
-    case TokenKind::lessless: case TokenKind::greatergreater: return 8;
-    case TokenKind::less: case TokenKind::greater:
-    case TokenKind::lessequal: case TokenKind::greaterequal: return 7;
-    case TokenKind::equalequal: case TokenKind::exclaimequal: return 6;
+    case TokenKind::star:
+    case TokenKind::slash:
+    case TokenKind::percent: return 10;
+    case TokenKind::plus:
+    case TokenKind::minus: return 9;
+    case TokenKind::lessless:
+    case TokenKind::greatergreater: return 8;
+    case TokenKind::less:
+    case TokenKind::greater:
+    case TokenKind::lessequal:
+    case TokenKind::greaterequal: return 7;
+    case TokenKind::equalequal:
+    case TokenKind::exclaimequal: return 6;
     case TokenKind::amp: return 5;
     case TokenKind::caret: return 4;
     case TokenKind::pipe: return 3;
@@ -37,8 +44,7 @@ int precedence(TokenKind k) {
 
 class Evaluator {
  public:
-  Evaluator(std::span<const Token> tokens, SourceLocation directive, DiagnosticSink& diags,
-            Budget& budget)
+  Evaluator(std::span<const Token> tokens, SourceLocation directive, DiagnosticSink& diags, Budget& budget)
       : t_(tokens), directive_(directive), diags_(diags), budget_(budget) {}
 
   bool run() {
@@ -48,8 +54,8 @@ class Evaluator {
     }
     Value v = comma(true);
     if (!failed_ && pos_ < t_.size()) {
-      error(t_[pos_].range(), "token '" + std::string(t_[pos_].text()) +
-                                  "' is not a valid binary operator in a preprocessor expression");
+      error(t_[pos_].range(),
+            "token '" + std::string(t_[pos_].text()) + "' is not a valid binary operator in a preprocessor expression");
     }
     return !failed_ && v.truth();
   }
@@ -70,8 +76,8 @@ class Evaluator {
     if (++depth_ <= budget_.limits().max_nesting) return true;
     if (!failed_) {
       failed_ = true;
-      budget_.fail(here(), "preprocessor expression nested more than " +
-                               std::to_string(budget_.limits().max_nesting) + " levels deep");
+      budget_.fail(here(), "preprocessor expression nested more than " + std::to_string(budget_.limits().max_nesting) +
+                               " levels deep");
     }
     return false;
   }
@@ -169,8 +175,8 @@ class Evaluator {
     if (!enter()) return {};
     Value v;
     const Token* t = peek();
-    if (t && (t->is(TokenKind::minus) || t->is(TokenKind::plus) || t->is(TokenKind::tilde) ||
-              t->is(TokenKind::exclaim))) {
+    if (t &&
+        (t->is(TokenKind::minus) || t->is(TokenKind::plus) || t->is(TokenKind::tilde) || t->is(TokenKind::exclaim))) {
       ++pos_;
       Value x = unary(eval);
       switch (t->kind) {
@@ -218,12 +224,8 @@ class Evaluator {
       case TokenKind::identifier:
         // C: identifiers left after expansion are 0. HLSL is C++-like, so true/false count.
         return signed_value(t->text() == "true" ? 1 : 0);
-      case TokenKind::floating:
-        error(t->range(), "floating-point literal in preprocessor expression");
-        return {};
-      default:
-        error(t->range(), "unexpected '" + std::string(t->text()) + "' in preprocessor expression");
-        return {};
+      case TokenKind::floating: error(t->range(), "floating-point literal in preprocessor expression"); return {};
+      default: error(t->range(), "unexpected '" + std::string(t->text()) + "' in preprocessor expression"); return {};
     }
   }
 
@@ -238,8 +240,8 @@ class Evaluator {
 
 }  // namespace
 
-bool evaluate_condition(std::span<const Token> tokens, SourceLocation directive,
-                        DiagnosticSink& diags, Budget& budget) {
+bool evaluate_condition(std::span<const Token> tokens, SourceLocation directive, DiagnosticSink& diags,
+                        Budget& budget) {
   return Evaluator(tokens, directive, diags, budget).run();
 }
 

@@ -28,8 +28,8 @@ DirectoryLister disk_directory_lister() {
   return [](const std::string& folder) {
     std::vector<std::string> names;
     std::error_code ec;
-    for (std::filesystem::directory_iterator it(folder.empty() ? "." : folder, ec), end;
-         !ec && it != end; it.increment(ec))
+    for (std::filesystem::directory_iterator it(folder.empty() ? "." : folder, ec), end; !ec && it != end;
+         it.increment(ec))
       names.push_back(it->path().filename().string());
     return names;
   };
@@ -109,7 +109,8 @@ std::vector<std::string> ancestor_folders(std::string_view folder, size_t levels
   std::string f = normalize_path(folder);
   while (out.size() < levels && f != "/" && !(f.size() == 2 && f[1] == ':')) {
     const size_t slash = f.rfind('/');
-    const std::string_view last = slash == std::string::npos ? std::string_view(f) : std::string_view(f).substr(slash + 1);
+    const std::string_view last =
+        slash == std::string::npos ? std::string_view(f) : std::string_view(f).substr(slash + 1);
     if (f.empty() || last == "..") f = f.empty() ? std::string("..") : f + "/..";
     else f = parent_folder(f);
     out.push_back(f);
@@ -117,10 +118,8 @@ std::vector<std::string> ancestor_folders(std::string_view folder, size_t levels
   return out;
 }
 
-std::optional<ResolvedInclude> resolve_include(std::string_view name,
-                                               const std::vector<std::string>& folders,
-                                               const FileLoader& loader,
-                                               const DirectoryLister& lister) {
+std::optional<ResolvedInclude> resolve_include(std::string_view name, const std::vector<std::string>& folders,
+                                               const FileLoader& loader, const DirectoryLister& lister) {
   std::vector<std::string> candidates;
   if (is_absolute(normalize_path(name))) candidates.push_back(normalize_path(name));
   else
@@ -157,8 +156,7 @@ std::optional<ResolvedInclude> resolve_include(std::string_view name,
       real = real.empty() ? next : real == "/" ? "/" + next : real + "/" + next;
     }
     if (!found) continue;
-    if (std::optional<std::string> text = loader(real))
-      return ResolvedInclude{real, std::move(*text), true};
+    if (std::optional<std::string> text = loader(real)) return ResolvedInclude{real, std::move(*text), true};
   }
   return std::nullopt;
 }

@@ -26,21 +26,21 @@ struct Macro {
   std::vector<Token> body;
   std::vector<int32_t> param_of;  // per body token: index into params, or -1
   std::vector<std::string_view> params;
-  SourceLocation body_start;      // first body character: the expansion's spelling
-  uint32_t body_length = 0;       // characters from body_start to the end of the body
+  SourceLocation body_start;  // first body character: the expansion's spelling
+  uint32_t body_length = 0;   // characters from body_start to the end of the body
   Builtin builtin = Builtin::none;
   bool function_like = false;
-  bool variadic = false;          // the last parameter is __VA_ARGS__
-  bool has_operators = false;     // '#' or '##' in the body: substitution takes the slow path
-  bool disabled = false;          // being rescanned: its name must not expand again
+  bool variadic = false;       // the last parameter is __VA_ARGS__
+  bool has_operators = false;  // '#' or '##' in the body: substitution takes the slow path
+  bool disabled = false;       // being rescanned: its name must not expand again
 
   bool same_definition(const Macro& other) const;
 };
 
 // Parses the tokens of a `#define` line after the directive name (all on one line).
 // Returns nullptr after reporting an error.
-std::unique_ptr<Macro> parse_macro_definition(std::span<const Token> line,
-                                              SourceLocation directive, DiagnosticSink& diags);
+std::unique_ptr<Macro> parse_macro_definition(std::span<const Token> line, SourceLocation directive,
+                                              DiagnosticSink& diags);
 
 // Macros by name. Replaced and undefined macros stay allocated until clear(), because
 // an expansion in progress may still point at them.
@@ -69,7 +69,10 @@ class MacroTable {
 class Budget {
  public:
   Budget(DiagnosticSink& diags, const PreprocessorLimits& limits) : diags_(diags), limits_(limits) {}
-  void reset() { expansions_ = tokens_ = input_bytes_ = location_space_ = 0; exhausted_ = false; }
+  void reset() {
+    expansions_ = tokens_ = input_bytes_ = location_space_ = 0;
+    exhausted_ = false;
+  }
   bool exhausted() const { return exhausted_; }
   const PreprocessorLimits& limits() const { return limits_; }
   // Each returns false (after reporting at `where`) when the limit is exceeded.
@@ -97,8 +100,8 @@ class FileTokenSource {
 };
 
 // Copies `text` into scratch space and returns a token spelled by it.
-Token scratch_token(SourceManager& sm, Budget& budget, TokenKind kind, std::string_view text,
-                    SourceLocation loc, uint8_t flags);
+Token scratch_token(SourceManager& sm, Budget& budget, TokenKind kind, std::string_view text, SourceLocation loc,
+                    uint8_t flags);
 // Kind of a token spelled `text` if it is exactly one preprocessing token.
 std::optional<TokenKind> classify_token(std::string_view text);
 
@@ -143,9 +146,9 @@ class MacroEngine {
   Budget& budget_;
   FileTokenSource* files_ = nullptr;
   std::vector<std::unique_ptr<Level>> levels_;
-  size_t depth_ = 0;       // levels in use by nested expand_list calls
-  size_t disabled_ = 0;    // macros currently disabled
-  uint32_t counter_ = 0;   // __COUNTER__
+  size_t depth_ = 0;      // levels in use by nested expand_list calls
+  size_t disabled_ = 0;   // macros currently disabled
+  uint32_t counter_ = 0;  // __COUNTER__
   int collecting_ = 0;
   std::string scratch_;
 };
@@ -169,14 +172,11 @@ struct MacroEngine::Level {
   std::vector<Token> build;
 };
 
-inline bool MacroEngine::idle() const {
-  return levels_[0]->pushback.empty() && levels_[0]->active == 0;
-}
+inline bool MacroEngine::idle() const { return levels_[0]->pushback.empty() && levels_[0]->active == 0; }
 
 // Evaluates the macro-expanded tokens of an #if/#elif line. `defined` must already be
 // resolved. Reports `pp-expression` errors and treats a failed expression as false.
-bool evaluate_condition(std::span<const Token> tokens, SourceLocation directive,
-                        DiagnosticSink& diags, Budget& budget);
+bool evaluate_condition(std::span<const Token> tokens, SourceLocation directive, DiagnosticSink& diags, Budget& budget);
 
 // Path helpers for #include: '/' separators, "." and ".." removed lexically.
 std::string normalize_path(std::string_view path);
@@ -198,10 +198,8 @@ struct ResolvedInclude {
 };
 // Tries each folder in order: exact matches everywhere first, then the case-insensitive
 // fallback (when `lister` is set).
-std::optional<ResolvedInclude> resolve_include(std::string_view name,
-                                               const std::vector<std::string>& folders,
-                                               const FileLoader& loader,
-                                               const DirectoryLister& lister);
+std::optional<ResolvedInclude> resolve_include(std::string_view name, const std::vector<std::string>& folders,
+                                               const FileLoader& loader, const DirectoryLister& lister);
 
 // An include found nowhere, said helpfully: the name as it could be reached with the
 // closest file name in the folders searched (swaps and one-letter slips; "" when none is

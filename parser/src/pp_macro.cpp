@@ -22,8 +22,8 @@ constexpr uint8_t kLineFlags = kAtLineStart | kLeadingSpace;
 Token eof_token() { return Token{}; }
 }  // namespace
 
-Token scratch_token(SourceManager& sm, Budget& budget, TokenKind kind, std::string_view text,
-                    SourceLocation loc, uint8_t flags) {
+Token scratch_token(SourceManager& sm, Budget& budget, TokenKind kind, std::string_view text, SourceLocation loc,
+                    uint8_t flags) {
   budget.add_location_space(text.size(), {loc, {}});
   SourceLocation at = sm.add_scratch(text, loc);
   Token t;
@@ -41,8 +41,7 @@ std::optional<TokenKind> classify_token(std::string_view s) {
   };
   auto digit = [](char c) { return c >= '0' && c <= '9'; };
   if (!digit(s[0]) && ident_char(s[0])) {
-    return std::all_of(s.begin(), s.end(), ident_char) ? std::optional(TokenKind::identifier)
-                                                       : std::nullopt;
+    return std::all_of(s.begin(), s.end(), ident_char) ? std::optional(TokenKind::identifier) : std::nullopt;
   }
   if (digit(s[0]) || (s[0] == '.' && s.size() > 1 && digit(s[1]))) {
     // The lexer's pp-number rule, so a pasted number lexes like a written one.
@@ -51,22 +50,18 @@ std::optional<TokenKind> classify_token(std::string_view s) {
     for (size_t i = 0; i < s.size(); ++i) {
       char c = s[i];
       if (c == '.') floating = true;
-      else if ((c == '+' || c == '-') && !hex && i > 0 && (s[i - 1] == 'e' || s[i - 1] == 'E'))
-        floating = true;
+      else if ((c == '+' || c == '-') && !hex && i > 0 && (s[i - 1] == 'e' || s[i - 1] == 'E')) floating = true;
       else if (!ident_char(c)) return std::nullopt;
-      else if (!hex && (c == 'e' || c == 'E' || c == 'f' || c == 'F' || c == 'h' || c == 'H'))
-        floating = true;
+      else if (!hex && (c == 'e' || c == 'E' || c == 'f' || c == 'F' || c == 'h' || c == 'H')) floating = true;
     }
     return floating ? TokenKind::floating : TokenKind::integer;
   }
-  for (auto k = static_cast<uint8_t>(TokenKind::l_paren);
-       k <= static_cast<uint8_t>(TokenKind::hashhash); ++k)
+  for (auto k = static_cast<uint8_t>(TokenKind::l_paren); k <= static_cast<uint8_t>(TokenKind::hashhash); ++k)
     if (s == spelling(static_cast<TokenKind>(k))) return static_cast<TokenKind>(k);
   return std::nullopt;
 }
 
-MacroEngine::MacroEngine(SourceManager& sm, DiagnosticSink& diags, MacroTable& macros,
-                         Budget& budget)
+MacroEngine::MacroEngine(SourceManager& sm, DiagnosticSink& diags, MacroTable& macros, Budget& budget)
     : sm_(sm), diags_(diags), macros_(macros), budget_(budget) {
   level(0).from_files = true;
 }
@@ -140,8 +135,7 @@ Token MacroEngine::next() {
   // pushback exactly as if it had come from the files).
   if (l.pushback.empty() && l.active == 0 && files_ && !budget_.exhausted()) {
     Token t = files_->next_file_token();
-    if (t.kind != TokenKind::identifier || (t.flags & kNoExpand) || !macros_.find(t.text()))
-      return t;
+    if (t.kind != TokenKind::identifier || (t.flags & kNoExpand) || !macros_.find(t.text())) return t;
     l.pushback.push_back(t);
   }
   return next_expanded(l);
@@ -171,8 +165,7 @@ Token MacroEngine::next_expanded(Level& l) {
 void MacroEngine::expand_list(std::span<const Token> in, std::vector<Token>& out) {
   if (depth_ + 1 >= budget_.limits().max_nesting) {
     budget_.fail(in.empty() ? SourceRange{} : in.front().range(),
-                 "macro arguments nested more than " +
-                     std::to_string(budget_.limits().max_nesting) + " levels deep");
+                 "macro arguments nested more than " + std::to_string(budget_.limits().max_nesting) + " levels deep");
     return;
   }
   Level& sub = level(++depth_);
@@ -228,11 +221,9 @@ bool MacroEngine::expand(Level& l, const Token& name, Macro& m) {
   }
   if (!budget_.add_expansion(invocation)) return true;
   if (m.body.empty()) return true;
-  if (!budget_.add_location_space(m.body_length, invocation) ||
-      !budget_.add_tokens(m.body.size(), invocation))
+  if (!budget_.add_location_space(m.body_length, invocation) || !budget_.add_tokens(m.body.size(), invocation))
     return true;
-  SourceLocation base =
-      sm_.add_expansion({std::string(m.name), m.body_start, invocation}, m.body_length);
+  SourceLocation base = sm_.add_expansion({std::string(m.name), m.body_start, invocation}, m.body_length);
   substitute(l, name, m, base);
   return true;
 }
@@ -261,8 +252,7 @@ bool MacroEngine::collect_arguments(Level& l, const Token& name, Macro& m, Token
         close = t;
         break;
       }
-    } else if (t.is(TokenKind::comma) && depth == 1 &&
-               !(m.variadic && l.arg_begin.size() == params)) {
+    } else if (t.is(TokenKind::comma) && depth == 1 && !(m.variadic && l.arg_begin.size() == params)) {
       l.arg_begin.push_back(static_cast<uint32_t>(l.args.size()));
       continue;
     }
@@ -280,8 +270,8 @@ bool MacroEngine::collect_arguments(Level& l, const Token& name, Macro& m, Token
   if (given != params) {
     diags_.error("macro-args", {name.loc, close.range().end},
                  "macro '" + std::string(m.name) + "' takes " + std::to_string(params) +
-                     (params == 1 ? " argument" : " arguments") + ", but " +
-                     std::to_string(given) + (given == 1 ? " was" : " were") + " given");
+                     (params == 1 ? " argument" : " arguments") + ", but " + std::to_string(given) +
+                     (given == 1 ? " was" : " were") + " given");
     return false;
   }
   l.expanded.clear();
@@ -338,8 +328,7 @@ void MacroEngine::substitute(Level& l, const Token& name, Macro& m, SourceLocati
     return t;
   };
   auto raw_arg = [&](size_t i) {
-    return std::span<const Token>(l.args.data() + l.arg_begin[i],
-                                  l.arg_begin[i + 1] - l.arg_begin[i]);
+    return std::span<const Token>(l.args.data() + l.arg_begin[i], l.arg_begin[i + 1] - l.arg_begin[i]);
   };
   // Appends an argument's tokens; its first token takes the parameter's spacing.
   auto append_arg = [&](std::span<const Token> arg, const Token& param) {
@@ -376,8 +365,7 @@ void MacroEngine::substitute(Level& l, const Token& name, Macro& m, SourceLocati
         Token& lhs = out.back();
         scratch_.assign(lhs.text()).append(toks[0].text());
         if (std::optional<TokenKind> kind = classify_token(scratch_)) {
-          lhs = scratch_token(sm_, budget_, *kind, scratch_, lhs.loc,
-                              static_cast<uint8_t>(lhs.flags & ~kNoExpand));
+          lhs = scratch_token(sm_, budget_, *kind, scratch_, lhs.loc, static_cast<uint8_t>(lhs.flags & ~kNoExpand));
           first = 1;
           start = out.size() - 1;
         } else {
@@ -397,8 +385,7 @@ void MacroEngine::substitute(Level& l, const Token& name, Macro& m, SourceLocati
       const Token& bt = m.body[i];
       int32_t p = m.param_of[i];
       if (m.function_like && bt.is(TokenKind::hash)) {
-        Token s = stringize(raw_arg(size_t(m.param_of[i + 1])), mapped(bt).loc,
-                            mapped(bt).flags);
+        Token s = stringize(raw_arg(size_t(m.param_of[i + 1])), mapped(bt).loc, mapped(bt).flags);
         append_operand({&s, 1}, bt, false);
         ++i;
         continue;

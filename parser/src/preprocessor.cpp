@@ -26,7 +26,10 @@ constexpr size_t kAncestorLevels = 8;
 class Preprocessor::Impl final : public pp::FileTokenSource {
  public:
   Impl(SourceManager& sm, DiagnosticSink& diags, PreprocessorOptions options)
-      : sm_(sm), diags_(diags), options_(std::move(options)), budget_(diags, options_.limits),
+      : sm_(sm),
+        diags_(diags),
+        options_(std::move(options)),
+        budget_(diags, options_.limits),
         engine_(sm, diags, macros_, budget_) {
     if (!options_.loader) {
       options_.loader = disk_file_loader();
@@ -49,8 +52,11 @@ class Preprocessor::Impl final : public pp::FileTokenSource {
   // groups (which C still tokenizes) cannot produce errors.
   struct Frame {
     Frame(SourceManager& sm, BufferId id, std::string p, size_t base)
-        : buffer(id), path(std::move(p)), folder(pp::parent_folder(path)),
-          lexer(sm, id, lex_diags), conditional_base(base) {}
+        : buffer(id),
+          path(std::move(p)),
+          folder(pp::parent_folder(path)),
+          lexer(sm, id, lex_diags),
+          conditional_base(base) {}
     BufferId buffer;
     std::string path, folder;
     DiagnosticSink lex_diags;
@@ -63,7 +69,7 @@ class Preprocessor::Impl final : public pp::FileTokenSource {
   };
   struct Conditional {
     SourceLocation loc;
-    bool taken = false;      // some group of this #if chain was (or is being) emitted
+    bool taken = false;  // some group of this #if chain was (or is being) emitted
     bool seen_else = false;
   };
 
@@ -78,8 +84,7 @@ class Preprocessor::Impl final : public pp::FileTokenSource {
   void define(Frame& f);
   void undefine(Frame& f);
   void include(Frame& f, const Token& hash);
-  void include_file(Frame& f, const Token& hash, SourceRange spelled, const std::string& name,
-                    bool angled);
+  void include_file(Frame& f, const Token& hash, SourceRange spelled, const std::string& name, bool angled);
   void line_directive(Frame& f, const Token& name);
   void message_directive(Frame& f, const Token& hash, const Token& name);
   Token kept_directive(Frame& f, const Token& hash, const Token& name);
@@ -130,8 +135,7 @@ void Preprocessor::Impl::read_line(Frame& f, bool keep) {
   forward(f, keep);
 }
 
-void Preprocessor::Impl::push_file(const std::string& path, std::string text,
-                                   SourceLocation included_from) {
+void Preprocessor::Impl::push_file(const std::string& path, std::string text, SourceLocation included_from) {
   bool seen = false;
   for (const std::string& p : files_) seen = seen || p == path;
   if (!seen) files_.push_back(path);
@@ -146,8 +150,7 @@ Token Preprocessor::Impl::next_file_token() {
   // limits. Everything else takes next_file_token_slow().
   if (!frames_.empty()) {
     Frame& f = *frames_.back();
-    if (f.ahead_next + 1 < f.ahead_size && !budget_.exhausted() &&
-        !diags_.error_limit_reached())
+    if (f.ahead_next + 1 < f.ahead_size && !budget_.exhausted() && !diags_.error_limit_reached())
       return f.ahead[f.ahead_next++];
   }
   return next_file_token_slow();
@@ -222,8 +225,7 @@ std::optional<Token> Preprocessor::Impl::directive(Frame& f, const Token& hash) 
       open_conditional(f, hash, false);
       return std::nullopt;
     }
-    if (line_.size() > 1)
-      diags_.warning("extra-tokens", line_[1].range(), "extra tokens at end of #" + std::string(n));
+    if (line_.size() > 1) diags_.warning("extra-tokens", line_[1].range(), "extra tokens at end of #" + std::string(n));
     bool defined = macros_.find(line_[0].text()) != nullptr;
     open_conditional(f, hash, n == "ifdef" ? defined : !defined);
   } else if (n == "elif" || n == "else") {
@@ -231,8 +233,7 @@ std::optional<Token> Preprocessor::Impl::directive(Frame& f, const Token& hash) 
     Conditional* c = current_conditional(f, name);
     skip_line(f);
     if (!c) return std::nullopt;
-    if (c->seen_else)
-      diags_.error("invalid-directive", name.range(), "#" + std::string(n) + " after #else");
+    if (c->seen_else) diags_.error("invalid-directive", name.range(), "#" + std::string(n) + " after #else");
     if (n == "else") c->seen_else = true;
     skip_group(f);
   } else if (n == "endif") {
@@ -280,8 +281,8 @@ void Preprocessor::Impl::define(Frame& f) {
     diags_.warning("builtin-macro-redefined", line_[0].range(),
                    "redefining builtin macro '" + std::string(m->name) + "'");
   } else if (previous && !previous->same_definition(*m)) {
-    Diagnostic& d = diags_.warning("macro-redefined", line_[0].range(),
-                                   "'" + std::string(m->name) + "' macro redefined");
+    Diagnostic& d =
+        diags_.warning("macro-redefined", line_[0].range(), "'" + std::string(m->name) + "' macro redefined");
     d.notes.push_back({previous->name_loc, "previous definition is here"});
   }
   macros_.define(std::move(m));
@@ -343,16 +344,14 @@ void Preprocessor::Impl::include(Frame& f, const Token& hash) {
                    "expected \"FILENAME\" or <FILENAME> after #include");
       return;
     }
-    if (toks->size() > extra)
-      diags_.warning("extra-tokens", (*toks)[extra].range(), "extra tokens at end of #include");
+    if (toks->size() > extra) diags_.warning("extra-tokens", (*toks)[extra].range(), "extra tokens at end of #include");
   }
-  if (header && !line_.empty())
-    diags_.warning("extra-tokens", line_[0].range(), "extra tokens at end of #include");
+  if (header && !line_.empty()) diags_.warning("extra-tokens", line_[0].range(), "extra tokens at end of #include");
   include_file(f, hash, spelled, name, angled);
 }
 
-void Preprocessor::Impl::include_file(Frame& f, const Token& hash, SourceRange spelled,
-                                      const std::string& name, bool angled) {
+void Preprocessor::Impl::include_file(Frame& f, const Token& hash, SourceRange spelled, const std::string& name,
+                                      bool angled) {
   std::vector<std::string> folders;
   // fxc, like MSVC, looks for a quoted name beside the file holding the directive, then
   // beside each file that included it, innermost first, and only then in the -I folders.
@@ -361,8 +360,7 @@ void Preprocessor::Impl::include_file(Frame& f, const Token& hash, SourceRange s
       if (std::find(folders.begin(), folders.end(), (*open)->folder) == folders.end())
         folders.push_back((*open)->folder);
   folders.insert(folders.end(), options_.include_dirs.begin(), options_.include_dirs.end());
-  std::optional<pp::ResolvedInclude> found =
-      pp::resolve_include(name, folders, options_.loader, options_.lister);
+  std::optional<pp::ResolvedInclude> found = pp::resolve_include(name, folders, options_.loader, options_.lister);
   // "Data/Effects/x.fx" found nowhere: written relative to the folder the engine runs
   // from, which is then above the including file (tried nearest first, with a warning).
   std::string ancestor;
@@ -389,8 +387,8 @@ void Preprocessor::Impl::include_file(Frame& f, const Token& hash, SourceRange s
                    "'" + name + "' is found only from the folder '" + ancestor +
                        "' above the including file (as a program run there would find it); add it to the include path");
   if (frames_.size() >= options_.limits.max_include_depth) {
-    std::string message = "#include nested more than " +
-                          std::to_string(options_.limits.max_include_depth) + " levels deep";
+    std::string message =
+        "#include nested more than " + std::to_string(options_.limits.max_include_depth) + " levels deep";
     for (const auto& open : frames_)
       if (open->path == found->path) {
         message += " (include cycle: '" + found->path + "' includes itself)";
@@ -428,18 +426,15 @@ void Preprocessor::Impl::line_directive(Frame& f, const Token& name) {
   std::string_view text = sm_.buffer_text(f.buffer);
   size_t newline = text.find('\n', sm_.offset_in_buffer(last.loc) + last.text().size());
   if (newline == std::string_view::npos) return;  // nothing follows to renumber
-  sm_.add_line_directive(sm_.location(f.buffer, static_cast<uint32_t>(newline + 1)), line,
-                         std::move(file));
+  sm_.add_line_directive(sm_.location(f.buffer, static_cast<uint32_t>(newline + 1)), line, std::move(file));
 }
 
 void Preprocessor::Impl::message_directive(Frame& f, const Token& hash, const Token& name) {
   std::string_view rest = f.lexer.rest_of_line();
   // The message is raw text (apostrophes allowed); drop a trailing line comment.
-  if (size_t c = rest.find("//"); c != std::string_view::npos && rest.find('"') > c)
-    rest = rest.substr(0, c);
+  if (size_t c = rest.find("//"); c != std::string_view::npos && rest.find('"') > c) rest = rest.substr(0, c);
   while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
-  while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t' || rest.back() == '\r'))
-    rest.remove_suffix(1);
+  while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t' || rest.back() == '\r')) rest.remove_suffix(1);
   std::string message = rest.empty() ? "#" + std::string(name.text()) : std::string(rest);
   SourceRange range{hash.loc, name.range().end};
   if (name.text() == "error") diags_.error("error-directive", range, std::move(message));
@@ -476,8 +471,7 @@ void Preprocessor::Impl::open_conditional(Frame& f, const Token& hash, bool valu
   if (!value) skip_group(f);
 }
 
-Preprocessor::Impl::Conditional* Preprocessor::Impl::current_conditional(Frame& f,
-                                                                         const Token& name) {
+Preprocessor::Impl::Conditional* Preprocessor::Impl::current_conditional(Frame& f, const Token& name) {
   if (conditionals_.size() > f.conditional_base) return &conditionals_.back();
   diags_.error(name.text() == "endif" ? "unmatched-endif" : "unmatched-conditional", name.range(),
                "#" + std::string(name.text()) + " without #if");
@@ -508,8 +502,7 @@ void Preprocessor::Impl::skip_group(Frame& f) {
       --nested;
     } else if (nested == 0 && (n == "elif" || n == "else")) {
       Conditional& c = conditionals_.back();
-      if (c.seen_else)
-        diags_.error("invalid-directive", name.range(), "#" + std::string(n) + " after #else");
+      if (c.seen_else) diags_.error("invalid-directive", name.range(), "#" + std::string(n) + " after #else");
       if (n == "else") {
         c.seen_else = true;
         skip_line(f);
@@ -526,8 +519,7 @@ void Preprocessor::Impl::skip_group(Frame& f) {
 void Preprocessor::Impl::close_conditionals(Frame& f) {
   while (conditionals_.size() > f.conditional_base) {
     if (!budget_.exhausted())
-      diags_.error("unterminated-conditional", {conditionals_.back().loc, {}},
-                   "unterminated conditional directive");
+      diags_.error("unterminated-conditional", {conditionals_.back().loc, {}}, "unterminated conditional directive");
     conditionals_.pop_back();
   }
 }
@@ -540,8 +532,7 @@ void Preprocessor::Impl::run_definitions(std::string name, std::string text) {
   frames_.clear();
 }
 
-bool Preprocessor::Impl::run(const std::string& name, std::optional<std::string> text,
-                             std::vector<Token>& out) {
+bool Preprocessor::Impl::run(const std::string& name, std::optional<std::string> text, std::vector<Token>& out) {
   size_t errors_before = diags_.error_count();
   engine_.reset(this);
   macros_.clear();
@@ -552,8 +543,7 @@ bool Preprocessor::Impl::run(const std::string& name, std::optional<std::string>
   files_.clear();
   includes_.clear();
 
-  for (auto [builtin, spelling] : {std::pair{pp::Builtin::file, "__FILE__"},
-                                   std::pair{pp::Builtin::line, "__LINE__"},
+  for (auto [builtin, spelling] : {std::pair{pp::Builtin::file, "__FILE__"}, std::pair{pp::Builtin::line, "__LINE__"},
                                    std::pair{pp::Builtin::counter, "__COUNTER__"}}) {
     auto m = std::make_unique<Macro>();
     m->name = spelling;
@@ -599,8 +589,7 @@ bool Preprocessor::Impl::run(const std::string& name, std::optional<std::string>
     // would only make the parser report the same mistake again.
     if (t.kind == TokenKind::unknown) continue;
     if (++emitted > options_.limits.max_tokens) {
-      budget_.fail(t.range(), "more than " + std::to_string(options_.limits.max_tokens) +
-                                  " output tokens");
+      budget_.fail(t.range(), "more than " + std::to_string(options_.limits.max_tokens) + " output tokens");
       break;
     }
     if (out.size() == out.capacity()) reserve_with_huge_pages(out, 4 * out.capacity());  // see copy_plain_tokens

@@ -48,9 +48,8 @@ class StateIndex {
     }
     add(state_data::d3d9_sampler_states());
     add(state_data::d3d10_states());
-    std::stable_sort(rows_.begin(), rows_.end(), [](const StateInfo& a, const StateInfo& b) {
-      return a.block < b.block;
-    });
+    std::stable_sort(rows_.begin(), rows_.end(),
+                     [](const StateInfo& a, const StateInfo& b) { return a.block < b.block; });
     size_t capacity = 1;
     while (capacity < rows_.size() * 2) capacity *= 2;
     slots_.assign(capacity, Slot{});
@@ -126,8 +125,7 @@ class EnumIndex {
   EnumIndex() {
     std::vector<const EnumSet*> sets = {&state_data::kBoolean};
     for (const StateInfo& s : state_index().rows())
-      if (s.enums && std::find(sets.begin(), sets.end(), s.enums) == sets.end())
-        sets.push_back(s.enums);
+      if (s.enums && std::find(sets.begin(), sets.end(), s.enums) == sets.end()) sets.push_back(s.enums);
     // Keys already present keep their value, so a bare name wins over a prefixed one, and
     // earlier prefixes and values over later ones, as in a scan in the table's order.
     for (const EnumSet* set : sets) {
@@ -289,72 +287,72 @@ std::string_view to_string(StateLanding landing) {
 
 std::string_view to_string(StateField field) {
   static constexpr std::string_view kNames[] = {
-    "none",
-    "depth_test",
-    "depth_write",
-    "depth_compare",
-    "stencil_test",
-    "stencil_read_mask",
-    "stencil_write_mask",
-    "stencil_front_fail",
-    "stencil_front_depth_fail",
-    "stencil_front_pass",
-    "stencil_front_compare",
-    "stencil_back_fail",
-    "stencil_back_depth_fail",
-    "stencil_back_pass",
-    "stencil_back_compare",
-    "stencil_two_sided",
-    "stencil_ref",
-    "fill",
-    "cull",
-    "front_face_ccw",
-    "depth_bias_d3d9",
-    "depth_bias_units",
-    "depth_bias_clamp",
-    "depth_bias_slope",
-    "depth_clip",
-    "scissor",
-    "multisample",
-    "antialiased_lines",
-    "blend_enable",
-    "src_color",
-    "dst_color",
-    "color_op",
-    "src_alpha",
-    "dst_alpha",
-    "alpha_op",
-    "separate_alpha",
-    "write_mask",
-    "blend_constants",
-    "alpha_to_coverage",
-    "sample_mask",
-    "srgb_write",
-    "alpha_test",
-    "alpha_compare",
-    "alpha_ref",
-    "state_object",
-    "shader",
-    "shader_constants",
-    "texture",
-    "sampler",
-    "address_u",
-    "address_v",
-    "address_w",
-    "border_color",
-    "mag_filter",
-    "min_filter",
-    "mip_filter",
-    "lod_bias",
-    "max_mip_level",
-    "max_anisotropy",
-    "srgb_texture",
-    "min_lod",
-    "max_lod",
-    "compare",
-    "filter_bits",
-    "stage_color_op",
-    "stage_alpha_op",
+      "none",
+      "depth_test",
+      "depth_write",
+      "depth_compare",
+      "stencil_test",
+      "stencil_read_mask",
+      "stencil_write_mask",
+      "stencil_front_fail",
+      "stencil_front_depth_fail",
+      "stencil_front_pass",
+      "stencil_front_compare",
+      "stencil_back_fail",
+      "stencil_back_depth_fail",
+      "stencil_back_pass",
+      "stencil_back_compare",
+      "stencil_two_sided",
+      "stencil_ref",
+      "fill",
+      "cull",
+      "front_face_ccw",
+      "depth_bias_d3d9",
+      "depth_bias_units",
+      "depth_bias_clamp",
+      "depth_bias_slope",
+      "depth_clip",
+      "scissor",
+      "multisample",
+      "antialiased_lines",
+      "blend_enable",
+      "src_color",
+      "dst_color",
+      "color_op",
+      "src_alpha",
+      "dst_alpha",
+      "alpha_op",
+      "separate_alpha",
+      "write_mask",
+      "blend_constants",
+      "alpha_to_coverage",
+      "sample_mask",
+      "srgb_write",
+      "alpha_test",
+      "alpha_compare",
+      "alpha_ref",
+      "state_object",
+      "shader",
+      "shader_constants",
+      "texture",
+      "sampler",
+      "address_u",
+      "address_v",
+      "address_w",
+      "border_color",
+      "mag_filter",
+      "min_filter",
+      "mip_filter",
+      "lod_bias",
+      "max_mip_level",
+      "max_anisotropy",
+      "srgb_texture",
+      "min_lod",
+      "max_lod",
+      "compare",
+      "filter_bits",
+      "stage_color_op",
+      "stage_alpha_op",
   };
   static_assert(std::size(kNames) == static_cast<size_t>(StateField::stage_alpha_op) + 1);
   return kNames[static_cast<size_t>(field)];
@@ -362,12 +360,10 @@ std::string_view to_string(StateField field) {
 
 std::span<const StateInfo> all_states() { return state_index().rows(); }
 
-const StateInfo* find_state(std::string_view name, StateBlock block) {
-  return state_index().find(name, block);
-}
+const StateInfo* find_state(std::string_view name, StateBlock block) { return state_index().find(name, block); }
 
 namespace {
-constexpr std::string_view kShaderTypes[] = {"VertexShader", "PixelShader", "GeometryShader",
+constexpr std::string_view kShaderTypes[] = {"VertexShader", "PixelShader",  "GeometryShader",
                                              "HullShader",   "DomainShader", "ComputeShader"};
 }  // namespace
 
@@ -465,9 +461,9 @@ std::string render_state_table_markdown() {
       if (s.enums) value += " (`" + std::string(s.enums->name) + "`)";
       if (s.call_args) value = std::to_string(s.call_args) + "-argument call: " + value;
       if (!s.object_kind.empty()) value += " `" + std::string(s.object_kind) + "`";
-      out += "| " + std::string(s.name) + " | " + index + " | " + value + " | " +
-             std::string(to_string(s.api)) + " | " + std::string(to_string(s.vulkan)) + " | " +
-             std::string(to_string(s.area)) + " | " + landing_text(s) + " |\n";
+      out += "| " + std::string(s.name) + " | " + index + " | " + value + " | " + std::string(to_string(s.api)) +
+             " | " + std::string(to_string(s.vulkan)) + " | " + std::string(to_string(s.area)) + " | " +
+             landing_text(s) + " |\n";
     }
   }
   out += "\n## Enumerations\n\n| Set | Prefixes | Values |\n|---|---|---|\n";

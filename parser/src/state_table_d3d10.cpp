@@ -11,8 +11,8 @@ using M = VulkanMeaning;
 using A = VulkanArea;
 using F = StateField;
 
-constexpr StateInfo field(std::string_view name, StateBlock block, T type, A area, F to,
-                          const EnumSet* enums = nullptr, uint16_t index_count = 0) {
+constexpr StateInfo field(std::string_view name, StateBlock block, T type, A area, F to, const EnumSet* enums = nullptr,
+                          uint16_t index_count = 0) {
   StateInfo s;
   s.name = name;
   s.block = block;
@@ -58,8 +58,7 @@ constexpr StateInfo call(std::string_view name, T type, A area, F to, uint8_t ar
 }
 
 // A pass call or assignment that binds the shader of `stage`.
-constexpr StateInfo shader_call(std::string_view name, PassStage stage, uint8_t args,
-                                StateApi api = StateApi::d3d10) {
+constexpr StateInfo shader_call(std::string_view name, PassStage stage, uint8_t args, StateApi api = StateApi::d3d10) {
   StateInfo s = call(name, T::shader, A::shader_stage, F::shader, args, api);
   s.stage = stage;
   return s;

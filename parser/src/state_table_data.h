@@ -8,10 +8,9 @@
 namespace fx::state_data {
 
 // Enumeration sets (state_table_enums.cpp).
-extern const EnumSet kBoolean, kZBuffer, kFill9, kFill10, kCull9, kCull10, kBlend, kBlendOp,
-    kCompare, kStencilOp, kShade, kFogMode, kMaterialSource, kVertexBlend, kPatchEdge,
-    kDegree, kColorWrite, kWrap, kTextureOp, kTextureArg, kTexCoordIndex, kTextureTransform,
-    kTextureAddress, kTextureFilter, kFilter11, kDepthWriteMask, kLightType;
+extern const EnumSet kBoolean, kZBuffer, kFill9, kFill10, kCull9, kCull10, kBlend, kBlendOp, kCompare, kStencilOp,
+    kShade, kFogMode, kMaterialSource, kVertexBlend, kPatchEdge, kDegree, kColorWrite, kWrap, kTextureOp, kTextureArg,
+    kTexCoordIndex, kTextureTransform, kTextureAddress, kTextureFilter, kFilter11, kDepthWriteMask, kLightType;
 
 // D3D9 render, texture-stage, transform, light and material states in passes
 // (state_table_d3d9.cpp).

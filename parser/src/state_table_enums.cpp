@@ -26,28 +26,24 @@ constexpr EnumValue kCull10Values[] = {{"NONE", 1}, {"FRONT", 2}, {"BACK", 3}};
 constexpr P kCull10Prefix[] = {"D3D10_CULL_", "D3D11_CULL_", "CULL_"};
 
 constexpr EnumValue kBlendValues[] = {
-    {"Zero", 1}, {"One", 2}, {"SrcColor", 3}, {"InvSrcColor", 4}, {"SrcAlpha", 5},
-    {"InvSrcAlpha", 6}, {"DestAlpha", 7}, {"InvDestAlpha", 8}, {"DestColor", 9},
-    {"InvDestColor", 10}, {"SrcAlphaSat", 11}, {"BothSrcAlpha", 12}, {"BothInvSrcAlpha", 13},
-    {"BlendFactor", 14}, {"InvBlendFactor", 15}, {"SrcColor2", 16}, {"InvSrcColor2", 17},
-    {"Src1Color", 16}, {"InvSrc1Color", 17}, {"Src1Alpha", 18}, {"InvSrc1Alpha", 19},
+    {"Zero", 1},          {"One", 2},           {"SrcColor", 3},         {"InvSrcColor", 4},   {"SrcAlpha", 5},
+    {"InvSrcAlpha", 6},   {"DestAlpha", 7},     {"InvDestAlpha", 8},     {"DestColor", 9},     {"InvDestColor", 10},
+    {"SrcAlphaSat", 11},  {"BothSrcAlpha", 12}, {"BothInvSrcAlpha", 13}, {"BlendFactor", 14},  {"InvBlendFactor", 15},
+    {"SrcColor2", 16},    {"InvSrcColor2", 17}, {"Src1Color", 16},       {"InvSrc1Color", 17}, {"Src1Alpha", 18},
+    {"InvSrc1Alpha", 19},
 };
 constexpr P kBlendPrefix[] = {"D3DBLEND_", "D3D10_BLEND_", "D3D11_BLEND_"};
 
-constexpr EnumValue kBlendOpValues[] = {
-    {"Add", 1}, {"Subtract", 2}, {"RevSubtract", 3}, {"Min", 4}, {"Max", 5}};
+constexpr EnumValue kBlendOpValues[] = {{"Add", 1}, {"Subtract", 2}, {"RevSubtract", 3}, {"Min", 4}, {"Max", 5}};
 constexpr P kBlendOpPrefix[] = {"D3DBLENDOP_", "D3D10_BLEND_OP_", "D3D11_BLEND_OP_", "BLEND_OP_"};
 
-constexpr EnumValue kCompareValues[] = {
-    {"Never", 1}, {"Less", 2}, {"Equal", 3}, {"LessEqual", 4}, {"Greater", 5},
-    {"NotEqual", 6}, {"GreaterEqual", 7}, {"Always", 8}};
+constexpr EnumValue kCompareValues[] = {{"Never", 1},   {"Less", 2},     {"Equal", 3},        {"LessEqual", 4},
+                                        {"Greater", 5}, {"NotEqual", 6}, {"GreaterEqual", 7}, {"Always", 8}};
 constexpr P kComparePrefix[] = {"D3DCMP_", "D3D10_COMPARISON_", "D3D11_COMPARISON_", "COMPARISON_"};
 
-constexpr EnumValue kStencilOpValues[] = {
-    {"Keep", 1}, {"Zero", 2}, {"Replace", 3}, {"IncrSat", 4}, {"DecrSat", 5},
-    {"Invert", 6}, {"Incr", 7}, {"Decr", 8}};
-constexpr P kStencilOpPrefix[] = {
-    "D3DSTENCILOP_", "D3D10_STENCIL_OP_", "D3D11_STENCIL_OP_", "STENCIL_OP_"};
+constexpr EnumValue kStencilOpValues[] = {{"Keep", 1},    {"Zero", 2},   {"Replace", 3}, {"IncrSat", 4},
+                                          {"DecrSat", 5}, {"Invert", 6}, {"Incr", 7},    {"Decr", 8}};
+constexpr P kStencilOpPrefix[] = {"D3DSTENCILOP_", "D3D10_STENCIL_OP_", "D3D11_STENCIL_OP_", "STENCIL_OP_"};
 
 constexpr EnumValue kShadeValues[] = {{"Flat", 1}, {"Gouraud", 2}, {"Phong", 3}};
 constexpr P kShadePrefix[] = {"D3DSHADE_"};
@@ -58,98 +54,123 @@ constexpr P kFogModePrefix[] = {"D3DFOG_"};
 constexpr EnumValue kMaterialSourceValues[] = {{"Material", 0}, {"Color1", 1}, {"Color2", 2}};
 constexpr P kMaterialSourcePrefix[] = {"D3DMCS_"};
 
-constexpr EnumValue kVertexBlendValues[] = {
-    {"Disable", 0}, {"1Weights", 1}, {"2Weights", 2}, {"3Weights", 3}, {"Tweening", 255},
-    {"0Weights", 256}};
+constexpr EnumValue kVertexBlendValues[] = {{"Disable", 0},  {"1Weights", 1},   {"2Weights", 2},
+                                            {"3Weights", 3}, {"Tweening", 255}, {"0Weights", 256}};
 constexpr P kVertexBlendPrefix[] = {"D3DVBF_"};
 
 constexpr EnumValue kPatchEdgeValues[] = {{"Discrete", 0}, {"Continuous", 1}};
 constexpr P kPatchEdgePrefix[] = {"D3DPATCHEDGE_"};
 
-constexpr EnumValue kDegreeValues[] = {
-    {"Linear", 1}, {"Quadratic", 2}, {"Cubic", 3}, {"Quintic", 5}};
+constexpr EnumValue kDegreeValues[] = {{"Linear", 1}, {"Quadratic", 2}, {"Cubic", 3}, {"Quintic", 5}};
 constexpr P kDegreePrefix[] = {"D3DDEGREE_"};
 
 // `None` (no channel) is XNA's ColorWriteChannels.None, which MonoGame's effect compiler
 // accepts in a pass (its ParserTest.fx writes `ColorWriteEnable = None;`).
-constexpr EnumValue kColorWriteValues[] = {
-    {"Red", 1}, {"Green", 2}, {"Blue", 4}, {"Alpha", 8}, {"All", 15}, {"None", 0}};
-constexpr P kColorWritePrefix[] = {"D3DCOLORWRITEENABLE_", "D3D10_COLOR_WRITE_ENABLE_",
-                                   "D3D11_COLOR_WRITE_ENABLE_", "COLOR_WRITE_ENABLE_"};
+constexpr EnumValue kColorWriteValues[] = {{"Red", 1},   {"Green", 2}, {"Blue", 4},
+                                           {"Alpha", 8}, {"All", 15},  {"None", 0}};
+constexpr P kColorWritePrefix[] = {"D3DCOLORWRITEENABLE_", "D3D10_COLOR_WRITE_ENABLE_", "D3D11_COLOR_WRITE_ENABLE_",
+                                   "COLOR_WRITE_ENABLE_"};
 
-constexpr EnumValue kWrapValues[] = {
-    {"U", 1}, {"V", 2}, {"W", 4}, {"Coord0", 1}, {"Coord1", 2}, {"Coord2", 4}, {"Coord3", 8}};
+constexpr EnumValue kWrapValues[] = {{"U", 1},      {"V", 2},      {"W", 4},     {"Coord0", 1},
+                                     {"Coord1", 2}, {"Coord2", 4}, {"Coord3", 8}};
 constexpr P kWrapPrefix[] = {"D3DWRAP_"};
 
-constexpr EnumValue kTextureOpValues[] = {
-    {"Disable", 1}, {"SelectArg1", 2}, {"SelectArg2", 3}, {"Modulate", 4},
-    {"Modulate2x", 5}, {"Modulate4x", 6}, {"Add", 7}, {"AddSigned", 8}, {"AddSigned2x", 9},
-    {"Subtract", 10}, {"AddSmooth", 11}, {"BlendDiffuseAlpha", 12},
-    {"BlendTextureAlpha", 13}, {"BlendFactorAlpha", 14}, {"BlendTextureAlphaPM", 15},
-    {"BlendCurrentAlpha", 16}, {"PreModulate", 17}, {"ModulateAlpha_AddColor", 18},
-    {"ModulateColor_AddAlpha", 19}, {"ModulateInvAlpha_AddColor", 20},
-    {"ModulateInvColor_AddAlpha", 21}, {"BumpEnvMap", 22}, {"BumpEnvMapLuminance", 23},
-    {"DotProduct3", 24}, {"MultiplyAdd", 25}, {"Lerp", 26}};
+constexpr EnumValue kTextureOpValues[] = {{"Disable", 1},
+                                          {"SelectArg1", 2},
+                                          {"SelectArg2", 3},
+                                          {"Modulate", 4},
+                                          {"Modulate2x", 5},
+                                          {"Modulate4x", 6},
+                                          {"Add", 7},
+                                          {"AddSigned", 8},
+                                          {"AddSigned2x", 9},
+                                          {"Subtract", 10},
+                                          {"AddSmooth", 11},
+                                          {"BlendDiffuseAlpha", 12},
+                                          {"BlendTextureAlpha", 13},
+                                          {"BlendFactorAlpha", 14},
+                                          {"BlendTextureAlphaPM", 15},
+                                          {"BlendCurrentAlpha", 16},
+                                          {"PreModulate", 17},
+                                          {"ModulateAlpha_AddColor", 18},
+                                          {"ModulateColor_AddAlpha", 19},
+                                          {"ModulateInvAlpha_AddColor", 20},
+                                          {"ModulateInvColor_AddAlpha", 21},
+                                          {"BumpEnvMap", 22},
+                                          {"BumpEnvMapLuminance", 23},
+                                          {"DotProduct3", 24},
+                                          {"MultiplyAdd", 25},
+                                          {"Lerp", 26}};
 constexpr P kTextureOpPrefix[] = {"D3DTOP_"};
 
-constexpr EnumValue kTextureArgValues[] = {
-    {"Diffuse", 0}, {"Current", 1}, {"Texture", 2}, {"TFactor", 3}, {"Specular", 4},
-    {"Temp", 5}, {"Constant", 6}, {"Complement", 0x10}, {"AlphaReplicate", 0x20}};
+constexpr EnumValue kTextureArgValues[] = {{"Diffuse", 0},  {"Current", 1},       {"Texture", 2},
+                                           {"TFactor", 3},  {"Specular", 4},      {"Temp", 5},
+                                           {"Constant", 6}, {"Complement", 0x10}, {"AlphaReplicate", 0x20}};
 constexpr P kTextureArgPrefix[] = {"D3DTA_"};
 
-constexpr EnumValue kTexCoordIndexValues[] = {
-    {"PassThru", 0}, {"CameraSpaceNormal", 0x10000}, {"CameraSpacePosition", 0x20000},
-    {"CameraSpaceReflectionVector", 0x30000}, {"SphereMap", 0x40000}};
+constexpr EnumValue kTexCoordIndexValues[] = {{"PassThru", 0},
+                                              {"CameraSpaceNormal", 0x10000},
+                                              {"CameraSpacePosition", 0x20000},
+                                              {"CameraSpaceReflectionVector", 0x30000},
+                                              {"SphereMap", 0x40000}};
 constexpr P kTexCoordIndexPrefix[] = {"D3DTSS_TCI_"};
 
-constexpr EnumValue kTextureTransformValues[] = {
-    {"Disable", 0}, {"Count1", 1}, {"Count2", 2}, {"Count3", 3}, {"Count4", 4},
-    {"Projected", 256}};
+constexpr EnumValue kTextureTransformValues[] = {{"Disable", 0}, {"Count1", 1}, {"Count2", 2},
+                                                 {"Count3", 3},  {"Count4", 4}, {"Projected", 256}};
 constexpr P kTextureTransformPrefix[] = {"D3DTTFF_"};
 
 constexpr EnumValue kTextureAddressValues[] = {
     {"Wrap", 1}, {"Mirror", 2}, {"Clamp", 3}, {"Border", 4}, {"MirrorOnce", 5}};
-constexpr P kTextureAddressPrefix[] = {
-    "D3DTADDRESS_", "D3D10_TEXTURE_ADDRESS_", "D3D11_TEXTURE_ADDRESS_", "TEXTURE_ADDRESS_"};
+constexpr P kTextureAddressPrefix[] = {"D3DTADDRESS_", "D3D10_TEXTURE_ADDRESS_", "D3D11_TEXTURE_ADDRESS_",
+                                       "TEXTURE_ADDRESS_"};
 
-constexpr EnumValue kTextureFilterValues[] = {
-    {"None", 0}, {"Point", 1}, {"Linear", 2}, {"Anisotropic", 3}, {"PyramidalQuad", 6},
-    {"GaussianQuad", 7}, {"ConvolutionMono", 8}};
+constexpr EnumValue kTextureFilterValues[] = {{"None", 0},           {"Point", 1},         {"Linear", 2},
+                                              {"Anisotropic", 3},    {"PyramidalQuad", 6}, {"GaussianQuad", 7},
+                                              {"ConvolutionMono", 8}};
 constexpr P kTextureFilterPrefix[] = {"D3DTEXF_"};
 
 // D3D11_FILTER: bit 0 mip linear, bit 2 mag linear, bit 4 min linear, 0x55 anisotropic,
 // 0x80 comparison, 0x100 minimum, 0x180 maximum reduction.
-constexpr EnumValue kFilter11Values[] = {
-    {"MIN_MAG_MIP_POINT", 0x00}, {"MIN_MAG_POINT_MIP_LINEAR", 0x01},
-    {"MIN_POINT_MAG_LINEAR_MIP_POINT", 0x04}, {"MIN_POINT_MAG_MIP_LINEAR", 0x05},
-    {"MIN_LINEAR_MAG_MIP_POINT", 0x10}, {"MIN_LINEAR_MAG_POINT_MIP_LINEAR", 0x11},
-    {"MIN_MAG_LINEAR_MIP_POINT", 0x14}, {"MIN_MAG_MIP_LINEAR", 0x15}, {"ANISOTROPIC", 0x55},
-    {"COMPARISON_MIN_MAG_MIP_POINT", 0x80}, {"COMPARISON_MIN_MAG_POINT_MIP_LINEAR", 0x81},
-    {"COMPARISON_MIN_POINT_MAG_LINEAR_MIP_POINT", 0x84},
-    {"COMPARISON_MIN_POINT_MAG_MIP_LINEAR", 0x85},
-    {"COMPARISON_MIN_LINEAR_MAG_MIP_POINT", 0x90},
-    {"COMPARISON_MIN_LINEAR_MAG_POINT_MIP_LINEAR", 0x91},
-    {"COMPARISON_MIN_MAG_LINEAR_MIP_POINT", 0x94}, {"COMPARISON_MIN_MAG_MIP_LINEAR", 0x95},
-    {"COMPARISON_ANISOTROPIC", 0xd5},
-    {"MINIMUM_MIN_MAG_MIP_POINT", 0x100}, {"MINIMUM_MIN_MAG_POINT_MIP_LINEAR", 0x101},
-    {"MINIMUM_MIN_POINT_MAG_LINEAR_MIP_POINT", 0x104},
-    {"MINIMUM_MIN_POINT_MAG_MIP_LINEAR", 0x105},
-    {"MINIMUM_MIN_LINEAR_MAG_MIP_POINT", 0x110},
-    {"MINIMUM_MIN_LINEAR_MAG_POINT_MIP_LINEAR", 0x111},
-    {"MINIMUM_MIN_MAG_LINEAR_MIP_POINT", 0x114}, {"MINIMUM_MIN_MAG_MIP_LINEAR", 0x115},
-    {"MINIMUM_ANISOTROPIC", 0x155},
-    {"MAXIMUM_MIN_MAG_MIP_POINT", 0x180}, {"MAXIMUM_MIN_MAG_POINT_MIP_LINEAR", 0x181},
-    {"MAXIMUM_MIN_POINT_MAG_LINEAR_MIP_POINT", 0x184},
-    {"MAXIMUM_MIN_POINT_MAG_MIP_LINEAR", 0x185},
-    {"MAXIMUM_MIN_LINEAR_MAG_MIP_POINT", 0x190},
-    {"MAXIMUM_MIN_LINEAR_MAG_POINT_MIP_LINEAR", 0x191},
-    {"MAXIMUM_MIN_MAG_LINEAR_MIP_POINT", 0x194}, {"MAXIMUM_MIN_MAG_MIP_LINEAR", 0x195},
-    {"MAXIMUM_ANISOTROPIC", 0x1d5}};
+constexpr EnumValue kFilter11Values[] = {{"MIN_MAG_MIP_POINT", 0x00},
+                                         {"MIN_MAG_POINT_MIP_LINEAR", 0x01},
+                                         {"MIN_POINT_MAG_LINEAR_MIP_POINT", 0x04},
+                                         {"MIN_POINT_MAG_MIP_LINEAR", 0x05},
+                                         {"MIN_LINEAR_MAG_MIP_POINT", 0x10},
+                                         {"MIN_LINEAR_MAG_POINT_MIP_LINEAR", 0x11},
+                                         {"MIN_MAG_LINEAR_MIP_POINT", 0x14},
+                                         {"MIN_MAG_MIP_LINEAR", 0x15},
+                                         {"ANISOTROPIC", 0x55},
+                                         {"COMPARISON_MIN_MAG_MIP_POINT", 0x80},
+                                         {"COMPARISON_MIN_MAG_POINT_MIP_LINEAR", 0x81},
+                                         {"COMPARISON_MIN_POINT_MAG_LINEAR_MIP_POINT", 0x84},
+                                         {"COMPARISON_MIN_POINT_MAG_MIP_LINEAR", 0x85},
+                                         {"COMPARISON_MIN_LINEAR_MAG_MIP_POINT", 0x90},
+                                         {"COMPARISON_MIN_LINEAR_MAG_POINT_MIP_LINEAR", 0x91},
+                                         {"COMPARISON_MIN_MAG_LINEAR_MIP_POINT", 0x94},
+                                         {"COMPARISON_MIN_MAG_MIP_LINEAR", 0x95},
+                                         {"COMPARISON_ANISOTROPIC", 0xd5},
+                                         {"MINIMUM_MIN_MAG_MIP_POINT", 0x100},
+                                         {"MINIMUM_MIN_MAG_POINT_MIP_LINEAR", 0x101},
+                                         {"MINIMUM_MIN_POINT_MAG_LINEAR_MIP_POINT", 0x104},
+                                         {"MINIMUM_MIN_POINT_MAG_MIP_LINEAR", 0x105},
+                                         {"MINIMUM_MIN_LINEAR_MAG_MIP_POINT", 0x110},
+                                         {"MINIMUM_MIN_LINEAR_MAG_POINT_MIP_LINEAR", 0x111},
+                                         {"MINIMUM_MIN_MAG_LINEAR_MIP_POINT", 0x114},
+                                         {"MINIMUM_MIN_MAG_MIP_LINEAR", 0x115},
+                                         {"MINIMUM_ANISOTROPIC", 0x155},
+                                         {"MAXIMUM_MIN_MAG_MIP_POINT", 0x180},
+                                         {"MAXIMUM_MIN_MAG_POINT_MIP_LINEAR", 0x181},
+                                         {"MAXIMUM_MIN_POINT_MAG_LINEAR_MIP_POINT", 0x184},
+                                         {"MAXIMUM_MIN_POINT_MAG_MIP_LINEAR", 0x185},
+                                         {"MAXIMUM_MIN_LINEAR_MAG_MIP_POINT", 0x190},
+                                         {"MAXIMUM_MIN_LINEAR_MAG_POINT_MIP_LINEAR", 0x191},
+                                         {"MAXIMUM_MIN_MAG_LINEAR_MIP_POINT", 0x194},
+                                         {"MAXIMUM_MIN_MAG_MIP_LINEAR", 0x195},
+                                         {"MAXIMUM_ANISOTROPIC", 0x1d5}};
 constexpr P kFilter11Prefix[] = {"D3D10_FILTER_", "D3D11_FILTER_", "FILTER_"};
 
 constexpr EnumValue kDepthWriteMaskValues[] = {{"ZERO", 0}, {"ALL", 1}};
-constexpr P kDepthWriteMaskPrefix[] = {
-    "D3D10_DEPTH_WRITE_MASK_", "D3D11_DEPTH_WRITE_MASK_", "DEPTH_WRITE_MASK_"};
+constexpr P kDepthWriteMaskPrefix[] = {"D3D10_DEPTH_WRITE_MASK_", "D3D11_DEPTH_WRITE_MASK_", "DEPTH_WRITE_MASK_"};
 
 constexpr EnumValue kLightTypeValues[] = {{"Point", 1}, {"Spot", 2}, {"Directional", 3}};
 constexpr P kLightTypePrefix[] = {"D3DLIGHT_"};

@@ -6,15 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "fx/binding/effect_binding.h"
+#include "fx/binding/effect_textures.h"
 #include "fx/diagnostic.h"
 #include "fx/reload/effect_library.h"
+#include "fx/reload/vulkan_reload_backend.h"
 #include "fx/source_manager.h"
 #include "fx/vulkan/buffer.h"
 #include "fx/vulkan/context.h"
-#include "fx/binding/effect_binding.h"
-#include "fx/binding/effect_textures.h"
 #include "fx/vulkan/frame_resources.h"
-#include "fx/reload/vulkan_reload_backend.h"
 #include "fxkit/device.h"
 
 namespace fxkit::detail {
@@ -44,9 +44,9 @@ struct DeviceState {
   std::unique_ptr<fx::vk::EffectTextureCache> textures;
   std::unique_ptr<fx::vk::ReloadBackend> backend;
   std::unique_ptr<fx::EffectLibrary> library;
-  fx::vk::Buffer default_attributes;  // (0, 0, 0, 1) for Target::default_attribute_binding
+  fx::vk::Buffer default_attributes;                       // (0, 0, 0, 1) for Target::default_attribute_binding
   std::vector<std::weak_ptr<struct EffectState>> effects;  // loaded through this device
-  std::vector<Message> warnings;  // Device::warnings()
+  std::vector<Message> warnings;                           // Device::warnings()
 
   // After load() and every poll(): each effect's `store` is its live version's.
   void refresh_stores();
@@ -59,7 +59,7 @@ struct EffectState {
   fx::ParameterStore* store = nullptr;
   fxkit::detail::DrawState* draw = nullptr;  // store's per-object state: Effect::set_matrix's inline path
   fx::vk::RenderingFormats formats;
-  VkBuffer default_attributes = VK_NULL_HANDLE;  // bound at default_binding by begin()
+  VkBuffer default_attributes = VK_NULL_HANDLE;    // bound at default_binding by begin()
   fx::vk::EffectTextureCache* textures = nullptr;  // the device's; null once it is destroyed
   uint32_t default_binding = 0;
   // The binding begin() started recording with (its version kept alive until end()), and
@@ -78,7 +78,7 @@ struct EffectState {
     fx::vk::ImageKind kind = fx::vk::ImageKind::image2d;
   };
   std::vector<AppTexture> app_textures;
-  uint64_t textures_serial = 0;  // the version app_textures were bound to
+  uint64_t textures_serial = 0;   // the version app_textures were bound to
   uint64_t scene_checked = 0;     // the version set_scene() last checked for unbound transforms
   fx::DiagnosticSink sink;        // problems of set/apply calls, moved to `problems`
   std::vector<Message> problems;  // the newest kRecentProblems of them

@@ -17,8 +17,9 @@ std::vector<Message> check_target(const Target& t) {
     out.push_back(to_message(fx::Severity::error, "target-incomplete", std::move(text)));
   };
   if (t.front_faces == Winding::unset)
-    error("Target::front_faces is unset: say whether the meshes' front faces are clockwise (Direct3D) or "
-          "counter_clockwise (OpenGL, glTF)");
+    error(
+        "Target::front_faces is unset: say whether the meshes' front faces are clockwise (Direct3D) or "
+        "counter_clockwise (OpenGL, glTF)");
   if (t.y_flip == YFlip::unset)
     error("Target::y_flip is unset: say whether the viewport height is negative or the projection flips Y");
   if (t.formats.color.size() > fx::vk::kMaxColorAttachments)
@@ -46,8 +47,8 @@ fx::vk::PassTargetInfo pass_target(const Target& target) {
   info.samples = target.formats.samples;
   info.depth_bits = fx::vk::depth_bits(target.formats.depth);
   info.negative_viewport_height = target.y_flip == YFlip::negative_viewport;
-  info.mesh_front_face = target.front_faces == Winding::counter_clockwise ? fx::FrontFace::counter_clockwise
-                                                                          : fx::FrontFace::clockwise;
+  info.mesh_front_face =
+      target.front_faces == Winding::counter_clockwise ? fx::FrontFace::counter_clockwise : fx::FrontFace::clockwise;
   return info;
 }
 
@@ -99,8 +100,10 @@ std::unique_ptr<detail::DeviceState> make_state(fx::vk::Context ctx, const Devic
   };
   if (defaults != Target::kNoBinding) {
     const fx::vk::DefaultAttributeData constant;
-    auto buffer = fx::vk::Buffer::create(c, {sizeof constant, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                                             fx::vk::MemoryUsage::upload, "fxkit default attributes"}, sink);
+    auto buffer = fx::vk::Buffer::create(
+        c,
+        {sizeof constant, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, fx::vk::MemoryUsage::upload, "fxkit default attributes"},
+        sink);
     if (!buffer || !buffer->write(&constant, sizeof constant)) {
       auto more = detail::to_messages(sink.diagnostics(), nullptr);
       errors.insert(errors.end(), more.begin(), more.end());
@@ -119,7 +122,8 @@ std::unique_ptr<detail::DeviceState> make_state(fx::vk::Context ctx, const Devic
   lib.compile_threads = options.compile_threads;
   lib.frames_in_flight = std::max(1u, options.frames_in_flight);
   if (options.compile_in_workers)
-    lib.compile_workers = fx::CompileWorkerOptions{.executable = options.compile_worker, .workers = options.compile_threads};
+    lib.compile_workers =
+        fx::CompileWorkerOptions{.executable = options.compile_worker, .workers = options.compile_threads};
   s->library = std::make_unique<fx::EffectLibrary>(std::move(lib));
   if (const std::string& why = s->library->compile_workers_error(); !why.empty())
     s->warnings.push_back(detail::to_message(fx::Severity::warning, "compile-workers-unavailable",
@@ -135,7 +139,8 @@ Device::~Device() {
   if (!state_) return;
   state_->ctx->wait_idle();
   state_->library.reset();
-  state_->refresh_stores();  // handles are inert now: no store  // versions and their bindings before what they draw with
+  state_
+      ->refresh_stores();  // handles are inert now: no store  // versions and their bindings before what they draw with
   state_->backend.reset();
   for (const std::weak_ptr<detail::EffectState>& e : state_->effects)
     if (auto effect = e.lock()) effect->textures = nullptr;

@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "api_state.h"
+#include "fx/binding/effect_scene.h"
+#include "fx/binding/effect_textures.h"
+#include "fx/binding/preview_defaults.h"
 #include "fx/model/parameter_store.h"
 #include "fx/reload/reload_transaction.h"
 #include "fx/select/caps_sources.h"
 #include "fx/select/selection.h"
-#include "fx/binding/effect_scene.h"
-#include "fx/binding/effect_textures.h"
-#include "fx/binding/preview_defaults.h"
-#include "api_state.h"
 
 namespace fxkit {
 namespace {
@@ -182,9 +182,10 @@ uint32_t Effect::set_scene(const Scene& scene) {
     const auto read = fx::vk::parameters_read(*version->programs, fx::kNoIndex);
     for (const std::string& name : fx::vk::zero_transforms(*version->params, *version->model, read))
       state_->sink.report(fx::Severity::warning, "scene-transform-unbound", {},
-                          "'" + name + "' is read by the shaders but set_scene() left it zero (no standard semantic, "
-                          "and not a name docs/parameters.md lists): set it, or give it a semantic such as "
-                          "WORLDVIEWPROJECTION");
+                          "'" + name +
+                              "' is read by the shaders but set_scene() left it zero (no standard semantic, "
+                              "and not a name docs/parameters.md lists): set it, or give it a semantic such as "
+                              "WORLDVIEWPROJECTION");
     state_->keep_problems();
   }
   return set;

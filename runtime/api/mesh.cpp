@@ -1,10 +1,10 @@
 // fxkit::Mesh: a built-in or OBJ mesh (lib/mesh) in host-visible vertex and index buffers.
 #include "fxkit/mesh.h"
 
+#include "api_state.h"
+#include "fx/binding/vertex_layout.h"
 #include "fx/mesh.h"
 #include "fx/vulkan/buffer.h"
-#include "fx/binding/vertex_layout.h"
-#include "api_state.h"
 
 namespace fxkit {
 
@@ -29,8 +29,10 @@ std::unique_ptr<Mesh> Mesh::create(Device& device, const std::string& shape, std
   if (!mesh) return fail();
   const VkDeviceSize vbytes = mesh->vertices.size() * sizeof(fx::Vertex);
   const VkDeviceSize ibytes = mesh->indices.size() * sizeof(uint32_t);
-  auto vb = fx::vk::Buffer::create(ctx, {vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, fx::vk::MemoryUsage::upload, "mesh vertices"}, sink);
-  auto ib = fx::vk::Buffer::create(ctx, {ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, fx::vk::MemoryUsage::upload, "mesh indices"}, sink);
+  auto vb = fx::vk::Buffer::create(
+      ctx, {vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, fx::vk::MemoryUsage::upload, "mesh vertices"}, sink);
+  auto ib = fx::vk::Buffer::create(
+      ctx, {ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, fx::vk::MemoryUsage::upload, "mesh indices"}, sink);
   if (!vb || !ib) return fail();
   if (!vb->write(mesh->vertices.data(), vbytes) || !ib->write(mesh->indices.data(), ibytes)) {
     sink.error("vk-call-failed", {}, "could not write the mesh buffers");

@@ -1,6 +1,6 @@
 // Diagnostics of fxkit's front end, compiler and runtime as public Messages.
-#include "fx/diagnostic_render.h"
 #include "api_state.h"
+#include "fx/diagnostic_render.h"
 
 namespace fxkit {
 
@@ -51,8 +51,7 @@ std::vector<Message> to_messages(const std::vector<fx::Diagnostic>& ds, const fx
 void EffectState::keep_problems() {
   for (const fx::Diagnostic& d : sink.diagnostics()) problems.push_back(to_message(d, nullptr));
   sink.clear();
-  if (problems.size() > kRecentProblems)
-    problems.erase(problems.begin(), problems.end() - kRecentProblems);
+  if (problems.size() > kRecentProblems) problems.erase(problems.begin(), problems.end() - kRecentProblems);
 }
 
 }  // namespace detail

@@ -2,8 +2,8 @@
 // format, read back as RGBA8.
 #include "fxkit/offscreen.h"
 
-#include "fx/vulkan/render_target.h"
 #include "api_state.h"
+#include "fx/vulkan/render_target.h"
 
 namespace fxkit {
 
@@ -30,7 +30,8 @@ std::unique_ptr<Offscreen> Offscreen::create(Device& device, uint32_t width, uin
   impl->ctx = &*device.state().ctx;
   impl->y_flip = t.y_flip;
   if (!sink.has_errors())
-    impl->target = fx::vk::RenderTarget::create(*impl->ctx, {width, height, t.formats.color[0], depth, 0, "fxkit offscreen"}, sink);
+    impl->target = fx::vk::RenderTarget::create(*impl->ctx,
+                                                {width, height, t.formats.color[0], depth, 0, "fxkit offscreen"}, sink);
   if (impl->target && impl->target->formats().depth != t.formats.depth)
     sink.error("offscreen-format", {}, "the device has no D24_UNORM_S8_UINT depth attachment; use D32_SFLOAT");
   if (sink.has_errors()) {

@@ -56,9 +56,9 @@ Annotation to_public(const fx::Annotation& a) {
     return out;
   }
   const fx::BaseType base = a.value.type.base;
-  out.kind = base == fx::BaseType::boolean                                  ? Annotation::Kind::boolean
+  out.kind = base == fx::BaseType::boolean                                 ? Annotation::Kind::boolean
              : base == fx::BaseType::int32 || base == fx::BaseType::uint32 ? Annotation::Kind::ints
-                                                                            : Annotation::Kind::floats;
+                                                                           : Annotation::Kind::floats;
   out.values = a.value.floats();
   return out;
 }
@@ -71,7 +71,9 @@ const Annotation* find_annotation(const std::vector<Annotation>& annotations, st
 }  // namespace detail
 
 const Annotation* ParamInfo::annotation(std::string_view n) const { return detail::find_annotation(annotations, n); }
-const Annotation* TechniqueInfo::annotation(std::string_view n) const { return detail::find_annotation(annotations, n); }
+const Annotation* TechniqueInfo::annotation(std::string_view n) const {
+  return detail::find_annotation(annotations, n);
+}
 
 std::vector<ParamInfo> Effect::params() const {
   std::vector<ParamInfo> out;
@@ -90,7 +92,8 @@ std::vector<ParamInfo> Effect::params() const {
     info.scalar = scalar_of(element.base);
     info.rows = element.rows, info.columns = element.cols;
     info.elements = p.type.is_array() ? p.type.element_count() : 0;
-    info.components = info.kind == ParamKind::numeric || info.kind == ParamKind::structure ? p.type.component_count() : 0;
+    info.components =
+        info.kind == ParamKind::numeric || info.kind == ParamKind::structure ? p.type.component_count() : 0;
     if (const fx::TextureInfo* texture = model.texture_of(i)) {
       info.texture_shape = shape_of(texture->shape);
       info.resource_name = texture->resource_name;

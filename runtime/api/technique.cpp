@@ -1,7 +1,7 @@
 // fxkit::Technique: resolves to a technique index of the live version at begin() (by name,
 // or the effect's selection) and records through that version's EffectBinding.
-#include "fx/reload/reload_transaction.h"
 #include "api_state.h"
+#include "fx/reload/reload_transaction.h"
 
 namespace fxkit {
 namespace {
@@ -22,8 +22,8 @@ uint32_t pass_count_of(const fx::EffectVersion& version, uint32_t t) {
 
 // A named technique's index and pass count in `version`, kept in the Technique's fields
 // (`serial`, `index`, `passes`): looked up only when the version is another.
-void remember(const detail::EffectState& s, const fx::EffectVersion& version, const std::string& name,
-              uint64_t& serial, uint32_t& index, uint32_t& passes) {
+void remember(const detail::EffectState& s, const fx::EffectVersion& version, const std::string& name, uint64_t& serial,
+              uint32_t& index, uint32_t& passes) {
   if (serial == version.serial) return;
   index = resolve(s, version, name);
   passes = pass_count_of(version, index);

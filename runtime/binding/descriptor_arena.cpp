@@ -29,9 +29,12 @@ VkDescriptorPool DescriptorArena::add_pool(const ShaderProgram& program, Diagnos
   for (VkDescriptorType type : {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                 VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_DESCRIPTOR_TYPE_SAMPLER})
     add(type, 0);
-  add(to_vk_descriptor(DescriptorKind::uniform_buffer, DescriptorMode::sets), uint32_t(program.uniform_blocks().size()));
-  for (const ProgramImage& image : program.images()) add(to_vk_descriptor(image.kind, DescriptorMode::sets), image.count);
-  for (VkDescriptorPoolSize& size : sizes) size.descriptorCount = std::max(size.descriptorCount, kPerSet) * kSetsPerPool;
+  add(to_vk_descriptor(DescriptorKind::uniform_buffer, DescriptorMode::sets),
+      uint32_t(program.uniform_blocks().size()));
+  for (const ProgramImage& image : program.images())
+    add(to_vk_descriptor(image.kind, DescriptorMode::sets), image.count);
+  for (VkDescriptorPoolSize& size : sizes)
+    size.descriptorCount = std::max(size.descriptorCount, kPerSet) * kSetsPerPool;
   auto info = structure<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
   info.maxSets = kSetsPerPool;
   info.poolSizeCount = uint32_t(sizes.size());

@@ -18,8 +18,8 @@ struct ImageSlot {
   std::string name;
   DescriptorKind kind = DescriptorKind::combined_image_sampler;
   VkSampler sampler = VK_NULL_HANDLE;
-  uint32_t texture_param = kNoIndex;                // the texture parameter it samples
-  std::shared_ptr<const EffectTextureData> data;    // the effect's own texture
+  uint32_t texture_param = kNoIndex;              // the texture parameter it samples
+  std::shared_ptr<const EffectTextureData> data;  // the effect's own texture
 };
 
 // A uniform block of a pass, packed by the parameter store (block id `id`) straight into
@@ -34,8 +34,8 @@ struct BlockSlot {
 
 struct EffectBinding::Pass {
   // What apply() reads, once per object, first.
-  std::vector<BlockSlot> blocks;       // in the program's uniform_blocks() order
-  std::vector<uint32_t> ring_offsets;  // of each block's last write, parallel to `blocks`
+  std::vector<BlockSlot> blocks;             // in the program's uniform_blocks() order
+  std::vector<uint32_t> ring_offsets;        // of each block's last write, parallel to `blocks`
   std::unique_ptr<PassResources> resources;  // of `shader`: released before it (~Pass)
   const PassProgram* program = nullptr;
   ProgramLayout layout;  // the linked layout with same-named blocks told apart
@@ -43,7 +43,7 @@ struct EffectBinding::Pass {
   PipelineState state;
   std::vector<ImageSlot> images;
   std::vector<std::optional<VertexInput>> inputs;  // per vertex layout id
-  SourceRange vertex_shader;  // the state naming the vertex shader (where input errors point)
+  SourceRange vertex_shader;                       // the state naming the vertex shader (where input errors point)
   // Pipelines per vertex layout id for `pipeline_formats`: pipelines live as long as the
   // binding, so apply() looks the key up once per layout and format change, not per call.
   RenderingFormats pipeline_formats;
@@ -117,7 +117,7 @@ EffectBinding::EffectBinding(const Context& ctx, ParameterStore& params, EffectT
     : params_(&params), textures_(&textures), samplers_(ctx), descriptor_sets_(ctx) {}
 
 EffectBinding::~EffectBinding() {
-  recorder_.reset();  // declared first for apply(), it must not outlive what it references
+  recorder_.reset();    // declared first for apply(), it must not outlive what it references
   techniques_.clear();  // programs before the pipeline cache: nothing else depends on order
   live_objects_ -= counted_objects_;
 }
@@ -150,16 +150,16 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
       }
       const PassProgram& program = programs.program(*unit);
       if (!program.ok()) {
-        tech->reason = "pass '" + pass_info.name + "': " +
-                       (program.unsupported.empty() ? std::string("its shaders did not compile")
-                                                    : program.unsupported.front());
+        tech->reason =
+            "pass '" + pass_info.name + "': " +
+            (program.unsupported.empty() ? std::string("its shaders did not compile") : program.unsupported.front());
         break;
       }
       // Fixed-function states are generated stages' input (fx/emulation/fixed_function.h) or,
       // beside shaders, ignored as D3D9 ignores them: only other states stop the pass.
-      auto blocking = std::find_if(pass_info.unsupported.begin(), pass_info.unsupported.end(), [](const UnsupportedState& u) {
-        return !u.info || u.info->lands != StateLanding::fixed_function;
-      });
+      auto blocking = std::find_if(
+          pass_info.unsupported.begin(), pass_info.unsupported.end(),
+          [](const UnsupportedState& u) { return !u.info || u.info->lands != StateLanding::fixed_function; });
       if (blocking != pass_info.unsupported.end()) {
         tech->reason = "pass '" + pass_info.name + "': " + blocking->reason;
         break;
@@ -174,8 +174,9 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
       DiagnosticSink pass_sink;
       auto state = to_pipeline_state(pass_info.summary, desc.target, ctx.features(), pass_sink);
       if (!state) {
-        tech->reason = "pass '" + pass_info.name + "': " +
-                       (pass_sink.diagnostics().empty() ? std::string("state") : pass_sink.diagnostics().front().message);
+        tech->reason =
+            "pass '" + pass_info.name +
+            "': " + (pass_sink.diagnostics().empty() ? std::string("state") : pass_sink.diagnostics().front().message);
         break;
       }
       auto pass = std::make_unique<Pass>();
@@ -188,8 +189,9 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
       for (const StageProgram& s : program.stages) stages.push_back(&s.shader);
       auto shader = ShaderProgram::create(ctx, stages, pass->layout, desc.descriptors, pass_sink);
       if (!shader) {
-        tech->reason = "pass '" + pass_info.name + "': " +
-                       (pass_sink.diagnostics().empty() ? std::string("program") : pass_sink.diagnostics().front().message);
+        tech->reason =
+            "pass '" + pass_info.name + "': " +
+            (pass_sink.diagnostics().empty() ? std::string("program") : pass_sink.diagnostics().front().message);
         break;
       }
       pass->shader = std::move(*shader);
@@ -214,8 +216,12 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
         std::vector<BlockMemberLayout> members;
         if (block.reflection)
           for (const BlockMember& m : block.reflection->members) {
-            BlockMemberLayout l{m.name, m.offset, m.size, m.array_stride,
-                                m.matrix_stride ? m.matrix_stride : 16u, MatrixOrder::column_major};
+            BlockMemberLayout l{m.name,
+                                m.offset,
+                                m.size,
+                                m.array_stride,
+                                m.matrix_stride ? m.matrix_stride : 16u,
+                                MatrixOrder::column_major};
             // An HLSL matrix keeps its declared meaning; a GLSL mat4 M * v stores HLSL's
             // mul(v, M) transposed (column c of the GLSL matrix is row c of M).
             Param root = params.find(root_name(m.name));
@@ -245,7 +251,8 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
         if (image.count > 1 && first_mention)
           sink.warning("vk-image-array-first", pass_info.range,
                        "pass '" + pass_info.name + "': '" + image.name + "' is an array of " +
-                           std::to_string(image.count) + "; every element samples its first element's texture and sampler state");
+                           std::to_string(image.count) +
+                           "; every element samples its first element's texture and sampler state");
         if (image.kind != DescriptorKind::sampled_image) {
           SamplerKey vk_desc = sampler_desc ? to_sampler_key(*sampler_desc, pass_sink) : SamplerKey{};
           // A shader that compares (SampleCmp, a shadow sampler) needs a comparing sampler, as
@@ -324,8 +331,8 @@ uint32_t EffectBinding::add_vertex_layout(VertexLayout layout) {
   return uint32_t(layouts_.size() - 1);
 }
 
-bool EffectBinding::set_texture(std::string_view texture, VkImageView view, VkImageLayout layout,
-                                ImageKind kind, DiagnosticSink& sink) {
+bool EffectBinding::set_texture(std::string_view texture, VkImageView view, VkImageLayout layout, ImageKind kind,
+                                DiagnosticSink& sink) {
   uint32_t p = model_->find_parameter(texture);
   if (p == kNoIndex || !model_->texture_of(p)) {
     sink.error("vk-resource-unknown", {}, "the effect has no texture parameter '" + std::string(texture) + "'");
@@ -406,14 +413,15 @@ bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const Renderi
 
 [[gnu::always_inline]] inline bool EffectBinding::apply_inline(uint32_t pass_index, uint32_t vertex_layout,
                                                                DiagnosticSink& sink) {
-  if (!active_ || pass_index >= active_->passes.size()) [[unlikely]] return unknown_pass(pass_index, sink);
+  if (!active_ || pass_index >= active_->passes.size()) [[unlikely]]
+    return unknown_pass(pass_index, sink);
   Pass& pass = *active_->passes[pass_index];
   // Locals: the stores below (the ring, the blocks) may alias members as far as the
   // compiler knows, and this runs once per object.
   ParameterStore& params = *params_;
   PassRecorder& recorder = *recorder_;
   const uint64_t frame = frames_->frame();
-  bool moved = false;  // a block was written to a new ring offset
+  bool moved = false;                                // a block was written to a new ring offset
   uint32_t* ring_offset = pass.ring_offsets.data();  // parallel to pass.blocks
   for (BlockSlot& block : pass.blocks) {
     bool changed;
@@ -429,11 +437,13 @@ bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const Renderi
         size,
         [from = bytes.data(), held = bytes.size(), size](uint8_t* ring) {
           // A block bind_layout refused has no bytes: the shader reads zeros.
-          if (held == size) [[likely]] std::memcpy(ring, from, size);
+          if (held == size) [[likely]]
+            std::memcpy(ring, from, size);
           else std::memset(ring, 0, size);
         },
         sink);
-    if (!offset) [[unlikely]] return false;
+    if (!offset) [[unlikely]]
+      return false;
     *ring_offset++ = *offset;
     block.frame = frame;
     moved = true;
@@ -456,7 +466,8 @@ bool EffectBinding::apply_layout0(void* binding, uint32_t pass_index, void* sink
 }
 
 bool EffectBinding::unknown_pass(uint32_t pass_index, DiagnosticSink& sink) {
-  sink.error("vk-pass-unknown", {}, "apply() of pass " + std::to_string(pass_index) + " outside begin()/end() or past the last pass");
+  sink.error("vk-pass-unknown", {},
+             "apply() of pass " + std::to_string(pass_index) + " outside begin()/end() or past the last pass");
   return false;
 }
 
@@ -488,7 +499,8 @@ bool EffectBinding::pass_objects(uint32_t technique, uint32_t pass_index, const 
                                  uint32_t vertex_layout, VkPipeline& pipeline, const ShaderProgram*& program,
                                  DiagnosticSink& sink) {
   if (!technique_ok(technique) || pass_index >= techniques_[technique]->passes.size()) {
-    sink.error("vk-pass-unknown", {}, "no drawable pass " + std::to_string(pass_index) + " in technique " + std::to_string(technique));
+    sink.error("vk-pass-unknown", {},
+               "no drawable pass " + std::to_string(pass_index) + " in technique " + std::to_string(technique));
     return false;
   }
   Pass& pass = *techniques_[technique]->passes[pass_index];

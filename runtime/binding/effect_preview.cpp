@@ -34,19 +34,24 @@ std::unique_ptr<EffectPreview> EffectPreview::create(const Context& ctx, const M
   std::unique_ptr<EffectPreview> p(new EffectPreview(ctx));
   p->desc_ = desc;
   p->bounds_ = bounds(mesh);
-  p->target_ = RenderTarget::create(ctx, {desc.width, desc.height, desc.color_format, desc.depth, 0, "fxkit preview"}, sink);
+  p->target_ =
+      RenderTarget::create(ctx, {desc.width, desc.height, desc.color_format, desc.depth, 0, "fxkit preview"}, sink);
   p->frames_ = FrameResources::create(ctx, desc.frames, sink);
   if (!p->target_ || !p->frames_) return nullptr;
   const VkDeviceSize vbytes = mesh.vertices.size() * sizeof(Vertex), ibytes = mesh.indices.size() * sizeof(uint32_t);
-  auto vb = Buffer::create(ctx, {vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "preview vertices"}, sink);
-  auto ib = Buffer::create(ctx, {ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUsage::upload, "preview indices"}, sink);
+  auto vb =
+      Buffer::create(ctx, {vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "preview vertices"}, sink);
+  auto ib =
+      Buffer::create(ctx, {ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUsage::upload, "preview indices"}, sink);
   // What an attribute the mesh lacks reads (vertex_layout): (0, 0, 0, 1), and BLENDWEIGHT
   // (1, 0, 0, 0) so that one bone carries the vertex.
   struct {
     DefaultAttributeData defaults;
     float blend_weight[4] = {1, 0, 0, 0};
   } constant;
-  auto cb = Buffer::create(ctx, {sizeof constant, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "preview constant attributes"}, sink);
+  auto cb = Buffer::create(
+      ctx, {sizeof constant, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "preview constant attributes"},
+      sink);
   if (!vb || !ib || !cb) return nullptr;
   if (!vb->write(mesh.vertices.data(), vbytes) || !ib->write(mesh.indices.data(), ibytes) ||
       !cb->write(&constant, sizeof constant)) {
@@ -121,10 +126,13 @@ bool EffectPreview::draw_frame(EffectBinding& binding, uint32_t technique, uint3
                                DiagnosticSink& sink) {
   frames_->begin_frame();
   bool recorded = true;
-  const bool submitted = submit_and_wait(*ctx_, [&](VkCommandBuffer cmd) {
-    recorded = record_passes(cmd, binding, technique, vertex_layout, 1, target_->scissor(), sink);
-    target_->record_readback(cmd);
-  }, sink);
+  const bool submitted = submit_and_wait(
+      *ctx_,
+      [&](VkCommandBuffer cmd) {
+        recorded = record_passes(cmd, binding, technique, vertex_layout, 1, target_->scissor(), sink);
+        target_->record_readback(cmd);
+      },
+      sink);
   if (!submitted || !recorded) return false;
   ++frames_rendered_;
   return true;
@@ -156,7 +164,7 @@ bool EffectPreview::record_passes(VkCommandBuffer cmd, EffectBinding& binding, u
 }
 
 std::optional<double> EffectPreview::time_passes(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
-                                                uint32_t draws, const VkRect2D& scissor, DiagnosticSink& sink) {
+                                                 uint32_t draws, const VkRect2D& scissor, DiagnosticSink& sink) {
   uint32_t families = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(ctx_->physical_device(), &families, nullptr);
   std::vector<VkQueueFamilyProperties> props(families);
@@ -178,13 +186,16 @@ std::optional<double> EffectPreview::time_passes(EffectBinding& binding, uint32_
   }
   frames_->begin_frame();
   bool recorded = true;
-  const bool submitted = submit_and_wait(*ctx_, [&](VkCommandBuffer cmd) {
-    vkCmdResetQueryPool(cmd, queries, 0, 2);
-    // Outside the rendering scope: a binning device rasterizes when the scope ends.
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, 0);
-    recorded = record_passes(cmd, binding, technique, vertex_layout, draws, scissor, sink);
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 1);
-  }, sink);
+  const bool submitted = submit_and_wait(
+      *ctx_,
+      [&](VkCommandBuffer cmd) {
+        vkCmdResetQueryPool(cmd, queries, 0, 2);
+        // Outside the rendering scope: a binning device rasterizes when the scope ends.
+        vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, 0);
+        recorded = record_passes(cmd, binding, technique, vertex_layout, draws, scissor, sink);
+        vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 1);
+      },
+      sink);
   uint64_t ts[2] = {};
   const bool read = submitted && recorded &&
                     vkGetQueryPoolResults(ctx_->device(), queries, 0, 2, sizeof ts, ts, sizeof(uint64_t),

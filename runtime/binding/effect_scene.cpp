@@ -39,58 +39,132 @@ struct NamedSemantic {
   const char* semantic;
 };
 constexpr NamedSemantic kSceneNames[] = {
-    {"g_mworldviewprojection", "WORLDVIEWPROJECTION"}, {"g_mworldviewproj", "WORLDVIEWPROJECTION"},
-    {"g_mwvp", "WORLDVIEWPROJECTION"}, {"g_worldviewproj", "WORLDVIEWPROJECTION"},
-    {"g_worldviewprojection", "WORLDVIEWPROJECTION"}, {"worldviewprojection", "WORLDVIEWPROJECTION"},
-    {"worldviewproj", "WORLDVIEWPROJECTION"}, {"matworldviewproj", "WORLDVIEWPROJECTION"},
-    {"matworldviewprojection", "WORLDVIEWPROJECTION"}, {"matwvp", "WORLDVIEWPROJECTION"},
-    {"mwvp", "WORLDVIEWPROJECTION"}, {"wvp", "WORLDVIEWPROJECTION"}, {"gwvp", "WORLDVIEWPROJECTION"},
-    {"wvpxf", "WORLDVIEWPROJECTION"}, {"modelviewprojection", "WORLDVIEWPROJECTION"},
-    {"modelviewproj", "WORLDVIEWPROJECTION"}, {"mvp", "WORLDVIEWPROJECTION"},
-    {"g_mworld", "WORLD"}, {"g_world", "WORLD"}, {"world", "WORLD"}, {"matworld", "WORLD"}, {"mworld", "WORLD"},
-    {"gworld", "WORLD"}, {"worldxf", "WORLD"}, {"model", "WORLD"}, {"objecttoworld", "WORLD"},
-    {"g_mview", "VIEW"}, {"g_view", "VIEW"}, {"view", "VIEW"}, {"matview", "VIEW"}, {"mview", "VIEW"},
-    {"gview", "VIEW"}, {"viewxf", "VIEW"},
-    {"g_mprojection", "PROJECTION"}, {"g_mproj", "PROJECTION"}, {"g_projection", "PROJECTION"},
-    {"g_proj", "PROJECTION"}, {"projection", "PROJECTION"}, {"proj", "PROJECTION"},
-    {"matprojection", "PROJECTION"}, {"matproj", "PROJECTION"}, {"mproj", "PROJECTION"}, {"projxf", "PROJECTION"},
-    {"g_mworldview", "WORLDVIEW"}, {"g_worldview", "WORLDVIEW"}, {"worldview", "WORLDVIEW"},
-    {"matworldview", "WORLDVIEW"}, {"mworldview", "WORLDVIEW"}, {"modelview", "WORLDVIEW"}, {"wvxf", "WORLDVIEW"},
-    {"g_mviewprojection", "VIEWPROJECTION"}, {"g_mviewproj", "VIEWPROJECTION"}, {"g_viewproj", "VIEWPROJECTION"},
-    {"g_viewprojection", "VIEWPROJECTION"}, {"viewprojection", "VIEWPROJECTION"}, {"viewproj", "VIEWPROJECTION"},
-    {"matviewproj", "VIEWPROJECTION"}, {"matviewprojection", "VIEWPROJECTION"}, {"mviewproj", "VIEWPROJECTION"},
+    {"g_mworldviewprojection", "WORLDVIEWPROJECTION"},
+    {"g_mworldviewproj", "WORLDVIEWPROJECTION"},
+    {"g_mwvp", "WORLDVIEWPROJECTION"},
+    {"g_worldviewproj", "WORLDVIEWPROJECTION"},
+    {"g_worldviewprojection", "WORLDVIEWPROJECTION"},
+    {"worldviewprojection", "WORLDVIEWPROJECTION"},
+    {"worldviewproj", "WORLDVIEWPROJECTION"},
+    {"matworldviewproj", "WORLDVIEWPROJECTION"},
+    {"matworldviewprojection", "WORLDVIEWPROJECTION"},
+    {"matwvp", "WORLDVIEWPROJECTION"},
+    {"mwvp", "WORLDVIEWPROJECTION"},
+    {"wvp", "WORLDVIEWPROJECTION"},
+    {"gwvp", "WORLDVIEWPROJECTION"},
+    {"wvpxf", "WORLDVIEWPROJECTION"},
+    {"modelviewprojection", "WORLDVIEWPROJECTION"},
+    {"modelviewproj", "WORLDVIEWPROJECTION"},
+    {"mvp", "WORLDVIEWPROJECTION"},
+    {"g_mworld", "WORLD"},
+    {"g_world", "WORLD"},
+    {"world", "WORLD"},
+    {"matworld", "WORLD"},
+    {"mworld", "WORLD"},
+    {"gworld", "WORLD"},
+    {"worldxf", "WORLD"},
+    {"model", "WORLD"},
+    {"objecttoworld", "WORLD"},
+    {"g_mview", "VIEW"},
+    {"g_view", "VIEW"},
+    {"view", "VIEW"},
+    {"matview", "VIEW"},
+    {"mview", "VIEW"},
+    {"gview", "VIEW"},
+    {"viewxf", "VIEW"},
+    {"g_mprojection", "PROJECTION"},
+    {"g_mproj", "PROJECTION"},
+    {"g_projection", "PROJECTION"},
+    {"g_proj", "PROJECTION"},
+    {"projection", "PROJECTION"},
+    {"proj", "PROJECTION"},
+    {"matprojection", "PROJECTION"},
+    {"matproj", "PROJECTION"},
+    {"mproj", "PROJECTION"},
+    {"projxf", "PROJECTION"},
+    {"g_mworldview", "WORLDVIEW"},
+    {"g_worldview", "WORLDVIEW"},
+    {"worldview", "WORLDVIEW"},
+    {"matworldview", "WORLDVIEW"},
+    {"mworldview", "WORLDVIEW"},
+    {"modelview", "WORLDVIEW"},
+    {"wvxf", "WORLDVIEW"},
+    {"g_mviewprojection", "VIEWPROJECTION"},
+    {"g_mviewproj", "VIEWPROJECTION"},
+    {"g_viewproj", "VIEWPROJECTION"},
+    {"g_viewprojection", "VIEWPROJECTION"},
+    {"viewprojection", "VIEWPROJECTION"},
+    {"viewproj", "VIEWPROJECTION"},
+    {"matviewproj", "VIEWPROJECTION"},
+    {"matviewprojection", "VIEWPROJECTION"},
+    {"mviewproj", "VIEWPROJECTION"},
     {"vpxf", "VIEWPROJECTION"},
-    {"g_mworldinverse", "WORLDINVERSE"}, {"worldinverse", "WORLDINVERSE"}, {"worldi", "WORLDINVERSE"},
-    {"g_mworldinversetranspose", "WORLDINVERSETRANSPOSE"}, {"g_mworldit", "WORLDINVERSETRANSPOSE"},
-    {"worldinversetranspose", "WORLDINVERSETRANSPOSE"}, {"worldit", "WORLDINVERSETRANSPOSE"},
-    {"matworldit", "WORLDINVERSETRANSPOSE"}, {"worlditxf", "WORLDINVERSETRANSPOSE"},
-    {"g_mviewprojectioninverse", "VIEWPROJECTIONINVERSE"}, {"viewprojectioninverse", "VIEWPROJECTIONINVERSE"},
-    {"viewprojinverse", "VIEWPROJECTIONINVERSE"}, {"invviewproj", "VIEWPROJECTIONINVERSE"},
-    {"inverseviewprojection", "VIEWPROJECTIONINVERSE"}, {"matrixtransform", "WORLDVIEWPROJECTION"},
-    {"g_mviewinverse", "VIEWINVERSE"}, {"viewinverse", "VIEWINVERSE"}, {"viewi", "VIEWINVERSE"},
-    {"viewixf", "VIEWINVERSE"}, {"matviewinverse", "VIEWINVERSE"},
-    {"g_veyept", "CAMERAPOSITION"}, {"g_veyepos", "CAMERAPOSITION"}, {"g_veye", "CAMERAPOSITION"},
-    {"g_eyepos", "CAMERAPOSITION"}, {"g_eyeposition", "CAMERAPOSITION"}, {"eyept", "CAMERAPOSITION"},
-    {"eyepos", "CAMERAPOSITION"}, {"eyeposition", "CAMERAPOSITION"}, {"veyepos", "CAMERAPOSITION"},
-    {"camerapos", "CAMERAPOSITION"}, {"cameraposition", "CAMERAPOSITION"}, {"g_camerapos", "CAMERAPOSITION"},
-    {"viewpos", "CAMERAPOSITION"}, {"viewposition", "CAMERAPOSITION"},
-    {"g_ftime", "TIME"}, {"g_time", "TIME"}, {"ftime", "TIME"}, {"time", "TIME"},
-    {"g_felapsedtime", "ELAPSEDTIME"}, {"elapsedtime", "ELAPSEDTIME"},
-    {"g_vviewportsize", "VIEWPORTPIXELSIZE"}, {"viewportsize", "VIEWPORTPIXELSIZE"},
+    {"g_mworldinverse", "WORLDINVERSE"},
+    {"worldinverse", "WORLDINVERSE"},
+    {"worldi", "WORLDINVERSE"},
+    {"g_mworldinversetranspose", "WORLDINVERSETRANSPOSE"},
+    {"g_mworldit", "WORLDINVERSETRANSPOSE"},
+    {"worldinversetranspose", "WORLDINVERSETRANSPOSE"},
+    {"worldit", "WORLDINVERSETRANSPOSE"},
+    {"matworldit", "WORLDINVERSETRANSPOSE"},
+    {"worlditxf", "WORLDINVERSETRANSPOSE"},
+    {"g_mviewprojectioninverse", "VIEWPROJECTIONINVERSE"},
+    {"viewprojectioninverse", "VIEWPROJECTIONINVERSE"},
+    {"viewprojinverse", "VIEWPROJECTIONINVERSE"},
+    {"invviewproj", "VIEWPROJECTIONINVERSE"},
+    {"inverseviewprojection", "VIEWPROJECTIONINVERSE"},
+    {"matrixtransform", "WORLDVIEWPROJECTION"},
+    {"g_mviewinverse", "VIEWINVERSE"},
+    {"viewinverse", "VIEWINVERSE"},
+    {"viewi", "VIEWINVERSE"},
+    {"viewixf", "VIEWINVERSE"},
+    {"matviewinverse", "VIEWINVERSE"},
+    {"g_veyept", "CAMERAPOSITION"},
+    {"g_veyepos", "CAMERAPOSITION"},
+    {"g_veye", "CAMERAPOSITION"},
+    {"g_eyepos", "CAMERAPOSITION"},
+    {"g_eyeposition", "CAMERAPOSITION"},
+    {"eyept", "CAMERAPOSITION"},
+    {"eyepos", "CAMERAPOSITION"},
+    {"eyeposition", "CAMERAPOSITION"},
+    {"veyepos", "CAMERAPOSITION"},
+    {"camerapos", "CAMERAPOSITION"},
+    {"cameraposition", "CAMERAPOSITION"},
+    {"g_camerapos", "CAMERAPOSITION"},
+    {"viewpos", "CAMERAPOSITION"},
+    {"viewposition", "CAMERAPOSITION"},
+    {"g_ftime", "TIME"},
+    {"g_time", "TIME"},
+    {"ftime", "TIME"},
+    {"time", "TIME"},
+    {"g_felapsedtime", "ELAPSEDTIME"},
+    {"elapsedtime", "ELAPSEDTIME"},
+    {"g_vviewportsize", "VIEWPORTPIXELSIZE"},
+    {"viewportsize", "VIEWPORTPIXELSIZE"},
     {"screensize", "VIEWPORTPIXELSIZE"},
 };
 
 // The transforms set_standard_semantics computes, and the abbreviations effects write for
 // them (NVIDIA's and 3ds Max's WORLDVIEWPROJ, VIEWPROJ).
-constexpr NamedSemantic kTransformBases[] = {
-    {"WORLDVIEWPROJECTION", "WORLDVIEWPROJECTION"}, {"WORLDVIEWPROJ", "WORLDVIEWPROJECTION"},
-    {"VIEWPROJECTION", "VIEWPROJECTION"}, {"VIEWPROJ", "VIEWPROJECTION"}, {"WORLDVIEW", "WORLDVIEW"},
-    {"PROJECTION", "PROJECTION"}, {"PROJ", "PROJECTION"}, {"WORLD", "WORLD"}, {"VIEW", "VIEW"}};
+constexpr NamedSemantic kTransformBases[] = {{"WORLDVIEWPROJECTION", "WORLDVIEWPROJECTION"},
+                                             {"WORLDVIEWPROJ", "WORLDVIEWPROJECTION"},
+                                             {"VIEWPROJECTION", "VIEWPROJECTION"},
+                                             {"VIEWPROJ", "VIEWPROJECTION"},
+                                             {"WORLDVIEW", "WORLDVIEW"},
+                                             {"PROJECTION", "PROJECTION"},
+                                             {"PROJ", "PROJECTION"},
+                                             {"WORLD", "WORLD"},
+                                             {"VIEW", "VIEW"}};
 // Their derived forms' spellings, longest first: WORLDI, VIEWINV, WORLDIT, VIEWIT.
-constexpr NamedSemantic kTransformSuffixes[] = {
-    {"INVERSETRANSPOSE", "INVERSETRANSPOSE"}, {"INVTRANSPOSE", "INVERSETRANSPOSE"}, {"INVTRANS", "INVERSETRANSPOSE"},
-    {"TRANSPOSE", "TRANSPOSE"}, {"INVERSE", "INVERSE"}, {"INV", "INVERSE"}, {"IT", "INVERSETRANSPOSE"},
-    {"I", "INVERSE"}, {"", ""}};
+constexpr NamedSemantic kTransformSuffixes[] = {{"INVERSETRANSPOSE", "INVERSETRANSPOSE"},
+                                                {"INVTRANSPOSE", "INVERSETRANSPOSE"},
+                                                {"INVTRANS", "INVERSETRANSPOSE"},
+                                                {"TRANSPOSE", "TRANSPOSE"},
+                                                {"INVERSE", "INVERSE"},
+                                                {"INV", "INVERSE"},
+                                                {"IT", "INVERSETRANSPOSE"},
+                                                {"I", "INVERSE"},
+                                                {"", ""}};
 
 // What names put around a transform's name: g_m, g_f4x4, m, mat ... and ...Matrix, ...Xf.
 constexpr std::string_view kNamePrefixes[] = {"gm4x4", "gf4x4", "gmat", "gm", "g", "m4x4", "f4x4", "mat", "m", ""};
@@ -163,7 +237,8 @@ std::string_view semantic_by_name(std::string_view name) {
   if (size_t at = bare.find("matrix"); at != std::string::npos && at > 0 && at + 6 < bare.size()) bare.erase(at, 6);
   for (std::string_view prefix : kNamePrefixes)
     for (std::string_view suffix : kNameSuffixes) {
-      if (bare.size() <= prefix.size() + suffix.size() || !bare.starts_with(prefix) || !bare.ends_with(suffix)) continue;
+      if (bare.size() <= prefix.size() + suffix.size() || !bare.starts_with(prefix) || !bare.ends_with(suffix))
+        continue;
       std::string core = bare.substr(prefix.size(), bare.size() - prefix.size() - suffix.size());
       for (std::string_view inverse : {"inverse", "inv"})  // InvView: the inverse in front
         if (core.starts_with(inverse) && core.size() > inverse.size()) core = core.substr(inverse.size()) + "inverse";
@@ -200,8 +275,8 @@ uint32_t set_standard_semantics(ParameterStore& params, const EffectModel& model
     const char* name;
     glm::mat4 m;
   };
-  const Named bases[] = {{"WORLD", scene.world}, {"VIEW", scene.view}, {"PROJECTION", scene.projection},
-                         {"WORLDVIEW", wv}, {"VIEWPROJECTION", vp}, {"WORLDVIEWPROJECTION", wvp}};
+  const Named bases[] = {{"WORLD", scene.world}, {"VIEW", scene.view},   {"PROJECTION", scene.projection},
+                         {"WORLDVIEW", wv},      {"VIEWPROJECTION", vp}, {"WORLDVIEWPROJECTION", wvp}};
   uint32_t set = 0;
   for (const Parameter& param : model.parameters) {
     const bool by_name = param.semantic.empty();
@@ -234,7 +309,8 @@ uint32_t set_standard_semantics(ParameterStore& params, const EffectModel& model
       const glm::vec2 size = scene.viewport_size;
       const float v[4] = {size.x, size.y, 1.0f / size.x, 1.0f / size.y};
       const uint32_t n = type->component_count();
-      if (type->base == BaseType::float32 && (n == 2 || n == 4)) set += params.set(p, std::span<const float>(v, n)) ? 1 : 0;
+      if (type->base == BaseType::float32 && (n == 2 || n == 4))
+        set += params.set(p, std::span<const float>(v, n)) ? 1 : 0;
     }
     if (bound && set != before) bound->push_back({param.name, sem, by_name});
   }

@@ -13,8 +13,7 @@ namespace {
 bool iequals(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
-    if (std::toupper(static_cast<unsigned char>(a[i])) != std::toupper(static_cast<unsigned char>(b[i])))
-      return false;
+    if (std::toupper(static_cast<unsigned char>(a[i])) != std::toupper(static_cast<unsigned char>(b[i]))) return false;
   return true;
 }
 
@@ -92,8 +91,7 @@ std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const Effec
     } else {
       sink.warning("vk-texture-file-missing", param ? param->range : SourceRange{},
                    "texture file '" + file.string() + "' of '" + (param ? param->name : std::string()) +
-                       "' cannot be read; a neutral " + (normal_map ? "flat normal" : "white") +
-                       " texture stands in");
+                       "' cannot be read; a neutral " + (normal_map ? "flat normal" : "white") + " texture stands in");
       key = stand_in_key(neutral, dim, arrayed);
     }
   } else {

@@ -11,8 +11,8 @@ PassRecorder::PassRecorder(const Context& ctx, PipelineCache& pipelines, FrameRe
                            DynamicStateSet dynamic)
     : frames_(&frames), ctx_(&ctx), pipelines_(&pipelines), dynamic_(dynamic) {}
 
-void PassRecorder::begin(VkCommandBuffer cmd, const RenderingFormats& formats,
-                         const VkViewport& viewport, const VkRect2D& scissor) {
+void PassRecorder::begin(VkCommandBuffer cmd, const RenderingFormats& formats, const VkViewport& viewport,
+                         const VkRect2D& scissor) {
   end();
   cmd_ = cmd;
   formats_ = formats;
@@ -35,9 +35,9 @@ void PassRecorder::end() {
 bool PassRecorder::apply(const PassDesc& pass, DiagnosticSink& sink) {
   ++stats_.passes;
   applied_ = nullptr;
-  VkPipeline pipeline = pass.pipeline ? pass.pipeline
-                                      : pipelines_->get(*pass.program, pass.state, *pass.vertex_input,
-                                                        formats_, dynamic_, sink);
+  VkPipeline pipeline = pass.pipeline
+                            ? pass.pipeline
+                            : pipelines_->get(*pass.program, pass.state, *pass.vertex_input, formats_, dynamic_, sink);
   if (!pipeline) return false;
   if (pipeline != pipeline_) {
     vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
@@ -69,21 +69,24 @@ void PassRecorder::record_dynamic_state(const PipelineState& s, bool all) {
     if (FX_CHANGED(depth_write)) vkCmdSetDepthWriteEnable(cmd, s.depth_write), ++calls;
     if (FX_CHANGED(depth_compare)) vkCmdSetDepthCompareOp(cmd, VkCompareOp(s.depth_compare)), ++calls;
     if (FX_CHANGED(stencil_test)) vkCmdSetStencilTestEnable(cmd, s.stencil_test), ++calls;
-    if (FX_CHANGED(front_fail) || FX_CHANGED(front_pass) || FX_CHANGED(front_depth_fail) ||
-        FX_CHANGED(front_compare))
-      vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_FRONT_BIT, VkStencilOp(s.front_fail),
-                        VkStencilOp(s.front_pass), VkStencilOp(s.front_depth_fail),
-                        VkCompareOp(s.front_compare)), ++calls;
-    if (FX_CHANGED(back_fail) || FX_CHANGED(back_pass) || FX_CHANGED(back_depth_fail) ||
-        FX_CHANGED(back_compare))
-      vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_BACK_BIT, VkStencilOp(s.back_fail),
-                        VkStencilOp(s.back_pass), VkStencilOp(s.back_depth_fail),
-                        VkCompareOp(s.back_compare)), ++calls;
-    if (FX_CHANGED(front_compare_mask)) vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_BIT, s.front_compare_mask), ++calls;
-    if (FX_CHANGED(back_compare_mask)) vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_BACK_BIT, s.back_compare_mask), ++calls;
-    if (FX_CHANGED(front_write_mask)) vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_BIT, s.front_write_mask), ++calls;
-    if (FX_CHANGED(back_write_mask)) vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_BACK_BIT, s.back_write_mask), ++calls;
-    if (FX_CHANGED(front_reference)) vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_BIT, s.front_reference), ++calls;
+    if (FX_CHANGED(front_fail) || FX_CHANGED(front_pass) || FX_CHANGED(front_depth_fail) || FX_CHANGED(front_compare))
+      vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_FRONT_BIT, VkStencilOp(s.front_fail), VkStencilOp(s.front_pass),
+                        VkStencilOp(s.front_depth_fail), VkCompareOp(s.front_compare)),
+          ++calls;
+    if (FX_CHANGED(back_fail) || FX_CHANGED(back_pass) || FX_CHANGED(back_depth_fail) || FX_CHANGED(back_compare))
+      vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_BACK_BIT, VkStencilOp(s.back_fail), VkStencilOp(s.back_pass),
+                        VkStencilOp(s.back_depth_fail), VkCompareOp(s.back_compare)),
+          ++calls;
+    if (FX_CHANGED(front_compare_mask))
+      vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_BIT, s.front_compare_mask), ++calls;
+    if (FX_CHANGED(back_compare_mask))
+      vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_BACK_BIT, s.back_compare_mask), ++calls;
+    if (FX_CHANGED(front_write_mask))
+      vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_BIT, s.front_write_mask), ++calls;
+    if (FX_CHANGED(back_write_mask))
+      vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_BACK_BIT, s.back_write_mask), ++calls;
+    if (FX_CHANGED(front_reference))
+      vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_BIT, s.front_reference), ++calls;
     if (FX_CHANGED(back_reference)) vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_BACK_BIT, s.back_reference), ++calls;
     if (FX_CHANGED(depth_bias_constant) || FX_CHANGED(depth_bias_slope) || FX_CHANGED(depth_bias_clamp))
       vkCmdSetDepthBias(cmd, s.depth_bias_constant, s.depth_bias_clamp, s.depth_bias_slope), ++calls;
@@ -101,8 +104,7 @@ void PassRecorder::record_dynamic_state(const PipelineState& s, bool all) {
     fn.set_patch_control_points(cmd, s.patch_control_points), ++calls;
   if (dynamic_.polygon_mode && FX_CHANGED(polygon_mode))
     fn.set_polygon_mode(cmd, VkPolygonMode(s.polygon_mode)), ++calls;
-  if (dynamic_.depth_clamp && FX_CHANGED(depth_clamp))
-    fn.set_depth_clamp_enable(cmd, s.depth_clamp), ++calls;
+  if (dynamic_.depth_clamp && FX_CHANGED(depth_clamp)) fn.set_depth_clamp_enable(cmd, s.depth_clamp), ++calls;
   if (dynamic_.sample_mask && FX_CHANGED(sample_mask)) {
     const VkSampleMask mask = s.sample_mask;
     fn.set_sample_mask(cmd, s.samples(), &mask), ++calls;
@@ -117,19 +119,16 @@ void PassRecorder::record_dynamic_state(const PipelineState& s, bool all) {
       if (!same(s.blend[i], p->blend[i])) return true;
     return false;
   };
-  if (n && dynamic_.color_blend_enable &&
-      blend_changed([](const AttachmentBlend& a, const AttachmentBlend& b) {
+  if (n && dynamic_.color_blend_enable && blend_changed([](const AttachmentBlend& a, const AttachmentBlend& b) {
         return a.blend_enable == b.blend_enable;
       })) {
     VkBool32 enables[kMaxColorAttachments];
     for (uint32_t i = 0; i < n; ++i) enables[i] = s.blend[i].blend_enable;
     fn.set_color_blend_enable(cmd, 0, n, enables), ++calls;
   }
-  if (n && dynamic_.color_blend_equation &&
-      blend_changed([](const AttachmentBlend& a, const AttachmentBlend& b) {
-        return a.src_color == b.src_color && a.dst_color == b.dst_color &&
-               a.color_op == b.color_op && a.src_alpha == b.src_alpha &&
-               a.dst_alpha == b.dst_alpha && a.alpha_op == b.alpha_op;
+  if (n && dynamic_.color_blend_equation && blend_changed([](const AttachmentBlend& a, const AttachmentBlend& b) {
+        return a.src_color == b.src_color && a.dst_color == b.dst_color && a.color_op == b.color_op &&
+               a.src_alpha == b.src_alpha && a.dst_alpha == b.dst_alpha && a.alpha_op == b.alpha_op;
       })) {
     VkColorBlendEquationEXT eq[kMaxColorAttachments];
     for (uint32_t i = 0; i < n; ++i) {
@@ -140,9 +139,7 @@ void PassRecorder::record_dynamic_state(const PipelineState& s, bool all) {
     fn.set_color_blend_equation(cmd, 0, n, eq), ++calls;
   }
   if (n && dynamic_.color_write_mask &&
-      blend_changed([](const AttachmentBlend& a, const AttachmentBlend& b) {
-        return a.write_mask == b.write_mask;
-      })) {
+      blend_changed([](const AttachmentBlend& a, const AttachmentBlend& b) { return a.write_mask == b.write_mask; })) {
     VkColorComponentFlags masks[kMaxColorAttachments];
     for (uint32_t i = 0; i < n; ++i) masks[i] = s.blend[i].write_mask;
     fn.set_color_write_mask(cmd, 0, n, masks), ++calls;
@@ -157,8 +154,7 @@ bool PassRecorder::images_bound(const PassResources& r, DiagnosticSink& sink) co
     const bool needs_sampler = images[i].kind != DescriptorKind::sampled_image;
     if ((needs_view && !b.view) || (needs_sampler && !b.sampler)) {
       sink.error("vk-texture-unbound", {},
-                 "'" + images[i].name + "' has no " + (needs_view && !b.view ? "texture" : "sampler") +
-                     " bound");
+                 "'" + images[i].name + "' has no " + (needs_view && !b.view ? "texture" : "sampler") + " bound");
       return false;
     }
   }
@@ -176,8 +172,7 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
     for (size_t i = 0; i < blocks.size(); ++i) {
       PassResources::Block& b = r.blocks_[i];
       if (b.dirty || !frames_->still_valid(b.uploaded_frame)) {
-        std::optional<UniformAllocation> a =
-            frames_->upload_uniform(b.data.data(), uint32_t(b.data.size()), sink);
+        std::optional<UniformAllocation> a = frames_->upload_uniform(b.data.data(), uint32_t(b.data.size()), sink);
         if (!a) return false;
         b.dirty = false;
         b.uploaded_frame = frames_->frame();
@@ -241,9 +236,8 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
 
   if (push) {
     write_all(VK_NULL_HANDLE);
-    ctx_->functions().push_descriptor_set(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                          program.pipeline_layout(), 0, uint32_t(writes.size()),
-                                          writes.data());
+    ctx_->functions().push_descriptor_set(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, program.pipeline_layout(), 0,
+                                          uint32_t(writes.size()), writes.data());
     ++stats_.descriptor_pushes;
     r.images_changed_ = false;
     pushed_ = &r;
@@ -281,8 +275,8 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
       r.images_changed_ = false;
     }
     if (r.set_ != set_ || !same_offsets || layout_changed) {
-      vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, program.pipeline_layout(), 0,
-                              1, &r.set_, uint32_t(offsets.size()), offsets.data());
+      vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, program.pipeline_layout(), 0, 1, &r.set_,
+                              uint32_t(offsets.size()), offsets.data());
       ++stats_.descriptor_binds;
       set_ = r.set_;
     }

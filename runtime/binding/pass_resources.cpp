@@ -12,16 +12,15 @@ PassResources::PassResources(const ShaderProgram& program) : program_(&program) 
   images_.resize(program.images().size());
 }
 
-static bool write_if_changed(std::vector<uint8_t>& dst, uint32_t offset, const void* data,
-                             uint32_t bytes, bool& dirty) {
+static bool write_if_changed(std::vector<uint8_t>& dst, uint32_t offset, const void* data, uint32_t bytes,
+                             bool& dirty) {
   if (std::memcmp(dst.data() + offset, data, bytes) == 0) return false;
   std::memcpy(dst.data() + offset, data, bytes);
   dirty = true;
   return true;
 }
 
-bool PassResources::set_uniform(std::string_view name, const void* data, uint32_t bytes,
-                                DiagnosticSink& sink) {
+bool PassResources::set_uniform(std::string_view name, const void* data, uint32_t bytes, DiagnosticSink& sink) {
   const auto& blocks = program_->uniform_blocks();
   for (size_t i = 0; i < blocks.size(); ++i) {
     if (!blocks[i].reflection) continue;
@@ -29,8 +28,8 @@ bool PassResources::set_uniform(std::string_view name, const void* data, uint32_
       if (m.name != name) continue;
       if (bytes > m.size || m.offset + bytes > blocks_[i].data.size()) {
         sink.error("vk-uniform-size", {},
-                   "uniform '" + std::string(name) + "' has " + std::to_string(m.size) +
-                       " bytes; " + std::to_string(bytes) + " given");
+                   "uniform '" + std::string(name) + "' has " + std::to_string(m.size) + " bytes; " +
+                       std::to_string(bytes) + " given");
         return false;
       }
       write_if_changed(blocks_[i].data, m.offset, data, bytes, blocks_[i].dirty);
@@ -41,8 +40,8 @@ bool PassResources::set_uniform(std::string_view name, const void* data, uint32_
   return false;
 }
 
-bool PassResources::set_block_bytes(std::string_view block, uint32_t offset, const void* data,
-                                    uint32_t bytes, DiagnosticSink& sink) {
+bool PassResources::set_block_bytes(std::string_view block, uint32_t offset, const void* data, uint32_t bytes,
+                                    DiagnosticSink& sink) {
   const auto& blocks = program_->uniform_blocks();
   for (size_t i = 0; i < blocks.size(); ++i)
     if (blocks[i].name == block) return set_block_bytes(uint32_t(i), offset, data, bytes, sink);
@@ -58,16 +57,15 @@ bool PassResources::set_block_bytes(uint32_t index, uint32_t offset, const void*
   }
   Block& b = blocks_[index];
   if (uint64_t(offset) + bytes > b.data.size()) {
-    sink.error("vk-uniform-size", {}, "write past the end of uniform block '" +
-                                          program_->uniform_blocks()[index].name + "'");
+    sink.error("vk-uniform-size", {},
+               "write past the end of uniform block '" + program_->uniform_blocks()[index].name + "'");
     return false;
   }
   write_if_changed(b.data, offset, data, bytes, b.dirty);
   return true;
 }
 
-bool PassResources::bind(std::string_view name, const Texture& texture, VkSampler sampler,
-                         DiagnosticSink& sink) {
+bool PassResources::bind(std::string_view name, const Texture& texture, VkSampler sampler, DiagnosticSink& sink) {
   const auto& images = program_->images();
   for (size_t i = 0; i < images.size(); ++i) {
     if (images[i].name != name) continue;

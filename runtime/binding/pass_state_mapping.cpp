@@ -7,10 +7,8 @@
 
 namespace fx::vk {
 
-std::optional<PipelineState> to_pipeline_state(const PassStateSummary& p,
-                                               const PassTargetInfo& target,
-                                               const DeviceFeatures& features,
-                                               DiagnosticSink& sink) {
+std::optional<PipelineState> to_pipeline_state(const PassStateSummary& p, const PassTargetInfo& target,
+                                               const DeviceFeatures& features, DiagnosticSink& sink) {
   PipelineState s;
   s.cull_mode = uint32_t(p.cull);
   FrontFace front = p.front_face;
@@ -27,8 +25,7 @@ std::optional<PipelineState> to_pipeline_state(const PassStateSummary& p,
   s.polygon_mode = uint32_t(p.fill);
   // D3D10+ biases arrive in format units already; D3D9's are fractions of the depth range.
   s.depth_bias_constant =
-      p.depth_bias_normalized ? float(std::ldexp(double(p.depth_bias), int(target.depth_bits)))
-                              : p.depth_bias;
+      p.depth_bias_normalized ? float(std::ldexp(double(p.depth_bias), int(target.depth_bits))) : p.depth_bias;
   s.depth_bias_slope = p.depth_bias_slope;
   s.depth_bias_clamp = features.depth_clamp ? p.depth_bias_clamp : 0.0f;
   s.depth_bias_enable = s.depth_bias_constant != 0 || s.depth_bias_slope != 0;
@@ -53,9 +50,9 @@ std::optional<PipelineState> to_pipeline_state(const PassStateSummary& p,
   for (uint32_t i = 0; i < n; ++i) {
     const TargetBlend& b = p.blend[i];
     if (i > 0 && !(b == p.blend[0]) && !features.independent_blend) {
-      sink.error("vk-feature-missing", {},
-                 "render target " + std::to_string(i) +
-                     " blends differently from target 0, which needs independentBlend");
+      sink.error(
+          "vk-feature-missing", {},
+          "render target " + std::to_string(i) + " blends differently from target 0, which needs independentBlend");
       return std::nullopt;
     }
     AttachmentBlend& a = s.blend[i];
@@ -88,8 +85,7 @@ SamplerKey to_sampler_key(const fx::SamplerDesc& m, DiagnosticSink& sink) {
   }
   d.min_filter = VkFilter(m.min_filter);
   d.mag_filter = VkFilter(m.mag_filter);
-  d.mip_filter = m.mip_filter == MipFilter::linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR
-                                                   : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  d.mip_filter = m.mip_filter == MipFilter::linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
   d.mip_lod_bias = m.lod_bias;
   d.max_anisotropy = m.anisotropic ? float(std::max(1u, m.max_anisotropy)) : 1.0f;
   d.min_lod = std::max(m.min_lod, float(m.max_mip_level));
@@ -100,12 +96,12 @@ SamplerKey to_sampler_key(const fx::SamplerDesc& m, DiagnosticSink& sink) {
   const bool white = opaque && (c[0] + c[1] + c[2]) >= 1.5f;
   d.border = !opaque ? VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK
                      : (white ? VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE : VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK);
-  const bool exact = (c == std::array<float, 4>{0, 0, 0, 0}) ||
-                     (c == std::array<float, 4>{0, 0, 0, 1}) || (c == std::array<float, 4>{1, 1, 1, 1});
+  const bool exact = (c == std::array<float, 4>{0, 0, 0, 0}) || (c == std::array<float, 4>{0, 0, 0, 1}) ||
+                     (c == std::array<float, 4>{1, 1, 1, 1});
   if (!exact)
     sink.warning("vk-border-color-approximated", {},
-                 "border colour (" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " +
-                     std::to_string(c[2]) + ", " + std::to_string(c[3]) +
+                 "border colour (" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) +
+                     ", " + std::to_string(c[3]) +
                      ") is sampled as the nearest of transparent black, opaque black and opaque white");
   d.compare_enable = m.compare_enable;
   d.compare_op = VkCompareOp(m.compare);

@@ -32,12 +32,10 @@ std::optional<PipelineCache> PipelineCache::create(const Context& ctx, Diagnosti
                                                    const std::vector<uint8_t>& initial_data) {
   PipelineCache c;
   c.ctx_ = &ctx;
-  VkPipelineCacheCreateInfo info = structure<VkPipelineCacheCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO);
+  VkPipelineCacheCreateInfo info = structure<VkPipelineCacheCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO);
   info.initialDataSize = initial_data.size();
   info.pInitialData = initial_data.empty() ? nullptr : initial_data.data();
-  if (!check(vkCreatePipelineCache(ctx.device(), &info, nullptr, &c.cache_), sink,
-             "vkCreatePipelineCache"))
+  if (!check(vkCreatePipelineCache(ctx.device(), &info, nullptr, &c.cache_), sink, "vkCreatePipelineCache"))
     return std::nullopt;
   return c;
 }
@@ -64,9 +62,8 @@ void PipelineCache::clear() {
   pipelines_.clear();
 }
 
-VkPipeline PipelineCache::get(const ShaderProgram& program, const PipelineState& state,
-                              const VertexInput& vertex_input, const RenderingFormats& formats,
-                              const DynamicStateSet& dynamic, DiagnosticSink& sink) {
+VkPipeline PipelineCache::get(const ShaderProgram& program, const PipelineState& state, const VertexInput& vertex_input,
+                              const RenderingFormats& formats, const DynamicStateSet& dynamic, DiagnosticSink& sink) {
   ++stats_.lookups;
   PipelineKey key;
   key.program = program.hash();
@@ -81,9 +78,9 @@ VkPipeline PipelineCache::get(const ShaderProgram& program, const PipelineState&
   return p;
 }
 
-VkPipeline PipelineCache::create_pipeline(const ShaderProgram& program, const PipelineState& s,
-                                          const VertexInput& vi, const RenderingFormats& formats,
-                                          const DynamicStateSet& dynamic, DiagnosticSink& sink) {
+VkPipeline PipelineCache::create_pipeline(const ShaderProgram& program, const PipelineState& s, const VertexInput& vi,
+                                          const RenderingFormats& formats, const DynamicStateSet& dynamic,
+                                          DiagnosticSink& sink) {
   VkDynamicState dynamic_states[40];
   GraphicsPipelineDesc desc;
   desc.stages = program.stage_infos();
@@ -122,12 +119,10 @@ FileHeader header_for(const Context& ctx) {
 
 std::vector<uint8_t> PipelineCache::serialize(DiagnosticSink& sink) const {
   size_t size = 0;
-  if (!check(vkGetPipelineCacheData(ctx_->device(), cache_, &size, nullptr), sink,
-             "vkGetPipelineCacheData"))
-    return {};
+  if (!check(vkGetPipelineCacheData(ctx_->device(), cache_, &size, nullptr), sink, "vkGetPipelineCacheData")) return {};
   std::vector<uint8_t> out(sizeof(FileHeader) + size);
-  if (!check(vkGetPipelineCacheData(ctx_->device(), cache_, &size, out.data() + sizeof(FileHeader)),
-             sink, "vkGetPipelineCacheData"))
+  if (!check(vkGetPipelineCacheData(ctx_->device(), cache_, &size, out.data() + sizeof(FileHeader)), sink,
+             "vkGetPipelineCacheData"))
     return {};
   out.resize(sizeof(FileHeader) + size);
   FileHeader h = header_for(*ctx_);
@@ -161,15 +156,13 @@ bool PipelineCache::save_file(const std::filesystem::path& path, DiagnosticSink&
   return true;
 }
 
-std::vector<uint8_t> PipelineCache::load_file(const Context& ctx,
-                                              const std::filesystem::path& path,
+std::vector<uint8_t> PipelineCache::load_file(const Context& ctx, const std::filesystem::path& path,
                                               DiagnosticSink& sink) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return {};
   std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   auto stale = [&](const std::string& why) {
-    sink.report(Severity::note, "vk-pipeline-cache-stale", {},
-                "ignoring pipeline cache " + path.string() + ": " + why);
+    sink.report(Severity::note, "vk-pipeline-cache-stale", {}, "ignoring pipeline cache " + path.string() + ": " + why);
     return std::vector<uint8_t>{};
   };
   FileHeader h;
@@ -178,12 +171,10 @@ std::vector<uint8_t> PipelineCache::load_file(const Context& ctx,
   const FileHeader want = header_for(ctx);
   if (std::memcmp(h.magic, want.magic, sizeof h.magic) != 0 || h.version != want.version)
     return stale("not an fxkit pipeline cache");
-  if (h.vendor_id != want.vendor_id || h.device_id != want.device_id ||
-      h.driver_version != want.driver_version ||
+  if (h.vendor_id != want.vendor_id || h.device_id != want.device_id || h.driver_version != want.driver_version ||
       std::memcmp(h.uuid, want.uuid, VK_UUID_SIZE) != 0)
     return stale("written for another device or driver");
-  if (h.data_size != bytes.size() - sizeof h ||
-      h.checksum != XXH3_64bits(bytes.data() + sizeof h, size_t(h.data_size)))
+  if (h.data_size != bytes.size() - sizeof h || h.checksum != XXH3_64bits(bytes.data() + sizeof h, size_t(h.data_size)))
     return stale("checksum mismatch");
   return std::vector<uint8_t>(bytes.begin() + sizeof h, bytes.end());
 }

@@ -30,7 +30,9 @@ bool within_object_space(const std::string& lower_name) {
   for (char c : lower_name)
     if (c != '_') bare.push_back(c);
   constexpr std::string_view kObject[] = {"local", "model", "object", "mesh"};
-  auto object = [&](std::string_view w) { return std::find(std::begin(kObject), std::end(kObject), w) != std::end(kObject); };
+  auto object = [&](std::string_view w) {
+    return std::find(std::begin(kObject), std::end(kObject), w) != std::end(kObject);
+  };
   for (size_t at = bare.find("to"); at != std::string::npos; at = bare.find("to", at + 1))
     if (object(std::string_view(bare).substr(0, at)) && object(std::string_view(bare).substr(at + 2))) return true;
   return false;
@@ -58,8 +60,8 @@ std::vector<float> stand_in(const Parameter& param, const Type& type, std::strin
     rule = "light position";
     return {2.0f, 3.0f, 4.0f, 1.0f};
   }
-  if (float_vector && ((holds(n, {"light"}) && holds(n, {"dir"})) || semantic == "direction" ||
-                       semantic == "lightdirection")) {
+  if (float_vector &&
+      ((holds(n, {"light"}) && holds(n, {"dir"})) || semantic == "direction" || semantic == "lightdirection")) {
     rule = "light direction";
     const float s = 1.0f / std::sqrt(0.25f + 1.0f + 1.0f);
     return {-0.5f * s, -1.0f * s, -1.0f * s, 0.0f};
@@ -93,8 +95,8 @@ std::vector<PreviewDefault> set_preview_defaults(ParameterStore& params, const E
     std::vector<float> v = stand_in(param, *type, rule);
     if (v.empty()) continue;
     v.resize(type->component_count());
-    const bool set = type->cls == TypeClass::matrix ? bool(params.set_matrix(p, v))
-                                                    : bool(params.set(p, std::span<const float>(v)));
+    const bool set =
+        type->cls == TypeClass::matrix ? bool(params.set_matrix(p, v)) : bool(params.set(p, std::span<const float>(v)));
     if (set) out.push_back({param.name, rule});
   }
   return out;

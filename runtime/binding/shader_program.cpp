@@ -8,8 +8,8 @@
 #include <span>
 #include <utility>
 
-#include "tessellation_patch.h"
 #include "fx/vulkan/vk_check.h"
+#include "tessellation_patch.h"
 
 namespace fx::vk {
 namespace {
@@ -19,7 +19,7 @@ namespace {
 std::vector<uint32_t> input_locations(std::span<const uint32_t> spirv) {
   constexpr uint32_t kOpVariable = 59, kOpDecorate = 71, kDecorationLocation = 30, kStorageClassInput = 1;
   std::vector<std::pair<uint32_t, uint32_t>> locations;  // id, Location
-  std::vector<uint32_t> inputs;                           // ids of Input variables
+  std::vector<uint32_t> inputs;                          // ids of Input variables
   for (size_t i = 5; i < spirv.size();) {
     const uint32_t words = spirv[i] >> 16, op = spirv[i] & 0xffffu;
     if (words == 0 || i + words > spirv.size()) break;
@@ -103,8 +103,7 @@ void ShaderProgram::reset() {
   device_ = VK_NULL_HANDLE;
 }
 
-std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx,
-                                                   const std::vector<const CompiledShader*>& stages,
+std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx, const std::vector<const CompiledShader*>& stages,
                                                    const ProgramLayout& layout, DescriptorMode mode,
                                                    DiagnosticSink& sink) {
   ShaderProgram p;
@@ -114,30 +113,26 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx,
   XXH3_state_t* hs = XXH3_createState();
   XXH3_64bits_reset(hs);
   std::vector<const CompiledShader*> ordered = stages;
-  std::sort(ordered.begin(), ordered.end(), [](const CompiledShader* a, const CompiledShader* b) {
-    return a->reflection.stage < b->reflection.stage;
-  });
+  std::sort(ordered.begin(), ordered.end(),
+            [](const CompiledShader* a, const CompiledShader* b) { return a->reflection.stage < b->reflection.stage; });
   p.entry_points_.reserve(ordered.size());  // stage infos point into these strings
   for (const CompiledShader* s : ordered) {
     if (s->reflection.stage == ShaderStage::vertex) vertex = s;
-    if (s->reflection.stage == ShaderStage::fragment)
-      p.color_outputs_ = uint32_t(s->reflection.outputs.size());
+    if (s->reflection.stage == ShaderStage::fragment) p.color_outputs_ = uint32_t(s->reflection.outputs.size());
     XXH3_64bits_update(hs, s->spirv.data(), s->spirv.size() * 4);
     XXH3_64bits_update(hs, s->entry_point.c_str(), s->entry_point.size() + 1);
-    VkShaderModuleCreateInfo info = structure<VkShaderModuleCreateInfo>(
-        VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+    VkShaderModuleCreateInfo info = structure<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
     info.codeSize = s->spirv.size() * 4;
     info.pCode = s->spirv.data();
     VkShaderModule module = VK_NULL_HANDLE;
-    if (!check(vkCreateShaderModule(ctx.device(), &info, nullptr, &module), sink,
-               "vkCreateShaderModule")) {
+    if (!check(vkCreateShaderModule(ctx.device(), &info, nullptr, &module), sink, "vkCreateShaderModule")) {
       XXH3_freeState(hs);
       return std::nullopt;
     }
     p.modules_.push_back(module);
     p.entry_points_.push_back(s->entry_point);
-    VkPipelineShaderStageCreateInfo stage = structure<VkPipelineShaderStageCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+    VkPipelineShaderStageCreateInfo stage =
+        structure<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
     stage.stage = to_vk_stage(s->reflection.stage);
     stage.module = module;
     stage.pName = p.entry_points_.back().c_str();
@@ -168,8 +163,8 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx,
 
   std::vector<VkDescriptorSetLayoutBinding> bindings;
   for (const ProgramBinding& b : layout.bindings) {
-    if (b.set != 0 || b.kind == DescriptorKind::storage_buffer ||
-        b.kind == DescriptorKind::storage_image || (mode == DescriptorMode::push && b.count != 1)) {
+    if (b.set != 0 || b.kind == DescriptorKind::storage_buffer || b.kind == DescriptorKind::storage_image ||
+        (mode == DescriptorMode::push && b.count != 1)) {
       sink.error("vk-descriptor-unsupported", {},
                  "resource '" + b.name + "' (set " + std::to_string(b.set) +
                      ") is not a uniform block or texture/sampler in set 0 that this descriptor "
@@ -192,15 +187,15 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx,
       ProgramImage image{b.name, b.kind, ImageDim::dim_2d, b.binding, b.count};
       for (const CompiledShader* s : ordered)
         for (const ImageBinding& i : s->reflection.images)
-          if (i.binding == b.binding) image.dim = i.dim, image.arrayed = i.arrayed, image.shadow |= i.shadow,
-          image.multisampled |= i.multisampled;
+          if (i.binding == b.binding)
+            image.dim = i.dim, image.arrayed = i.arrayed, image.shadow |= i.shadow,
+            image.multisampled |= i.multisampled;
       p.images_.push_back(image);
     }
   }
-  VkDescriptorSetLayoutCreateInfo set_info = structure<VkDescriptorSetLayoutCreateInfo>(
-      VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-  if (mode == DescriptorMode::push)
-    set_info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+  VkDescriptorSetLayoutCreateInfo set_info =
+      structure<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+  if (mode == DescriptorMode::push) set_info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
   set_info.bindingCount = uint32_t(bindings.size());
   set_info.pBindings = bindings.data();
   if (!check(vkCreateDescriptorSetLayout(ctx.device(), &set_info, nullptr, &p.set_layout_), sink,
@@ -211,14 +206,14 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx,
   for (const CompiledShader* s : ordered)
     for (const UniformBlock& pc : s->reflection.push_constants)
       ranges.push_back({VkShaderStageFlags(to_vk_stage(s->reflection.stage)), 0, pc.size});
-  VkPipelineLayoutCreateInfo layout_info = structure<VkPipelineLayoutCreateInfo>(
-      VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+  VkPipelineLayoutCreateInfo layout_info =
+      structure<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
   layout_info.setLayoutCount = 1;
   layout_info.pSetLayouts = &p.set_layout_;
   layout_info.pushConstantRangeCount = uint32_t(ranges.size());
   layout_info.pPushConstantRanges = ranges.data();
-  if (!check(vkCreatePipelineLayout(ctx.device(), &layout_info, nullptr, &p.pipeline_layout_),
-             sink, "vkCreatePipelineLayout"))
+  if (!check(vkCreatePipelineLayout(ctx.device(), &layout_info, nullptr, &p.pipeline_layout_), sink,
+             "vkCreatePipelineLayout"))
     return std::nullopt;
   return p;
 }

@@ -41,8 +41,7 @@ std::string canonical_semantic(std::string_view semantic) {
     if (c >= 'a' && c <= 'z') c = char(c - 'a' + 'A');
   size_t digits = s.size();
   while (digits > 0 && s[digits - 1] >= '0' && s[digits - 1] <= '9') --digits;
-  if (digits < s.size() && digits > 0 && s.find_first_not_of('0', digits) == std::string::npos)
-    s.resize(digits);
+  if (digits < s.size() && digits > 0 && s.find_first_not_of('0', digits) == std::string::npos) s.resize(digits);
   if (s.starts_with("SV_POSITION")) s.erase(0, 3);
   return s;
 }
@@ -60,8 +59,7 @@ std::vector<std::string> input_semantics(const InterfaceVariable& input) {
   return out;
 }
 
-std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout,
-                                               const std::vector<InterfaceVariable>& inputs,
+std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout, const std::vector<InterfaceVariable>& inputs,
                                                DiagnosticSink& sink) {
   VertexInput out;
   bool ok = true;
@@ -74,8 +72,7 @@ std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout,
                              [&](const VertexAttribute& a) { return canonical_semantic(a.semantic) == want; });
       if (it == layout.attributes.end()) {
         std::string offered;
-        for (const VertexAttribute& a : layout.attributes)
-          offered += (offered.empty() ? "" : ", ") + a.semantic;
+        for (const VertexAttribute& a : layout.attributes) offered += (offered.empty() ? "" : ", ") + a.semantic;
         sink.error("vk-vertex-attribute-missing", {},
                    "the vertex shader reads " + want + " ('" + in.name + "', location " +
                        std::to_string(in.location + slot) + ") but the vertex layout provides " +
@@ -87,8 +84,8 @@ std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout,
                             [&](const VertexBinding& vb) { return vb.binding == it->binding; });
       if (b == layout.bindings.end()) {
         sink.error("vk-vertex-binding-missing", {},
-                   "attribute " + it->semantic + " uses vertex binding " +
-                       std::to_string(it->binding) + " which the layout does not declare");
+                   "attribute " + it->semantic + " uses vertex binding " + std::to_string(it->binding) +
+                       " which the layout does not declare");
         ok = false;
         continue;
       }
@@ -99,8 +96,7 @@ std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout,
   if (!ok) return std::nullopt;
   for (size_t i = 0; i < layout.bindings.size(); ++i)
     if (binding_used[i])
-      out.bindings.push_back(
-          {layout.bindings[i].binding, layout.bindings[i].stride, layout.bindings[i].rate});
+      out.bindings.push_back({layout.bindings[i].binding, layout.bindings[i].stride, layout.bindings[i].rate});
   std::sort(out.attributes.begin(), out.attributes.end(),
             [](const auto& a, const auto& b) { return a.location < b.location; });
   XXH3_state_t* hs = XXH3_createState();
@@ -127,8 +123,7 @@ VkFormat default_attribute_format(const InterfaceVariable& input) {
   }
 }
 
-VertexLayout with_default_attributes(VertexLayout layout, std::span<const InterfaceVariable> inputs,
-                                     uint32_t binding) {
+VertexLayout with_default_attributes(VertexLayout layout, std::span<const InterfaceVariable> inputs, uint32_t binding) {
   const size_t declared = layout.attributes.size();
   auto has = [&layout](const std::string& name, bool by_semantic) {
     for (const VertexAttribute& a : layout.attributes)
@@ -137,7 +132,8 @@ VertexLayout with_default_attributes(VertexLayout layout, std::span<const Interf
   };
   for (const InterfaceVariable& in : inputs) {
     const VkFormat format = default_attribute_format(in);
-    const uint32_t offset = format == VK_FORMAT_R32G32B32A32_SFLOAT ? 0 : uint32_t(offsetof(DefaultAttributeData, ints));
+    const uint32_t offset =
+        format == VK_FORMAT_R32G32B32A32_SFLOAT ? 0 : uint32_t(offsetof(DefaultAttributeData, ints));
     if (in.semantic.empty()) {
       if (!has(in.name, false)) layout.attributes.push_back({in.name, format, offset, binding});
       continue;

@@ -12,9 +12,7 @@ namespace fx {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 }  // namespace
 
@@ -24,8 +22,7 @@ const StageProgram* PassProgram::find(ShaderStage stage) const {
   return nullptr;
 }
 
-EffectPrograms::EffectPrograms(const EffectUnits& units, const ShaderCompiler& compiler,
-                               const SourceManager& sm)
+EffectPrograms::EffectPrograms(const EffectUnits& units, const ShaderCompiler& compiler, const SourceManager& sm)
     : units_(units), compiler_(compiler), sm_(sm) {
   programs_.resize(units_.passes().size());
 }

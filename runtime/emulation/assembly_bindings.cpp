@@ -85,7 +85,8 @@ class Binder {
     }
     for (size_t r = 0; r * 4 < numbers.size(); ++r) {
       std::string v = "float4(";
-      for (size_t k = 0; k < 4; ++k) v += (k ? ", " : "") + hlsl_number(r * 4 + k < numbers.size() ? numbers[r * 4 + k] : 0.0);
+      for (size_t k = 0; k < 4; ++k)
+        v += (k ? ", " : "") + hlsl_number(r * 4 + k < numbers.size() ? numbers[r * 4 + k] : 0.0);
       out_.constants[first + uint32_t(r)] = v + ")";
     }
   }
@@ -109,7 +110,8 @@ class Binder {
     if (v->array_dims.size() == 1) {
       auto n = literal(v->array_dims[0]);
       if (!n || *n < 1) {
-        sink_.error("asm-constant", value.range, std::string(1, '\'').append(v->name) + "' needs a constant array size");
+        sink_.error("asm-constant", value.range,
+                    std::string(1, '\'').append(v->name) + "' needs a constant array size");
         return;
       }
       count = uint32_t(*n);

@@ -5,8 +5,8 @@
 #include <set>
 
 #include "fx/emulation/assembly.h"
-#include "hlsl_literal.h"
 #include "fx/emulation/stage_texture.h"
+#include "hlsl_literal.h"
 
 namespace fx::emulation {
 namespace {
@@ -143,8 +143,9 @@ class Translator {
   // A source operand's value: register, swizzle, then _bias/_bx2/_x2, 1-, negation.
   std::string read(const AsmSource& s, uint32_t offset = 0) const {
     std::string v;
-    if (s.relative) v = "fx_c[clamp(int(a0.x) + " + std::to_string(s.index + offset) + ", 0, " +
-                        std::to_string(kRelativeConstants - 1) + ")]";
+    if (s.relative)
+      v = "fx_c[clamp(int(a0.x) + " + std::to_string(s.index + offset) + ", 0, " +
+          std::to_string(kRelativeConstants - 1) + ")]";
     else v = register_name(s.file, s.index + offset);
     if (s.swizzle != std::array<uint8_t, 4>{0, 1, 2, 3}) {
       v += ".";
@@ -174,8 +175,8 @@ class Translator {
 
   std::string bump_matrix(uint32_t stage, const std::string& src) const {
     const BumpEnvironment& e = b_.bump[stage];
-    return "float2(" + hlsl_number(e.matrix[0]) + " * " + src + ".x + " + hlsl_number(e.matrix[2]) + " * " + src + ".y, " +
-           hlsl_number(e.matrix[1]) + " * " + src + ".x + " + hlsl_number(e.matrix[3]) + " * " + src + ".y)";
+    return "float2(" + hlsl_number(e.matrix[0]) + " * " + src + ".x + " + hlsl_number(e.matrix[2]) + " * " + src +
+           ".y, " + hlsl_number(e.matrix[1]) + " * " + src + ".x + " + hlsl_number(e.matrix[3]) + " * " + src + ".y)";
   }
 
   // Emits `compute` (which defines float4 `name` when the instruction writes a register)
@@ -183,8 +184,9 @@ class Translator {
   bool instruction(const AsmInstruction& ins, const std::string& name, std::string& compute, std::string& write) {
     const std::string& op = ins.op;
     if (op == "def" || op == "dcl" || op == "phase" || op == "nop") return true;
-    if (!pixel_ && ins.has_dest && (ins.dest.file == RegisterFile::input || ins.dest.file == RegisterFile::constant ||
-                                    ins.dest.file == RegisterFile::texture))
+    if (!pixel_ && ins.has_dest &&
+        (ins.dest.file == RegisterFile::input || ins.dest.file == RegisterFile::constant ||
+         ins.dest.file == RegisterFile::texture))
       return error(ins.dest.range, "a vertex shader writes r#, a0 and the o registers only");
     auto src = [&](size_t i) { return read(ins.sources[i]); };
     std::string value;
@@ -226,7 +228,10 @@ class Translator {
       std::string parts;
       for (int r = 0; r < 4; ++r) {
         if (r) parts += ", ";
-        if (r >= rows) { parts += "0.0"; continue; }
+        if (r >= rows) {
+          parts += "0.0";
+          continue;
+        }
         const std::string a = src(0), b = read(ins.sources[1], uint32_t(r));
         parts += width == 4 ? "dot(" + a + ", " + b + ")" : "dot((" + a + ").xyz, (" + b + ").xyz)";
       }
@@ -262,7 +267,8 @@ class Translator {
   }
 
   // ps.1.x texture instructions: sample, coordinate and kill. Fills compute/write.
-  bool texture_instruction(const AsmInstruction& ins, const std::string& name, std::string& compute, std::string& write) {
+  bool texture_instruction(const AsmInstruction& ins, const std::string& name, std::string& compute,
+                           std::string& write) {
     const std::string& op = ins.op;
     const uint32_t n = ins.dest.index;
     std::string value;
@@ -302,8 +308,8 @@ class Translator {
                op == "texm3x3spec" || op == "texm3x3vspec") {
       const bool three = op.rfind("texm3x3", 0) == 0;
       if (pad_row_ != (three ? 2u : 1u))
-        return error(ins.range, "'" + op + "' must follow " + (three ? "two texm3x3pad" : "one texm3x2pad") +
-                                    " instructions");
+        return error(ins.range,
+                     "'" + op + "' must follow " + (three ? "two texm3x3pad" : "one texm3x2pad") + " instructions");
       compute += "    fx_m." + std::string(1, kComponents[pad_row_]) + " = dot(" + texcoord(n) + ".xyz, (" + src(0) +
                  ").xyz);\n";
       pad_row_ = 0;
@@ -315,9 +321,9 @@ class Translator {
       else if (op == "texm3x3") value = "float4(fx_m.xyz, 1.0)";
       else if (op == "texm3x3tex") value = sample(n, "float4(fx_m.xyz, 1.0)");
       else {
-        const std::string eye = op == "texm3x3spec" ? "(" + read(ins.sources[1]) + ").xyz"
-                                                     : "float3(" + texcoord(n - 2) + ".w, " + texcoord(n - 1) + ".w, " +
-                                                           texcoord(n) + ".w)";
+        const std::string eye =
+            op == "texm3x3spec" ? "(" + read(ins.sources[1]) + ").xyz"
+                                : "float3(" + texcoord(n - 2) + ".w, " + texcoord(n - 1) + ".w, " + texcoord(n) + ".w)";
         compute += "    float3 fx_e = " + eye + ";\n";
         value = sample(n, "float4(2.0 * fx_m.xyz * dot(fx_m.xyz, fx_e) / dot(fx_m.xyz, fx_m.xyz) - fx_e, 1.0)");
       }
@@ -352,8 +358,8 @@ class Translator {
     std::string out;
     auto value_of = [&](uint32_t reg) -> std::string {
       if (auto d = defined_.find(reg); d != defined_.end())
-        return "float4(" + hlsl_number(d->second[0]) + ", " + hlsl_number(d->second[1]) + ", " + hlsl_number(d->second[2]) + ", " +
-               hlsl_number(d->second[3]) + ")";
+        return "float4(" + hlsl_number(d->second[0]) + ", " + hlsl_number(d->second[1]) + ", " +
+               hlsl_number(d->second[2]) + ", " + hlsl_number(d->second[3]) + ")";
       if (auto c = b_.constants.find(reg); c != b_.constants.end()) return c->second;
       return "float4(0.0, 0.0, 0.0, 0.0)";
     };
@@ -390,10 +396,12 @@ class Translator {
     if (fog_) s += "  float oFog : FOG;\n";
     if (point_size_) s += "  float oPts : PSIZE;\n";
     s += "};\nfx_vs_out fx_main(fx_vs_in fx_in) {\n";
-    for (const AsmInput& in : p_.inputs) s += "  float4 v" + std::to_string(in.reg) + " = fx_in.v" + std::to_string(in.reg) + ";\n";
+    for (const AsmInput& in : p_.inputs)
+      s += "  float4 v" + std::to_string(in.reg) + " = fx_in.v" + std::to_string(in.reg) + ";\n";
     s += constant_locals() + temp_locals();
     s += "  float4 a0 = float4(0.0, 0.0, 0.0, 0.0);\n";
-    s += "  float4 oPos = float4(0.0, 0.0, 0.0, 1.0), oD0 = float4(0.0, 0.0, 0.0, 0.0), oD1 = oD0, oFog = oD0, oPts = oD0;\n";
+    s += "  float4 oPos = float4(0.0, 0.0, 0.0, 1.0), oD0 = float4(0.0, 0.0, 0.0, 0.0), oD1 = oD0, oFog = oD0, oPts = "
+         "oD0;\n";
     for (int t = 0; t < 8; ++t) s += "  float4 oT" + std::to_string(t) + " = float4(0.0, 0.0, 0.0, 0.0);\n";
     s += body;
     // Colour outputs are clamped to [0,1] on their way to the rasterizer, as in D3D.
@@ -409,15 +417,15 @@ class Translator {
     std::string s;
     if (o_.hardware_precision) {
       const char* range = p_.version.minor == 4 ? "8.0" : "1.0";
-      s += std::string("float4 fx_precision(float4 x) { return clamp(floor(x * 255.0 + 0.5) / 255.0, -") + range + ", " +
-           range + "); }\n";
+      s += std::string("float4 fx_precision(float4 x) { return clamp(floor(x * 255.0 + 0.5) / 255.0, -") + range +
+           ", " + range + "); }\n";
     }
     // Texture coordinates: every stage a texture instruction names (t# in ps.1.0-1.3, the
     // t# sources of texld/texcrd in ps.1.4), plus vspec's neighbours.
     std::set<uint32_t> coords;
     for (const AsmInstruction& ins : p_.instructions) {
-      if (p_.version.minor < 4 && ins.has_dest && ins.dest.file == RegisterFile::texture && ins.op.rfind("tex", 0) == 0 &&
-          ins.op.rfind("texreg2", 0) != 0) {
+      if (p_.version.minor < 4 && ins.has_dest && ins.dest.file == RegisterFile::texture &&
+          ins.op.rfind("tex", 0) == 0 && ins.op.rfind("texreg2", 0) != 0) {
         coords.insert(ins.dest.index);
         if (ins.op == "texm3x3vspec" && ins.dest.index >= 2) coords.insert({ins.dest.index - 1, ins.dest.index - 2});
       }
@@ -444,7 +452,8 @@ class Translator {
     for (uint32_t t : coords) s += "  float4 fx_tc" + std::to_string(t) + " = fx_in.fx_tc" + std::to_string(t) + ";\n";
     s += constant_locals() + temp_locals();
     if (p_.version.minor < 4)
-      for (uint32_t t = 0; t < textures_; ++t) s += "  float4 t" + std::to_string(t) + " = float4(0.0, 0.0, 0.0, 0.0);\n";
+      for (uint32_t t = 0; t < textures_; ++t)
+        s += "  float4 t" + std::to_string(t) + " = float4(0.0, 0.0, 0.0, 0.0);\n";
     s += "  float3 fx_m = float3(0.0, 0.0, 0.0);\n";
     if (depth_) s += "  float fx_depth = 0.0;\n";
     s += body;
@@ -462,7 +471,7 @@ class Translator {
   bool failed_ = false, relative_ = false, fog_ = false, point_size_ = false, depth_ = false;
   uint32_t temps_ = 0, textures_ = 0;
   std::set<uint32_t> colors_;  // pixel shaders: the colour inputs v# read
-  uint32_t pad_row_ = 0;  // texm3x2pad/texm3x3pad rows seen so far
+  uint32_t pad_row_ = 0;       // texm3x2pad/texm3x3pad rows seen so far
   std::set<uint32_t> constants_, stages_;
   std::map<uint32_t, std::array<double, 4>> defined_;
 };

@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <span>
 
+#include "assembly_ops.h"
 #include "fx/ascii_case.h"
 #include "fx/emulation/assembly_program.h"
-#include "assembly_ops.h"
 
 namespace fx::emulation {
 namespace {
@@ -78,10 +78,14 @@ class LineParser {
   static bool components(std::string_view s, std::vector<uint8_t>& out) {
     for (char c : s) {
       switch (std::tolower(static_cast<unsigned char>(c))) {
-        case 'x': case 'r': out.push_back(0); break;
-        case 'y': case 'g': out.push_back(1); break;
-        case 'z': case 'b': out.push_back(2); break;
-        case 'w': case 'a': out.push_back(3); break;
+        case 'x':
+        case 'r': out.push_back(0); break;
+        case 'y':
+        case 'g': out.push_back(1); break;
+        case 'z':
+        case 'b': out.push_back(2); break;
+        case 'w':
+        case 'a': out.push_back(3); break;
         default: return false;
       }
     }
@@ -121,7 +125,8 @@ class LineParser {
       if (close == t.size()) return error(t[i].range(), "expected ']'");
       s.index = 0;
       for (size_t k = i + 1; k < close; ++k) {
-        if (t[k].is(TokenKind::integer)) s.index += uint32_t(std::strtoul(std::string(t[k].text()).c_str(), nullptr, 0));
+        if (t[k].is(TokenKind::integer))
+          s.index += uint32_t(std::strtoul(std::string(t[k].text()).c_str(), nullptr, 0));
         else if (t[k].is(TokenKind::identifier) && iequals(t[k].text(), "a0")) s.relative = true;
         else if (!t[k].is(TokenKind::plus) && !t[k].is(TokenKind::period) && !t[k].is_identifier("x"))
           return error(t[k].range(), "expected a0.x + n inside c[...]");
@@ -163,7 +168,8 @@ class LineParser {
   bool number(Tokens t, double& v) {
     size_t i = 0;
     bool negative = false;
-    if (i < t.size() && (t[i].is(TokenKind::minus) || t[i].is(TokenKind::plus))) negative = t[i].is(TokenKind::minus), ++i;
+    if (i < t.size() && (t[i].is(TokenKind::minus) || t[i].is(TokenKind::plus)))
+      negative = t[i].is(TokenKind::minus), ++i;
     if (i + 1 != t.size() || !(t[i].is(TokenKind::integer) || t[i].is(TokenKind::floating)))
       return error(span_range(t), "expected a number");
     std::string s(t[i].text());
@@ -176,7 +182,8 @@ class LineParser {
   bool parse(AsmInstruction& ins) {
     size_t i = 0;
     if (line_[i].is(TokenKind::plus)) ins.coissue = true, ++i;
-    if (i >= line_.size() || !line_[i].is(TokenKind::identifier)) return error(span_range(line_), "expected an instruction");
+    if (i >= line_.size() || !line_[i].is(TokenKind::identifier))
+      return error(span_range(line_), "expected an instruction");
     const Token& op_token = line_[i++];
     ins.range = span_range(line_.subspan(ins.coissue ? 1 : 0));
     std::vector<std::string> parts = split_underscores(op_token.text());
@@ -185,7 +192,8 @@ class LineParser {
     if (ins.op == "dcl" && parts.size() >= 2) {
       std::string usage = ascii_lower(parts[1]);
       size_t digits = usage.find_first_of("0123456789");
-      if (digits != std::string::npos) ins.usage_index = uint32_t(std::atoi(usage.c_str() + digits)), usage.resize(digits);
+      if (digits != std::string::npos)
+        ins.usage_index = uint32_t(std::atoi(usage.c_str() + digits)), usage.resize(digits);
       ins.usage = usage;
       parts.resize(1);
     }
@@ -229,7 +237,8 @@ class LineParser {
                                   std::to_string(given) + " given");
     size_t k = 0;
     if (info->dest) {
-      if (operands[0].empty() || !dest(operands[0], ins.dest)) return operands[0].empty() ? error(ins.range, "missing destination") : false;
+      if (operands[0].empty() || !dest(operands[0], ins.dest))
+        return operands[0].empty() ? error(ins.range, "missing destination") : false;
       ins.has_dest = true;
       k = 1;
     }

@@ -47,7 +47,8 @@ class PassReader {
   int64_t structural(const ResolvedState& s) const {
     if (s.kind == StateValueKind::parameter && s.target < model_.parameters.size()) {
       diags_.warning("fixed-function-frozen", s.range,
-                     std::string(1, '\'').append(s.info->name) + "' takes the default of '" + model_.parameters[s.target].name +
+                     std::string(1, '\'').append(s.info->name) + "' takes the default of '" +
+                         model_.parameters[s.target].name +
                          "': the generated fixed-function shader does not follow later changes");
       return static_cast<int64_t>(number(s));
     }
@@ -146,7 +147,9 @@ bool read_point(FixedFunctionState& out, std::string_view n, const ResolvedState
   return true;
 }
 
-MaterialSource source(int64_t v) { return v >= 0 && v <= 2 ? static_cast<MaterialSource>(v) : MaterialSource::material; }
+MaterialSource source(int64_t v) {
+  return v >= 0 && v <= 2 ? static_cast<MaterialSource>(v) : MaterialSource::material;
+}
 FogMode fog_mode(int64_t v) { return v >= 0 && v <= 3 ? static_cast<FogMode>(v) : FogMode::none; }
 
 }  // namespace

@@ -10,15 +10,15 @@
 namespace fx {
 namespace {
 
-using ff_detail::Declarations;
 using ff_detail::active_stages;
+using ff_detail::Declarations;
 using ff_detail::is_bump;
+using ff_detail::literal;
 using ff_detail::reads_register;
 using ff_detail::samples;
 using ff_detail::uses_arg0;
 using ff_detail::uses_arg1;
 using ff_detail::uses_arg2;
-using ff_detail::literal;
 namespace ta = texture_arg;
 
 // The TEXCOORDn the pixel shader reads for stage `i`.
@@ -60,7 +60,11 @@ class PixelShaderWriter {
     const bool vertex_fog = s_.fog && !table_fog(s_);
     if (outputs_.fog && (vertex_fog || exact)) inputs_ += "  " + vector_type(outputs_.fog) + " fx_fog : FOG;\n";
     if (vertex_fog)
-      prologue_ += std::string("  float fx_fog_in = ") + (outputs_.fog == 0 ? "1.0" : outputs_.fog == 1 ? "i.fx_fog" : "i.fx_fog.x") + ";\n";
+      prologue_ += std::string("  float fx_fog_in = ") +
+                   (outputs_.fog == 0   ? "1.0"
+                    : outputs_.fog == 1 ? "i.fx_fog"
+                                        : "i.fx_fog.x") +
+                   ";\n";
     if (table_fog(s_)) inputs_ += "  float4 fx_position : SV_Position;\n";
     // A pass with no input at all still needs a member: SV_Position is always there.
     if (inputs_.empty()) inputs_ = "  float4 fx_position : SV_Position;\n";
@@ -68,13 +72,15 @@ class PixelShaderWriter {
     FixedFunctionShader out;
     out.entry = "fx_ff_ps";
     out.profile = "ps_3_0";
-    out.source = "// fxkit fixed-function pixel shader (generated)\n" + decl_.text() + "struct fx_ff_ps_in {\n" + inputs_ +
-                 "};\nfloat4 fx_ff_ps(fx_ff_ps_in i) : COLOR0 {\n" + prologue_ + body_ + "}\n";
+    out.source = "// fxkit fixed-function pixel shader (generated)\n" + decl_.text() + "struct fx_ff_ps_in {\n" +
+                 inputs_ + "};\nfloat4 fx_ff_ps(fx_ff_ps_in i) : COLOR0 {\n" + prologue_ + body_ + "}\n";
     return out;
   }
 
  private:
-  static std::string vector_type(int components) { return components == 1 ? "float" : "float" + std::to_string(components); }
+  static std::string vector_type(int components) {
+    return components == 1 ? "float" : "float" + std::to_string(components);
+  }
 
   // The float4 local `name` from the varying `semantic` the vertex stage writes with
   // `components` components: the rest, or all of it when it writes none, from `fallback`
@@ -186,8 +192,12 @@ class PixelShaderWriter {
   void sample(int i) {
     const TextureStageState& st = s_.stages[i];
     const std::string n = std::to_string(i);
-    const char* type = st.texture == StageTexture::cube ? "samplerCUBE" : st.texture == StageTexture::volume ? "sampler3D" : "sampler2D";
-    const char* fn = st.texture == StageTexture::cube ? "texCUBE" : st.texture == StageTexture::volume ? "tex3D" : "tex2D";
+    const char* type = st.texture == StageTexture::cube     ? "samplerCUBE"
+                       : st.texture == StageTexture::volume ? "sampler3D"
+                                                            : "sampler2D";
+    const char* fn = st.texture == StageTexture::cube     ? "texCUBE"
+                     : st.texture == StageTexture::volume ? "tex3D"
+                                                          : "tex2D";
     decl_.uniform(type, "fx_stage" + n);
     body_ += "  float4 fx_tex" + n + " = " + fn + "(fx_stage" + n + ", " + coords(i) + ");\n";
     if (i > 0 && s_.stages[i - 1].color_op == TextureOp::bump_env_map_luminance)
@@ -203,8 +213,9 @@ class PixelShaderWriter {
       body_ += "  float4 fx_tex" + n + " = float4(1.0, 1.0, 1.0, 1.0);  // no texture bound\n";
     if (!is_bump(st.color_op)) return;
     const auto& m = st.bump_env_mat;
-    body_ += "  fx_bump = float2(" + decl_.scalar(m[0]) + " * fx_tex" + n + ".r + " + decl_.scalar(m[2]) + " * fx_tex" + n +
-             ".g, " + decl_.scalar(m[1]) + " * fx_tex" + n + ".r + " + decl_.scalar(m[3]) + " * fx_tex" + n + ".g);\n";
+    body_ += "  fx_bump = float2(" + decl_.scalar(m[0]) + " * fx_tex" + n + ".r + " + decl_.scalar(m[2]) + " * fx_tex" +
+             n + ".g, " + decl_.scalar(m[1]) + " * fx_tex" + n + ".r + " + decl_.scalar(m[3]) + " * fx_tex" + n +
+             ".g);\n";
     if (st.color_op == TextureOp::bump_env_map_luminance)
       body_ += "  fx_luminance = saturate(fx_tex" + n + ".b * " + decl_.scalar(st.bump_env_lscale) + " + " +
                decl_.scalar(st.bump_env_loffset) + ");\n";
@@ -237,7 +248,8 @@ class PixelShaderWriter {
     std::string f;
     if (table_fog(s_)) {
       body_ += "  float fx_fog_depth = 1.0 / i.fx_position.w;\n";
-      const std::string start = decl_.scalar(s_.fog_start), end = decl_.scalar(s_.fog_end), density = decl_.scalar(s_.fog_density);
+      const std::string start = decl_.scalar(s_.fog_start), end = decl_.scalar(s_.fog_end),
+                        density = decl_.scalar(s_.fog_density);
       switch (s_.fog_table_mode) {
         case FogMode::linear: f = "(" + end + " - fx_fog_depth) / (" + end + " - " + start + ")"; break;
         case FogMode::exp: f = "exp(-" + density + " * fx_fog_depth)"; break;

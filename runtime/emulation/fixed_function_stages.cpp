@@ -25,7 +25,8 @@ int active_stages(const FixedFunctionState& s) {
 bool reads_register(const TextureStageState& st, uint32_t reg) {
   auto in = [&](TextureOp op, const std::array<uint32_t, 3>& args) {
     if (op == TextureOp::disable) return false;
-    return (uses_arg0(op) && (args[0] & ta::select_mask) == reg) || (uses_arg1(op) && (args[1] & ta::select_mask) == reg) ||
+    return (uses_arg0(op) && (args[0] & ta::select_mask) == reg) ||
+           (uses_arg1(op) && (args[1] & ta::select_mask) == reg) ||
            (uses_arg2(op) && (args[2] & ta::select_mask) == reg);
   };
   return in(st.color_op, st.color_arg) || in(st.alpha_op, st.alpha_arg);

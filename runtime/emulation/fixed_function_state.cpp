@@ -12,7 +12,9 @@ void line(std::string& out, const std::string& name, const std::string& value) {
 
 std::string text(const ParameterRef& p) { return "<" + p.type + " " + p.name + ">"; }
 std::string text(const FixedScalar& v) { return v.parameter.bound() ? text(v.parameter) : ff_detail::literal(v.value); }
-std::string text(const FixedVector& v) { return v.parameter.bound() ? text(v.parameter) : ff_detail::literal4(v.value); }
+std::string text(const FixedVector& v) {
+  return v.parameter.bound() ? text(v.parameter) : ff_detail::literal4(v.value);
+}
 std::string text(const FixedMatrix& m) {
   if (m.parameter.bound()) return text(m.parameter);
   std::string s;
@@ -22,10 +24,7 @@ std::string text(const FixedMatrix& m) {
 std::string text(bool b) { return b ? "1" : "0"; }
 std::string text(uint32_t v) { return std::to_string(v); }
 template <class E>
-  requires std::is_enum_v<E>
-std::string text(E v) {
-  return std::to_string(static_cast<int>(v));
-}
+requires std::is_enum_v<E> std::string text(E v) { return std::to_string(static_cast<int>(v)); }
 
 // Writes `name=value` when `value` differs from `base` (D3D's default).
 template <class T>
@@ -36,12 +35,32 @@ void field(std::string& out, const std::string& name, const T& value, const T& b
 }  // namespace
 
 const char* to_string(TextureOp op) {
-  static const char* names[] = {"Disable", "SelectArg1", "SelectArg2", "Modulate", "Modulate2x", "Modulate4x", "Add",
-                                "AddSigned", "AddSigned2x", "Subtract", "AddSmooth", "BlendDiffuseAlpha",
-                                "BlendTextureAlpha", "BlendFactorAlpha", "BlendTextureAlphaPM", "BlendCurrentAlpha",
-                                "PreModulate", "ModulateAlpha_AddColor", "ModulateColor_AddAlpha",
-                                "ModulateInvAlpha_AddColor", "ModulateInvColor_AddAlpha", "BumpEnvMap",
-                                "BumpEnvMapLuminance", "DotProduct3", "MultiplyAdd", "Lerp"};
+  static const char* names[] = {"Disable",
+                                "SelectArg1",
+                                "SelectArg2",
+                                "Modulate",
+                                "Modulate2x",
+                                "Modulate4x",
+                                "Add",
+                                "AddSigned",
+                                "AddSigned2x",
+                                "Subtract",
+                                "AddSmooth",
+                                "BlendDiffuseAlpha",
+                                "BlendTextureAlpha",
+                                "BlendFactorAlpha",
+                                "BlendTextureAlphaPM",
+                                "BlendCurrentAlpha",
+                                "PreModulate",
+                                "ModulateAlpha_AddColor",
+                                "ModulateColor_AddAlpha",
+                                "ModulateInvAlpha_AddColor",
+                                "ModulateInvColor_AddAlpha",
+                                "BumpEnvMap",
+                                "BumpEnvMapLuminance",
+                                "DotProduct3",
+                                "MultiplyAdd",
+                                "Lerp"};
   const int i = static_cast<int>(op);
   return i >= kTextureOpFirst && i <= kTextureOpLast ? names[i - 1] : "?";
 }
@@ -75,7 +94,8 @@ std::string fixed_function_description(const FixedFunctionState& s) {
     STAGE_FIELD(tex_coord_index);
     STAGE_FIELD(texture_transform_flags);
     STAGE_FIELD(texture_transform);
-    for (int m = 0; m < 4; ++m) field(out, p + "bump_env_mat" + std::to_string(m), st.bump_env_mat[m], ds.bump_env_mat[m]);
+    for (int m = 0; m < 4; ++m)
+      field(out, p + "bump_env_mat" + std::to_string(m), st.bump_env_mat[m], ds.bump_env_mat[m]);
     STAGE_FIELD(bump_env_lscale);
     STAGE_FIELD(bump_env_loffset);
     STAGE_FIELD(constant);
@@ -88,10 +108,13 @@ std::string fixed_function_description(const FixedFunctionState& s) {
   FIELD(pixel_shader_inputs.diffuse);
   FIELD(pixel_shader_inputs.specular);
   FIELD(pixel_shader_inputs.fog);
-  field(out, "pixel_shader_inputs.texcoords", uint32_t{s.pixel_shader_inputs.texcoords}, uint32_t{d.pixel_shader_inputs.texcoords});
+  field(out, "pixel_shader_inputs.texcoords", uint32_t{s.pixel_shader_inputs.texcoords},
+        uint32_t{d.pixel_shader_inputs.texcoords});
   FIELD(vertex_shader_outputs.known);
-  field(out, "vertex_shader_outputs.diffuse", uint32_t{s.vertex_shader_outputs.diffuse}, uint32_t{d.vertex_shader_outputs.diffuse});
-  field(out, "vertex_shader_outputs.specular", uint32_t{s.vertex_shader_outputs.specular}, uint32_t{d.vertex_shader_outputs.specular});
+  field(out, "vertex_shader_outputs.diffuse", uint32_t{s.vertex_shader_outputs.diffuse},
+        uint32_t{d.vertex_shader_outputs.diffuse});
+  field(out, "vertex_shader_outputs.specular", uint32_t{s.vertex_shader_outputs.specular},
+        uint32_t{d.vertex_shader_outputs.specular});
   field(out, "vertex_shader_outputs.fog", uint32_t{s.vertex_shader_outputs.fog}, uint32_t{d.vertex_shader_outputs.fog});
   for (int t = 0; t < 8; ++t)
     field(out, "vertex_shader_outputs.texcoord" + std::to_string(t), uint32_t{s.vertex_shader_outputs.texcoords[t]},

@@ -31,8 +31,9 @@ class VertexShaderWriter {
       decl_.uniform("float4", "fx_ff_screen_to_clip");
       // D3D's rhw is 1/w: multiplying back by w keeps the interpolation perspective-correct.
       body_ += "  float fx_w = 1.0 / i.fx_position.w;\n";
-      body_ += "  fx_o.fx_position = float4(i.fx_position.xy * fx_ff_screen_to_clip.xy + fx_ff_screen_to_clip.zw, "
-               "i.fx_position.z, 1.0) * fx_w;\n";
+      body_ +=
+          "  fx_o.fx_position = float4(i.fx_position.xy * fx_ff_screen_to_clip.xy + fx_ff_screen_to_clip.zw, "
+          "i.fx_position.z, 1.0) * fx_w;\n";
     } else {
       body_ += "  float4x4 fx_world_view = mul(" + decl_.matrix(s_.world) + ", " + decl_.matrix(s_.view) + ");\n";
       body_ += "  float4 fx_view_position = mul(float4(i.fx_position, 1.0), fx_world_view);\n";
@@ -40,9 +41,10 @@ class VertexShaderWriter {
       if (need_normal) normal();
       else body_ += "  float3 fx_normal = float3(0.0, 0.0, 0.0);\n";
     }
-    body_ += "  float4 fx_vertex_diffuse = " + std::string(s_.vertex_diffuse ? "i.fx_diffuse" : "float4(1.0, 1.0, 1.0, 1.0)") + ";\n";
-    body_ += "  float4 fx_vertex_specular = " + std::string(s_.vertex_specular ? "i.fx_specular" : "float4(0.0, 0.0, 0.0, 0.0)") +
-             ";\n";
+    body_ += "  float4 fx_vertex_diffuse = " +
+             std::string(s_.vertex_diffuse ? "i.fx_diffuse" : "float4(1.0, 1.0, 1.0, 1.0)") + ";\n";
+    body_ += "  float4 fx_vertex_specular = " +
+             std::string(s_.vertex_specular ? "i.fx_specular" : "float4(0.0, 0.0, 0.0, 0.0)") + ";\n";
     if (lit) lighting();
     else body_ += "  float4 fx_diffuse = fx_vertex_diffuse;\n  float4 fx_specular = fx_vertex_specular;\n";
     const FixedFunctionState::PixelShaderInputs& ps = s_.pixel_shader_inputs;
@@ -71,8 +73,8 @@ class VertexShaderWriter {
       if (s_.point_scale && !s_.pretransformed) {
         decl_.uniform("float4", "fx_ff_screen_to_clip");
         body_ += "  float fx_eye_distance = length(fx_view_position.xyz);\n";
-        size = "2.0 / abs(fx_ff_screen_to_clip.y) * " + size + " * sqrt(1.0 / (" + decl_.scalar(s_.point_scale_a) + " + " +
-               decl_.scalar(s_.point_scale_b) + " * fx_eye_distance + " + decl_.scalar(s_.point_scale_c) +
+        size = "2.0 / abs(fx_ff_screen_to_clip.y) * " + size + " * sqrt(1.0 / (" + decl_.scalar(s_.point_scale_a) +
+               " + " + decl_.scalar(s_.point_scale_b) + " * fx_eye_distance + " + decl_.scalar(s_.point_scale_c) +
                " * fx_eye_distance * fx_eye_distance))";
       }
       body_ += "  fx_o.fx_point_size = clamp(" + size + ", " + decl_.scalar(s_.point_size_min) + ", " +
@@ -84,8 +86,9 @@ class VertexShaderWriter {
     FixedFunctionShader result;
     result.entry = "fx_ff_vs";
     result.profile = "vs_3_0";
-    result.source = "// fxkit fixed-function vertex shader (generated)\n" + decl_.text() + "struct fx_ff_vs_in {\n" + in +
-                    "};\nstruct fx_ff_vs_out {\n" + out + "};\nfx_ff_vs_out fx_ff_vs(fx_ff_vs_in i) {\n" + body_ + "}\n";
+    result.source = "// fxkit fixed-function vertex shader (generated)\n" + decl_.text() + "struct fx_ff_vs_in {\n" +
+                    in + "};\nstruct fx_ff_vs_out {\n" + out + "};\nfx_ff_vs_out fx_ff_vs(fx_ff_vs_in i) {\n" + body_ +
+                    "}\n";
     return result;
   }
 
@@ -103,7 +106,9 @@ class VertexShaderWriter {
   // The camera-space normal: the inverse transpose of world*view's 3x3 (cofactors / det).
   void normal() {
     body_ += "  float3x3 fx_wv = (float3x3)fx_world_view;\n";
-    body_ += "  float3x3 fx_cofactors = float3x3(cross(fx_wv[1], fx_wv[2]), cross(fx_wv[2], fx_wv[0]), cross(fx_wv[0], fx_wv[1]));\n";
+    body_ +=
+        "  float3x3 fx_cofactors = float3x3(cross(fx_wv[1], fx_wv[2]), cross(fx_wv[2], fx_wv[0]), cross(fx_wv[0], "
+        "fx_wv[1]));\n";
     body_ += "  float3 fx_normal = mul(i.fx_normal, fx_cofactors) / dot(fx_wv[0], fx_cofactors[0]);\n";
     if (s_.normalize_normals) body_ += "  fx_normal = normalize(fx_normal);\n";
   }
@@ -131,42 +136,49 @@ class VertexShaderWriter {
       if (!light.enabled) continue;
       body_ += "  {  // light " + std::to_string(l) + "\n";
       if (light.type == LightType::directional) {
-        body_ += "    float3 fx_to_light = normalize(-mul(" + decl_.vector(light.direction, {0, 0, 0, 0}) + ".xyz, (float3x3)" +
-                 view + "));\n";
+        body_ += "    float3 fx_to_light = normalize(-mul(" + decl_.vector(light.direction, {0, 0, 0, 0}) +
+                 ".xyz, (float3x3)" + view + "));\n";
         body_ += "    float fx_attenuation = 1.0;\n";
       } else {
-        body_ += "    float3 fx_light_position = mul(float4(" + decl_.vector(light.position) + ".xyz, 1.0), " + view + ").xyz;\n";
+        body_ += "    float3 fx_light_position = mul(float4(" + decl_.vector(light.position) + ".xyz, 1.0), " + view +
+                 ").xyz;\n";
         body_ += "    float3 fx_offset = fx_light_position - fx_view_position.xyz;\n";
         body_ += "    float fx_d = length(fx_offset);\n";
         body_ += "    float3 fx_to_light = fx_offset / max(fx_d, 1e-30);\n";
-        body_ += "    float fx_attenuation = fx_d <= " + decl_.scalar(light.range) + " ? 1.0 / (" + decl_.scalar(light.attenuation0) +
-                 " + " + decl_.scalar(light.attenuation1) + " * fx_d + " + decl_.scalar(light.attenuation2) +
-                 " * fx_d * fx_d) : 0.0;\n";
+        body_ += "    float fx_attenuation = fx_d <= " + decl_.scalar(light.range) + " ? 1.0 / (" +
+                 decl_.scalar(light.attenuation0) + " + " + decl_.scalar(light.attenuation1) + " * fx_d + " +
+                 decl_.scalar(light.attenuation2) + " * fx_d * fx_d) : 0.0;\n";
         if (light.type == LightType::spot) {
           body_ += "    float3 fx_spot_direction = normalize(mul(" + decl_.vector(light.direction, {0, 0, 0, 0}) +
                    ".xyz, (float3x3)" + view + "));\n";
           body_ += "    float fx_rho = dot(-fx_to_light, fx_spot_direction);\n";
           body_ += "    float fx_cos_theta = cos(" + decl_.scalar(light.theta) + " * 0.5);\n";
           body_ += "    float fx_cos_phi = cos(" + decl_.scalar(light.phi) + " * 0.5);\n";
-          body_ += "    float fx_spot = fx_rho > fx_cos_theta ? 1.0 : fx_rho <= fx_cos_phi ? 0.0 : pow(saturate((fx_rho - fx_cos_phi) / "
-                   "(fx_cos_theta - fx_cos_phi)), " + decl_.scalar(light.falloff) + ");\n";
+          body_ +=
+              "    float fx_spot = fx_rho > fx_cos_theta ? 1.0 : fx_rho <= fx_cos_phi ? 0.0 : pow(saturate((fx_rho - "
+              "fx_cos_phi) / "
+              "(fx_cos_theta - fx_cos_phi)), " +
+              decl_.scalar(light.falloff) + ");\n";
           body_ += "    fx_attenuation *= fx_spot;\n";
         }
       }
       body_ += "    float fx_n_dot_l = dot(fx_normal, fx_to_light);\n";
       body_ += "    fx_ambient_sum += fx_attenuation * " + decl_.vector(light.ambient) + ".rgb;\n";
-      body_ += "    fx_diffuse_sum += fx_attenuation * max(fx_n_dot_l, 0.0) * " + decl_.vector(light.diffuse) + ".rgb;\n";
+      body_ +=
+          "    fx_diffuse_sum += fx_attenuation * max(fx_n_dot_l, 0.0) * " + decl_.vector(light.diffuse) + ".rgb;\n";
       if (s_.specular_enable) {
         body_ += "    float3 fx_halfway = normalize(fx_to_eye + fx_to_light);\n";
         body_ += "    float fx_n_dot_h = max(dot(fx_normal, fx_halfway), 0.0);\n";
-        body_ += "    if (fx_n_dot_l > 0.0) fx_specular_sum += fx_attenuation * pow(fx_n_dot_h, " + decl_.scalar(s_.material_power) + ") * " +
-                 decl_.vector(light.specular) + ".rgb;\n";
+        body_ += "    if (fx_n_dot_l > 0.0) fx_specular_sum += fx_attenuation * pow(fx_n_dot_h, " +
+                 decl_.scalar(s_.material_power) + ") * " + decl_.vector(light.specular) + ".rgb;\n";
       }
       body_ += "  }\n";
     }
-    body_ += "  float4 fx_diffuse = saturate(float4(fx_material_emissive.rgb + fx_material_ambient.rgb * fx_ambient_sum + "
-             "fx_material_diffuse.rgb * fx_diffuse_sum, fx_material_diffuse.a));\n";
-    body_ += "  float4 fx_specular = saturate(float4(fx_material_specular.rgb * fx_specular_sum, fx_vertex_specular.a));\n";
+    body_ +=
+        "  float4 fx_diffuse = saturate(float4(fx_material_emissive.rgb + fx_material_ambient.rgb * fx_ambient_sum + "
+        "fx_material_diffuse.rgb * fx_diffuse_sum, fx_material_diffuse.a));\n";
+    body_ +=
+        "  float4 fx_specular = saturate(float4(fx_material_specular.rgb * fx_specular_sum, fx_vertex_specular.a));\n";
   }
 
   // Stage `i`'s texture coordinates: TEXCOORD<index> or generated, then transformed.
@@ -179,8 +191,8 @@ class VertexShaderWriter {
       const uint32_t set = st.tex_coord_index & 0x7;
       const int size = s_.vertex_texcoord_size[set] ? s_.vertex_texcoord_size[set] : 2;
       const std::string name = "fx_texcoord" + std::to_string(set);
-      const std::string decl = "  float" + (size > 1 ? std::to_string(size) : std::string()) + " " + name + " : TEXCOORD" +
-                               std::to_string(set) + ";\n";
+      const std::string decl = "  float" + (size > 1 ? std::to_string(size) : std::string()) + " " + name +
+                               " : TEXCOORD" + std::to_string(set) + ";\n";
       if (in.find(decl) == std::string::npos) in += decl;
       // D3D extends a coordinate with 1 in its first missing component and 0 after it.
       static const char* pad[] = {"", ", 1.0, 0.0, 0.0)", ", 1.0, 0.0)", ", 1.0)", ")"};
@@ -190,14 +202,16 @@ class VertexShaderWriter {
     } else if (gen == texcoord_gen::camera_space_position) {
       tc = "float4(fx_view_position.xyz, 1.0)";
     } else {
-      const std::string reflection = "reflect(" + std::string(s_.local_viewer ? "normalize(fx_view_position.xyz)" : "float3(0.0, 0.0, 1.0)") +
-                                     ", fx_normal)";
+      const std::string reflection =
+          "reflect(" + std::string(s_.local_viewer ? "normalize(fx_view_position.xyz)" : "float3(0.0, 0.0, 1.0)") +
+          ", fx_normal)";
       if (gen == texcoord_gen::camera_space_reflection_vector) {
         tc = "float4(" + reflection + ", 1.0)";
       } else {  // sphere map
         body_ += "  float3 fx_sphere_r" + n + " = " + reflection + ";\n";
-        body_ += "  float fx_sphere_m" + n + " = 2.0 * sqrt(fx_sphere_r" + n + ".x * fx_sphere_r" + n + ".x + fx_sphere_r" + n + ".y * fx_sphere_r" + n +
-                 ".y + (fx_sphere_r" + n + ".z + 1.0) * (fx_sphere_r" + n + ".z + 1.0));\n";
+        body_ += "  float fx_sphere_m" + n + " = 2.0 * sqrt(fx_sphere_r" + n + ".x * fx_sphere_r" + n +
+                 ".x + fx_sphere_r" + n + ".y * fx_sphere_r" + n + ".y + (fx_sphere_r" + n +
+                 ".z + 1.0) * (fx_sphere_r" + n + ".z + 1.0));\n";
         tc = "float4(fx_sphere_r" + n + ".xy / fx_sphere_m" + n + " + 0.5, 1.0, 1.0)";
       }
     }
@@ -211,8 +225,10 @@ class VertexShaderWriter {
       body_ += "  fx_o.fx_fog = fx_specular.a;\n";
       return;
     }
-    body_ += "  float fx_fog_distance = " + std::string(s_.range_fog ? "length(fx_view_position.xyz)" : "abs(fx_view_position.z)") + ";\n";
-    const std::string start = decl_.scalar(s_.fog_start), end = decl_.scalar(s_.fog_end), density = decl_.scalar(s_.fog_density);
+    body_ += "  float fx_fog_distance = " +
+             std::string(s_.range_fog ? "length(fx_view_position.xyz)" : "abs(fx_view_position.z)") + ";\n";
+    const std::string start = decl_.scalar(s_.fog_start), end = decl_.scalar(s_.fog_end),
+                      density = decl_.scalar(s_.fog_density);
     std::string f;
     switch (s_.fog_vertex_mode) {
       case FogMode::linear: f = "(" + end + " - fx_fog_distance) / (" + end + " - " + start + ")"; break;

@@ -10,9 +10,10 @@
 namespace fx {
 namespace {
 
-
 // HLSL's usual arithmetic conversions pick the "larger" base.
-BaseType promote(BaseType a, BaseType b) { return static_cast<BaseType>(std::max(static_cast<int>(a), static_cast<int>(b))); }
+BaseType promote(BaseType a, BaseType b) {
+  return static_cast<BaseType>(std::max(static_cast<int>(a), static_cast<int>(b)));
+}
 
 bool is_integer(BaseType b) { return b == BaseType::boolean || b == BaseType::int32 || b == BaseType::uint32; }
 
@@ -77,8 +78,8 @@ class Folder {
     if (!v) return v;
     for (double& c : v->components) {
       if (e.text == "-") c = -c;
-      else if (e.text == "+") {}
-      else if (e.text == "!") c = c == 0 ? 1 : 0;
+      else if (e.text == "+") {
+      } else if (e.text == "!") c = c == 0 ? 1 : 0;
       else if (e.text == "~") c = static_cast<double>(~static_cast<uint32_t>(static_cast<int64_t>(c)));
       else return fail("not-constant", e.range, "operator '" + e.text + "' is not constant");
     }
@@ -151,8 +152,12 @@ class Folder {
       else if (op == "&" || op == "|" || op == "^" || op == "<<" || op == ">>") {
         uint32_t u = static_cast<uint32_t>(static_cast<int64_t>(x)), v = static_cast<uint32_t>(static_cast<int64_t>(y));
         uint32_t s = v & 31;
-        uint32_t res = op == "&" ? u & v : op == "|" ? u | v : op == "^" ? u ^ v : op == "<<" ? u << s
-                       : base == BaseType::int32 ? static_cast<uint32_t>(static_cast<int32_t>(u) >> s) : u >> s;
+        uint32_t res = op == "&"                 ? u & v
+                       : op == "|"               ? u | v
+                       : op == "^"               ? u ^ v
+                       : op == "<<"              ? u << s
+                       : base == BaseType::int32 ? static_cast<uint32_t>(static_cast<int32_t>(u) >> s)
+                                                 : u >> s;
         r = res;
       } else {
         return fail("not-constant", e.range, "operator '" + op + "' is not constant");
@@ -177,8 +182,8 @@ class Folder {
     for (size_t i = 0; i < out.type.component_count(); ++i) {
       double cond = i < c->components.size() ? c->components[i] : 0;
       const Value& pick = cond != 0 ? *a : *b;
-      out.components.push_back(convert_component(pick.components.size() == 1 ? pick.components[0] : pick.components[i],
-                                                 out.type.base));
+      out.components.push_back(
+          convert_component(pick.components.size() == 1 ? pick.components[0] : pick.components[i], out.type.base));
     }
     return out;
   }
@@ -217,9 +222,9 @@ class Folder {
       size_t want = t.component_count(), have = flat->components.size();
       if (have == 1 && t.is_numeric()) flat->components.assign(want, flat->components[0]);
       else if (have != want)
-        return fail("bad-constructor", e.range,
-                    t.to_string() + " constructor needs " + std::to_string(want) + " components, got " +
-                        std::to_string(have));
+        return fail(
+            "bad-constructor", e.range,
+            t.to_string() + " constructor needs " + std::to_string(want) + " components, got " + std::to_string(have));
       flat->type = t;
       for (double& c : flat->components) c = convert_component(c, t.base);
       return flat;
@@ -229,7 +234,7 @@ class Folder {
 
   std::optional<Value> intrinsic(const ast::Expr& e, int depth) {
     const std::string& f = e.text;
-    static const char* unary_names[] = {"abs", "sqrt", "sin", "cos", "tan", "floor", "ceil", "frac", "saturate",
+    static const char* unary_names[] = {"abs", "sqrt", "sin", "cos",  "tan",     "floor",   "ceil",  "frac", "saturate",
                                         "exp", "exp2", "log", "log2", "radians", "degrees", "rsqrt", "round"};
     bool is_unary = std::any_of(std::begin(unary_names), std::end(unary_names), [&](const char* n) { return f == n; });
     if (is_unary && e.args.size() == 1) {
@@ -285,7 +290,9 @@ class Folder {
       Value out;
       combine_shape(*a, *b, out.type, e.range);
       for (size_t i = 0; i < out.type.component_count(); ++i) {
-        auto at = [i](const Value& v) { return v.components.size() == 1 ? v.components[0] : v.components[std::min(i, v.components.size() - 1)]; };
+        auto at = [i](const Value& v) {
+          return v.components.size() == 1 ? v.components[0] : v.components[std::min(i, v.components.size() - 1)];
+        };
         double x = at(*a), y = at(*b), z = at(*c);
         out.components.push_back(f == "lerp" ? x + (y - x) * z : std::clamp(x, std::min(y, z), std::max(y, z)));
       }
@@ -309,7 +316,8 @@ class Folder {
   }
 
   std::optional<Value> list(const ast::Expr& e, int depth) {
-    if (e.args.size() == 1 && e.args[0] && e.args[0]->kind == ast::ExprKind::string_literal) return fold(*e.args[0], depth + 1);
+    if (e.args.size() == 1 && e.args[0] && e.args[0]->kind == ast::ExprKind::string_literal)
+      return fold(*e.args[0], depth + 1);
     BaseType base = BaseType::int32;
     auto flat = flatten_args(e, depth, base);
     if (!flat) return flat;
@@ -380,7 +388,8 @@ class Folder {
 
 }  // namespace
 
-std::optional<Value> fold_constant(const ast::Expr& expr, const ConstantScope& scope, DiagnosticSink& diags, bool quiet) {
+std::optional<Value> fold_constant(const ast::Expr& expr, const ConstantScope& scope, DiagnosticSink& diags,
+                                   bool quiet) {
   Folder folder(scope, diags, quiet);
   return folder.fold(expr);
 }

@@ -23,9 +23,9 @@ std::optional<Value> fold_default(const ast::Expr& e, const ConstantScope& scope
   auto v = fold_constant(e, scope, local, false);
   for (const Diagnostic& d : local.diagnostics()) {
     if (!v && d.id == "not-constant") {
-      diags.warning("unfolded-initializer", e.range,
-                    "the default of '" + name + "' is not a constant fxkit can fold (" + d.message +
-                        "); it starts at zero");
+      diags.warning(
+          "unfolded-initializer", e.range,
+          "the default of '" + name + "' is not a constant fxkit can fold (" + d.message + "); it starts at zero");
       break;
     }
     Diagnostic& copy = diags.report(d.severity, d.id, d.range, d.message);
@@ -128,9 +128,8 @@ class Builder {
     p.decl = &v;
     p.annotations = annotations(v.annotations);
     const TypeClass cls = p.type.cls;
-    p.shader_visible = !(v.storage & ast::kStatic) &&
-                       (p.type.is_numeric() || cls == TypeClass::structure || cls == TypeClass::texture ||
-                        cls == TypeClass::sampler);
+    p.shader_visible = !(v.storage & ast::kStatic) && (p.type.is_numeric() || cls == TypeClass::structure ||
+                                                       cls == TypeClass::texture || cls == TypeClass::sampler);
     const uint32_t index = static_cast<uint32_t>(model_.parameters.size());
     if (v.initializer) initialize(p, *v.initializer, index);
     model_.parameter_index.emplace(p.name, index);
@@ -141,7 +140,8 @@ class Builder {
   void initialize(Parameter& p, const ast::Expr& init, uint32_t index) {
     switch (p.type.cls) {
       case TypeClass::sampler:
-        if (init.kind == ast::ExprKind::state_block) add_sampler(p.name, init.states, index, kNoIndex, init.range, false);
+        if (init.kind == ast::ExprKind::state_block)
+          add_sampler(p.name, init.states, index, kNoIndex, init.range, false);
         else if (init.kind == ast::ExprKind::init_list)
           for (size_t i = 0; i < init.args.size(); ++i)
             if (init.args[i] && init.args[i]->kind == ast::ExprKind::state_block)
@@ -183,8 +183,8 @@ class Builder {
     if (!t.generator.empty()) {
       std::vector<std::string_view> names = shading::generator_names();
       if (std::none_of(names.begin(), names.end(), [&](std::string_view n) { return iequals(n, t.generator); })) {
-        Diagnostic& d = diags_.error("unknown-generator", t.generator_range,
-                                     "unknown texture generator '" + t.generator + "'");
+        Diagnostic& d =
+            diags_.error("unknown-generator", t.generator_range, "unknown texture generator '" + t.generator + "'");
         std::string guess = closest_match(t.generator, names);
         if (!guess.empty()) d.message += "; did you mean '" + guess + "'?";
       }
@@ -192,8 +192,8 @@ class Builder {
     model_.textures.push_back(std::move(t));
   }
 
-  void add_sampler(std::string name, const ast::List<ast::StateAssignment>& states, uint32_t parameter,
-                   uint32_t object, SourceRange range, bool d3d10) {
+  void add_sampler(std::string name, const ast::List<ast::StateAssignment>& states, uint32_t parameter, uint32_t object,
+                   SourceRange range, bool d3d10) {
     std::vector<ResolvedState> resolved;
     StateBlock block = d3d10 ? StateBlock::sampler_object : StateBlock::sampler_state;
     for (const ast::StateAssignment& a : states) {
@@ -268,7 +268,8 @@ class Builder {
       // bump-environment states itself: those are not a reason the pass cannot run.
       const ShaderBinding* pixel = pass.shader(PassStage::pixel);
       if (pixel && pixel->source != ShaderSource::null)
-        std::erase_if(pass.unsupported, [](const UnsupportedState& u) { return u.info && pixel_shader_replaces_or_reads(*u.info); });
+        std::erase_if(pass.unsupported,
+                      [](const UnsupportedState& u) { return u.info && pixel_shader_replaces_or_reads(*u.info); });
       info.passes.push_back(std::move(pass));
     }
     model_.techniques.push_back(std::move(info));
@@ -306,9 +307,9 @@ SamplerDesc PassInfo::stage_sampler(uint32_t stage, uint32_t& texture) const {
 
 bool pixel_shader_replaces_or_reads(const StateInfo& info) {
   if (info.field == StateField::stage_color_op || info.field == StateField::stage_alpha_op) return true;
-  for (std::string_view name : {"ColorArg0", "ColorArg1", "ColorArg2", "AlphaArg0", "AlphaArg1", "AlphaArg2", "ResultArg",
-                                "BumpEnvMat00", "BumpEnvMat01", "BumpEnvMat10", "BumpEnvMat11", "BumpEnvLScale",
-                                "BumpEnvLOffset"})
+  for (std::string_view name :
+       {"ColorArg0", "ColorArg1", "ColorArg2", "AlphaArg0", "AlphaArg1", "AlphaArg2", "ResultArg", "BumpEnvMat00",
+        "BumpEnvMat01", "BumpEnvMat10", "BumpEnvMat11", "BumpEnvLScale", "BumpEnvLOffset"})
     if (iequals(info.name, name)) return true;
   return false;
 }

@@ -133,7 +133,8 @@ void ParameterStore::Impl::plan_runs(const Node& n, const BlockMemberLayout& m, 
   }
 }
 
-ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMemberLayout> members, uint32_t block_size) {
+ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMemberLayout> members,
+                                        uint32_t block_size) {
   Impl& s = *impl_;
   s.sync_all();  // the block being laid out again may be a hot one
   Impl::Block b;
@@ -162,8 +163,8 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
       packed_elsewhere = j != k && nodes[j] == node && (!implied[j] || j < k);
     if (packed_elsewhere) continue;
     if (m.offset > block_size || m.size > block_size - m.offset)
-      return fail(ParamStatus::size_mismatch, "member '" + m.name + "' lies outside the block (" +
-                                                  std::to_string(block_size) + " bytes)");
+      return fail(ParamStatus::size_mismatch,
+                  "member '" + m.name + "' lies outside the block (" + std::to_string(block_size) + " bytes)");
     const Impl::Node& n = s.nodes[node];
     auto group = std::find_if(per_top.begin(), per_top.end(), [&](const auto& g) { return g.first == n.top; });
     if (group == per_top.end()) group = per_top.insert(per_top.end(), {n.top, {}});
@@ -183,7 +184,8 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
     const bool whole4x4 = !n.pooled && n.all_float && n.type.cls == TypeClass::matrix && n.type.rows == 4 &&
                           n.type.cols == 4 && runs.size() == 1 && runs[0].src == n.offset && runs[0].words == 16 &&
                           (runs[0].kind == Impl::RunKind::columns4x4 || runs[0].kind == Impl::RunKind::copy);
-    b.groups.push_back({top, static_cast<uint32_t>(b.runs.size()), static_cast<uint32_t>(runs.size()), s.draw.versions[top], whole4x4});
+    b.groups.push_back({top, static_cast<uint32_t>(b.runs.size()), static_cast<uint32_t>(runs.size()),
+                        s.draw.versions[top], whole4x4});
     b.runs.insert(b.runs.end(), runs.begin(), runs.end());
     if (s.nodes[top].pooled) b.pooled.push_back({s.nodes[top].pool_entry, group, 0});
   }
@@ -229,15 +231,11 @@ inline void ParameterStore::Impl::pack(Block& b, uint32_t first, uint32_t count)
     const WordRun& r = b.runs[i];
     const uint32_t* from = (r.pooled ? pooled : own) + r.src;
     switch (r.kind) {
-      case RunKind::copy:
-        std::memcpy(to + r.dst, from, r.words * sizeof(uint32_t));
-        break;
+      case RunKind::copy: std::memcpy(to + r.dst, from, r.words * sizeof(uint32_t)); break;
       case RunKind::gather:
         for (uint32_t k = 0; k < r.words; ++k) std::memcpy(to + r.dst + k * 4, from + k * r.stride, sizeof(uint32_t));
         break;
-      case RunKind::columns4x4:
-        write_columns4x4(to + r.dst, from);
-        break;
+      case RunKind::columns4x4: write_columns4x4(to + r.dst, from); break;
     }
   }
 }
@@ -250,7 +248,7 @@ bool ParameterStore::Impl::refresh(Block& b, DrawBlock& d) {
   auto repack = [&](RunGroup& g) {
     const uint64_t version = draw.versions[g.top];
     if (version == g.packed_version) return;  // unchanged, written by store_hot, or touched twice
-    sync(g.top);  // another block may hold its value
+    sync(g.top);                              // another block may hold its value
     pack(b, g.first, g.count);
     g.packed_version = version;
     changed = true;
@@ -259,7 +257,8 @@ bool ParameterStore::Impl::refresh(Block& b, DrawBlock& d) {
     if (g.whole4x4 && set_by_app[b.runs[g.first].src]) {
       const WordRun& r = b.runs[g.first];
       const bool shared = holders[g.top] > 1;
-      draw.hot[g.top] = {&d, &g.packed_version, b.packed.data() + r.dst, r.src, r.kind == RunKind::columns4x4, false, shared};
+      draw.hot[g.top] = {&d,    &g.packed_version, b.packed.data() + r.dst, r.src, r.kind == RunKind::columns4x4, false,
+                         shared};
     } else if (HotMatrix& h = draw.hot[g.top]; h.block) {
       h.others_outdated = false;  // this block is current: the next store_hot logs a change again
     }
@@ -297,7 +296,8 @@ bool ParameterStore::dirty(uint32_t block) const {
 ParamStatus ParameterStore::write_block(uint32_t block, std::span<uint8_t> out) {
   Impl& s = *impl_;
   auto it = s.block_slot.find(block);
-  if (it == s.block_slot.end()) return fail(ParamStatus::not_found, "block " + std::to_string(block) + " has no layout");
+  if (it == s.block_slot.end())
+    return fail(ParamStatus::not_found, "block " + std::to_string(block) + " has no layout");
   Impl::Block& b = s.blocks[it->second];
   if (out.size() < b.size)
     return fail(ParamStatus::size_mismatch, "block " + std::to_string(block) + " needs " + std::to_string(b.size) +
@@ -366,14 +366,16 @@ std::vector<std::string> remap(const ParameterStore& old_store, ParameterStore& 
       if (older[k] != kNoIndex) t[k] = map[older[k]];
       if (t[k] == kNoIndex) {
         auto it = o.removed.find(static_cast<uint64_t>(g) << 32 | k);
-        n.removed[static_cast<uint64_t>(g) << 32 | k] =
-            it != o.removed.end() ? it->second : older[k] != kNoIndex ? o.path(older[k]) : std::string("?");
+        n.removed[static_cast<uint64_t>(g) << 32 | k] = it != o.removed.end()  ? it->second
+                                                        : older[k] != kNoIndex ? o.path(older[k])
+                                                                               : std::string("?");
       }
     }
   }
   n.translate[o.draw.generation] = map;
   for (size_t k = 0; k < map.size(); ++k)
-    if (map[k] == kNoIndex) n.removed[static_cast<uint64_t>(o.draw.generation) << 32 | k] = o.path(static_cast<uint32_t>(k));
+    if (map[k] == kNoIndex)
+      n.removed[static_cast<uint64_t>(o.draw.generation) << 32 | k] = o.path(static_cast<uint32_t>(k));
   return defaults_changed;
 }
 

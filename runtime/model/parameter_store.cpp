@@ -10,7 +10,6 @@
 
 namespace fx {
 
-
 ParameterStore::ParameterStore(const EffectModel& model, ParameterPool* pool, DiagnosticSink* diags)
     : impl_(std::make_unique<Impl>()), draw_(&impl_->draw) {
   Impl& s = *impl_;
@@ -45,7 +44,8 @@ ParameterStore::ParameterStore(const EffectModel& model, ParameterPool* pool, Di
         flatten_bases(p.type, b);
         for (uint32_t w = 0; w < n.words; ++w)
           pool->words_.push_back(p.default_value && w < p.default_value->components.size()
-                                     ? encode(p.default_value->components[w], b[w]) : 0);
+                                     ? encode(p.default_value->components[w], b[w])
+                                     : 0);
         pool->by_name_.emplace(p.name, static_cast<uint32_t>(pool->entries_.size()));
         pool->entries_.push_back(std::move(e));
         it = pool->by_name_.find(p.name);
@@ -66,8 +66,8 @@ ParameterStore::ParameterStore(const EffectModel& model, ParameterPool* pool, Di
       n.offset = static_cast<uint32_t>(s.words.size());
       for (uint32_t w = 0; w < n.words; ++w) {
         BaseType b = s.bases[n.base_offset + w];
-        s.words.push_back(p.default_value && w < p.default_value->components.size()
-                              ? encode(p.default_value->components[w], b) : 0);
+        s.words.push_back(
+            p.default_value && w < p.default_value->components.size() ? encode(p.default_value->components[w], b) : 0);
       }
     }
     s.by_name.emplace(p.name, i);
@@ -149,8 +149,8 @@ ParamStatus ParameterStore::Impl::write_floats(uint32_t i, const float* v, size_
   const Node& n = nodes[i];
   if (!uniform_kind(n, true)) return fail(ParamStatus::type_mismatch, "cannot set " + describe(i) + " from floats");
   if (count != n.words)
-    return fail(ParamStatus::size_mismatch, describe(i) + " takes " + std::to_string(n.words) + " floats, got " +
-                                                std::to_string(count));
+    return fail(ParamStatus::size_mismatch,
+                describe(i) + " takes " + std::to_string(n.words) + " floats, got " + std::to_string(count));
   store_floats(n, v);
   return {};
 }
@@ -169,8 +169,8 @@ ParamStatus ParameterStore::set(Param p, std::span<const int32_t> v) {
   if (!s.uniform_kind(n, false))
     return fail(ParamStatus::type_mismatch, "cannot set " + s.describe(i) + " from integers");
   if (v.size() != n.words)
-    return fail(ParamStatus::size_mismatch, s.describe(i) + " takes " + std::to_string(n.words) + " integers, got " +
-                                                std::to_string(v.size()));
+    return fail(ParamStatus::size_mismatch,
+                s.describe(i) + " takes " + std::to_string(n.words) + " integers, got " + std::to_string(v.size()));
   s.mark_set(n, true);
   uint32_t* d = s.data(n);
   bool changed = false;
@@ -203,13 +203,12 @@ ParamStatus ParameterStore::set_matrix_checked(Param p, std::span<const float> v
   uint32_t i;
   if (ParamStatus st = s.resolve(p, i); !st) return st;
   const Impl::Node& n = s.nodes[i];
-  if (n.type.cls != TypeClass::matrix)
-    return fail(ParamStatus::type_mismatch, s.describe(i) + " is not a matrix");
+  if (n.type.cls != TypeClass::matrix) return fail(ParamStatus::type_mismatch, s.describe(i) + " is not a matrix");
   if (order == HostMatrixOrder::row_major) return s.write_floats(i, v.data(), v.size());
   const uint32_t r = n.type.rows, c = n.type.cols, per = r * c;
   if (v.size() != n.words)
-    return fail(ParamStatus::size_mismatch, s.describe(i) + " takes " + std::to_string(n.words) + " floats, got " +
-                                                std::to_string(v.size()));
+    return fail(ParamStatus::size_mismatch,
+                s.describe(i) + " takes " + std::to_string(n.words) + " floats, got " + std::to_string(v.size()));
   std::vector<float> rows(v.size());
   for (uint32_t e = 0; e < n.words / per; ++e)
     for (uint32_t a = 0; a < r; ++a)
@@ -256,7 +255,8 @@ ParamStatus ParameterStore::get(Param p, std::span<int32_t> out) const {
   uint32_t i;
   if (ParamStatus st = s.resolve(p, i); !st) return st;
   const Impl::Node& n = s.nodes[i];
-  if (!s.uniform_kind(n, false)) return fail(ParamStatus::type_mismatch, "cannot read " + s.describe(i) + " as integers");
+  if (!s.uniform_kind(n, false))
+    return fail(ParamStatus::type_mismatch, "cannot read " + s.describe(i) + " as integers");
   if (out.size() != n.words)
     return fail(ParamStatus::size_mismatch, s.describe(i) + " has " + std::to_string(n.words) +
                                                 " integers, the output " + std::to_string(out.size()));
@@ -310,7 +310,9 @@ ParamStatus ParameterStore::reset(Param p) {
   uint32_t* d = s.data(n);
   for (uint32_t w = 0; w < n.words; ++w) {
     uint32_t k = n.offset - top_offset + w;
-    d[w] = top.default_value && k < top.default_value->components.size() ? encode(top.default_value->components[k], b[k]) : 0;
+    d[w] = top.default_value && k < top.default_value->components.size()
+               ? encode(top.default_value->components[k], b[k])
+               : 0;
   }
   s.touch(n);
   return {};

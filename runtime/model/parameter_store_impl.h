@@ -5,8 +5,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "fx/model/parameter_store.h"
 #include "fx/model/matrix_registers.h"
+#include "fx/model/parameter_store.h"
 #include "model_internal.h"
 
 namespace fx::param_detail {
@@ -77,15 +77,15 @@ using namespace param_detail;
 
 struct ParameterStore::Impl {
   struct Node {
-    std::string member;            // struct member name ("" for elements and top level)
+    std::string member;  // struct member name ("" for elements and top level)
     Type type;
     uint32_t parent = kNoIndex;
-    uint32_t element = 0;          // index within an array parent
+    uint32_t element = 0;  // index within an array parent
     uint32_t first_child = kNoIndex, child_count = 0;
-    uint32_t top = 0;              // the top-level parameter node
-    uint32_t offset = 0;           // first word (in the store's or the pool's words)
+    uint32_t top = 0;     // the top-level parameter node
+    uint32_t offset = 0;  // first word (in the store's or the pool's words)
     uint32_t words = 0;
-    uint32_t base_offset = 0;      // first entry in `bases` (pooled nodes too)
+    uint32_t base_offset = 0;  // first entry in `bases` (pooled nodes too)
     bool pooled = false;
     uint32_t pool_entry = kNoIndex;
     uint32_t string_slot = kNoIndex;
@@ -123,7 +123,7 @@ struct ParameterStore::Impl {
     std::vector<WordRun> runs;  // planned by plan_runs, grouped by top-level parameter
     std::vector<RunGroup> groups;
     std::vector<uint8_t> packed;
-    bool written = false;  // by write_block or update_block since bind_layout
+    bool written = false;            // by write_block or update_block since bind_layout
     std::vector<uint32_t> group_of;  // per top-level parameter: its group here, or kNoIndex
     std::vector<PooledRuns> pooled;
     // `draw`: this block's DrawBlock (its seen_changes and fresh flag).
@@ -138,7 +138,8 @@ struct ParameterStore::Impl {
   };
   // The words of top-level `top` made current again after store_hot left them stale.
   void sync(uint32_t top) const {
-    if (draw.hot[top].stale) [[unlikely]] sync_words(top);
+    if (draw.hot[top].stale) [[unlikely]]
+      sync_words(top);
   }
   [[gnu::noinline]] void sync_words(uint32_t top) const;
   // Recounts holders from the blocks' groups (after a bind).
@@ -159,9 +160,9 @@ struct ParameterStore::Impl {
   const EffectModel* model = nullptr;
   ParameterPool* pool = nullptr;
   std::vector<Node> nodes;
-  uint32_t top_count = 0;            // nodes [0, top_count) are the model's parameters
+  uint32_t top_count = 0;               // nodes [0, top_count) are the model's parameters
   mutable std::vector<uint32_t> words;  // mutable: sync() refreshes the stale words of a hot matrix
-  std::vector<BaseType> bases;       // per component, see Node::base_offset
+  std::vector<BaseType> bases;          // per component, see Node::base_offset
   std::vector<std::string> strings;
   // Per word of `words` and per string slot: 1 when a setter wrote it (the application's
   // value), 0 while it holds the effect's default (creation, reset(), a reload's new
@@ -181,9 +182,7 @@ struct ParameterStore::Impl {
   std::vector<std::vector<uint32_t>> translate;           // [old generation][old index] -> index
   std::unordered_map<uint64_t, std::string> removed;      // (generation << 32 | index) -> name
 
-  uint32_t* data(const Node& n) {
-    return n.pooled ? pool->words_.data() + n.offset : words.data() + n.offset;
-  }
+  uint32_t* data(const Node& n) { return n.pooled ? pool->words_.data() + n.offset : words.data() + n.offset; }
   const uint32_t* data(const Node& n) const {
     return n.pooled ? pool->words_.data() + n.offset : words.data() + n.offset;
   }

@@ -138,7 +138,9 @@ struct Summarizer {
       // D3D9 and D3D10 cull by window-space winding with clockwise front faces: 2 culls the
       // front (D3DCULL_CW, D3D10_CULL_FRONT), 3 the back.
       case StateField::cull: out.cull = v == 2 ? CullMode::front : v == 3 ? CullMode::back : CullMode::none; break;
-      case StateField::fill: out.fill = v == 1 ? FillMode::point : v == 2 ? FillMode::wireframe : FillMode::solid; break;
+      case StateField::fill:
+        out.fill = v == 1 ? FillMode::point : v == 2 ? FillMode::wireframe : FillMode::solid;
+        break;
       case StateField::front_face_ccw: out.front_face = v ? FrontFace::counter_clockwise : FrontFace::clockwise; break;
       case StateField::depth_bias_d3d9: out.depth_bias = f, out.depth_bias_normalized = true; break;
       case StateField::depth_bias_units: out.depth_bias = f, out.depth_bias_normalized = false; break;
@@ -160,7 +162,9 @@ struct Summarizer {
       case StateField::dst_alpha: targets([&](TargetBlend& t) { t.dst_alpha = blend_factor(v); }); break;
       case StateField::alpha_op: targets([&](TargetBlend& t) { t.alpha_op = blend_op(v); }); break;
       case StateField::separate_alpha: separate_alpha = v != 0; break;
-      case StateField::write_mask: targets([&](TargetBlend& t) { t.write_mask = static_cast<uint8_t>(v & 0xF); }); break;
+      case StateField::write_mask:
+        targets([&](TargetBlend& t) { t.write_mask = static_cast<uint8_t>(v & 0xF); });
+        break;
       case StateField::blend_constants:
         for (size_t i = 0; i < 4 && i < x.components; ++i) out.blend_constants[i] = x.vector[i];
         break;
@@ -188,7 +192,8 @@ struct Summarizer {
     }
     // D3D11 with IndependentBlendEnable off (and any object naming target 0 only): every
     // render target blends as target 0.
-    if (obj.block == StateBlock::blend_state && !per_target) std::fill(out.blend.begin() + 1, out.blend.end(), out.blend[0]);
+    if (obj.block == StateBlock::blend_state && !per_target)
+      std::fill(out.blend.begin() + 1, out.blend.end(), out.blend[0]);
   }
 
   void reset(StateBlock block) {
@@ -257,7 +262,9 @@ void write_sampler(const ResolvedState& s, SamplerDesc& d, uint32_t& texture) {
       d.mip_filter = v == 0 ? MipFilter::none : v == 1 ? MipFilter::nearest : MipFilter::linear;
       break;
     case StateField::lod_bias: d.lod_bias = static_cast<float>(s.floating); break;
-    case StateField::max_mip_level: d.max_mip_level = static_cast<uint32_t>(v), d.min_lod = static_cast<float>(v); break;
+    case StateField::max_mip_level:
+      d.max_mip_level = static_cast<uint32_t>(v), d.min_lod = static_cast<float>(v);
+      break;
     case StateField::max_anisotropy: d.max_anisotropy = static_cast<uint32_t>(std::max<int64_t>(1, v)); break;
     case StateField::srgb_texture: d.srgb = v != 0; break;
     case StateField::min_lod: d.min_lod = static_cast<float>(s.floating); break;

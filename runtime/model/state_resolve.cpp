@@ -60,7 +60,8 @@ std::optional<int64_t> enum_value(const ast::Expr& e, const StateInfo& info, Res
       return static_cast<int64_t>(c->number());
     return std::nullopt;  // the checker reported an unknown enum name
   }
-  if (e.kind == ast::ExprKind::binary && (e.text == "|" || e.text == "+") && e.args.size() == 2 && e.args[0] && e.args[1]) {
+  if (e.kind == ast::ExprKind::binary && (e.text == "|" || e.text == "+") && e.args.size() == 2 && e.args[0] &&
+      e.args[1]) {
     auto a = enum_value(*e.args[0], info, ctx), b = enum_value(*e.args[1], info, ctx);
     if (!a || !b) return std::nullopt;
     return e.text == "|" ? (*a | *b) : (*a + *b);
@@ -77,10 +78,9 @@ std::array<float, 4> unpack_color(uint32_t c) {
 
 void not_constant(ResolveContext& ctx, const ast::Expr& e, const StateInfo& info) {
   // Re-fold loudly so the user sees what is not constant.
-  if (!fold_constant(e, ctx.scope, ctx.diags, false))
-    return;
-  ctx.diags.error("bad-state-value", e.range, "value of '" + std::string(info.name) + "' is not a " +
-                                                  std::string(to_string(info.type)));
+  if (!fold_constant(e, ctx.scope, ctx.diags, false)) return;
+  ctx.diags.error("bad-state-value", e.range,
+                  "value of '" + std::string(info.name) + "' is not a " + std::string(to_string(info.type)));
 }
 
 ShaderBinding shader_from(const ast::Expr& e, PassStage stage, ResolveContext& ctx, int depth = 0) {
@@ -180,7 +180,8 @@ ShaderBinding shader_from(const ast::Expr& e, PassStage stage, ResolveContext& c
       break;
     default: break;
   }
-  ctx.diags.error("bad-state-value", e.range, "not a shader: expected compile, CompileShader, asm, a GLSL block or NULL");
+  ctx.diags.error("bad-state-value", e.range,
+                  "not a shader: expected compile, CompileShader, asm, a GLSL block or NULL");
   return b;
 }
 
@@ -203,7 +204,8 @@ bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveConte
     out.indexed = true;
   }
   if (info->lands == StateLanding::fixed_function && unsupported)
-    unsupported->push_back({info, out.index, a.range, "'" + std::string(info->name) + "' is " + std::string(info->reason)});
+    unsupported->push_back(
+        {info, out.index, a.range, "'" + std::string(info->name) + "' is " + std::string(info->reason)});
 
   const ast::Expr* value = a.value;
   // Call form: SetBlendState(b, factor, mask) -> value is args[0], the rest are call_args.
@@ -230,7 +232,7 @@ bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveConte
         return false;
       }
       if (out.kind != StateValueKind::parameter)
-        out.kind = info->type == StateValueType::boolean ? StateValueKind::boolean
+        out.kind = info->type == StateValueType::boolean   ? StateValueKind::boolean
                    : info->type == StateValueType::integer ? StateValueKind::integer
                                                            : StateValueKind::floating;
       out.floating = v->number();
@@ -326,7 +328,8 @@ bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveConte
       ShaderBinding b = shader_from(*value, *stage, ctx);
       out.kind = b.source == ShaderSource::null && is_null(*value) ? StateValueKind::null : StateValueKind::shader;
       if (shaders) {
-        auto it = std::find_if(shaders->begin(), shaders->end(), [&](const ShaderBinding& s) { return s.stage == *stage; });
+        auto it =
+            std::find_if(shaders->begin(), shaders->end(), [&](const ShaderBinding& s) { return s.stage == *stage; });
         if (it != shaders->end()) {
           *it = std::move(b);
           out.target = static_cast<uint32_t>(it - shaders->begin());
@@ -347,7 +350,8 @@ bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveConte
       std::string name = indexed ? std::string(value->args[0]->text) : std::string(value->text);
       uint32_t o = kNoIndex;
       if (indexed && value->args[1] && value->args[1]->kind == ast::ExprKind::int_literal)
-        o = ctx.model.find_state_object(name + "[" + std::to_string(static_cast<int64_t>(value->args[1]->number)) + "]");
+        o = ctx.model.find_state_object(name + "[" + std::to_string(static_cast<int64_t>(value->args[1]->number)) +
+                                        "]");
       if (o == kNoIndex) o = ctx.model.find_state_object(name);
       if (o == kNoIndex) {
         ctx.diags.error("unknown-state-object", value->range, "no state object named '" + name + "'");

@@ -45,8 +45,10 @@ std::vector<std::string> split_args(std::string_view s) {
   std::vector<std::string> out;
   std::string cur;
   for (char c : s) {
-    if (c == ',') { out.push_back(cur); cur.clear(); }
-    else if (c != ' ' && c != '\t') cur.push_back(c);
+    if (c == ',') {
+      out.push_back(cur);
+      cur.clear();
+    } else if (c != ' ' && c != '\t') cur.push_back(c);
   }
   if (!cur.empty() || !out.empty()) out.push_back(cur);
   return out;
@@ -67,13 +69,19 @@ Type object_type(TypeClass cls, std::string kind) {
 // Texture, sampler, shader and state-object names (case-insensitive, as fxc).
 std::optional<Type> object_name(std::string_view name, std::string_view template_arg) {
   std::string n = ascii_lower(name);
-  static const std::pair<const char*, TextureShape> textures[] = {
-      {"texture", TextureShape::any}, {"texture1d", TextureShape::tex1d}, {"texture2d", TextureShape::tex2d},
-      {"texture3d", TextureShape::tex3d}, {"texturecube", TextureShape::cube},
-      {"volumetexture", TextureShape::tex3d}, {"cubetexture", TextureShape::cube},
-      {"texture1darray", TextureShape::tex1d_array}, {"texture2darray", TextureShape::tex2d_array},
-      {"texture2dms", TextureShape::tex2dms}, {"texture2dmsarray", TextureShape::tex2dms_array},
-      {"texturecubearray", TextureShape::cube_array}, {"buffer", TextureShape::buffer}};
+  static const std::pair<const char*, TextureShape> textures[] = {{"texture", TextureShape::any},
+                                                                  {"texture1d", TextureShape::tex1d},
+                                                                  {"texture2d", TextureShape::tex2d},
+                                                                  {"texture3d", TextureShape::tex3d},
+                                                                  {"texturecube", TextureShape::cube},
+                                                                  {"volumetexture", TextureShape::tex3d},
+                                                                  {"cubetexture", TextureShape::cube},
+                                                                  {"texture1darray", TextureShape::tex1d_array},
+                                                                  {"texture2darray", TextureShape::tex2d_array},
+                                                                  {"texture2dms", TextureShape::tex2dms},
+                                                                  {"texture2dmsarray", TextureShape::tex2dms_array},
+                                                                  {"texturecubearray", TextureShape::cube_array},
+                                                                  {"buffer", TextureShape::buffer}};
   for (auto& [spelling, shape] : textures)
     if (n == spelling) {
       Type t;
@@ -82,11 +90,14 @@ std::optional<Type> object_name(std::string_view name, std::string_view template
       t.element = std::string(template_arg);
       return t;
     }
-  static const std::pair<const char*, SamplerShape> samplers[] = {
-      {"sampler", SamplerShape::any}, {"sampler1d", SamplerShape::s1d}, {"sampler2d", SamplerShape::s2d},
-      {"sampler3d", SamplerShape::s3d}, {"samplercube", SamplerShape::cube},
-      {"samplerstate", SamplerShape::sampler_object}, {"sampler_state", SamplerShape::sampler_object},
-      {"samplercomparisonstate", SamplerShape::comparison}};
+  static const std::pair<const char*, SamplerShape> samplers[] = {{"sampler", SamplerShape::any},
+                                                                  {"sampler1d", SamplerShape::s1d},
+                                                                  {"sampler2d", SamplerShape::s2d},
+                                                                  {"sampler3d", SamplerShape::s3d},
+                                                                  {"samplercube", SamplerShape::cube},
+                                                                  {"samplerstate", SamplerShape::sampler_object},
+                                                                  {"sampler_state", SamplerShape::sampler_object},
+                                                                  {"samplercomparisonstate", SamplerShape::comparison}};
   for (auto& [spelling, shape] : samplers)
     if (n == spelling) {
       Type t;
@@ -113,13 +124,53 @@ std::optional<Type> pre_release_name(std::string_view n) {
 }
 
 std::vector<std::string_view> known_names(const TypeTable& table) {
-  static const char* builtins[] = {
-      "bool", "int", "uint", "dword", "half", "float", "double", "float2", "float3", "float4", "float4x4",
-      "float3x3", "float3x4", "float4x3", "half2", "half3", "half4", "int2", "int3", "int4", "bool2", "bool3",
-      "bool4", "vector", "matrix", "string", "texture", "texture1D", "texture2D", "texture3D", "textureCUBE",
-      "Texture2D", "Texture3D", "TextureCube", "sampler", "sampler1D", "sampler2D", "sampler3D", "samplerCUBE",
-      "SamplerState", "SamplerComparisonState", "VertexShader", "PixelShader", "BlendState",
-      "DepthStencilState", "RasterizerState", "void"};
+  static const char* builtins[] = {"bool",
+                                   "int",
+                                   "uint",
+                                   "dword",
+                                   "half",
+                                   "float",
+                                   "double",
+                                   "float2",
+                                   "float3",
+                                   "float4",
+                                   "float4x4",
+                                   "float3x3",
+                                   "float3x4",
+                                   "float4x3",
+                                   "half2",
+                                   "half3",
+                                   "half4",
+                                   "int2",
+                                   "int3",
+                                   "int4",
+                                   "bool2",
+                                   "bool3",
+                                   "bool4",
+                                   "vector",
+                                   "matrix",
+                                   "string",
+                                   "texture",
+                                   "texture1D",
+                                   "texture2D",
+                                   "texture3D",
+                                   "textureCUBE",
+                                   "Texture2D",
+                                   "Texture3D",
+                                   "TextureCube",
+                                   "sampler",
+                                   "sampler1D",
+                                   "sampler2D",
+                                   "sampler3D",
+                                   "samplerCUBE",
+                                   "SamplerState",
+                                   "SamplerComparisonState",
+                                   "VertexShader",
+                                   "PixelShader",
+                                   "BlendState",
+                                   "DepthStencilState",
+                                   "RasterizerState",
+                                   "void"};
   std::vector<std::string_view> out(std::begin(builtins), std::end(builtins));
   for (auto& [name, _] : table.structs()) out.push_back(name);
   return out;
@@ -166,16 +217,16 @@ std::string Type::to_string() const {
     case TypeClass::structure: s = "struct " + (structure ? structure->name : std::string("?")); break;
     case TypeClass::string: s = "string"; break;
     case TypeClass::texture: {
-      static const char* names[] = {"texture", "Texture1D", "Texture2D", "Texture3D", "TextureCube",
-                                    "Texture1DArray", "Texture2DArray", "Texture2DMS", "Texture2DMSArray",
-                                    "TextureCubeArray", "Buffer"};
+      static const char* names[] = {"texture",          "Texture1D",        "Texture2D",      "Texture3D",
+                                    "TextureCube",      "Texture1DArray",   "Texture2DArray", "Texture2DMS",
+                                    "Texture2DMSArray", "TextureCubeArray", "Buffer"};
       s = names[static_cast<int>(texture)];
       if (!element.empty()) s += "<" + element + ">";
       break;
     }
     case TypeClass::sampler: {
-      static const char* names[] = {"sampler", "sampler1D", "sampler2D", "sampler3D", "samplerCUBE",
-                                    "SamplerState", "SamplerComparisonState"};
+      static const char* names[] = {
+          "sampler", "sampler1D", "sampler2D", "sampler3D", "samplerCUBE", "SamplerState", "SamplerComparisonState"};
       s = names[static_cast<int>(sampler)];
       break;
     }
@@ -335,7 +386,8 @@ Type TypeTable::resolve(const ast::TypeRef& ref, uint32_t storage, const ast::Li
   extra.insert(extra.end(), t.array_dims.begin(), t.array_dims.end());
   t.array_dims = std::move(extra);
   if (t.component_count() > (1u << 22)) {
-    diags.error("bad-array-size", ref.range, "parameter too large (" + std::to_string(t.component_count()) + " components)");
+    diags.error("bad-array-size", ref.range,
+                "parameter too large (" + std::to_string(t.component_count()) + " components)");
     return {};
   }
   return t;

@@ -29,8 +29,9 @@ std::string number_text(double v, BaseType base) {
   }
   // The shortest spelling that reads back as the same value: a float parameter's 0.8 is
   // held as 0.800000011920929 and prints as 0.8, a double's as 0.8 only if it is 0.8.
-  const std::to_chars_result r = base == BaseType::float64 ? std::to_chars(buf, buf + sizeof buf, v)
-                                                           : std::to_chars(buf, buf + sizeof buf, static_cast<float>(v));
+  const std::to_chars_result r = base == BaseType::float64
+                                     ? std::to_chars(buf, buf + sizeof buf, v)
+                                     : std::to_chars(buf, buf + sizeof buf, static_cast<float>(v));
   return std::string(buf, r.ptr);
 }
 
@@ -69,7 +70,8 @@ std::vector<float> Value::floats() const {
 std::vector<int32_t> Value::ints() const {
   std::vector<int32_t> out;
   out.reserve(components.size());
-  for (double c : components) out.push_back(static_cast<int32_t>(static_cast<int64_t>(convert_component(c, BaseType::int32))));
+  for (double c : components)
+    out.push_back(static_cast<int32_t>(static_cast<int64_t>(convert_component(c, BaseType::int32))));
   return out;
 }
 
@@ -84,9 +86,7 @@ std::string Value::to_string() const {
   }
   std::vector<BaseType> bases;
   flatten_bases(type, bases);
-  auto comp = [&](size_t i) {
-    return number_text(components[i], i < bases.size() ? bases[i] : type.base);
-  };
+  auto comp = [&](size_t i) { return number_text(components[i], i < bases.size() ? bases[i] : type.base); };
   if (components.size() == 1 && !type.is_array()) return comp(0);
   std::string s;
   bool list = type.is_array() || type.cls == TypeClass::structure || !type.is_numeric();

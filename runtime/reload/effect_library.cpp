@@ -145,7 +145,9 @@ struct EffectLibrary::Impl {
   std::atomic<bool> stop{false};
 
   explicit Impl(EffectLibraryOptions o)
-      : options(std::move(o)), cache(options.spirv_cache_dir), workers(start_workers()),
+      : options(std::move(o)),
+        cache(options.spirv_cache_dir),
+        workers(start_workers()),
         compiler({}, &cache, workers.get()) {
     front_end.preprocessor.include_dirs = options.include_dirs;
     for (const std::string& d : options.defines) front_end.preprocessor.defines.push_back(parse_define(d));

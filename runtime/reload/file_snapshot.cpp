@@ -57,8 +57,8 @@ bool FileSnapshot::same_content(const FileSnapshot& other) const {
 }
 
 bool FileSnapshot::same_stat(const FileSnapshot& other) const {
-  return exists == other.exists && device == other.device && inode == other.inode &&
-         size == other.size && mtime_ns == other.mtime_ns && ctime_ns == other.ctime_ns;
+  return exists == other.exists && device == other.device && inode == other.inode && size == other.size &&
+         mtime_ns == other.mtime_ns && ctime_ns == other.ctime_ns;
 }
 
 bool FileSnapshot::racy() const { return mtime_ns >= taken_at_ns - kRacyMarginNs; }

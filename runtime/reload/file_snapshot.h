@@ -25,7 +25,6 @@ struct FileSnapshot {
 
 // Stats and hashes `path`. When `previous` has the same stat and is not racy its hash is
 // reused without reading the file; `hashed` (optional) says whether the file was read.
-FileSnapshot take_snapshot(const std::string& path, const FileSnapshot* previous,
-                           bool* hashed = nullptr);
+FileSnapshot take_snapshot(const std::string& path, const FileSnapshot* previous, bool* hashed = nullptr);
 
 }  // namespace fx::detail

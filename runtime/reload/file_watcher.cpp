@@ -17,9 +17,7 @@
 
 namespace fx {
 
-const char* to_string(FileEventKind kind) {
-  return kind == FileEventKind::deleted ? "deleted" : "changed";
-}
+const char* to_string(FileEventKind kind) { return kind == FileEventKind::deleted ? "deleted" : "changed"; }
 
 const char* to_string(WatchBackend backend) {
   switch (backend) {
@@ -38,8 +36,8 @@ using detail::Activity;
 using detail::FileSnapshot;
 
 struct WatchedFile {
-  fs::path reported;       // the spelling first passed to watch()
-  std::string directory;   // key into Impl::directories
+  fs::path reported;      // the spelling first passed to watch()
+  std::string directory;  // key into Impl::directories
   int refs = 0;
   FileSnapshot delivered;  // the state consumers were last told about
   FileSnapshot observed;   // the state the last comparison saw (polling, rescans)
@@ -91,8 +89,7 @@ struct FileWatcher::Impl {
   Clock::time_point next_scan;
   bool limit_reported = false;
 
-  explicit Impl(FileWatcherOptions opts)
-      : options(opts), pending(opts.coalesce_window, opts.close_grace) {
+  explicit Impl(FileWatcherOptions opts) : options(opts), pending(opts.coalesce_window, opts.close_grace) {
     if (options.backend != WatchBackend::polling) {
       inotify = std::make_unique<detail::InotifyQueue>();
       if (inotify->ok()) {
@@ -100,17 +97,16 @@ struct FileWatcher::Impl {
         wake.add(inotify->fd());
       } else {
         diagnostics.warning("watch-inotify-unavailable", {},
-                            std::string("inotify is unavailable (") +
-                                std::strerror(inotify->error()) +
-                                "); watching files by polling every " +
-                                std::to_string(options.poll_interval.count()) + " ms");
+                            std::string("inotify is unavailable (") + std::strerror(inotify->error()) +
+                                "); watching files by polling every " + std::to_string(options.poll_interval.count()) +
+                                " ms");
         inotify.reset();
       }
     }
     if (!wake.ok())
       diagnostics.warning("watch-handle-unavailable", {},
-                          std::string("cannot create the watcher's wait handle (") +
-                              std::strerror(wake.error()) + "); wait_handle() is -1");
+                          std::string("cannot create the watcher's wait handle (") + std::strerror(wake.error()) +
+                              "); wait_handle() is -1");
     next_scan = Clock::now();
   }
 
@@ -122,28 +118,28 @@ struct FileWatcher::Impl {
     if (options.backend == WatchBackend::automatic && detail::is_network_filesystem(key)) {
       if (!dir.network_reported)
         diagnostics.report(Severity::note, "watch-network-filesystem", {},
-                           "'" + key + "' is on a network file system where inotify misses "
-                           "remote edits; polling it every " +
+                           "'" + key +
+                               "' is on a network file system where inotify misses "
+                               "remote edits; polling it every " +
                                std::to_string(options.poll_interval.count()) + " ms");
       dir.network_reported = true;
       return;
     }
     if (inotify_directories >= options.max_inotify_directories) {
-      report_limit(key, "the watcher's limit of " +
-                            std::to_string(options.max_inotify_directories) +
-                            " directories is reached");
+      report_limit(
+          key, "the watcher's limit of " + std::to_string(options.max_inotify_directories) + " directories is reached");
       return;
     }
     int error = 0;
     int wd = inotify->add_directory(key, error);
     if (wd < 0) {
       if (error == ENOSPC)
-        report_limit(key, "the kernel's inotify watch limit is reached "
-                          "(fs.inotify.max_user_watches)");
+        report_limit(key,
+                     "the kernel's inotify watch limit is reached "
+                     "(fs.inotify.max_user_watches)");
       else if (error != ENOENT && error != ENOTDIR)  // missing: retried at each scan
         diagnostics.warning("watch-directory-failed", {},
-                            "cannot watch '" + key + "' (" + std::strerror(error) +
-                                "); polling it instead");
+                            "cannot watch '" + key + "' (" + std::strerror(error) + "); polling it instead");
       return;
     }
     dir.wd = wd;
@@ -155,8 +151,7 @@ struct FileWatcher::Impl {
     if (limit_reported) return;  // one warning, not one per directory
     limit_reported = true;
     diagnostics.warning("watch-limit-reached", {},
-                        "cannot watch '" + key + "': " + why +
-                            "; this and further directories are polled every " +
+                        "cannot watch '" + key + "': " + why + "; this and further directories are polled every " +
                             std::to_string(options.poll_interval.count()) + " ms");
   }
 
@@ -194,8 +189,7 @@ struct FileWatcher::Impl {
       ++stats.queue_overflows;
       size_t changed = compare_all(now);
       diagnostics.warning("watch-queue-overflow", {},
-                          "the inotify queue overflowed; rescanned " +
-                              std::to_string(files.size()) + " files, " +
+                          "the inotify queue overflowed; rescanned " + std::to_string(files.size()) + " files, " +
                               std::to_string(changed) + " changed");
       return;
     }
@@ -254,13 +248,11 @@ struct FileWatcher::Impl {
       FileSnapshot current = detail::take_snapshot(ready.key, &file.observed, &hashed);
       stats.files_hashed += hashed;
       if (!current.readable && current.exists && file.delivered.readable)
-        diagnostics.warning("watch-file-unreadable", {},
-                            "cannot read '" + ready.key + "' to hash its content");
+        diagnostics.warning("watch-file-unreadable", {}, "cannot read '" + ready.key + "' to hash its content");
       std::optional<FileEventKind> kind;
       if (!current.exists) {
         if (file.delivered.exists) kind = FileEventKind::deleted;
-      } else if (ready.written || !file.delivered.exists ||
-                 !current.same_content(file.delivered)) {
+      } else if (ready.written || !file.delivered.exists || !current.same_content(file.delivered)) {
         kind = FileEventKind::changed;
       }
       file.delivered = file.observed = current;
@@ -279,13 +271,11 @@ struct FileWatcher::Impl {
     const Clock::time_point deadline = Clock::now() + timeout;
     // Consumes timer expiries and interrupts even when not blocking, so that an event loop
     // watching wait_handle() does not spin on a stale readable state.
-    bool interrupted = wake.wait(std::chrono::milliseconds(0)) ==
-                       detail::WakeSource::WaitResult::interrupted;
+    bool interrupted = wake.wait(std::chrono::milliseconds(0)) == detail::WakeSource::WaitResult::interrupted;
     std::vector<FileEvent> events;
     for (;;) {
       Clock::time_point now = Clock::now();
-      if (inotify)
-        inotify->drain([&](const detail::InotifyRecord& r) { on_record(r, now); });
+      if (inotify) inotify->drain([&](const detail::InotifyRecord& r) { on_record(r, now); });
       if (polled_directories() && now >= next_scan) {
         scan_polled(now);
         next_scan = now + options.poll_interval;
@@ -304,8 +294,7 @@ struct FileWatcher::Impl {
   bool watch(const fs::path& path) {
     std::optional<ResolvedPath> r = resolve(path);
     if (!r) {
-      diagnostics.error("watch-bad-path", {},
-                        "cannot watch '" + path.string() + "': not a file path");
+      diagnostics.error("watch-bad-path", {}, "cannot watch '" + path.string() + "': not a file path");
       return false;
     }
     WatchedFile& file = files[r->key];
@@ -358,9 +347,7 @@ bool FileWatcher::is_watched(const std::filesystem::path& file) const {
   return r && impl_->files.count(r->key);
 }
 
-std::vector<FileEvent> FileWatcher::poll(std::chrono::milliseconds timeout) {
-  return impl_->poll(timeout);
-}
+std::vector<FileEvent> FileWatcher::poll(std::chrono::milliseconds timeout) { return impl_->poll(timeout); }
 
 std::size_t FileWatcher::rescan() {
   size_t changed = impl_->compare_all(Clock::now());

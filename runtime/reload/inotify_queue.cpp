@@ -8,9 +8,8 @@
 
 namespace fx::detail {
 
-const uint32_t InotifyQueue::kDirectoryMask = IN_CLOSE_WRITE | IN_MOVED_TO | IN_MOVED_FROM |
-                                              IN_CREATE | IN_DELETE | IN_DELETE_SELF |
-                                              IN_MOVE_SELF | IN_ONLYDIR;
+const uint32_t InotifyQueue::kDirectoryMask =
+    IN_CLOSE_WRITE | IN_MOVED_TO | IN_MOVED_FROM | IN_CREATE | IN_DELETE | IN_DELETE_SELF | IN_MOVE_SELF | IN_ONLYDIR;
 
 InotifyQueue::InotifyQueue() {
   fd_ = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
@@ -46,8 +45,7 @@ size_t InotifyQueue::drain(const std::function<void(const InotifyRecord&)>& on_r
       std::memcpy(&header, buffer + at, sizeof header);
       const char* name = buffer + at + sizeof(inotify_event);
       InotifyRecord record{header.wd, header.mask,
-                           header.len ? std::string_view(name, strnlen(name, header.len))
-                                      : std::string_view()};
+                           header.len ? std::string_view(name, strnlen(name, header.len)) : std::string_view()};
       on_record(record);
       ++count;
       at += sizeof(inotify_event) + header.len;

@@ -15,8 +15,7 @@ bool is_network_filesystem_type(int64_t f_type) {
     case V9FS_MAGIC:
     case 0x786F4256u:  // vboxsf (VirtualBox shared folders); not in linux/magic.h
       return true;
-    default:
-      return false;
+    default: return false;
   }
 }
 

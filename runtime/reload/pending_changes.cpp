@@ -14,14 +14,9 @@ void PendingChanges::note(const std::string& key, Activity activity, Clock::time
       e.written = true;
       e.awaiting_close = false;
       break;
-    case Activity::created:
-      e.awaiting_close = true;
-      break;
-    case Activity::removed:
-      e.awaiting_close = false;
-      break;
-    case Activity::rescanned:
-      break;
+    case Activity::created: e.awaiting_close = true; break;
+    case Activity::removed: e.awaiting_close = false; break;
+    case Activity::rescanned: break;
   }
 }
 

@@ -26,8 +26,7 @@ class PendingChanges {
     Clock::time_point first_seen;
   };
 
-  PendingChanges(Clock::duration window, Clock::duration close_grace)
-      : window_(window), close_grace_(close_grace) {}
+  PendingChanges(Clock::duration window, Clock::duration close_grace) : window_(window), close_grace_(close_grace) {}
 
   void note(const std::string& key, Activity activity, Clock::time_point now);
   void forget(const std::string& key) { pending_.erase(key); }

@@ -12,7 +12,8 @@ namespace fx {
 bool build_version_programs(EffectVersion& version, const ShaderCompiler& compiler, TaskExecutor* executor,
                             const FrontEndOptions& options, DiagnosticSink& sink, ProgramOutcome& outcome) {
   size_t errors = sink.error_count();
-  version.units = std::make_shared<EffectUnits>(version.parsed.ast, *version.sources, sink, effect_unit_options(options));
+  version.units =
+      std::make_shared<EffectUnits>(version.parsed.ast, *version.sources, sink, effect_unit_options(options));
   version.programs = std::make_shared<EffectPrograms>(*version.units, compiler, *version.sources);
   // Every pass, not just the selected technique's: a broken fallback must not be
   // discovered the day the fallback is chosen.

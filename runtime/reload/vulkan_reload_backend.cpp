@@ -4,8 +4,8 @@
 #include <chrono>
 #include <filesystem>
 
-#include "fx/reload/reload_transaction.h"
 #include "fx/binding/effect_preview.h"
+#include "fx/reload/reload_transaction.h"
 
 namespace fx::vk {
 
@@ -18,8 +18,8 @@ std::shared_ptr<BackendEffect> ReloadBackend::prepare(const EffectVersion& versi
   const auto start = std::chrono::steady_clock::now();
   EffectBindingDesc desc = desc_.binding;
   desc.effect_dir = std::filesystem::path(version.path).parent_path();
-  auto binding = EffectBinding::create(*ctx_, *version.model, *version.programs, *version.params, *textures_,
-                                       *frames_, desc, diags);
+  auto binding = EffectBinding::create(*ctx_, *version.model, *version.programs, *version.params, *textures_, *frames_,
+                                       desc, diags);
   if (!binding) return nullptr;
   if (binding->first_ok_technique() == kNoIndex) {
     std::string why;

@@ -57,8 +57,7 @@ void WakeSource::arm(std::optional<Clock::time_point> deadline) {
   if (timer_fd_ < 0) return;
   itimerspec spec{};  // all zero disarms
   if (deadline) {
-    auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                  deadline->time_since_epoch()).count();
+    auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(deadline->time_since_epoch()).count();
     if (ns <= 0) ns = 1;  // zero would disarm; fire at once instead
     spec.it_value.tv_sec = time_t(ns / 1'000'000'000);
     spec.it_value.tv_nsec = long(ns % 1'000'000'000);

@@ -43,9 +43,7 @@ bool has(const std::vector<std::string>& sorted, std::string_view name) {
 CapsRequirement CapsRequirement::profile(std::string_view p) {
   return {Kind::shader_profile, canonical_shader_profile(p), 0, {}};
 }
-CapsRequirement CapsRequirement::feature(std::string_view f) {
-  return {Kind::feature, std::string(f), 0, {}};
-}
+CapsRequirement CapsRequirement::feature(std::string_view f) { return {Kind::feature, std::string(f), 0, {}}; }
 CapsRequirement CapsRequirement::limit(std::string_view l, uint32_t minimum) {
   const CapsLimitRow* row = find_limit(l);
   return {Kind::limit, row ? row->name : std::string(l), minimum, {}};
@@ -104,8 +102,7 @@ std::optional<CapsRequirement> parse_caps_requirement(std::string_view token, st
   return fail("unknown requirement '" + std::string(token) + "'");
 }
 
-std::vector<CapsRequirement> parse_caps_requirements(std::string_view list,
-                                                     std::vector<std::string>* errors) {
+std::vector<CapsRequirement> parse_caps_requirements(std::string_view list, std::vector<std::string>* errors) {
   std::vector<CapsRequirement> out;
   size_t i = 0;
   while (i < list.size()) {
@@ -114,10 +111,8 @@ std::vector<CapsRequirement> parse_caps_requirements(std::string_view list,
     size_t end = list.find_first_of(" \t\r\n,;", start);
     if (end == std::string_view::npos) end = list.size();
     std::string error;
-    if (auto req = parse_caps_requirement(list.substr(start, end - start), &error))
-      out.push_back(std::move(*req));
-    else if (errors)
-      errors->push_back(std::move(error));
+    if (auto req = parse_caps_requirement(list.substr(start, end - start), &error)) out.push_back(std::move(*req));
+    else if (errors) errors->push_back(std::move(error));
     i = end;
   }
   return out;

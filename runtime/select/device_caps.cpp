@@ -10,8 +10,7 @@
 namespace fx {
 namespace {
 
-constexpr std::array<const char*, 7> kGenerationNames = {"dx6",  "dx7",  "dx8",   "dx9",
-                                                         "dx10", "dx11", "vulkan"};
+constexpr std::array<const char*, 7> kGenerationNames = {"dx6", "dx7", "dx8", "dx9", "dx10", "dx11", "vulkan"};
 
 constexpr CapsFeatureRow kFeatureRows[] = {
     {"dot3", &CapsFeatures::dot3},
@@ -81,10 +80,8 @@ class CapsReader {
       return;
     }
     for (const auto& s : j) {
-      if (s.is_string())
-        out.push_back(s.get<std::string>());
-      else
-        complain(where + " holds a non-string entry");
+      if (s.is_string()) out.push_back(s.get<std::string>());
+      else complain(where + " holds a non-string entry");
     }
   }
 
@@ -102,10 +99,8 @@ class CapsReader {
         (key == "name" ? caps.name : caps.description) = value.get<std::string>();
       } else if (key == "generation") {
         auto g = value.is_string() ? parse_caps_generation(value.get<std::string>()) : std::nullopt;
-        if (g)
-          caps.generation = *g;
-        else
-          complain("generation must be one of dx6, dx7, dx8, dx9, dx10, dx11, vulkan");
+        if (g) caps.generation = *g;
+        else complain("generation must be one of dx6, dx7, dx8, dx9, dx10, dx11, vulkan");
       } else if (key == "shader_profiles") {
         std::vector<std::string> raw;
         read_strings(value, raw, key);
@@ -165,10 +160,8 @@ class CapsReader {
       if (key == "api_version") {
         read_u32(value, "api_version", vk.api_version, "vulkan");
       } else if (key == "device_type") {
-        if (value.is_string())
-          vk.device_type = value.get<std::string>();
-        else
-          complain("vulkan.device_type must be a string");
+        if (value.is_string()) vk.device_type = value.get<std::string>();
+        else complain("vulkan.device_type must be a string");
       } else if (key == "features") {
         read_strings(value, vk.features, "vulkan.features");
       } else if (key == "extensions") {
@@ -185,10 +178,8 @@ class CapsReader {
           for (const auto& u : list) {
             auto row = std::find_if(std::begin(kFormatUsages), std::end(kFormatUsages),
                                     [&](const FormatUsageRow& r) { return u == r.name; });
-            if (row == std::end(kFormatUsages))
-              complain("unknown format usage '" + u + "' for " + format);
-            else
-              fs.*(row->member) = true;
+            if (row == std::end(kFormatUsages)) complain("unknown format usage '" + u + "' for " + format);
+            else fs.*(row->member) = true;
           }
           vk.formats.push_back(std::move(fs));
         }
@@ -241,9 +232,7 @@ void normalize(DeviceCaps& caps) {
   sort_unique(caps.vulkan.extensions);
   auto& f = caps.vulkan.formats;
   std::sort(f.begin(), f.end(), [](const auto& a, const auto& b) { return a.format < b.format; });
-  f.erase(std::unique(f.begin(), f.end(),
-                      [](const auto& a, const auto& b) { return a.format == b.format; }),
-          f.end());
+  f.erase(std::unique(f.begin(), f.end(), [](const auto& a, const auto& b) { return a.format == b.format; }), f.end());
 }
 
 void to_json(nlohmann::json& j, const DeviceCaps& caps) {

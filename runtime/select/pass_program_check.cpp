@@ -75,13 +75,13 @@ PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique
   out.found = true;
   for (const StageUnit& stage : ep->stages) {
     if (stage.kind == StageSourceKind::invalid)
-      out.reasons.push_back(reason("shader-compile-failed", stage.range, "shader does not compile: " + stage.unsupported));
+      out.reasons.push_back(
+          reason("shader-compile-failed", stage.range, "shader does not compile: " + stage.unsupported));
     if (stage.kind == StageSourceKind::assembly && stage.translated.empty() && !stage.unsupported.empty())
       out.reasons.push_back(reason("unsupported-shader-profile", stage.range, stage.unsupported));
   }
-  bool compiled = std::any_of(ep->stages.begin(), ep->stages.end(), [](const StageUnit& s) {
-    return s.kind != StageSourceKind::invalid;
-  });
+  bool compiled = std::any_of(ep->stages.begin(), ep->stages.end(),
+                              [](const StageUnit& s) { return s.kind != StageSourceKind::invalid; });
   if (!compiled) return out;
 
   const PassProgram& program = programs.program(*ep);
@@ -100,8 +100,8 @@ PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique
       out.reasons.push_back(reason("shader-compile-failed", at(sp.stage), what));
       continue;
     }
-    out.reasons.push_back(reason("shader-compile-failed", err->range.valid() ? err->range : at(sp.stage),
-                                 what + ": " + err->message));
+    out.reasons.push_back(
+        reason("shader-compile-failed", err->range.valid() ? err->range : at(sp.stage), what + ": " + err->message));
     out.reasons.back().notes.push_back({at(sp.stage).begin, "compiled for this pass here"});
   }
   for (const Diagnostic& d : program.diagnostics)
@@ -143,9 +143,9 @@ PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique
       for (const ShaderCapabilityFeature* f : features_needed_by(sp.shader.spirv)) {
         const CapsRequirement feature{CapsRequirement::Kind::vulkan_feature, f->feature, 0, {}};
         if (auto why = unmet_reason(caps, feature))
-          out.reasons.push_back(reason("shader-needs-feature", at(sp.stage),
-                                       noun + " uses " + f->written_as + " (SPIR-V capability " +
-                                           f->capability_name + "): " + *why));
+          out.reasons.push_back(
+              reason("shader-needs-feature", at(sp.stage),
+                     noun + " uses " + f->written_as + " (SPIR-V capability " + f->capability_name + "): " + *why));
       }
     if (sp.stage == ShaderStage::vertex && inputs > kVertexInputs)
       out.reasons.push_back(reason("shader-exceeds-limit", at(sp.stage),

@@ -14,7 +14,9 @@
 namespace fx {
 class EffectPrograms;
 class ShaderCompiler;
-namespace ast { struct Effect; }
+namespace ast {
+struct Effect;
+}
 }  // namespace fx
 
 namespace fx::detail {
@@ -28,9 +30,8 @@ struct PassProgramCheck {
 
 // Compiles (or reuses) the program of pass `pass` of technique number `technique_index`
 // (named `technique`, "" when unnamed) and checks it against `caps`.
-PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique_index,
-                                    std::string_view technique, uint32_t pass, SourceRange pass_range,
-                                    const DeviceCaps& caps);
+PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique_index, std::string_view technique,
+                                    uint32_t pass, SourceRange pass_range, const DeviceCaps& caps);
 
 // Lazily compiled programs of `effect` together with what they need to live (units, a
 // default compiler when `compiler` is null). `effect`, `sm` and `compiler` must outlive it.

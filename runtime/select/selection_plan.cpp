@@ -34,8 +34,8 @@ void widen(float lo, float hi, float fraction, float& lo_out, float& hi_out) {
 
 }  // namespace
 
-SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidates,
-                                   DiagnosticSink& sink, const SelectionPlanOptions& options) {
+SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidates, DiagnosticSink& sink,
+                                   const SelectionPlanOptions& options) {
   SelectionPlan plan;
   const size_t n = candidates.size();
   plan.entries_.reserve(n);
@@ -45,8 +45,7 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
     const AnnotationMap& a = c.annotations;
     auto bad_type = [&](std::string_view ann, const char* want) {
       sink.warning("selection-annotation", c.range,
-                   "annotation '" + std::string(ann) + "' of technique '" + c.name + "' must be " +
-                       want + "; ignored");
+                   "annotation '" + std::string(ann) + "' of technique '" + c.name + "' must be " + want + "; ignored");
     };
     auto number = [&](std::initializer_list<std::string_view> names, float fallback) {
       for (std::string_view ann : names) {
@@ -62,8 +61,8 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
     e.dist_max = number({"MaxDistance", "LodMax"}, kInf);
     e.size_min = number({"MinScreenSize"}, -kInf);
     e.size_max = number({"MaxScreenSize"}, kInf);
-    for (auto [lo, hi, what] : {std::tuple{e.dist_min, e.dist_max, "distance"},
-                                std::tuple{e.size_min, e.size_max, "screen-size"}}) {
+    for (auto [lo, hi, what] :
+         {std::tuple{e.dist_min, e.dist_max, "distance"}, std::tuple{e.size_min, e.size_max, "screen-size"}}) {
       if (lo >= hi)
         sink.error("selection-annotation", c.range,
                    std::string(what) + " band of technique '" + c.name +
@@ -102,8 +101,7 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
       size_t bit = size_t(it - plan.scheme_names_.begin());
       if (it == plan.scheme_names_.end()) {
         if (plan.scheme_names_.size() == kMaxSchemes) {
-          sink.error("selection-annotation", c.range,
-                     "more than 63 distinct schemes; scheme '" + s + "' ignored");
+          sink.error("selection-annotation", c.range, "more than 63 distinct schemes; scheme '" + s + "' ignored");
           continue;
         }
         plan.scheme_names_.push_back(s);
@@ -141,8 +139,7 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
   for (size_t i = 0; i < n; ++i) {
     const AnnotationValue* f = candidates[i].annotations.find("Fallback");
     if (!f) continue;
-    if (const auto* target = std::get_if<std::string>(f))
-      plan.entries_[i].fallback = resolve(*target, &candidates[i]);
+    if (const auto* target = std::get_if<std::string>(f)) plan.entries_[i].fallback = resolve(*target, &candidates[i]);
     else
       sink.warning("selection-annotation", candidates[i].range,
                    "annotation 'Fallback' of technique '" + candidates[i].name + "' must be a string; ignored");
@@ -205,8 +202,7 @@ SelectionQuery SelectionPlan::query(const SelectionCriteria& c) const {
   q.scheme = c.scheme;
   if (!c.scheme.empty()) {
     auto it = std::find(scheme_names_.begin(), scheme_names_.end(), c.scheme);
-    q.scheme_bit = it == scheme_names_.end() ? kUnknownSchemeBit
-                                             : uint64_t(1) << (it - scheme_names_.begin());
+    q.scheme_bit = it == scheme_names_.end() ? kUnknownSchemeBit : uint64_t(1) << (it - scheme_names_.begin());
   }
   return q;
 }

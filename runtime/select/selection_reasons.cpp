@@ -21,10 +21,8 @@ std::string millis(float x) {
   if (std::isinf(x)) return "inf";
   char buf[32];
   double tenths = double(x) * 10.0;
-  if (std::fabs(tenths - std::round(tenths)) < 1e-4)
-    std::snprintf(buf, sizeof buf, "%.1f", double(x));
-  else
-    std::snprintf(buf, sizeof buf, "%.3g", double(x));
+  if (std::fabs(tenths - std::round(tenths)) < 1e-4) std::snprintf(buf, sizeof buf, "%.1f", double(x));
+  else std::snprintf(buf, sizeof buf, "%.3g", double(x));
   return buf;
 }
 
@@ -46,24 +44,19 @@ const char* to_string(SelectionRoute r) {
   return "none";
 }
 
-std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool widened,
-                                  uint32_t chosen) const {
+std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool widened, uint32_t chosen) const {
   const Entry& e = entries_[index];
   uint8_t f = failures(e, q, widened);
   std::string suffix = widened ? " (band widened by hysteresis)" : "";
-  if (f & fail_invalid)
-    return invalid_reasons_[index].empty() ? "invalid" : "invalid: " + invalid_reasons_[index];
-  if (f & fail_scheme)
-    return "scheme '" + join(schemes_[index]) + "' not in '" + std::string(q.scheme) + "'";
+  if (f & fail_invalid) return invalid_reasons_[index].empty() ? "invalid" : "invalid: " + invalid_reasons_[index];
+  if (f & fail_scheme) return "scheme '" + join(schemes_[index]) + "' not in '" + std::string(q.scheme) + "'";
   if (f & fail_distance) {
     float lo = widened ? e.dist_min_h : e.dist_min, hi = widened ? e.dist_max_h : e.dist_max;
-    return "outside distance band [" + number(lo) + ", " + number(hi) + ") at " +
-           number(q.distance) + suffix;
+    return "outside distance band [" + number(lo) + ", " + number(hi) + ") at " + number(q.distance) + suffix;
   }
   if (f & fail_screen) {
     float lo = widened ? e.size_min_h : e.size_min, hi = widened ? e.size_max_h : e.size_max;
-    return "outside screen-size band [" + number(lo) + ", " + number(hi) + ") at " +
-           number(q.screen_size) + suffix;
+    return "outside screen-size band [" + number(lo) + ", " + number(hi) + ") at " + number(q.screen_size) + suffix;
   }
   if (f & fail_error) {
     if (!e.error_known && !unmeasured_reasons_[index].empty())
@@ -72,8 +65,7 @@ std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool 
       return "error not measured (no MaxError annotation) under limit " + number(q.max_error) + " LSB";
     return "error " + number(e.error) + " LSB over limit " + number(q.max_error) + " LSB";
   }
-  if (f & fail_cost)
-    return "cost " + millis(cost_ms(e, q)) + " ms over budget " + millis(q.cost_budget_ms) + " ms";
+  if (f & fail_cost) return "cost " + millis(cost_ms(e, q)) + " ms over budget " + millis(q.cost_budget_ms) + " ms";
   if (chosen == kNoIndex) return "passed";
   // It passed every filter: it lost on rank to the chosen technique. Each comparison names
   // whose figure is whose: the chosen technique's first, then this one's.
@@ -95,13 +87,11 @@ std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool 
           versus(number(c.cost_ns_per_vertex) + " ns per vertex", number(e.cost_ns_per_vertex) + " ns per vertex");
   else if (c.error_known != e.error_known)
     why = "error measured: " + theirs + number(c.error) + " LSB, this one's not measured";
-  else if (c.group != e.group)
-    why = "its substitute group is declared first";
+  else if (c.group != e.group) why = "its substitute group is declared first";
   else if (c.error != e.error) why = "lower error: " + versus(number(c.error) + " LSB", number(e.error) + " LSB");
   else if (c.priority != e.priority)
     why = "priority: " + versus(std::to_string(c.priority), std::to_string(e.priority));
-  else
-    why = "declared earlier";
+  else why = "declared earlier";
   return "ranks below '" + names_[chosen] + "' (" + why + ")";
 }
 
@@ -110,8 +100,7 @@ SelectionResult SelectionPlan::explain(const SelectionQuery& q, const SelectionS
   uint32_t last = state && state->plan_key == key_ ? state->last : kNoIndex;
   uint32_t start = kNoIndex;
   result.chosen = choose(q, last, &result.route, &start);
-  if (result.chosen != kNoIndex && result.chosen == last &&
-      failures(entries_[last], q, false) != 0)
+  if (result.chosen != kNoIndex && result.chosen == last && failures(entries_[last], q, false) != 0)
     result.kept_by_hysteresis = true;
   if (result.route == SelectionRoute::fallback_chain) {
     for (uint32_t t = start; t != kNoIndex && result.fallback_path.size() <= entries_.size();

@@ -33,8 +33,7 @@ std::optional<int32_t> AnnotationMap::integer(std::string_view name) const {
   const AnnotationValue* v = find(name);
   if (!v) return std::nullopt;
   if (auto i = std::get_if<int32_t>(v)) return *i;
-  if (auto f = std::get_if<float>(v); f && std::isfinite(*f) && std::floor(*f) == *f &&
-                                        std::fabs(*f) < 2147483648.f)
+  if (auto f = std::get_if<float>(v); f && std::isfinite(*f) && std::floor(*f) == *f && std::fabs(*f) < 2147483648.f)
     return int32_t(*f);
   return std::nullopt;
 }
@@ -76,8 +75,7 @@ size_t validate(std::span<TechniqueCandidate> candidates, const DeviceCaps& caps
   return valid;
 }
 
-std::optional<size_t> find_next_valid(std::span<const TechniqueCandidate> candidates,
-                                      std::optional<size_t> after) {
+std::optional<size_t> find_next_valid(std::span<const TechniqueCandidate> candidates, std::optional<size_t> after) {
   if (after && *after >= candidates.size()) return std::nullopt;
   for (size_t i = after ? *after + 1 : 0; i < candidates.size(); ++i)
     if (candidates[i].valid) return i;

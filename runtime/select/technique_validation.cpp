@@ -146,13 +146,15 @@ class TechniqueValidator {
         bool looks_like_version = profile.size() >= 6 && (profile.starts_with("vs_") || profile.starts_with("ps_"));
         if (!looks_like_version) {
           profile_rejected_ = true;
-          reasons_.add("unsupported-shader-profile", b.range,
-                       std::string(stage_noun(b.stage)) + " assembly has no version token (vs.1.1, ps.1.4) on its first line");
+          reasons_.add(
+              "unsupported-shader-profile", b.range,
+              std::string(stage_noun(b.stage)) + " assembly has no version token (vs.1.1, ps.1.4) on its first line");
           return;
         }
         require_profile(profile, b.range);
         if (b.stage == PassStage::pixel && profile < "ps_1_4") count_texture_registers(b);
-        if (caps_.generation == CapsGeneration::vulkan) note_emulation("emulated: " + version + " assembly translated to HLSL");
+        if (caps_.generation == CapsGeneration::vulkan)
+          note_emulation("emulated: " + version + " assembly translated to HLSL");
         return;
       }
       case ShaderSource::glsl_blocks: {
@@ -201,8 +203,8 @@ class TechniqueValidator {
     if (!caps_.features.fixed_function_stages) {
       // One reason per pass; the pass's other fixed-function states become its notes.
       if (fixed_function_reason_ != kNone) {
-        reasons_.at(fixed_function_reason_).notes.push_back(
-            {s.range.begin, "fixed-function state '" + state_name(s) + "' here too"});
+        reasons_.at(fixed_function_reason_)
+            .notes.push_back({s.range.begin, "fixed-function state '" + state_name(s) + "' here too"});
         return;
       }
       reasons_.add("fixed-function-state", s.range,
@@ -223,15 +225,14 @@ class TechniqueValidator {
                    "'" + state_name(s) + " = DotProduct3' needs dot3 (D3DTOP_DOTPRODUCT3), not supported on " +
                        caps_name(caps_));
     if (op_is("Subtract") && !caps_.features.subtract)
-      reasons_.add("state-needs-feature", s.range,
-                   "'" + state_name(s) + " = Subtract' needs subtract (D3DTOP_SUBTRACT), not supported on " +
-                       caps_name(caps_));
+      reasons_.add(
+          "state-needs-feature", s.range,
+          "'" + state_name(s) + " = Subtract' needs subtract (D3DTOP_SUBTRACT), not supported on " + caps_name(caps_));
     // A blending stage past the device's stages cannot run even when it samples nothing.
     note_texture_stage(s.index, s.range);
   }
 
-  void check_feature_state(const ResolvedState& s, StateField field, const char* feature,
-                           bool CapsFeatures::*member) {
+  void check_feature_state(const ResolvedState& s, StateField field, const char* feature, bool CapsFeatures::*member) {
     if (s.info->field != field || s.kind != StateValueKind::boolean || s.integer == 0) return;
     if (caps_.features.*member) return;
     reasons_.add("state-needs-feature", s.range,
@@ -264,13 +265,14 @@ class TechniqueValidator {
     req.kind = CapsRequirement::Kind::format;
     req.name = vk_format;
     req.usage = "sampled";
-    if (auto why = unmet_reason(caps_, req)) reasons_.add("unsupported-format", fmt->range, "texture '" + p.name + "': " + *why);
+    if (auto why = unmet_reason(caps_, req))
+      reasons_.add("unsupported-format", fmt->range, "texture '" + p.name + "': " + *why);
   }
 
   void check_program(const TechniqueInfo& technique, uint32_t index) {
     const uint32_t t = uint32_t(&technique - model_.techniques.data());
-    detail::PassProgramCheck c = detail::check_pass_program(*options_.programs, t, technique.name, index,
-                                                            technique.passes[index].range, caps_);
+    detail::PassProgramCheck c =
+        detail::check_pass_program(*options_.programs, t, technique.name, index, technique.passes[index].range, caps_);
     for (Diagnostic& d : c.reasons) {
       reasons_.add(d.id, d.range, d.message);
       for (auto& n : d.notes) reasons_.last().notes.push_back(n);
@@ -321,8 +323,7 @@ class TechniqueValidator {
       reasons_.add("too-many-textures", textures_range_, why);
     if (fixed_function_reason_ != kNone) {
       Diagnostic& d = reasons_.at(fixed_function_reason_);
-      if (!d.notes.empty())
-        d.message += "; " + std::to_string(d.notes.size()) + " more in pass '" + pass.name + "'";
+      if (!d.notes.empty()) d.message += "; " + std::to_string(d.notes.size()) + " more in pass '" + pass.name + "'";
     }
     // Limits of a profile the device cannot run at all would only repeat the rejection.
     if (options_.programs && !profile_rejected_) check_program(technique, index);
@@ -375,8 +376,8 @@ class TechniqueValidator {
   const TechniqueValidationOptions& options_;
   Rejections reasons_;
   std::vector<std::string> emulation_;
-  uint32_t textures_ = 0;        // texture stages the current pass uses
-  SourceRange textures_range_;   // the state or shader that uses the last one
+  uint32_t textures_ = 0;          // texture stages the current pass uses
+  SourceRange textures_range_;     // the state or shader that uses the last one
   bool profile_rejected_ = false;  // the current pass has a shader the device cannot run
   static constexpr size_t kNone = size_t(-1);
   size_t fixed_function_reason_ = kNone;  // the current pass's fixed-function reason
@@ -384,8 +385,8 @@ class TechniqueValidator {
 
 }  // namespace
 
-TechniqueValidation validate_technique(const EffectModel& model, const TechniqueInfo& technique,
-                                       const DeviceCaps& caps, const TechniqueValidationOptions& options) {
+TechniqueValidation validate_technique(const EffectModel& model, const TechniqueInfo& technique, const DeviceCaps& caps,
+                                       const TechniqueValidationOptions& options) {
   return TechniqueValidator(model, caps, options).run(technique);
 }
 

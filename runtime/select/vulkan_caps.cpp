@@ -27,37 +27,63 @@ struct CoreFeatureRow {
   const char* name;
   size_t offset;
 };
-#define FX_CORE_FEATURE(n) CoreFeatureRow{#n, offsetof(VkPhysicalDeviceFeatures, n)}
+#define FX_CORE_FEATURE(n) \
+  CoreFeatureRow { #n, offsetof(VkPhysicalDeviceFeatures, n) }
 constexpr CoreFeatureRow kCoreFeatures[] = {
-    FX_CORE_FEATURE(robustBufferAccess), FX_CORE_FEATURE(fullDrawIndexUint32),
-    FX_CORE_FEATURE(imageCubeArray), FX_CORE_FEATURE(independentBlend),
-    FX_CORE_FEATURE(geometryShader), FX_CORE_FEATURE(tessellationShader),
-    FX_CORE_FEATURE(sampleRateShading), FX_CORE_FEATURE(dualSrcBlend), FX_CORE_FEATURE(logicOp),
-    FX_CORE_FEATURE(multiDrawIndirect), FX_CORE_FEATURE(drawIndirectFirstInstance),
-    FX_CORE_FEATURE(depthClamp), FX_CORE_FEATURE(depthBiasClamp),
-    FX_CORE_FEATURE(fillModeNonSolid), FX_CORE_FEATURE(depthBounds), FX_CORE_FEATURE(wideLines),
-    FX_CORE_FEATURE(largePoints), FX_CORE_FEATURE(alphaToOne), FX_CORE_FEATURE(multiViewport),
-    FX_CORE_FEATURE(samplerAnisotropy), FX_CORE_FEATURE(textureCompressionETC2),
-    FX_CORE_FEATURE(textureCompressionASTC_LDR), FX_CORE_FEATURE(textureCompressionBC),
-    FX_CORE_FEATURE(occlusionQueryPrecise), FX_CORE_FEATURE(pipelineStatisticsQuery),
-    FX_CORE_FEATURE(vertexPipelineStoresAndAtomics), FX_CORE_FEATURE(fragmentStoresAndAtomics),
+    FX_CORE_FEATURE(robustBufferAccess),
+    FX_CORE_FEATURE(fullDrawIndexUint32),
+    FX_CORE_FEATURE(imageCubeArray),
+    FX_CORE_FEATURE(independentBlend),
+    FX_CORE_FEATURE(geometryShader),
+    FX_CORE_FEATURE(tessellationShader),
+    FX_CORE_FEATURE(sampleRateShading),
+    FX_CORE_FEATURE(dualSrcBlend),
+    FX_CORE_FEATURE(logicOp),
+    FX_CORE_FEATURE(multiDrawIndirect),
+    FX_CORE_FEATURE(drawIndirectFirstInstance),
+    FX_CORE_FEATURE(depthClamp),
+    FX_CORE_FEATURE(depthBiasClamp),
+    FX_CORE_FEATURE(fillModeNonSolid),
+    FX_CORE_FEATURE(depthBounds),
+    FX_CORE_FEATURE(wideLines),
+    FX_CORE_FEATURE(largePoints),
+    FX_CORE_FEATURE(alphaToOne),
+    FX_CORE_FEATURE(multiViewport),
+    FX_CORE_FEATURE(samplerAnisotropy),
+    FX_CORE_FEATURE(textureCompressionETC2),
+    FX_CORE_FEATURE(textureCompressionASTC_LDR),
+    FX_CORE_FEATURE(textureCompressionBC),
+    FX_CORE_FEATURE(occlusionQueryPrecise),
+    FX_CORE_FEATURE(pipelineStatisticsQuery),
+    FX_CORE_FEATURE(vertexPipelineStoresAndAtomics),
+    FX_CORE_FEATURE(fragmentStoresAndAtomics),
     FX_CORE_FEATURE(shaderTessellationAndGeometryPointSize),
-    FX_CORE_FEATURE(shaderImageGatherExtended), FX_CORE_FEATURE(shaderStorageImageExtendedFormats),
+    FX_CORE_FEATURE(shaderImageGatherExtended),
+    FX_CORE_FEATURE(shaderStorageImageExtendedFormats),
     FX_CORE_FEATURE(shaderStorageImageMultisample),
     FX_CORE_FEATURE(shaderStorageImageReadWithoutFormat),
     FX_CORE_FEATURE(shaderStorageImageWriteWithoutFormat),
     FX_CORE_FEATURE(shaderUniformBufferArrayDynamicIndexing),
     FX_CORE_FEATURE(shaderSampledImageArrayDynamicIndexing),
     FX_CORE_FEATURE(shaderStorageBufferArrayDynamicIndexing),
-    FX_CORE_FEATURE(shaderStorageImageArrayDynamicIndexing), FX_CORE_FEATURE(shaderClipDistance),
-    FX_CORE_FEATURE(shaderCullDistance), FX_CORE_FEATURE(shaderFloat64),
-    FX_CORE_FEATURE(shaderInt64), FX_CORE_FEATURE(shaderInt16),
-    FX_CORE_FEATURE(shaderResourceResidency), FX_CORE_FEATURE(shaderResourceMinLod),
-    FX_CORE_FEATURE(sparseBinding), FX_CORE_FEATURE(sparseResidencyBuffer),
-    FX_CORE_FEATURE(sparseResidencyImage2D), FX_CORE_FEATURE(sparseResidencyImage3D),
-    FX_CORE_FEATURE(sparseResidency2Samples), FX_CORE_FEATURE(sparseResidency4Samples),
-    FX_CORE_FEATURE(sparseResidency8Samples), FX_CORE_FEATURE(sparseResidency16Samples),
-    FX_CORE_FEATURE(sparseResidencyAliased), FX_CORE_FEATURE(variableMultisampleRate),
+    FX_CORE_FEATURE(shaderStorageImageArrayDynamicIndexing),
+    FX_CORE_FEATURE(shaderClipDistance),
+    FX_CORE_FEATURE(shaderCullDistance),
+    FX_CORE_FEATURE(shaderFloat64),
+    FX_CORE_FEATURE(shaderInt64),
+    FX_CORE_FEATURE(shaderInt16),
+    FX_CORE_FEATURE(shaderResourceResidency),
+    FX_CORE_FEATURE(shaderResourceMinLod),
+    FX_CORE_FEATURE(sparseBinding),
+    FX_CORE_FEATURE(sparseResidencyBuffer),
+    FX_CORE_FEATURE(sparseResidencyImage2D),
+    FX_CORE_FEATURE(sparseResidencyImage3D),
+    FX_CORE_FEATURE(sparseResidency2Samples),
+    FX_CORE_FEATURE(sparseResidency4Samples),
+    FX_CORE_FEATURE(sparseResidency8Samples),
+    FX_CORE_FEATURE(sparseResidency16Samples),
+    FX_CORE_FEATURE(sparseResidencyAliased),
+    FX_CORE_FEATURE(variableMultisampleRate),
     FX_CORE_FEATURE(inheritedQueries),
 };
 #undef FX_CORE_FEATURE
@@ -103,26 +129,22 @@ struct FormatBitRow {
   bool FormatSupport::*member;
 };
 constexpr FormatBitRow kFormatBits[] = {
-    {VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT, "VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT",
-     &FormatSupport::sampled},
-    {VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT,
-     "VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT", &FormatSupport::filter_linear},
+    {VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT, "VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT", &FormatSupport::sampled},
+    {VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT, "VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT",
+     &FormatSupport::filter_linear},
     {VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT, "VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT",
      &FormatSupport::color_attachment},
     {VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT, "VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT",
      &FormatSupport::blend},
-    {VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT,
-     "VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT", &FormatSupport::depth_stencil},
-    {VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT, "VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT",
-     &FormatSupport::storage},
+    {VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT, "VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT",
+     &FormatSupport::depth_stencil},
+    {VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT, "VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT", &FormatSupport::storage},
 };
 
 // Vulkan 1.2 / 1.3 features worth recording; read from the VulkanNNFeatures structs.
-constexpr const char* kVulkan12Features[] = {"timelineSemaphore", "scalarBlockLayout",
-                                             "bufferDeviceAddress", "shaderFloat16",
-                                             "descriptorIndexing"};
-constexpr const char* kVulkan13Features[] = {"dynamicRendering", "synchronization2",
-                                             "maintenance4"};
+constexpr const char* kVulkan12Features[] = {"timelineSemaphore", "scalarBlockLayout", "bufferDeviceAddress",
+                                             "shaderFloat16", "descriptorIndexing"};
+constexpr const char* kVulkan13Features[] = {"dynamicRendering", "synchronization2", "maintenance4"};
 
 std::string device_type_name(std::string_view vk_name) {
   constexpr std::string_view prefix = "VK_PHYSICAL_DEVICE_TYPE_";
@@ -148,14 +170,13 @@ DeviceCaps derive_caps(VulkanFacts facts) {
   DeviceCaps caps;
   caps.name = facts.name;
   caps.description = "Vulkan " + std::to_string(VK_API_VERSION_MAJOR(facts.api_version)) + "." +
-                     std::to_string(VK_API_VERSION_MINOR(facts.api_version)) + " " +
-                     facts.device_type + " device";
+                     std::to_string(VK_API_VERSION_MINOR(facts.api_version)) + " " + facts.device_type + " device";
   caps.generation = CapsGeneration::vulkan;
   std::sort(facts.features.begin(), facts.features.end());
   // What glslang's HLSL front end compiles, and shader model 1 assembly, which the legacy
   // layer translates to HLSL (fx/emulation/assembly.h).
-  for (const char* p : {"vs_1_0", "vs_1_1", "ps_1_0", "ps_1_1", "ps_1_2", "ps_1_3", "ps_1_4", "vs_2_0", "ps_2_0", "vs_3_0", "ps_3_0", "vs_4_0", "ps_4_0", "vs_4_1",
-                        "ps_4_1", "vs_5_0", "ps_5_0", "cs_5_0"})
+  for (const char* p : {"vs_1_0", "vs_1_1", "ps_1_0", "ps_1_1", "ps_1_2", "ps_1_3", "ps_1_4", "vs_2_0", "ps_2_0",
+                        "vs_3_0", "ps_3_0", "vs_4_0", "ps_4_0", "vs_4_1", "ps_4_1", "vs_5_0", "ps_5_0", "cs_5_0"})
     caps.shader_profiles.push_back(p);
   if (has(facts.features, "geometryShader"))
     for (const char* p : {"gs_4_0", "gs_4_1", "gs_5_0"}) caps.shader_profiles.push_back(p);
@@ -191,7 +212,7 @@ DeviceCaps derive_caps(VulkanFacts facts) {
   f.separate_alpha_blend = true;  // core: separate colour/alpha blend factors
   // Texture stages (every D3DTOP, DOTPRODUCT3 and SUBTRACT included) are generated shaders.
   f.fixed_function_stages = f.dot3 = f.subtract = true;
-  f.two_sided_stencil = true;     // core: front and back stencil state
+  f.two_sided_stencil = true;  // core: front and back stencil state
   return caps;
 }
 
@@ -210,8 +231,8 @@ uint32_t u32(const nlohmann::json& obj, const char* key) {
   return v < 0 ? 0 : uint32_t(std::min<int64_t>(v, UINT32_MAX));
 }
 
-void read_bool_members(const nlohmann::json& features, const char* struct_name,
-                       std::span<const char* const> names, std::vector<std::string>& out) {
+void read_bool_members(const nlohmann::json& features, const char* struct_name, std::span<const char* const> names,
+                       std::vector<std::string>& out) {
   auto it = features.find(struct_name);
   if (it == features.end() || !it->is_object()) return;
   for (const char* n : names) {
@@ -295,8 +316,7 @@ DeviceCaps caps_from_physical_device(VkPhysicalDevice device) {
   return derive_caps(std::move(facts));
 }
 
-std::optional<DeviceCaps> caps_from_vulkaninfo_json(const nlohmann::json& report,
-                                                    DiagnosticSink& sink) {
+std::optional<DeviceCaps> caps_from_vulkaninfo_json(const nlohmann::json& report, DiagnosticSink& sink) {
   auto missing = [&](const std::string& what) {
     sink.error("caps-vulkaninfo", {}, "vulkaninfo report has no " + what);
   };
@@ -338,8 +358,7 @@ std::optional<DeviceCaps> caps_from_vulkaninfo_json(const nlohmann::json& report
   }
   const nlohmann::json& props = *props_it;
   VulkanFacts facts;
-  if (auto it = props.find("deviceName"); it != props.end() && it->is_string())
-    facts.name = it->get<std::string>();
+  if (auto it = props.find("deviceName"); it != props.end() && it->is_string()) facts.name = it->get<std::string>();
   facts.api_version = u32(props, "apiVersion");
   if (auto it = props.find("deviceType"); it != props.end() && it->is_string())
     facts.device_type = device_type_name(it->get<std::string>());
@@ -361,11 +380,9 @@ std::optional<DeviceCaps> caps_from_vulkaninfo_json(const nlohmann::json& report
   for (const auto& row : kCoreFeatures) core_names.push_back(row.name);
   read_bool_members(features, "VkPhysicalDeviceFeatures", core_names, facts.features);
   if (facts.api_version >= VK_API_VERSION_1_2)
-    read_bool_members(features, "VkPhysicalDeviceVulkan12Features", kVulkan12Features,
-                      facts.features);
+    read_bool_members(features, "VkPhysicalDeviceVulkan12Features", kVulkan12Features, facts.features);
   if (facts.api_version >= VK_API_VERSION_1_3)
-    read_bool_members(features, "VkPhysicalDeviceVulkan13Features", kVulkan13Features,
-                      facts.features);
+    read_bool_members(features, "VkPhysicalDeviceVulkan13Features", kVulkan13Features, facts.features);
 
   for (const auto& [name, version] : section("extensions").items()) facts.extensions.push_back(name);
 

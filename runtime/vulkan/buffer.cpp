@@ -8,8 +8,7 @@
 
 namespace fx::vk {
 
-std::optional<Buffer> Buffer::create(const Context& ctx, const BufferDesc& desc,
-                                     DiagnosticSink& sink) {
+std::optional<Buffer> Buffer::create(const Context& ctx, const BufferDesc& desc, DiagnosticSink& sink) {
   if (desc.size == 0 || desc.usage == 0) {
     sink.error("vk-invalid-buffer", {}, "a buffer needs a non-zero size and usage");
     return std::nullopt;
@@ -22,23 +21,19 @@ std::optional<Buffer> Buffer::create(const Context& ctx, const BufferDesc& desc,
   info.size = desc.size;
   info.usage = desc.usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  if (!check(vkCreateBuffer(b.device_, &info, nullptr, &b.buffer_), sink, "vkCreateBuffer"))
-    return std::nullopt;
+  if (!check(vkCreateBuffer(b.device_, &info, nullptr, &b.buffer_), sink, "vkCreateBuffer")) return std::nullopt;
   VkMemoryRequirements req{};
   vkGetBufferMemoryRequirements(b.device_, b.buffer_, &req);
   auto allocation = allocate_memory(ctx, req, desc.memory, sink);
   if (!allocation) return std::nullopt;
   b.memory_ = allocation->memory;
   b.coherent_ = allocation->flags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  if (!check(vkBindBufferMemory(b.device_, b.buffer_, b.memory_, 0), sink, "vkBindBufferMemory"))
-    return std::nullopt;
+  if (!check(vkBindBufferMemory(b.device_, b.buffer_, b.memory_, 0), sink, "vkBindBufferMemory")) return std::nullopt;
   if (allocation->flags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) {
-    if (!check(vkMapMemory(b.device_, b.memory_, 0, VK_WHOLE_SIZE, 0, &b.mapped_), sink,
-               "vkMapMemory"))
+    if (!check(vkMapMemory(b.device_, b.memory_, 0, VK_WHOLE_SIZE, 0, &b.mapped_), sink, "vkMapMemory"))
       return std::nullopt;
   }
-  if (desc.debug_name)
-    ctx.set_object_name(VK_OBJECT_TYPE_BUFFER, uint64_t(b.buffer_), desc.debug_name);
+  if (desc.debug_name) ctx.set_object_name(VK_OBJECT_TYPE_BUFFER, uint64_t(b.buffer_), desc.debug_name);
   return b;
 }
 
@@ -84,8 +79,8 @@ bool Buffer::read(void* out, VkDeviceSize bytes, VkDeviceSize offset) const {
 
 namespace {
 // Non-coherent ranges must be aligned to the atom size; widen to the whole mapping if needed.
-VkMappedMemoryRange aligned_range(VkDeviceMemory memory, VkDeviceSize offset, VkDeviceSize bytes,
-                                  VkDeviceSize atom, VkDeviceSize size) {
+VkMappedMemoryRange aligned_range(VkDeviceMemory memory, VkDeviceSize offset, VkDeviceSize bytes, VkDeviceSize atom,
+                                  VkDeviceSize size) {
   auto range = structure<VkMappedMemoryRange>(VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE);
   range.memory = memory;
   range.offset = offset / atom * atom;

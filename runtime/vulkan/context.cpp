@@ -6,8 +6,8 @@
 #include <utility>
 
 #include "device_query.h"
-#include "validation_log.h"
 #include "fx/vulkan/vk_check.h"
+#include "validation_log.h"
 
 namespace fx::vk {
 namespace {
@@ -20,9 +20,8 @@ bool has_layer(const char* name) {
   std::vector<VkLayerProperties> layers(count);
   vkEnumerateInstanceLayerProperties(&count, layers.data());
   layers.resize(count);
-  return std::any_of(layers.begin(), layers.end(), [name](const VkLayerProperties& l) {
-    return std::strcmp(l.layerName, name) == 0;
-  });
+  return std::any_of(layers.begin(), layers.end(),
+                     [name](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
 }
 
 bool has_instance_extension(const char* name, const char* layer = nullptr) {
@@ -31,9 +30,8 @@ bool has_instance_extension(const char* name, const char* layer = nullptr) {
   std::vector<VkExtensionProperties> exts(count);
   vkEnumerateInstanceExtensionProperties(layer, &count, exts.data());
   exts.resize(count);
-  return std::any_of(exts.begin(), exts.end(), [name](const VkExtensionProperties& e) {
-    return std::strcmp(e.extensionName, name) == 0;
-  });
+  return std::any_of(exts.begin(), exts.end(),
+                     [name](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
 }  // namespace
@@ -48,8 +46,7 @@ struct ContextBuilder {
     uint32_t version = 0;
     if (vkEnumerateInstanceVersion(&version) != VK_SUCCESS || version < VK_API_VERSION_1_3) {
       sink.error("vk-instance-too-old", {},
-                 "the Vulkan loader supports version " +
-                     std::to_string(VK_API_VERSION_MAJOR(version)) + "." +
+                 "the Vulkan loader supports version " + std::to_string(VK_API_VERSION_MAJOR(version)) + "." +
                      std::to_string(VK_API_VERSION_MINOR(version)) + "; fxkit needs 1.3");
       return false;
     }
@@ -57,9 +54,8 @@ struct ContextBuilder {
     bool validation = false;
     if (options.validation) {
       if (!has_layer(kValidationLayer)) {
-        sink.warning(
-            "vk-validation-unavailable", {},
-            std::string(kValidationLayer) + " is not installed; continuing without validation");
+        sink.warning("vk-validation-unavailable", {},
+                     std::string(kValidationLayer) + " is not installed; continuing without validation");
       } else if (!has_instance_extension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME) &&
                  !has_instance_extension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME, kValidationLayer)) {
         sink.warning("vk-validation-unavailable", {},
@@ -81,8 +77,7 @@ struct ContextBuilder {
     app.pApplicationName = options.application_name.c_str();
     app.pEngineName = "fxkit";
     app.apiVersion = VK_API_VERSION_1_3;
-    VkInstanceCreateInfo info =
-        structure<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
+    VkInstanceCreateInfo info = structure<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
     info.flags = flags;
     info.pApplicationInfo = &app;
     info.enabledLayerCount = uint32_t(layers.size());
@@ -96,8 +91,7 @@ struct ContextBuilder {
       messenger_info = messenger_create_info(ctx.log_.get(), options.validation_info);
       info.pNext = &messenger_info;
     }
-    if (!check(vkCreateInstance(&info, nullptr, &ctx.instance_), sink, "vkCreateInstance"))
-      return false;
+    if (!check(vkCreateInstance(&info, nullptr, &ctx.instance_), sink, "vkCreateInstance")) return false;
     ctx.owned_ = true;
     if (validation) {
       auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
@@ -111,8 +105,7 @@ struct ContextBuilder {
 
   std::optional<DeviceSupport> pick_device(const ContextOptions& options, DiagnosticSink& sink) {
     uint32_t count = 0;
-    if (!check(vkEnumeratePhysicalDevices(ctx.instance_, &count, nullptr), sink,
-               "vkEnumeratePhysicalDevices"))
+    if (!check(vkEnumeratePhysicalDevices(ctx.instance_, &count, nullptr), sink, "vkEnumeratePhysicalDevices"))
       return std::nullopt;
     std::vector<VkPhysicalDevice> devices(count);
     vkEnumeratePhysicalDevices(ctx.instance_, &count, devices.data());
@@ -130,22 +123,19 @@ struct ContextBuilder {
     return std::move(supports[*chosen]);
   }
 
-  bool create_device(const ContextOptions& options, const DeviceSupport& support,
-                     DiagnosticSink& sink) {
+  bool create_device(const ContextOptions& options, const DeviceSupport& support, DiagnosticSink& sink) {
     FeatureChain chain(support);
     for (const std::string& name : options.device_extensions) {
       if (!support.has_extension(name)) {
-        sink.error("vk-extension-missing", {},
-                   "device '" + support.info.name + "' does not support extension " + name);
+        sink.error("vk-extension-missing", {}, "device '" + support.info.name + "' does not support extension " + name);
         return false;
       }
-      bool already = std::any_of(chain.extensions.begin(), chain.extensions.end(),
-                                 [&](const char* e) { return name == e; });
+      bool already =
+          std::any_of(chain.extensions.begin(), chain.extensions.end(), [&](const char* e) { return name == e; });
       if (!already) chain.extensions.push_back(name.c_str());
     }
     float priority = 1.0f;
-    VkDeviceQueueCreateInfo queue =
-        structure<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
+    VkDeviceQueueCreateInfo queue = structure<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
     queue.queueFamilyIndex = support.graphics_family;
     queue.queueCount = 1;
     queue.pQueuePriorities = &priority;
@@ -155,15 +145,13 @@ struct ContextBuilder {
     info.pQueueCreateInfos = &queue;
     info.enabledExtensionCount = uint32_t(chain.extensions.size());
     info.ppEnabledExtensionNames = chain.extensions.data();
-    if (!check(vkCreateDevice(ctx.physical_device_, &info, nullptr, &ctx.device_), sink,
-               "vkCreateDevice"))
+    if (!check(vkCreateDevice(ctx.physical_device_, &info, nullptr, &ctx.device_), sink, "vkCreateDevice"))
       return false;
     ctx.queue_family_ = support.graphics_family;
     vkGetDeviceQueue(ctx.device_, ctx.queue_family_, 0, &ctx.queue_);
     ctx.info_ = support.info;
     ctx.features_ = chain.enabled;
-    ctx.functions_ = load_device_functions(ctx.instance_, ctx.device_, chain.enabled,
-                                           ctx.messenger_ != VK_NULL_HANDLE);
+    ctx.functions_ = load_device_functions(ctx.instance_, ctx.device_, chain.enabled, ctx.messenger_ != VK_NULL_HANDLE);
     vkGetPhysicalDeviceMemoryProperties(ctx.physical_device_, &ctx.memory_);
     return true;
   }
@@ -178,8 +166,8 @@ std::optional<Context> Context::headless(const ContextOptions& options, Diagnost
   return std::move(b.ctx);
 }
 
-Context Context::wrap(VkInstance instance, VkPhysicalDevice physical_device, VkDevice device,
-                      VkQueue queue, uint32_t queue_family, std::optional<DeviceFeatures> enabled) {
+Context Context::wrap(VkInstance instance, VkPhysicalDevice physical_device, VkDevice device, VkQueue queue,
+                      uint32_t queue_family, std::optional<DeviceFeatures> enabled) {
   Context ctx;
   ctx.instance_ = instance;
   ctx.physical_device_ = physical_device;
@@ -253,8 +241,8 @@ bool Context::supports_format(VkFormat format, VkFormatFeatureFlags features) co
 }
 
 VkFormat Context::best_depth_format(bool need_stencil) const {
-  const VkFormat order[] = {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D24_UNORM_S8_UINT,
-                            VK_FORMAT_D32_SFLOAT_S8_UINT, VK_FORMAT_D16_UNORM};
+  const VkFormat order[] = {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT,
+                            VK_FORMAT_D16_UNORM};
   for (VkFormat f : order) {
     bool has_stencil = f == VK_FORMAT_D24_UNORM_S8_UINT || f == VK_FORMAT_D32_SFLOAT_S8_UINT;
     if (need_stencil && !has_stencil) continue;
@@ -280,8 +268,7 @@ void Context::clear_validation_messages() {
 void Context::drain_validation_into(DiagnosticSink& sink) {
   if (!log_) return;
   for (ValidationMessage& m : log_->take())
-    sink.report(m.severity, "vk-validation", {},
-                (m.id_name.empty() ? "" : "[" + m.id_name + "] ") + m.text);
+    sink.report(m.severity, "vk-validation", {}, (m.id_name.empty() ? "" : "[" + m.id_name + "] ") + m.text);
 }
 
 void Context::set_object_name(VkObjectType type, uint64_t handle, const char* name) const {

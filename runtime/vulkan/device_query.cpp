@@ -18,10 +18,9 @@ struct Eds3Field {
   VkBool32 VkPhysicalDeviceExtendedDynamicState3FeaturesEXT::*vk;
   bool DeviceFeatures::Eds3::*ours;
 };
-#define FXKIT_EDS3(vk_name, our_name)                                                  \
-  Eds3Field {                                                                          \
-    &VkPhysicalDeviceExtendedDynamicState3FeaturesEXT::extendedDynamicState3##vk_name, \
-        &DeviceFeatures::Eds3::our_name                                                \
+#define FXKIT_EDS3(vk_name, our_name)                                                                                  \
+  Eds3Field {                                                                                                          \
+    &VkPhysicalDeviceExtendedDynamicState3FeaturesEXT::extendedDynamicState3##vk_name, &DeviceFeatures::Eds3::our_name \
   }
 constexpr Eds3Field kEds3Fields[] = {
     FXKIT_EDS3(TessellationDomainOrigin, tessellation_domain_origin),
@@ -136,11 +135,10 @@ DeviceSupport query_device(VkPhysicalDevice physical_device, uint32_t index) {
   const bool has_eds2 = s.has_extension(kEds2);
   const bool has_eds3 = s.has_extension(kEds3);
 
-  VkPhysicalDeviceVulkan11Properties p11 = structure<VkPhysicalDeviceVulkan11Properties>(
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_PROPERTIES);
-  VkPhysicalDevicePushDescriptorPropertiesKHR push_props =
-      structure<VkPhysicalDevicePushDescriptorPropertiesKHR>(
-          VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PUSH_DESCRIPTOR_PROPERTIES_KHR);
+  VkPhysicalDeviceVulkan11Properties p11 =
+      structure<VkPhysicalDeviceVulkan11Properties>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_PROPERTIES);
+  VkPhysicalDevicePushDescriptorPropertiesKHR push_props = structure<VkPhysicalDevicePushDescriptorPropertiesKHR>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PUSH_DESCRIPTOR_PROPERTIES_KHR);
   VkPhysicalDeviceProperties2 props2 =
       structure<VkPhysicalDeviceProperties2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2);
   if (props.apiVersion >= VK_API_VERSION_1_2) props2.pNext = &p11;  // Vulkan11Properties is 1.2+
@@ -153,16 +151,13 @@ DeviceSupport query_device(VkPhysicalDevice physical_device, uint32_t index) {
     std::copy(std::begin(p11.deviceUUID), std::end(p11.deviceUUID), s.info.uuid.begin());
   if (has_push) s.info.push_descriptor_max = push_props.maxPushDescriptors;
 
-  VkPhysicalDeviceVulkan13Features f13 = structure<VkPhysicalDeviceVulkan13Features>(
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
-  VkPhysicalDeviceExtendedDynamicState2FeaturesEXT f_eds2 =
-      structure<VkPhysicalDeviceExtendedDynamicState2FeaturesEXT>(
-          VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_2_FEATURES_EXT);
-  VkPhysicalDeviceExtendedDynamicState3FeaturesEXT f_eds3 =
-      structure<VkPhysicalDeviceExtendedDynamicState3FeaturesEXT>(
-          VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_3_FEATURES_EXT);
-  VkPhysicalDeviceFeatures2 f2 =
-      structure<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
+  VkPhysicalDeviceVulkan13Features f13 =
+      structure<VkPhysicalDeviceVulkan13Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
+  VkPhysicalDeviceExtendedDynamicState2FeaturesEXT f_eds2 = structure<VkPhysicalDeviceExtendedDynamicState2FeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_2_FEATURES_EXT);
+  VkPhysicalDeviceExtendedDynamicState3FeaturesEXT f_eds3 = structure<VkPhysicalDeviceExtendedDynamicState3FeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_3_FEATURES_EXT);
+  VkPhysicalDeviceFeatures2 f2 = structure<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
   void** tail = &f2.pNext;
   auto link = [&tail](auto& s) {
     *tail = &s;
@@ -236,25 +231,20 @@ FeatureChain::FeatureChain(const DeviceSupport& supported) {
   }
 }
 
-DeviceFunctions load_device_functions(VkInstance instance, VkDevice device, const DeviceFeatures& f,
-                                      bool debug_utils) {
+DeviceFunctions load_device_functions(VkInstance instance, VkDevice device, const DeviceFeatures& f, bool debug_utils) {
   DeviceFunctions fn;
   auto load = [device](auto& slot, const char* name) {
-    slot = reinterpret_cast<std::remove_reference_t<decltype(slot)>>(
-        vkGetDeviceProcAddr(device, name));
+    slot = reinterpret_cast<std::remove_reference_t<decltype(slot)>>(vkGetDeviceProcAddr(device, name));
   };
   if (f.push_descriptor) load(fn.push_descriptor_set, "vkCmdPushDescriptorSetKHR");
   if (f.eds2_logic_op) load(fn.set_logic_op, "vkCmdSetLogicOpEXT");
-  if (f.eds2_patch_control_points)
-    load(fn.set_patch_control_points, "vkCmdSetPatchControlPointsEXT");
+  if (f.eds2_patch_control_points) load(fn.set_patch_control_points, "vkCmdSetPatchControlPointsEXT");
   const auto& e = f.eds3;
   if (e.polygon_mode) load(fn.set_polygon_mode, "vkCmdSetPolygonModeEXT");
   if (e.depth_clamp_enable) load(fn.set_depth_clamp_enable, "vkCmdSetDepthClampEnableEXT");
-  if (e.rasterization_samples)
-    load(fn.set_rasterization_samples, "vkCmdSetRasterizationSamplesEXT");
+  if (e.rasterization_samples) load(fn.set_rasterization_samples, "vkCmdSetRasterizationSamplesEXT");
   if (e.sample_mask) load(fn.set_sample_mask, "vkCmdSetSampleMaskEXT");
-  if (e.alpha_to_coverage_enable)
-    load(fn.set_alpha_to_coverage_enable, "vkCmdSetAlphaToCoverageEnableEXT");
+  if (e.alpha_to_coverage_enable) load(fn.set_alpha_to_coverage_enable, "vkCmdSetAlphaToCoverageEnableEXT");
   if (e.alpha_to_one_enable) load(fn.set_alpha_to_one_enable, "vkCmdSetAlphaToOneEnableEXT");
   if (e.logic_op_enable) load(fn.set_logic_op_enable, "vkCmdSetLogicOpEnableEXT");
   if (e.color_blend_enable) load(fn.set_color_blend_enable, "vkCmdSetColorBlendEnableEXT");
@@ -262,10 +252,8 @@ DeviceFunctions load_device_functions(VkInstance instance, VkDevice device, cons
   if (e.color_write_mask) load(fn.set_color_write_mask, "vkCmdSetColorWriteMaskEXT");
   if (e.depth_clip_enable) load(fn.set_depth_clip_enable, "vkCmdSetDepthClipEnableEXT");
   if (e.provoking_vertex_mode) load(fn.set_provoking_vertex_mode, "vkCmdSetProvokingVertexModeEXT");
-  if (e.line_rasterization_mode)
-    load(fn.set_line_rasterization_mode, "vkCmdSetLineRasterizationModeEXT");
-  if (e.tessellation_domain_origin)
-    load(fn.set_tessellation_domain_origin, "vkCmdSetTessellationDomainOriginEXT");
+  if (e.line_rasterization_mode) load(fn.set_line_rasterization_mode, "vkCmdSetLineRasterizationModeEXT");
+  if (e.tessellation_domain_origin) load(fn.set_tessellation_domain_origin, "vkCmdSetTessellationDomainOriginEXT");
   if (debug_utils && instance)
     fn.set_object_name = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
         vkGetInstanceProcAddr(instance, "vkSetDebugUtilsObjectNameEXT"));
@@ -279,8 +267,8 @@ DeviceFeatures enabled_features(VkPhysicalDevice physical_device, const VkDevice
       if (name == created_with.ppEnabledExtensionNames[i]) return true;
     return false;
   };
-  VkPhysicalDeviceFeatures core = created_with.pEnabledFeatures ? *created_with.pEnabledFeatures
-                                                                : VkPhysicalDeviceFeatures{};
+  VkPhysicalDeviceFeatures core =
+      created_with.pEnabledFeatures ? *created_with.pEnabledFeatures : VkPhysicalDeviceFeatures{};
   // The 1.3 features, gathered from the 1.3 struct or from the structs they were promoted from.
   VkPhysicalDeviceVulkan13Features f13{};
   const VkPhysicalDeviceExtendedDynamicState2FeaturesEXT* eds2 = nullptr;
@@ -298,10 +286,12 @@ DeviceFeatures enabled_features(VkPhysicalDevice physical_device, const VkDevice
         break;
       }
       case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES:
-        f13.dynamicRendering |= reinterpret_cast<const VkPhysicalDeviceDynamicRenderingFeatures*>(next)->dynamicRendering;
+        f13.dynamicRendering |=
+            reinterpret_cast<const VkPhysicalDeviceDynamicRenderingFeatures*>(next)->dynamicRendering;
         break;
       case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SYNCHRONIZATION_2_FEATURES:
-        f13.synchronization2 |= reinterpret_cast<const VkPhysicalDeviceSynchronization2Features*>(next)->synchronization2;
+        f13.synchronization2 |=
+            reinterpret_cast<const VkPhysicalDeviceSynchronization2Features*>(next)->synchronization2;
         break;
       case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_FEATURES:
         f13.maintenance4 |= reinterpret_cast<const VkPhysicalDeviceMaintenance4Features*>(next)->maintenance4;

@@ -29,22 +29,19 @@ struct FeatureChain {
   FeatureChain(const FeatureChain&) = delete;
   FeatureChain& operator=(const FeatureChain&) = delete;
 
-  VkPhysicalDeviceFeatures2 head =
-      structure<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
-  VkPhysicalDeviceVulkan13Features v13 = structure<VkPhysicalDeviceVulkan13Features>(
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
-  VkPhysicalDeviceExtendedDynamicState2FeaturesEXT eds2 =
-      structure<VkPhysicalDeviceExtendedDynamicState2FeaturesEXT>(
-          VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_2_FEATURES_EXT);
-  VkPhysicalDeviceExtendedDynamicState3FeaturesEXT eds3 =
-      structure<VkPhysicalDeviceExtendedDynamicState3FeaturesEXT>(
-          VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_3_FEATURES_EXT);
+  VkPhysicalDeviceFeatures2 head = structure<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
+  VkPhysicalDeviceVulkan13Features v13 =
+      structure<VkPhysicalDeviceVulkan13Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
+  VkPhysicalDeviceExtendedDynamicState2FeaturesEXT eds2 = structure<VkPhysicalDeviceExtendedDynamicState2FeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_2_FEATURES_EXT);
+  VkPhysicalDeviceExtendedDynamicState3FeaturesEXT eds3 = structure<VkPhysicalDeviceExtendedDynamicState3FeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_3_FEATURES_EXT);
   std::vector<const char*> extensions;  // to enable, pointing into the DeviceSupport
   DeviceFeatures enabled;
 };
 
 // Loads the non-core entry points `enabled` makes available.
-DeviceFunctions load_device_functions(VkInstance instance, VkDevice device,
-                                      const DeviceFeatures& enabled, bool debug_utils);
+DeviceFunctions load_device_functions(VkInstance instance, VkDevice device, const DeviceFeatures& enabled,
+                                      bool debug_utils);
 
 }  // namespace fx::vk

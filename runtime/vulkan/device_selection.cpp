@@ -13,22 +13,15 @@ namespace {
 
 int type_rank(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
-      return 4;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
-      return 3;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
-      return 2;
-    case VK_PHYSICAL_DEVICE_TYPE_CPU:
-      return 1;
-    default:
-      return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 1;
+    default: return 0;
   }
 }
 
-bool usable(const DeviceCandidate& c) {
-  return c.has_graphics_queue && c.api_version >= VK_API_VERSION_1_3;
-}
+bool usable(const DeviceCandidate& c) { return c.has_graphics_queue && c.api_version >= VK_API_VERSION_1_3; }
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -43,8 +36,8 @@ std::string describe(const std::vector<DeviceCandidate>& candidates) {
     const DeviceCandidate& c = candidates[i];
     out += "\n  " + std::to_string(i) + ": " + c.name + " (" + to_string(c.type) + ", Vulkan " +
            std::to_string(VK_API_VERSION_MAJOR(c.api_version)) + "." +
-           std::to_string(VK_API_VERSION_MINOR(c.api_version)) +
-           (c.has_graphics_queue ? "" : ", no graphics queue") + ")";
+           std::to_string(VK_API_VERSION_MINOR(c.api_version)) + (c.has_graphics_queue ? "" : ", no graphics queue") +
+           ")";
   }
   return out;
 }
@@ -58,8 +51,8 @@ std::string unusable_reason(const DeviceCandidate& c) {
 
 }  // namespace
 
-std::optional<uint32_t> select_device(const std::vector<DeviceCandidate>& candidates,
-                                      std::string_view request, DiagnosticSink& sink) {
+std::optional<uint32_t> select_device(const std::vector<DeviceCandidate>& candidates, std::string_view request,
+                                      DiagnosticSink& sink) {
   if (!request.empty()) {
     std::optional<uint32_t> chosen;
     uint32_t index = 0;
@@ -72,15 +65,13 @@ std::optional<uint32_t> select_device(const std::vector<DeviceCandidate>& candid
         if (lower(candidates[i].name).find(needle) != std::string::npos) chosen = i;
     }
     if (!chosen) {
-      sink.error(
-          "vk-device-not-found", {},
-          "no Vulkan device matches '" + std::string(request) + "'; " + describe(candidates));
+      sink.error("vk-device-not-found", {},
+                 "no Vulkan device matches '" + std::string(request) + "'; " + describe(candidates));
       return std::nullopt;
     }
     std::string why = unusable_reason(candidates[*chosen]);
     if (!why.empty()) {
-      sink.error("vk-no-suitable-device", {},
-                 "device '" + candidates[*chosen].name + "' was requested but " + why);
+      sink.error("vk-no-suitable-device", {}, "device '" + candidates[*chosen].name + "' was requested but " + why);
       return std::nullopt;
     }
     return chosen;

@@ -9,8 +9,7 @@
 
 namespace fx::vk {
 
-std::optional<FrameResources> FrameResources::create(const Context& ctx,
-                                                     const FrameResourcesDesc& desc,
+std::optional<FrameResources> FrameResources::create(const Context& ctx, const FrameResourcesDesc& desc,
                                                      DiagnosticSink& sink) {
   FrameResources f;
   static std::atomic<uint64_t> next_id{1};
@@ -20,11 +19,10 @@ std::optional<FrameResources> FrameResources::create(const Context& ctx,
   // A power of two per the Vulkan spec; rounded up anyway, reserve_uniform masks with it.
   f.alignment_ = std::bit_ceil(std::max<VkDeviceSize>(1, ctx.info().limits.minUniformBufferOffsetAlignment));
   f.slice_ = (desc.uniform_bytes_per_frame + f.alignment_ - 1) / f.alignment_ * f.alignment_;
-  std::optional<Buffer> ring =
-      Buffer::create(ctx,
-                     {f.slice_ * f.frames_in_flight_, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                      MemoryUsage::upload, "fxkit uniform ring"},
-                     sink);
+  std::optional<Buffer> ring = Buffer::create(
+      ctx,
+      {f.slice_ * f.frames_in_flight_, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUsage::upload, "fxkit uniform ring"},
+      sink);
   if (!ring) return std::nullopt;
   f.ring_ = std::move(*ring);
   f.ring_coherent_ = f.ring_.coherent();
@@ -36,14 +34,12 @@ std::optional<FrameResources> FrameResources::create(const Context& ctx,
       {VK_DESCRIPTOR_TYPE_SAMPLER, desc.descriptors_per_type},
   };
   for (uint32_t i = 0; i < f.frames_in_flight_; ++i) {
-    auto info = structure<VkDescriptorPoolCreateInfo>(
-        VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
+    auto info = structure<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
     info.maxSets = desc.sets_per_frame;
     info.poolSizeCount = uint32_t(std::size(sizes));
     info.pPoolSizes = sizes;
     VkDescriptorPool pool = VK_NULL_HANDLE;
-    if (!check(vkCreateDescriptorPool(ctx.device(), &info, nullptr, &pool), sink,
-               "vkCreateDescriptorPool"))
+    if (!check(vkCreateDescriptorPool(ctx.device(), &info, nullptr, &pool), sink, "vkCreateDescriptorPool"))
       return std::nullopt;
     f.pools_.push_back(pool);
   }
@@ -94,8 +90,7 @@ std::optional<UniformAllocation> FrameResources::upload_uniform(const void* data
 }
 
 VkDescriptorSet FrameResources::allocate_set(VkDescriptorSetLayout layout, DiagnosticSink& sink) {
-  auto info = structure<VkDescriptorSetAllocateInfo>(
-      VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+  auto info = structure<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
   info.descriptorPool = pools_[frame_ % frames_in_flight_];
   info.descriptorSetCount = 1;
   info.pSetLayouts = &layout;

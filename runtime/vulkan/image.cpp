@@ -27,10 +27,8 @@ bool is_depth_format(VkFormat format) {
     case VK_FORMAT_D32_SFLOAT:
     case VK_FORMAT_D16_UNORM_S8_UINT:
     case VK_FORMAT_D24_UNORM_S8_UINT:
-    case VK_FORMAT_D32_SFLOAT_S8_UINT:
-      return true;
-    default:
-      return false;
+    case VK_FORMAT_D32_SFLOAT_S8_UINT: return true;
+    default: return false;
   }
 }
 
@@ -60,12 +58,10 @@ uint32_t format_texel_bytes(VkFormat format) {
   switch (format) {
     case VK_FORMAT_R8_UNORM:
     case VK_FORMAT_R8_SRGB:
-    case VK_FORMAT_S8_UINT:
-      return 1;
+    case VK_FORMAT_S8_UINT: return 1;
     case VK_FORMAT_R8G8_UNORM:
     case VK_FORMAT_R16_SFLOAT:
-    case VK_FORMAT_D16_UNORM:
-      return 2;
+    case VK_FORMAT_D16_UNORM: return 2;
     case VK_FORMAT_R8G8B8A8_UNORM:
     case VK_FORMAT_R8G8B8A8_SRGB:
     case VK_FORMAT_B8G8R8A8_UNORM:
@@ -76,20 +72,15 @@ uint32_t format_texel_bytes(VkFormat format) {
     case VK_FORMAT_B10G11R11_UFLOAT_PACK32:
     case VK_FORMAT_D32_SFLOAT:
     case VK_FORMAT_D24_UNORM_S8_UINT:
-    case VK_FORMAT_X8_D24_UNORM_PACK32:
-      return 4;
+    case VK_FORMAT_X8_D24_UNORM_PACK32: return 4;
     case VK_FORMAT_R16G16B16A16_SFLOAT:
-    case VK_FORMAT_R32G32_SFLOAT:
-      return 8;
-    case VK_FORMAT_R32G32B32A32_SFLOAT:
-      return 16;
-    default:
-      return 0;
+    case VK_FORMAT_R32G32_SFLOAT: return 8;
+    case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
+    default: return 0;
   }
 }
 
-std::optional<GpuImage> GpuImage::create(const Context& ctx, const ImageDesc& requested,
-                                   DiagnosticSink& sink) {
+std::optional<GpuImage> GpuImage::create(const Context& ctx, const ImageDesc& requested, DiagnosticSink& sink) {
   ImageDesc desc = requested;
   const bool cube = desc.kind == ImageKind::cube;
   const bool three_d = desc.kind == ImageKind::image3d;
@@ -98,9 +89,8 @@ std::optional<GpuImage> GpuImage::create(const Context& ctx, const ImageDesc& re
       (!three_d && desc.depth != 1) || (three_d && desc.array_layers != 1) || (one_d && desc.height != 1) ||
       (cube && desc.width != desc.height)) {
     sink.error("vk-invalid-image", {},
-               "invalid image shape " + std::to_string(desc.width) + "x" +
-                   std::to_string(desc.height) + "x" + std::to_string(desc.depth) + ", " +
-                   std::to_string(desc.array_layers) + " layer(s)" +
+               "invalid image shape " + std::to_string(desc.width) + "x" + std::to_string(desc.height) + "x" +
+                   std::to_string(desc.depth) + ", " + std::to_string(desc.array_layers) + " layer(s)" +
                    (cube ? " (cube faces must be square)" : ""));
     return std::nullopt;
   }
@@ -121,26 +111,22 @@ std::optional<GpuImage> GpuImage::create(const Context& ctx, const ImageDesc& re
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
 
   VkImageFormatProperties limits{};
-  VkResult supported =
-      vkGetPhysicalDeviceImageFormatProperties(ctx.physical_device(), info.format, info.imageType,
-                                               info.tiling, info.usage, info.flags, &limits);
-  if (supported != VK_SUCCESS || limits.maxExtent.width < desc.width ||
-      limits.maxExtent.height < desc.height || limits.maxExtent.depth < desc.depth ||
-      limits.maxMipLevels < desc.mip_levels || limits.maxArrayLayers < desc.array_layers ||
-      !(limits.sampleCounts & desc.samples)) {
+  VkResult supported = vkGetPhysicalDeviceImageFormatProperties(ctx.physical_device(), info.format, info.imageType,
+                                                                info.tiling, info.usage, info.flags, &limits);
+  if (supported != VK_SUCCESS || limits.maxExtent.width < desc.width || limits.maxExtent.height < desc.height ||
+      limits.maxExtent.depth < desc.depth || limits.maxMipLevels < desc.mip_levels ||
+      limits.maxArrayLayers < desc.array_layers || !(limits.sampleCounts & desc.samples)) {
     sink.error("vk-format-unsupported", {},
-               "device '" + ctx.info().name + "' cannot create a " + std::to_string(desc.width) +
-                   "x" + std::to_string(desc.height) + "x" + std::to_string(desc.depth) +
-                   " image of format " + std::to_string(int(desc.format)) +
-                   " with the requested usage, mips, layers and samples");
+               "device '" + ctx.info().name + "' cannot create a " + std::to_string(desc.width) + "x" +
+                   std::to_string(desc.height) + "x" + std::to_string(desc.depth) + " image of format " +
+                   std::to_string(int(desc.format)) + " with the requested usage, mips, layers and samples");
     return std::nullopt;
   }
 
   GpuImage img;
   img.device_ = ctx.device();
   img.desc_ = desc;
-  if (!check(vkCreateImage(img.device_, &info, nullptr, &img.image_), sink, "vkCreateImage"))
-    return std::nullopt;
+  if (!check(vkCreateImage(img.device_, &info, nullptr, &img.image_), sink, "vkCreateImage")) return std::nullopt;
   VkMemoryRequirements req{};
   vkGetImageMemoryRequirements(img.device_, img.image_, &req);
   auto allocation = allocate_memory(ctx, req, MemoryUsage::device_local, sink);
@@ -152,20 +138,15 @@ std::optional<GpuImage> GpuImage::create(const Context& ctx, const ImageDesc& re
   auto view = structure<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
   view.image = img.image_;
   const bool array = desc.array_view || desc.array_layers > (cube ? 6u : 1u);
-  if (three_d)
-    view.viewType = VK_IMAGE_VIEW_TYPE_3D;
-  else if (cube)
-    view.viewType = array ? VK_IMAGE_VIEW_TYPE_CUBE_ARRAY : VK_IMAGE_VIEW_TYPE_CUBE;
-  else if (one_d)
-    view.viewType = array ? VK_IMAGE_VIEW_TYPE_1D_ARRAY : VK_IMAGE_VIEW_TYPE_1D;
-  else
-    view.viewType = array ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+  if (three_d) view.viewType = VK_IMAGE_VIEW_TYPE_3D;
+  else if (cube) view.viewType = array ? VK_IMAGE_VIEW_TYPE_CUBE_ARRAY : VK_IMAGE_VIEW_TYPE_CUBE;
+  else if (one_d) view.viewType = array ? VK_IMAGE_VIEW_TYPE_1D_ARRAY : VK_IMAGE_VIEW_TYPE_1D;
+  else view.viewType = array ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
   view.format = desc.format;
   view.subresourceRange = img.full_range();
   if (!check(vkCreateImageView(img.device_, &view, nullptr, &img.view_), sink, "vkCreateImageView"))
     return std::nullopt;
-  if (desc.debug_name)
-    ctx.set_object_name(VK_OBJECT_TYPE_IMAGE, uint64_t(img.image_), desc.debug_name);
+  if (desc.debug_name) ctx.set_object_name(VK_OBJECT_TYPE_IMAGE, uint64_t(img.image_), desc.debug_name);
   return img;
 }
 
@@ -195,9 +176,7 @@ void GpuImage::reset() {
   layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
 }
 
-VkImageSubresourceRange GpuImage::full_range() const {
-  return {aspect(), 0, desc_.mip_levels, 0, desc_.array_layers};
-}
+VkImageSubresourceRange GpuImage::full_range() const { return {aspect(), 0, desc_.mip_levels, 0, desc_.array_layers}; }
 
 void GpuImage::transition(VkCommandBuffer cmd, VkImageLayout to) {
   if (layout_ == to) return;

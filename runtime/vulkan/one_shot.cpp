@@ -12,22 +12,18 @@ std::optional<OneShotCommands> OneShotCommands::create(const Context& ctx, Diagn
   c.device_ = ctx.device();
   c.queue_ = ctx.queue();
   auto pool = structure<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
-  pool.flags =
-      VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   pool.queueFamilyIndex = ctx.queue_family();
   if (!check(vkCreateCommandPool(c.device_, &pool, nullptr, &c.pool_), sink, "vkCreateCommandPool"))
     return std::nullopt;
-  auto alloc =
-      structure<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
+  auto alloc = structure<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
   alloc.commandPool = c.pool_;
   alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   alloc.commandBufferCount = 1;
-  if (!check(vkAllocateCommandBuffers(c.device_, &alloc, &c.cmd_), sink,
-             "vkAllocateCommandBuffers"))
+  if (!check(vkAllocateCommandBuffers(c.device_, &alloc, &c.cmd_), sink, "vkAllocateCommandBuffers"))
     return std::nullopt;
   auto fence = structure<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
-  if (!check(vkCreateFence(c.device_, &fence, nullptr, &c.fence_), sink, "vkCreateFence"))
-    return std::nullopt;
+  if (!check(vkCreateFence(c.device_, &fence, nullptr, &c.fence_), sink, "vkCreateFence")) return std::nullopt;
   return c;
 }
 
@@ -75,8 +71,7 @@ bool OneShotCommands::run(const RecordCommands& record, DiagnosticSink& sink, ui
     vkDeviceWaitIdle(device_);
     vkResetFences(device_, 1, &fence_);
     sink.error("vk-timeout", {},
-               "one-shot submission did not finish within " +
-                   std::to_string(timeout_ns / 1'000'000) + " ms");
+               "one-shot submission did not finish within " + std::to_string(timeout_ns / 1'000'000) + " ms");
     return false;
   }
   if (!check(waited, sink, "vkWaitForFences")) return false;

@@ -30,9 +30,16 @@ DynamicStateSet DynamicStateSet::from_features(const DeviceFeatures& f) {
 }
 
 uint32_t DynamicStateSet::bits() const {
-  const bool flags[] = {eds1, eds2, polygon_mode, depth_clamp, sample_mask,
-                        alpha_to_coverage, color_blend_enable, color_blend_equation,
-                        color_write_mask, patch_control_points};
+  const bool flags[] = {eds1,
+                        eds2,
+                        polygon_mode,
+                        depth_clamp,
+                        sample_mask,
+                        alpha_to_coverage,
+                        color_blend_enable,
+                        color_blend_equation,
+                        color_write_mask,
+                        patch_control_points};
   uint32_t b = 0;
   for (uint32_t i = 0; i < std::size(flags); ++i) b |= uint32_t(flags[i]) << i;
   return b;
@@ -44,13 +51,11 @@ uint32_t DynamicStateSet::dynamic_state_list(VkDynamicState* out, uint32_t, bool
   out[n++] = VK_DYNAMIC_STATE_SCISSOR;
   if (eds1) {
     for (VkDynamicState s :
-         {VK_DYNAMIC_STATE_CULL_MODE, VK_DYNAMIC_STATE_FRONT_FACE,
-          VK_DYNAMIC_STATE_PRIMITIVE_TOPOLOGY, VK_DYNAMIC_STATE_DEPTH_TEST_ENABLE,
-          VK_DYNAMIC_STATE_DEPTH_WRITE_ENABLE, VK_DYNAMIC_STATE_DEPTH_COMPARE_OP,
-          VK_DYNAMIC_STATE_STENCIL_TEST_ENABLE, VK_DYNAMIC_STATE_STENCIL_OP,
-          VK_DYNAMIC_STATE_DEPTH_BIAS, VK_DYNAMIC_STATE_STENCIL_COMPARE_MASK,
-          VK_DYNAMIC_STATE_STENCIL_WRITE_MASK, VK_DYNAMIC_STATE_STENCIL_REFERENCE,
-          VK_DYNAMIC_STATE_BLEND_CONSTANTS})
+         {VK_DYNAMIC_STATE_CULL_MODE, VK_DYNAMIC_STATE_FRONT_FACE, VK_DYNAMIC_STATE_PRIMITIVE_TOPOLOGY,
+          VK_DYNAMIC_STATE_DEPTH_TEST_ENABLE, VK_DYNAMIC_STATE_DEPTH_WRITE_ENABLE, VK_DYNAMIC_STATE_DEPTH_COMPARE_OP,
+          VK_DYNAMIC_STATE_STENCIL_TEST_ENABLE, VK_DYNAMIC_STATE_STENCIL_OP, VK_DYNAMIC_STATE_DEPTH_BIAS,
+          VK_DYNAMIC_STATE_STENCIL_COMPARE_MASK, VK_DYNAMIC_STATE_STENCIL_WRITE_MASK,
+          VK_DYNAMIC_STATE_STENCIL_REFERENCE, VK_DYNAMIC_STATE_BLEND_CONSTANTS})
       out[n++] = s;
   }
   if (eds2) {

@@ -14,8 +14,8 @@ namespace fx::vk {
 namespace {
 
 bool readable_rgba8(VkFormat f) {
-  return f == VK_FORMAT_R8G8B8A8_UNORM || f == VK_FORMAT_R8G8B8A8_SRGB ||
-         f == VK_FORMAT_B8G8R8A8_UNORM || f == VK_FORMAT_B8G8R8A8_SRGB;
+  return f == VK_FORMAT_R8G8B8A8_UNORM || f == VK_FORMAT_R8G8B8A8_SRGB || f == VK_FORMAT_B8G8R8A8_UNORM ||
+         f == VK_FORMAT_B8G8R8A8_SRGB;
 }
 
 bool is_bgra(VkFormat f) { return f == VK_FORMAT_B8G8R8A8_UNORM || f == VK_FORMAT_B8G8R8A8_SRGB; }
@@ -23,19 +23,14 @@ bool is_bgra(VkFormat f) { return f == VK_FORMAT_B8G8R8A8_UNORM || f == VK_FORMA
 VkFormat choose_depth(const Context& ctx, DepthAttachment want) {
   constexpr VkFormatFeatureFlags kDepth = VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT;
   switch (want) {
-    case DepthAttachment::none:
-      return VK_FORMAT_UNDEFINED;
+    case DepthAttachment::none: return VK_FORMAT_UNDEFINED;
     case DepthAttachment::d32:
-      return ctx.supports_format(VK_FORMAT_D32_SFLOAT, kDepth) ? VK_FORMAT_D32_SFLOAT
-                                                               : VK_FORMAT_UNDEFINED;
+      return ctx.supports_format(VK_FORMAT_D32_SFLOAT, kDepth) ? VK_FORMAT_D32_SFLOAT : VK_FORMAT_UNDEFINED;
     case DepthAttachment::d24s8:
-      if (ctx.supports_format(VK_FORMAT_D24_UNORM_S8_UINT, kDepth))
-        return VK_FORMAT_D24_UNORM_S8_UINT;
-      return ctx.supports_format(VK_FORMAT_D32_SFLOAT_S8_UINT, kDepth)
-                 ? VK_FORMAT_D32_SFLOAT_S8_UINT
-                 : VK_FORMAT_UNDEFINED;
-    case DepthAttachment::best:
-      return ctx.best_depth_format();
+      if (ctx.supports_format(VK_FORMAT_D24_UNORM_S8_UINT, kDepth)) return VK_FORMAT_D24_UNORM_S8_UINT;
+      return ctx.supports_format(VK_FORMAT_D32_SFLOAT_S8_UINT, kDepth) ? VK_FORMAT_D32_SFLOAT_S8_UINT
+                                                                       : VK_FORMAT_UNDEFINED;
+    case DepthAttachment::best: return ctx.best_depth_format();
   }
   return VK_FORMAT_UNDEFINED;
 }
@@ -45,8 +40,7 @@ VkFormat choose_depth(const Context& ctx, DepthAttachment want) {
 std::optional<RenderTarget> RenderTarget::create(const Context& ctx, const RenderTargetDesc& desc,
                                                  DiagnosticSink& sink) {
   if (!ctx.features().dynamic_rendering) {
-    sink.error("vk-feature-missing", {},
-               "render targets need the dynamicRendering feature (Vulkan 1.3)");
+    sink.error("vk-feature-missing", {}, "render targets need the dynamicRendering feature (Vulkan 1.3)");
     return std::nullopt;
   }
   if (desc.width == 0 || desc.height == 0) {
@@ -61,8 +55,7 @@ std::optional<RenderTarget> RenderTarget::create(const Context& ctx, const Rende
   color.format = desc.color_format;
   color.width = desc.width;
   color.height = desc.height;
-  color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                desc.extra_color_usage;
+  color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | desc.extra_color_usage;
   color.debug_name = desc.debug_name;
   auto color_image = GpuImage::create(ctx, color, sink);
   if (!color_image) return std::nullopt;
@@ -109,9 +102,7 @@ RenderingFormats RenderTarget::formats() const {
   return f;
 }
 
-VkViewport RenderTarget::viewport() const {
-  return {0.0f, 0.0f, float(width_), float(height_), 0.0f, 1.0f};
-}
+VkViewport RenderTarget::viewport() const { return {0.0f, 0.0f, float(width_), float(height_), 0.0f, 1.0f}; }
 
 VkRect2D RenderTarget::scissor() const { return {{0, 0}, {width_, height_}}; }
 
@@ -157,18 +148,17 @@ void RenderTarget::record_readback(VkCommandBuffer cmd) {
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {width_, height_, 1};
-  vkCmdCopyImageToBuffer(cmd, color_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                         readback_.handle(), 1, &region);
-  memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                 VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+  vkCmdCopyImageToBuffer(cmd, color_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.handle(), 1, &region);
+  memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                 VK_ACCESS_HOST_READ_BIT);
 }
 
 std::optional<fx::Image> RenderTarget::readback_pixels(DiagnosticSink& sink) const {
   VkFormat format = color_.format();
   if (!readable_rgba8(format) || !readback_) {
-    sink.error("vk-readback-format", {},
-               "reading back color format " + std::to_string(int(format)) +
-                   " is not supported (R8G8B8A8 / B8G8R8A8 only)");
+    sink.error(
+        "vk-readback-format", {},
+        "reading back color format " + std::to_string(int(format)) + " is not supported (R8G8B8A8 / B8G8R8A8 only)");
     return std::nullopt;
   }
   fx::Image image = fx::Image::blank(width_, height_, 4);
@@ -177,8 +167,7 @@ std::optional<fx::Image> RenderTarget::readback_pixels(DiagnosticSink& sink) con
     return std::nullopt;
   }
   if (is_bgra(format))
-    for (size_t i = 0; i < image.pixels.size(); i += 4)
-      std::swap(image.pixels[i], image.pixels[i + 2]);
+    for (size_t i = 0; i < image.pixels.size(); i += 4) std::swap(image.pixels[i], image.pixels[i + 2]);
   return image;
 }
 

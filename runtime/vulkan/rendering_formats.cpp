@@ -6,8 +6,7 @@
 namespace fx::vk {
 
 VkPipelineRenderingCreateInfo RenderingFormats::pipeline_info() const& {
-  auto info =
-      structure<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
+  auto info = structure<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
   info.colorAttachmentCount = color_count;
   info.pColorAttachmentFormats = color;
   info.depthAttachmentFormat = depth;

@@ -10,9 +10,7 @@
 
 namespace fx::vk {
 
-size_t SamplerCache::DescHash::operator()(const SamplerKey& d) const {
-  return size_t(XXH3_64bits(&d, sizeof d));
-}
+size_t SamplerCache::DescHash::operator()(const SamplerKey& d) const { return size_t(XXH3_64bits(&d, sizeof d)); }
 
 SamplerCache::~SamplerCache() {
   for (auto& [desc, sampler] : samplers_) vkDestroySampler(ctx_->device(), sampler, nullptr);
@@ -48,8 +46,7 @@ VkSampler SamplerCache::get(const SamplerKey& requested, DiagnosticSink& sink) {
   info.maxLod = d.max_lod;
   info.borderColor = d.border;
   VkSampler sampler = VK_NULL_HANDLE;
-  if (!check(vkCreateSampler(ctx_->device(), &info, nullptr, &sampler), sink, "vkCreateSampler"))
-    return VK_NULL_HANDLE;
+  if (!check(vkCreateSampler(ctx_->device(), &info, nullptr, &sampler), sink, "vkCreateSampler")) return VK_NULL_HANDLE;
   samplers_.emplace(d, sampler);
   return sampler;
 }

@@ -44,9 +44,8 @@ bool check_image(const fx::Image& image, DiagnosticSink& sink) {
 
 }  // namespace
 
-std::optional<Texture> Texture::upload(const Context& ctx, const ImageDesc& desc,
-                                       const uint8_t* bytes, size_t byte_count,
-                                       DiagnosticSink& sink) {
+std::optional<Texture> Texture::upload(const Context& ctx, const ImageDesc& desc, const uint8_t* bytes,
+                                       size_t byte_count, DiagnosticSink& sink) {
   // Depth textures are compared, not filtered: sampling them is enough.
   const bool depth = is_depth_format(desc.format);
   if (!ctx.supports_format(desc.format, VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
@@ -58,21 +57,23 @@ std::optional<Texture> Texture::upload(const Context& ctx, const ImageDesc& desc
   }
   std::optional<GpuImage> image = GpuImage::create(ctx, desc, sink);
   if (!image) return std::nullopt;
-  std::optional<Buffer> staging = Buffer::create(
-      ctx, {byte_count, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::upload, "texture staging"},
-      sink);
+  std::optional<Buffer> staging =
+      Buffer::create(ctx, {byte_count, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::upload, "texture staging"}, sink);
   if (!staging || !staging->write(bytes, byte_count)) return std::nullopt;
   GpuImage& img = *image;
-  const bool ok = submit_and_wait(ctx, [&](VkCommandBuffer cmd) {
-    img.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-    VkBufferImageCopy copy{};
-    copy.imageSubresource = {depth ? VkImageAspectFlags(VK_IMAGE_ASPECT_DEPTH_BIT) : VkImageAspectFlags(VK_IMAGE_ASPECT_COLOR_BIT),
-                             0, 0, img.desc().array_layers};
-    copy.imageExtent = img.extent();
-    vkCmdCopyBufferToImage(cmd, staging->handle(), img.handle(),
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-    img.transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-  }, sink);
+  const bool ok = submit_and_wait(
+      ctx,
+      [&](VkCommandBuffer cmd) {
+        img.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+        VkBufferImageCopy copy{};
+        copy.imageSubresource = {
+            depth ? VkImageAspectFlags(VK_IMAGE_ASPECT_DEPTH_BIT) : VkImageAspectFlags(VK_IMAGE_ASPECT_COLOR_BIT), 0, 0,
+            img.desc().array_layers};
+        copy.imageExtent = img.extent();
+        vkCmdCopyBufferToImage(cmd, staging->handle(), img.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+        img.transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+      },
+      sink);
   if (!ok) return std::nullopt;
   Texture t;
   t.owned_ = std::move(img);
@@ -80,8 +81,8 @@ std::optional<Texture> Texture::upload(const Context& ctx, const ImageDesc& desc
   return t;
 }
 
-std::optional<Texture> Texture::from_image(const Context& ctx, const fx::Image& image,
-                                           ColorSpace space, DiagnosticSink& sink) {
+std::optional<Texture> Texture::from_image(const Context& ctx, const fx::Image& image, ColorSpace space,
+                                           DiagnosticSink& sink) {
   if (!check_image(image, sink)) return std::nullopt;
   ImageDesc desc;
   desc.format = unorm_format(image.channels, space);
@@ -104,8 +105,8 @@ std::optional<Texture> Texture::solid(const Context& ctx, const std::array<uint8
   return upload(ctx, desc, texels.data(), texels.size(), sink);
 }
 
-std::optional<Texture> Texture::solid_multisampled(const Context& ctx, const std::array<uint8_t, 4>& rgba,
-                                                   bool array, DiagnosticSink& sink) {
+std::optional<Texture> Texture::solid_multisampled(const Context& ctx, const std::array<uint8_t, 4>& rgba, bool array,
+                                                   DiagnosticSink& sink) {
   ImageDesc desc;
   desc.array_view = array;
   desc.debug_name = "fxkit multisampled stand-in texture";
@@ -115,28 +116,31 @@ std::optional<Texture> Texture::solid_multisampled(const Context& ctx, const std
     props.sampleCounts = 0;
   // The shader's sample count (Texture2DMS<float4, N>) is not in SPIR-V; any count above one
   // is valid to bind, and a sample index past it reads undefined values, not invalid memory.
-  for (VkSampleCountFlagBits count : {VK_SAMPLE_COUNT_4_BIT, VK_SAMPLE_COUNT_2_BIT, VK_SAMPLE_COUNT_8_BIT,
-                                      VK_SAMPLE_COUNT_16_BIT})
+  for (VkSampleCountFlagBits count :
+       {VK_SAMPLE_COUNT_4_BIT, VK_SAMPLE_COUNT_2_BIT, VK_SAMPLE_COUNT_8_BIT, VK_SAMPLE_COUNT_16_BIT})
     if (props.sampleCounts & count) {
       desc.samples = count;
       break;
     }
   if (desc.samples == VK_SAMPLE_COUNT_1_BIT) {
-    sink.error("vk-format-unsupported", {}, "device '" + ctx.info().name +
-                                                "' cannot sample a multisampled RGBA8 image (Texture2DMS)");
+    sink.error("vk-format-unsupported", {},
+               "device '" + ctx.info().name + "' cannot sample a multisampled RGBA8 image (Texture2DMS)");
     return std::nullopt;
   }
   std::optional<GpuImage> image = GpuImage::create(ctx, desc, sink);
   if (!image) return std::nullopt;
   GpuImage& img = *image;
-  const bool ok = submit_and_wait(ctx, [&](VkCommandBuffer cmd) {
-    img.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-    VkClearColorValue colour{};
-    for (int c = 0; c < 4; ++c) colour.float32[c] = float(rgba[c]) / 255.0f;
-    const VkImageSubresourceRange range = img.full_range();
-    vkCmdClearColorImage(cmd, img.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &colour, 1, &range);
-    img.transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-  }, sink);
+  const bool ok = submit_and_wait(
+      ctx,
+      [&](VkCommandBuffer cmd) {
+        img.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+        VkClearColorValue colour{};
+        for (int c = 0; c < 4; ++c) colour.float32[c] = float(rgba[c]) / 255.0f;
+        const VkImageSubresourceRange range = img.full_range();
+        vkCmdClearColorImage(cmd, img.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &colour, 1, &range);
+        img.transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+      },
+      sink);
   if (!ok) return std::nullopt;
   Texture t;
   t.owned_ = std::move(img);
@@ -166,8 +170,7 @@ std::optional<Texture> Texture::solid_depth(const Context& ctx, float depth, Ima
   return upload(ctx, desc, texels.data(), texels.size(), sink);
 }
 
-std::optional<Texture> Texture::cube_from_images(const Context& ctx,
-                                                 const std::array<const fx::Image*, 6>& faces,
+std::optional<Texture> Texture::cube_from_images(const Context& ctx, const std::array<const fx::Image*, 6>& faces,
                                                  ColorSpace space, DiagnosticSink& sink) {
   for (const fx::Image* f : faces) {
     if (!f || !check_image(*f, sink)) return std::nullopt;
@@ -189,10 +192,9 @@ std::optional<Texture> Texture::cube_from_images(const Context& ctx,
   return upload(ctx, desc, all.data(), all.size(), sink);
 }
 
-std::optional<Texture> Texture::from_table(const Context& ctx, const fx::shading::Table& table,
-                                           DiagnosticSink& sink) {
-  if (table.width < 1 || table.height < 1 || table.depth < 1 || table.channels < 1 ||
-      table.channels > 4 || table.value_count() == 0) {
+std::optional<Texture> Texture::from_table(const Context& ctx, const fx::shading::Table& table, DiagnosticSink& sink) {
+  if (table.width < 1 || table.height < 1 || table.depth < 1 || table.channels < 1 || table.channels > 4 ||
+      table.value_count() == 0) {
     sink.error("vk-texture-invalid", {}, "lookup table has no texels");
     return std::nullopt;
   }
@@ -209,8 +211,8 @@ std::optional<Texture> Texture::from_table(const Context& ctx, const fx::shading
   const uint32_t gpu_channels = table.channels == 3 ? 4 : uint32_t(table.channels);
   const size_t texels = size_t(table.width) * table.height * table.depth;
   const bool unorm = table.format == fx::shading::TableFormat::unorm8;
-  const VkFormat float_formats[] = {VK_FORMAT_R32_SFLOAT, VK_FORMAT_R32G32_SFLOAT,
-                                    VK_FORMAT_R32G32B32A32_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT};
+  const VkFormat float_formats[] = {VK_FORMAT_R32_SFLOAT, VK_FORMAT_R32G32_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT,
+                                    VK_FORMAT_R32G32B32A32_SFLOAT};
   desc.format = unorm ? unorm_format(gpu_channels, ColorSpace::linear) : float_formats[gpu_channels - 1];
   const size_t value_bytes = unorm ? 1 : 4;
   std::vector<uint8_t> bytes(texels * gpu_channels * value_bytes);

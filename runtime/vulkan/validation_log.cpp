@@ -42,18 +42,16 @@ void ValidationLog::clear() {
   errors_ = warnings_ = 0;
 }
 
-VKAPI_ATTR VkBool32 VKAPI_CALL record_validation_message(
-    VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT types,
-    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user_data) {
+VKAPI_ATTR VkBool32 VKAPI_CALL record_validation_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                         VkDebugUtilsMessageTypeFlagsEXT types,
+                                                         const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                         void* user_data) {
   auto* log = static_cast<ValidationLog*>(user_data);
   if (!log || !data) return VK_FALSE;
   ValidationMessage message;
-  if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT)
-    message.severity = Severity::error;
-  else if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT)
-    message.severity = Severity::warning;
-  else
-    message.severity = Severity::note;
+  if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) message.severity = Severity::error;
+  else if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) message.severity = Severity::warning;
+  else message.severity = Severity::note;
   message.id_number = data->messageIdNumber;
   if (data->pMessageIdName) message.id_name = data->pMessageIdName;
   if (data->pMessage) message.text = data->pMessage;
@@ -62,13 +60,12 @@ VKAPI_ATTR VkBool32 VKAPI_CALL record_validation_message(
 }
 
 VkDebugUtilsMessengerCreateInfoEXT messenger_create_info(ValidationLog* log, bool include_info) {
-  VkDebugUtilsMessengerCreateInfoEXT info = structure<VkDebugUtilsMessengerCreateInfoEXT>(
-      VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
-  info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                         VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  VkDebugUtilsMessengerCreateInfoEXT info =
+      structure<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
+  info.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
   if (include_info) info.messageSeverity |= VK_DEBUG_UTILS_MESSAGE_SEVERITY_INFO_BIT_EXT;
-  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                     VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                      VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
   info.pfnUserCallback = record_validation_message;
   info.pUserData = log;

@@ -31,9 +31,10 @@ class ValidationLog {
 };
 
 // PFN_vkDebugUtilsMessengerCallbackEXT; user data is a ValidationLog*.
-VKAPI_ATTR VkBool32 VKAPI_CALL record_validation_message(
-    VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT types,
-    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user_data);
+VKAPI_ATTR VkBool32 VKAPI_CALL record_validation_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                         VkDebugUtilsMessageTypeFlagsEXT types,
+                                                         const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                         void* user_data);
 
 // Create info for a messenger that records warnings and errors (and info if asked).
 VkDebugUtilsMessengerCreateInfoEXT messenger_create_info(ValidationLog* log, bool include_info);

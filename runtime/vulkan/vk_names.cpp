@@ -7,24 +7,18 @@ namespace fx::vk {
 
 const char* to_string(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
-      return "discrete GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
-      return "integrated GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
-      return "virtual GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_CPU:
-      return "CPU";
-    default:
-      return "other";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU";
+    default: return "other";
   }
 }
 
 std::string to_string(VkResult result) {
   switch (result) {
 #define FXKIT_RESULT(name) \
-  case name:               \
-    return #name;
+  case name: return #name;
     FXKIT_RESULT(VK_SUCCESS)
     FXKIT_RESULT(VK_NOT_READY)
     FXKIT_RESULT(VK_TIMEOUT)
@@ -55,8 +49,7 @@ std::string to_string(VkResult result) {
     FXKIT_RESULT(VK_ERROR_OUT_OF_DATE_KHR)
     FXKIT_RESULT(VK_ERROR_VALIDATION_FAILED_EXT)
 #undef FXKIT_RESULT
-    default:
-      return "VkResult(" + std::to_string(int(result)) + ")";
+    default: return "VkResult(" + std::to_string(int(result)) + ")";
   }
 }
 

@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
   }
   const std::vector<uint8_t> rgba = image->read_rgba8();
   const size_t centre = (32 * 64 + 32) * 4;
-  std::printf("%s: technique %s, centre pixel %u %u %u\n", path.c_str(), technique.name().c_str(),
-              rgba[centre], rgba[centre + 1], rgba[centre + 2]);
+  std::printf("%s: technique %s, centre pixel %u %u %u\n", path.c_str(), technique.name().c_str(), rgba[centre],
+              rgba[centre + 1], rgba[centre + 2]);
   return fxkit::has_errors(device->take_validation_messages()) ? 1 : 0;
 }

@@ -21,11 +21,13 @@ std::string lit_effect(const std::string& tint = "0.9, 0.6, 0.3", const std::str
 float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
 float4x4 World : WORLD;
 float3 LightDirection : DIRECTION = {0.3, -0.8, -0.5};
-float4 Tint = {)" + tint + R"(, 1.0};
+float4 Tint = {)" +
+         tint + R"(, 1.0};
 struct V { float4 pos : POSITION; float3 n : TEXCOORD0; };
 V VS(float4 p : POSITION, float3 n : NORMAL) { V o; o.pos = mul(p, WorldViewProjection); o.n = mul(n, (float3x3)World); return o; }
 float4 PS(V i) : COLOR0 { return float4(Tint.rgb * (0.2 + 0.8 * saturate(dot(normalize(i.n), -LightDirection))), 1.0); }
-technique lit < float MaxError = 1.5; string Scheme = "preview"; > { pass p0 { CullMode = )" + cull + R"(; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+technique lit < float MaxError = 1.5; string Scheme = "preview"; > { pass p0 { CullMode = )" +
+         cull + R"(; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
 technique assembly < string Requires = "render_targets>=64"; > { pass p0 { VertexShader = asm { vs.1.1 dcl_position v0 m4x4 oPos, v0, c0 }; } }
 )";
 }
@@ -267,7 +269,8 @@ float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
 float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
 float4 PS(uniform float3 c) : COLOR0 { return float4(c, 1.0); }
 )";
-  const std::string path = write_effect("api_reorder.fx", common + colour("red", "1, 0, 0") + colour("green", "0, 1, 0"));
+  const std::string path =
+      write_effect("api_reorder.fx", common + colour("red", "1, 0, 0") + colour("green", "0, 1, 0"));
   fxkit::Effect effect = r.device->load(path);
   ASSERT_TRUE(effect.ok()) << text(effect.messages());
   effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
@@ -276,7 +279,8 @@ float4 PS(uniform float3 c) : COLOR0 { return float4(c, 1.0); }
   EXPECT_GT(before[1], 200);
   EXPECT_LT(before[0], 50);
   EXPECT_EQ(green.pass_count(), 1u);
-  auto reloaded = rewrite_and_reload(*r.device, path, common + colour("green", "0, 1, 0", 2) + colour("red", "1, 0, 0"));
+  auto reloaded =
+      rewrite_and_reload(*r.device, path, common + colour("green", "0, 1, 0", 2) + colour("red", "1, 0, 0"));
   ASSERT_EQ(reloaded.size(), 1u);
   ASSERT_EQ(reloaded[0].kind, fxkit::Reload::Kind::reloaded) << reloaded[0].str();
   EXPECT_EQ(green.pass_count(), 2u) << "the reloaded technique's passes";
@@ -444,8 +448,10 @@ TEST_F(PublicApiTest, WithoutDynamicStateEveryStateIsInThePipeline) {
     o.dynamic_state = dynamic == 1;
     Rig r = rig(o, 16);
     ASSERT_TRUE(r) << text(r.errors);
-    fxkit::Effect effect = r.device->load(write_effect("api_dynamic.fx", lit_effect("1, 1, 1", "None") +
-        "technique culled { pass p0 { CullMode = CW; ZEnable = false; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n"));
+    fxkit::Effect effect = r.device->load(write_effect(
+        "api_dynamic.fx", lit_effect("1, 1, 1", "None") +
+                              "technique culled { pass p0 { CullMode = CW; ZEnable = false; VertexShader = "
+                              "compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n"));
     ASSERT_TRUE(effect.ok()) << text(effect.messages());
     fxkit::Technique lit = effect.technique("lit"), culled = effect.technique("culled");
     draw(*r.device, lit, *r.mesh, *r.image);
@@ -659,9 +665,10 @@ technique sm2 { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = comp
   // A reload selects again under the same emulated profile: the new ps_1_1 technique,
   // declared first, is what a DX8 card would now draw.
   fxkit::Technique chosen = effect.select(dx8);
-  std::ofstream(path, std::ios::trunc)
-      << common + "technique sm1_first { pass p0 { VertexShader = compile vs_1_1 VS(); "
-                  "PixelShader = compile ps_1_1 Bright(); } }\n" + sm1;
+  std::ofstream(path, std::ios::trunc) << common +
+                                              "technique sm1_first { pass p0 { VertexShader = compile vs_1_1 VS(); "
+                                              "PixelShader = compile ps_1_1 Bright(); } }\n" +
+                                              sm1;
   std::vector<fxkit::Reload> reloads;
   for (auto give_up = std::chrono::steady_clock::now() + fxkit_test::patience();
        reloads.empty() && std::chrono::steady_clock::now() < give_up;) {
@@ -726,7 +733,10 @@ technique one { pass p0 { CullMode = None; VertexShader = compile vs_2_0 VS(); P
   const float* off = m.off;
   fxkit::Technique two = effect.technique("two"), one = effect.technique("one");
   ASSERT_TRUE(effect.set_matrix(wvp, on));
-  struct Obj { fxkit::Technique* t; const float* m; };
+  struct Obj {
+    fxkit::Technique* t;
+    const float* m;
+  };
   auto frame = [&](std::vector<Obj> objs) {
     r.device->begin_frame();
     EXPECT_TRUE(r.device->submit([&](VkCommandBuffer cmd) {

@@ -114,8 +114,7 @@ TEST(CheckCli, IncludeDirsDefinesAndIncludeNotes) {
   std::string main = write_temp("main.fx", "#include \"lights.fxh\"\ntechnique T { pass P {} }\n");
   auto missing = run_fxkit("check " + main, true);
   EXPECT_EQ(missing.status, 1);
-  EXPECT_NE(missing.err.find("lights.fxh:2:1: error: LIGHTS must be defined [error-directive]"),
-            std::string::npos)
+  EXPECT_NE(missing.err.find("lights.fxh:2:1: error: LIGHTS must be defined [error-directive]"), std::string::npos)
       << missing.err;
   EXPECT_NE(missing.err.find("main.fx:1:1: note: included from here"), std::string::npos) << missing.err;
   EXPECT_EQ(run_fxkit("check -D LIGHTS=4 " + main).status, 0);
@@ -151,9 +150,10 @@ TEST(CheckCli, WerrorTurnsWarningsIntoFailures) {
 }
 
 TEST(CheckCli, JsonHasDiagnosticsAndASummary) {
-  std::string path = write_temp("json.fx",
-                                "float4 Diffuse : DIFFUSE < string UIName = \"Diffuse\"; >;\n"
-                                "technique T < string Scheme = \"quality\"; > { pass P0 { ZEnable = Maybe; } pass P1 {} }\n");
+  std::string path =
+      write_temp("json.fx",
+                 "float4 Diffuse : DIFFUSE < string UIName = \"Diffuse\"; >;\n"
+                 "technique T < string Scheme = \"quality\"; > { pass P0 { ZEnable = Maybe; } pass P1 {} }\n");
   auto r = run_fxkit("check --json " + path);
   EXPECT_EQ(r.status, 1);
   nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
@@ -205,8 +205,8 @@ TEST(CheckCli, EverySeedListingChecksClean) {
     EXPECT_EQ(r.err.find("error:"), std::string::npos) << name << "\n" << r.err;
     EXPECT_EQ(r.err.find("shader-not-compiled"), std::string::npos) << name << "\n" << r.err;
   }
-  auto effects = run_fxkit("check -I " + std::string(FXKIT_SOURCE_DIR) + "/effects " + FXKIT_SOURCE_DIR + "/effects",
-                           true);
+  auto effects =
+      run_fxkit("check -I " + std::string(FXKIT_SOURCE_DIR) + "/effects " + FXKIT_SOURCE_DIR + "/effects", true);
   EXPECT_EQ(effects.status, 0) << effects.err;
   EXPECT_NE(effects.err.find(", 0 errors"), std::string::npos) << effects.err;
 }

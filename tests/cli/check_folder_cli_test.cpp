@@ -43,8 +43,8 @@ TEST(CheckFolder, FindsEffectsRecursivelyAndLeavesIncludedOnesToTheirIncluders) 
   // Named explicitly, an included file is a root too; globs pick other names.
   auto named = run_fxkit("check --syntax-only " + f.path() + " " + f.path("b_shared.fx"), true);
   EXPECT_NE(named.err.find("checked 4 files"), std::string::npos) << named.err;
-  auto globs = run_fxkit("check --syntax-only --json --include-glob '*.fx' --exclude-glob 'c_*' --exclude-glob 'sub/*' " +
-                         f.path());
+  auto globs = run_fxkit(
+      "check --syntax-only --json --include-glob '*.fx' --exclude-glob 'c_*' --exclude-glob 'sub/*' " + f.path());
   EXPECT_EQ(globs.status, 0);
   // b_shared.fx's only includer is excluded, so nothing checks it through an includer: a root.
   nlohmann::json picked = nlohmann::json::parse(globs.out);
@@ -57,8 +57,9 @@ TEST(CheckFolder, FindsEffectsRecursivelyAndLeavesIncludedOnesToTheirIncluders) 
 
 TEST(CheckFolder, OutputIsTheSameWhateverTheJobs) {
   ShaderFolder f("jobs");
-  for (int i = 0; i < 12; ++i) f.write("many/e" + std::to_string(i) + ".fx", "technique T { pass P { ZEnable = Bad" +
-                                                                                  std::to_string(i) + "; } }\n");
+  for (int i = 0; i < 12; ++i)
+    f.write("many/e" + std::to_string(i) + ".fx",
+            "technique T { pass P { ZEnable = Bad" + std::to_string(i) + "; } }\n");
   auto one = run_fxkit("check --syntax-only --jobs 1 " + f.path(), true);
   auto four = run_fxkit("check --syntax-only --jobs 4 " + f.path(), true);
   EXPECT_EQ(one.status, 1);
@@ -81,8 +82,8 @@ TEST(CheckFolder, ShardsSplitTheFilesStably) {
     total += count(r.err);
     // The same shard again checks the same files.
     auto files = [&] {
-      auto j = nlohmann::json::parse(run_fxkit(std::string("check --syntax-only --json --shard ") + shard + " " +
-                                               f.path("s")).out);
+      auto j = nlohmann::json::parse(
+          run_fxkit(std::string("check --syntax-only --json --shard ") + shard + " " + f.path("s")).out);
       std::vector<std::string> out;
       for (const auto& e : j["effects"]) out.push_back(e["file"]);
       return out;
@@ -100,7 +101,8 @@ TEST(CheckFolder, ShardsSplitTheFilesStably) {
   EXPECT_EQ(count(run_fxkit("check --syntax-only " + one.path("only/a.fx"), true).err), size_t(-1));
   size_t in_shards = 0;
   for (const char* shard : {"1/2", "2/2"}) {
-    const size_t c = count(run_fxkit(std::string("check --syntax-only --shard ") + shard + " " + one.path("only"), true).err);
+    const size_t c =
+        count(run_fxkit(std::string("check --syntax-only --shard ") + shard + " " + one.path("only"), true).err);
     EXPECT_NE(c, size_t(-1)) << shard << ": no summary";
     if (c != size_t(-1)) in_shards += c;
   }

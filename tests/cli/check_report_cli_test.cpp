@@ -66,8 +66,9 @@ void expect_physical_location(const json& p, const std::string& what) {
   }
   if (!p.contains("region")) return;
   const json& r = p["region"];
-  expect_only(r, {"startLine", "startColumn", "endLine", "endColumn", "charOffset", "charLength", "byteOffset",
-                  "byteLength", "snippet", "message", "sourceLanguage"},
+  expect_only(r,
+              {"startLine", "startColumn", "endLine", "endColumn", "charOffset", "charLength", "byteOffset",
+               "byteLength", "snippet", "message", "sourceLanguage"},
               what + ".region");
   ASSERT_TRUE(r.at("startLine").is_number_integer());
   EXPECT_GE(r["startLine"].get<int>(), 1) << what;
@@ -96,20 +97,65 @@ TEST(CheckReports, SarifOfAFolderWithErrorsInIncludedFilesIsSarif210) {
   ASSERT_TRUE(log["runs"].is_array());
   ASSERT_EQ(log["runs"].size(), 1u);
   const json& run = log["runs"][0];
-  expect_only(run, {"tool", "invocations", "conversion", "language", "versionControlProvenance", "originalUriBaseIds",
-                    "artifacts", "logicalLocations", "graphs", "results", "automationDetails", "runAggregates",
-                    "baselineGuid", "redactionTokens", "defaultEncoding", "defaultSourceLanguage", "newlineSequences",
-                    "columnKind", "externalPropertyFileReferences", "threadFlowLocations", "taxonomies", "addresses",
-                    "translations", "policies", "webRequests", "webResponses", "specialLocations"},
+  expect_only(run,
+              {"tool",
+               "invocations",
+               "conversion",
+               "language",
+               "versionControlProvenance",
+               "originalUriBaseIds",
+               "artifacts",
+               "logicalLocations",
+               "graphs",
+               "results",
+               "automationDetails",
+               "runAggregates",
+               "baselineGuid",
+               "redactionTokens",
+               "defaultEncoding",
+               "defaultSourceLanguage",
+               "newlineSequences",
+               "columnKind",
+               "externalPropertyFileReferences",
+               "threadFlowLocations",
+               "taxonomies",
+               "addresses",
+               "translations",
+               "policies",
+               "webRequests",
+               "webResponses",
+               "specialLocations"},
               "run");
   const json& driver = run.at("tool").at("driver");
   expect_only(run["tool"], {"driver", "extensions"}, "tool");
-  expect_only(driver, {"guid", "name", "organization", "product", "productSuite", "shortDescription", "fullDescription",
-                       "fullName", "version", "semanticVersion", "dottedQuadFileVersion", "releaseDateUtc",
-                       "downloadUri", "informationUri", "globalMessageStrings", "notifications", "rules", "taxa",
-                       "locations", "language", "contents", "isComprehensive", "localizedDataSemanticVersion",
-                       "minimumRequiredLocalizedDataSemanticVersion", "associatedComponent", "translationMetadata",
-                       "supportedTaxonomies"},
+  expect_only(driver,
+              {"guid",
+               "name",
+               "organization",
+               "product",
+               "productSuite",
+               "shortDescription",
+               "fullDescription",
+               "fullName",
+               "version",
+               "semanticVersion",
+               "dottedQuadFileVersion",
+               "releaseDateUtc",
+               "downloadUri",
+               "informationUri",
+               "globalMessageStrings",
+               "notifications",
+               "rules",
+               "taxa",
+               "locations",
+               "language",
+               "contents",
+               "isComprehensive",
+               "localizedDataSemanticVersion",
+               "minimumRequiredLocalizedDataSemanticVersion",
+               "associatedComponent",
+               "translationMetadata",
+               "supportedTaxonomies"},
               "driver");
   EXPECT_EQ(driver.at("name"), "fxkit");
   EXPECT_TRUE(run["columnKind"] == "unicodeCodePoints" || run["columnKind"] == "utf16CodeUnits");
@@ -124,8 +170,9 @@ TEST(CheckReports, SarifOfAFolderWithErrorsInIncludedFilesIsSarif210) {
   const json& rules = driver.at("rules");
   std::set<std::string> rule_ids;
   for (const json& rule : rules) {
-    expect_only(rule, {"id", "deprecatedIds", "guid", "deprecatedGuids", "name", "deprecatedNames", "shortDescription",
-                       "fullDescription", "messageStrings", "defaultConfiguration", "helpUri", "help", "relationships"},
+    expect_only(rule,
+                {"id", "deprecatedIds", "guid", "deprecatedGuids", "name", "deprecatedNames", "shortDescription",
+                 "fullDescription", "messageStrings", "defaultConfiguration", "helpUri", "help", "relationships"},
                 "rule");
     ASSERT_TRUE(rule.at("id").is_string());
     EXPECT_TRUE(rule_ids.insert(rule["id"]).second) << "duplicate rule " << rule["id"];
@@ -136,7 +183,8 @@ TEST(CheckReports, SarifOfAFolderWithErrorsInIncludedFilesIsSarif210) {
       }
     if (rule.contains("defaultConfiguration")) {
       expect_only(rule["defaultConfiguration"], {"enabled", "level", "rank", "parameters"}, "defaultConfiguration");
-      EXPECT_TRUE(std::set<std::string>({"none", "note", "warning", "error"}).count(rule["defaultConfiguration"]["level"]));
+      EXPECT_TRUE(
+          std::set<std::string>({"none", "note", "warning", "error"}).count(rule["defaultConfiguration"]["level"]));
     }
   }
   // The documented ids carry their help text from docs/diagnostics.md.
@@ -149,11 +197,36 @@ TEST(CheckReports, SarifOfAFolderWithErrorsInIncludedFilesIsSarif210) {
   ASSERT_EQ(results.size(), 2u) << results.dump(2);  // the header's error, the duplicate-state warning
   bool header_error = false;
   for (const json& res : results) {
-    expect_only(res, {"guid", "correlationGuid", "ruleId", "ruleIndex", "rule", "taxa", "kind", "level", "message",
-                      "analysisTarget", "locations", "webRequest", "webResponse", "fingerprints",
-                      "partialFingerprints", "codeFlows", "graphs", "graphTraversals", "stacks", "relatedLocations",
-                      "suppressions", "baselineState", "rank", "attachments", "workItemUris", "hostedViewerUri",
-                      "provenance", "fixes", "occurrenceCount"},
+    expect_only(res,
+                {"guid",
+                 "correlationGuid",
+                 "ruleId",
+                 "ruleIndex",
+                 "rule",
+                 "taxa",
+                 "kind",
+                 "level",
+                 "message",
+                 "analysisTarget",
+                 "locations",
+                 "webRequest",
+                 "webResponse",
+                 "fingerprints",
+                 "partialFingerprints",
+                 "codeFlows",
+                 "graphs",
+                 "graphTraversals",
+                 "stacks",
+                 "relatedLocations",
+                 "suppressions",
+                 "baselineState",
+                 "rank",
+                 "attachments",
+                 "workItemUris",
+                 "hostedViewerUri",
+                 "provenance",
+                 "fixes",
+                 "occurrenceCount"},
                 "result");
     expect_message(res.at("message"), "result.message");
     EXPECT_TRUE(std::set<std::string>({"none", "note", "warning", "error"}).count(res.at("level")));
@@ -161,9 +234,8 @@ TEST(CheckReports, SarifOfAFolderWithErrorsInIncludedFilesIsSarif210) {
     ASSERT_LT(res["ruleIndex"].get<size_t>(), rules.size());
     EXPECT_EQ(rules[res["ruleIndex"].get<size_t>()]["id"], res.at("ruleId"));
     ASSERT_EQ(res.at("locations").size(), 1u);
-    expect_only(res["locations"][0], {"id", "physicalLocation", "logicalLocations", "message", "annotations",
-                                      "relationships"},
-                "location");
+    expect_only(res["locations"][0],
+                {"id", "physicalLocation", "logicalLocations", "message", "annotations", "relationships"}, "location");
     expect_physical_location(res["locations"][0].at("physicalLocation"), "result.location");
     std::set<int> related_ids;
     for (const json& rel : res.value("relatedLocations", json::array())) {

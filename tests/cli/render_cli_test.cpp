@@ -82,10 +82,12 @@ float4 VS(float4 p : POSITION) : POSITION {
 }
 float4 PS() : COLOR0 { return float4(1, 0.5, 0, 1); }
 technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
-)", "--verbose --validation");
+)",
+                                 "--verbose --validation");
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* line : {"LocalToModel <- identity object-space transform (stand-in)", "ModelToWorld <- WORLD (by its name)",
-                           "WorldToCamera <- VIEW (by its name)", "CameraToClip <- PROJECTION (by its name)"})
+  for (const char* line :
+       {"LocalToModel <- identity object-space transform (stand-in)", "ModelToWorld <- WORLD (by its name)",
+        "WorldToCamera <- VIEW (by its name)", "CameraToClip <- PROJECTION (by its name)"})
     EXPECT_NE(r.err.find(line), std::string::npos) << line << "\n" << r.err;
   ASSERT_TRUE(image);
   EXPECT_FALSE(image->constant());
@@ -117,10 +119,12 @@ float4 PS(V i, float2 pixel : VPOS) : COLOR0 {
   return float4(sun * edge, lamp, Elapsed > 0 ? 1 : 0, 1);
 }
 technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
-)", "--verbose --validation --size 64x64");
+)",
+                                 "--verbose --validation --size 64x64");
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* line : {"Viewport <- VIEWPORTPIXELSIZE (by its semantic)", "Elapsed <- ELAPSEDTIME (by its semantic)",
-                           "SunDirection <- light direction (stand-in)", "Lamp <- light position (stand-in)"})
+  for (const char* line :
+       {"Viewport <- VIEWPORTPIXELSIZE (by its semantic)", "Elapsed <- ELAPSEDTIME (by its semantic)",
+        "SunDirection <- light direction (stand-in)", "Lamp <- light position (stand-in)"})
     EXPECT_NE(r.err.find(line), std::string::npos) << line << "\n" << r.err;
   ASSERT_TRUE(image);
   uint8_t most_green = 0, most_blue = 0;
@@ -138,7 +142,8 @@ TEST(FxkitRender, AnHlslPixelShaderWithoutAVertexShaderDraws) {
 struct In { float2 uv : TEXCOORD0; float4 colour : COLOR0; };
 float4 PS(In i, uniform float gain) : COLOR0 { return float4(i.uv * gain, i.colour.a, 1); }
 technique T { pass P { PixelShader = compile ps_2_0 PS(1.0); } }
-)", "--validation --size 64x64");
+)",
+                                 "--validation --size 64x64");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("image is constant"), std::string::npos) << r.err;
   ASSERT_TRUE(image);
@@ -160,7 +165,8 @@ technique T { pass P {
   TextureFactor = 0xff80c0ff;
   ColorOp[0] = Modulate; ColorArg1[0] = Diffuse; ColorArg2[0] = TFactor;
 } }
-)", "--validation --size 64x64");
+)",
+                                 "--validation --size 64x64");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("image is constant"), std::string::npos) << r.err;
   ASSERT_TRUE(image);
@@ -177,13 +183,15 @@ float4x4 WorldViewProj;
 float4 VS(float4 p : POSITION, inout float2 uv : TEXCOORD0) : POSITION { return mul(p, WorldViewProj); }
 float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(Samplers[0], uv) * 0.5 + tex2D(Samplers[1], uv) * float4(uv, 0, 0.5); }
 technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
-)", "--validation --size 64x64");
+)",
+                                 "--validation --size 64x64");
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_TRUE(image);
   EXPECT_FALSE(image->constant());
   // What the user is told: the second element draws with the first element's texture.
   EXPECT_NE(r.err.find("'Samplers' is an array of 2; every element samples its first element's texture"),
-            std::string::npos) << r.err;
+            std::string::npos)
+      << r.err;
   EXPECT_NE(r.err.find("[vk-image-array-first]"), std::string::npos) << r.err;
 }
 
@@ -196,7 +204,8 @@ float4 Red() : COLOR0 { return float4(1, 0, 0, 1); }
 float4 Green() : COLOR0 { return float4(0, 1, 0, 1); }
 technique { pass { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Red(); } }
 technique { pass { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Green(); } }
-)", "--technique technique1 --validation --size 16x16");
+)",
+                                 "--technique technique1 --validation --size 16x16");
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_TRUE(image);
   const uint8_t* centre = &image->pixels[(8 * image->width + 8) * 4];
@@ -216,7 +225,8 @@ float4 SpritePixelShader(float4 color : COLOR0, float2 texCoord : TEXCOORD0) : S
   return tex2D(TextureSampler, texCoord) * color;
 }
 technique SpriteBatch { pass { VertexShader = compile vs_2_0 SpriteVertexShader(); PixelShader = compile ps_2_0 SpritePixelShader(); } }
-)", "--validation --size 32x32");
+)",
+                                 "--validation --size 32x32");
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_TRUE(image);
   EXPECT_FALSE(image->constant()) << r.err;
@@ -228,7 +238,9 @@ float4x4 ClipFromObjectXf;
 float4 VS(float4 p : POSITION) : POSITION { return mul(p, ClipFromObjectXf); }
 float4 PS() : COLOR0 { return float4(1, 0, 0, 1); }
 technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
-)", "").run;
+)",
+                                      "")
+                                   .run;
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("'ClipFromObjectXf' is read by the shaders but left zero"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("warning: the image is constant"), std::string::npos) << r.err;

@@ -59,9 +59,8 @@ TEST(ConcurrentCompile, EffectsAndStagesOnOnePoolMatchTheSerialCompile) {
   for (int round = 0; round < 3; ++round) {  // the later rounds are cache hits, read concurrently
     std::vector<size_t> got(effects.size() * 2);
     std::vector<size_t> fails(got.size(), 0);
-    pool.for_each(got.size(), [&](size_t i) {
-      got[i] = compile_effect(effects[i % effects.size()], shared, pool, &fails[i]);
-    });
+    pool.for_each(got.size(),
+                  [&](size_t i) { got[i] = compile_effect(effects[i % effects.size()], shared, pool, &fails[i]); });
     for (size_t i = 0; i < got.size(); ++i) {
       EXPECT_EQ(got[i], expected[i % effects.size()]) << effects[i % effects.size()];
       EXPECT_EQ(fails[i], 0u);

@@ -102,9 +102,15 @@ json load_schema() {
 TEST(SchemaValidator, RejectsWhatTheSchemaForbids) {
   SchemaValidator v(load_schema());
   EXPECT_FALSE(v.validate(json::object()).empty());  // required fields missing
-  json bad = {{"file", 3}, {"ok", true}, {"profile", "fx_9_0"}, {"includes", json::array()},
-              {"parameters", json::array({{{"name", "x"}}})}, {"textures", json::array()},
-              {"samplers", json::array()}, {"techniques", json::array()}, {"diagnostics", json::array()}};
+  json bad = {{"file", 3},
+              {"ok", true},
+              {"profile", "fx_9_0"},
+              {"includes", json::array()},
+              {"parameters", json::array({{{"name", "x"}}})},
+              {"textures", json::array()},
+              {"samplers", json::array()},
+              {"techniques", json::array()},
+              {"diagnostics", json::array()}};
   std::vector<std::string> errors = v.validate(bad);
   std::string all;
   for (const std::string& e : errors) all += e + "\n";
@@ -139,7 +145,8 @@ TEST(FxkitInfo, JsonMatchesTheSchemaAndReflectsTheEffect) {
   };
   const json dir = parameter("g_LightDir"), range = parameter("g_Range"), lights = parameter("g_nNumLights");
   EXPECT_EQ(dir["default"], "{0.577f, (-0.577f), 0.577f}");  // spell_expression brackets unary operands
-  EXPECT_EQ(dir["value"].get<std::vector<double>>(), (std::vector<double>{double(0.577f), double(-0.577f), double(0.577f)}));
+  EXPECT_EQ(dir["value"].get<std::vector<double>>(),
+            (std::vector<double>{double(0.577f), double(-0.577f), double(0.577f)}));
   EXPECT_EQ(range["value"].get<std::vector<double>>(), (std::vector<double>{0, 1, 0, 2}));
   EXPECT_EQ(lights["value"].get<std::vector<double>>(), std::vector<double>{1});
   EXPECT_EQ(lights["value_text"], "1");
@@ -208,8 +215,8 @@ TEST(FxkitInfo, ExitCodes) {
 
 TEST(FxkitCompile, JsonListsEveryShaderAndWritesSpirv) {
   fs::path dir = fs::temp_directory_path() / ("fxkit_cli_out_" + std::to_string(::getpid()));
-  CliRun r = run("compile --json --technique Render10 -o " + dir.string() + " " +
-              data("tests/parser/data/sdk_sample.fx"));
+  CliRun r =
+      run("compile --json --technique Render10 -o " + dir.string() + " " + data("tests/parser/data/sdk_sample.fx"));
   ASSERT_EQ(r.exit_code, 0) << r.out;
   json doc = json::parse(r.out);
   ASSERT_EQ(doc["shaders"].size(), 2u);
@@ -303,11 +310,12 @@ TEST(FxkitCompile, AStageIsNotBlamedForTheOtherStagesError) {
 // it was reported, not once per stage.
 TEST(FxkitCompile, AnErrorInASharedFunctionIsShownOnce) {
   fs::path bad = fs::temp_directory_path() / ("fxkit_cli_shared_" + std::to_string(::getpid()) + ".fx");
-  std::ofstream(bad) << "float3 Helper(float3 v) { return v * undefined_thing; }\n"
-                        "float4 VS(float4 p : POSITION) : POSITION { return Helper(p.xyz).xyzz; }\n"
-                        "float4 PS(float4 c : COLOR0) : COLOR0 { return Helper(c.rgb).xyzz; }\n"
-                        "technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n"
-                        "technique U { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
+  std::ofstream(bad)
+      << "float3 Helper(float3 v) { return v * undefined_thing; }\n"
+         "float4 VS(float4 p : POSITION) : POSITION { return Helper(p.xyz).xyzz; }\n"
+         "float4 PS(float4 c : COLOR0) : COLOR0 { return Helper(c.rgb).xyzz; }\n"
+         "technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n"
+         "technique U { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
   fxkit_test::CliRun r = fxkit_test::run_fxkit("compile " + bad.string(), true);
   EXPECT_EQ(r.status, 1);
   size_t errors = 0;

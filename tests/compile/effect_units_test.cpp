@@ -47,12 +47,12 @@ std::string data(const std::string& rel) { return std::string(FXKIT_SOURCE_DIR) 
 TEST(EffectUnits, LeavesOutEffectSyntaxAndKeepsShaderCode) {
   auto l = load(data("tests/parser/data/sdk_sample.fx"));
   const std::string& code = l->units->hlsl_code();
-  for (const char* gone : {"sampler_state", "technique", "UIName", "texture g_MeshTexture", "BlendState",
-                           "Filter", "Script ="})
+  for (const char* gone :
+       {"sampler_state", "technique", "UIName", "texture g_MeshTexture", "BlendState", "Filter", "Script ="})
     EXPECT_EQ(code.find(gone), std::string::npos) << gone << " in\n" << code;
-  for (const char* kept : {"sampler MeshTextureSampler", "SamplerState g_samLinear : register(s0);",
-                           "VS_OUTPUT RenderSceneVS(", "cbuffer cbPerObject", "Texture2D<float4> g_txDiffuse",
-                           "#line "})
+  for (const char* kept :
+       {"sampler MeshTextureSampler", "SamplerState g_samLinear : register(s0);", "VS_OUTPUT RenderSceneVS(",
+        "cbuffer cbPerObject", "Texture2D<float4> g_txDiffuse", "#line "})
     EXPECT_NE(code.find(kept), std::string::npos) << kept << " missing in\n" << code;
   // Lines are kept: the struct VS_OUTPUT is written on its own .fx line.
   ASSERT_EQ(l->units->passes().size(), 3u);
@@ -151,7 +151,8 @@ TEST(EffectUnits, AShaderArrayIndexedInAPassOffersEveryElement) {
 // struct, out and inout parameters, SV_ forms), each with its own components.
 TEST(EffectUnits, AGeneratedPixelStageReadsWhatTheHlslVertexShaderWrites) {
   fs::path dir = temp_dir("ff_pixel");
-  write(dir / "ff_pixel.fx", R"(struct VsOut { float4 p : SV_Position; float3 c : COLOR0; float2 t : TEXCOORD2; float3 n : NORMAL; };
+  write(dir / "ff_pixel.fx",
+        R"(struct VsOut { float4 p : SV_Position; float3 c : COLOR0; float2 t : TEXCOORD2; float3 n : NORMAL; };
 VsOut Struct(float4 p : POSITION) { VsOut o; o.p = p; o.c = p.xyz; o.t = p.xy; o.n = p.xyz; return o; }
 void Params(inout float4 p : POSITION0, inout float2 uv : TEXCOORD, out float4 s : color1, out float f : FOG) { s = p; f = p.x; }
 float4 Returned(float4 p : POSITION, uniform float k) : POSITION { return p * k; }
@@ -198,7 +199,8 @@ technique T {
     const PassProgram* program = programs.program("T", pass);
     ASSERT_TRUE(program);
     for (const StageProgram& st : program->stages)
-      EXPECT_TRUE(st.shader.ok) << pass << " " << to_string(st.stage) << "\n" << render_text(st.diagnostics, l->sm) << st.unit.source;
+      EXPECT_TRUE(st.shader.ok) << pass << " " << to_string(st.stage) << "\n"
+                                << render_text(st.diagnostics, l->sm) << st.unit.source;
     EXPECT_TRUE(program->ok()) << pass;
   }
 }
@@ -223,9 +225,10 @@ technique11 T {
   const StageUnit* through = l->units->find("T", "Interface")->find(ShaderStage::fragment);
   ASSERT_TRUE(through);
   EXPECT_EQ(through->kind, StageSourceKind::invalid);
-  EXPECT_EQ(through->unsupported,
-            "fx_5_0 dynamic linkage: 'Through' uses interface instance 'g_light', and fxkit does not compile interfaces "
-            "to SPIR-V");
+  EXPECT_EQ(
+      through->unsupported,
+      "fx_5_0 dynamic linkage: 'Through' uses interface instance 'g_light', and fxkit does not compile interfaces "
+      "to SPIR-V");
   ShaderCompiler compiler;
   EffectPrograms programs(*l->units, compiler, l->sm);
   const PassProgram* with_class = programs.program("T", "Class");
@@ -271,7 +274,8 @@ technique11 T {
     const PassProgram* program = programs.program("T", pass);
     ASSERT_TRUE(program) << pass;
     for (const StageProgram& s : program->stages)
-      EXPECT_TRUE(s.shader.ok) << pass << " " << to_string(s.stage) << "\n" << render_text(s.diagnostics, l->sm) << s.unit.source;
+      EXPECT_TRUE(s.shader.ok) << pass << " " << to_string(s.stage) << "\n"
+                               << render_text(s.diagnostics, l->sm) << s.unit.source;
   }
   const std::string direct = programs.program("T", "Class")->find(ShaderStage::fragment)->unit.source;
   EXPECT_EQ(direct.find("Ambient::"), std::string::npos) << direct;
@@ -307,7 +311,8 @@ technique10 T {
   ASSERT_TRUE(reads);
   EXPECT_EQ(reads->kind, StageSourceKind::invalid);
   EXPECT_NE(reads->unsupported.find("'Reads' reads SV_ClipDistance/SV_CullDistance in its input 'input'"),
-            std::string::npos) << reads->unsupported;
+            std::string::npos)
+      << reads->unsupported;
   ShaderCompiler compiler;
   EffectPrograms programs(*l->units, compiler, l->sm);
   EXPECT_TRUE(programs.program("T", "Read")->find(ShaderStage::vertex)->shader.ok);
@@ -616,8 +621,8 @@ TEST(EffectCorpus, EveryShaderCompilesOrSaysWhy) {
     ok += o, total += t;
     if (f.find("/effects/") != std::string::npos) project_ok += o, project_total += t;
   }
-  std::printf("[corpus] %zu file(s): %zu of %zu stages compiled; project effects %zu of %zu\n%s", files.size(),
-              ok, total, project_ok, project_total, report.c_str());
+  std::printf("[corpus] %zu file(s): %zu of %zu stages compiled; project effects %zu of %zu\n%s", files.size(), ok,
+              total, project_ok, project_total, report.c_str());
   EXPECT_GT(total, 10u);
   // The acceptance bar: at least 95% of the project's shader entry points reach SPIR-V.
   if (project_total) {

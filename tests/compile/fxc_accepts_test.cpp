@@ -43,7 +43,8 @@ TEST_P(FxcAccepts, ChecksCleanAndEveryStageCompilesToValidSpirv) {
     EXPECT_FALSE(p.stages.empty()) << pass.technique << "." << pass.pass;
     for (const StageProgram& s : p.stages) {
       ASSERT_TRUE(s.shader.ok) << pass.technique << "." << pass.pass << " " << to_string(s.stage) << "\n"
-                               << render_text(s.diagnostics, sm) << "\n" << s.unit.source;
+                               << render_text(s.diagnostics, sm) << "\n"
+                               << s.unit.source;
       EXPECT_EQ(test::spirv_val(s.shader.spirv), "") << pass.technique << "." << pass.pass;
       // Reflection names what the effect declares, whatever the unit renamed for glslang.
       std::vector<std::string> names;
@@ -73,7 +74,9 @@ TEST_P(FxcAccepts, ChecksCleanAndEveryStageCompilesToValidSpirv) {
 INSTANTIATE_TEST_SUITE_P(Rules, FxcAccepts, ::testing::ValuesIn(rule_files()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            std::string name = fs::path(info.param).stem().string();
-                           std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+                           std::replace_if(
+                               name.begin(), name.end(),
+                               [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
                            return name;
                          });
 

@@ -37,8 +37,7 @@ std::pair<uint32_t, std::string> wood_body() {
 
 TranslationUnit wood_unit(const std::string& body, uint32_t first_line) {
   TranslationUnit u;
-  u.source = std::string(pre_release_hlsl_prelude()) + "#line " + std::to_string(first_line) +
-             " \"wood.fx\"\n" + body;
+  u.source = std::string(pre_release_hlsl_prelude()) + "#line " + std::to_string(first_line) + " \"wood.fx\"\n" + body;
   u.stage = ShaderStage::fragment;
   u.entry_point = "Wood";
   u.profile = "ps_2_0";
@@ -102,10 +101,10 @@ TEST(CompileTiming, FirstLaterAndCachedCompiles) {
   ShaderCompiler unvalidated({.validate = false});
   std::vector<double> fast;
   for (int i = 0; i < 20; ++i) fast.push_back(unvalidated.compile(vs).total_ms + unvalidated.compile(ps).total_ms);
-  std::printf("[timing] D3D9 VS+PS pair: first %.2f ms (includes glslang's built-in tables), later median "
-              "%.3f ms (%.3f ms without SPIR-V validation), cache hit median %.4f ms (%.0fx faster than a compile)\n",
-              first, median_ms(later), median_ms(fast), median_ms(hits),
-              median_ms(later) / std::max(1e-6, median_ms(hits)));
+  std::printf(
+      "[timing] D3D9 VS+PS pair: first %.2f ms (includes glslang's built-in tables), later median "
+      "%.3f ms (%.3f ms without SPIR-V validation), cache hit median %.4f ms (%.0fx faster than a compile)\n",
+      first, median_ms(later), median_ms(fast), median_ms(hits), median_ms(later) / std::max(1e-6, median_ms(hits)));
   EXPECT_LT(median_ms(hits), median_ms(later));
   EXPECT_EQ(cached.glslang_runs(), 2u);
 }

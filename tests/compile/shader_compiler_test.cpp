@@ -140,10 +140,12 @@ TEST(ShaderCompiler, LegalizesOnlyShadersThatKeepSamplersInMemory) {
   // skips it. A sampler passed to a function or copied into a local is kept in Function
   // memory, which Vulkan forbids and the validator does not catch: those are legalized.
   const char* direct = "sampler2D S;\nfloat4 PS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(S, uv); }\n";
-  const char* by_parameter = "sampler2D S;\nfloat4 look(sampler2D t, float2 uv) { return tex2D(t, uv); }\n"
-                             "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return look(S, uv * 2); }\n";
-  const char* local_copy = "sampler2D S;\n"
-                           "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { sampler2D t = S; return tex2D(t, uv); }\n";
+  const char* by_parameter =
+      "sampler2D S;\nfloat4 look(sampler2D t, float2 uv) { return tex2D(t, uv); }\n"
+      "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return look(S, uv * 2); }\n";
+  const char* local_copy =
+      "sampler2D S;\n"
+      "float4 PS(float2 uv : TEXCOORD0) : COLOR0 { sampler2D t = S; return tex2D(t, uv); }\n";
   ShaderCompiler compiler;
   for (auto [src, legalized] : {std::pair{direct, false}, {by_parameter, true}, {local_copy, true}}) {
     CompiledShader ps = compiler.compile(test::unit(src, ShaderStage::fragment, "PS", "ps_3_0"));
@@ -162,8 +164,9 @@ TEST(ShaderCompiler, LegalizesOnlyShadersThatKeepSamplersInMemory) {
 TEST(ShaderCompiler, HlslPackingValidatesForVulkan10) {
   // HLSL packs `float2 b` right after `float a` (offset 4): relaxed block layout, which
   // SPIRV-Tools implies from Vulkan 1.1 on and fxkit's validation must allow for 1.0 too.
-  const char* src = "cbuffer C { float a; float2 b; };\n"
-                    "float4 PS() : SV_Target { return float4(b, a, 1); }\n";
+  const char* src =
+      "cbuffer C { float a; float2 b; };\n"
+      "float4 PS() : SV_Target { return float4(b, a, 1); }\n";
   CompileOptions options;
   options.target = VulkanTarget::vulkan_1_0;
   ShaderCompiler compiler(options);
@@ -175,9 +178,10 @@ TEST(ShaderCompiler, HlslPackingValidatesForVulkan10) {
 TEST(ShaderCompiler, InoutSvPositionIsTheClipPosition) {
   // XNA/FNA/MonoGame sprite shaders transform the position in place; glslang gives the
   // `inout ... : SV_Position` output a location, so nothing reached the rasterizer.
-  const char* src = "float4x4 M;\n"
-                    "void VS(inout float4 color : COLOR0, inout float4 position : SV_Position) {\n"
-                    "  position = mul(position, M);\n}\n";
+  const char* src =
+      "float4x4 M;\n"
+      "void VS(inout float4 color : COLOR0, inout float4 position : SV_Position) {\n"
+      "  position = mul(position, M);\n}\n";
   ShaderCompiler compiler;
   for (const char* profile : {"vs_2_0", "vs_4_0_level_9_1", "vs_5_0"}) {
     CompiledShader vs = compiler.compile(test::unit(src, ShaderStage::vertex, "VS", profile));
@@ -193,11 +197,13 @@ TEST(ShaderCompiler, InoutSvPositionIsTheClipPosition) {
 TEST(ShaderCompiler, D3D9SamplersUnderAnSm4ProfileCompile) {
   // fxc's backwards-compatibility mode: D3D9 sampler syntax with ps_4_0_level_9_1 (the
   // MonoGame templates) or ps_4_0. glslang alone wrote SPIR-V sampling a bare image here.
-  const char* d3d9 = "sampler2D S;\nsamplerCUBE C;\n"
-                     "float4 PS(float2 uv : TEXCOORD0) : SV_Target { return tex2D(S, uv) + texCUBElod(C, uv.xyxy); }\n";
+  const char* d3d9 =
+      "sampler2D S;\nsamplerCUBE C;\n"
+      "float4 PS(float2 uv : TEXCOORD0) : SV_Target { return tex2D(S, uv) + texCUBElod(C, uv.xyxy); }\n";
   // D3D10 syntax with a plain `sampler` must stay separate image and sampler.
-  const char* d3d10 = "Texture2D<float4> T : register(t0);\nsampler TS : register(s0);\n"
-                      "float4 PS(float2 uv : TEXCOORD0) : SV_Target { return T.Sample(TS, uv); }\n";
+  const char* d3d10 =
+      "Texture2D<float4> T : register(t0);\nsampler TS : register(s0);\n"
+      "float4 PS(float2 uv : TEXCOORD0) : SV_Target { return T.Sample(TS, uv); }\n";
   ShaderCompiler compiler;
   for (const char* src : {d3d9, d3d10})
     for (const char* profile : {"ps_4_0_level_9_1", "ps_4_0", "ps_5_0"}) {
@@ -226,8 +232,8 @@ TEST(ShaderCompiler, CompilesFromSeveralThreadsAtOnce) {
   std::vector<std::thread> threads;
   for (size_t i = 0; i < results.size(); ++i)
     threads.emplace_back([&, i] {
-      results[i] = compiler.compile(unit(i % 2 ? test::kD3D9Effect : test::kD3D10Effect,
-                                         ShaderStage::fragment, "PS", i % 2 ? "ps_2_0" : "ps_4_0"));
+      results[i] = compiler.compile(unit(i % 2 ? test::kD3D9Effect : test::kD3D10Effect, ShaderStage::fragment, "PS",
+                                         i % 2 ? "ps_2_0" : "ps_4_0"));
     });
   for (std::thread& t : threads) t.join();
   for (const CompiledShader& r : results) EXPECT_TRUE(r.ok) << r.info_log;

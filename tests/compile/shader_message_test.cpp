@@ -49,9 +49,10 @@ float4 PS() : COLOR0 {
 )";
 
 TEST(ShaderDiagnostics, ErrorsMapToEffectFileLinesGolden) {
-  std::string tu = "#line 2 \"broken.fx\"\nfloat4x4 WorldViewProj;\n#line 6 \"broken.fx\"\n"
-                   "float4 VS(float4 p : POSITION) : POSITION {\n  return mul(p, WorldViewProj);\n}\n\n"
-                   "float4 PS() : COLOR0 {\n  float4 c = undefinedColor;\n  return c\n}\n";
+  std::string tu =
+      "#line 2 \"broken.fx\"\nfloat4x4 WorldViewProj;\n#line 6 \"broken.fx\"\n"
+      "float4 VS(float4 p : POSITION) : POSITION {\n  return mul(p, WorldViewProj);\n}\n\n"
+      "float4 PS() : COLOR0 {\n  float4 c = undefinedColor;\n  return c\n}\n";
   SourceManager sm;
   sm.add_buffer("broken.fx", kEffectFile);
   ShaderCompiler compiler;
@@ -79,8 +80,9 @@ TEST(ShaderDiagnostics, ErrorsMapToEffectFileLinesGolden) {
 }
 
 TEST(ShaderDiagnostics, GlslErrorsNameTheEffectFile) {
-  const char* tu = "#version 450\n#extension GL_GOOGLE_cpp_style_line_directive : require\n"
-                   "#line 40 \"strand.fx\"\nlayout(location = 0) out vec4 o;\nvoid main() { o = vec4(missing); }\n";
+  const char* tu =
+      "#version 450\n#extension GL_GOOGLE_cpp_style_line_directive : require\n"
+      "#line 40 \"strand.fx\"\nlayout(location = 0) out vec4 o;\nvoid main() { o = vec4(missing); }\n";
   ShaderCompiler compiler;
   CompiledShader fs = compiler.compile(test::unit(tu, ShaderStage::fragment, "main", "450", ShaderLanguage::glsl));
   EXPECT_FALSE(fs.ok);
@@ -100,8 +102,9 @@ TEST(ShaderDiagnostics, HlslParseFailureCarriesAColumn) {
 
 TEST(ShaderDiagnostics, UnresolvableLocationsKeepTheGlslangPosition) {
   DiagnosticSink sink;
-  report_messages({{Severity::error, "gone.fx", 4, 2, "'x' : bad", {}}, {Severity::error, "", 0, 0, "Linking: oops", {}}},
-                  {}, sink);
+  report_messages(
+      {{Severity::error, "gone.fx", 4, 2, "'x' : bad", {}}, {Severity::error, "", 0, 0, "Linking: oops", {}}}, {},
+      sink);
   ASSERT_EQ(sink.diagnostics().size(), 2u);
   EXPECT_EQ(sink.diagnostics()[0].message, "gone.fx:4:2: 'x' : bad");
   EXPECT_EQ(sink.diagnostics()[1].id, "shader-link-error");
@@ -109,9 +112,15 @@ TEST(ShaderDiagnostics, UnresolvableLocationsKeepTheGlslangPosition) {
 
 TEST(ShaderDiagnostics, BrokenShadersGiveDiagnosticsNotCrashes) {
   const char* broken[] = {
-      "", "float4 PS() : SV_Target {", "}}}}", "float4 PS() : SV_Target { return tex2D(nothing, 0); }",
-      "#line 1 \"x.fx\"\n#error stop here\n", "struct S { S s; }; float4 PS() : SV_Target { return 0; }",
-      "float4 NotPS() : SV_Target { return 0; }", "#if 1\n", "\xff\xfe\x00garbage",
+      "",
+      "float4 PS() : SV_Target {",
+      "}}}}",
+      "float4 PS() : SV_Target { return tex2D(nothing, 0); }",
+      "#line 1 \"x.fx\"\n#error stop here\n",
+      "struct S { S s; }; float4 PS() : SV_Target { return 0; }",
+      "float4 NotPS() : SV_Target { return 0; }",
+      "#if 1\n",
+      "\xff\xfe\x00garbage",
   };
   ShaderCompiler compiler;
   for (const char* src : broken) {

@@ -11,8 +11,8 @@ namespace fx {
 namespace {
 
 std::filesystem::path fresh_dir(const char* name) {
-  std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                              ("fxkit_cache_" + std::to_string(::getpid()) + "_" + name);
+  std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("fxkit_cache_" + std::to_string(::getpid()) + "_" + name);
   std::filesystem::remove_all(dir);
   return dir;
 }
@@ -115,10 +115,16 @@ TEST(SpirvCache, CorruptOrTruncatedFilesAreRejectedAndReplaced) {
   for (int damage = 0; damage < 3; ++damage) {
     {
       std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
-      if (damage == 0) { f.seekp(0); f.put('X'); }                                  // magic
-      if (damage == 1) { f.seekp(static_cast<std::streamoff>(size) - 3); f.put('!'); }  // payload byte
+      if (damage == 0) {
+        f.seekp(0);
+        f.put('X');
+      }  // magic
+      if (damage == 1) {
+        f.seekp(static_cast<std::streamoff>(size) - 3);
+        f.put('!');
+      }  // payload byte
     }
-    if (damage == 2) std::filesystem::resize_file(file, size / 2);                   // truncated
+    if (damage == 2) std::filesystem::resize_file(file, size / 2);  // truncated
     SpirvCache cache(dir);
     ShaderCompiler compiler({}, &cache);
     CompiledShader r = compiler.compile(u);

@@ -45,7 +45,8 @@ TEST(ExampleBlocks, HeaderExamplesAreIndentedCodeComments) {
   const auto blocks = header_examples(
       "// Text.\n//\n//   auto x = make();   // remark\n//   for (;;)\n//     use(x);\n// More text.\n"
       "// A table:\n//   ps_2_0 | vs.1.1     shader profile\n"
-      "// 1. A list item whose\n//    continuation ends in a semicolon;\n", "x.h");
+      "// 1. A list item whose\n//    continuation ends in a semicolon;\n",
+      "x.h");
   ASSERT_EQ(blocks.size(), 1u);
   EXPECT_EQ(blocks[0].line, 3u);
   EXPECT_EQ(blocks[0].lines, (std::vector<std::string>{"auto x = make();   // remark", "for (;;)", "  use(x);"}));

@@ -12,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include "seed_picks.h"
 #include "fx/diagnostic_render.h"
 #include "fx/frontend.h"
 #include "fx/select/caps_requirement.h"
@@ -20,6 +19,7 @@
 #include "fx/select/selection.h"
 #include "fx/select/technique_candidate.h"
 #include "fx/shading/generator.h"
+#include "seed_picks.h"
 
 namespace {
 
@@ -106,9 +106,8 @@ std::vector<std::string> effect_files() {
 }
 
 TEST(Effects, AllSeedSystemsAreShipped) {
-  std::vector<std::string> want = {"aniso_highlights_glsl.fx", "aniso_lut_ward.fx", "brdf.fx",
-                                   "hemisphere.fx", "per_pixel_lighting.fx", "seeds/wood_seed.fx",
-                                   "strand_aniso.fx", "wood.fx"};
+  std::vector<std::string> want = {"aniso_highlights_glsl.fx", "aniso_lut_ward.fx",  "brdf.fx",         "hemisphere.fx",
+                                   "per_pixel_lighting.fx",    "seeds/wood_seed.fx", "strand_aniso.fx", "wood.fx"};
   EXPECT_EQ(effect_files(), want);
 }
 
@@ -167,7 +166,8 @@ TEST(Effects, GeneratedTexturesNameKnownGeneratorsWithValidParameters) {
         auto value = a.value ? literal(*a.value) : std::nullopt;
         if (!value) continue;
         if (auto* s = std::get_if<std::string>(&*value)) {
-          if (a.name == "Generator") generator = *s; else params.set(a.name, *s);
+          if (a.name == "Generator") generator = *s;
+          else params.set(a.name, *s);
         } else if (auto* i = std::get_if<int32_t>(&*value)) {
           params.set(a.name, double(*i));
         } else if (auto* f = std::get_if<float>(&*value)) {

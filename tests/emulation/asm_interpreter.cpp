@@ -22,11 +22,11 @@ struct Interpreter {
   AsmMachine& m;
   const AsmProgram& p;
   std::array<Vec4, 12> r{};
-  std::array<Vec4, 8> t{};        // ps.1.0-1.3 texture registers
+  std::array<Vec4, 8> t{};  // ps.1.0-1.3 texture registers
   std::array<Vec4, 8> out_t{};
   Vec4 a0{}, pos{0, 0, 0, 1}, fog{}, psize{};
   std::array<Vec4, 2> od{};
-  Vec4 matrix_rows{};             // texm3x2pad/texm3x3pad dot products
+  Vec4 matrix_rows{};  // texm3x2pad/texm3x3pad dot products
   uint32_t pad = 0;
 
   static double depth(double z, double w) { return w == 0 ? 1.0 : std::clamp(z / w, 0.0, 1.0); }
@@ -39,7 +39,9 @@ struct Interpreter {
     const double range = ps14() ? 8.0 : 1.0;
     return std::clamp(std::floor(x * 255.0 + 0.5) / 255.0, -range, range);
   }
-  Vec4 quantize(const Vec4& x) const { return each(x, [&](double c, int) { return quantize(c); }); }
+  Vec4 quantize(const Vec4& x) const {
+    return each(x, [&](double c, int) { return quantize(c); });
+  }
 
   Vec4 reg(RegisterFile f, uint32_t i) const {
     switch (f) {
@@ -115,9 +117,18 @@ struct Interpreter {
     const uint32_t n = ins.dest.index;
     produced = 0xF;
     if (op == "mov") return s(0);
-    if (op == "add") { Vec4 a = s(0), b = s(1); return each(a, [&](double x, int k) { return x + b[k]; }); }
-    if (op == "sub") { Vec4 a = s(0), b = s(1); return each(a, [&](double x, int k) { return x - b[k]; }); }
-    if (op == "mul") { Vec4 a = s(0), b = s(1); return each(a, [&](double x, int k) { return x * b[k]; }); }
+    if (op == "add") {
+      Vec4 a = s(0), b = s(1);
+      return each(a, [&](double x, int k) { return x + b[k]; });
+    }
+    if (op == "sub") {
+      Vec4 a = s(0), b = s(1);
+      return each(a, [&](double x, int k) { return x - b[k]; });
+    }
+    if (op == "mul") {
+      Vec4 a = s(0), b = s(1);
+      return each(a, [&](double x, int k) { return x * b[k]; });
+    }
     if (op == "mad") {
       Vec4 a = s(0), b = s(1), c = s(2);
       return each(a, [&](double x, int k) { return x * b[k] + c[k]; });
@@ -136,10 +147,22 @@ struct Interpreter {
       Vec4 a = s(0), b = s(1), c = s(2);
       return each(a, [&](double x, int k) { return x >= 0.0 ? b[k] : c[k]; });
     }
-    if (op == "min") { Vec4 a = s(0), b = s(1); return each(a, [&](double x, int k) { return std::min(x, b[k]); }); }
-    if (op == "max") { Vec4 a = s(0), b = s(1); return each(a, [&](double x, int k) { return std::max(x, b[k]); }); }
-    if (op == "slt") { Vec4 a = s(0), b = s(1); return each(a, [&](double x, int k) { return x < b[k] ? 1.0 : 0.0; }); }
-    if (op == "sge") { Vec4 a = s(0), b = s(1); return each(a, [&](double x, int k) { return x >= b[k] ? 1.0 : 0.0; }); }
+    if (op == "min") {
+      Vec4 a = s(0), b = s(1);
+      return each(a, [&](double x, int k) { return std::min(x, b[k]); });
+    }
+    if (op == "max") {
+      Vec4 a = s(0), b = s(1);
+      return each(a, [&](double x, int k) { return std::max(x, b[k]); });
+    }
+    if (op == "slt") {
+      Vec4 a = s(0), b = s(1);
+      return each(a, [&](double x, int k) { return x < b[k] ? 1.0 : 0.0; });
+    }
+    if (op == "sge") {
+      Vec4 a = s(0), b = s(1);
+      return each(a, [&](double x, int k) { return x >= b[k] ? 1.0 : 0.0; });
+    }
     if (op == "frc") return each(s(0), [](double x, int) { return x - std::floor(x); });
     if (op == "rcp") return splat(1.0 / scalar(ins.sources[0]));
     if (op == "rsq") return splat(1.0 / std::sqrt(std::abs(scalar(ins.sources[0]))));
@@ -158,7 +181,10 @@ struct Interpreter {
       double spec = a[0] > 0 && a[1] > 0 ? std::pow(a[1], std::clamp(a[3], -128.0, 128.0)) : 0.0;
       return {1.0, std::max(a[0], 0.0), spec, 1.0};
     }
-    if (op == "dst") { Vec4 a = s(0), b = s(1); return {1.0, a[1] * b[1], a[2], b[3]}; }
+    if (op == "dst") {
+      Vec4 a = s(0), b = s(1);
+      return {1.0, a[1] * b[1], a[2], b[3]};
+    }
     if (op.size() == 4 && op[0] == 'm' && op[2] == 'x') {
       const int width = op[1] - '0', rows = op[3] - '0';
       Vec4 a = s(0), out{};
@@ -183,7 +209,8 @@ struct Interpreter {
       return op == "texld" ? m.sample(n, c) : Vec4{c[0], c[1], c[2], 1.0};
     }
     if (op == "tex") return m.sample(n, tc);
-    if (op == "texcoord") return {std::clamp(tc[0], 0.0, 1.0), std::clamp(tc[1], 0.0, 1.0), std::clamp(tc[2], 0.0, 1.0), 1.0};
+    if (op == "texcoord")
+      return {std::clamp(tc[0], 0.0, 1.0), std::clamp(tc[1], 0.0, 1.0), std::clamp(tc[2], 0.0, 1.0), 1.0};
     if (op == "texbem" || op == "texbeml") {
       Vec4 src = s(0), o = bump_offset(n, src);
       Vec4 v = m.sample(n, {tc[0] + o[0], tc[1] + o[1], 0, 1});
@@ -193,9 +220,18 @@ struct Interpreter {
       }
       return v;
     }
-    if (op == "texreg2ar") { Vec4 a = s(0); return m.sample(n, {a[3], a[0], 0, 1}); }
-    if (op == "texreg2gb") { Vec4 a = s(0); return m.sample(n, {a[1], a[2], 0, 1}); }
-    if (op == "texreg2rgb") { Vec4 a = s(0); return m.sample(n, {a[0], a[1], a[2], 1}); }
+    if (op == "texreg2ar") {
+      Vec4 a = s(0);
+      return m.sample(n, {a[3], a[0], 0, 1});
+    }
+    if (op == "texreg2gb") {
+      Vec4 a = s(0);
+      return m.sample(n, {a[1], a[2], 0, 1});
+    }
+    if (op == "texreg2rgb") {
+      Vec4 a = s(0);
+      return m.sample(n, {a[0], a[1], a[2], 1});
+    }
     if (op == "texdp3") return splat(dot3(tc, s(0)));
     if (op == "texdp3tex") return m.sample(n, {dot3(tc, s(0)), 0, 0, 1});
     if (op == "texdepth") {  // r5.r / r5.g; r5 unchanged

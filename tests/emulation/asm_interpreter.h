@@ -15,9 +15,9 @@ namespace fx::emulation::testing {
 using Vec4 = std::array<double, 4>;
 
 struct AsmMachine {
-  std::array<Vec4, 96> c{};          // constant registers (def overrides)
-  std::array<Vec4, 16> v{};          // vertex inputs, or pixel colour inputs v0/v1
-  std::array<Vec4, 8> texcoord{};    // pixel shaders: interpolated TEXCOORDn
+  std::array<Vec4, 96> c{};        // constant registers (def overrides)
+  std::array<Vec4, 16> v{};        // vertex inputs, or pixel colour inputs v0/v1
+  std::array<Vec4, 8> texcoord{};  // pixel shaders: interpolated TEXCOORDn
   std::array<BumpEnvironment, 8> bump{};
   // Texture stage `stage` sampled at `coords` (xyz; 2D textures read xy).
   std::function<Vec4(uint32_t stage, const Vec4& coords)> sample;

@@ -41,9 +41,9 @@ struct Affine {
 
 struct Case {
   const char* name;
-  const char* pixel;               // the asm block's text
-  std::vector<Affine> texcoords;   // TEXCOORD0, 1, ... the vertex shader writes
-  Vec4 c0, c1;                     // PixelShaderConstant[0..1]
+  const char* pixel;              // the asm block's text
+  std::vector<Affine> texcoords;  // TEXCOORD0, 1, ... the vertex shader writes
+  Vec4 c0, c1;                    // PixelShaderConstant[0..1]
 };
 
 const std::vector<Case>& cases() {
@@ -101,9 +101,11 @@ TEST_F(AssemblyDepthTest, DepthInstructionsWriteTheInterpretersDepth) {
   double worst = 0;
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);
-    const std::string effect = "float4 C0 = " + float4(c.c0) + ";\nfloat4 C1 = " + float4(c.c1) +
-                               ";\ntechnique t { pass p {\n  PixelShaderConstant[0] = <C0>;\n  PixelShaderConstant[1] = <C1>;\n"
-                               "  PixelShader = asm {\n" + c.pixel + "\n  };\n} }\n";
+    const std::string effect =
+        "float4 C0 = " + float4(c.c0) + ";\nfloat4 C1 = " + float4(c.c1) +
+        ";\ntechnique t { pass p {\n  PixelShaderConstant[0] = <C0>;\n  PixelShaderConstant[1] = <C1>;\n"
+        "  PixelShader = asm {\n" +
+        c.pixel + "\n  };\n} }\n";
     DiagnosticSink sink;
     auto file = EffectFile::load(write_effect(std::string("depth_") + c.name + ".fx", effect), {}, sink);
     ASSERT_TRUE(file) << describe(sink);
@@ -112,15 +114,19 @@ TEST_F(AssemblyDepthTest, DepthInstructionsWriteTheInterpretersDepth) {
     EXPECT_NE(ps->translated.find("SV_Depth"), std::string::npos) << ps->translated;
 
     std::string vs = "struct Out { float4 p : POSITION;";
-    for (size_t t = 0; t < c.texcoords.size(); ++t) vs += " float4 t" + std::to_string(t) + " : TEXCOORD" + std::to_string(t) + ";";
+    for (size_t t = 0; t < c.texcoords.size(); ++t)
+      vs += " float4 t" + std::to_string(t) + " : TEXCOORD" + std::to_string(t) + ";";
     vs += " };\nOut VS(float3 p : POSITION, float2 uv : TEXCOORD0) {\n  Out o;\n  o.p = float4(p, 1);\n";
-    for (size_t t = 0; t < c.texcoords.size(); ++t) vs += "  o.t" + std::to_string(t) + " = " + c.texcoords[t].hlsl() + ";\n";
+    for (size_t t = 0; t < c.texcoords.size(); ++t)
+      vs += "  o.t" + std::to_string(t) + " = " + c.texcoords[t].hlsl() + ";\n";
     vs += "  return o;\n}\n";
 
     FixedFunctionRig rig(ctx(), kSize, true);
     ASSERT_TRUE(rig.build({vs, "VS", "vs_3_0"}, {ps->translated, ps->entry_point, "ps_3_0"}));
-    ASSERT_TRUE(rig.set_uniform("C0", std::array<float, 4>{float(c.c0[0]), float(c.c0[1]), float(c.c0[2]), float(c.c0[3])}.data(), 16));
-    ASSERT_TRUE(rig.set_uniform("C1", std::array<float, 4>{float(c.c1[0]), float(c.c1[1]), float(c.c1[2]), float(c.c1[3])}.data(), 16));
+    ASSERT_TRUE(rig.set_uniform(
+        "C0", std::array<float, 4>{float(c.c0[0]), float(c.c0[1]), float(c.c0[2]), float(c.c0[3])}.data(), 16));
+    ASSERT_TRUE(rig.set_uniform(
+        "C1", std::array<float, 4>{float(c.c1[0]), float(c.c1[1]), float(c.c1[2]), float(c.c1[3])}.data(), 16));
     const fx::ImageF colour = rig.render(quad());
     const std::vector<float> depth = rig.depth();
     ASSERT_EQ(depth.size(), size_t(kSize) * kSize);
@@ -130,7 +136,8 @@ TEST_F(AssemblyDepthTest, DepthInstructionsWriteTheInterpretersDepth) {
     const PassInfo& pass = file->model->techniques[0].passes[0];
     std::optional<emulation::AsmProgram> program;
     for (const ShaderBinding& b : pass.shaders)
-      if (b.stage == PassStage::pixel) program = emulation::parse_assembly(*file->model->ast, b.asm_code, b.decl_code, sink);
+      if (b.stage == PassStage::pixel)
+        program = emulation::parse_assembly(*file->model->ast, b.asm_code, b.decl_code, sink);
     ASSERT_TRUE(program) << describe(sink);
     int clamped = 0;
     for (uint32_t y = 0; y < kSize; ++y)

@@ -21,11 +21,13 @@ class AssemblyInstructionTest : public VulkanTest {};
 
 // Inputs every case shares: colours v0/v1, texture coordinates t0-t3, pixel constants c0-c3.
 const Vec4 kColor[2] = {{0.8, 0.3, 0.55, 0.9}, {0.2, 0.65, 0.4, 0.35}};
-const Vec4 kTexcoord[4] = {{0.3, 0.7, 0.45, 0.6}, {0.55, 0.2, 0.8, 0.25}, {1.3, -0.2, 0.5, 0.75}, {0.6, 0.35, 0.9, 0.4}};
-const Vec4 kPixelConstant[4] = {{0.25, -0.5, 0.75, 0.6}, {-0.3, 0.9, 0.1, 0.45}, {0.7, -0.2, 0.0, -0.6}, {0.4, 0.45, 0.3, 0.2}};
+const Vec4 kTexcoord[4] = {
+    {0.3, 0.7, 0.45, 0.6}, {0.55, 0.2, 0.8, 0.25}, {1.3, -0.2, 0.5, 0.75}, {0.6, 0.35, 0.9, 0.4}};
+const Vec4 kPixelConstant[4] = {
+    {0.25, -0.5, 0.75, 0.6}, {-0.3, 0.9, 0.1, 0.45}, {0.7, -0.2, 0.0, -0.6}, {0.4, 0.45, 0.3, 0.2}};
 // Vertex shader constants c10-c15 for the vertex cases.
 const Vec4 kVertexConstant[6] = {{2.5, -0.75, 0.4, 4.0}, {0.6, 0.8, -0.3, 16.0}, {-1.25, 3.0, 0.5, 0.25},
-                                 {3.0, 0.0, 0.0, 0.0}, {0.1, 0.2, 0.3, 0.4}, {0.9, 0.8, 0.7, 0.6}};
+                                 {3.0, 0.0, 0.0, 0.0},   {0.1, 0.2, 0.3, 0.4},   {0.9, 0.8, 0.7, 0.6}};
 
 std::string float4(const Vec4& v) {
   char buf[128];
@@ -48,16 +50,20 @@ Vec4 table_sample(uint32_t, const Vec4& c) {
 
 std::string effect_text(const std::string& vertex_body, const std::string& pixel, bool precision,
                         const std::string& extra_states) {
-  std::string s = "float4x4 WorldViewProjection : WORLDVIEWPROJECTION;\n"
-                  "texture Table < string Generator = \"pow\"; int Width = 16; int Height = 16; float Exponent = 1; "
-                  "string Format = \"float32\"; >;\n";
+  std::string s =
+      "float4x4 WorldViewProjection : WORLDVIEWPROJECTION;\n"
+      "texture Table < string Generator = \"pow\"; int Width = 16; int Height = 16; float Exponent = 1; "
+      "string Format = \"float32\"; >;\n";
   s += std::string("technique t < bool Ps1xPrecision = ") + (precision ? "true" : "false") + "; > { pass p {\n";
   s += "  VertexShaderConstant[0] = <WorldViewProjection>;\n";
-  for (int i = 0; i < 2; ++i) s += "  VertexShaderConstant[" + std::to_string(4 + i) + "] = " + float4(kColor[i]) + ";\n";
-  for (int i = 0; i < 4; ++i) s += "  VertexShaderConstant[" + std::to_string(6 + i) + "] = " + float4(kTexcoord[i]) + ";\n";
+  for (int i = 0; i < 2; ++i)
+    s += "  VertexShaderConstant[" + std::to_string(4 + i) + "] = " + float4(kColor[i]) + ";\n";
+  for (int i = 0; i < 4; ++i)
+    s += "  VertexShaderConstant[" + std::to_string(6 + i) + "] = " + float4(kTexcoord[i]) + ";\n";
   for (int i = 0; i < 6; ++i)
     s += "  VertexShaderConstant[" + std::to_string(10 + i) + "] = " + float4(kVertexConstant[i]) + ";\n";
-  for (int i = 0; i < 4; ++i) s += "  PixelShaderConstant[" + std::to_string(i) + "] = " + float4(kPixelConstant[i]) + ";\n";
+  for (int i = 0; i < 4; ++i)
+    s += "  PixelShaderConstant[" + std::to_string(i) + "] = " + float4(kPixelConstant[i]) + ";\n";
   for (int i = 0; i < 4; ++i) s += "  Texture[" + std::to_string(i) + "] = <Table>;\n";
   s += extra_states;
   s += "  VertexShader = asm {\n    vs.1.1\n    m4x4 oPos, v0, c0\n" + vertex_body + "  };\n";
@@ -65,11 +71,12 @@ std::string effect_text(const std::string& vertex_body, const std::string& pixel
   return s;
 }
 
-const char* kPassThrough = "    mov oD0, c4\n    mov oD1, c5\n    mov oT0, c6\n    mov oT1, c7\n    mov oT2, c8\n    mov oT3, c9\n";
+const char* kPassThrough =
+    "    mov oD0, c4\n    mov oD1, c5\n    mov oT0, c6\n    mov oT1, c7\n    mov oT2, c8\n    mov oT3, c9\n";
 
 struct Case {
   const char* name;
-  const char* pixel;           // pixel shader (version line included)
+  const char* pixel;             // pixel shader (version line included)
   const char* vertex = nullptr;  // vertex shader body writing oT0 (pixel is then `texcrd`)
   bool precision = false;
   const char* states = "";
@@ -121,14 +128,21 @@ const Case kCases[] = {
     {"precision_texcoord", "ps.1.1\ntexcoord t2\ntexcoord t3\nmul r0, t2, t3", nullptr, true},
     {"precision_texcrd_14", "ps.1.4\ntexcrd r1, t2\ntexcrd r2, t3\nmad r0, r1, c1, r2", nullptr, true},
     {"precision_texcrd_range", nullptr, "    mul oT0, c10, c11.w\n", true},  // (40, -12, 6.4): clamped to +-8
-    {"precision_texm3x3", "ps.1.2\ntex t0\ntexm3x3pad t1, t0\ntexm3x3pad t2, t0\ntexm3x3 t3, t0\nmov r0, t3", nullptr, true},
+    {"precision_texm3x3", "ps.1.2\ntex t0\ntexm3x3pad t1, t0\ntexm3x3pad t2, t0\ntexm3x3 t3, t0\nmov r0, t3", nullptr,
+     true},
     // Vertex shader instructions, result in oT0.
-    {"vs_arithmetic", nullptr, "    add r0, c10, c11\n    mad r1, r0, c12, -c10\n    max r1, r1, c13\n    min oT0, r1, c11\n"},
+    {"vs_arithmetic", nullptr,
+     "    add r0, c10, c11\n    mad r1, r0, c12, -c10\n    max r1, r1, c13\n    min oT0, r1, c11\n"},
     {"vs_dp_and_matrix", nullptr, "    m3x3 r0, c10, c12\n    dp4 r0.w, c10, c11\n    mov oT0, r0\n"},
     {"vs_m4x3_m3x2", nullptr, "    m4x3 r0, c10, c12\n    m3x2 r1, c11, c13\n    add oT0, r0, r1\n"},
-    {"vs_rcp_rsq", nullptr, "    rcp r0.x, c10.x\n    rsq r0.y, c10.w\n    rcp r0.z, c11\n    rsq r0.w, c12.y\n    mov oT0, r0\n"},
-    {"vs_slt_sge_frc", nullptr, "    slt r0, c10, c11\n    sge r1, c10, c11\n    frc r2, c12\n    mad oT0, r0, c14, r1\n    add oT0.w, r2.x, r2.y\n"},
-    {"vs_exp_log", nullptr, "    exp r0.x, c10.x\n    log r0.y, c11.w\n    expp r1, c12.x\n    logp r2, c10.w\n    mov oT0.xy, r0\n    add oT0.z, r1.y, r2.y\n"},
+    {"vs_rcp_rsq", nullptr,
+     "    rcp r0.x, c10.x\n    rsq r0.y, c10.w\n    rcp r0.z, c11\n    rsq r0.w, c12.y\n    mov oT0, r0\n"},
+    {"vs_slt_sge_frc", nullptr,
+     "    slt r0, c10, c11\n    sge r1, c10, c11\n    frc r2, c12\n    mad oT0, r0, c14, r1\n    add oT0.w, r2.x, "
+     "r2.y\n"},
+    {"vs_exp_log", nullptr,
+     "    exp r0.x, c10.x\n    log r0.y, c11.w\n    expp r1, c12.x\n    logp r2, c10.w\n    mov oT0.xy, r0\n    add "
+     "oT0.z, r1.y, r2.y\n"},
     {"vs_lit_dst", nullptr, "    lit r0, c11\n    dst r1, c10, c12\n    add oT0, r0, r1\n"},
     {"vs_relative", nullptr, "    mov a0.x, c13.x\n    mov oT0, c[a0.x + 10]\n"},
     {"vs_swizzle_negate", nullptr, "    mov r0, -c10.wzyx\n    mul r0.xz, r0, c11.y\n    mov oT0, r0\n"},
@@ -141,8 +155,8 @@ TEST_F(AssemblyInstructionTest, RendersAsTheInterpreterComputes) {
     const bool vertex = c.vertex != nullptr;
     const std::string pixel = vertex ? "ps.1.4\ntexcrd r0, t0" : c.pixel;
     const std::string vertex_body = vertex ? std::string(c.vertex) : std::string(kPassThrough);
-    const std::string path = write_effect(std::string("asm_") + c.name + ".fx",
-                                          effect_text(vertex_body, pixel, c.precision, c.states));
+    const std::string path =
+        write_effect(std::string("asm_") + c.name + ".fx", effect_text(vertex_body, pixel, c.precision, c.states));
     auto r = bind_effect(ctx(), path, "t", "sphere", 16, std::nullopt, VK_FORMAT_R32G32B32A32_SFLOAT);
     ASSERT_TRUE(r);
     auto image = r->render_floats();

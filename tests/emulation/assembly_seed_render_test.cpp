@@ -49,9 +49,9 @@ SiblingDiff sibling_diff(const fx::Image& a, const fx::Image& b) {
 struct SeedCase {
   const char* file;
   const char* technique;
-  const char* sibling;   // the HLSL technique drawing the same look
-  double mean_bound;     // mean RGB difference allowed, 8-bit levels
-  int p95_bound;         // 95th percentile allowed
+  const char* sibling;  // the HLSL technique drawing the same look
+  double mean_bound;    // mean RGB difference allowed, 8-bit levels
+  int p95_bound;        // 95th percentile allowed
 };
 
 // Bounds: the figures measured on lavapipe (docs/legacy-assembly.md) plus about 15%. The
@@ -133,7 +133,8 @@ TEST_F(AssemblySeedTest, SquaringBandingMatchesTheCpuModel) {
 )";
   };
   const std::string effect = "float4x4 WorldViewProjection : WORLDVIEWPROJECTION;\n" +
-                             technique("technique banded < bool Ps1xPrecision = true; >") + technique("technique smooth");
+                             technique("technique banded < bool Ps1xPrecision = true; >") +
+                             technique("technique smooth");
   const std::string path = write_effect("squaring.fx", effect);
   auto banded = bind_effect(ctx(), path, "banded", "quad", 256, std::nullopt, VK_FORMAT_R32G32B32A32_SFLOAT);
   auto smooth = bind_effect(ctx(), path, "smooth", "quad", 256, std::nullopt, VK_FORMAT_R32G32B32A32_SFLOAT);
@@ -146,7 +147,8 @@ TEST_F(AssemblySeedTest, SquaringBandingMatchesTheCpuModel) {
   DiagnosticSink sink;
   std::optional<emulation::AsmProgram> ps;
   for (const ShaderBinding& b : pass.shaders)
-    if (b.stage == PassStage::pixel) ps = emulation::parse_assembly(*banded->effect->model->ast, b.asm_code, b.decl_code, sink);
+    if (b.stage == PassStage::pixel)
+      ps = emulation::parse_assembly(*banded->effect->model->ast, b.asm_code, b.decl_code, sink);
   ASSERT_TRUE(ps) << describe(sink);
 
   std::set<int> banded_levels, smooth_levels, model_levels;
@@ -166,8 +168,10 @@ TEST_F(AssemblySeedTest, SquaringBandingMatchesTheCpuModel) {
       smooth_levels.insert(int(std::lround(s[0] * 1e4)));
       model_levels.insert(int(std::lround(m.r0[0] * 1e4)));
     }
-  std::printf("[ measured ] x^16 by squaring over a ramp: %zu distinct levels with the ps.1.1 model (CPU model %zu), "
-              "%zu in float\n", banded_levels.size(), model_levels.size(), smooth_levels.size());
+  std::printf(
+      "[ measured ] x^16 by squaring over a ramp: %zu distinct levels with the ps.1.1 model (CPU model %zu), "
+      "%zu in float\n",
+      banded_levels.size(), model_levels.size(), smooth_levels.size());
   EXPECT_GT(checked, 1000u);
   EXPECT_EQ(off, 0u);
   EXPECT_EQ(banded_levels.size(), model_levels.size());

@@ -5,8 +5,8 @@
 
 #include "fx/compile/effect_units.h"
 #include "fx/diagnostic_render.h"
-#include "fx/frontend.h"
 #include "fx/emulation/assembly.h"
+#include "fx/frontend.h"
 
 namespace fx {
 namespace {
@@ -86,7 +86,8 @@ TEST(AssemblyTranslation, PrecisionModelWhenAskedFor) {
   auto on = units_of(kPass, precision);
   const StageUnit* ps = on->units->passes()[0].find(ShaderStage::fragment);
   ASSERT_TRUE(ps);
-  EXPECT_NE(ps->translated.find("clamp(floor(x * 255.0 + 0.5) / 255.0, -1.0, 1.0)"), std::string::npos) << ps->translated;
+  EXPECT_NE(ps->translated.find("clamp(floor(x * 255.0 + 0.5) / 255.0, -1.0, 1.0)"), std::string::npos)
+      << ps->translated;
   EXPECT_NE(ps->emulation.find("precision modelled"), std::string::npos);
   std::string annotated = kPass;
   annotated.replace(annotated.find("technique t"), 11, "technique t < bool Ps1xPrecision = true; >");
@@ -126,7 +127,8 @@ TEST(AssemblyTranslation, ErrorsPointAtTheInstruction) {
 }
 
 TEST(AssemblyTranslation, LaterShaderModelsAreNotTranslatedButNotErrors) {
-  auto u = units_of("technique t { pass p {\n  PixelShader = asm {\n    ps_2_0\n    dcl t0.xy\n    mov oC0, t0\n  };\n} }\n");
+  auto u = units_of(
+      "technique t { pass p {\n  PixelShader = asm {\n    ps_2_0\n    dcl t0.xy\n    mov oC0, t0\n  };\n} }\n");
   EXPECT_FALSE(u->diags.has_errors()) << u->errors();
   const StageUnit* ps = u->units->passes()[0].find(ShaderStage::fragment);
   ASSERT_TRUE(ps);
@@ -136,8 +138,9 @@ TEST(AssemblyTranslation, LaterShaderModelsAreNotTranslatedButNotErrors) {
 }
 
 TEST(AssemblyTranslation, InstructionsMayShareALine) {
-  auto u = units_of("technique t { pass p {\n  VertexShader = asm { vs.1.1 dcl_position v0 m4x4 oPos, v0, c0 };\n"
-                    "  PixelShader = asm { ps.1.1 mov r1, v0 +mov r1.a, v0 mul r0, r1, r1 };\n} }\n");
+  auto u = units_of(
+      "technique t { pass p {\n  VertexShader = asm { vs.1.1 dcl_position v0 m4x4 oPos, v0, c0 };\n"
+      "  PixelShader = asm { ps.1.1 mov r1, v0 +mov r1.a, v0 mul r0, r1, r1 };\n} }\n");
   ASSERT_FALSE(u->diags.has_errors()) << u->errors();
   const StageUnit* ps = u->units->passes()[0].find(ShaderStage::fragment);
   ASSERT_TRUE(ps);

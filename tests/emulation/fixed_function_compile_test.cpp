@@ -134,7 +134,8 @@ TEST(FixedFunctionCompile, KeyFollowsEveryFieldAndOnlyThem) {
   a.stages[3].color_arg[1] = texture_arg::tfactor;
   b.texture_factor.parameter = {"tf", "float4"};
   c.lights[2].phi.value = 0.5f;
-  const uint64_t keys[] = {fixed_function_key(base), fixed_function_key(a), fixed_function_key(b), fixed_function_key(c)};
+  const uint64_t keys[] = {fixed_function_key(base), fixed_function_key(a), fixed_function_key(b),
+                           fixed_function_key(c)};
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) EXPECT_NE(keys[i], keys[j]) << i << " " << j;
   EXPECT_EQ(fixed_function_description(a), "stage3.color_arg1=3\n");

@@ -37,7 +37,8 @@ const PassInfo& pass_of(const EffectModel& m, std::string_view technique, size_t
 
 // Compiles the generated pixel shader; "" when it compiles.
 std::string compile_pixel_shader(const FixedFunctionState& s) {
-  CompiledShader ps = ShaderCompiler().compile(vk::testing::unit(generate_fixed_function_pixel_shader(s), ShaderStage::fragment));
+  CompiledShader ps =
+      ShaderCompiler().compile(vk::testing::unit(generate_fixed_function_pixel_shader(s), ShaderStage::fragment));
   return ps.ok ? "" : ps.info_log;
 }
 
@@ -97,8 +98,10 @@ TEST(FixedFunctionFromPass, EveryD3D9PassOfTheSeedEffectsGivesStagesThatCompile)
         DiagnosticSink diags;
         const FixedFunctionState s = fixed_function_state(e->model, p, diags);
         EXPECT_FALSE(diags.has_errors());
-        const CompiledShader vs = compiler.compile(vk::testing::unit(generate_fixed_function_vertex_shader(s), ShaderStage::vertex));
-        const CompiledShader ps = compiler.compile(vk::testing::unit(generate_fixed_function_pixel_shader(s), ShaderStage::fragment));
+        const CompiledShader vs =
+            compiler.compile(vk::testing::unit(generate_fixed_function_vertex_shader(s), ShaderStage::vertex));
+        const CompiledShader ps =
+            compiler.compile(vk::testing::unit(generate_fixed_function_pixel_shader(s), ShaderStage::fragment));
         EXPECT_TRUE(vs.ok && ps.ok) << entry.path().filename() << " " << t.name << "/" << p.name << "\n"
                                     << vs.info_log << ps.info_log;
         ++passes;

@@ -24,7 +24,7 @@ constexpr uint32_t kSize = 16;
 
 // 90 degrees about z (x, y) -> (-y, x), then z scaled by 2: normals need the inverse transpose.
 const std::array<float, 16> kWorld = {0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1};
-const std::array<float, 16> kView = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 5, 1};  // camera 5 units back
+const std::array<float, 16> kView = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 5, 1};           // camera 5 units back
 const std::array<float, 16> kProjection = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0.1f, 0, 0, 0, 0, 1};  // z 5 -> 0.5, w 1
 
 // The quad's corners: screen corner (X, Y) comes from object (Y, -X) through kWorld.
@@ -32,7 +32,8 @@ struct Corner {
   float x, y;
   Vec3 normal;
 };
-const Corner kCorners[4] = {{-1, -1, {0.3, 0.2, -1}}, {1, -1, {-0.4, 0.1, -1}}, {1, 1, {0.2, -0.5, -1}}, {-1, 1, {-0.1, -0.3, -1}}};
+const Corner kCorners[4] = {
+    {-1, -1, {0.3, 0.2, -1}}, {1, -1, {-0.4, 0.1, -1}}, {1, 1, {0.2, -0.5, -1}}, {-1, 1, {-0.1, -0.3, -1}}};
 
 ff_model::VertexIn vertex_in(const Corner& c) {
   const double u = (c.x + 1) / 2, v = (c.y + 1) / 2;
@@ -40,9 +41,15 @@ ff_model::VertexIn vertex_in(const Corner& c) {
 }
 
 FixedVertex fixed_vertex(const ff_model::VertexIn& in, const Corner& c) {
-  return {float(in.position[0]), float(in.position[1]), float(in.position[2]), float(in.normal[0]), float(in.normal[1]),
-          float(in.normal[2]), {float(in.diffuse[0]), float(in.diffuse[1]), float(in.diffuse[2]), float(in.diffuse[3])},
-          {float(in.specular[0]), float(in.specular[1]), float(in.specular[2]), float(in.specular[3])}, (c.x + 1) / 2,
+  return {float(in.position[0]),
+          float(in.position[1]),
+          float(in.position[2]),
+          float(in.normal[0]),
+          float(in.normal[1]),
+          float(in.normal[2]),
+          {float(in.diffuse[0]), float(in.diffuse[1]), float(in.diffuse[2]), float(in.diffuse[3])},
+          {float(in.specular[0]), float(in.specular[1]), float(in.specular[2]), float(in.specular[3])},
+          (c.x + 1) / 2,
           (c.y + 1) / 2};
 }
 
@@ -188,8 +195,9 @@ float4 PS(float4 d : COLOR0, float4 s : COLOR1, float4 tc : TEXCOORD0) : COLOR0 
 
 TEST_F(FixedFunctionLighting, TexgenAndTextureTransformsMatchTheModel) {
   double worst = 0;
-  const uint32_t gens[] = {texcoord_gen::passthru, texcoord_gen::camera_space_normal, texcoord_gen::camera_space_position,
-                           texcoord_gen::camera_space_reflection_vector, texcoord_gen::sphere_map};
+  const uint32_t gens[] = {texcoord_gen::passthru, texcoord_gen::camera_space_normal,
+                           texcoord_gen::camera_space_position, texcoord_gen::camera_space_reflection_vector,
+                           texcoord_gen::sphere_map};
   for (uint32_t gen : gens)
     for (int transformed = 0; transformed < 2; ++transformed)
       for (bool local_viewer : {true, false}) {
@@ -202,7 +210,8 @@ TEST_F(FixedFunctionLighting, TexgenAndTextureTransformsMatchTheModel) {
         s.stages[0].tex_coord_index = gen;
         if (transformed) {
           s.stages[0].texture_transform_flags = 3;
-          s.stages[0].texture_transform.value = {0.5f, 0.1f, 0, 0.2f, -0.3f, 0.8f, 0.1f, 0, 0.2f, 0, 1.5f, 0.3f, 0.25f, -0.5f, 0, 1};
+          s.stages[0].texture_transform.value = {0.5f, 0.1f, 0,    0.2f, -0.3f, 0.8f,  0.1f, 0,
+                                                 0.2f, 0,    1.5f, 0.3f, 0.25f, -0.5f, 0,    1};
         }
         const DrawnQuad q = draw_quad(ctx(), s, kShowTexcoord);
         ASSERT_EQ(q.image.width, kSize);
@@ -240,7 +249,8 @@ TEST_F(FixedFunctionLighting, WithAPixelShaderTheVertexShaderWritesWhatItReads) 
   s.stages[1].texture_transform_flags = 2;
   s.stages[1].texture_transform.value = {2, 0, 0, 0, 0, 0.5f, 0, 0, 0.25f, 0, 1, 0, 0, 0, 0, 1};
   const std::string vs = generate_fixed_function_vertex_shader(s).source;
-  const std::string outputs = vs.substr(vs.find("struct fx_ff_vs_out"), vs.find("fx_ff_vs_out fx_ff_vs(") - vs.find("struct fx_ff_vs_out"));
+  const std::string outputs =
+      vs.substr(vs.find("struct fx_ff_vs_out"), vs.find("fx_ff_vs_out fx_ff_vs(") - vs.find("struct fx_ff_vs_out"));
   EXPECT_EQ(outputs.find("COLOR"), std::string::npos) << outputs;
   EXPECT_NE(outputs.find("TEXCOORD1"), std::string::npos) << outputs;
   const DrawnQuad q = draw_quad(ctx(), s, "float4 PS(float4 tc : TEXCOORD1) : COLOR0 { return tc; }");
@@ -370,16 +380,15 @@ TEST_F(FixedFunctionLighting, PretransformedVerticesLandOnTheirPixels) {
   auto vertex = [](float x, float y) {
     return FixedVertex{x, y, 0.5f, 0.5f /* rhw */, 0, 0, {0.25f, 0.5f, 0.75f, 1}, {0, 0, 0, 0}, 0, 0};
   };
-  const FixedVertex a = vertex(2.25f, 3.25f), b = vertex(12.25f, 3.25f), c = vertex(12.25f, 14.25f), d = vertex(2.25f, 14.25f);
+  const FixedVertex a = vertex(2.25f, 3.25f), b = vertex(12.25f, 3.25f), c = vertex(12.25f, 14.25f),
+                    d = vertex(2.25f, 14.25f);
   const fx::ImageF image = rig.render({a, c, b, a, d, c});
   for (uint32_t y = 0; y < kSize; ++y)
     for (uint32_t x = 0; x < kSize; ++x) {
       const bool inside = x >= 3 && x <= 12 && y >= 4 && y <= 14;
       const float* got = image.at(x, y);
-      if (inside)
-        EXPECT_TRUE(got[0] == 0.25f && got[1] == 0.5f && got[2] == 0.75f) << x << "," << y << ": " << got[0];
-      else
-        EXPECT_EQ(got[0], -1.0f) << x << "," << y;
+      if (inside) EXPECT_TRUE(got[0] == 0.25f && got[1] == 0.5f && got[2] == 0.75f) << x << "," << y << ": " << got[0];
+      else EXPECT_EQ(got[0], -1.0f) << x << "," << y;
     }
 }
 

@@ -33,8 +33,16 @@ std::vector<FixedVertex> screen_quad() {
   auto vertex = [](float x, float y) {
     const float u = (x + 1) / 2, v = (y + 1) / 2;
     const Color d = diffuse_at(u, v), s = specular_at(u, v);
-    return FixedVertex{x, y, 0.5f, 0, 0, -1, {float(d[0]), float(d[1]), float(d[2]), float(d[3])},
-                       {float(s[0]), float(s[1]), float(s[2]), float(s[3])}, u, v};
+    return FixedVertex{x,
+                       y,
+                       0.5f,
+                       0,
+                       0,
+                       -1,
+                       {float(d[0]), float(d[1]), float(d[2]), float(d[3])},
+                       {float(s[0]), float(s[1]), float(s[2]), float(s[3])},
+                       u,
+                       v};
   };
   const FixedVertex a = vertex(-1, -1), b = vertex(1, -1), c = vertex(1, 1), d = vertex(-1, 1);
   return {a, c, b, a, d, c};
@@ -47,7 +55,8 @@ class FixedFunctionRender : public VulkanTest {
     VulkanTest::TearDown();
   }
   static void TearDownTestSuite() {
-    std::printf("[ fixed-function ] largest |GPU - CPU model| over every case: %.3g (tolerance %.0e)\n", worst_, kTolerance);
+    std::printf("[ fixed-function ] largest |GPU - CPU model| over every case: %.3g (tolerance %.0e)\n", worst_,
+                kTolerance);
     VulkanTest::TearDownTestSuite();
   }
 
@@ -157,8 +166,9 @@ TEST_F(FixedFunctionRender, EveryOperationAsColourAndAlphaOperation) {
     const TextureOp o = static_cast<TextureOp>(op);
     if (o == TextureOp::disable || o == TextureOp::bump_env_map || o == TextureOp::bump_env_map_luminance) continue;
     // Arg1 the texture, Arg2 diffuse, Arg0 specular: three different values per pixel.
-    expect_matches_model(one_stage(o, o, {ta::specular, ta::texture, ta::diffuse}, {ta::specular, ta::texture, ta::diffuse}),
-                         to_string(o));
+    expect_matches_model(
+        one_stage(o, o, {ta::specular, ta::texture, ta::diffuse}, {ta::specular, ta::texture, ta::diffuse}),
+        to_string(o));
     // And a second stage reading Current, so the result of the first is checked as an input.
     FixedFunctionState s = one_stage(TextureOp::modulate, TextureOp::add, {ta::current, ta::texture, ta::diffuse},
                                      {ta::current, ta::texture, ta::diffuse});
@@ -189,8 +199,8 @@ TEST_F(FixedFunctionRender, EveryRegisterWithEveryModifier) {
 
 TEST_F(FixedFunctionRender, SeedListings) {
   // DOTPRODUCT3 fallback: ColorOp[0] = DotProduct3 (Texture, Diffuse), ColorOp[1] = Modulate (Texture, Current).
-  FixedFunctionState dot3 = one_stage(TextureOp::dot_product3, TextureOp::select_arg1, {ta::current, ta::texture, ta::diffuse},
-                                      {ta::current, ta::texture, ta::current});
+  FixedFunctionState dot3 = one_stage(TextureOp::dot_product3, TextureOp::select_arg1,
+                                      {ta::current, ta::texture, ta::diffuse}, {ta::current, ta::texture, ta::current});
   dot3.stages[1] = dot3.stages[0];
   dot3.stages[1].color_op = TextureOp::modulate;
   dot3.stages[1].alpha_op = TextureOp::disable;
@@ -210,18 +220,19 @@ TEST_F(FixedFunctionRender, SeedListings) {
 }
 
 TEST_F(FixedFunctionRender, PreModulateMultipliesByTheNextStagesTexture) {
-  FixedFunctionState s = one_stage(TextureOp::premodulate, TextureOp::premodulate, {ta::current, ta::texture, ta::current},
-                                   {ta::current, ta::texture, ta::current});
+  FixedFunctionState s = one_stage(TextureOp::premodulate, TextureOp::premodulate,
+                                   {ta::current, ta::texture, ta::current}, {ta::current, ta::texture, ta::current});
   s.stages[1] = one_stage(TextureOp::add, TextureOp::modulate, {ta::current, ta::diffuse, ta::current},
-                          {ta::current, ta::texture, ta::current}).stages[0];
+                          {ta::current, ta::texture, ta::current})
+                    .stages[0];
   expect_matches_model(s, "PreModulate");
 }
 
 TEST_F(FixedFunctionRender, ProjectedCoordinatesAreDividedByTheirLastComponent) {
   // (u, v, 1, 0) * diag(3, 3, 3, 1) = (3u, 3v, 3): only the divide brings the lookup back to
   // texel (x, y) (without it the repeat-addressed lookup lands on texel 3x mod 16).
-  FixedFunctionState s = one_stage(TextureOp::select_arg1, TextureOp::select_arg1, {ta::current, ta::texture, ta::current},
-                                   {ta::current, ta::texture, ta::current});
+  FixedFunctionState s = one_stage(TextureOp::select_arg1, TextureOp::select_arg1,
+                                   {ta::current, ta::texture, ta::current}, {ta::current, ta::texture, ta::current});
   s.stages[0].texture_transform_flags = 3 | texture_transform::projected;
   s.stages[0].texture_transform.value = {3, 0, 0, 0, 0, 3, 0, 0, 0, 0, 3, 0, 0, 0, 0, 1};
   expect_matches_model(s, "Count3 | Projected");
@@ -234,11 +245,13 @@ TEST_F(FixedFunctionRender, BumpEnvironmentMapMovesTheNextStagesLookup) {
     FixedFunctionState s = one_stage(op, TextureOp::disable, {ta::current, ta::texture, ta::current},
                                      {ta::current, ta::texture, ta::current});
     const float t = 1.0f / kSize;
-    s.stages[0].bump_env_mat = {FixedScalar{2 * t, {}}, FixedScalar{-t, {}}, FixedScalar{t, {}}, FixedScalar{3 * t, {}}};
+    s.stages[0].bump_env_mat = {FixedScalar{2 * t, {}}, FixedScalar{-t, {}}, FixedScalar{t, {}},
+                                FixedScalar{3 * t, {}}};
     s.stages[0].bump_env_lscale.value = 1.5f;
     s.stages[0].bump_env_loffset.value = -0.2f;
     s.stages[1] = one_stage(TextureOp::add, TextureOp::select_arg1, {ta::current, ta::texture, ta::diffuse},
-                            {ta::current, ta::texture, ta::current}).stages[0];
+                            {ta::current, ta::texture, ta::current})
+                      .stages[0];
     expect_matches_model(s, to_string(op));
   }
 }
@@ -307,7 +320,8 @@ Out VS(float3 p : POSITION, float2 uv : TEXCOORD0) {
   s.fog = true;
   s.fog_color.value = {0.9f, 0.1f, 0.1f, 1.0f};
   const std::string ps = generate_fixed_function_pixel_shader(s).source;
-  for (const char* unread : {"COLOR1", "TEXCOORD0", "FOG"}) EXPECT_EQ(ps.find(unread), std::string::npos) << unread << "\n" << ps;
+  for (const char* unread : {"COLOR1", "TEXCOORD0", "FOG"})
+    EXPECT_EQ(ps.find(unread), std::string::npos) << unread << "\n" << ps;
   EXPECT_NE(ps.find("float3 fx_diffuse : COLOR0"), std::string::npos) << ps;
   EXPECT_NE(ps.find("float4 fx_tc3 : TEXCOORD3"), std::string::npos) << ps;
 
@@ -333,7 +347,8 @@ Out VS(float3 p : POSITION, float2 uv : TEXCOORD0) {
         const double e = std::fabs(image.at(x, y)[c] - want[c]);
         worst_ = std::max(worst_, e);
         ASSERT_LE(e, kTolerance) << x << "," << y << " channel " << c << ": GPU " << image.at(x, y)[c] << ", model "
-                                 << want[c] << "\n" << ps;
+                                 << want[c] << "\n"
+                                 << ps;
       }
     }
 }

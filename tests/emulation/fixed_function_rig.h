@@ -58,15 +58,18 @@ inline fx::Image random_image(uint32_t size, std::mt19937& rng) {
 class FixedFunctionRig {
  public:
   // With `depth` the target has a D32 depth attachment, tested and written (LESS_OR_EQUAL).
-  FixedFunctionRig(Context& ctx, uint32_t size, bool depth = false) : ctx_(ctx), size_(size), samplers_(ctx), depth_(depth) {
-    harness_ = std::make_unique<PassHarness>(ctx, DynamicStateSet::none(), size, depth ? DepthAttachment::d32 : DepthAttachment::none,
+  FixedFunctionRig(Context& ctx, uint32_t size, bool depth = false)
+      : ctx_(ctx), size_(size), samplers_(ctx), depth_(depth) {
+    harness_ = std::make_unique<PassHarness>(ctx, DynamicStateSet::none(), size,
+                                             depth ? DepthAttachment::d32 : DepthAttachment::none,
                                              VK_FORMAT_R32G32B32A32_SFLOAT);
   }
 
   // Compiles and links the generated shaders of `state` (or `pixel_shader`, entry PS, in
   // place of the generated pixel shader, or `vertex_shader`, entry VS, in place of the
   // generated vertex shader); false (with a failure) when they do not.
-  bool build(const FixedFunctionState& state, const std::string& pixel_shader = {}, const std::string& vertex_shader = {}) {
+  bool build(const FixedFunctionState& state, const std::string& pixel_shader = {},
+             const std::string& vertex_shader = {}) {
     return build(vertex_shader.empty() ? generate_fixed_function_vertex_shader(state)
                                        : FixedFunctionShader{vertex_shader, "VS", "vs_3_0"},
                  pixel_shader.empty() ? generate_fixed_function_pixel_shader(state)
@@ -85,7 +88,8 @@ class FixedFunctionRig {
     DiagnosticSink sink;
     program_->layout = link_program({&program_->vs, &program_->ps}, sink);
     EXPECT_EQ(sink.warning_count() + sink.error_count(), 0u) << describe(sink);
-    auto program = ShaderProgram::create(ctx_, {&program_->vs, &program_->ps}, program_->layout, DescriptorMode::sets, sink);
+    auto program =
+        ShaderProgram::create(ctx_, {&program_->vs, &program_->ps}, program_->layout, DescriptorMode::sets, sink);
     EXPECT_TRUE(program.has_value()) << describe(sink);
     if (!program) return false;
     program_->program = std::move(*program);
@@ -113,7 +117,8 @@ class FixedFunctionRig {
     key.min_filter = key.mag_filter = VK_FILTER_NEAREST;
     key.mip_filter = VK_SAMPLER_MIPMAP_MODE_NEAREST;
     key.address_u = key.address_v = key.address_w = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-    const bool ok = resources_->bind("fx_stage" + std::to_string(stage), *textures_.back(), samplers_.get(key, sink), sink);
+    const bool ok =
+        resources_->bind("fx_stage" + std::to_string(stage), *textures_.back(), samplers_.get(key, sink), sink);
     EXPECT_TRUE(ok) << describe(sink);
     return ok;
   }
@@ -129,16 +134,21 @@ class FixedFunctionRig {
   // discarded pixel shows.
   fx::ImageF render(const std::vector<FixedVertex>& vertices) {
     DiagnosticSink sink;
-    auto b = Buffer::create(ctx_, {vertices.size() * sizeof(FixedVertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                                   MemoryUsage::upload, "fixed-function vertices"}, sink);
+    auto b = Buffer::create(ctx_,
+                            {vertices.size() * sizeof(FixedVertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                             MemoryUsage::upload, "fixed-function vertices"},
+                            sink);
     EXPECT_TRUE(b && b->write(vertices.data(), vertices.size() * sizeof(FixedVertex))) << describe(sink);
     if (!b) return {};
     VkBuffer vb = b->handle();
     PipelineState state;  // no culling, no blending
     state.depth_test = state.depth_write = depth_;
-    fx::ImageF image = harness_->render_floats([&](VkCommandBuffer cmd, PassRecorder& r) {
-      draw(cmd, r, {&program_->program, state, &*input_, resources_.get()}, vb, static_cast<uint32_t>(vertices.size()));
-    }, {-1, -1, -1, -1});
+    fx::ImageF image = harness_->render_floats(
+        [&](VkCommandBuffer cmd, PassRecorder& r) {
+          draw(cmd, r, {&program_->program, state, &*input_, resources_.get()}, vb,
+               static_cast<uint32_t>(vertices.size()));
+        },
+        {-1, -1, -1, -1});
     buffers_.push_back(std::move(*b));
     return image;
   }

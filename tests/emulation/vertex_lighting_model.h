@@ -59,7 +59,8 @@ inline VertexOut process_vertex(const FixedFunctionState& s, const VertexIn& in)
       for (int k = 0; k < 3; ++k) v += double(s.world.value[r * 4 + k]) * s.view.value[k * 4 + c];
       m[r * 3 + c] = v;
     }
-  const double det = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) + m[2] * (m[3] * m[7] - m[4] * m[6]);
+  const double det =
+      m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) + m[2] * (m[3] * m[7] - m[4] * m[6]);
   // (M^-1)^T = cofactor matrix / det; a row vector n times it.
   const std::array<double, 9> cof = {m[4] * m[8] - m[5] * m[7], m[5] * m[6] - m[3] * m[8], m[3] * m[7] - m[4] * m[6],
                                      m[2] * m[7] - m[1] * m[8], m[0] * m[8] - m[2] * m[6], m[1] * m[6] - m[0] * m[7],
@@ -79,8 +80,10 @@ inline VertexOut process_vertex(const FixedFunctionState& s, const VertexIn& in)
       if (s.color_vertex && src == MaterialSource::color2) return in.specular;
       return {mat.value[0], mat.value[1], mat.value[2], mat.value[3]};
     };
-    const Color cd = material(s.diffuse_source, s.material_diffuse), ca = material(s.ambient_source, s.material_ambient),
-                cs = material(s.specular_source, s.material_specular), ce = material(s.emissive_source, s.material_emissive);
+    const Color cd = material(s.diffuse_source, s.material_diffuse),
+                ca = material(s.ambient_source, s.material_ambient),
+                cs = material(s.specular_source, s.material_specular),
+                ce = material(s.emissive_source, s.material_emissive);
     Vec3 ambient = xyz(s.ambient), diffuse{}, specular{};
     const Vec3 to_eye = s.local_viewer ? normalize(scale(p, -1)) : Vec3{0, 0, -1};
     for (const FixedLight& l : s.lights) {
@@ -94,7 +97,9 @@ inline VertexOut process_vertex(const FixedFunctionState& s, const VertexIn& in)
         const double d = length(offset);
         to_light = scale(offset, 1 / d);
         // Atten = 1 / (a0 + a1 d + a2 d^2), 0 beyond the range.
-        atten = d <= l.range.value ? 1 / (l.attenuation0.value + l.attenuation1.value * d + l.attenuation2.value * d * d) : 0;
+        atten = d <= l.range.value
+                    ? 1 / (l.attenuation0.value + l.attenuation1.value * d + l.attenuation2.value * d * d)
+                    : 0;
         if (l.type == LightType::spot) {
           // rho = cos of the angle between the spot axis and the light-to-vertex vector.
           const double rho = dot(scale(to_light, -1), normalize(direction(xyz(l.direction), s.view.value)));
@@ -110,7 +115,8 @@ inline VertexOut process_vertex(const FixedFunctionState& s, const VertexIn& in)
       if (s.specular_enable && ndl > 0) {
         const Vec3 h = normalize(Vec3{to_eye[0] + to_light[0], to_eye[1] + to_light[1], to_eye[2] + to_light[2]});
         const double ndh = std::max(dot(n, h), 0.0);
-        for (int c = 0; c < 3; ++c) specular[c] += atten * std::pow(ndh, double(s.material_power.value)) * l.specular.value[c];
+        for (int c = 0; c < 3; ++c)
+          specular[c] += atten * std::pow(ndh, double(s.material_power.value)) * l.specular.value[c];
       }
     }
     for (int c = 0; c < 3; ++c) {

@@ -27,8 +27,7 @@ TEST(Diagnostic, ADiagnosticAboutNoPlaceStartsWithItsSeverity) {
   SourceManager sm;
   DiagnosticSink sink;
   sink.error("vk-feature-missing", {}, "the device has no dynamic rendering");
-  EXPECT_EQ(render_text(sink.diagnostics(), sm),
-            "error: the device has no dynamic rendering [vk-feature-missing]\n");
+  EXPECT_EQ(render_text(sink.diagnostics(), sm), "error: the device has no dynamic rendering [vk-feature-missing]\n");
 }
 
 TEST(Diagnostic, IncludeAndMacroNotes) {

@@ -19,7 +19,9 @@ TEST(SourceManager, MapsOffsetsToLineAndColumn) {
 // Windows editors start files with a UTF-8 byte-order mark; it is no column of line 1.
 TEST(SourceManager, ColumnsOnLine1CountFromAfterAByteOrderMark) {
   SourceManager sm;
-  BufferId f = sm.add_buffer("bom.fx", "\xEF\xBB\xBF" "float x;\nint y;\n");
+  BufferId f = sm.add_buffer("bom.fx",
+                             "\xEF\xBB\xBF"
+                             "float x;\nint y;\n");
   PresumedLocation p = sm.presumed(sm.location(f, 9));  // 'x'
   EXPECT_EQ(p.line, 1u);
   EXPECT_EQ(p.column, 7u);
@@ -60,8 +62,8 @@ TEST(SourceManager, LineDirectiveRenamesAndRenumbers) {
 TEST(SourceManager, MacroExpansionMapsToSpellingAndInvocation) {
   SourceManager sm;
   BufferId f = sm.add_buffer("m.fx", "#define TWO 1 + 1\nfloat x = TWO;\n");
-  SourceLocation body = sm.location(f, 12);        // "1 + 1"
-  SourceLocation use = sm.location(f, 28);         // "TWO" on line 2
+  SourceLocation body = sm.location(f, 12);  // "1 + 1"
+  SourceLocation use = sm.location(f, 28);   // "TWO" on line 2
   SourceLocation exp = sm.add_expansion({"TWO", body, {use, use.offset(3)}}, 5);
   EXPECT_TRUE(sm.is_expansion(exp.offset(4)));
   EXPECT_EQ(sm.spelling_location(exp.offset(4)), body.offset(4));

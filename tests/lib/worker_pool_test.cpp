@@ -23,9 +23,7 @@ TEST(WorkerPool, RunsEveryTaskOnce) {
 TEST(WorkerPool, NestedBatchesAndSeveralCallersFinish) {
   fx::WorkerPool pool(3);
   std::atomic<int> total{0};
-  auto nested = [&] {
-    pool.for_each(8, [&](size_t) { pool.for_each(16, [&](size_t) { total.fetch_add(1); }); });
-  };
+  auto nested = [&] { pool.for_each(8, [&](size_t) { pool.for_each(16, [&](size_t) { total.fetch_add(1); }); }); };
   std::vector<std::thread> callers;
   for (int i = 0; i < 4; ++i) callers.emplace_back(nested);
   for (std::thread& t : callers) t.join();

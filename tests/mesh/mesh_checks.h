@@ -20,7 +20,7 @@ struct FrameReport {
   float normal_length_error = 0;  // max | |n| - 1 |
   float tangent_length_error = 0;
   float binormal_length_error = 0;
-  float tangent_normal_dot = 0;    // max |t . n|
+  float tangent_normal_dot = 0;      // max |t . n|
   float binormal_formula_error = 0;  // max |b - cross(n, t) w|
 };
 
@@ -40,8 +40,8 @@ inline FrameReport check_frames(const Mesh& mesh) {
     r.tangent_length_error = std::max(r.tangent_length_error, std::abs(glm::length(t) - 1.0f));
     r.binormal_length_error = std::max(r.binormal_length_error, std::abs(glm::length(v.binormal) - 1.0f));
     r.tangent_normal_dot = std::max(r.tangent_normal_dot, std::abs(glm::dot(t, v.normal)));
-    r.binormal_formula_error = std::max(
-        r.binormal_formula_error, glm::length(v.binormal - glm::cross(v.normal, t) * v.tangent.w));
+    r.binormal_formula_error =
+        std::max(r.binormal_formula_error, glm::length(v.binormal - glm::cross(v.normal, t) * v.tangent.w));
   }
   for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
     ++r.triangles;

@@ -27,8 +27,7 @@ TEST(Obj, QuadsWithoutNormalsGetSmoothComputedNormals) {
   EXPECT_EQ(cube->triangle_count(), 12u);  // 6 quads
   test::expect_valid_frames(*cube, "cube");
   // Smooth normals per position: each corner sees three equal-area faces.
-  for (const Vertex& v : cube->vertices)
-    EXPECT_LT(glm::length(v.normal - glm::normalize(v.position)), 1e-6f);
+  for (const Vertex& v : cube->vertices) EXPECT_LT(glm::length(v.normal - glm::normalize(v.position)), 1e-6f);
   // v flipped to top-down: the +Z face's bottom-left (vt 0 0) has uv (0, 1).
   bool found = false;
   for (const Vertex& v : cube->vertices)

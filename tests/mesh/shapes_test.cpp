@@ -86,9 +86,10 @@ TEST(Sphere, NormalsArePositionsAndTangentsFollowLatitude) {
   // at 24 rings). The u = 0/1 seam is no worse: its copies share their sums.
   EXPECT_LT(worst_tangent, 0.03f);
   EXPECT_LT(worst_equator, 3e-3f);
-  std::printf("[ measured ] sphere %ux%u: max |n - p/|p|| %.2g; tangent vs analytic: max %.2g "
-              "(first ring), %.2g within 30 degrees of the equator\n",
-              rings, segments, worst_normal, worst_tangent, worst_equator);
+  std::printf(
+      "[ measured ] sphere %ux%u: max |n - p/|p|| %.2g; tangent vs analytic: max %.2g "
+      "(first ring), %.2g within 30 degrees of the equator\n",
+      rings, segments, worst_normal, worst_tangent, worst_equator);
 }
 
 TEST(Sphere, SeamAndPoleCopiesAgree) {
@@ -130,8 +131,8 @@ TEST(Torus, NormalsAndTangentsMatchAnalyticFrame) {
   // 8.1e-4 at 64x32, shrinking with the step.
   EXPECT_LT(worst_tangent, 2e-3f);
   EXPECT_LT(worst_binormal, 2e-3f);
-  std::printf("[ measured ] torus 64x32: max normal err %.2g, tangent err %.2g, binormal err %.2g\n",
-              worst_normal, worst_tangent, worst_binormal);
+  std::printf("[ measured ] torus 64x32: max normal err %.2g, tangent err %.2g, binormal err %.2g\n", worst_normal,
+              worst_tangent, worst_binormal);
 }
 
 TEST(Tangents, AllEqualUvsGiveAFiniteFrame) {
@@ -221,8 +222,10 @@ TEST(Normals, ComputeNormalsMatchesWinding) {
   // u = 0/1 seam is not creased (area weighting per vertex index gave 0.10 there).
   EXPECT_LT(worst, 0.01f);
   EXPECT_LT(worst_equator, 0.005f);
-  std::printf("[ measured ] compute_normals on sphere(16, 32): max error %.3g, %.3g within 30 "
-              "degrees of the equator\n", worst, worst_equator);
+  std::printf(
+      "[ measured ] compute_normals on sphere(16, 32): max error %.3g, %.3g within 30 "
+      "degrees of the equator\n",
+      worst, worst_equator);
 }
 
 TEST(MakeMesh, BuiltInsAndUnknownNames) {

@@ -182,9 +182,9 @@ TEST(Teapot, SharedBoundariesMeetWithAgreeingNormals) {
       }
   }
   EXPECT_GT(shared, 300u);  // 400 at tessellation 8
-  EXPECT_EQ(opposed, 0u);  // every patch oriented outwards consistently
-  std::printf("[ measured ] teapot(8): %zu shared boundary points, %zu pairs differ by > 18 degrees\n",
-              shared, creased);
+  EXPECT_EQ(opposed, 0u);   // every patch oriented outwards consistently
+  std::printf("[ measured ] teapot(8): %zu shared boundary points, %zu pairs differ by > 18 degrees\n", shared,
+              creased);
 }
 
 TEST(Teapot, TessellationIsClamped) {

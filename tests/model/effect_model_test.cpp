@@ -108,7 +108,8 @@ TEST(EffectModel, TechniquesPassesAndShaders) {
       pass P1 { VertexShader = compile vs_1_1 VS(true, 3); PixelShader = asm { ps_1_1 tex t0 mov r0, t0 }; ColorOp[0] = Modulate; }
     }
     technique10 T10 { pass { SetVertexShader(CompileShader(vs_4_0, VS(false, 0))); SetGeometryShader(NULL); SetPixelShader(CompileShader(ps_4_0, PS())); } }
-  )", true);
+  )",
+                       true);
   ASSERT_FALSE(b->diags.has_errors()) << b->text();
   ASSERT_EQ(b->model.techniques.size(), 2u);
   const TechniqueInfo& lit = *b->model.find_technique("Lit");
@@ -149,7 +150,8 @@ TEST(EffectModel, GlslBlocks) {
     GLSLShader Common { vec3 shade(vec3 n) { return n * 0.5 + 0.5; } }
     GLSLShader FS { layout(location = 0) out vec4 color; void main() { color = vec4(shade(vec3(1)), 1); } }
     technique Glsl { pass { PixelShader = { Common, FS }; } }
-  )", true);
+  )",
+                       true);
   ASSERT_FALSE(b->diags.has_errors()) << b->text();
   const ShaderBinding* ps = b->model.techniques[0].passes[0].shader(PassStage::pixel);
   ASSERT_TRUE(ps);
@@ -167,7 +169,8 @@ TEST(EffectModel, StateReferencesAndConstants) {
       AlphaRef = <RefValue>;
       AlphaTestEnable = TRUE; AlphaFunc = Greater;
     } }
-  )", true);
+  )",
+                       true);
   ASSERT_FALSE(b->diags.has_errors()) << b->text();
   const PassInfo& p = b->model.techniques[0].passes[0];
   ASSERT_EQ(p.states.size(), 6u);
@@ -189,7 +192,8 @@ TEST(EffectModel, BadStateReferences) {
     float4 v; texture tex;
     technique T { pass P { Texture[0] = <v>; } }
     technique10 U { pass Q { SetBlendState(Missing, float4(0,0,0,0), 0xFFFFFFFF); } }
-  )", true);
+  )",
+                       true);
   EXPECT_TRUE(b->has("state-type-mismatch") || b->has("undefined-reference")) << b->text();
   EXPECT_TRUE(b->diags.has_errors());
 }

@@ -112,7 +112,8 @@ TEST(ModelFold, Errors) {
 TEST(ModelFold, DirectFolderApi) {
   SourceManager sm;
   DiagnosticSink diags;
-  auto parsed = parse_effect_text("x.fx", "float x = (2 + 3) * 4;", sm, diags, {.preprocessor = {}, .parse = {}, .check = {.require_technique = false}});
+  auto parsed = parse_effect_text("x.fx", "float x = (2 + 3) * 4;", sm, diags,
+                                  {.preprocessor = {}, .parse = {}, .check = {.require_technique = false}});
   ASSERT_EQ(parsed.ast.decls.size(), 1u);
   const ast::Expr& e = *parsed.ast.decls[0].variable->initializer;
   auto v = fold_constant(e, {}, diags);
@@ -130,8 +131,9 @@ TEST(ModelFold, DirectFolderApi) {
 // value needs: `0.1 + 0.2` adds two float literals (HLSL's unsuffixed literals are float),
 // so the double holds the float sum exactly.
 TEST(ModelFold, ValuesPrintTheirShortestRoundTripSpelling) {
-  auto b = test::build("float f = 0.8; float3 d = {0.577, -0.577, 1e-7}; double x = 0.1 + 0.2; "
-                       "half h = 0.1; int i = 7.9; bool t = 2; float big = 3e38;");
+  auto b = test::build(
+      "float f = 0.8; float3 d = {0.577, -0.577, 1e-7}; double x = 0.1 + 0.2; "
+      "half h = 0.1; int i = 7.9; bool t = 2; float big = 3e38;");
   EXPECT_EQ(test::param(*b, "f").default_value->to_string(), "0.8");
   EXPECT_EQ(test::param(*b, "d").default_value->to_string(), "float3(0.577, -0.577, 1e-07)");
   EXPECT_EQ(test::param(*b, "x").default_value->to_string(), "0.30000001192092896");

@@ -167,8 +167,8 @@ TEST(ParameterStore, MatrixPackingFollowsD3D) {
     return f;
   };
   // column_major: register c holds column c, so the bytes read m[0][1] at offset 16.
-  EXPECT_EQ(at(16), 1.0f);   // register 1, component 0 = m[0][1]
-  EXPECT_EQ(at(4), 10.0f);   // register 0, component 1 = m[1][0]
+  EXPECT_EQ(at(16), 1.0f);  // register 1, component 0 = m[0][1]
+  EXPECT_EQ(at(4), 10.0f);  // register 0, component 1 = m[1][0]
   EXPECT_EQ(at(48 + 0), 3.0f);
   // row_major: register r holds row r, identical to the host's row-major floats.
   EXPECT_EQ(at(64 + 4), 1.0f);
@@ -259,12 +259,12 @@ TEST(ParameterStore, StructArrayMembersAndUnindexedAliasesAreBound) {
     std::memcpy(&f, bytes.data() + offset, 4);
     return f;
   };
-  EXPECT_EQ(at(8), 1.0f);    // lights[0].dir.z
-  EXPECT_EQ(at(16), 1.0f);   // lights[0].color.x
-  EXPECT_EQ(at(60), 8.0f);   // lights[1].color.w
-  EXPECT_EQ(at(88), 11.0f);  // rig.key.color.z
-  EXPECT_EQ(at(96), 13.0f);  // rig.scale[0]
-  EXPECT_EQ(at(112), 14.0f); // rig.scale[1], one register on
+  EXPECT_EQ(at(8), 1.0f);     // lights[0].dir.z
+  EXPECT_EQ(at(16), 1.0f);    // lights[0].color.x
+  EXPECT_EQ(at(60), 8.0f);    // lights[1].color.w
+  EXPECT_EQ(at(88), 11.0f);   // rig.key.color.z
+  EXPECT_EQ(at(96), 13.0f);   // rig.scale[0]
+  EXPECT_EQ(at(112), 14.0f);  // rig.scale[1], one register on
   const float red[4] = {0.5f, 0, 0, 1};
   ASSERT_TRUE(store.set(store.member(store.element(store.find("lights"), 0), "color"), std::span<const float>(red)));
   ASSERT_TRUE(store.write_block(0, bytes));
@@ -527,11 +527,13 @@ TEST(ParameterStore, SetMatrixAgreesWithSetUnderRandomOperations) {
   const BlockMemberLayout three[] = {{"Wvp", 0, 64, 0, 16, MatrixOrder::column_major}};
   const BlockMemberLayout four[] = {{"e", 0, 320, 16, 16, MatrixOrder::column_major},
                                     {"World", 320, 64, 0, 16, MatrixOrder::column_major}};
-  const std::pair<std::span<const BlockMemberLayout>, uint32_t> layouts[] = {{one, 144}, {two, 80}, {three, 64}, {four, 384}};
+  const std::pair<std::span<const BlockMemberLayout>, uint32_t> layouts[] = {
+      {one, 144}, {two, 80}, {three, 64}, {four, 384}};
   for (uint32_t seed = 1; seed <= 200; ++seed) {
     ParameterStore direct(b->model), logged(b->model);
     for (ParameterStore* s : {&direct, &logged})
-      for (uint32_t id = 1; id <= 4; ++id) ASSERT_TRUE(s->bind_layout(id, layouts[id - 1].first, layouts[id - 1].second));
+      for (uint32_t id = 1; id <= 4; ++id)
+        ASSERT_TRUE(s->bind_layout(id, layouts[id - 1].first, layouts[id - 1].second));
     const Param world = direct.find("World"), wvp = direct.find("Wvp"), c = direct.find("c"), e = direct.find("e");
     std::mt19937 rng(seed);
     auto pick = [&](uint32_t n) { return uint32_t(rng() % n); };
@@ -541,7 +543,8 @@ TEST(ParameterStore, SetMatrixAgreesWithSetUnderRandomOperations) {
       std::span<const uint8_t> got = direct.update_block(direct.block(id), changed);
       std::vector<uint8_t> want(got.size(), 0xCD);
       ASSERT_TRUE(logged.write_block(id, want));
-      ASSERT_TRUE(std::equal(got.begin(), got.end(), want.begin())) << "seed " << seed << " op " << op << " block " << id;
+      ASSERT_TRUE(std::equal(got.begin(), got.end(), want.begin()))
+          << "seed " << seed << " op " << op << " block " << id;
       if (!changed && !last[id].empty()) {
         ASSERT_TRUE(std::equal(got.begin(), got.end(), last[id].begin())) << "unchanged: seed " << seed << " op " << op;
       }
@@ -650,7 +653,8 @@ TEST(ParameterStore, MatrixWrittenInPlaceIsTheOneValue) {
   auto b = test::build("float4x4 World; float Gloss;");
   ParameterStore s(b->model);
   const BlockMemberLayout columns[] = {{"World", 0, 64, 0, 16, MatrixOrder::column_major}};
-  const BlockMemberLayout rows[] = {{"World", 16, 64, 0, 16, MatrixOrder::row_major}, {"Gloss", 0, 4, 0, 16, MatrixOrder::column_major}};
+  const BlockMemberLayout rows[] = {{"World", 16, 64, 0, 16, MatrixOrder::row_major},
+                                    {"Gloss", 0, 4, 0, 16, MatrixOrder::column_major}};
   ASSERT_TRUE(s.bind_layout(1, columns, 64));
   const Param world = s.find("World"), gloss = s.find("Gloss");
   float a[16], c[16], back[16];

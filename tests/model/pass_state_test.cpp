@@ -30,7 +30,8 @@ TEST(PassState, D3D9AndD3D11FormsAgree) {
       StencilRef = 3; StencilMask = 0xFF; StencilWriteMask = 0x0F;
       BlendFactor = 0x80402010; MultiSampleAntialias = FALSE; MultiSampleMask = 0xFFFFFFFF;
     } }
-  )", true);
+  )",
+                          true);
   auto d3d11 = test::build(R"(
     BlendState B {
       BlendEnable[0] = TRUE; SrcBlend = SRC_ALPHA; DestBlend = INV_SRC_ALPHA; BlendOp = ADD;
@@ -50,7 +51,8 @@ TEST(PassState, D3D9AndD3D11FormsAgree) {
       SetDepthStencilState(D, 3);
       SetRasterizerState(R);
     } }
-  )", true);
+  )",
+                           true);
   ASSERT_FALSE(d3d9->diags.has_errors()) << d3d9->text();
   ASSERT_FALSE(d3d11->diags.has_errors()) << d3d11->text();
   PassStateSummary a = d3d9->model.techniques[0].passes[0].summary;
@@ -80,7 +82,9 @@ TEST(PassState, D3D9AndD3D11FormsAgree) {
 }
 
 TEST(PassState, D3D9AlphaFollowsColourWithoutSeparateBlend) {
-  auto b = test::build("technique T { pass P { AlphaBlendEnable = TRUE; SrcBlend = One; DestBlend = One; BlendOp = RevSubtract; } }", true);
+  auto b = test::build(
+      "technique T { pass P { AlphaBlendEnable = TRUE; SrcBlend = One; DestBlend = One; BlendOp = RevSubtract; } }",
+      true);
   ASSERT_FALSE(b->diags.has_errors()) << b->text();
   const TargetBlend& t = b->model.techniques[0].passes[0].summary.blend[3];
   EXPECT_TRUE(t.enable);
@@ -90,7 +94,8 @@ TEST(PassState, D3D9AlphaFollowsColourWithoutSeparateBlend) {
 }
 
 TEST(PassState, D3D9TwoSidedOffCopiesFrontToBack) {
-  auto b = test::build("technique T { pass P { StencilEnable = TRUE; StencilFunc = NotEqual; StencilPass = Zero; } }", true);
+  auto b =
+      test::build("technique T { pass P { StencilEnable = TRUE; StencilFunc = NotEqual; StencilPass = Zero; } }", true);
   const PassStateSummary& s = b->model.techniques[0].passes[0].summary;
   EXPECT_EQ(s.stencil_back, s.stencil_front);
   EXPECT_EQ(s.stencil_front.compare, CompareOp::not_equal);
@@ -101,7 +106,8 @@ TEST(PassState, StateObjectDefaultsApplyWhenSet) {
   auto b = test::build(R"(
     DepthStencilState D { StencilEnable = FALSE; };
     technique10 T { pass P { SetDepthStencilState(D, 0); } }
-  )", true);
+  )",
+                       true);
   ASSERT_FALSE(b->diags.has_errors()) << b->text();
   const PassStateSummary& s = b->model.techniques[0].passes[0].summary;
   EXPECT_EQ(s.depth_compare, CompareOp::less);  // D3D10 DepthFunc default, not D3D9's LessEqual
@@ -118,7 +124,8 @@ TEST(PassState, StateObjectArrayElementsAreObjectsOfTheirOwn) {
       pass P1 { SetRasterizerState(Cull[0]); }
       pass P2 { SetRasterizerState(Cull); }
     }
-  )", true);
+  )",
+                       true);
   ASSERT_FALSE(b->diags.has_errors()) << b->text();
   const auto& passes = b->model.techniques[0].passes;
   EXPECT_EQ(passes[0].summary.cull, CullMode::front);

@@ -58,33 +58,26 @@ TEST_P(BrokenCopy, GivesOnePreciseError) {
                                       [](const Diagnostic& x) { return x.severity >= Severity::error; });
   EXPECT_EQ(d.id, m.id) << rendered;
   EXPECT_EQ(sm.presumed(d.range.begin).line, m.line) << rendered;
-  EXPECT_NE(rendered.find("sdk_sample.fx:" + std::to_string(m.line) + ":"), std::string::npos)
-      << rendered;
+  EXPECT_NE(rendered.find("sdk_sample.fx:" + std::to_string(m.line) + ":"), std::string::npos) << rendered;
 }
 
 INSTANTIATE_TEST_SUITE_P(
     SdkSample, BrokenCopy,
     ::testing::Values(
         Mistake{"misspelled state", "CullMode = CCW;", "CullMod = CCW;", 88, "unknown-state"},
-        Mistake{"misspelled enum value", "AddressU = Wrap;", "AddressU = Wrp;", 40,
-                "unknown-state-value"},
-        Mistake{"undefined parameter reference", "<g_MeshTexture>", "<g_MeshTextur>", 36,
-                "undefined-reference"},
-        Mistake{"undefined shader function", "RenderScenePS(true)", "RenderScenPS(true)", 85,
-                "undefined-reference"},
-        Mistake{"unknown shader profile", "compile vs_2_0", "compile vs_9_0", 84,
-                "unknown-shader-profile"},
-        Mistake{"annotation of the wrong type", "string UIName = \"Gloss\";", "string UIName = 3;",
-                25, "annotation-type-mismatch"},
-        Mistake{"duplicate technique", "technique RenderSceneNoTexture",
-                "technique RenderSceneWithTexture1Light", 93, "duplicate-definition"},
+        Mistake{"misspelled enum value", "AddressU = Wrap;", "AddressU = Wrp;", 40, "unknown-state-value"},
+        Mistake{"undefined parameter reference", "<g_MeshTexture>", "<g_MeshTextur>", 36, "undefined-reference"},
+        Mistake{"undefined shader function", "RenderScenePS(true)", "RenderScenPS(true)", 85, "undefined-reference"},
+        Mistake{"unknown shader profile", "compile vs_2_0", "compile vs_9_0", 84, "unknown-shader-profile"},
+        Mistake{"annotation of the wrong type", "string UIName = \"Gloss\";", "string UIName = 3;", 25,
+                "annotation-type-mismatch"},
+        Mistake{"duplicate technique", "technique RenderSceneNoTexture", "technique RenderSceneWithTexture1Light", 93,
+                "duplicate-definition"},
         Mistake{"missing include", "shared float4x4 g_mWorld : WORLD;",
-                "#include \"missing.fxh\"\nshared float4x4 g_mWorld : WORLD;", 13,
-                "include-not-found"},
-        Mistake{"missing semicolon after a state", "ZWriteEnable = true;", "ZWriteEnable = true", 87,
-                "expected-token"},
-        Mistake{"stray token in a pass", "AlphaBlendEnable = false;", "AlphaBlendEnable = false; )",
-                89, "expected-state"}),
+                "#include \"missing.fxh\"\nshared float4x4 g_mWorld : WORLD;", 13, "include-not-found"},
+        Mistake{"missing semicolon after a state", "ZWriteEnable = true;", "ZWriteEnable = true", 87, "expected-token"},
+        Mistake{"stray token in a pass", "AlphaBlendEnable = false;", "AlphaBlendEnable = false; )", 89,
+                "expected-state"}),
     [](const ::testing::TestParamInfo<Mistake>& info) { return "case" + std::to_string(info.index); });
 
 }  // namespace

@@ -105,8 +105,7 @@ TEST(Checker, UnknownStateInEachBlockUsesThatBlocksNames) {
 
 TEST(Checker, UnknownEnumValueSuggestsTheClosestValue) {
   auto c = check("technique t { pass p {\n  AddressU[0] = Clmp;\n  ZFunc = 9;\n  ZFunc = 0;\n} }\n");
-  EXPECT_EQ(c->ids(), (Ids{"unknown-state-value", "unknown-state-value", "duplicate-state",
-                           "unknown-state-value"}));
+  EXPECT_EQ(c->ids(), (Ids{"unknown-state-value", "unknown-state-value", "duplicate-state", "unknown-state-value"}));
   EXPECT_EQ(c->text().substr(0, c->text().find("t.fx:3")),
             "t.fx:2:17: error: unknown value 'Clmp' for state 'AddressU'; did you mean 'Clamp'? "
             "[unknown-state-value]\n"
@@ -129,11 +128,9 @@ TEST(Checker, WrongValueTypes) {
       "  CullMode = {1, 2};\n"
       "  VertexShader = vs;\n"
       "} }\n");
-  EXPECT_EQ(c->ids(), (Ids{"state-type-mismatch", "state-type-mismatch", "state-type-mismatch",
-                           "state-type-mismatch", "state-type-mismatch", "state-type-mismatch",
-                           "state-type-mismatch", "duplicate-state"}));
-  EXPECT_EQ(c->diags.diagnostics()[0].message,
-            "state 'ZWriteEnable' expects a value of type bool, found a string");
+  EXPECT_EQ(c->ids(), (Ids{"state-type-mismatch", "state-type-mismatch", "state-type-mismatch", "state-type-mismatch",
+                           "state-type-mismatch", "state-type-mismatch", "state-type-mismatch", "duplicate-state"}));
+  EXPECT_EQ(c->diags.diagnostics()[0].message, "state 'ZWriteEnable' expects a value of type bool, found a string");
   EXPECT_EQ(c->diags.diagnostics()[1].message,
             "state 'Texture' expects a value of type texture, found 'float4' parameter 'f'");
 }
@@ -148,10 +145,9 @@ TEST(Checker, IndexRules) {
       "  VertexShaderConstant = <m>;\n"
       "  AddressU[15] = Clamp;\n"
       "} }\n");
-  EXPECT_EQ(c->ids(), (Ids{"state-index-out-of-range", "state-index-out-of-range",
-                           "state-not-indexable", "state-index-required"}));
-  EXPECT_EQ(c->diags.diagnostics()[0].message,
-            "index 8 is out of range for state 'ColorOp'; valid indices are 0..7");
+  EXPECT_EQ(c->ids(), (Ids{"state-index-out-of-range", "state-index-out-of-range", "state-not-indexable",
+                           "state-index-required"}));
+  EXPECT_EQ(c->diags.diagnostics()[0].message, "index 8 is out of range for state 'ColorOp'; valid indices are 0..7");
 }
 
 TEST(Checker, DuplicateStateWarnsWithNote) {
@@ -177,8 +173,8 @@ TEST(Checker, DuplicateDefinitionsPointAtThePreviousOne) {
       "technique10 t { pass p {} pass p {} }\n"
       "technique u { pass p {} }\n"
       "technique t { pass q {} }\n");
-  EXPECT_EQ(c->ids(), (Ids{"duplicate-definition", "duplicate-definition", "duplicate-definition",
-                           "duplicate-definition"}))
+  EXPECT_EQ(c->ids(),
+            (Ids{"duplicate-definition", "duplicate-definition", "duplicate-definition", "duplicate-definition"}))
       << c->text();
   EXPECT_NE(c->text().find("t.fx:2:8: error: parameter 'Color' is already defined "
                            "[duplicate-definition]\nfloat4 Color;\n       ^~~~~\n"
@@ -187,8 +183,7 @@ TEST(Checker, DuplicateDefinitionsPointAtThePreviousOne) {
       << c->text();
   EXPECT_NE(c->text().find("t.fx:7:7: error: function 'f' is already defined"), std::string::npos);
   EXPECT_NE(c->text().find("t.fx:8:32: error: pass 'p' is already defined"), std::string::npos) << c->text();
-  EXPECT_NE(c->text().find("t.fx:10:11: error: technique 't' is already defined"),
-            std::string::npos);
+  EXPECT_NE(c->text().find("t.fx:10:11: error: technique 't' is already defined"), std::string::npos);
 }
 
 // D3DX9 effects that ship with two passes of one name load (passes are addressed by index):
@@ -212,8 +207,8 @@ TEST(Checker, UndefinedReferences) {
       "  PixelShader = compile ps_2_0 PSMan();\n"
       "  Texture[0] = <nothing>;\n"
       "} }\n");
-  EXPECT_EQ(c->ids(), (Ids{"undefined-reference", "undefined-reference", "undefined-reference",
-                           "undefined-reference"}));
+  EXPECT_EQ(c->ids(),
+            (Ids{"undefined-reference", "undefined-reference", "undefined-reference", "undefined-reference"}));
   const auto& d = c->diags.diagnostics();
   EXPECT_EQ(d[0].message, "use of undefined parameter 'mWrld'; did you mean 'mWorld'?");
   ASSERT_EQ(d[0].fixits.size(), 1u);
@@ -233,8 +228,7 @@ TEST(Checker, ShaderProfilesAndStages) {
       "  VertexShader = compile vs_9_0 VS();\n"
       "} }\n");
   EXPECT_EQ(c->ids(), (Ids{"shader-stage-mismatch", "unknown-shader-profile"}));
-  EXPECT_EQ(c->diags.diagnostics()[0].message,
-            "state 'PixelShader' needs a ps_* profile, found 'vs_2_0'");
+  EXPECT_EQ(c->diags.diagnostics()[0].message, "state 'PixelShader' needs a ps_* profile, found 'vs_2_0'");
 }
 
 // Stream output may capture a vertex shader (no geometry stage); any other stage is still
@@ -254,15 +248,16 @@ TEST(Checker, StreamOutputTakesAVertexOrGeometryShader) {
 // and one past the 16 characters the lookup packs are told apart.
 TEST(Checker, ShaderProfileNamesMatchWhole) {
   auto profile_ids = [](std::string_view profile) {
-    return check("float4 PS() : COLOR { return 0; }\n"
-                 "technique t { pass p { PixelShader = compile " + std::string(profile) +
-                 " PS(); } }\n")
+    return check(
+               "float4 PS() : COLOR { return 0; }\n"
+               "technique t { pass p { PixelShader = compile " +
+               std::string(profile) + " PS(); } }\n")
         ->ids();
   };
   for (std::string_view known : {"ps_2_0", "PS_3_0", "ps_4_0_level_9_3", "Ps_2_Sw", "ps_5_0"})
     EXPECT_EQ(profile_ids(known), Ids{}) << known;
-  for (std::string_view unknown : {"ps", "ps_", "ps_2", "ps_2_00", "ps_4_0_level_9_31",
-                                   "ps_4_0_level_9_3x", "ps_2_0_", "xps_2_0", "ps_9_0"})
+  for (std::string_view unknown :
+       {"ps", "ps_", "ps_2", "ps_2_00", "ps_4_0_level_9_31", "ps_4_0_level_9_3x", "ps_2_0_", "xps_2_0", "ps_9_0"})
     EXPECT_EQ(profile_ids(unknown), (Ids{"unknown-shader-profile"})) << unknown;
 }
 
@@ -274,9 +269,8 @@ TEST(Checker, AnnotationAndParameterValueTypes) {
       "string XFile = 3;\n"
       "float2 uv = {1, 2, 3};\n"
       "technique t { pass p {} }\n");
-  EXPECT_EQ(c->ids(), (Ids{"annotation-type-mismatch", "annotation-type-mismatch",
-                           "annotation-type-mismatch", "duplicate-definition",
-                           "parameter-type-mismatch", "parameter-type-mismatch"}))
+  EXPECT_EQ(c->ids(), (Ids{"annotation-type-mismatch", "annotation-type-mismatch", "annotation-type-mismatch",
+                           "duplicate-definition", "parameter-type-mismatch", "parameter-type-mismatch"}))
       << c->text();
   const auto& d = c->diags.diagnostics();
   EXPECT_EQ(d[0].message, "annotation 'UIName' is a string; its value is not");
@@ -327,11 +321,10 @@ TEST(Checker, D3D11PassCallRules) {
       "  SetPixelShader(CompileShader(vs_5_0, VS()));\n"
       "  ZEnable = TRUE;\n"
       "} }\n");
-  EXPECT_EQ(c->ids(), (Ids{"state-type-mismatch", "state-call-form", "state-call-form",
-                           "shader-stage-mismatch", "mixed-state-api"}))
+  EXPECT_EQ(c->ids(), (Ids{"state-type-mismatch", "state-call-form", "state-call-form", "shader-stage-mismatch",
+                           "mixed-state-api"}))
       << c->text();
-  EXPECT_EQ(c->diags.diagnostics()[0].message,
-            "state 'SetBlendState' expects a BlendState, found RasterizerState 'R'");
+  EXPECT_EQ(c->diags.diagnostics()[0].message, "state 'SetBlendState' expects a BlendState, found RasterizerState 'R'");
   EXPECT_EQ(c->diags.diagnostics()[1].message, "'SetRasterizerState' takes 1 argument, found 2");
 }
 
@@ -355,11 +348,9 @@ TEST(Checker, ProfileRules) {
   ASSERT_EQ(d3d9->ids(), (Ids{"d3d9-technique"}));
   EXPECT_EQ(d3d9->diags.diagnostics()[0].severity, Severity::warning);
 
-  auto hull = check("technique10 t { pass p { SetHullShader(NULL); } }\n",
-                    {.profile = EffectProfile::fx_4_0});
+  auto hull = check("technique10 t { pass p { SetHullShader(NULL); } }\n", {.profile = EffectProfile::fx_4_0});
   EXPECT_EQ(hull->ids(), (Ids{"profile-mismatch"}));
-  auto calls9 = check("technique t { pass p { SetPixelShader(NULL); } }\n",
-                      {.profile = EffectProfile::fx_2_0});
+  auto calls9 = check("technique t { pass p { SetPixelShader(NULL); } }\n", {.profile = EffectProfile::fx_2_0});
   EXPECT_EQ(calls9->ids(), (Ids{"profile-mismatch"}));
 }
 
@@ -413,8 +404,7 @@ TEST(Checker, InfersTheProfileFromWhatTheEffectUses) {
   };
   EXPECT_EQ(infer("technique t { pass p { ZEnable = TRUE; } }"), EffectProfile::fx_2_0);
   EXPECT_EQ(infer("technique10 t { pass p {} }"), EffectProfile::fx_4_0);
-  EXPECT_EQ(infer("RasterizerState r { CullMode = NONE; }; technique t { pass p {} }"),
-            EffectProfile::fx_4_0);
+  EXPECT_EQ(infer("RasterizerState r { CullMode = NONE; }; technique t { pass p {} }"), EffectProfile::fx_4_0);
   EXPECT_EQ(infer("technique t { pass p { SetComputeShader(NULL); } }"), EffectProfile::fx_5_0);
   // State names are matched ignoring case, here too.
   EXPECT_EQ(infer("technique t { pass p { setcomputeshader(NULL); } }"), EffectProfile::fx_5_0);
@@ -431,8 +421,7 @@ TEST(Checker, GlslBlocksAsShaders) {
       "GLSLShader Lighting { void main() {} }\n"
       "technique t { pass p { VertexShader = { Common, Lighting }; PixelShader = { Common, Lightning }; } }\n");
   ASSERT_EQ(c->ids(), (Ids{"undefined-reference"})) << c->text();
-  EXPECT_EQ(c->diags.diagnostics()[0].message,
-            "use of undefined GLSL block 'Lightning'; did you mean 'Lighting'?");
+  EXPECT_EQ(c->diags.diagnostics()[0].message, "use of undefined GLSL block 'Lightning'; did you mean 'Lighting'?");
 }
 
 // docs/effect-format.md's GLSL example, and every stage spelling the state table gives.

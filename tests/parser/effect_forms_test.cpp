@@ -83,8 +83,9 @@ TEST(EffectForms, StateObjectArrayWithElementInitializers) {
   EXPECT_EQ(blends.element_states[2][0].name, "BlendOp");
   EXPECT_EQ(blends.element_states[2][0].value->text, "Rev_Subtract");
   EXPECT_EQ(f->decl(2).state_object->element_states.size(), 2u);
-  auto g = run_front_end("BlendState B[2] { { BlendOp = Add; }, { BlendOp = Sum; } };\n"
-               "technique10 T { pass P { } }\n");
+  auto g = run_front_end(
+      "BlendState B[2] { { BlendOp = Add; }, { BlendOp = Sum; } };\n"
+      "technique10 T { pass P { } }\n");
   ASSERT_EQ(g->ids(), std::vector<std::string>{"unknown-state-value"}) << g->text();
   auto h = run_front_end("BlendState B[2] { { BlendOp = Add; } { BlendOp = Add; } };\nfloat after;\n");
   EXPECT_EQ(h->diags.diagnostics().at(0).id, "expected-token") << h->text();
@@ -166,8 +167,7 @@ TEST(EffectForms, InterfacesAndClasses) {
   EXPECT_FALSE(ambient.methods[1].body.empty());
   EXPECT_EQ(infer_profile(f->parsed.ast), EffectProfile::fx_5_0);
   // Older profiles have no dynamic linkage.
-  auto g = run_front_end("interface I { float4 F(float4 c); };\ntechnique10 T { pass P { } }\n",
-               EffectProfile::fx_4_0);
+  auto g = run_front_end("interface I { float4 F(float4 c); };\ntechnique10 T { pass P { } }\n", EffectProfile::fx_4_0);
   ASSERT_EQ(g->ids(), std::vector<std::string>{"profile-mismatch"}) << g->text();
 }
 
@@ -205,13 +205,16 @@ TEST(EffectForms, MethodsDefinedOutsideTheirClass) {
       "float C::F(float x) { return x; }\n"
       "float4 Fine() : SV_Target { return 1; }\n"
       "technique11 T { pass P { SetPixelShader(CompileShader(ps_5_0, Fine())); } }\n");
-  EXPECT_EQ(g->ids(), (std::vector<std::string>{"method-outside-class", "method-outside-class", "method-outside-class"}))
+  EXPECT_EQ(g->ids(),
+            (std::vector<std::string>{"method-outside-class", "method-outside-class", "method-outside-class"}))
       << g->text();
   const std::string text = g->text();
-  EXPECT_NE(text.find("t.fx:3:7: error: 'S' is not a class declared before the definition of 'S::F'"), std::string::npos)
+  EXPECT_NE(text.find("t.fx:3:7: error: 'S' is not a class declared before the definition of 'S::F'"),
+            std::string::npos)
       << text;
   EXPECT_NE(text.find("t.fx:4:10: error: class 'C' declares no method 'G' with 0 parameters left to define"),
-            std::string::npos) << text;
+            std::string::npos)
+      << text;
   EXPECT_NE(text.find("t.fx:2:7: note: class 'C' declared here"), std::string::npos) << text;
   EXPECT_EQ(g->parsed.ast.decls.size(), 4u) << "parsing goes on after each";
 }
@@ -227,7 +230,7 @@ TEST(EffectForms, SamplerStateFollowsTheProfile) {
       "technique10 T { pass P { } }\n");
   EXPECT_CLEAN(f);
   auto g = run_front_end("sampler2D S = sampler_state { MinFilter = Linear; };\ntechnique10 T { pass P { } }\n",
-               EffectProfile::fx_4_0);
+                         EffectProfile::fx_4_0);
   EXPECT_EQ(g->text(),
             "t.fx:1:31: error: unknown state 'MinFilter' in a SamplerState; did you mean "
             "'Filter'? [unknown-state]\n"
@@ -235,8 +238,9 @@ TEST(EffectForms, SamplerStateFollowsTheProfile) {
             "                              ^~~~~~~~~\n"
             "t.fx:1:31: note: fix-it: replace with 'Filter'\n"
             "t.fx:1:31: note: a Direct3D 9 sampler state, read in fx_2_0 only; this effect is fx_4_0\n");
-  auto h = run_front_end("sampler2D S = sampler_state { Filter = MIN_MAG_MIP_LINEAR; };\n"
-               "technique T { pass P { } }\n");
+  auto h = run_front_end(
+      "sampler2D S = sampler_state { Filter = MIN_MAG_MIP_LINEAR; };\n"
+      "technique T { pass P { } }\n");
   ASSERT_EQ(h->diags.diagnostics().size(), 1u) << h->text();
   EXPECT_EQ(h->diags.diagnostics()[0].notes.at(0).message,
             "a Direct3D 10 sampler state, read in fx_4_0 and later; this effect is fx_2_0");
@@ -244,8 +248,9 @@ TEST(EffectForms, SamplerStateFollowsTheProfile) {
       "sampler2D S = sampler_state { MinFilter = Linear; Filter = MIN_MAG_MIP_POINT; };\n"
       "technique T9 { pass P { } }\ntechnique10 T10 { pass P { } }\n");
   EXPECT_CLEAN(both);
-  auto d3d10_only = run_front_end("sampler2D S = sampler_state { MinFilter = Linear; };\n"
-                        "technique10 T10 { pass P { } }\n");
+  auto d3d10_only = run_front_end(
+      "sampler2D S = sampler_state { MinFilter = Linear; };\n"
+      "technique10 T10 { pass P { } }\n");
   EXPECT_EQ(d3d10_only->diags.diagnostics().size(), 1u) << d3d10_only->text();
 }
 

@@ -41,7 +41,7 @@ TEST(FxcRules, AnnotationsAreLiteralsOfNumericBoolOrStringType) {
             "float x < int a = 1; int b = a + 1; >;\n"
             "                             ^\n");
   auto h = run_front_end(std::string("float x < texture t = 0; float4x4 m = 0; bool b = true; vector v = 1; >;\n") +
-               kTechnique);
+                         kTechnique);
   EXPECT_EQ(h->ids(), Ids{"annotation-type"}) << h->text();
   EXPECT_EQ(h->diags.diagnostics()[0].message,
             "annotation 't' has type 'texture'; annotations take numeric, bool and string types");
@@ -60,10 +60,10 @@ TEST(FxcRules, Fx20EffectNeedsATechnique) {
 
 TEST(FxcRules, StructParametersHoldNoObjects) {
   auto f = run_front_end(std::string("struct Material { float4 colour; texture diffuse; };\n"
-                           "struct Surface { float gloss; Material layers[2]; };\n"
-                           "Material m;\nSurface s;\nstatic Material local;\n"
-                           "struct Plain { float4 a; };\nPlain p;\n") +
-               kTechnique);
+                                     "struct Surface { float gloss; Material layers[2]; };\n"
+                                     "Material m;\nSurface s;\nstatic Material local;\n"
+                                     "struct Plain { float4 a; };\nPlain p;\n") +
+                         kTechnique);
   ASSERT_EQ(f->ids(), (Ids{"object-in-struct", "object-in-struct"})) << f->text();
   EXPECT_EQ(f->diags.diagnostics()[0].message,
             "parameter 'm' is a struct holding the object member diffuse (texture); an effect "

@@ -38,9 +38,8 @@ using K = TokenKind;
 TEST(Lexer, NumbersWithSuffixes) {
   Lexed l("1.0f 1.h 0x1F 1e-3 10u .5 3l 1e+5 7");
   EXPECT_EQ(l.spellings(), (S{"1.0f", "1.h", "0x1F", "1e-3", "10u", ".5", "3l", "1e+5", "7"}));
-  EXPECT_EQ(l.kinds(), (std::vector<K>{K::floating, K::floating, K::integer, K::floating,
-                                       K::integer, K::floating, K::integer, K::floating,
-                                       K::integer}));
+  EXPECT_EQ(l.kinds(), (std::vector<K>{K::floating, K::floating, K::integer, K::floating, K::integer, K::floating,
+                                       K::integer, K::floating, K::integer}));
   EXPECT_TRUE(l.diags.diagnostics().empty());
 }
 
@@ -90,9 +89,8 @@ TEST(Lexer, AssemblyVersionIsIdentifierThenPpNumber) {
 
 TEST(Lexer, PunctuatorsTakeTheLongestMatch) {
   Lexed l("a+=b>>=c->d<<e##f#g::h||i&&j!=k<=l>=m==n++ --o");
-  EXPECT_EQ(l.spellings(), (S{"a", "+=", "b", ">>=", "c", "->", "d", "<<", "e", "##", "f", "#",
-                              "g", "::", "h", "||", "i", "&&", "j", "!=", "k", "<=", "l", ">=",
-                              "m", "==", "n", "++", "--", "o"}));
+  EXPECT_EQ(l.spellings(), (S{"a", "+=", "b", ">>=", "c", "->", "d", "<<", "e", "##", "f", "#",  "g",  "::", "h", "||",
+                              "i", "&&", "j", "!=",  "k", "<=", "l", ">=", "m", "==", "n", "++", "--", "o"}));
   EXPECT_EQ(l.tokens[9].kind, K::hashhash);
   EXPECT_EQ(l.tokens[3].kind, K::greatergreaterequal);
 }
@@ -227,7 +225,12 @@ TEST(Lexer, BatchesYieldTheTokensOfNext) {
       "\"str\\\"ing\" 'c' \"abc\nnext 'x \xC3\xA9 $ @ `",
       std::string("a\0b 1\0 +\0", 9),
       "a /* never closed\nb",
-      "x/", "7", ".", "#", "\\", "",
+      "x/",
+      "7",
+      ".",
+      "#",
+      "\\",
+      "",
   };
   for (const char* file : {"brdf.fx", "sdk_sample.fx", "state_snippets.fx", "wood.fx"}) {
     std::ifstream in(std::string(FXKIT_SOURCE_DIR) + "/tests/parser/data/" + file, std::ios::binary);
@@ -245,8 +248,8 @@ TEST(Lexer, BatchesYieldTheTokensOfNext) {
     while (!expected.back().is(K::eof));
     NameFilter stops;
     for (std::string_view name : {"b", "abcd", "define", "float4", "VS_OUTPUT"}) stops.add(name);
-    for (auto [max, filter] : {std::pair<size_t, const NameFilter*>{1, nullptr}, {3, nullptr},
-                               {256, nullptr}, {256, &stops}}) {
+    for (auto [max, filter] :
+         {std::pair<size_t, const NameFilter*>{1, nullptr}, {3, nullptr}, {256, nullptr}, {256, &stops}}) {
       DiagnosticSink diags;
       Lexer batched(sm, id, diags);
       std::vector<Token> got;
@@ -255,8 +258,7 @@ TEST(Lexer, BatchesYieldTheTokensOfNext) {
         size_t n = batched.next_batch(batch, max, filter);
         ASSERT_GE(n, 1u);
         for (size_t i = 0; filter && i + 1 < n; ++i)
-          EXPECT_FALSE(batch[i].is(K::identifier) && filter->may_contain(batch[i].text()))
-              << batch[i].text();
+          EXPECT_FALSE(batch[i].is(K::identifier) && filter->may_contain(batch[i].text())) << batch[i].text();
         got.insert(got.end(), batch, batch + n);
       }
       ASSERT_EQ(got.size(), expected.size()) << text;

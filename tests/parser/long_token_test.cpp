@@ -35,13 +35,12 @@ std::vector<LongCase> long_cases() {
       {"character", "a ", "'" + x + "'", " b", TokenKind::character, {}},
       // One diagnostic for a whole run of UTF-8 continuation bytes, so one token.
       {"unknown", "a ", "\xC3" + std::string(kLong, '\xA9'), " b", TokenKind::unknown, {}},
-      {"identifier split by a continuation", "a ", "ab\\\n" + x, " b", TokenKind::identifier,
-       "ab" + x},
+      {"identifier split by a continuation", "a ", "ab\\\n" + x, " b", TokenKind::identifier, "ab" + x},
   };
   // Around the escape: the longest inline length, the first kept one, the next.
   for (size_t size : {Token::kLongText - 1, Token::kLongText, Token::kLongText + 1})
-    cases.push_back({"identifier of " + std::to_string(size), "a ", std::string(size, 'y'), " b",
-                     TokenKind::identifier, {}});
+    cases.push_back(
+        {"identifier of " + std::to_string(size), "a ", std::string(size, 'y'), " b", TokenKind::identifier, {}});
   return cases;
 }
 
@@ -135,8 +134,7 @@ TEST(LongTokens, PreprocessExactly) {
     p.options.include_dirs = {"lib"};
     p.files["lib/" + x + ".fxh"] = "int angled;";
     p.files[x + ".fxh"] = "int quoted;";
-    EXPECT_EQ(p.run("#include <" + x + ".fxh>\n#include \"" + x + ".fxh\"\n"),
-              "int angled ; int quoted ;");
+    EXPECT_EQ(p.run("#include <" + x + ".fxh>\n#include \"" + x + ".fxh\"\n"), "int angled ; int quoted ;");
     EXPECT_EQ(p.ids(), "");
   }
 }
@@ -145,8 +143,7 @@ TEST(LongTokens, ParseExactly) {
   std::string x(kLong, 'x');
   SourceManager sm;
   DiagnosticSink diags;
-  ParsedEffect e = parse_effect_text("long.fx", "float " + x + ";\nstring s = \"" + x + "\";\n",
-                                     sm, diags);
+  ParsedEffect e = parse_effect_text("long.fx", "float " + x + ";\nstring s = \"" + x + "\";\n", sm, diags);
   // The parser takes the name whole; the checker then says it is too long for the shader
   // compiler (glslang cuts names at 1024 characters).
   ASSERT_EQ(diags.error_count(), 1u);

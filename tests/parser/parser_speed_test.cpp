@@ -51,9 +51,10 @@ TEST(ParserSpeed, LargeInput) {
   }
   EXPECT_FALSE(diags.has_errors());
   double mb = double(source.size()) / (1 << 20);
-  std::printf("[ parse speed ] %.1f MiB, %zu tokens, %zu decls: first %.0f MiB/s, best of 5 "
-              "%.0f MiB/s (target 150 MiB/s in an optimised build)\n",
-              mb, tokens.size(), decls, mb / first_s, mb / best_s);
+  std::printf(
+      "[ parse speed ] %.1f MiB, %zu tokens, %zu decls: first %.0f MiB/s, best of 5 "
+      "%.0f MiB/s (target 150 MiB/s in an optimised build)\n",
+      mb, tokens.size(), decls, mb / first_s, mb / best_s);
   double s = best_s;
   RecordProperty("parse_mib_per_s", std::to_string(mb / s));
 }

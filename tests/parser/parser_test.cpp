@@ -23,12 +23,11 @@ TEST(Parser, StorageClasses) {
       "column_major groupshared nointerpolation precise float x;\n");
   EXPECT_CLEAN(p);
   ASSERT_EQ(p->effect.decls.size(), 2u);
-  EXPECT_EQ(var(*p, 0).storage, uint32_t(ast::kShared | ast::kStatic | ast::kUniform |
-                                         ast::kConst | ast::kExtern | ast::kVolatile |
-                                         ast::kRowMajor));
+  EXPECT_EQ(var(*p, 0).storage, uint32_t(ast::kShared | ast::kStatic | ast::kUniform | ast::kConst | ast::kExtern |
+                                         ast::kVolatile | ast::kRowMajor));
   EXPECT_EQ(var(*p, 0).type.name, "float4x4");
-  EXPECT_EQ(var(*p, 1).storage, uint32_t(ast::kColumnMajor | ast::kGroupShared |
-                                         ast::kNoInterpolation | ast::kPrecise));
+  EXPECT_EQ(var(*p, 1).storage,
+            uint32_t(ast::kColumnMajor | ast::kGroupShared | ast::kNoInterpolation | ast::kPrecise));
 }
 
 TEST(Parser, Types) {
@@ -38,10 +37,10 @@ TEST(Parser, Types) {
       "sampler3D o; samplerCUBE q; Texture2D<float4> r; matrix<float,4,4> s;\n"
       "unsigned int u;\n");
   EXPECT_CLEAN(p);
-  const char* names[] = {"half3",     "matrix",      "vector",        "DWORD",    "bool",
-                         "int",       "string",      "texture",       "texture2D", "texture3D",
-                         "textureCUBE", "volumetexture", "sampler",     "sampler2D", "sampler3D",
-                         "samplerCUBE", "Texture2D", "matrix",        "unsigned int"};
+  const char* names[] = {"half3",       "matrix",        "vector",  "DWORD",       "bool",
+                         "int",         "string",        "texture", "texture2D",   "texture3D",
+                         "textureCUBE", "volumetexture", "sampler", "sampler2D",   "sampler3D",
+                         "samplerCUBE", "Texture2D",     "matrix",  "unsigned int"};
   ASSERT_EQ(p->effect.decls.size(), std::size(names));
   for (size_t i = 0; i < std::size(names); ++i) EXPECT_EQ(var(*p, i).type.name, names[i]);
   EXPECT_EQ(var(*p, 16).type.template_arg, "float4");

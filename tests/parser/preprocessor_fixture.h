@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "../support/patience.h"
 #include "fx/diagnostic_render.h"
 #include "fx/lexer.h"
 #include "fx/preprocessor.h"
-#include "../support/patience.h"
 
 namespace fx::test {
 

@@ -9,10 +9,10 @@
 namespace fx {
 namespace {
 
+using test::kHangSeconds;
 using test::Pp;
 using test::seconds_since;
 using test::spelled;
-using test::kHangSeconds;
 
 TEST(PreprocessorIncludes, QuotedSearchesIncluderFolderFirst) {
   Pp p;
@@ -20,15 +20,12 @@ TEST(PreprocessorIncludes, QuotedSearchesIncluderFolderFirst) {
   p.files["fx/common.fxh"] = "local\n";
   p.files["lib/common.fxh"] = "library\n";
   p.files["lib/only.fxh"] = "only\n#include \"common.fxh\"\n";
-  p.files["fx/main.fx"] =
-      "#include \"common.fxh\"\n#include <common.fxh>\n#include \"only.fxh\"\n";
+  p.files["fx/main.fx"] = "#include \"common.fxh\"\n#include <common.fxh>\n#include \"only.fxh\"\n";
   std::vector<Token> out;
   Preprocessor pp(p.sm, p.diags, p.options);
   EXPECT_TRUE(pp.run_file("fx/main.fx", out));
   EXPECT_EQ(Pp::spell(out), "local library only library");
-  EXPECT_EQ(pp.files(),
-            (std::vector<std::string>{"fx/main.fx", "fx/common.fxh", "lib/common.fxh",
-                                      "lib/only.fxh"}));
+  EXPECT_EQ(pp.files(), (std::vector<std::string>{"fx/main.fx", "fx/common.fxh", "lib/common.fxh", "lib/only.fxh"}));
   ASSERT_EQ(pp.includes().size(), 4u);
   EXPECT_EQ(pp.includes()[3].includer, "lib/only.fxh");
   EXPECT_EQ(pp.includes()[3].included, "lib/common.fxh");
@@ -76,8 +73,9 @@ TEST(PreprocessorIncludes, CaseInsensitiveFallbackWarnsWithRealName) {
   const Diagnostic& d = p.only();
   EXPECT_EQ(d.id, "include-case-mismatch");
   EXPECT_EQ(d.severity, Severity::warning);
-  EXPECT_EQ(d.message, "'shaders\\common\\LIGHTING.FXH' matches 'Shaders/Common/Lighting.fxh' "
-                       "only when ignoring case");
+  EXPECT_EQ(d.message,
+            "'shaders\\common\\LIGHTING.FXH' matches 'Shaders/Common/Lighting.fxh' "
+            "only when ignoring case");
   EXPECT_EQ(p.read_files[1], "Shaders/Common/Lighting.fxh");
   // Without a lister there is no fallback.
   p.options.lister = nullptr;
@@ -169,8 +167,9 @@ TEST(PreprocessorIncludes, DepthLimitStopsCyclesQuickly) {
   EXPECT_LT(seconds_since(start), kHangSeconds);
   const Diagnostic& d = p.only();
   EXPECT_EQ(d.id, "limit-exceeded");
-  EXPECT_EQ(d.message, "#include nested more than 200 levels deep (include cycle: 'b.fxh' "
-                       "includes itself)");
+  EXPECT_EQ(d.message,
+            "#include nested more than 200 levels deep (include cycle: 'b.fxh' "
+            "includes itself)");
   EXPECT_EQ(p.tokens.size(), 200u);  // 199 files' tokens and the eof; `after` is not reached
 }
 

@@ -10,15 +10,14 @@
 namespace fx {
 namespace {
 
+using test::kHangSeconds;
 using test::Pp;
 using test::seconds_since;
-using test::kHangSeconds;
 
 TEST(PreprocessorLimits, ExponentialMacroHitsTheExpansionLimit) {
   std::string src = "#define A0 x x\n";
   for (int i = 1; i <= 40; ++i)
-    src += "#define A" + std::to_string(i) + " A" + std::to_string(i - 1) + " A" +
-           std::to_string(i - 1) + "\n";
+    src += "#define A" + std::to_string(i) + " A" + std::to_string(i - 1) + " A" + std::to_string(i - 1) + "\n";
   src += "A40\n";
   Pp p;
   auto start = std::chrono::steady_clock::now();
@@ -31,8 +30,7 @@ TEST(PreprocessorLimits, ExponentialMacroHitsTheExpansionLimit) {
 TEST(PreprocessorLimits, ExponentialArgumentsHitTheTokenLimit) {
   // Each level doubles an argument: the token budget stops it, not memory.
   std::string src = "#define D0(x) x x\n";
-  for (int i = 1; i <= 40; ++i)
-    src += "#define D" + std::to_string(i) + "(x) D" + std::to_string(i - 1) + "(x x)\n";
+  for (int i = 1; i <= 40; ++i) src += "#define D" + std::to_string(i) + "(x) D" + std::to_string(i - 1) + "(x x)\n";
   src += "D40(y)\n";
   Pp p;
   p.options.limits.max_tokens = 1u << 20;
@@ -53,8 +51,7 @@ TEST(PreprocessorLimits, DeepParenthesesInIf) {
   EXPECT_EQ(p.only().id, "limit-exceeded");
   // Within the limit it evaluates.
   Pp q;
-  EXPECT_EQ(q.run("#if " + std::string(100, '(') + "1" + std::string(100, ')') + "\nyes\n#endif\n"),
-            "yes");
+  EXPECT_EQ(q.run("#if " + std::string(100, '(') + "1" + std::string(100, ')') + "\nyes\n#endif\n"), "yes");
   Pp r;
   EXPECT_EQ(r.run("#if " + std::string(10000, '!') + "1\n#endif\n"), "");
   EXPECT_EQ(r.only().id, "limit-exceeded");
@@ -100,8 +97,8 @@ TEST(PreprocessorThroughput, GeneratedEffect) {
   Preprocessor pp(p.sm, p.diags, p.options);
   ASSERT_TRUE(pp.run_buffer("gen.fx", std::move(text), out));
   double s = seconds_since(start);
-  std::printf("preprocessed %.1f MB in %.3f s: %.1f MB/s (%zu tokens)\n", src.size() / 1e6, s,
-              src.size() / 1e6 / s, out.size());
+  std::printf("preprocessed %.1f MB in %.3f s: %.1f MB/s (%zu tokens)\n", src.size() / 1e6, s, src.size() / 1e6 / s,
+              out.size());
   size_t lines = 0;
   for (char c : src) lines += c == '\n';
   EXPECT_EQ(out.size(), (lines - 2) * 22 + 1);

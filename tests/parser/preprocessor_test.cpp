@@ -136,16 +136,14 @@ TEST(PreprocessorMacros, NamesAmongManyPlainTokensExpand) {
   std::string plain;
   for (int i = 0; i < 300; ++i) plain.append("a").append(std::to_string(i)).append(" ");
   const std::string& expected = plain;
-  EXPECT_EQ(p.run("#define N 4\n#define SCALE(x) (x)\n" + plain + "N " + plain + "SC\\\nALE(1) " +
-                  plain + "N\n"),
+  EXPECT_EQ(p.run("#define N 4\n#define SCALE(x) (x)\n" + plain + "N " + plain + "SC\\\nALE(1) " + plain + "N\n"),
             expected + "4 " + expected + "( 1 ) " + expected + "4");
   EXPECT_TRUE(p.ok);
 }
 
 TEST(PreprocessorMacros, FunctionLikeNameWithoutParensIsAnIdentifier) {
   Pp p;
-  EXPECT_EQ(p.run("#define f(x) [x]\nf; f\n(1) f ( 2 )\n#define g (y)\ng\n"),
-            "f ; [ 1 ] [ 2 ] ( y )");
+  EXPECT_EQ(p.run("#define f(x) [x]\nf; f\n(1) f ( 2 )\n#define g (y)\ng\n"), "f ; [ 1 ] [ 2 ] ( y )");
 }
 
 TEST(PreprocessorMacros, Redefinition) {
@@ -172,14 +170,14 @@ TEST(PreprocessorMacros, ArgumentErrors) {
   EXPECT_EQ(q.ids(), "unterminated-macro-call");
   Pp r;
   r.run("#define f(a, a) a\n#define g(x) #y\n#define h ## x\n#define 3 x\n#define defined\n");
-  EXPECT_EQ(r.ids(), "macro-definition macro-definition macro-definition invalid-macro-name "
-                     "invalid-macro-name");
+  EXPECT_EQ(r.ids(),
+            "macro-definition macro-definition macro-definition invalid-macro-name "
+            "invalid-macro-name");
 }
 
 TEST(PreprocessorMacros, InvalidPasteKeepsBothTokens) {
   Pp p;
-  EXPECT_EQ(p.run("#define cat(a, b) a ## b\ncat(+, /)\ncat(x, 1) cat(1, .5e) cat(-, =)\n"),
-            "+ / x1 1.5e -=");
+  EXPECT_EQ(p.run("#define cat(a, b) a ## b\ncat(+, /)\ncat(x, 1) cat(1, .5e) cat(-, =)\n"), "+ / x1 1.5e -=");
   EXPECT_EQ(p.ids(), "invalid-paste");
   EXPECT_EQ(p.tokens[2].kind, TokenKind::identifier);
   EXPECT_EQ(p.tokens[3].kind, TokenKind::floating);
@@ -246,30 +244,46 @@ TEST(PreprocessorConditionals, Arithmetic) {
     bool value;
   };
   const Case cases[] = {
-      {"1 + 2 * 3 == 7", true},   {"(1 + 2) * 3 == 9", true}, {"(1 << 4) == 16", true},
-      {"-1 < 0", true},           {"-1 < 0u", false},         {"0x10 == 16 && 010 == 8", true},
-      {"10 / 3 == 3", true},      {"-7 % 3 == -1", true},     {"!defined(FOO)", false},
-      {"defined FOO && FOO == 5", true}, {"defined(BAR)", false}, {"1 ? 2 : 0", true},
-      {"0 ? 1 : 0", false},       {"0 && 1 / 0", true == false}, {"1 || 1 / 0", true},
-      {"UNKNOWN == 0", true},     {"'A' == 65", true},        {"true && !false", true},
-      {"~0 == -1", true},         {"(2 || 0) == 1", true},    {"1, 0", false},
-      {"3 > 2 > 1", false},       {"(5 & 3) == 1 && (5 | 3) == 7 && (5 ^ 3) == 6", true},
-      {"-9223372036854775807 - 1 < 0", true}, {"18446744073709551615 == -1", true},
+      {"1 + 2 * 3 == 7", true},
+      {"(1 + 2) * 3 == 9", true},
+      {"(1 << 4) == 16", true},
+      {"-1 < 0", true},
+      {"-1 < 0u", false},
+      {"0x10 == 16 && 010 == 8", true},
+      {"10 / 3 == 3", true},
+      {"-7 % 3 == -1", true},
+      {"!defined(FOO)", false},
+      {"defined FOO && FOO == 5", true},
+      {"defined(BAR)", false},
+      {"1 ? 2 : 0", true},
+      {"0 ? 1 : 0", false},
+      {"0 && 1 / 0", true == false},
+      {"1 || 1 / 0", true},
+      {"UNKNOWN == 0", true},
+      {"'A' == 65", true},
+      {"true && !false", true},
+      {"~0 == -1", true},
+      {"(2 || 0) == 1", true},
+      {"1, 0", false},
+      {"3 > 2 > 1", false},
+      {"(5 & 3) == 1 && (5 | 3) == 7 && (5 ^ 3) == 6", true},
+      {"-9223372036854775807 - 1 < 0", true},
+      {"18446744073709551615 == -1", true},
       {"(1 >> 70) == 0 && (-8 >> 1) == -4 && (1 << -1) == 0", true},
-      {"TWICE(3) == 6", true},    {"FOO >= 5 ? FOO <= 5 : 0", true},
+      {"TWICE(3) == 6", true},
+      {"FOO >= 5 ? FOO <= 5 : 0", true},
   };
   for (const Case& c : cases) {
     Pp p;
-    std::string src = "#define FOO 5\n#define TWICE(x) ((x) * 2)\n#if " + std::string(c.expr) +
-                      "\nyes\n#else\nno\n#endif\n";
+    std::string src =
+        "#define FOO 5\n#define TWICE(x) ((x) * 2)\n#if " + std::string(c.expr) + "\nyes\n#else\nno\n#endif\n";
     EXPECT_EQ(p.run(src), c.value ? "yes" : "no") << c.expr;
     EXPECT_EQ(p.ids(), "") << c.expr;
   }
 }
 
 TEST(PreprocessorConditionals, ExpressionErrors) {
-  const char* bad[] = {"1 / 0", "5 % 0", "1.5", "(1", "1 +", "", "defined", "defined(X",
-                       "1 2", "1 ? 2"};
+  const char* bad[] = {"1 / 0", "5 % 0", "1.5", "(1", "1 +", "", "defined", "defined(X", "1 2", "1 ? 2"};
   for (const char* expr : bad) {
     Pp p;
     EXPECT_EQ(p.run("#if " + std::string(expr) + "\nyes\n#else\nno\n#endif\n"), "no") << expr;

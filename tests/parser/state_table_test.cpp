@@ -36,8 +36,7 @@ TEST(StateTable, EveryRowIsUniqueAndComplete) {
     std::string lower;
     for (char c : s.name) lower.push_back(static_cast<char>(std::tolower(c)));
     EXPECT_TRUE(seen.insert({int(s.block), lower}).second) << s.name << " twice in " << to_string(s.block);
-    if (s.type == StateValueType::enumeration ||
-        (s.type == StateValueType::flags && s.name != "ClipPlaneEnable")) {
+    if (s.type == StateValueType::enumeration || (s.type == StateValueType::flags && s.name != "ClipPlaneEnable")) {
       EXPECT_NE(s.enums, nullptr) << s.name;
     }
     if (s.type == StateValueType::state_object) {
@@ -52,41 +51,115 @@ TEST(StateTable, EveryRowIsUniqueAndComplete) {
 }
 
 TEST(StateTable, CoversTheDocumentedStates) {
-  const char* pass[] = {
-      "ZEnable", "ZWriteEnable", "ZFunc", "CullMode", "FillMode", "AlphaBlendEnable", "SrcBlend",
-      "DestBlend", "BlendOp", "SeparateAlphaBlendEnable", "SrcBlendAlpha", "DestBlendAlpha",
-      "BlendOpAlpha", "AlphaTestEnable", "AlphaFunc", "AlphaRef", "StencilEnable", "StencilFail",
-      "StencilZFail", "StencilPass", "StencilFunc", "StencilRef", "StencilMask",
-      "StencilWriteMask", "TwoSidedStencilMode", "CCW_StencilFail", "CCW_StencilZFail",
-      "CCW_StencilPass", "CCW_StencilFunc", "ColorWriteEnable", "DepthBias",
-      "SlopeScaleDepthBias", "ScissorTestEnable", "SRGBWriteEnable", "MultiSampleAntialias",
-      "MultiSampleMask", "FogEnable", "Lighting", "MaterialDiffuse", "ColorOp", "AlphaOp",
-      "TexCoordIndex", "VertexShader", "PixelShader", "VertexShaderConstant",
-      "PixelShaderConstant", "Texture", "AddressU", "AddressV", "AddressW", "BorderColor",
-      "MagFilter", "MinFilter", "MipFilter", "MipMapLodBias", "MaxMipLevel", "MaxAnisotropy",
-      "SRGBTexture", "SetVertexShader", "SetPixelShader", "SetGeometryShader", "SetHullShader",
-      "SetDomainShader", "SetComputeShader", "SetBlendState", "SetDepthStencilState",
-      "SetRasterizerState"};
+  const char* pass[] = {"ZEnable",
+                        "ZWriteEnable",
+                        "ZFunc",
+                        "CullMode",
+                        "FillMode",
+                        "AlphaBlendEnable",
+                        "SrcBlend",
+                        "DestBlend",
+                        "BlendOp",
+                        "SeparateAlphaBlendEnable",
+                        "SrcBlendAlpha",
+                        "DestBlendAlpha",
+                        "BlendOpAlpha",
+                        "AlphaTestEnable",
+                        "AlphaFunc",
+                        "AlphaRef",
+                        "StencilEnable",
+                        "StencilFail",
+                        "StencilZFail",
+                        "StencilPass",
+                        "StencilFunc",
+                        "StencilRef",
+                        "StencilMask",
+                        "StencilWriteMask",
+                        "TwoSidedStencilMode",
+                        "CCW_StencilFail",
+                        "CCW_StencilZFail",
+                        "CCW_StencilPass",
+                        "CCW_StencilFunc",
+                        "ColorWriteEnable",
+                        "DepthBias",
+                        "SlopeScaleDepthBias",
+                        "ScissorTestEnable",
+                        "SRGBWriteEnable",
+                        "MultiSampleAntialias",
+                        "MultiSampleMask",
+                        "FogEnable",
+                        "Lighting",
+                        "MaterialDiffuse",
+                        "ColorOp",
+                        "AlphaOp",
+                        "TexCoordIndex",
+                        "VertexShader",
+                        "PixelShader",
+                        "VertexShaderConstant",
+                        "PixelShaderConstant",
+                        "Texture",
+                        "AddressU",
+                        "AddressV",
+                        "AddressW",
+                        "BorderColor",
+                        "MagFilter",
+                        "MinFilter",
+                        "MipFilter",
+                        "MipMapLodBias",
+                        "MaxMipLevel",
+                        "MaxAnisotropy",
+                        "SRGBTexture",
+                        "SetVertexShader",
+                        "SetPixelShader",
+                        "SetGeometryShader",
+                        "SetHullShader",
+                        "SetDomainShader",
+                        "SetComputeShader",
+                        "SetBlendState",
+                        "SetDepthStencilState",
+                        "SetRasterizerState"};
   for (const char* n : pass) EXPECT_NE(find_state(n, StateBlock::pass), nullptr) << n;
-  const char* blend[] = {"AlphaToCoverageEnable", "BlendEnable", "SrcBlend", "DestBlend", "BlendOp",
-                         "SrcBlendAlpha", "DestBlendAlpha", "BlendOpAlpha", "RenderTargetWriteMask"};
+  const char* blend[] = {"AlphaToCoverageEnable",
+                         "BlendEnable",
+                         "SrcBlend",
+                         "DestBlend",
+                         "BlendOp",
+                         "SrcBlendAlpha",
+                         "DestBlendAlpha",
+                         "BlendOpAlpha",
+                         "RenderTargetWriteMask"};
   for (const char* n : blend) EXPECT_NE(find_state(n, StateBlock::blend_state), nullptr) << n;
-  const char* depth[] = {"DepthEnable", "DepthWriteMask", "DepthFunc", "StencilEnable",
-                         "StencilReadMask", "StencilWriteMask", "FrontFaceStencilFail",
-                         "FrontFaceStencilDepthFail", "FrontFaceStencilPass", "FrontFaceStencilFunc",
-                         "BackFaceStencilFail", "BackFaceStencilDepthFail", "BackFaceStencilPass",
+  const char* depth[] = {"DepthEnable",
+                         "DepthWriteMask",
+                         "DepthFunc",
+                         "StencilEnable",
+                         "StencilReadMask",
+                         "StencilWriteMask",
+                         "FrontFaceStencilFail",
+                         "FrontFaceStencilDepthFail",
+                         "FrontFaceStencilPass",
+                         "FrontFaceStencilFunc",
+                         "BackFaceStencilFail",
+                         "BackFaceStencilDepthFail",
+                         "BackFaceStencilPass",
                          "BackFaceStencilFunc"};
   for (const char* n : depth) EXPECT_NE(find_state(n, StateBlock::depth_stencil_state), nullptr) << n;
-  const char* raster[] = {"FillMode", "CullMode", "FrontCounterClockwise", "DepthBias",
-                          "DepthBiasClamp", "SlopeScaledDepthBias", "DepthClipEnable",
-                          "ScissorEnable", "MultisampleEnable", "AntialiasedLineEnable"};
+  const char* raster[] = {"FillMode",
+                          "CullMode",
+                          "FrontCounterClockwise",
+                          "DepthBias",
+                          "DepthBiasClamp",
+                          "SlopeScaledDepthBias",
+                          "DepthClipEnable",
+                          "ScissorEnable",
+                          "MultisampleEnable",
+                          "AntialiasedLineEnable"};
   for (const char* n : raster) EXPECT_NE(find_state(n, StateBlock::rasterizer_state), nullptr) << n;
-  const char* samp[] = {"Filter", "AddressU", "AddressV", "AddressW", "MipLODBias", "MaxAnisotropy",
-                        "ComparisonFunc", "BorderColor", "MinLOD", "MaxLOD", "Texture"};
+  const char* samp[] = {"Filter",         "AddressU",    "AddressV", "AddressW", "MipLODBias", "MaxAnisotropy",
+                        "ComparisonFunc", "BorderColor", "MinLOD",   "MaxLOD",   "Texture"};
   for (const char* n : samp) EXPECT_NE(find_state(n, StateBlock::sampler_object), nullptr) << n;
-  const char* samp9[] = {"Texture", "AddressU", "AddressV", "AddressW", "BorderColor", "MagFilter",
-                         "MinFilter", "MipFilter", "MipMapLodBias", "MaxMipLevel", "MaxAnisotropy",
-                         "SRGBTexture"};
+  const char* samp9[] = {"Texture",   "AddressU",  "AddressV",      "AddressW",    "BorderColor",   "MagFilter",
+                         "MinFilter", "MipFilter", "MipMapLodBias", "MaxMipLevel", "MaxAnisotropy", "SRGBTexture"};
   for (const char* n : samp9) EXPECT_NE(find_state(n, StateBlock::sampler_state), nullptr) << n;
 }
 
@@ -156,7 +229,8 @@ TEST(StateTable, EnumSpellingsOfD3D9AndD3D10) {
   const StateInfo& write = *find_state("ColorWriteEnable", StateBlock::pass);
   EXPECT_EQ(find_enum(write, "None"), 0);
   EXPECT_EQ(find_enum(write, "All"), 15);
-  EXPECT_EQ(find_enum(*find_state("RenderTargetWriteMask", StateBlock::blend_state), "D3D11_COLOR_WRITE_ENABLE_ALL"), 15);
+  EXPECT_EQ(find_enum(*find_state("RenderTargetWriteMask", StateBlock::blend_state), "D3D11_COLOR_WRITE_ENABLE_ALL"),
+            15);
 
   const StateInfo& arg = *find_state("ColorArg1", StateBlock::pass);
   EXPECT_EQ(find_enum(arg, "Complement"), 0x10);
@@ -200,8 +274,7 @@ TEST(StateTable, EveryEnumSpellingIsFound) {
       std::optional<int64_t> bare = find_enum(s, v.name);
       ASSERT_TRUE(bare) << s.name << " " << v.name;
       for (std::string_view prefix : s.enums->prefixes)
-        EXPECT_EQ(find_enum(s, std::string(prefix) + std::string(v.name)), bare)
-            << s.name << " " << prefix << v.name;
+        EXPECT_EQ(find_enum(s, std::string(prefix) + std::string(v.name)), bare) << s.name << " " << prefix << v.name;
     }
   }
 }
@@ -244,15 +317,14 @@ TEST(StateTable, ShaderStatesCarryTheirStage) {
   for (std::string_view name : {"ZEnable", "VertexShaderConstant", "SetBlendState", "Shader", ""})
     EXPECT_EQ(shader_state_stage(name), std::nullopt) << name;
   // Every row naming shader code has a stage, and only those rows.
-  for (const StateInfo& s : all_states())
-    EXPECT_EQ(s.stage.has_value(), s.type == StateValueType::shader) << s.name;
+  for (const StateInfo& s : all_states()) EXPECT_EQ(s.stage.has_value(), s.type == StateValueType::shader) << s.name;
 }
 
 TEST(StateTable, ShaderObjectTypesAndProfilePrefixes) {
   const std::tuple<PassStage, std::string_view, std::string_view> stages[] = {
-      {PassStage::vertex, "VertexShader", "vs"}, {PassStage::pixel, "PixelShader", "ps"},
+      {PassStage::vertex, "VertexShader", "vs"},     {PassStage::pixel, "PixelShader", "ps"},
       {PassStage::geometry, "GeometryShader", "gs"}, {PassStage::hull, "HullShader", "hs"},
-      {PassStage::domain, "DomainShader", "ds"},   {PassStage::compute, "ComputeShader", "cs"}};
+      {PassStage::domain, "DomainShader", "ds"},     {PassStage::compute, "ComputeShader", "cs"}};
   for (auto [stage, type, prefix] : stages) {
     EXPECT_EQ(shader_type_name(stage), type);
     EXPECT_EQ(profile_prefix(stage), prefix);

@@ -114,7 +114,8 @@ TEST_F(EffectLibraryTest, BrokenEditKeepsTheLastGoodEffectThenTheFixApplies) {
   save_truncate_write(dir / "a.fx", effect_text("0, 0, 1, 1"));
   events = next_events(lib);
   ASSERT_GE(events.size(), 1u);
-  EXPECT_EQ(events.back().kind, ReloadEventKind::reloaded) << render_text(events.back().diagnostics, *events.back().sources);
+  EXPECT_EQ(events.back().kind, ReloadEventKind::reloaded)
+      << render_text(events.back().diagnostics, *events.back().sources);
   EXPECT_NE(e.version(), good);
   ASSERT_TRUE(e.params()->get(gloss, value)) << "the old handle still works";
   EXPECT_EQ(value, 0.75f) << "values survive a reload";
@@ -144,7 +145,8 @@ TEST_F(EffectLibraryTest, ACompilerCrashFailsTheReloadAndKeepsTheLastGoodEffect)
   save_truncate_write(dir / "common.fxh", common_text("2.0"));
   events = next_events(lib);
   ASSERT_GE(events.size(), 1u);
-  EXPECT_EQ(events.back().kind, ReloadEventKind::reloaded) << render_text(events.back().diagnostics, *events.back().sources);
+  EXPECT_EQ(events.back().kind, ReloadEventKind::reloaded)
+      << render_text(events.back().diagnostics, *events.back().sources);
   EXPECT_NE(e.version(), good) << "the replaced worker compiles the fix";
 }
 

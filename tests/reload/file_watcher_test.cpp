@@ -1,8 +1,8 @@
 // Behaviour of fx::FileWatcher, run against both backends with real files.
 #include "fx/reload/file_watcher.h"
 
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <poll.h>
 #include <sys/stat.h>
 
@@ -35,8 +35,7 @@ class FileWatcherTest : public ::testing::TestWithParam<WatchBackend> {
     std::vector<FileEvent> more = w.poll(3 * kWindow);
     EXPECT_TRUE(more.empty()) << "unexpected event for " << more.front().path;
   }
-  static void expect_one(const std::vector<FileEvent>& events, const fs::path& path,
-                         FileEventKind kind) {
+  static void expect_one(const std::vector<FileEvent>& events, const fs::path& path, FileEventKind kind) {
     ASSERT_EQ(events.size(), 1u);
     EXPECT_EQ(events[0].path, path);
     EXPECT_EQ(events[0].kind, kind) << to_string(events[0].kind);
@@ -260,8 +259,7 @@ TEST_P(FileWatcherTest, EmptyPathIsADiagnosticNotACrash) {
   EXPECT_EQ(w.diagnostics().diagnostics()[0].id, "watch-bad-path");
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, FileWatcherTest,
-                         ::testing::Values(WatchBackend::inotify, WatchBackend::polling),
+INSTANTIATE_TEST_SUITE_P(Backends, FileWatcherTest, ::testing::Values(WatchBackend::inotify, WatchBackend::polling),
                          [](const auto& info) { return std::string(to_string(info.param)); });
 
 }  // namespace

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "fx/reload/effect_library.h"
 #include "../support/patience.h"
+#include "fx/reload/effect_library.h"
 #include "watch_test_support.h"
 
 namespace fx::testing {
@@ -17,25 +17,26 @@ namespace fx::testing {
 inline std::string effect_text(const std::string& tint = "1, 0.5, 0.25, 1", const std::string& extra = "",
                                bool with_gloss = true) {
   return "#include \"common.fxh\"\n"
-         "float4 Tint = {" + tint + "};\n" +
-         (with_gloss ? "float Gloss <string UIName = \"Gloss\";> = 0.5;\n" : "float Gloss2 = 0.5;\n") +
+         "float4 Tint = {" +
+         tint + "};\n" + (with_gloss ? "float Gloss <string UIName = \"Gloss\";> = 0.5;\n" : "float Gloss2 = 0.5;\n") +
          extra +
          "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
-         "float4 PS() : COLOR0 { return Tint * Scale() * " + (with_gloss ? "Gloss" : "Gloss2") + "; }\n"
+         "float4 PS() : COLOR0 { return Tint * Scale() * " +
+         (with_gloss ? "Gloss" : "Gloss2") +
+         "; }\n"
          "technique Main { pass P0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
 }
 
 // An effect that includes nothing.
 inline std::string standalone_text(const std::string& value = "0.5") {
-  return "float Level = " + value + ";\n"
+  return "float Level = " + value +
+         ";\n"
          "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
          "float4 PS() : COLOR0 { return Level; }\n"
          "technique Solo { pass P0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
 }
 
-inline std::string common_text(const std::string& scale = "1.0") {
-  return "float Scale() { return " + scale + "; }\n";
-}
+inline std::string common_text(const std::string& scale = "1.0") { return "float Scale() { return " + scale + "; }\n"; }
 
 // Library options for tests: short coalescing (saves here are single system calls).
 inline EffectLibraryOptions test_options() {

@@ -10,8 +10,11 @@ namespace {
 
 // A diffuse-and-specular effect whose two parameters' defaults the tests edit.
 std::string lit_text(const std::string& kd, const std::string& ks = "0.2") {
-  return "float Kd = " + kd + ";\n"
-         "float Ks = " + ks + ";\n"
+  return "float Kd = " + kd +
+         ";\n"
+         "float Ks = " +
+         ks +
+         ";\n"
          "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
          "float4 PS() : COLOR0 { return Kd + Ks; }\n"
          "technique Lit { pass P0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";

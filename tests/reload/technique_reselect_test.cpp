@@ -9,8 +9,11 @@ namespace {
 std::string two_techniques(const std::string& best_scheme) {
   return "float4 VS(float4 p : POSITION) : POSITION { return p; }\n"
          "float4 PS() : COLOR0 { return 1; }\n"
-         "technique Fancy <string Scheme = \"" + best_scheme + "\";> { pass P0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n"
-         "technique Plain <string Scheme = \"fast\";> { pass P0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
+         "technique Fancy <string Scheme = \"" +
+         best_scheme +
+         "\";> { pass P0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n"
+         "technique Plain <string Scheme = \"fast\";> { pass P0 { VertexShader = compile vs_2_0 VS(); PixelShader = "
+         "compile ps_2_0 PS(); } }\n";
 }
 
 TEST(TechniqueReselect, ReloadReselectsWithTheSameCriteria) {

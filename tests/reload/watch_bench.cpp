@@ -39,8 +39,7 @@ void rescan(benchmark::State& state, bool settled) {
   make_files(dir, w, int(state.range(0)), settled);
   size_t hashed_before = w.stats().files_hashed;
   for (auto _ : state) benchmark::DoNotOptimize(w.rescan());
-  state.counters["hashed_per_rescan"] =
-      double(w.stats().files_hashed - hashed_before) / double(state.iterations());
+  state.counters["hashed_per_rescan"] = double(w.stats().files_hashed - hashed_before) / double(state.iterations());
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
@@ -87,8 +86,7 @@ class RatioReporter : public benchmark::ConsoleReporter {
     ConsoleReporter::Finalize();
     ratio("rescan, settled vs hash-every-file baseline", "BM_RescanSettledFiles/200",
           "BM_RescanRecentlyWrittenFiles/200");
-    ratio("save-to-event, inotify vs polling baseline", "BM_SaveToEvent/0/real_time",
-          "BM_SaveToEvent/1/real_time");
+    ratio("save-to-event, inotify vs polling baseline", "BM_SaveToEvent/0/real_time", "BM_SaveToEvent/1/real_time");
   }
 
  private:

@@ -1,14 +1,14 @@
 // The watcher's recovery paths: kernel queue overflow, explicit rescans, watch limits,
 // vanished directories, and the snapshot's racy-stat rule.
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <sys/stat.h>
 
 #include <algorithm>
 #include <fstream>
 
-#include "fx/reload/file_watcher.h"
 #include "file_snapshot.h"
+#include "fx/reload/file_watcher.h"
 #include "network_filesystem.h"
 #include "watch_test_support.h"
 

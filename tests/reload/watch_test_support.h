@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "fx/reload/file_watcher.h"
 #include "../support/patience.h"
+#include "fx/reload/file_watcher.h"
 
 namespace fx::testing {
 
@@ -67,8 +67,7 @@ inline std::vector<FileEvent> wait_for_events(FileWatcher& watcher,
                                               std::chrono::milliseconds limit = fxkit_test::patience()) {
   auto deadline = std::chrono::steady_clock::now() + limit;
   for (;;) {
-    auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-        deadline - std::chrono::steady_clock::now());
+    auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) return {};
     std::vector<FileEvent> events = watcher.poll(left);
     if (!events.empty()) return events;

@@ -48,8 +48,8 @@ TEST(CapsProfiles, NamesAreCaseInsensitiveAndUnknownOnesSuggest) {
 }
 
 TEST(CapsProfiles, GenerationsFollowTheSeed) {
-  fx::DeviceCaps dx6 = profile("dx6"), dx7 = profile("dx7"), dx8 = profile("dx8"),
-                 dx81 = profile("dx8_1"), dx9 = profile("dx9"), modern = profile("modern");
+  fx::DeviceCaps dx6 = profile("dx6"), dx7 = profile("dx7"), dx8 = profile("dx8"), dx81 = profile("dx8_1"),
+                 dx9 = profile("dx9"), modern = profile("modern");
   // "almost all can do subtractive blending, and some can do dot product blending"
   EXPECT_TRUE(dx6.features.subtract);
   EXPECT_FALSE(dx6.features.dot3);
@@ -66,8 +66,7 @@ TEST(CapsProfiles, GenerationsFollowTheSeed) {
   // A modern device compiles HLSL SM2-5 through glslang, but has no SM1 and no stages.
   for (const char* p : {"vs_2_0", "ps_2_0", "ps_3_0", "ps_4_0", "ps_5_0", "glsl_450"})
     EXPECT_TRUE(fx::supports(modern, p)) << p;
-  for (const char* p : {"vs_1_1", "ps_1_1", "ps_1_4", "glsl_110"})
-    EXPECT_FALSE(fx::supports(modern, p)) << p;
+  for (const char* p : {"vs_1_1", "ps_1_1", "ps_1_4", "glsl_110"}) EXPECT_FALSE(fx::supports(modern, p)) << p;
   EXPECT_FALSE(modern.features.fixed_function_stages);
   EXPECT_FALSE(modern.features.dot3);
   EXPECT_EQ(modern.generation, fx::CapsGeneration::vulkan);
@@ -125,8 +124,7 @@ TEST(CapsVulkaninfo, ReadsTheRealReportFormat) {
   EXPECT_FALSE(depth->color_attachment);
   EXPECT_TRUE(std::binary_search(caps->vulkan.extensions.begin(), caps->vulkan.extensions.end(),
                                  "VK_EXT_extended_dynamic_state3"));
-  EXPECT_TRUE(std::binary_search(caps->vulkan.features.begin(), caps->vulkan.features.end(),
-                                 "dynamicRendering"));
+  EXPECT_TRUE(std::binary_search(caps->vulkan.features.begin(), caps->vulkan.features.end(), "dynamicRendering"));
   EXPECT_FALSE(std::binary_search(caps->vulkan.features.begin(), caps->vulkan.features.end(),
                                   "depthBounds"));  // false in the report
   nlohmann::json j = *caps;
@@ -137,9 +135,8 @@ TEST(CapsVulkaninfo, MalformedReportsAreDiagnosed) {
   fx::DiagnosticSink sink;
   EXPECT_FALSE(fx::caps_from_vulkaninfo_json(nlohmann::json::array(), sink).has_value());
   EXPECT_FALSE(fx::caps_from_vulkaninfo_json({{"capabilities", {{"device", 1}}}}, sink).has_value());
-  EXPECT_FALSE(fx::caps_from_vulkaninfo_json(
-                   {{"capabilities", {{"device", {{"properties", {{"x", 1}}}}}}}}, sink)
-                   .has_value());
+  EXPECT_FALSE(
+      fx::caps_from_vulkaninfo_json({{"capabilities", {{"device", {{"properties", {{"x", 1}}}}}}}}, sink).has_value());
   EXPECT_EQ(sink.error_count(), 3u);
   for (const auto& d : sink.diagnostics()) EXPECT_EQ(d.id, "caps-vulkaninfo");
 }
@@ -221,11 +218,10 @@ TEST(CapsRequirements, ParseEveryKind) {
   EXPECT_TRUE(errors.empty());
   std::vector<std::string> spelled;
   for (const auto& r : reqs) spelled.push_back(r.spelling());
-  EXPECT_EQ(spelled, (std::vector<std::string>{
-                         "ps_1_4", "dot3", "simultaneous_textures>=4", "render_targets>=2",
-                         "vk:samplerAnisotropy", "ext:VK_KHR_push_descriptor",
-                         "format:R16G16B16A16_SFLOAT/blend", "format:D32_SFLOAT/sampled",
-                         "glsl_450"}));
+  EXPECT_EQ(spelled,
+            (std::vector<std::string>{"ps_1_4", "dot3", "simultaneous_textures>=4", "render_targets>=2",
+                                      "vk:samplerAnisotropy", "ext:VK_KHR_push_descriptor",
+                                      "format:R16G16B16A16_SFLOAT/blend", "format:D32_SFLOAT/sampled", "glsl_450"}));
   fx::parse_caps_requirements("dott3 textures>=four warp>=2 format:R8_UNORM/eat", &errors);
   ASSERT_EQ(errors.size(), 4u);
   EXPECT_EQ(errors[0], "unknown requirement 'dott3'");
@@ -236,21 +232,18 @@ TEST(CapsRequirements, ParseEveryKind) {
 
 TEST(CapsRequirements, UnmetReasonsNameTheDevice) {
   fx::DeviceCaps dx7 = profile("dx7"), modern = profile("modern");
-  EXPECT_EQ(fx::unmet_reason(dx7, fx::CapsRequirement::profile("ps_2_0")),
-            "ps_2_0 not supported on dx7");
+  EXPECT_EQ(fx::unmet_reason(dx7, fx::CapsRequirement::profile("ps_2_0")), "ps_2_0 not supported on dx7");
   EXPECT_EQ(fx::unmet_reason(dx7, fx::CapsRequirement::limit("textures", 4)),
             "needs 4 simultaneous_textures, dx7 has 2");
   EXPECT_EQ(fx::unmet_reason(dx7, fx::CapsRequirement::feature("dot3")), std::nullopt);
-  EXPECT_EQ(fx::unmet_reason(modern, fx::CapsRequirement::feature("dot3")),
-            "dot3 not supported on modern");
+  EXPECT_EQ(fx::unmet_reason(modern, fx::CapsRequirement::feature("dot3")), "dot3 not supported on modern");
   std::string error;
   auto ext = fx::parse_caps_requirement("ext:VK_KHR_push_descriptor", &error);
   ASSERT_TRUE(ext);
   EXPECT_EQ(fx::unmet_reason(dx7, *ext), "extension VK_KHR_push_descriptor not supported on dx7");
   auto fmt = fx::parse_caps_requirement("format:R32G32B32A32_SFLOAT/filter_linear", &error);
   ASSERT_TRUE(fmt);
-  EXPECT_EQ(fx::unmet_reason(modern, *fmt),
-            "format R32G32B32A32_SFLOAT not usable for filter_linear on modern");
+  EXPECT_EQ(fx::unmet_reason(modern, *fmt), "format R32G32B32A32_SFLOAT not usable for filter_linear on modern");
   auto lavapipe = fx::caps_from_vulkaninfo_json(read_fixture("vulkaninfo_lavapipe.json"));
   ASSERT_TRUE(lavapipe);
   EXPECT_EQ(fx::unmet_reason(*lavapipe, *ext), std::nullopt);

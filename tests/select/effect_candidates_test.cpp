@@ -9,13 +9,13 @@
 #include <sstream>
 #include <string>
 
-#include "seed_picks.h"
 #include "fx/compile/shader_compiler.h"
 #include "fx/compile/spirv_cache.h"
 #include "fx/diagnostic_render.h"
 #include "fx/frontend.h"
 #include "fx/select/caps_sources.h"
 #include "fx/select/effect_candidates.h"
+#include "seed_picks.h"
 
 namespace {
 
@@ -87,7 +87,8 @@ const fx::TechniqueValidation& technique(const fx::EffectSelection& s, const std
 // the validity comes from the passes, compiled.
 TEST(EffectCandidates, EachGenerationPicksWhatTheSeedDescribesWithRealValidation) {
   for (const auto& row : fxkit::testing::seed_picks())
-    for (const auto& [profile, want] : row.picks) EXPECT_EQ(pick(row.effect, profile), want) << row.effect << " on " << profile;
+    for (const auto& [profile, want] : row.picks)
+      EXPECT_EQ(pick(row.effect, profile), want) << row.effect << " on " << profile;
   fx::SelectionCriteria specular{.scheme = "specular"};
   EXPECT_EQ(pick("per_pixel_lighting.fx", "dx6", specular), "specular_emboss");
   EXPECT_EQ(pick("per_pixel_lighting.fx", "dx8", specular), "specular_emboss");  // the lowest measured error
@@ -126,16 +127,21 @@ TEST(EffectCandidates, RejectionsNameTheirFileAndLine) {
     bool in_emboss = false;
     for (uint32_t n = 1; std::getline(in, line); ++n) {
       if (line.rfind("technique emboss", 0) == 0) in_emboss = true;
-      if (in_emboss && line.find("ColorOp[0]") != std::string::npos) { color_op_line = n; break; }
+      if (in_emboss && line.find("ColorOp[0]") != std::string::npos) {
+        color_op_line = n;
+        break;
+      }
     }
   }
   for (const auto& r : emboss.reasons) {
     if (r.id != "fixed-function-state") continue;
     EXPECT_EQ(located(r).find("per_pixel_lighting.fx:"), 0u) << located(r);
     EXPECT_NE(r.message.find("has no Vulkan equivalent (modern has no fixed-function texture stages)"),
-              std::string::npos) << r.message;
+              std::string::npos)
+        << r.message;
     // ColorOp[0] is the reason or one of its located notes.
-    if (r.message.find("'ColorOp[0]'") != std::string::npos) found = l->sm.presumed(r.range.begin).line == color_op_line;
+    if (r.message.find("'ColorOp[0]'") != std::string::npos)
+      found = l->sm.presumed(r.range.begin).line == color_op_line;
     for (const auto& n : r.notes)
       if (n.message == "fixed-function state 'ColorOp[0]' here too")
         found = l->sm.presumed(n.location).line == color_op_line;
@@ -145,8 +151,10 @@ TEST(EffectCandidates, RejectionsNameTheirFileAndLine) {
   fx::EffectSelection dx7 = selection(*l, "dx7");
   const auto& ps20 = technique(dx7, "diffuse_ps20");
   ASSERT_EQ(ps20.reasons.size(), 2u) << fx::render_text(ps20.reasons, l->sm);
-  uint32_t ps_line = line_containing("per_pixel_lighting.fx", "PixelShader = compile ps_2_0 TangentSpacePS(SPECULAR_NONE)");
-  EXPECT_EQ(located(ps20.reasons[1]), "per_pixel_lighting.fx:" + std::to_string(ps_line) + ": ps_2_0 not supported on dx7");
+  uint32_t ps_line =
+      line_containing("per_pixel_lighting.fx", "PixelShader = compile ps_2_0 TangentSpacePS(SPECULAR_NONE)");
+  EXPECT_EQ(located(ps20.reasons[1]),
+            "per_pixel_lighting.fx:" + std::to_string(ps_line) + ": ps_2_0 not supported on dx7");
 
   // The plan's explanation carries the same located sentences.
   fx::SelectionResult r = dx7.plan.explain(dx7.plan.query({}));

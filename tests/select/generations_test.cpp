@@ -79,9 +79,8 @@ TEST(Generations, ModernDeviceRejectsEverySm1AndFixedFunctionTechnique) {
   EXPECT_EQ(fx::validate(list, profile("modern")), 1u);
   EXPECT_EQ(list[1].rejection_reasons,
             (std::vector<std::string>{"vs_1_1 not supported on modern", "ps_1_1 not supported on modern"}));
-  EXPECT_EQ(list[2].rejection_reasons,
-            (std::vector<std::string>{"fixed_function_stages not supported on modern",
-                                      "dot3 not supported on modern"}));
+  EXPECT_EQ(list[2].rejection_reasons, (std::vector<std::string>{"fixed_function_stages not supported on modern",
+                                                                 "dot3 not supported on modern"}));
 }
 
 TEST(Generations, ReasonsExplainTheDx7Choice) {
@@ -114,8 +113,7 @@ TEST(Generations, ValidateKeepsUpstreamRejectionsAndFlagsBadRequires) {
   t.rejection_reasons = {"compile error in PS()"};
   t.requirements.push_back(fx::CapsRequirement::limit("render_targets", 2));
   EXPECT_FALSE(fx::validate(t, profile("dx9")));
-  EXPECT_EQ(t.rejection_reasons,
-            (std::vector<std::string>{"compile error in PS()", "unknown requirement 'dott3'"}));
+  EXPECT_EQ(t.rejection_reasons, (std::vector<std::string>{"compile error in PS()", "unknown requirement 'dott3'"}));
   fx::TechniqueCandidate u = technique("typed", "");
   u.annotations = {{"Requires", 3}};
   EXPECT_FALSE(fx::validate(u, profile("dx9")));

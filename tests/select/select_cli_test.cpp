@@ -125,7 +125,7 @@ TEST(SelectCli, CheckCapsFailsWhenNothingRunsAndOnBadCaps) {
   EXPECT_EQ(fxkit("select " + kEffects + "strand_aniso.fx --caps /no/such/caps.json").status, 2);
   // A saved caps file is accepted.
   CliRun saved = fxkit("select " + std::string(FXKIT_SOURCE_DIR) + "/effects/hemisphere.fx --caps " +
-                    std::string(FXKIT_SOURCE_DIR) + "/runtime/select/profiles/dx8.json");
+                       std::string(FXKIT_SOURCE_DIR) + "/runtime/select/profiles/dx8.json");
   EXPECT_EQ(saved.status, 0);
   EXPECT_EQ(saved.out.rfind("hemisphere.fx on dx8: hemisphere_ps11", 0), 0u) << saved.out;
 }
@@ -141,7 +141,10 @@ TEST(SelectCli, ErrorLimitPicksTheCheapestTechniqueOfTheMeasuredTable) {
   nlohmann::json table = nlohmann::json::parse(in, nullptr, false);
   ASSERT_FALSE(table.is_discarded());
   ASSERT_TRUE(table["techniques"].is_array());
-  struct Row { double error, ns_pixel, ns_vertex; bool measured; };
+  struct Row {
+    double error, ns_pixel, ns_vertex;
+    bool measured;
+  };
   std::map<std::string, std::map<std::string, Row>> effects;
   auto rounded = [](double v, double scale) { return std::round(std::max(0.0, v) * scale) / scale; };
   for (const auto& t : table["techniques"]) {

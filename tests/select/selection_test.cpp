@@ -20,12 +20,10 @@ fx::TechniqueCandidate tech(std::string name, Ann annotations, bool valid = true
   return t;
 }
 
-fx::SelectionPlan build(const std::vector<fx::TechniqueCandidate>& list,
-                        fx::SelectionPlanOptions options = {}) {
+fx::SelectionPlan build(const std::vector<fx::TechniqueCandidate>& list, fx::SelectionPlanOptions options = {}) {
   fx::DiagnosticSink sink;
   fx::SelectionPlan plan = fx::SelectionPlan::build(list, sink, options);
-  EXPECT_EQ(sink.diagnostics().size(), 0u)
-      << (sink.diagnostics().empty() ? "" : sink.diagnostics()[0].message);
+  EXPECT_EQ(sink.diagnostics().size(), 0u) << (sink.diagnostics().empty() ? "" : sink.diagnostics()[0].message);
   return plan;
 }
 
@@ -114,8 +112,7 @@ TEST(Selection, ScreenSizeBands) {
   EXPECT_EQ(plan.select(plan.query({.screen_size = 100.f})), 0u);
   EXPECT_EQ(plan.select(plan.query({.screen_size = 20.f})), 1u);
   EXPECT_EQ(plan.select(plan.query({})), 0u);  // unknown size: bands do not filter
-  EXPECT_EQ(plan.explain(plan.query({.screen_size = 20.f})).reasons[0],
-            "outside screen-size band [64, inf) at 20");
+  EXPECT_EQ(plan.explain(plan.query({.screen_size = 20.f})).reasons[0], "outside screen-size band [64, inf) at 20");
 }
 
 TEST(Selection, SchemesFilterAndUnknownSchemesMatchOnlyUntagged) {
@@ -130,8 +127,7 @@ TEST(Selection, SchemesFilterAndUnknownSchemesMatchOnlyUntagged) {
   EXPECT_EQ(r.reasons[1], "scheme 'performance, low_power' not in 'quality'");
   EXPECT_EQ(r.reasons[2], "ranks below 'fancy' (lower error: 'fancy' 0 LSB, this one 3 LSB)");
   fx::SelectionPlan perf = build({tech("perf", {{"Scheme", std::string("performance")}}), tech("q", {})});
-  EXPECT_EQ(perf.explain(perf.query({.scheme = "quality"})).reasons[0],
-            "scheme 'performance' not in 'quality'");
+  EXPECT_EQ(perf.explain(perf.query({.scheme = "quality"})).reasons[0], "scheme 'performance' not in 'quality'");
 }
 
 TEST(Selection, CostAndErrorBudgets) {
@@ -176,15 +172,15 @@ TEST(Selection, ErrorLimitPicksTheCheapestMeasuredTechnique) {
   EXPECT_EQ(plan.select(plan.query({.pixels = 1e6f, .max_error = 0.5f})), 1u);
   EXPECT_EQ(plan.select(plan.query({.pixels = 1e6f, .max_error = 100.f})), 3u);
   // A measured error without a measured cost ranks after every measured cost.
-  fx::SelectionPlan partial = build({tech("table", {{"MaxError", 3.f}}),
-                                     tech("pow", {{"CostNsPerPixel", 5.f}, {"MaxError", 3.f}})});
+  fx::SelectionPlan partial =
+      build({tech("table", {{"MaxError", 3.f}}), tech("pow", {{"CostNsPerPixel", 5.f}, {"MaxError", 3.f}})});
   fx::SelectionQuery pq = partial.query({.pixels = 1e6f, .max_error = 4.f});
   EXPECT_EQ(partial.select(pq), 1u);
   EXPECT_EQ(partial.explain(pq).reasons[0],
             "ranks below 'pow' (cheaper within the error limit: 'pow' 5.0 ms, this one's cost not measured)");
   // Equal costs keep rank order (lower error first).
-  fx::SelectionPlan tie = build({tech("a", {{"CostMs", 1.f}, {"MaxError", 2.f}}),
-                                 tech("b", {{"CostMs", 1.f}, {"MaxError", 1.f}})});
+  fx::SelectionPlan tie =
+      build({tech("a", {{"CostMs", 1.f}, {"MaxError", 2.f}}), tech("b", {{"CostMs", 1.f}, {"MaxError", 1.f}})});
   fx::SelectionQuery tq = tie.query({.max_error = 5.f});
   EXPECT_EQ(tie.select(tq), 1u);
   EXPECT_EQ(tie.explain(tq).reasons[0], "ranks below 'b' (lower error: 'b' 1 LSB, this one 2 LSB)");
@@ -297,8 +293,7 @@ TEST(Selection, EffectFallbackIsTheLastResort) {
   EXPECT_EQ(r.route, fx::SelectionRoute::effect_fallback);
   EXPECT_EQ(std::string(fx::to_string(r.route)), "effect fallback");
   fx::SelectionPlan none = build(list);
-  EXPECT_EQ(none.explain(none.query({.distance = 50.f, .scheme = "quality"})).route,
-            fx::SelectionRoute::none);
+  EXPECT_EQ(none.explain(none.query({.distance = 50.f, .scheme = "quality"})).route, fx::SelectionRoute::none);
 }
 
 TEST(Selection, FallbackCyclesAreErrorsNotHangs) {
@@ -312,10 +307,8 @@ TEST(Selection, FallbackCyclesAreErrorsNotHangs) {
   fx::SelectionPlan plan = fx::SelectionPlan::build(list, sink);
   ASSERT_EQ(sink.error_count(), 2u);
   EXPECT_EQ(sink.diagnostics()[0].id, "fallback-cycle");
-  EXPECT_EQ(sink.diagnostics()[0].message,
-            "fallback cycle 'a' -> 'b' -> 'c' -> 'a'; the link from 'c' is ignored");
-  EXPECT_EQ(sink.diagnostics()[1].message,
-            "fallback cycle 'self' -> 'self'; the link from 'self' is ignored");
+  EXPECT_EQ(sink.diagnostics()[0].message, "fallback cycle 'a' -> 'b' -> 'c' -> 'a'; the link from 'c' is ignored");
+  EXPECT_EQ(sink.diagnostics()[1].message, "fallback cycle 'self' -> 'self'; the link from 'self' is ignored");
   EXPECT_EQ(plan.select(plan.query({})), fx::kNoIndex);
   EXPECT_EQ(plan.explain(plan.query({})).route, fx::SelectionRoute::none);
 }
@@ -333,13 +326,11 @@ TEST(Selection, UnknownFallbacksAndBadAnnotationsAreDiagnosed) {
     ids.push_back(d.id);
     messages.push_back(d.message);
   }
-  EXPECT_EQ(ids, (std::vector<std::string>{"selection-annotation", "selection-annotation",
-                                           "selection-annotation", "unknown-fallback",
-                                           "unknown-fallback"}));
+  EXPECT_EQ(ids, (std::vector<std::string>{"selection-annotation", "selection-annotation", "selection-annotation",
+                                           "unknown-fallback", "unknown-fallback"}));
   EXPECT_EQ(messages[0], "annotation 'MinDistance' of technique 'ps_11' must be a number; ignored");
   EXPECT_EQ(messages[1], "annotation 'Priority' of technique 'ps_11' must be an int; ignored");
-  EXPECT_EQ(messages[3],
-            "technique 'ps20': fallback technique 'ps11' does not exist; did you mean 'ps_11'?");
+  EXPECT_EQ(messages[3], "technique 'ps20': fallback technique 'ps11' does not exist; did you mean 'ps_11'?");
   EXPECT_EQ(plan.size(), 3u);
   fx::SelectionQuery q = plan.query({.distance = 20.f});
   EXPECT_EQ(plan.select(q), 0u);
@@ -356,26 +347,38 @@ TEST(Selection, EmptyPlanChoosesNothing) {
 // explain() documents select(): they must agree on every query, with and without state.
 TEST(Selection, ExplainAgreesWithSelectOnRandomQueries) {
   std::vector<fx::TechniqueCandidate> list = {
-      tech("q_near", {{"Scheme", std::string("quality")}, {"MaxDistance", 15.f}, {"CostMs", 0.8f},
+      tech("q_near", {{"Scheme", std::string("quality")},
+                      {"MaxDistance", 15.f},
+                      {"CostMs", 0.8f},
                       {"Fallback", std::string("q_mid")}}),
-      tech("q_mid", {{"Scheme", std::string("quality")}, {"MinDistance", 10.f}, {"MaxDistance", 60.f},
-                     {"MaxError", 1.f}, {"CostNsPerPixel", 3.f}}, false),
-      tech("perf", {{"Scheme", std::string("performance")}, {"MaxError", 4.f}, {"CostMs", 0.05f},
+      tech("q_mid",
+           {{"Scheme", std::string("quality")},
+            {"MinDistance", 10.f},
+            {"MaxDistance", 60.f},
+            {"MaxError", 1.f},
+            {"CostNsPerPixel", 3.f}},
+           false),
+      tech("perf", {{"Scheme", std::string("performance")},
+                    {"MaxError", 4.f},
+                    {"CostMs", 0.05f},
                     {"Fallback", std::string("any_far")}}),
       tech("any_far", {{"MinDistance", 40.f}, {"MaxError", 6.f}, {"MinScreenSize", 8.f}}),
       tech("billboard", {{"MaxError", 20.f}, {"MaxScreenSize", 16.f}, {"Priority", 1}}),
   };
   fx::SelectionPlan plan = build(list, {.effect_fallback = "billboard"});
   std::mt19937 rng(1234);
-  std::uniform_real_distribution<float> dist(0.f, 100.f), size(-1.f, 64.f), pix(0.f, 5e5f),
-      budget(0.f, 2.f), err(0.f, 8.f);
+  std::uniform_real_distribution<float> dist(0.f, 100.f), size(-1.f, 64.f), pix(0.f, 5e5f), budget(0.f, 2.f),
+      err(0.f, 8.f);
   const char* schemes[] = {"", "quality", "performance", "other"};
   std::vector<fx::SelectionState> states(16);
   int routes[4] = {};
   for (int i = 0; i < 20000; ++i) {
-    fx::SelectionQuery q = plan.query({.distance = dist(rng), .screen_size = size(rng),
-                                       .pixels = pix(rng), .scheme = schemes[rng() % 4],
-                                       .cost_budget_ms = budget(rng), .max_error = err(rng)});
+    fx::SelectionQuery q = plan.query({.distance = dist(rng),
+                                       .screen_size = size(rng),
+                                       .pixels = pix(rng),
+                                       .scheme = schemes[rng() % 4],
+                                       .cost_budget_ms = budget(rng),
+                                       .max_error = err(rng)});
     fx::SelectionState& s = states[rng() % states.size()];
     fx::SelectionResult r = plan.explain(q, &s);
     ASSERT_EQ(plan.select(q, s), r.chosen) << i;

@@ -102,7 +102,8 @@ TEST(TechniqueValidation, FixedFunctionStagesRunWhereTheCapsHaveTheOperations) {
   ASSERT_FALSE(dx6[1].valid);
   ASSERT_EQ(dx6[1].reasons.size(), 1u) << all(*l, dx6[1]);
   EXPECT_EQ(dx6[1].reasons[0].id, "state-needs-feature");
-  EXPECT_EQ(dx6[1].reasons[0].message, "'ColorOp[0] = DotProduct3' needs dot3 (D3DTOP_DOTPRODUCT3), not supported on dx6");
+  EXPECT_EQ(dx6[1].reasons[0].message,
+            "'ColorOp[0] = DotProduct3' needs dot3 (D3DTOP_DOTPRODUCT3), not supported on dx6");
   EXPECT_EQ(line_of(*l, dx6[1].reasons[0]), 20u);
   // Without subtract the emboss stage 1 fails.
   fx::DeviceCaps no_subtract = caps("dx7");
@@ -467,7 +468,8 @@ TEST(TechniqueValidation, FindNextValidWalksInDeclarationOrder) {
 }
 
 TEST(TechniqueValidation, ValidateTechniqueOnAModelAndItsAnnotations) {
-  auto l = parse(R"(technique a < string Scheme = "quality"; float MaxDistance = 20; int Priority = 2; bool B = true; float2 V = {1, 2}; > { pass p0 { } })");
+  auto l = parse(
+      R"(technique a < string Scheme = "quality"; float MaxDistance = 20; int Priority = 2; bool B = true; float2 V = {1, 2}; > { pass p0 { } })");
   fx::EffectModel model = fx::build_effect_model(l->parsed, l->sm, l->diags);
   ASSERT_EQ(model.techniques.size(), 1u);
   fx::TechniqueValidation t = fx::validate_technique(model, model.techniques[0], caps("dx6"));

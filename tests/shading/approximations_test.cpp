@@ -89,7 +89,8 @@ TEST(AccuracyReport, StrandFloatTableMatchesIndependentComputation) {
     int x0 = std::min(int(x), n - 2), y0 = std::min(int(y), n - 2);
     double fx = x - x0, fy = y - y0;
     auto t = [&](int i, int j) { return double(table[j * n + i]); };
-    return (1 - fy) * ((1 - fx) * t(x0, y0) + fx * t(x0 + 1, y0)) + fy * ((1 - fx) * t(x0, y0 + 1) + fx * t(x0 + 1, y0 + 1));
+    return (1 - fy) * ((1 - fx) * t(x0, y0) + fx * t(x0 + 1, y0)) +
+           fy * ((1 - fx) * t(x0, y0 + 1) + fx * t(x0 + 1, y0 + 1));
   };
   double worst = 0;
   for (const auto& s : fx::shading::shading_samples()) {
@@ -117,7 +118,8 @@ TEST(AccuracyReport, UnnormalizedBumpTangentMatchesIndependentComputation) {
   for (const auto& s : fx::shading::shading_samples()) {
     if (s.kind != fx::shading::SampleKind::uniform) continue;
     const double phi = 2.399963 * k++;
-    const glm::dvec3 n = std::cos(tilt) * s.n + std::sin(tilt) * (std::cos(phi) * s.t + std::sin(phi) * glm::cross(s.n, s.t));
+    const glm::dvec3 n =
+        std::cos(tilt) * s.n + std::sin(tilt) * (std::cos(phi) * s.t + std::sin(phi) * glm::cross(s.n, s.t));
     const glm::dvec3 t = s.t - glm::dot(n, s.t) * n;
     const double lt = std::clamp(glm::dot(s.l, t), -1.0, 1.0);
     const double approx = std::sqrt(1 - lt * lt);

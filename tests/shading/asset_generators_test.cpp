@@ -132,8 +132,7 @@ TEST(NormalMap, StrengthZeroIsFlatAndOcclusionDarkensValleys) {
       double h = height_at(o.relief, {(x + 0.5) / 64, (y + 0.5) / 64}), a = t.fetch(x, y, 0, 3);
       sh += h, sa += a, shh += h * h, saa += a * a, sha += h * a;
     }
-  double corr = (sha / n - sh / n * sa / n) /
-                std::sqrt((shh / n - sh * sh / n / n) * (saa / n - sa * sa / n / n));
+  double corr = (sha / n - sh / n * sa / n) / std::sqrt((shh / n - sh * sh / n / n) * (saa / n - sa * sa / n / n));
   EXPECT_LT(corr, -0.3);
   EXPECT_GT(sa / n, 0.001);
 }
@@ -144,7 +143,8 @@ TEST(AssetGenerators, HeightMapsTileAndAgreeWithTheHeightField) {
   HeightSpec streaks = spec;
   streaks.pattern = HeightPattern::streaks;
   for (double u : {0.1, 0.5, 0.93}) EXPECT_NEAR(height_at(streaks, {u, 0.0}), height_at(streaks, {u, 1.0}), 1e-9);
-  Table t = baked("height_map", GeneratorParams().set("Frequency", 4).set("Octaves", 3).set("Seed", 3).set("Width", 32));
+  Table t =
+      baked("height_map", GeneratorParams().set("Frequency", 4).set("Octaves", 3).set("Seed", 3).set("Width", 32));
   double lo = 1, hi = 0;
   for (int y = 0; y < 32; ++y)
     for (int x = 0; x < 32; ++x) {
@@ -166,8 +166,9 @@ TEST(AssetGenerators, ColorMapPatterns) {
   EXPECT_EQ(c.fetch(5, 0, 0, 2), 1.0f);
   EXPECT_NEAR(c.fetch(5, 0, 0, 3), 0.75, 0.5 / 255);
   EXPECT_NEAR(c.fetch(5, 5, 0, 3), 0.25, 0.5 / 255);
-  Table spot = baked("color_map", GeneratorParams().set("Pattern", "spot").set("Width", 33).set("Color0", "0 0 0")
-                                       .set("Color1", "1 1 1"));
+  Table spot =
+      baked("color_map",
+            GeneratorParams().set("Pattern", "spot").set("Width", 33).set("Color0", "0 0 0").set("Color1", "1 1 1"));
   EXPECT_GT(spot.fetch(16, 16, 0, 0), 0.99f);
   EXPECT_LT(spot.fetch(0, 0, 0, 0), 0.2f);
   // noise: both colours appear, and the bake is deterministic per seed.
@@ -177,19 +178,20 @@ TEST(AssetGenerators, ColorMapPatterns) {
   EXPECT_EQ(a.unorm8, b.unorm8);
   EXPECT_NE(a.unorm8, other.unorm8);
   float lo = 1, hi = 0;
-  for (int i = 0; i < 64 * 64; ++i) lo = std::min(lo, a.fetch(i % 64, i / 64, 0, 0)), hi = std::max(hi, a.fetch(i % 64, i / 64, 0, 0));
+  for (int i = 0; i < 64 * 64; ++i)
+    lo = std::min(lo, a.fetch(i % 64, i / 64, 0, 0)), hi = std::max(hi, a.fetch(i % 64, i / 64, 0, 0));
   EXPECT_LT(lo, 0.15f);
   EXPECT_GT(hi, 0.85f);
 }
 
 TEST(GlossMap, TheSeedsEncoding) {
-  EXPECT_EQ(gloss_angle_code(0.0), 182);          // along the tangent = 180 degrees
-  EXPECT_EQ(gloss_angle_code(kPi / 180), 3);      // 1 degree: the seed's lowest code
+  EXPECT_EQ(gloss_angle_code(0.0), 182);      // along the tangent = 180 degrees
+  EXPECT_EQ(gloss_angle_code(kPi / 180), 3);  // 1 degree: the seed's lowest code
   EXPECT_EQ(gloss_angle_code(kPi / 2), 92);
-  EXPECT_EQ(gloss_angle_code(-kPi / 2), 92);      // strands have no sign
+  EXPECT_EQ(gloss_angle_code(-kPi / 2), 92);  // strands have no sign
   EXPECT_EQ(gloss_angle_code(3 * kPi / 2), 92);
-  Table t = baked("gloss_map", GeneratorParams().set("Width", 16).set("Angle", 45).set("Exponent", 32)
-                                    .set("Brightness", 0.8));
+  Table t = baked("gloss_map",
+                  GeneratorParams().set("Width", 16).set("Angle", 45).set("Exponent", 32).set("Brightness", 0.8));
   for (int i = 0; i < 16; ++i) {
     EXPECT_NEAR(t.fetch(i, i, 0, 0), 0.8, 0.5 / 255);
     EXPECT_NEAR(t.fetch(i, i, 0, 1) * t.fetch(i, i, 0, 1) * 128.0, 32.0, 0.6);  // the seed's decode

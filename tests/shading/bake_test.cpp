@@ -76,8 +76,8 @@ TEST(CubeTable, FaceDirectionsFollowTheCubeLookup) {
       for (double t : {0.2, 0.5, 0.9}) {
         const glm::dvec3 d = cube_direction(face, s, t);
         const int axis = std::abs(d.x) >= std::abs(d.y) && std::abs(d.x) >= std::abs(d.z) ? 0
-                         : std::abs(d.y) >= std::abs(d.z)                                ? 1
-                                                                                         : 2;
+                         : std::abs(d.y) >= std::abs(d.z)                                 ? 1
+                                                                                          : 2;
         const double ma = d[axis];
         EXPECT_EQ(axis * 2 + (ma < 0), face);
         // The specification's (sc, tc) for each face.
@@ -110,7 +110,11 @@ TEST(Generator, BrdfFactorCubeReadsTheParabolicMapAlongEachTexelsDirection) {
 }
 
 TEST(Noise, DeterministicPeriodicAndTileable) {
-  NoiseTableOptions o{.width = 16, .height = 16, .depth = 16, .channels = 3, .noise = {.period = 4, .seed = 7},
+  NoiseTableOptions o{.width = 16,
+                      .height = 16,
+                      .depth = 16,
+                      .channels = 3,
+                      .noise = {.period = 4, .seed = 7},
                       .format = TableFormat::float32};
   Table a = bake_noise_table(o), b = bake_noise_table(o);
   EXPECT_EQ(a.float32, b.float32);
@@ -159,9 +163,10 @@ TEST(BrdfFactorization, SeparableLobesReconstructCloselyPhongLessSo) {
     BrdfFactors f = factorize_brdf(brdf, fit);
     FactorizationError e = measure_factorization(f, brdf, 4000, 99);
     rel[int(lobe)] = e.relative_rmse;
-    std::printf("[ measured ] BRDF factorization 3x%dx%d, lobe %d: relative RMSE %.3f, max abs %.3f, "
-                "log residual %.3f\n",
-                fit.size, fit.size, int(lobe), e.relative_rmse, e.max_abs, f.log_residual_rms);
+    std::printf(
+        "[ measured ] BRDF factorization 3x%dx%d, lobe %d: relative RMSE %.3f, max abs %.3f, "
+        "log residual %.3f\n",
+        fit.size, fit.size, int(lobe), e.relative_rmse, e.max_abs, f.log_residual_rms);
     EXPECT_TRUE(std::isfinite(e.rmse));
   }
   // Blinn-Phong: only interpolation error is left (measured 2.5%). Ward: exact in form,

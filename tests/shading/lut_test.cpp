@@ -25,8 +25,8 @@ TableError strand_table_error_on_grid(const StrandTableOptions& o, int grid) {
     for (int i = 0; i <= grid; ++i) {
       double lt = -1.0 + 2.0 * i / grid, vt = -1.0 + 2.0 * j / grid;
       StrandTerms<double> exact = strand_from_cosines(lt, vt, o.exponent);
-      StrandTerms<float> got = lookup_strand_table(t, o, lut_u_from_cosine(o.index, float(lt)),
-                                                   lut_u_from_cosine(o.index, float(vt)));
+      StrandTerms<float> got =
+          lookup_strand_table(t, o, lut_u_from_cosine(o.index, float(lt)), lut_u_from_cosine(o.index, float(vt)));
       e.diffuse = std::max(e.diffuse, std::abs(got.diffuse - exact.diffuse));
       e.specular = std::max(e.specular, std::abs(got.specular - exact.specular));
     }
@@ -36,15 +36,14 @@ TableError strand_table_error_on_grid(const StrandTableOptions& o, int grid) {
 TEST(StrandTable, TexelCentreMappingIsExactAtTexelsAndEnds) {
   // With texel-centre mapping every texel is hit at its centre: the lookup at the baked
   // cosines returns the stored value (float table: only float rounding, < 1e-6).
-  StrandTableOptions o{.size = 64, .exponent = 16, .mapping = LutMapping::texel_centre,
-                       .format = TableFormat::float32};
+  StrandTableOptions o{.size = 64, .exponent = 16, .mapping = LutMapping::texel_centre, .format = TableFormat::float32};
   Table t = bake_strand_table(o);
   for (int i = 0; i < o.size; i += 7)
     for (int j = 0; j < o.size; j += 5) {
       double lt = lut_cosine_of_u(o.index, lut_texel_u(o.mapping, o.size, i));
       double vt = lut_cosine_of_u(o.index, lut_texel_u(o.mapping, o.size, j));
-      StrandTerms<float> got = lookup_strand_table(t, o, lut_u_from_cosine(o.index, float(lt)),
-                                                   lut_u_from_cosine(o.index, float(vt)));
+      StrandTerms<float> got =
+          lookup_strand_table(t, o, lut_u_from_cosine(o.index, float(lt)), lut_u_from_cosine(o.index, float(vt)));
       StrandTerms<double> exact = strand_from_cosines(lt, vt, o.exponent);
       EXPECT_NEAR(got.diffuse, exact.diffuse, 1e-5);
       EXPECT_NEAR(got.specular, exact.specular, 1e-5);
@@ -62,10 +61,11 @@ TEST(StrandTable, MappingErrorsNaiveSeedWrapAndTexelCentre) {
   TableError naive = err(LutMapping::naive), wrap = err(LutMapping::seed_wrap), centre = err(LutMapping::texel_centre),
              centre_wrap = err(LutMapping::texel_centre_wrap);
   std::printf("[ measured ] strand table %dx%d float, max error over [-1,1]^2 (diffuse / specular^16):\n", n, n);
-  std::printf("[ measured ]   naive+clamp %.4f / %.4f; seed wrap %.4f / %.4f; texel-centre %.4f / %.4f; "
-              "texel-centre wrap %.4f / %.4f\n",
-              naive.diffuse, naive.specular, wrap.diffuse, wrap.specular, centre.diffuse, centre.specular,
-              centre_wrap.diffuse, centre_wrap.specular);
+  std::printf(
+      "[ measured ]   naive+clamp %.4f / %.4f; seed wrap %.4f / %.4f; texel-centre %.4f / %.4f; "
+      "texel-centre wrap %.4f / %.4f\n",
+      naive.diffuse, naive.specular, wrap.diffuse, wrap.specular, centre.diffuse, centre.specular, centre_wrap.diffuse,
+      centre_wrap.specular);
   // Naive with wrap blends the opposite end of the table in at the corners: the specular
   // error there is half the table's range.
   EXPECT_GE(wrap.specular, 0.49);
@@ -82,8 +82,11 @@ TEST(StrandTable, AngleIndexingOnTheRidge) {
   // 1e-4 to 0.2 rad. In dot space sqrt(1 - x^2) has an infinite slope at x = 1, so
   // linear interpolation between texels is worst there; in angle space it is sin(a).
   const int n = 64;
-  StrandTableOptions dot{.size = n, .exponent = 16, .mapping = LutMapping::texel_centre,
-                         .index = LutIndex::cosine, .format = TableFormat::float32};
+  StrandTableOptions dot{.size = n,
+                         .exponent = 16,
+                         .mapping = LutMapping::texel_centre,
+                         .index = LutIndex::cosine,
+                         .format = TableFormat::float32};
   StrandTableOptions ang = dot;
   ang.index = LutIndex::angle;
   Table td = bake_strand_table(dot), ta = bake_strand_table(ang);

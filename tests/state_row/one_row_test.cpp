@@ -3,8 +3,8 @@
 // documented, and its value applied to the pass state and the Vulkan pipeline state.
 #include <gtest/gtest.h>
 
-#include "fx/state_table.h"
 #include "fx/binding/pass_state_mapping.h"
+#include "fx/state_table.h"
 #include "model_test_util.h"
 
 namespace fx {
@@ -27,8 +27,9 @@ TEST(OneStateRow, ItsValueIsChecked) {
 
 TEST(OneStateRow, IsDocumented) {
   const std::string doc = render_state_table_markdown();
-  EXPECT_NE(doc.find("| DepthWriteEnable | - | bool | D3D9 | maps_to_vulkan | depth_stencil | pipeline: `depth_write` |"),
-            std::string::npos);
+  EXPECT_NE(
+      doc.find("| DepthWriteEnable | - | bool | D3D9 | maps_to_vulkan | depth_stencil | pipeline: `depth_write` |"),
+      std::string::npos);
 }
 
 TEST(OneStateRow, IsAppliedToThePipeline) {

@@ -21,8 +21,7 @@ struct CliRun {
 // `prefix` goes before the binary in the shell command (`timeout 60 `).
 inline CliRun run_fxkit(const std::string& args, bool capture_stderr = false, const std::string& prefix = "") {
   CliRun r;
-  std::string err_file = std::string(::testing::TempDir()) + "fxkit_cli_stderr_" +
-                         std::to_string(::getpid()) + ".txt";
+  std::string err_file = std::string(::testing::TempDir()) + "fxkit_cli_stderr_" + std::to_string(::getpid()) + ".txt";
   std::string cmd =
       prefix + std::string(FXKIT_BINARY) + " " + args + " 2>" + (capture_stderr ? err_file : std::string("/dev/null"));
   FILE* p = popen(cmd.c_str(), "r");

@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <cstring>
 
-#include "fx/select/caps_sources.h"
-#include "fx/vulkan/shader_capabilities.h"
 #include "fx/binding/context_caps.h"
+#include "fx/select/caps_sources.h"
 #include "fx/vulkan/one_shot.h"
+#include "fx/vulkan/shader_capabilities.h"
 #include "vulkan_fixture.h"
 
 namespace fx::vk {
@@ -85,8 +85,7 @@ TEST_F(ContextTest, DepthFormatQueryReturnsAUsableFormat) {
   if (stencil != VK_FORMAT_UNDEFINED) {
     EXPECT_TRUE(stencil == VK_FORMAT_D24_UNORM_S8_UINT || stencil == VK_FORMAT_D32_SFLOAT_S8_UINT);
   }
-  EXPECT_TRUE(
-      ctx().supports_format(VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT));
+  EXPECT_TRUE(ctx().supports_format(VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT));
 }
 
 // The messenger must actually catch errors, or "zero validation errors" proves nothing.
@@ -120,8 +119,8 @@ TEST_F(ContextTest, ValidationErrorsAreRecordedWithIdAndCounted) {
 
 TEST_F(ContextTest, WrapBorrowsHandlesWithoutDestroyingThem) {
   {
-    Context borrowed = Context::wrap(ctx().instance(), ctx().physical_device(), ctx().device(),
-                                     ctx().queue(), ctx().queue_family());
+    Context borrowed =
+        Context::wrap(ctx().instance(), ctx().physical_device(), ctx().device(), ctx().queue(), ctx().queue_family());
     EXPECT_FALSE(borrowed.owns_handles());
     EXPECT_EQ(borrowed.device(), ctx().device());
     EXPECT_EQ(borrowed.info().name, ctx().info().name);
@@ -146,8 +145,8 @@ TEST_F(ContextTest, WrapBorrowsHandlesWithoutDestroyingThem) {
 TEST_F(ContextTest, WrapReportsTheFeaturesTheApplicationEnabled) {
   DeviceFeatures enabled;
   enabled.dynamic_rendering = true;  // the application says: nothing else
-  Context borrowed = Context::wrap(ctx().instance(), ctx().physical_device(), ctx().device(),
-                                   ctx().queue(), ctx().queue_family(), enabled);
+  Context borrowed = Context::wrap(ctx().instance(), ctx().physical_device(), ctx().device(), ctx().queue(),
+                                   ctx().queue_family(), enabled);
   EXPECT_TRUE(borrowed.features().dynamic_rendering);
   EXPECT_FALSE(borrowed.features().push_descriptor);
   EXPECT_EQ(borrowed.functions().push_descriptor_set, nullptr);
@@ -161,8 +160,8 @@ TEST_F(ContextTest, CapsOfAContextHaveOnlyTheShaderFeaturesItsDeviceEnabled) {
   EXPECT_EQ(own.vulkan.features, physical.vulkan.features) << "a headless context enables every one it has";
   DeviceFeatures enabled;
   enabled.dynamic_rendering = true;
-  Context borrowed = Context::wrap(ctx().instance(), ctx().physical_device(), ctx().device(),
-                                   ctx().queue(), ctx().queue_family(), enabled);
+  Context borrowed = Context::wrap(ctx().instance(), ctx().physical_device(), ctx().device(), ctx().queue(),
+                                   ctx().queue_family(), enabled);
   const DeviceCaps caps = context_caps(borrowed);
   for (const ShaderCapabilityFeature& row : shader_capability_features())
     EXPECT_FALSE(std::binary_search(caps.vulkan.features.begin(), caps.vulkan.features.end(), std::string(row.feature)))

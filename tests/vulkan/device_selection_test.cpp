@@ -13,8 +13,8 @@ namespace {
 
 using testing::describe;
 
-DeviceCandidate gpu(std::string name, VkPhysicalDeviceType type,
-                    uint32_t version = VK_API_VERSION_1_3, bool graphics = true) {
+DeviceCandidate gpu(std::string name, VkPhysicalDeviceType type, uint32_t version = VK_API_VERSION_1_3,
+                    bool graphics = true) {
   return {std::move(name), type, version, graphics};
 }
 
@@ -65,8 +65,7 @@ TEST(SelectDevice, UnknownOrUnusableRequestIsAnErrorListingDevices) {
   EXPECT_FALSE(select_device(kMachine, "Old Radeon", sink));
   ASSERT_EQ(sink.error_count(), 3u);
   EXPECT_EQ(sink.diagnostics()[0].id, "vk-device-not-found");
-  EXPECT_NE(sink.diagnostics()[1].message.find("2: NVIDIA GeForce RTX 3070 (discrete GPU"),
-            std::string::npos)
+  EXPECT_NE(sink.diagnostics()[1].message.find("2: NVIDIA GeForce RTX 3070 (discrete GPU"), std::string::npos)
       << sink.diagnostics()[1].message;
   EXPECT_EQ(sink.diagnostics()[2].id, "vk-no-suitable-device");
 }
@@ -79,10 +78,8 @@ class ScopedEnv {
     setenv(name, value, 1);
   }
   ~ScopedEnv() {
-    if (old_)
-      setenv(name_, old_->c_str(), 1);
-    else
-      unsetenv(name_);
+    if (old_) setenv(name_, old_->c_str(), 1);
+    else unsetenv(name_);
   }
 
  private:

@@ -31,7 +31,8 @@ struct V { float4 pos : POSITION; float3 n : TEXCOORD0; };
 V VS(float4 p : POSITION, float3 n : NORMAL) { V o; o.pos = mul(p, WorldViewProjection); o.n = mul(n, (float3x3)World); return o; }
 float4 PS(V i) : COLOR0 {
   float d = saturate(dot(normalize(i.n), -LightDirection));
-  return float4(Tint.rgb * (0.15 + d * )") + std::to_string(scale) + R"() + tex2D(LutSampler, float2(d, 0.5)).r * 0.3, 1.0);
+  return float4(Tint.rgb * (0.15 + d * )") +
+         std::to_string(scale) + R"() + tex2D(LutSampler, float2(d, 0.5)).r * 0.3, 1.0);
 }
 technique lit { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
 )" + (broken ? "technique broken { pass p0 { VertexShader = compile vs_2_0 Missing( } }\n" : "");
@@ -64,7 +65,11 @@ struct ReloadHarness {
     options.coalesce = std::chrono::milliseconds(5);
     lib = std::make_unique<EffectLibrary>(std::move(options));
     effect = lib->load(path);
-    EXPECT_TRUE(effect.ok()) << [&] { std::string s; for (auto& d : effect.diagnostics()) s += d.id + ": " + d.message + "\n"; return s; }();
+    EXPECT_TRUE(effect.ok()) << [&] {
+      std::string s;
+      for (auto& d : effect.diagnostics()) s += d.id + ": " + d.message + "\n";
+      return s;
+    }();
     effect.select();
   }
   ~ReloadHarness() {

@@ -71,8 +71,7 @@ TEST_F(EffectRenderTest, SeedEffectsMatchGoldenImages) {
     const uint8_t* corner = image->at(0, 0);
     size_t covered = 0;
     for (uint32_t y = 0; y < image->height; ++y)
-      for (uint32_t x = 0; x < image->width; ++x)
-        covered += std::memcmp(image->at(x, y), corner, 3) != 0;
+      for (uint32_t x = 0; x < image->width; ++x) covered += std::memcmp(image->at(x, y), corner, 3) != 0;
     EXPECT_GT(covered, image->width * image->height / 6);
     expect_golden(*image, c.golden);
   }
@@ -111,7 +110,8 @@ TEST_F(EffectRenderTest, DynamicAndStaticPipelinePathsGiveIdenticalImages) {
     SCOPED_TRACE(technique);
     auto dynamic = bind_effect(ctx(), effects_dir() + "/strand_aniso.fx", technique, "torus", 96,
                                DynamicStateSet::from_features(ctx().features()));
-    auto fixed = bind_effect(ctx(), effects_dir() + "/strand_aniso.fx", technique, "torus", 96, DynamicStateSet::none());
+    auto fixed =
+        bind_effect(ctx(), effects_dir() + "/strand_aniso.fx", technique, "torus", 96, DynamicStateSet::none());
     ASSERT_TRUE(dynamic && fixed);
     auto a = dynamic->render(), b = fixed->render();
     ASSERT_TRUE(a && b);
@@ -142,7 +142,8 @@ TEST_F(EffectRenderTest, ParameterChangesReachTheImage) {
 // is undefined to sample; lavapipe crashed reading it), all bound to the first element's
 // texture, here the white stand-in.
 TEST_F(EffectRenderTest, SamplerArrayElementsAreAllBound) {
-  const std::array<uint8_t, 4> centre = centre_of("fxkit_sampler_array", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_sampler_array", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
 texture a;
 texture b;
 sampler s[2] = { sampler_state { Texture = <a>; }, sampler_state { Texture = <b>; } };
@@ -160,7 +161,8 @@ technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile
 // depth formats, so a depth of 1.0 stands in, in a format and with a filter the device
 // allows; the colour stand-in was a validation error and undefined.
 TEST_F(EffectRenderTest, ComparisonSamplingWithoutADepthTextureSeesNothingInShadow) {
-  const std::array<uint8_t, 4> centre = centre_of("fxkit_comparison", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_comparison", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
 Texture2D ShadowMap;
 SamplerComparisonState ShadowSampler { ComparisonFunc = LESS; Filter = COMPARISON_MIN_MAG_MIP_LINEAR; };
 struct V { float4 p : SV_Position; float2 uv : TEXCOORD0; };
@@ -178,7 +180,8 @@ technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelS
 // A multisampled texture read with Load(coord, sample): the stand-in is a multisampled image
 // (a single-sample one is a validation error), every sample cleared white.
 TEST_F(EffectRenderTest, MultisampledTextureLoadsReadAMultisampledStandIn) {
-  const std::array<uint8_t, 4> centre = centre_of("fxkit_multisampled", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_multisampled", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
 Texture2DMS<float4, 4> Colour;
 Texture2DMSArray<float4, 4> Layers;
 struct V { float4 p : SV_Position; float2 uv : TEXCOORD0; };
@@ -196,7 +199,8 @@ technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelS
 // shader: an array inside a struct has std140's 16-byte stride (glslang's reflection said 4,
 // so scale[1] read 0).
 TEST_F(EffectRenderTest, StructMembersOfACbufferReachTheShader) {
-  const std::array<uint8_t, 4> centre = centre_of("fxkit_struct_members", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_struct_members", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
 struct Light { float3 direction; float4 colour; };
 struct Rig { Light key; float scale[2]; };
 cbuffer Lights {
@@ -258,7 +262,8 @@ technique10 T { pass P {
 // code does; `_centroid` names the same register): the missing components read 0 and 1,
 // and the validation layer sees them written.
 TEST_F(EffectRenderTest, NarrowVaryingsReadPaddedComponents) {
-  const std::array<uint8_t, 4> centre = centre_of("fxkit_narrow_varyings", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_narrow_varyings", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
 struct V { float4 p : POSITION; float2 uv : TEXCOORD0; };
 V VS(float4 p : POSITION) { V o; o.p = mul(p, WorldViewProjection); o.uv = float2(0.5, 0.5); return o; }
 float4 PS(float4 uv : TEXCOORD0_centroid) : COLOR0 { return float4(uv.x, uv.z, uv.w, 1); }

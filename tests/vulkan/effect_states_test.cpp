@@ -21,8 +21,7 @@ float4 Solid(uniform float4 c) : COLOR0 { return c; }
 )" + passes;
 }
 
-#define SHADERS(color) \
-  "VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Solid(" color ");"
+#define SHADERS(color) "VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 Solid(" color ");"
 
 std::array<int, 4> centre(const fx::Image& image) {
   const uint8_t* p = image.at(image.width / 2, image.height / 2);
@@ -35,13 +34,17 @@ std::unique_ptr<RenderedEffect> bind_text(Context& ctx, const std::string& name,
 }
 
 TEST_F(EffectStatesTest, BlendFactorsFromPassStates) {
-  auto r = bind_text(ctx(), "blend.fx", effect_with(R"(
-technique alpha { pass p0 { AlphaBlendEnable = true; SrcBlend = SrcAlpha; DestBlend = InvSrcAlpha; )" SHADERS("float4(1, 0, 0, 0.5)") R"( } }
-technique additive { pass p0 { AlphaBlendEnable = true; SrcBlend = One; DestBlend = One; )" SHADERS("float4(0.5, 0.25, 0, 1)") R"( }
-                     pass p1 { AlphaBlendEnable = true; SrcBlend = One; DestBlend = One; )" SHADERS("float4(0.25, 0.25, 0, 1)") R"( } }
+  auto r = bind_text(ctx(), "blend.fx",
+                     effect_with(R"(
+technique alpha { pass p0 { AlphaBlendEnable = true; SrcBlend = SrcAlpha; DestBlend = InvSrcAlpha; )" SHADERS(
+                         "float4(1, 0, 0, 0.5)") R"( } }
+technique additive { pass p0 { AlphaBlendEnable = true; SrcBlend = One; DestBlend = One; )" SHADERS("float4(0.5, 0.25, "
+                                                                                                    "0, 1)") R"( }
+                     pass p1 { AlphaBlendEnable = true; SrcBlend = One; DestBlend = One; )" SHADERS("float4(0.25, "
+                                                                                                    "0.25, 0, 1)") R"( } }
 technique opaque { pass p0 { )" SHADERS("float4(1, 0, 0, 0.5)") R"( } }
 )"),
-                    "alpha");
+                     "alpha");
   ASSERT_TRUE(r);
   auto alpha = r->render();
   r->technique = r->effect->find_technique("additive");
@@ -65,7 +68,7 @@ technique ccw { pass p0 { CullMode = CCW; )" SHADERS("float4(0, 1, 0, 1)") R"( }
 technique cw { pass p0 { CullMode = CW; )" SHADERS("float4(0, 1, 0, 1)") R"( } }
 technique none { pass p0 { CullMode = None; )" SHADERS("float4(0, 1, 0, 1)") R"( } }
 )"),
-                    "ccw");
+                     "ccw");
   ASSERT_TRUE(r);
   auto ccw = r->render();
   r->technique = r->effect->find_technique("cw");
@@ -80,12 +83,17 @@ technique none { pass p0 { CullMode = None; )" SHADERS("float4(0, 1, 0, 1)") R"(
 }
 
 TEST_F(EffectStatesTest, DepthCompareBetweenPasses) {
-  auto r = bind_text(ctx(), "depth.fx", effect_with(R"(
-technique equal { pass p0 { )" SHADERS("float4(1, 0, 0, 1)") R"( } pass p1 { ZFunc = Equal; ZWriteEnable = false; )" SHADERS("float4(0, 0, 1, 1)") R"( } }
-technique less { pass p0 { )" SHADERS("float4(1, 0, 0, 1)") R"( } pass p1 { ZFunc = Less; )" SHADERS("float4(0, 0, 1, 1)") R"( } }
+  auto r = bind_text(
+      ctx(), "depth.fx",
+      effect_with(R"(
+technique equal { pass p0 { )" SHADERS(
+          "float4(1, 0, 0, 1)") R"( } pass p1 { ZFunc = Equal; ZWriteEnable = false; )" SHADERS("float4(0, 0, 1, "
+                                                                                                "1)") R"( } }
+technique less { pass p0 { )" SHADERS("float4(1, 0, 0, 1)") R"( } pass p1 { ZFunc = Less; )" SHADERS("float4(0, 0, 1, "
+                                                                                                     "1)") R"( } }
 technique off { pass p0 { )" SHADERS("float4(1, 0, 0, 1)") R"( } pass p1 { ZEnable = false; ZFunc = Never; )" SHADERS("float4(0, 0, 1, 1)") R"( } }
 )"),
-                    "equal");
+      "equal");
   ASSERT_TRUE(r);
   auto equal = r->render();
   r->technique = r->effect->find_technique("less");
@@ -99,12 +107,21 @@ technique off { pass p0 { )" SHADERS("float4(1, 0, 0, 1)") R"( } pass p1 { ZEnab
 }
 
 TEST_F(EffectStatesTest, StencilWrittenByOnePassMasksTheNext) {
-  const std::string mark = R"(pass mark { StencilEnable = true; StencilFunc = Always; StencilPass = Replace; StencilRef = 1; ColorWriteEnable = 0; )" SHADERS("float4(1, 1, 1, 1)") " }";
-  auto r = bind_text(ctx(), "stencil.fx", effect_with(
-      "technique match { " + mark + R"( pass p1 { StencilEnable = true; StencilFunc = Equal; StencilRef = 1; ZFunc = LessEqual; )" SHADERS("float4(1, 0, 1, 1)") R"( } }
-technique mismatch { )" + mark + R"( pass p1 { StencilEnable = true; StencilFunc = Equal; StencilRef = 2; )" SHADERS("float4(1, 0, 1, 1)") R"( } }
+  const std::string mark =
+      R"(pass mark { StencilEnable = true; StencilFunc = Always; StencilPass = Replace; StencilRef = 1; ColorWriteEnable = 0; )" SHADERS(
+          "float4(1, 1, 1, 1)") " }";
+  auto r = bind_text(
+      ctx(), "stencil.fx",
+      effect_with(
+          "technique match { " + mark +
+          R"( pass p1 { StencilEnable = true; StencilFunc = Equal; StencilRef = 1; ZFunc = LessEqual; )" SHADERS(
+              "float4(1, 0, 1, 1)") R"( } }
+technique mismatch { )" +
+          mark +
+          R"( pass p1 { StencilEnable = true; StencilFunc = Equal; StencilRef = 2; )" SHADERS(
+              "float4(1, 0, 1, 1)") R"( } }
 )"),
-                    "match");
+      "match");
   ASSERT_TRUE(r);
   auto match = r->render();
   r->technique = r->effect->find_technique("mismatch");
@@ -117,11 +134,16 @@ technique mismatch { )" + mark + R"( pass p1 { StencilEnable = true; StencilFunc
 
 TEST_F(EffectStatesTest, SamplerAddressModes) {
   auto sampler = [](const char* mode) {
-    return std::string("sampler2D S_") + mode + " = sampler_state { Texture = <Checker>; MinFilter = Point; MagFilter = Point; MipFilter = None; AddressU = " + mode + "; AddressV = " + mode + "; BorderColor = 0xFFFFFFFF; };\n" +
-           "float4 PS_" + mode + "(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(S_" + mode + ", uv * 3.0 - 1.0); }\n" +
-           "technique " + mode + " { pass p0 { CullMode = None; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS_" + mode + "(); } }\n";
+    return std::string("sampler2D S_") + mode +
+           " = sampler_state { Texture = <Checker>; MinFilter = Point; MagFilter = Point; MipFilter = None; AddressU "
+           "= " +
+           mode + "; AddressV = " + mode + "; BorderColor = 0xFFFFFFFF; };\n" + "float4 PS_" + mode +
+           "(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(S_" + mode + ", uv * 3.0 - 1.0); }\n" + "technique " +
+           mode + " { pass p0 { CullMode = None; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS_" +
+           mode + "(); } }\n";
   };
-  auto r = bind_text(ctx(), "address.fx", effect_with(sampler("Wrap") + sampler("Clamp") + sampler("Mirror") + sampler("Border")), "Wrap");
+  auto r = bind_text(ctx(), "address.fx",
+                     effect_with(sampler("Wrap") + sampler("Clamp") + sampler("Mirror") + sampler("Border")), "Wrap");
   ASSERT_TRUE(r);
   std::map<std::string, fx::Image> images;
   for (const char* mode : {"Wrap", "Clamp", "Mirror", "Border"}) {
@@ -152,15 +174,17 @@ TEST_F(EffectStatesTest, SamplerAddressModes) {
 // it). `inputs` are the vertex shader's extra parameters, `color` what it outputs from them.
 std::array<int, 4> centre_with_missing_inputs(Context& ctx, const std::string& name, const std::string& inputs,
                                               const std::string& color) {
-  auto r = bind_text(ctx, name, R"(
+  auto r = bind_text(ctx, name,
+                     R"(
 float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
 struct V { float4 pos : POSITION; float4 color : COLOR0; };
-V VS(float4 p : POSITION, )" + inputs + R"() { V o; o.pos = mul(p, WorldViewProjection); o.color = )" + color +
-                                    R"(; return o; }
+V VS(float4 p : POSITION, )" +
+                         inputs + R"() { V o; o.pos = mul(p, WorldViewProjection); o.color = )" + color +
+                         R"(; return o; }
 float4 PS(float4 c : COLOR0) : COLOR0 { return c; }
 technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
 )",
-                    "t");
+                     "t");
   if (!r) return {};
   auto image = r->render();
   return image ? centre(*image) : std::array<int, 4>{};
@@ -196,7 +220,7 @@ float4 PS() : SV_Target {
 }
 technique10 t { pass p { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelShader(CompileShader(ps_4_0, PS())); } }
 )",
-                    "t");
+                     "t");
   ASSERT_TRUE(r);
   auto image = r->render();
   ASSERT_TRUE(image);
@@ -240,7 +264,7 @@ V VS(float4 p : POSITION) { V o; o.pos = mul(p, WorldViewProjection); o.color = 
 float4 PS(float4 c : COLOR0) : COLOR0 { return c; }
 technique t { pass p { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
 )",
-                    "t");
+                     "t");
   ASSERT_TRUE(r);
   std::vector<float> bones(4 * 12, 0.0f);
   bones[12 + 0] = 0.25f, bones[12 + 1] = 0.5f, bones[12 + 2] = 0.75f;  // element 1, row 0

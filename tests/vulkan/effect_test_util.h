@@ -3,14 +3,14 @@
 #pragma once
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
 
-#include "fx/compile/effect_file.h"
 #include "fx/binding/effect_preview.h"
+#include "fx/compile/effect_file.h"
 #include "vulkan_fixture.h"
 
 namespace fx::vk::testing {
@@ -105,7 +105,8 @@ inline void expect_golden(const fx::Image& image, const std::string& name) {
   ASSERT_EQ(golden->width, image.width);
   ASSERT_EQ(golden->height, image.height);
   ImageDiff diff = compare(*golden, image, 3);
-  EXPECT_EQ(diff.channels_over, 0u) << name << ": max difference " << diff.max_abs << " at " << diff.first_x << "," << diff.first_y;
+  EXPECT_EQ(diff.channels_over, 0u) << name << ": max difference " << diff.max_abs << " at " << diff.first_x << ","
+                                    << diff.first_y;
 }
 
 // Writes `text` to a fresh file under the test temp dir and returns its path.

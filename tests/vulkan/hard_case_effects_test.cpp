@@ -71,9 +71,12 @@ std::vector<HardCase> hard_cases(const glm::vec3& eye) {
       // (L = V at the centre), +to_eye behind the object (L = -V: the half vector vanishes).
       {"light at the camera", -to_eye},
       {"light opposite the camera", to_eye},
-      {"+x", glm::vec3(1, 0, 0)}, {"-x", glm::vec3(-1, 0, 0)},
-      {"+y", glm::vec3(0, 1, 0)}, {"-y", glm::vec3(0, -1, 0)},
-      {"+z", glm::vec3(0, 0, 1)}, {"-z", glm::vec3(0, 0, -1)},
+      {"+x", glm::vec3(1, 0, 0)},
+      {"-x", glm::vec3(-1, 0, 0)},
+      {"+y", glm::vec3(0, 1, 0)},
+      {"-y", glm::vec3(0, -1, 0)},
+      {"+z", glm::vec3(0, 0, 1)},
+      {"-z", glm::vec3(0, 0, -1)},
       {"zero exponent", std::nullopt, true},
       {"zero exponent, light opposite the camera", to_eye, true},
   };
@@ -149,8 +152,8 @@ TEST_F(HardCaseEffects, NoTechniqueOutputsNanOrInfOnHardCaseParameters) {
       }
     }
   }
-  std::printf("hard-case effects: %zu techniques, %zu renders, %zu light and %zu exponent parameters\n",
-              techniques, renders, directions, exponents);
+  std::printf("hard-case effects: %zu techniques, %zu renders, %zu light and %zu exponent parameters\n", techniques,
+              renders, directions, exponents);
   EXPECT_GE(techniques, 25u);
   EXPECT_GE(directions, 6u);
   EXPECT_GE(exponents, 2u);

@@ -176,8 +176,8 @@ PixelErrors render_errors(Context& ctx, const std::vector<shading::ShadingSample
     const float* px = img.at(uint32_t(i % size_t(size)), uint32_t(i / size_t(size)));
     const shading::ShadingSample& s = samples[i];
     EXPECT_TRUE(px[2] == 0.f && std::isfinite(px[0]) && std::isfinite(px[1]))
-        << "non-finite strand term at sample " << i << " kind " << int(s.kind) << " degeneracy "
-        << int(s.degeneracy) << ": " << px[0] << ", " << px[1] << " flag " << px[2];
+        << "non-finite strand term at sample " << i << " kind " << int(s.kind) << " degeneracy " << int(s.degeneracy)
+        << ": " << px[0] << ", " << px[1] << " flag " << px[2];
     // The effect's path in double on the stored inputs: guarded normalize_or (non-finite ->
     // the fallback), then the analytic reference.
     const auto ref = shading::strand_reference(effect_normalize_or(as_stored(s.l), {0, 0, 1}),
@@ -233,8 +233,7 @@ TEST_F(HardCasePixels, InfiniteInputsFallBackAsGuardedHDocuments) {
 // samples put it outside the tolerance, so the test above would catch a regression to it.
 TEST_F(HardCasePixels, SeedSqrtFormMissesTheTolerance) {
   const PixelErrors e = render_errors(ctx(), hard_samples(false), SineForm::seed_sqrt);
-  std::printf("hard-case pixels, seed sqrt form: worst |diffuse| %.3g, worst |specular| %.3g\n", e.diffuse,
-              e.specular);
+  std::printf("hard-case pixels, seed sqrt form: worst |diffuse| %.3g, worst |specular| %.3g\n", e.diffuse, e.specular);
   EXPECT_GT(e.diffuse, kDiffuseTolerance);
   EXPECT_GT(e.specular, kSpecularTolerance);
 }

@@ -19,9 +19,7 @@ Image gradient(uint32_t w, uint32_t h, uint32_t channels) {
   return image;
 }
 
-std::filesystem::path temp_file(const char* name) {
-  return std::filesystem::temp_directory_path() / name;
-}
+std::filesystem::path temp_file(const char* name) { return std::filesystem::temp_directory_path() / name; }
 
 TEST(Png, RoundTripsEveryChannelCountBitExactly) {
   for (uint32_t channels = 1; channels <= 4; ++channels) {
@@ -73,8 +71,7 @@ TEST(Png, MissingAndCorruptFilesAreDiagnostics) {
   ASSERT_EQ(sink.error_count(), 3u);
   EXPECT_EQ(sink.diagnostics()[0].id, "image-open-failed");
   EXPECT_EQ(sink.diagnostics()[1].id, "image-decode-failed");
-  EXPECT_NE(sink.diagnostics()[1].message.find(path.string()), std::string::npos)
-      << "the message names the file";
+  EXPECT_NE(sink.diagnostics()[1].message.find(path.string()), std::string::npos) << "the message names the file";
   EXPECT_EQ(sink.diagnostics()[2].id, "image-decode-failed");
   std::filesystem::remove(path);
 }

@@ -64,8 +64,7 @@ TEST_F(PassRecorderTest, DynamicAndStaticPathsRenderIdenticalImagesWithFewerPipe
   fx::Image images[2];
   size_t created[2];
   for (int dynamic = 0; dynamic < 2; ++dynamic) {
-    PassHarness h(ctx(), dynamic ? DynamicStateSet::from_features(ctx().features())
-                                 : DynamicStateSet::none(), 32);
+    PassHarness h(ctx(), dynamic ? DynamicStateSet::from_features(ctx().features()) : DynamicStateSet::none(), 32);
     auto prog = make_program(ctx(), "PSColor");
     DiagnosticSink sink;
     auto input = match_vertex_layout(quad_layout(), prog->program.vertex_inputs(), sink);
@@ -77,10 +76,12 @@ TEST_F(PassRecorderTest, DynamicAndStaticPathsRenderIdenticalImagesWithFewerPipe
       ASSERT_TRUE(res.back()->set_uniform("Color", c, sizeof c, sink));
     }
     VkBuffer vb = h.vertices(v);
-    images[dynamic] = h.render([&](VkCommandBuffer cmd, PassRecorder& r) {
-      for (size_t i = 0; i < states.size(); ++i)
-        draw(cmd, r, {&prog->program, states[i], &*input, res[i].get()}, vb, 12, uint32_t(i * 12));
-    }, {0.2f, 0.2f, 0.2f, 1});
+    images[dynamic] = h.render(
+        [&](VkCommandBuffer cmd, PassRecorder& r) {
+          for (size_t i = 0; i < states.size(); ++i)
+            draw(cmd, r, {&prog->program, states[i], &*input, res[i].get()}, vb, 12, uint32_t(i * 12));
+        },
+        {0.2f, 0.2f, 0.2f, 1});
     created[dynamic] = h.pipelines().stats().created;
   }
   ASSERT_FALSE(images[0].empty());
@@ -97,8 +98,7 @@ TEST_F(PassRecorderTest, DynamicAndStaticPathsRenderIdenticalImagesWithFewerPipe
 
 TEST_F(PassRecorderTest, RedundantStateIsNotRecordedAgain) {
   for (bool dynamic : {false, true}) {
-    PassHarness h(ctx(), dynamic ? DynamicStateSet::from_features(ctx().features())
-                                 : DynamicStateSet::none());
+    PassHarness h(ctx(), dynamic ? DynamicStateSet::from_features(ctx().features()) : DynamicStateSet::none());
     auto prog = make_program(ctx(), "PSColor");
     DiagnosticSink sink;
     auto input = match_vertex_layout(quad_layout(), prog->program.vertex_inputs(), sink);
@@ -181,10 +181,13 @@ TEST_F(PassRecorderTest, CallerWrittenUniformsAreBoundByOffset) {
   VkBuffer vb = h.vertices(v);
   fx::Image img = h.render([&](VkCommandBuffer cmd, PassRecorder& r) {
     const float green[4] = {0, 1, 0, 1};
-    std::optional<uint32_t> offset = r.write_uniform(size, [&](uint8_t* ring) {
-      std::memset(ring, 0, size);
-      std::memcpy(ring, green, sizeof green);
-    }, sink);
+    std::optional<uint32_t> offset = r.write_uniform(
+        size,
+        [&](uint8_t* ring) {
+          std::memset(ring, 0, size);
+          std::memcpy(ring, green, sizeof green);
+        },
+        sink);
     ASSERT_TRUE(offset) << describe(sink);
     const uint32_t offsets[1] = {*offset};
     PassDesc pass{&prog->program, PipelineState{}, &*input, &res};

@@ -36,10 +36,10 @@ TEST(PassStateMapping, FrontFaceFollowsViewportAndMeshWinding) {
     return s ? VkFrontFace(s->front_face) : VK_FRONT_FACE_MAX_ENUM;
   };
   constexpr auto cw = FrontFace::clockwise, ccw = FrontFace::counter_clockwise;
-  EXPECT_EQ(front(cw, true, cw), VK_FRONT_FACE_CLOCKWISE);            // D3D as is
-  EXPECT_EQ(front(cw, false, cw), VK_FRONT_FACE_COUNTER_CLOCKWISE);   // projection flip
-  EXPECT_EQ(front(cw, true, ccw), VK_FRONT_FACE_COUNTER_CLOCKWISE);   // EffectPreview
-  EXPECT_EQ(front(cw, false, ccw), VK_FRONT_FACE_CLOCKWISE);          // two mirrors
+  EXPECT_EQ(front(cw, true, cw), VK_FRONT_FACE_CLOCKWISE);           // D3D as is
+  EXPECT_EQ(front(cw, false, cw), VK_FRONT_FACE_COUNTER_CLOCKWISE);  // projection flip
+  EXPECT_EQ(front(cw, true, ccw), VK_FRONT_FACE_COUNTER_CLOCKWISE);  // EffectPreview
+  EXPECT_EQ(front(cw, false, ccw), VK_FRONT_FACE_CLOCKWISE);         // two mirrors
   // An effect that declares counter-clockwise front faces is mirrored the same way.
   EXPECT_EQ(front(ccw, true, cw), VK_FRONT_FACE_COUNTER_CLOCKWISE);
   EXPECT_EQ(front(ccw, false, cw), VK_FRONT_FACE_CLOCKWISE);
@@ -50,8 +50,14 @@ TEST(PassStateMapping, FrontFaceFollowsViewportAndMeshWinding) {
 
 TEST(PassStateMapping, BlendStencilAndBias) {
   PassStateSummary p;
-  p.blend[0] = {true, BlendFactor::src_alpha, BlendFactor::one_minus_src_alpha, BlendOp::add,
-                BlendFactor::one, BlendFactor::zero, BlendOp::max, 0x7};
+  p.blend[0] = {true,
+                BlendFactor::src_alpha,
+                BlendFactor::one_minus_src_alpha,
+                BlendOp::add,
+                BlendFactor::one,
+                BlendFactor::zero,
+                BlendOp::max,
+                0x7};
   p.stencil = true;
   p.stencil_front = {StencilOp::keep, StencilOp::increment_wrap, StencilOp::replace, CompareOp::equal};
   p.stencil_ref = 0x1234;

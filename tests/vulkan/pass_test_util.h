@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "fx/binding/pass_recorder.h"
 #include "fx/compile/program_link.h"
 #include "fx/compile/shader_compiler.h"
 #include "fx/vulkan/barrier.h"
 #include "fx/vulkan/buffer.h"
 #include "fx/vulkan/one_shot.h"
-#include "fx/binding/pass_recorder.h"
 #include "fx/vulkan/render_target.h"
 #include "fx/vulkan/sampler_cache.h"
 #include "vulkan_fixture.h"
@@ -71,15 +71,14 @@ inline std::unique_ptr<TestProgram> make_program(const Context& ctx, const char*
 }
 
 inline VertexLayout quad_layout() {
-  return {{{"POSITION", VK_FORMAT_R32G32B32_SFLOAT, 0, 0},
-           {"TEXCOORD0", VK_FORMAT_R32G32_SFLOAT, 12, 0}},
+  return {{{"POSITION", VK_FORMAT_R32G32B32_SFLOAT, 0, 0}, {"TEXCOORD0", VK_FORMAT_R32G32_SFLOAT, 12, 0}},
           {{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX}}};
 }
 
 // Appends a quad covering [x0,x1]x[y0,y1] in clip space at depth z, uv over [u0,u1]^2,
 // wound counter-clockwise on screen (Vulkan's y points down) unless `clockwise`.
-inline void add_quad(std::vector<Vertex>& v, float x0, float y0, float x1, float y1, float z,
-                     float u0 = 0, float u1 = 1, bool clockwise = false) {
+inline void add_quad(std::vector<Vertex>& v, float x0, float y0, float x1, float y1, float z, float u0 = 0,
+                     float u1 = 1, bool clockwise = false) {
   Vertex a{x0, y0, z, u0, u0}, b{x1, y0, z, u1, u0}, c{x1, y1, z, u1, u1}, d{x0, y1, z, u0, u1};
   if (clockwise) v.insert(v.end(), {a, b, c, a, c, d});
   else v.insert(v.end(), {a, c, b, a, d, c});
@@ -88,11 +87,12 @@ inline void add_quad(std::vector<Vertex>& v, float x0, float y0, float x1, float
 // One render target, pipeline cache, frame resources and recorder for a test.
 class PassHarness {
  public:
-  PassHarness(Context& ctx, DynamicStateSet dynamic, uint32_t size = 8,
-              DepthAttachment depth = DepthAttachment::d24s8, VkFormat color = VK_FORMAT_R8G8B8A8_UNORM)
+  PassHarness(Context& ctx, DynamicStateSet dynamic, uint32_t size = 8, DepthAttachment depth = DepthAttachment::d24s8,
+              VkFormat color = VK_FORMAT_R8G8B8A8_UNORM)
       : ctx_(ctx) {
     DiagnosticSink sink;
-    target_ = RenderTarget::create(ctx, {size, size, color, depth, 0, "pass test", VK_IMAGE_USAGE_TRANSFER_SRC_BIT}, sink);
+    target_ =
+        RenderTarget::create(ctx, {size, size, color, depth, 0, "pass test", VK_IMAGE_USAGE_TRANSFER_SRC_BIT}, sink);
     pipelines_ = PipelineCache::create(ctx, sink);
     frames_ = FrameResources::create(ctx, {}, sink);
     EXPECT_TRUE(target_ && pipelines_ && frames_) << describe(sink);
@@ -104,8 +104,10 @@ class PassHarness {
   // Uploads `vertices` into a new vertex buffer kept alive with the harness.
   VkBuffer vertices(const std::vector<Vertex>& vertices) {
     DiagnosticSink sink;
-    auto b = Buffer::create(ctx_, {vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                                   MemoryUsage::upload, "test vertices"}, sink);
+    auto b = Buffer::create(
+        ctx_,
+        {vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "test vertices"},
+        sink);
     EXPECT_TRUE(b && b->write(vertices.data(), vertices.size() * sizeof(Vertex)));
     buffers_.push_back(std::move(*b));
     return buffers_.back().handle();
@@ -139,19 +141,24 @@ class PassHarness {
     if (!depth || depth->format() != VK_FORMAT_D32_SFLOAT) return {};
     const uint32_t width = target_->width(), height = target_->height();
     std::vector<float> values(size_t(width) * height);
-    auto b = Buffer::create(ctx_, {values.size() * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::readback,
-                                   "depth readback"}, sink);
+    auto b = Buffer::create(
+        ctx_,
+        {values.size() * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::readback, "depth readback"},
+        sink);
     EXPECT_TRUE(b) << describe(sink);
     if (!b) return {};
-    const bool ok = submit_and_wait(ctx_, [&](VkCommandBuffer cmd) {
-      depth->transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-      VkBufferImageCopy region{};
-      region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-      region.imageExtent = {width, height, 1};
-      vkCmdCopyImageToBuffer(cmd, depth->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, b->handle(), 1, &region);
-      memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
-                     VK_ACCESS_HOST_READ_BIT);
-    }, sink);
+    const bool ok = submit_and_wait(
+        ctx_,
+        [&](VkCommandBuffer cmd) {
+          depth->transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+          VkBufferImageCopy region{};
+          region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+          region.imageExtent = {width, height, 1};
+          vkCmdCopyImageToBuffer(cmd, depth->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, b->handle(), 1, &region);
+          memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                         VK_ACCESS_HOST_READ_BIT);
+        },
+        sink);
     EXPECT_TRUE(ok && b->read(values.data(), values.size() * sizeof(float))) << describe(sink);
     return values;
   }
@@ -162,20 +169,22 @@ class PassHarness {
 
  private:
   // begin_frame, clear, `record` between recorder begin/end, readback recorded and waited for.
-  void draw_frame(const std::function<void(VkCommandBuffer, PassRecorder&)>& record,
-                  std::array<float, 4> clear) {
+  void draw_frame(const std::function<void(VkCommandBuffer, PassRecorder&)>& record, std::array<float, 4> clear) {
     DiagnosticSink sink;
     frames_->begin_frame();
-    const bool ok = submit_and_wait(ctx_, [&](VkCommandBuffer cmd) {
-      ClearValues cv;
-      cv.color = clear;
-      target_->begin(cmd, cv);
-      recorder_->begin(cmd, formats(), target_->viewport(), target_->scissor());
-      record(cmd, *recorder_);
-      recorder_->end();
-      target_->end(cmd);
-      target_->record_readback(cmd);
-    }, sink);
+    const bool ok = submit_and_wait(
+        ctx_,
+        [&](VkCommandBuffer cmd) {
+          ClearValues cv;
+          cv.color = clear;
+          target_->begin(cmd, cv);
+          recorder_->begin(cmd, formats(), target_->viewport(), target_->scissor());
+          record(cmd, *recorder_);
+          recorder_->end();
+          target_->end(cmd);
+          target_->record_readback(cmd);
+        },
+        sink);
     EXPECT_TRUE(ok) << describe(sink);
   }
 
@@ -188,8 +197,8 @@ class PassHarness {
 };
 
 // Records apply + draw of `count` vertices from `vb` at `first`; fails the test on errors.
-inline void draw(VkCommandBuffer cmd, PassRecorder& r, const PassDesc& pass, VkBuffer vb,
-                 uint32_t count, uint32_t first = 0) {
+inline void draw(VkCommandBuffer cmd, PassRecorder& r, const PassDesc& pass, VkBuffer vb, uint32_t count,
+                 uint32_t first = 0) {
   DiagnosticSink sink;
   ASSERT_TRUE(r.apply(pass, sink)) << describe(sink);
   VkDeviceSize offset = 0;

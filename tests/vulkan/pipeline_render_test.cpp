@@ -55,12 +55,16 @@ TEST_P(PipelineRender, BlendFactorsGiveAdditiveAndAlphaBlendedValues) {
   alpha.blend[0].dst_color = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
 
   const std::array<float, 4> clear = {0.25f, 0.25f, 0.25f, 1};
-  fx::Image a = h.render([&](VkCommandBuffer cmd, PassRecorder& r) {
-    draw(cmd, r, {&prog->program, additive, &*input, &res}, vb, 6);
-  }, clear);
-  fx::Image b = h.render([&](VkCommandBuffer cmd, PassRecorder& r) {
-    draw(cmd, r, {&prog->program, alpha, &*input, &res}, vb, 6);
-  }, clear);
+  fx::Image a = h.render(
+      [&](VkCommandBuffer cmd, PassRecorder& r) {
+        draw(cmd, r, {&prog->program, additive, &*input, &res}, vb, 6);
+      },
+      clear);
+  fx::Image b = h.render(
+      [&](VkCommandBuffer cmd, PassRecorder& r) {
+        draw(cmd, r, {&prog->program, alpha, &*input, &res}, vb, 6);
+      },
+      clear);
   auto near = [](std::array<int, 4> got, std::array<double, 3> want) {
     for (int c = 0; c < 3; ++c)
       if (std::abs(got[c] - want[c] * 255.0) > 1.0) return false;
@@ -94,8 +98,7 @@ TEST_P(PipelineRender, DepthTestAndWrite) {
       draw(cmd, r, {&prog->program, s, &*input, &far_res}, vb, 6, 6);
     });
     // With depth writes the far quad fails the test; without, the cleared depth (1.0) lets it through.
-    EXPECT_EQ(pixel(img, 3, 3), (write ? std::array<int, 4>{0, 255, 0, 255}
-                                       : std::array<int, 4>{255, 0, 0, 255}));
+    EXPECT_EQ(pixel(img, 3, 3), (write ? std::array<int, 4>{0, 255, 0, 255} : std::array<int, 4>{255, 0, 0, 255}));
   }
 }
 
@@ -185,9 +188,8 @@ TEST_P(PipelineRender, SamplerAddressModesOnAMagnifiedTwoByTwoTexture) {
   std::vector<Vertex> v;
   add_quad(v, -1, -1, 1, 1, 0.5f, -1, 2);  // uv from -1 to 2 over 8 pixels
   VkBuffer vb = h.vertices(v);
-  for (VkSamplerAddressMode mode :
-       {VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
-        VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER}) {
+  for (VkSamplerAddressMode mode : {VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                                    VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER}) {
     SamplerKey d;
     d.min_filter = d.mag_filter = VK_FILTER_NEAREST;
     d.mip_filter = VK_SAMPLER_MIPMAP_MODE_NEAREST;

@@ -32,8 +32,7 @@ class TrianglePipeline {
   TrianglePipeline(VkDevice device, const RenderingFormats& formats) : device_(device) {
     VkShaderModule vs = module(triangle_vert, sizeof triangle_vert);
     VkShaderModule fs = module(triangle_frag, sizeof triangle_frag);
-    VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                              sizeof(PushConstants)};
+    VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(PushConstants)};
     VkPipelineLayoutCreateInfo layout{};
     layout.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
     layout.pushConstantRangeCount = 1;
@@ -52,9 +51,9 @@ class TrianglePipeline {
 
     // Depth test state is dynamic (Vulkan 1.3 core extended dynamic state); the rest is
     // GraphicsPipelineDesc's full-screen default.
-    const VkDynamicState dynamic_states[] = {
-        VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR, VK_DYNAMIC_STATE_DEPTH_TEST_ENABLE,
-        VK_DYNAMIC_STATE_DEPTH_WRITE_ENABLE, VK_DYNAMIC_STATE_DEPTH_COMPARE_OP};
+    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                             VK_DYNAMIC_STATE_DEPTH_TEST_ENABLE, VK_DYNAMIC_STATE_DEPTH_WRITE_ENABLE,
+                                             VK_DYNAMIC_STATE_DEPTH_COMPARE_OP};
     GraphicsPipelineDesc desc;
     desc.stages = stages;
     desc.layout = layout_;
@@ -71,8 +70,7 @@ class TrianglePipeline {
     vkDestroyPipelineLayout(device_, layout_, nullptr);
   }
 
-  void draw(VkCommandBuffer cmd, const RenderTarget& target, const PushConstants& push,
-            bool depth_test) const {
+  void draw(VkCommandBuffer cmd, const RenderTarget& target, const PushConstants& push, bool depth_test) const {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
     VkViewport viewport = target.viewport();
     VkRect2D scissor = target.scissor();
@@ -81,8 +79,7 @@ class TrianglePipeline {
     vkCmdSetDepthTestEnable(cmd, depth_test);
     vkCmdSetDepthWriteEnable(cmd, depth_test);
     vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_LESS);
-    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof push, &push);
+    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push, &push);
     vkCmdDraw(cmd, 3, 1, 0, 0);
   }
 
@@ -296,7 +293,9 @@ TEST_F(RenderTargetTest, LoadKeepsPreviousContents) {
 
 // pipeline_info() points into its RenderingFormats: callable on a named object only.
 template <class F>
-concept HasPipelineInfo = requires(F&& f) { static_cast<F&&>(f).pipeline_info(); };
+concept HasPipelineInfo = requires(F&& f) {
+  static_cast<F&&>(f).pipeline_info();
+};
 static_assert(HasPipelineInfo<const RenderingFormats&>);
 static_assert(!HasPipelineInfo<RenderingFormats>);
 

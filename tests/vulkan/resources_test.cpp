@@ -60,8 +60,8 @@ TEST_F(ResourcesTest, InvalidBufferIsADiagnostic) {
 TEST_F(ResourcesTest, StagingToDeviceLocalAndBackThroughOneShotSubmissions) {
   const VkDeviceSize n = 64 * 1024;
   Buffer staging = make_buffer(n, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::upload);
-  Buffer local = make_buffer(n, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                             MemoryUsage::device_local);
+  Buffer local =
+      make_buffer(n, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::device_local);
   Buffer readback = make_buffer(n, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::readback);
   auto data = pattern(n, 3);
   ASSERT_TRUE(staging.write(data.data(), n));
@@ -71,17 +71,14 @@ TEST_F(ResourcesTest, StagingToDeviceLocalAndBackThroughOneShotSubmissions) {
   ASSERT_TRUE(commands) << describe(sink);
   VkBufferCopy region{0, 0, n};
   ASSERT_TRUE(commands->run(
-      [&](VkCommandBuffer cmd) {
-        vkCmdCopyBuffer(cmd, staging.handle(), local.handle(), 1, &region);
-      },
-      sink))
+      [&](VkCommandBuffer cmd) { vkCmdCopyBuffer(cmd, staging.handle(), local.handle(), 1, &region); }, sink))
       << describe(sink);
   // A second run reuses the same pool, buffer and fence.
   ASSERT_TRUE(commands->run(
       [&](VkCommandBuffer cmd) {
         vkCmdCopyBuffer(cmd, local.handle(), readback.handle(), 1, &region);
-        memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+        memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                       VK_ACCESS_HOST_READ_BIT);
       },
       sink))
       << describe(sink);
@@ -158,8 +155,7 @@ TEST_F(ResourcesTest, VolumeUploadAndReadbackThroughLayoutTransitions) {
   vol.width = 8;
   vol.height = 4;
   vol.depth = 3;
-  vol.usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-              VK_IMAGE_USAGE_SAMPLED_BIT;
+  vol.usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
   auto image = GpuImage::create(ctx(), vol, sink);
   ASSERT_TRUE(image) << describe(sink);
   const VkDeviceSize n = 8 * 4 * 3 * 4;
@@ -174,14 +170,14 @@ TEST_F(ResourcesTest, VolumeUploadAndReadbackThroughLayoutTransitions) {
       ctx(),
       [&](VkCommandBuffer cmd) {
         image->transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-        vkCmdCopyBufferToImage(cmd, staging.handle(), image->handle(),
-                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        vkCmdCopyBufferToImage(cmd, staging.handle(), image->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                               &region);
         image->transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
         image->transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-        vkCmdCopyImageToBuffer(cmd, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                               readback.handle(), 1, &region);
-        memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+        vkCmdCopyImageToBuffer(cmd, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle(), 1,
+                               &region);
+        memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                       VK_ACCESS_HOST_READ_BIT);
       },
       sink))
       << describe(sink);
@@ -195,16 +191,12 @@ TEST(MemoryTypes, FindsRequiredAndPrefersPreferred) {
   VkPhysicalDeviceMemoryProperties props{};
   props.memoryTypeCount = 3;
   props.memoryTypes[0].propertyFlags = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-  props.memoryTypes[1].propertyFlags =
-      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  props.memoryTypes[2].propertyFlags = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                       VK_MEMORY_PROPERTY_HOST_COHERENT_BIT |
-                                       VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
-  EXPECT_EQ(find_memory_type(props, 0b111, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT,
-                             VK_MEMORY_PROPERTY_HOST_CACHED_BIT),
+  props.memoryTypes[1].propertyFlags = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  props.memoryTypes[2].propertyFlags =
+      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT | VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
+  EXPECT_EQ(find_memory_type(props, 0b111, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT, VK_MEMORY_PROPERTY_HOST_CACHED_BIT),
             2u);
-  EXPECT_EQ(find_memory_type(props, 0b011, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT,
-                             VK_MEMORY_PROPERTY_HOST_CACHED_BIT),
+  EXPECT_EQ(find_memory_type(props, 0b011, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT, VK_MEMORY_PROPERTY_HOST_CACHED_BIT),
             1u);  // preferred unavailable in the allowed types: fall back
   EXPECT_FALSE(find_memory_type(props, 0b001, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT));
   EXPECT_EQ(find_memory_type(props, 0b110, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT), 1u);

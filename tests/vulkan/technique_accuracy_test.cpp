@@ -38,7 +38,8 @@ std::string read_text(const fs::path& p) {
 fs::path effect_copy(const std::string& name, const std::string& replace, const std::string& with,
                      const std::string& effect = "hemisphere.fx") {
   const fs::path src = fs::path(FXKIT_SOURCE_DIR) / "effects";
-  const fs::path dir = fs::temp_directory_path() / ("fxkit_technique_accuracy_test_" + std::to_string(::getpid())) / name;
+  const fs::path dir =
+      fs::temp_directory_path() / ("fxkit_technique_accuracy_test_" + std::to_string(::getpid())) / name;
   fs::create_directories(dir / "generated");
   fs::copy_file(src / "common.fxh", dir / "common.fxh", fs::copy_options::overwrite_existing);
   fs::copy_file(src / "generated" / "costs.fxh", dir / "generated" / "costs.fxh", fs::copy_options::overwrite_existing);
@@ -173,16 +174,18 @@ TEST_F(TechniqueAccuracyTest, ThePrecisionModelRowOfTheSquaringListingShowsItsBa
               out[precise] = m.r0;
             }
             for (int c = 0; c < 3; ++c)
-              cpu_banding = std::max(cpu_banding, std::fabs(std::clamp(out[1][c], 0.0, 1.0) -
-                                                            std::clamp(out[0][c], 0.0, 1.0)) * 255.0);
+              cpu_banding = std::max(
+                  cpu_banding, std::fabs(std::clamp(out[1][c], 0.0, 1.0) - std::clamp(out[0][c], 0.0, 1.0)) * 255.0);
           }
       }
-  std::printf("specular_squaring_ps11: banding with the ps.1.x model max %.2f rmse %.2f levels; error against the "
-              "model max %.2f / %.2f, rmse %.3f / %.3f (without / with)\n",
-              banded->banding_max_lsb, banded->banding_rmse_lsb, plain->max_error_lsb, banded->max_error_lsb,
-              plain->rmse_lsb, banded->rmse_lsb);
-  std::printf("  the CPU interpreter of the listing, 8-bit fractions against double: at most %.2f levels\n", cpu_banding);
-  EXPECT_GT(banded->banding_max_lsb, 2 * 0.5);  // more than twice the output's own rounding
+  std::printf(
+      "specular_squaring_ps11: banding with the ps.1.x model max %.2f rmse %.2f levels; error against the "
+      "model max %.2f / %.2f, rmse %.3f / %.3f (without / with)\n",
+      banded->banding_max_lsb, banded->banding_rmse_lsb, plain->max_error_lsb, banded->max_error_lsb, plain->rmse_lsb,
+      banded->rmse_lsb);
+  std::printf("  the CPU interpreter of the listing, 8-bit fractions against double: at most %.2f levels\n",
+              cpu_banding);
+  EXPECT_GT(banded->banding_max_lsb, 2 * 0.5);            // more than twice the output's own rounding
   EXPECT_LE(banded->banding_max_lsb, cpu_banding + 1.0);  // + the GPU's inputs between the CPU's grid points
   // Per pixel the error moves by at most the banding, so its max and RMSE do too.
   EXPECT_LE(std::fabs(banded->max_error_lsb - plain->max_error_lsb), banded->banding_max_lsb + 1e-3);

@@ -2,8 +2,8 @@
 // device needed, only the descriptions Vulkan gets.
 #include <gtest/gtest.h>
 
-#include "fx/mesh.h"
 #include "fx/binding/vertex_layout.h"
+#include "fx/mesh.h"
 
 namespace fx::vk {
 namespace {
@@ -33,7 +33,8 @@ TEST(VertexLayoutMatch, AMatrixInputTakesALocationAndASemanticIndexPerColumn) {
   for (uint32_t k = 0; k < 4; ++k)
     layout.attributes.push_back({"TEXCOORD" + std::to_string(4 + k), VK_FORMAT_R32G32B32A32_SFLOAT, 16 * k, 1});
   DiagnosticSink sink;
-  auto matched = match_vertex_layout(layout, {input("pos", "POSITION", 0, 1, 3), input("World", "TEXCOORD4", 1, 4, 4)}, sink);
+  auto matched =
+      match_vertex_layout(layout, {input("pos", "POSITION", 0, 1, 3), input("World", "TEXCOORD4", 1, 4, 4)}, sink);
   ASSERT_TRUE(matched) << (sink.diagnostics().empty() ? "" : sink.diagnostics()[0].message);
   ASSERT_EQ(matched->attributes.size(), 5u);
   for (uint32_t k = 0; k < 4; ++k) {
@@ -50,7 +51,6 @@ TEST(VertexLayoutMatch, AMatrixInputTakesALocationAndASemanticIndexPerColumn) {
       << missing.diagnostics()[0].message;
 }
 
-
 // The mesh library's layout of fx::Vertex in Vulkan terms: one binding of sizeof(Vertex),
 // the D3D semantics, float formats and offsets as they are.
 TEST(VertexLayoutFromMesh, FxVertexBecomesOneBindingOfFloatAttributes) {
@@ -60,10 +60,11 @@ TEST(VertexLayoutFromMesh, FxVertexBecomesOneBindingOfFloatAttributes) {
   EXPECT_EQ(layout.bindings[0].stride, uint32_t(sizeof(Vertex)));
   EXPECT_EQ(layout.bindings[0].rate, VK_VERTEX_INPUT_RATE_VERTEX);
   ASSERT_EQ(layout.attributes.size(), 5u);
-  const std::pair<const char*, VkFormat> expected[] = {
-      {"POSITION", VK_FORMAT_R32G32B32_SFLOAT}, {"NORMAL", VK_FORMAT_R32G32B32_SFLOAT},
-      {"TANGENT", VK_FORMAT_R32G32B32A32_SFLOAT}, {"BINORMAL", VK_FORMAT_R32G32B32_SFLOAT},
-      {"TEXCOORD", VK_FORMAT_R32G32_SFLOAT}};
+  const std::pair<const char*, VkFormat> expected[] = {{"POSITION", VK_FORMAT_R32G32B32_SFLOAT},
+                                                       {"NORMAL", VK_FORMAT_R32G32B32_SFLOAT},
+                                                       {"TANGENT", VK_FORMAT_R32G32B32A32_SFLOAT},
+                                                       {"BINORMAL", VK_FORMAT_R32G32B32_SFLOAT},
+                                                       {"TEXCOORD", VK_FORMAT_R32G32_SFLOAT}};
   for (size_t i = 0; i < 5; ++i) {
     EXPECT_EQ(layout.attributes[i].semantic, expected[i].first);
     EXPECT_EQ(layout.attributes[i].format, expected[i].second) << expected[i].first;

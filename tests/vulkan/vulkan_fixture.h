@@ -38,8 +38,7 @@ inline std::string describe(const DiagnosticSink& sink) {
 inline void pin_loaded_libraries() {
   dl_iterate_phdr(
       [](dl_phdr_info* info, size_t, void*) {
-        if (info->dlpi_name && info->dlpi_name[0])
-          dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+        if (info->dlpi_name && info->dlpi_name[0]) dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
         return 0;
       },
       nullptr);

@@ -13,12 +13,12 @@ struct BenchArgs {
   double size_mb = 10;  // frontend: size of the generated effect
   int repeats = 5;
   bool json = false;
-  std::string effects_dir = "effects";  // compile, check: the effects to load or check
-  std::string seeds_dir = "effects";    // check: the effects loaded through the library
-  std::string fxh;  // accuracy: write technique cost/error annotations here
+  std::string effects_dir = "effects";    // compile, check: the effects to load or check
+  std::string seeds_dir = "effects";      // check: the effects loaded through the library
+  std::string fxh;                        // accuracy: write technique cost/error annotations here
   std::vector<std::string> only_effects;  // accuracy: measure only these effects' techniques
-  std::string merge;  // accuracy: an earlier --json output the new technique rows replace theirs in
-  int processes = 1;  // > 1: the benchmark in that many fresh processes, median ratio
+  std::string merge;                      // accuracy: an earlier --json output the new technique rows replace theirs in
+  int processes = 1;                      // > 1: the benchmark in that many fresh processes, median ratio
 };
 
 // The middle sample after sorting (the upper of the two for an even count); 0 for none.

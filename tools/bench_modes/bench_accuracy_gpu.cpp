@@ -139,19 +139,28 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
   for (const GpuKernel& k : kernels) {
     auto o = std::make_unique<KernelObjects>();
     o->device = dev;
-    fx::TranslationUnit vs{k.vs.empty() ? kFullscreenVs : k.vs, fx::ShaderStage::vertex, fx::ShaderLanguage::hlsl,
-                           "VS", "vs_5_0", {}, k.id + ".vs"};
+    fx::TranslationUnit vs{k.vs.empty() ? kFullscreenVs : k.vs,
+                           fx::ShaderStage::vertex,
+                           fx::ShaderLanguage::hlsl,
+                           "VS",
+                           "vs_5_0",
+                           {},
+                           k.id + ".vs"};
     fx::TranslationUnit ps{k.ps, fx::ShaderStage::fragment, fx::ShaderLanguage::hlsl, "PS", "ps_5_0", {}, k.id + ".ps"};
     fx::CompiledShader cv = compiler.compile(vs), cp = compiler.compile(ps);
     if (!cv.ok || !cp.ok) {
-      sink.error("accuracy-kernel-compile", {}, "kernel '" + k.id + "' does not compile:\n" + cv.info_log + cp.info_log);
+      sink.error("accuracy-kernel-compile", {},
+                 "kernel '" + k.id + "' does not compile:\n" + cv.info_log + cp.info_log);
       ok = false;
       break;
     }
     o->vs = module_from(dev, cv);
     o->ps = module_from(dev, cp);
     auto tex = fx::vk::Texture::from_table(*ctx, k.table.width ? k.table : dummy, sink);
-    if (!tex) { ok = false; break; }
+    if (!tex) {
+      ok = false;
+      break;
+    }
     o->texture = std::move(*tex);
     VkDescriptorSetAllocateInfo ai{};
     ai.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
@@ -228,7 +237,8 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
     for (int r = 0; ok && r < repeats; ++r) {
       for (size_t i = 0; ok && i < objects.size(); ++i) {
         auto t = time_pass(*objects[i]);
-        if (!t) ok = false; else ms[i].push_back(*t);
+        if (!t) ok = false;
+        else ms[i].push_back(*t);
       }
     }
   }

@@ -30,8 +30,8 @@ void inputs(float2 uv, out float3 L, out float3 V, out float3 T, out float3 N) {
 )";
 
 std::string ps(const std::string& body) {
-  return std::string(kPrelude) + "float4 PS(PSIn i) : SV_Target {\n  float3 L, V, T, N;\n  inputs(i.uv, L, V, T, N);\n" +
-         body + "\n}\n";
+  return std::string(kPrelude) +
+         "float4 PS(PSIn i) : SV_Target {\n  float3 L, V, T, N;\n  inputs(i.uv, L, V, T, N);\n" + body + "\n}\n";
 }
 
 std::string number(double v) {
@@ -54,10 +54,9 @@ std::string texcoord(LutMapping m, int n, const std::string& u) {
 
 GpuKernel strand_lut(const std::string& id, LutIndex index, TableFormat format, int size, LutMapping mapping) {
   fx::shading::StrandTableOptions o{size, 32, mapping, index, format};
-  std::string u = index == LutIndex::cosine
-                      ? "  float lu = 0.5 * dot(L, T) + 0.5, vu = 0.5 * dot(V, T) + 0.5;\n"
-                      : "  float lu = 1 - atan2(length(cross(L, T)), dot(L, T)) / PI;\n"
-                        "  float vu = 1 - atan2(length(cross(V, T)), dot(V, T)) / PI;\n";
+  std::string u = index == LutIndex::cosine ? "  float lu = 0.5 * dot(L, T) + 0.5, vu = 0.5 * dot(V, T) + 0.5;\n"
+                                            : "  float lu = 1 - atan2(length(cross(L, T)), dot(L, T)) / PI;\n"
+                                              "  float vu = 1 - atan2(length(cross(V, T)), dot(V, T)) / PI;\n";
   GpuKernel k;
   k.id = id;
   k.ps = ps(u + "  float4 t = Table.Sample(Sampler, float2(" + texcoord(mapping, size, "lu") + ", " +
@@ -139,7 +138,8 @@ GpuKernel grid(const std::string& id, int cell_px, int size, const char* mode) {
 
 std::vector<GpuKernel> accuracy_kernels(int size) {
   std::vector<GpuKernel> out;
-  out.push_back({"empty", "", std::string(kPrelude) + "float4 PS(PSIn i) : SV_Target { return float4(i.uv, 0, 1); }\n"});
+  out.push_back(
+      {"empty", "", std::string(kPrelude) + "float4 PS(PSIn i) : SV_Target { return float4(i.uv, 0, 1); }\n"});
   out.push_back({"setup", "", ps("  return float4(L + V + T + N, 1);")});
   out.push_back({"strand_analytic/stable", "", ps(kStrandStable)});
   out.push_back({"strand_analytic/seed_sqrt", "", ps(kStrandSeed)});
@@ -152,8 +152,8 @@ std::vector<GpuKernel> accuracy_kernels(int size) {
                                  index, f, n, LutMapping::texel_centre));
   for (auto [m, name] : {std::pair{LutMapping::naive, "naive"}, std::pair{LutMapping::seed_wrap, "seed_wrap"},
                          std::pair{LutMapping::texel_centre_wrap, "texel_centre_wrap"}})
-    out.push_back(strand_lut(std::string("strand_mapping/") + name + "/s256", LutIndex::cosine, TableFormat::unorm8,
-                             256, m));
+    out.push_back(
+        strand_lut(std::string("strand_mapping/") + name + "/s256", LutIndex::cosine, TableFormat::unorm8, 256, m));
   // Specular power: the three ways of per_pixel_lighting.fx.
   const std::string nh = "  float x = saturate(dot(N, normalize(L + V)));\n";
   out.push_back({"specular/pow_native", "", ps(nh + "  return float4(pow(x, 16).xxx, 1);")});
@@ -166,28 +166,32 @@ std::vector<GpuKernel> accuracy_kernels(int size) {
   for (TableFormat f : {TableFormat::unorm8, TableFormat::float32}) {
     for (int n : sizes) {
       fx::shading::PowTableOptions o{2, n, 16, LutMapping::texel_centre, f};
-      GpuKernel k{std::string("specular/table/") + (f == TableFormat::unorm8 ? "unorm8" : "float32") + "/s" +
-                      std::to_string(n),
-                  "", ps(nh + "  return float4(Table.Sample(Sampler, float2(0.5, " +
-                             texcoord(LutMapping::texel_centre, n, "x") + ")).rrr, 1);")};
+      GpuKernel k{
+          std::string("specular/table/") + (f == TableFormat::unorm8 ? "unorm8" : "float32") + "/s" + std::to_string(n),
+          "",
+          ps(nh + "  return float4(Table.Sample(Sampler, float2(0.5, " + texcoord(LutMapping::texel_centre, n, "x") +
+             ")).rrr, 1);")};
       k.table = fx::shading::bake_pow_table(o);
       out.push_back(std::move(k));
     }
   }
   // Hemisphere: the cosine form and the seed's form.
   out.push_back({"hemisphere/cosine_float", "",
-                 ps("  float a = 0.5 + 0.5 * dot(N, L);\n  return float4(lerp(float3(0.1, 0.1, 0), float3(0.6, 0.7, 1), a), 1);")});
-  out.push_back({"hemisphere/seed_float", "",
-                 ps("  float c = dot(N, L), s = sqrt(saturate(1 - c * c));\n  float a = c >= 0 ? 1 - 0.5 * s : 0.5 * s;\n"
-                    "  return float4(lerp(float3(0.1, 0.1, 0), float3(0.6, 0.7, 1), a), 1);")});
+                 ps("  float a = 0.5 + 0.5 * dot(N, L);\n  return float4(lerp(float3(0.1, 0.1, 0), float3(0.6, 0.7, "
+                    "1), a), 1);")});
+  out.push_back(
+      {"hemisphere/seed_float", "",
+       ps("  float c = dot(N, L), s = sqrt(saturate(1 - c * c));\n  float a = c >= 0 ? 1 - 0.5 * s : 0.5 * s;\n"
+          "  return float4(lerp(float3(0.1, 0.1, 0), float3(0.6, 0.7, 1), a), 1);")});
   // (L.N, H.N) table and the seed's Gaussian.
   for (int n : sizes) {
     fx::shading::HalfAngleTableOptions o{n, fx::shading::HalfAngleLobe::blinn_phong, 32, LutMapping::texel_centre,
                                          TableFormat::unorm8};
-    GpuKernel k{"ln_hn/blinn_phong/s" + std::to_string(n), "",
-                ps("  float3 H = normalize(L + V);\n  float4 t = Table.Sample(Sampler, float2(" +
-                   texcoord(LutMapping::texel_centre, n, "0.5 * dot(N, H) + 0.5") + ", " +
-                   texcoord(LutMapping::texel_centre, n, "0.5 * dot(N, L) + 0.5") + "));\n  return float4(t.rgb * t.a, 1);")};
+    GpuKernel k{
+        "ln_hn/blinn_phong/s" + std::to_string(n), "",
+        ps("  float3 H = normalize(L + V);\n  float4 t = Table.Sample(Sampler, float2(" +
+           texcoord(LutMapping::texel_centre, n, "0.5 * dot(N, H) + 0.5") + ", " +
+           texcoord(LutMapping::texel_centre, n, "0.5 * dot(N, L) + 0.5") + "));\n  return float4(t.rgb * t.a, 1);")};
     k.table = fx::shading::bake_ln_hn_table(o);
     out.push_back(std::move(k));
   }

@@ -1,11 +1,10 @@
 // `fxkit bench apply [--repeats N] [--json]`: CPU cost of recording N objects through the
 // public API (fxkit::Device on the same VkDevice; per object Effect::set_matrix twice, then
 // Technique::apply and a draw per pass; begin/end per technique group) against hand-written
-// Vulkan recording the same work into a command buffer: pipelines of the same states, one descriptor set per program with dynamic uniform offsets, the same uniform
-// bytes copied into a mapped ring (blocks holding per-object matrices per draw, the others
-// once per frame, as fxkit re-packs only changed blocks), the same binds and draws. Both
-// run in the same process on the same device, both are submitted (only recording is
-// timed); the ratio is fxkit / raw.
+// Vulkan recording the same work into a command buffer: pipelines of the same states, one descriptor set per program
+// with dynamic uniform offsets, the same uniform bytes copied into a mapped ring (blocks holding per-object matrices
+// per draw, the others once per frame, as fxkit re-packs only changed blocks), the same binds and draws. Both run in
+// the same process on the same device, both are submitted (only recording is timed); the ratio is fxkit / raw.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -19,8 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bench.h"
-#include "fx/compile/effect_file.h"
 #include "fx/binding/effect_preview.h"
+#include "fx/compile/effect_file.h"
 #include "fx/vulkan/one_shot.h"
 #include "fxkit/fxkit.h"
 
@@ -76,7 +75,8 @@ struct RawPass {
 std::string_view root_name(std::string_view path) { return path.substr(0, path.find_first_of(".[")); }
 
 void report(const fx::DiagnosticSink& sink) {
-  for (const fx::Diagnostic& d : sink.diagnostics()) std::fprintf(stderr, "fxkit bench apply: %s [%s]\n", d.message.c_str(), d.id.c_str());
+  for (const fx::Diagnostic& d : sink.diagnostics())
+    std::fprintf(stderr, "fxkit bench apply: %s [%s]\n", d.message.c_str(), d.id.c_str());
 }
 
 }  // namespace
@@ -121,8 +121,12 @@ int bench_apply(const BenchArgs& args) {
           return kInputErrors;
         }
         auto inputs = fx::vk::technique_vertex_inputs(*e->model, *e->programs, t);
-        groups.push_back({e.get(), b.get(), t, b->add_vertex_layout(preview->vertex_layout(inputs)),
-                          {e->params->by_semantic("WORLD")}, {e->params->by_semantic("WORLDVIEWPROJECTION")}});
+        groups.push_back({e.get(),
+                          b.get(),
+                          t,
+                          b->add_vertex_layout(preview->vertex_layout(inputs)),
+                          {e->params->by_semantic("WORLD")},
+                          {e->params->by_semantic("WORLDVIEWPROJECTION")}});
       }
       effects.push_back(std::move(e));
       bindings.push_back(std::move(b));
@@ -135,7 +139,8 @@ int bench_apply(const BenchArgs& args) {
     // order (HostMatrixOrder), the hand-written path copies them as they are.
     std::vector<glm::mat4> world(kObjects), wvp(kObjects), world_t(kObjects), wvp_t(kObjects);
     for (uint32_t i = 0; i < kObjects; ++i) {
-      world[i] = glm::translate(glm::mat4(1.0f), glm::vec3(float(i % 50) * 0.02f - 0.5f, float(i / 50) * 0.02f - 0.4f, 0.0f));
+      world[i] =
+          glm::translate(glm::mat4(1.0f), glm::vec3(float(i % 50) * 0.02f - 0.5f, float(i / 50) * 0.02f - 0.4f, 0.0f));
       wvp[i] = scene.projection * scene.view * world[i];
       world_t[i] = glm::transpose(world[i]);
       wvp_t[i] = glm::transpose(wvp[i]);
@@ -155,8 +160,8 @@ int bench_apply(const BenchArgs& args) {
     // The measured path: the public API on the same device, for the same attachments.
     fxkit::DeviceOptions device_options;
     const fx::vk::RenderingFormats preview_formats = preview->formats();
-    device_options.target.formats = {.color = {preview_formats.color[0]}, .depth = preview_formats.depth,
-                                     .stencil = preview_formats.stencil};
+    device_options.target.formats = {
+        .color = {preview_formats.color[0]}, .depth = preview_formats.depth, .stencil = preview_formats.stencil};
     device_options.target.vertex_layout = fxkit::Mesh::vertex_layout();
     device_options.target.default_attribute_binding = 1;  // as the preview's constant stream
     device_options.target.front_faces = fxkit::Winding::counter_clockwise;
@@ -165,8 +170,9 @@ int bench_apply(const BenchArgs& args) {
     device_options.dynamic_state = false;  // static pipelines, as the hand-written path
     device_options.uniform_bytes_per_frame = 16u << 20;
     std::vector<fxkit::Message> errors;
-    auto device = fxkit::Device::create({ctx->instance(), ctx->physical_device(), ctx->device(), ctx->queue(),
-                                         ctx->queue_family()}, device_options, errors);
+    auto device = fxkit::Device::create(
+        {ctx->instance(), ctx->physical_device(), ctx->device(), ctx->queue(), ctx->queue_family()}, device_options,
+        errors);
     if (!device) {
       for (const fxkit::Message& m : errors) std::fprintf(stderr, "fxkit bench apply: %s", m.rendered.c_str());
       return kUsageError;
@@ -196,14 +202,22 @@ int bench_apply(const BenchArgs& args) {
     // default of two): an engine cannot overwrite what the GPU may still be reading.
     constexpr VkDeviceSize kRawSlice = 8u << 20;
     constexpr uint32_t kRawFramesInFlight = 2;
-    auto ring = fx::vk::Buffer::create(*ctx, {kRawSlice * kRawFramesInFlight, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, fx::vk::MemoryUsage::upload, "raw ring"}, sink);
+    auto ring = fx::vk::Buffer::create(
+        *ctx,
+        {kRawSlice * kRawFramesInFlight, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, fx::vk::MemoryUsage::upload, "raw ring"},
+        sink);
     auto image = fx::Image::blank(1, 1, 4);
     std::fill(image.pixels.begin(), image.pixels.end(), 255);
     auto texture = fx::vk::Texture::from_image(*ctx, image, fx::vk::ColorSpace::linear, sink);
     fx::vk::SamplerCache samplers(*ctx);
     VkSampler sampler = samplers.get({}, sink);
-    auto vertices = fx::vk::Buffer::create(*ctx, {mesh->vertices.size() * sizeof(fx::Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, fx::vk::MemoryUsage::upload, "bench vertices"}, sink);
-    auto constants = fx::vk::Buffer::create(*ctx, {16, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, fx::vk::MemoryUsage::upload, "bench constants"}, sink);
+    auto vertices =
+        fx::vk::Buffer::create(*ctx,
+                               {mesh->vertices.size() * sizeof(fx::Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                fx::vk::MemoryUsage::upload, "bench vertices"},
+                               sink);
+    auto constants = fx::vk::Buffer::create(
+        *ctx, {16, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, fx::vk::MemoryUsage::upload, "bench constants"}, sink);
     if (!ring || !texture || !sampler || !vertices || !constants) return report(sink), kUsageError;
     vertices->write(mesh->vertices.data(), mesh->vertices.size() * sizeof(fx::Vertex));
     const float constant[4] = {0, 0, 0, 1};
@@ -227,11 +241,13 @@ int bench_apply(const BenchArgs& args) {
       for (uint32_t p = 0; p < G.binding->pass_count(G.technique); ++p) {
         RawPass rp{};
         const fx::vk::ShaderProgram* program = nullptr;
-        if (!G.binding->pass_objects(G.technique, p, formats, G.layout, rp.pipeline, program, sink)) return report(sink), kInputErrors;
+        if (!G.binding->pass_objects(G.technique, p, formats, G.layout, rp.pipeline, program, sink))
+          return report(sink), kInputErrors;
         distinct.insert(rp.pipeline);
         rp.layout = program->pipeline_layout();
         VkDescriptorSetLayout set_layout = program->set_layout();
-        const VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO, nullptr, pool, 1, &set_layout};
+        const VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO, nullptr, pool, 1,
+                                                &set_layout};
         vkAllocateDescriptorSets(ctx->device(), &alloc, &rp.set);
         std::vector<VkDescriptorBufferInfo> buffers;
         std::vector<VkDescriptorImageInfo> images;
@@ -247,9 +263,11 @@ int bench_apply(const BenchArgs& args) {
             const fx::Param root = values.find(root_name(m.name));
             const fx::Type* type = root.valid() ? values.type(root) : nullptr;
             const fx::MatrixOrder order = type ? type->order : fx::MatrixOrder::column_major;
-            members.push_back({m.name, m.offset, m.size, m.array_stride, m.matrix_stride ? m.matrix_stride : 16u, order});
+            members.push_back(
+                {m.name, m.offset, m.size, m.array_stride, m.matrix_stride ? m.matrix_stride : 16u, order});
             if (m.name == "World") block.world = m.offset, block.world_columns = order == fx::MatrixOrder::column_major;
-            if (m.name == "WorldViewProjection") block.wvp = m.offset, block.wvp_columns = order == fx::MatrixOrder::column_major;
+            if (m.name == "WorldViewProjection")
+              block.wvp = m.offset, block.wvp_columns = order == fx::MatrixOrder::column_major;
           }
           values.bind_layout(block_id, members, b.size);
           values.write_block(block_id++, block.bytes);
@@ -270,7 +288,8 @@ int bench_apply(const BenchArgs& args) {
     }
 
     auto one_shot = fx::vk::OneShotCommands::create(*ctx, sink);
-    auto target = fx::vk::RenderTarget::create(*ctx, {64, 64, VK_FORMAT_R8G8B8A8_UNORM, fx::vk::DepthAttachment::d24s8, 0, "bench apply"}, sink);
+    auto target = fx::vk::RenderTarget::create(
+        *ctx, {64, 64, VK_FORMAT_R8G8B8A8_UNORM, fx::vk::DepthAttachment::d24s8, 0, "bench apply"}, sink);
     if (!one_shot || !target) return report(sink), kUsageError;
     const VkViewport viewport{0, 64, 64, -64, 0, 1};
     const VkRect2D scissor{{0, 0}, {64, 64}};
@@ -371,7 +390,8 @@ int bench_apply(const BenchArgs& args) {
                 continue;
               }
               if (block.world != UINT32_MAX)
-                std::memcpy(block.bytes.data() + block.world, glm::value_ptr(block.world_columns ? world_t[i] : world[i]), 64);
+                std::memcpy(block.bytes.data() + block.world,
+                            glm::value_ptr(block.world_columns ? world_t[i] : world[i]), 64);
               if (block.wvp != UINT32_MAX)
                 std::memcpy(block.bytes.data() + block.wvp, glm::value_ptr(block.wvp_columns ? wvp_t[i] : wvp[i]), 64);
               offsets[b] = upload(block);
@@ -389,11 +409,14 @@ int bench_apply(const BenchArgs& args) {
     auto run_binding = [&]() {
       double ms = 0;
       preview->frames().begin_frame();
-      ok = one_shot->run([&](VkCommandBuffer cmd) {
-        target->begin(cmd);
-        ms = frame_binding(cmd);
-        target->end(cmd);
-      }, sink) && ok;
+      ok = one_shot->run(
+               [&](VkCommandBuffer cmd) {
+                 target->begin(cmd);
+                 ms = frame_binding(cmd);
+                 target->end(cmd);
+               },
+               sink) &&
+           ok;
       return ms;
     };
     auto run = [&](bool fxkit_path) {
@@ -403,11 +426,14 @@ int bench_apply(const BenchArgs& args) {
         device->begin_frame();
         for (PublicGroup& P : pub) P.effect.reset_stats();
       }
-      ok = one_shot->run([&](VkCommandBuffer cmd) {
-        target->begin(cmd);
-        ms = fxkit_path ? frame_fxkit(cmd) : frame_raw(cmd);
-        target->end(cmd);
-      }, sink) && ok;
+      ok = one_shot->run(
+               [&](VkCommandBuffer cmd) {
+                 target->begin(cmd);
+                 ms = fxkit_path ? frame_fxkit(cmd) : frame_raw(cmd);
+                 target->end(cmd);
+               },
+               sink) &&
+           ok;
       if (fxkit_path) fx_bytes = device->uniform_bytes_written() - bytes_before;
       return ms;
     };
@@ -464,13 +490,18 @@ int bench_apply(const BenchArgs& args) {
     } else {
       std::printf("fxkit bench apply on %s: %u objects in %zu technique groups, median of %d frames\n",
                   ctx->info().name.c_str(), kObjects, groups.size(), frames);
-      std::printf("  public API (set World/WVP + apply + draw):   %.3f ms/frame (%.0f ns/draw)\n", f, f * 1e6 / kObjects);
-      std::printf("  hand-written Vulkan (memcpy + bind + draw):   %.3f ms/frame (%.0f ns/draw)\n", r, r * 1e6 / kObjects);
-      std::printf("  EffectBinding under it (static pipelines):  %.3f ms/frame (%.0f ns/draw)\n", b, b * 1e6 / kObjects);
+      std::printf("  public API (set World/WVP + apply + draw):   %.3f ms/frame (%.0f ns/draw)\n", f,
+                  f * 1e6 / kObjects);
+      std::printf("  hand-written Vulkan (memcpy + bind + draw):   %.3f ms/frame (%.0f ns/draw)\n", r,
+                  r * 1e6 / kObjects);
+      std::printf("  EffectBinding under it (static pipelines):  %.3f ms/frame (%.0f ns/draw)\n", b,
+                  b * 1e6 / kObjects);
       std::printf("  ratio fxkit/raw: %.2fx (target <= 1.2x); EffectBinding/raw %.2fx\n", f / r, b / r);
-      std::printf("  pipelines created %zu for %zu distinct state combinations; last frame: %llu pipeline binds, %llu descriptor binds, %llu uniform uploads\n",
-                  pipelines, distinct.size(), (unsigned long long)stats.pipeline_binds,
-                  (unsigned long long)stats.descriptor_binds, (unsigned long long)stats.uniform_uploads);
+      std::printf(
+          "  pipelines created %zu for %zu distinct state combinations; last frame: %llu pipeline binds, %llu "
+          "descriptor binds, %llu uniform uploads\n",
+          pipelines, distinct.size(), (unsigned long long)stats.pipeline_binds,
+          (unsigned long long)stats.descriptor_binds, (unsigned long long)stats.uniform_uploads);
       std::printf("  uniform bytes per frame: fxkit %llu, hand-written %llu\n", (unsigned long long)fx_bytes,
                   (unsigned long long)raw_bytes);
     }

@@ -73,7 +73,8 @@ struct Ratio {
 int bench_check(const BenchArgs& args) {
   CheckInputs corpus, seeds;
   std::string error;
-  if (!find_check_inputs({args.effects_dir}, {}, corpus, error) || !find_check_inputs({args.seeds_dir}, {}, seeds, error)) {
+  if (!find_check_inputs({args.effects_dir}, {}, corpus, error) ||
+      !find_check_inputs({args.seeds_dir}, {}, seeds, error)) {
     std::fprintf(stderr, "fxkit bench check: %s\n", error.c_str());
     return kUsageError;
   }
@@ -93,26 +94,33 @@ int bench_check(const BenchArgs& args) {
     lib_one.push_back(timed_library_load(seeds.files, 1, &loaded));
     lib_two.push_back(timed_library_load(seeds.files, 2));
   }
-  Ratio jobs{median(one), median(two), 1.8}, cache{median(cold), median(warm), 20}, library{median(lib_one), median(lib_two), 1.7};
+  Ratio jobs{median(one), median(two), 1.8}, cache{median(cold), median(warm), 20},
+      library{median(lib_one), median(lib_two), 1.7};
   if (args.json) {
-    nlohmann::json out = {{"effects_dir", args.effects_dir}, {"files", corpus.files.size()},
-                          {"files_failing", failed},         {"seeds_dir", args.seeds_dir},
-                          {"seed_effects", seeds.files.size()}, {"seed_effects_loaded", loaded},
-                          {"repeats", args.repeats},         {"jobs_2_vs_1", jobs.json()},
-                          {"cache_second_vs_first", cache.json()}, {"library_pool_2_vs_1", library.json()}};
+    nlohmann::json out = {{"effects_dir", args.effects_dir},
+                          {"files", corpus.files.size()},
+                          {"files_failing", failed},
+                          {"seeds_dir", args.seeds_dir},
+                          {"seed_effects", seeds.files.size()},
+                          {"seed_effects_loaded", loaded},
+                          {"repeats", args.repeats},
+                          {"jobs_2_vs_1", jobs.json()},
+                          {"cache_second_vs_first", cache.json()},
+                          {"library_pool_2_vs_1", library.json()}};
     std::puts(json_text(out).c_str());
     return kSuccess;
   }
-  std::printf("fxkit bench check: %zu effect(s) in %s (%zu failing), %zu seed effect(s) in %s (%zu load), "
-              "median of %d run(s), %zu hardware thread(s)\n",
-              corpus.files.size(), args.effects_dir.c_str(), failed, seeds.files.size(), args.seeds_dir.c_str(),
-              loaded, args.repeats, fx::WorkerPool::hardware_threads());
+  std::printf(
+      "fxkit bench check: %zu effect(s) in %s (%zu failing), %zu seed effect(s) in %s (%zu load), "
+      "median of %d run(s), %zu hardware thread(s)\n",
+      corpus.files.size(), args.effects_dir.c_str(), failed, seeds.files.size(), args.seeds_dir.c_str(), loaded,
+      args.repeats, fx::WorkerPool::hardware_threads());
   std::printf("check --compile --jobs 2: %.3f s vs --jobs 1 %.3f s: %.2fx (target >= %.1fx)\n", jobs.measured,
               jobs.baseline, jobs.value(), jobs.target);
   std::printf("check --cache, second run (unchanged): %.4f s vs first %.3f s: %.1fx (target >= %.0fx)\n",
               cache.measured, cache.baseline, cache.value(), cache.target);
-  std::printf("EffectLibrary::load, compile_threads 2: %.3f s vs 1 %.3f s: %.2fx (target >= %.1fx)\n",
-              library.measured, library.baseline, library.value(), library.target);
+  std::printf("EffectLibrary::load, compile_threads 2: %.3f s vs 1 %.3f s: %.2fx (target >= %.1fx)\n", library.measured,
+              library.baseline, library.value(), library.target);
   return kSuccess;
 }
 

@@ -60,9 +60,8 @@ LoadTimes load(const std::string& path, const fx::ShaderCompiler& compiler) {
 }
 
 nlohmann::json to_json(const LoadTimes& t) {
-  return {{"front_end_ms", t.front_end}, {"glslang_ms", t.glslang}, {"link_ms", t.link},
-          {"rest_ms", t.rest()},         {"total_ms", t.total},     {"shaders", t.shaders},
-          {"failed", t.failed}};
+  return {{"front_end_ms", t.front_end}, {"glslang_ms", t.glslang}, {"link_ms", t.link}, {"rest_ms", t.rest()},
+          {"total_ms", t.total},         {"shaders", t.shaders},    {"failed", t.failed}};
 }
 
 }  // namespace

@@ -119,22 +119,31 @@ int bench_frontend(const BenchArgs& args) {
   double front_rate = mb / front, glsl_rate = shader_mb / glsl;
   nlohmann::json j = {
       {"benchmark", "frontend"},
-      {"effect_mb", mb}, {"modules", g.files.size() - 1}, {"tokens", median_run.tokens},
-      {"front_end", {{"seconds", front}, {"mb_per_s", front_rate}, {"preprocess_s", median_run.preprocess},
-                     {"parse_s", median_run.parse}, {"check_s", median_run.check}, {"errors", best.errors}}},
+      {"effect_mb", mb},
+      {"modules", g.files.size() - 1},
+      {"tokens", median_run.tokens},
+      {"front_end",
+       {{"seconds", front},
+        {"mb_per_s", front_rate},
+        {"preprocess_s", median_run.preprocess},
+        {"parse_s", median_run.parse},
+        {"check_s", median_run.check},
+        {"errors", best.errors}}},
       {"glslang", {{"seconds", glsl}, {"shader_mb", shader_mb}, {"mb_per_s", glsl_rate}, {"ok", glslang_ok}}},
-      {"ratio_mb_per_s", ratio}, {"rounds", rounds}, {"repeats", args.repeats}};
+      {"ratio_mb_per_s", ratio},
+      {"rounds", rounds},
+      {"repeats", args.repeats}};
   if (args.json) {
     std::puts(json_text(j).c_str());
   } else {
-    std::printf("fxkit bench frontend: %.1f MB effect, %zu included modules, %zu tokens\n", mb,
-                g.files.size() - 1, median_run.tokens);
-    std::printf("  medians of %zu front-end and %zu glslang runs, interleaved in %d rounds\n",
-                front_times.size(), glslang_times.size(), rounds);
+    std::printf("fxkit bench frontend: %.1f MB effect, %zu included modules, %zu tokens\n", mb, g.files.size() - 1,
+                median_run.tokens);
+    std::printf("  medians of %zu front-end and %zu glslang runs, interleaved in %d rounds\n", front_times.size(),
+                glslang_times.size(), rounds);
     std::printf("  front end (preprocess %.3f s + parse %.3f s + check %.3f s)  %7.3f s  %8.1f MB/s\n",
                 median_run.preprocess, median_run.parse, median_run.check, front, front_rate);
-    std::printf("  baseline: glslang parse of the %.1f MB of shader code   %7.3f s  %8.1f MB/s%s\n",
-                shader_mb, glsl, glsl_rate, glslang_ok ? "" : "  (glslang reported errors)");
+    std::printf("  baseline: glslang parse of the %.1f MB of shader code   %7.3f s  %8.1f MB/s%s\n", shader_mb, glsl,
+                glsl_rate, glslang_ok ? "" : "  (glslang reported errors)");
     std::printf("  ratio (front end MB/s / glslang MB/s), median of rounds  %7.1fx\n", ratio);
     if (best.errors) std::printf("  warning: the front end reported %zu errors on the generated effect\n", best.errors);
   }

@@ -20,8 +20,16 @@ namespace {
 
 // The child's command line: this binary, the same mode and options, one process, JSON.
 std::vector<std::string> child_args(const BenchArgs& args) {
-  return {"/proc/self/exe", "bench",     args.mode,  "--repeats", std::to_string(args.repeats), "--size-mb",
-          std::to_string(args.size_mb), "--effects", args.effects_dir, "--json"};
+  return {"/proc/self/exe",
+          "bench",
+          args.mode,
+          "--repeats",
+          std::to_string(args.repeats),
+          "--size-mb",
+          std::to_string(args.size_mb),
+          "--effects",
+          args.effects_dir,
+          "--json"};
 }
 
 // Runs the command and returns what it printed; false when it could not start or did not
@@ -88,16 +96,21 @@ int bench_processes(const BenchArgs& args) {
   const double median = interpolated_median(ratios);
   const auto [lowest, highest] = std::minmax_element(ratios.begin(), ratios.end());
   if (args.json) {
-    nlohmann::json j = {{"benchmark", args.mode},          {"processes", args.processes}, {key, median},
-                        {std::string(key) + "_min", *lowest}, {std::string(key) + "_max", *highest},
-                        {"ratios", ratios},                {"runs", runs}};
+    nlohmann::json j = {{"benchmark", args.mode},
+                        {"processes", args.processes},
+                        {key, median},
+                        {std::string(key) + "_min", *lowest},
+                        {std::string(key) + "_max", *highest},
+                        {"ratios", ratios},
+                        {"runs", runs}};
     std::printf("%s\n", json_text(j).c_str());
     return status;
   }
   std::printf("fxkit bench %s in %d fresh processes (the ratio moves with each process's memory layout)\n",
               args.mode.c_str(), args.processes);
   std::printf("  %s: median %.3f, min %.3f, max %.3f", key, median, *lowest, *highest);
-  if (runs.front().contains("target_ratio")) std::printf(" (target <= %.2f)", runs.front()["target_ratio"].get<double>());
+  if (runs.front().contains("target_ratio"))
+    std::printf(" (target <= %.2f)", runs.front()["target_ratio"].get<double>());
   std::printf("\n  per process:");
   for (double r : ratios) std::printf(" %.3f", r);
   std::printf("\n");

@@ -22,12 +22,12 @@
 #include <optional>
 
 #include "bench.h"
+#include "fx/binding/effect_preview.h"
 #include "fx/compile/compile_workers.h"
 #include "fx/mesh.h"
 #include "fx/model/parameter_store.h"
 #include "fx/reload/effect_library.h"
 #include "fx/reload/reload_transaction.h"
-#include "fx/binding/effect_preview.h"
 #include "fx/reload/vulkan_reload_backend.h"
 
 namespace fxkit {
@@ -107,11 +107,10 @@ bool measure_reloads(const BenchArgs& args, const std::optional<fx::CompileWorke
     return false;
   }
   fx::vk::EffectPreview* p = preview.get();
-  fx::vk::ReloadBackend backend(*ctx, preview->textures(), preview->frames(),
-                                fx::vk::ReloadBackendDesc{preview->formats(), preview->binding_desc(),
-                                                          [p](std::span<const fx::InterfaceVariable> in) {
-                                                            return p->vertex_layout(in);
-                                                          }});
+  fx::vk::ReloadBackend backend(
+      *ctx, preview->textures(), preview->frames(),
+      fx::vk::ReloadBackendDesc{preview->formats(), preview->binding_desc(),
+                                [p](std::span<const fx::InterfaceVariable> in) { return p->vertex_layout(in); }});
   options.backend = &backend;
   fx::EffectLibrary lib(std::move(options));
   if (workers && !lib.compile_workers()) {
@@ -155,8 +154,7 @@ bool measure_reloads(const BenchArgs& args, const std::optional<fx::CompileWorke
     std::vector<fx::ReloadEvent> got;
     Clock::time_point deadline = edit + std::chrono::seconds(30);
     while (got.empty() && Clock::now() < deadline) {
-      if (lib.wait(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now())))
-        got = lib.poll();
+      if (lib.wait(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()))) got = lib.poll();
     }
     ++i;
     if (got.empty()) {
@@ -214,9 +212,14 @@ nlohmann::json run_json(const ReloadRun& run) {
           {"timeouts", run.timeouts},
           {"effects", run.effects},
           {"median_ms",
-           {{"total", median(m.total)}, {"detect", median(m.detect)}, {"parse", median(m.parse)},
-            {"compile", median(m.compile)}, {"glslang", median(m.glslang)}, {"pipeline", median(m.pipeline)},
-            {"first_frame", median(m.first)}, {"framework", median(m.framework)}}},
+           {{"total", median(m.total)},
+            {"detect", median(m.detect)},
+            {"parse", median(m.parse)},
+            {"compile", median(m.compile)},
+            {"glslang", median(m.glslang)},
+            {"pipeline", median(m.pipeline)},
+            {"first_frame", median(m.first)},
+            {"framework", median(m.framework)}}},
           {"max_ms", {{"total", maximum(m.total)}, {"framework", maximum(m.framework)}}},
           {"framework_share", m.share()},
           {"baseline", "glslang time of the same units"},
@@ -247,12 +250,12 @@ int bench_reload(const BenchArgs& args) {
   // 50 edits each way, in alternating series of 25, so a change in the machine's load during
   // the run falls on both.
   for (int series = 0; series < 2; ++series)
-    if (!measure_reloads(args, std::nullopt, 25, here) || !measure_reloads(args, fx::CompileWorkerOptions{}, 25, workers))
+    if (!measure_reloads(args, std::nullopt, 25, here) ||
+        !measure_reloads(args, fx::CompileWorkerOptions{}, 25, workers))
       return kUsageError;
   const double difference = median(Medians(workers.samples).total) - median(Medians(here.samples).total);
   // The part the workers change (the rest is the same code on both sides).
-  const double compile_difference =
-      median(Medians(workers.samples).compile) - median(Medians(here.samples).compile);
+  const double compile_difference = median(Medians(workers.samples).compile) - median(Medians(here.samples).compile);
   if (args.json) {
     nlohmann::json j = run_json(workers);
     j["in_process"] = run_json(here);

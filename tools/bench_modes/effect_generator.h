@@ -9,10 +9,10 @@
 namespace fxkit {
 
 struct GeneratedEffect {
-  std::string main_name;                    // "bench_main.fx"
-  std::map<std::string, std::string> files; // every file, the main one included
-  std::string shader_code;                  // the HLSL a shader compiler would see
-  size_t effect_bytes = 0;                  // all files together
+  std::string main_name;                     // "bench_main.fx"
+  std::map<std::string, std::string> files;  // every file, the main one included
+  std::string shader_code;                   // the HLSL a shader compiler would see
+  size_t effect_bytes = 0;                   // all files together
 };
 
 // At least `min_bytes` of effect source, split into modules of about 64 KiB.

@@ -78,8 +78,8 @@ unsigned shard_of(const std::string& file, unsigned shards) {
 
 bool find_check_inputs(const std::vector<std::string>& paths, const CheckInputOptions& options, CheckInputs& out,
                        std::string& error) {
-  std::set<std::string> named;                 // files named on the command line
-  std::vector<std::string> found;              // files found in folders
+  std::set<std::string> named;     // files named on the command line
+  std::vector<std::string> found;  // files found in folders
   for (const std::string& p : paths) {
     std::error_code ec;
     if (fs::is_regular_file(p, ec)) {

@@ -84,8 +84,8 @@ std::string junit_report(const CheckRun& run) {
   for (const EffectCheck& c : run.checks) {
     char time[32];
     std::snprintf(time, sizeof time, "%.3f", c.ms / 1000);
-    out += "    <testcase classname=\"fxkit.check\" name=\"" + xml_escaped(c.file) + "\" file=\"" + xml_escaped(c.file) +
-           "\" time=\"" + time + "\"";
+    out += "    <testcase classname=\"fxkit.check\" name=\"" + xml_escaped(c.file) + "\" file=\"" +
+           xml_escaped(c.file) + "\" time=\"" + time + "\"";
     if (c.clean()) {
       out += "/>\n";
       continue;

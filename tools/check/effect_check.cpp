@@ -62,8 +62,9 @@ void compile_shaders(const fx::ParsedEffect& parsed, const EffectCheckSettings& 
       }
       if (stage.kind != fx::StageSourceKind::invalid) continue;
       fx::DiagnosticSink located;
-      located.error("shader-not-compiled", stage.range,
-                    "pass '" + name + "' cannot be compiled: " + fx::to_string(stage.stage) + " stage: " + stage.unsupported);
+      located.error(
+          "shader-not-compiled", stage.range,
+          "pass '" + name + "' cannot be compiled: " + fx::to_string(stage.stage) + " stage: " + stage.unsupported);
       shown.add(located.diagnostics(), "");
     }
     shown.add(program.diagnostics, name);
@@ -135,10 +136,9 @@ void check_effects(const std::vector<std::string>& files, const EffectCheckSetti
 }
 
 nlohmann::json to_json(const EffectCheck& c) {
-  return {{"file", c.file},       {"files", c.files},         {"errors", c.errors},
-          {"warnings", c.warnings}, {"runnable", c.runnable}, {"text", c.text},
-          {"caps_text", c.caps_text}, {"diagnostics", c.diagnostics}, {"effect", c.effect},
-          {"ms", c.ms}};
+  return {{"file", c.file},         {"files", c.files}, {"errors", c.errors},       {"warnings", c.warnings},
+          {"runnable", c.runnable}, {"text", c.text},   {"caps_text", c.caps_text}, {"diagnostics", c.diagnostics},
+          {"effect", c.effect},     {"ms", c.ms}};
 }
 
 bool from_json(const nlohmann::json& j, EffectCheck& c) {

@@ -23,7 +23,7 @@ class CheckCache;
 
 struct EffectCheckSettings {
   fx::FrontEndOptions front_end;
-  bool compile = true;           // false: --syntax-only (the front end's checks alone)
+  bool compile = true;  // false: --syntax-only (the front end's checks alone)
   bool werror = false;
   const fx::ShaderCompiler* compiler = nullptr;  // required when compile (runtime builds)
   fx::TaskExecutor* executor = nullptr;          // the stages in parallel; nullptr: in turn
@@ -32,15 +32,15 @@ struct EffectCheckSettings {
 };
 
 struct EffectCheck {
-  std::string file;                  // as named on the command line or found in a folder
-  std::vector<std::string> files;    // files read: the effect first, then its includes
+  std::string file;                // as named on the command line or found in a folder
+  std::vector<std::string> files;  // files read: the effect first, then its includes
   size_t errors = 0, warnings = 0;
-  bool runnable = true;              // with caps: some technique is valid there
-  std::string text;                  // the diagnostics as text (for stderr)
-  std::string caps_text;             // with caps: the technique lines (for stdout)
+  bool runnable = true;                                  // with caps: some technique is valid there
+  std::string text;                                      // the diagnostics as text (for stderr)
+  std::string caps_text;                                 // with caps: the technique lines (for stdout)
   nlohmann::json diagnostics = nlohmann::json::array();  // fx::render_json of them
-  nlohmann::json effect;             // the effect's summary for --format json
-  double ms = 0;                     // wall time of the check (of the first run, if cached)
+  nlohmann::json effect;                                 // the effect's summary for --format json
+  double ms = 0;                                         // wall time of the check (of the first run, if cached)
   bool from_cache = false;
 
   bool failed() const { return errors > 0 || !runnable; }

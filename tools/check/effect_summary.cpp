@@ -72,8 +72,10 @@ nlohmann::json summarize_effect(const fx::ast::Effect& effect, const fx::SourceM
       default: break;
     }
   }
-  return {{"parameters", std::move(parameters)}, {"techniques", std::move(techniques)},
-          {"functions", functions}, {"state_objects", state_objects}};
+  return {{"parameters", std::move(parameters)},
+          {"techniques", std::move(techniques)},
+          {"functions", functions},
+          {"state_objects", state_objects}};
 }
 
 }  // namespace fxkit

@@ -104,12 +104,11 @@ nlohmann::json sarif_report(const CheckRun& run, const std::string& base) {
   std::string root = path_uri(base);
   if (root.empty() || root.back() != '/') root += '/';
   nlohmann::json driver = {{"name", "fxkit"}, {"rules", std::move(rules)}};
-  nlohmann::json sarif_run = {
-      {"tool", {{"driver", std::move(driver)}}},
-      {"originalUriBaseIds", {{"SRCROOT", {{"uri", root}}}}},
-      {"invocations", nlohmann::json::array({{{"executionSuccessful", true}}})},
-      {"columnKind", "unicodeCodePoints"},
-      {"results", std::move(results)}};
+  nlohmann::json sarif_run = {{"tool", {{"driver", std::move(driver)}}},
+                              {"originalUriBaseIds", {{"SRCROOT", {{"uri", root}}}}},
+                              {"invocations", nlohmann::json::array({{{"executionSuccessful", true}}})},
+                              {"columnKind", "unicodeCodePoints"},
+                              {"results", std::move(results)}};
   return {{"$schema", "https://docs.oasis-open.org/sarif/sarif/v2.1.0/errata01/os/schemas/sarif-schema-2.1.0.json"},
           {"version", "2.1.0"},
           {"runs", nlohmann::json::array({std::move(sarif_run)})}};

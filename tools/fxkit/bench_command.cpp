@@ -15,8 +15,7 @@ void register_bench(CLI::App& app, Runner& run) {
       ->capture_default_str();
   cmd->add_option("--seeds", args->seeds_dir, "check: folder of .fx files loaded through the library")
       ->capture_default_str();
-  cmd->add_option("--size-mb", args->size_mb, "frontend: size of the generated effect in MB")
-      ->capture_default_str();
+  cmd->add_option("--size-mb", args->size_mb, "frontend: size of the generated effect in MB")->capture_default_str();
   cmd->add_option("--repeats", args->repeats, "Repetitions (the median is reported)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
@@ -35,8 +34,9 @@ void register_bench(CLI::App& app, Runner& run) {
   cmd->callback([args, &run] {
 #ifndef FXKIT_HAS_RUNTIME
     run = [] {
-      std::fprintf(stderr, "fxkit bench: this fxkit was built without the runtime (FXKIT_VULKAN=OFF); "
-                           "every benchmark's baseline is glslang or Vulkan\n");
+      std::fprintf(stderr,
+                   "fxkit bench: this fxkit was built without the runtime (FXKIT_VULKAN=OFF); "
+                   "every benchmark's baseline is glslang or Vulkan\n");
       return kUsageError;
     };
     return;

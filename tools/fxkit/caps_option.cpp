@@ -6,9 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fx/binding/context_caps.h"
 #include "fx/select/caps_sources.h"
 #include "fx/vulkan/context.h"
-#include "fx/binding/context_caps.h"
 
 namespace fxkit {
 
@@ -24,8 +24,8 @@ std::optional<fx::DeviceCaps> load_caps_option(const std::string& value, fx::Dia
     if (!ctx) return std::nullopt;
     return fx::vk::context_caps(*ctx);
   }
-  bool looks_like_file = value.find('/') != std::string::npos || value.ends_with(".json") ||
-                         std::filesystem::is_regular_file(value);
+  bool looks_like_file =
+      value.find('/') != std::string::npos || value.ends_with(".json") || std::filesystem::is_regular_file(value);
   if (!looks_like_file) return fx::load_caps_profile(value, sink);
   std::ifstream in(value);
   if (!in) {

@@ -35,22 +35,22 @@ namespace {
 struct CheckArgs {
   FrontEndFlags front_end;
   std::vector<std::string> paths;
-  bool json = false;            // --json: --format json
+  bool json = false;  // --json: --format json
   std::string format = "text";
-  std::string output;           // -o: the report goes here, the summary to the terminal
+  std::string output;  // -o: the report goes here, the summary to the terminal
   bool werror = false;
   bool syntax_only = false;
-  bool compile = false;         // --compile: the default, spelled out
-  unsigned jobs = 0;            // 0: one per hardware thread
+  bool compile = false;  // --compile: the default, spelled out
+  unsigned jobs = 0;     // 0: one per hardware thread
   std::string cache_dir;
   unsigned cache_limit_mb = 512;
   std::vector<std::string> include_globs{"*.fx"}, exclude_globs;
   std::string shard;
-  bool allow_empty = false;     // --allow-empty: no effect found is a success
-  std::string caps;             // --caps: validate every technique on these caps ("" = don't)
-  bool no_compile = false;      // --no-compile: validate without compiling shaders
+  bool allow_empty = false;  // --allow-empty: no effect found is a success
+  std::string caps;          // --caps: validate every technique on these caps ("" = don't)
+  bool no_compile = false;   // --no-compile: validate without compiling shaders
 #ifdef FXKIT_HAS_RUNTIME
-  CompileWorkersFlag workers;   // glslang in worker processes, one per job
+  CompileWorkersFlag workers;  // glslang in worker processes, one per job
 #endif
 };
 
@@ -64,10 +64,14 @@ std::string joined(const std::vector<std::string>& items, const char* separator)
 // What besides the files decides a cached result: the flags, fxkit's own build (a rebuilt
 // binary may report differently) and the working directory relative paths start from.
 std::string cache_options(const CheckArgs& args) {
-  nlohmann::json j = {{"include_dirs", args.front_end.include_dirs}, {"defines", args.front_end.defines},
-                      {"profile", args.front_end.profile},         {"compile", !args.syntax_only},
-                      {"werror", args.werror},                     {"caps", args.caps},
-                      {"no_compile", args.no_compile},             {"glslang", fx::ShaderCompiler::glslang_version()},
+  nlohmann::json j = {{"include_dirs", args.front_end.include_dirs},
+                      {"defines", args.front_end.defines},
+                      {"profile", args.front_end.profile},
+                      {"compile", !args.syntax_only},
+                      {"werror", args.werror},
+                      {"caps", args.caps},
+                      {"no_compile", args.no_compile},
+                      {"glslang", fx::ShaderCompiler::glslang_version()},
                       {"cwd", std::filesystem::current_path().string()}};
   struct stat self {};
   if (::stat("/proc/self/exe", &self) == 0)
@@ -193,7 +197,8 @@ int run_check(CheckArgs args) {
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   if (args.format == "json") report.write(json_text(json_report(run)) + "\n");
-  else if (args.format == "sarif") report.write(json_text(sarif_report(run, std::filesystem::current_path().string())) + "\n");
+  else if (args.format == "sarif")
+    report.write(json_text(sarif_report(run, std::filesystem::current_path().string())) + "\n");
   else if (args.format == "junit") report.write(junit_report(run));
   if (!report.ok()) {
     std::fprintf(stderr, "fxkit check: cannot write '%s'\n", args.output.c_str());
@@ -201,8 +206,8 @@ int run_check(CheckArgs args) {
   }
   // Silent for one clean file named on the command line, as compilers are; otherwise the
   // counts a CI log shows (a folder or a shard that held one file, or none, included).
-  const bool one_named_file = n == 1 && args.paths.size() == 1 && args.shard.empty() &&
-                              std::filesystem::is_regular_file(args.paths[0]);
+  const bool one_named_file =
+      n == 1 && args.paths.size() == 1 && args.shard.empty() && std::filesystem::is_regular_file(args.paths[0]);
   if (!one_named_file || run.errors() || run.warnings() || !args.output.empty())
     std::fprintf(stderr, "%s\n", summary_line(run).c_str());
   return run.failed() ? kInputErrors : kSuccess;
@@ -225,13 +230,13 @@ void register_check(CLI::App& app, Runner& run) {
   cmd->add_option("--include-glob", args->include_globs,
                   "Files to check in PATH folders (default *.fx; a pattern with / matches the path below the folder)")
       ->allow_extra_args(false);
-  cmd->add_option("--exclude-glob", args->exclude_globs, "Files in PATH folders not to check")
-      ->allow_extra_args(false);
+  cmd->add_option("--exclude-glob", args->exclude_globs, "Files in PATH folders not to check")->allow_extra_args(false);
   cmd->add_option("--shard", args->shard, "Check shard K of N (1-based): a stable 1/N of the files, for CI machines");
   cmd->add_flag("--allow-empty", args->allow_empty, "Succeed when the paths hold no effect file (default: exit 2)");
   cmd->add_option("PATH", args->paths, "Effect files and folders (searched recursively)")->required();
-  [[maybe_unused]] auto* syntax = cmd->add_flag("--syntax-only", args->syntax_only,
-                               "The front end's checks alone: preprocess, parse, effect-level checks; no shader compiled");
+  [[maybe_unused]] auto* syntax =
+      cmd->add_flag("--syntax-only", args->syntax_only,
+                    "The front end's checks alone: preprocess, parse, effect-level checks; no shader compiled");
 #ifdef FXKIT_HAS_RUNTIME
   cmd->add_flag("--compile", args->compile, "Also compile every shader to SPIR-V (the default)")->excludes(syntax);
   cmd->add_option("--cache", args->cache_dir,

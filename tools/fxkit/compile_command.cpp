@@ -74,8 +74,7 @@ int run_compile(const CompileArgs& args) {
     std::error_code ec;
     std::filesystem::create_directories(args.output_dir, ec);
     if (ec) {
-      std::fprintf(stderr, "fxkit compile: cannot create '%s': %s\n", args.output_dir.c_str(),
-                   ec.message().c_str());
+      std::fprintf(stderr, "fxkit compile: cannot create '%s': %s\n", args.output_dir.c_str(), ec.message().c_str());
       return kUsageError;
     }
   }
@@ -123,8 +122,8 @@ int run_compile(const CompileArgs& args) {
         shaders.push_back(std::move(j));
       } else {
         std::fprintf(stderr, "%s.%s %s (%s %s): %s%s\n", pass.technique.c_str(), pass.pass.c_str(),
-                     fx::to_string(s.stage), s.unit.profile.c_str(), s.unit.entry_point.c_str(),
-                     ok ? "ok" : "FAILED", spv.empty() ? "" : (" -> " + spv).c_str());
+                     fx::to_string(s.stage), s.unit.profile.c_str(), s.unit.entry_point.c_str(), ok ? "ok" : "FAILED",
+                     spv.empty() ? "" : (" -> " + spv).c_str());
       }
     }
     // The other elements of a shader array the pass indexes: each is a shader of the effect.
@@ -134,8 +133,8 @@ int run_compile(const CompileArgs& args) {
         std::optional<fx::StageProgram> s = programs.compile_alone(stage.choices[i]);
         if (!s) continue;
         failed = failed || !s->shader.ok;
-        all.add(s->diagnostics, pass.technique + "." + pass.pass + " " + fx::to_string(s->stage) + " choice " +
-                                    std::to_string(i));
+        all.add(s->diagnostics,
+                pass.technique + "." + pass.pass + " " + fx::to_string(s->stage) + " choice " + std::to_string(i));
         if (args.json) {
           nlohmann::json j = shader_json(pass, *s, &stage.choices[i], sm);
           j["choice"] = i;
@@ -159,12 +158,17 @@ int run_compile(const CompileArgs& args) {
       located.report(error ? fx::Severity::error : fx::Severity::warning, "shader-not-compiled", range,
                      "pass '" + pass.technique + "." + pass.pass + "' is not compiled to SPIR-V: " + reason);
       if (args.json) {
-        shaders.push_back({{"technique", pass.technique}, {"pass", pass.pass},
-                           {"stage", stage ? nlohmann::json(fx::to_string(stage->stage)) : nlohmann::json()},
-                           {"entry", nullptr}, {"function", stage ? stage->function : ""},
-                           {"profile", stage && !stage->profile.empty() ? nlohmann::json(stage->profile) : nlohmann::json()},
-                           {"ok", false}, {"ms", 0}, {"unsupported", reason},
-                           {"diagnostics", fx::render_json(located.diagnostics(), sm)}});
+        shaders.push_back(
+            {{"technique", pass.technique},
+             {"pass", pass.pass},
+             {"stage", stage ? nlohmann::json(fx::to_string(stage->stage)) : nlohmann::json()},
+             {"entry", nullptr},
+             {"function", stage ? stage->function : ""},
+             {"profile", stage && !stage->profile.empty() ? nlohmann::json(stage->profile) : nlohmann::json()},
+             {"ok", false},
+             {"ms", 0},
+             {"unsupported", reason},
+             {"diagnostics", fx::render_json(located.diagnostics(), sm)}});
       } else {
         std::fprintf(stderr, "%s.%s: not compiled: %s\n", pass.technique.c_str(), pass.pass.c_str(), reason.c_str());
         all.add(located.diagnostics(), "");
@@ -181,12 +185,12 @@ int run_compile(const CompileArgs& args) {
     return kUsageError;
   }
   if (args.json) {
-    nlohmann::json out = {{"file", args.file},
-                          {"shaders", std::move(shaders)},
-                          {"diagnostics", fx::render_json(effect_level, sm)},
-                          {"ok", !failed},
-                          {"glslang_started", fx::ShaderCompiler::glslang_started() ||
-                                                  (workers && workers->stats().started > 0)}};
+    nlohmann::json out = {
+        {"file", args.file},
+        {"shaders", std::move(shaders)},
+        {"diagnostics", fx::render_json(effect_level, sm)},
+        {"ok", !failed},
+        {"glslang_started", fx::ShaderCompiler::glslang_started() || (workers && workers->stats().started > 0)}};
     std::puts(json_text(out).c_str());
   } else {
     std::fputs(fx::render_text(all.diagnostics(), sm).c_str(), stderr);

@@ -73,8 +73,8 @@ json states(const fx::ast::List<fx::ast::StateAssignment>& list) {
 
 std::vector<std::string> storage_names(uint32_t bits) {
   static constexpr std::pair<uint32_t, const char*> kNames[] = {
-      {fx::ast::kShared, "shared"}, {fx::ast::kStatic, "static"}, {fx::ast::kUniform, "uniform"},
-      {fx::ast::kConst, "const"},   {fx::ast::kExtern, "extern"}, {fx::ast::kVolatile, "volatile"},
+      {fx::ast::kShared, "shared"},      {fx::ast::kStatic, "static"},           {fx::ast::kUniform, "uniform"},
+      {fx::ast::kConst, "const"},        {fx::ast::kExtern, "extern"},           {fx::ast::kVolatile, "volatile"},
       {fx::ast::kRowMajor, "row_major"}, {fx::ast::kColumnMajor, "column_major"}};
   std::vector<std::string> out;
   for (auto [bit, name] : kNames)
@@ -89,7 +89,8 @@ json reflected_type(const fx::ReflectedType& t) {
 json interface(const std::vector<fx::InterfaceVariable>& vars) {
   json out = json::array();
   for (const fx::InterfaceVariable& v : vars)
-    out.push_back({{"name", v.name}, {"semantic", v.semantic}, {"location", v.location}, {"type", reflected_type(v.type)}});
+    out.push_back(
+        {{"name", v.name}, {"semantic", v.semantic}, {"location", v.location}, {"type", reflected_type(v.type)}});
   return out;
 }
 
@@ -229,8 +230,12 @@ int run_info(const InfoArgs& args) {
         json stages = json::array();
         for (int st = 0; st <= static_cast<int>(fx::ShaderStage::compute); ++st)
           if (b.stage_mask & (1u << st)) stages.push_back(fx::to_string(static_cast<fx::ShaderStage>(st)));
-        bindings.push_back({{"name", b.name}, {"kind", kind_name(b.kind)}, {"set", b.set}, {"binding", b.binding},
-                            {"count", b.count}, {"stages", stages}});
+        bindings.push_back({{"name", b.name},
+                            {"kind", kind_name(b.kind)},
+                            {"set", b.set},
+                            {"binding", b.binding},
+                            {"count", b.count},
+                            {"stages", stages}});
       }
       const fx::StageProgram* vs = prog.find(fx::ShaderStage::vertex);
       passes.push_back({{"name", ep.pass},
@@ -257,11 +262,14 @@ int run_info(const InfoArgs& args) {
       const fx::ast::Variable& v = *d.variable;
       if (fx::shader_type_stage(v.type.name)) continue;
       if (is_texture_type(v.type.name)) {
-        textures.push_back({{"name", v.name}, {"type", type_name(v.type)}, {"semantic", v.semantic},
-                            {"annotations", annotations(v.annotations)}, {"location", location(sm, v.name_range)}});
+        textures.push_back({{"name", v.name},
+                            {"type", type_name(v.type)},
+                            {"semantic", v.semantic},
+                            {"annotations", annotations(v.annotations)},
+                            {"location", location(sm, v.name_range)}});
       } else if (is_sampler_type(v.type.name)) {
-        json j = {{"name", v.name}, {"type", type_name(v.type)}, {"annotations", annotations(v.annotations)},
-                  {"states", json::array()}, {"texture", nullptr}, {"location", location(sm, v.name_range)}};
+        json j = {{"name", v.name},          {"type", type_name(v.type)}, {"annotations", annotations(v.annotations)},
+                  {"states", json::array()}, {"texture", nullptr},        {"location", location(sm, v.name_range)}};
         if (v.initializer && v.initializer->kind == fx::ast::ExprKind::state_block) {
           j["states"] = states(v.initializer->states);
           for (const fx::ast::StateAssignment& s : v.initializer->states)
@@ -276,8 +284,12 @@ int run_info(const InfoArgs& args) {
         parameters.push_back(parameter_json(m, d.constant_buffer->name, sm, compiled, model_parameter(m)));
     } else if (d.kind == fx::ast::DeclKind::state_object && lower(d.state_object->kind).rfind("sampler", 0) == 0) {
       const fx::ast::StateObject& so = *d.state_object;
-      samplers.push_back({{"name", so.name}, {"type", so.kind}, {"annotations", annotations(so.annotations)},
-                          {"states", states(so.states)}, {"texture", nullptr}, {"location", location(sm, so.name_range)}});
+      samplers.push_back({{"name", so.name},
+                          {"type", so.kind},
+                          {"annotations", annotations(so.annotations)},
+                          {"states", states(so.states)},
+                          {"texture", nullptr},
+                          {"location", location(sm, so.name_range)}});
     } else if (d.kind == fx::ast::DeclKind::technique) {
       add_technique(*d.technique, "", pass_cursor);
     } else if (d.kind == fx::ast::DeclKind::group) {

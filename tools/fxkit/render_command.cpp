@@ -1,5 +1,6 @@
 // `fxkit render FILE [--technique NAME|auto] [--mesh sphere|torus|quad|teapot|FILE.obj]
-//  [--size WxH] [--param NAME=VALUE]... [--validation] [--ps1x-precision] [--verbose] [--out FILE.png] [--caps X] [--frames N]`:
+//  [--size WxH] [--param NAME=VALUE]... [--validation] [--ps1x-precision] [--verbose] [--out FILE.png] [--caps X]
+//  [--frames N]`:
 // renders an effect headlessly (the best Vulkan device, or FXKIT_DEVICE) on a mesh framed
 // by the camera, standard semantics filled in, and writes a PNG.
 #include <algorithm>
@@ -11,12 +12,12 @@
 
 #include "caps_option.h"
 #include "command.h"
-#include "fx/diagnostic_render.h"
-#include "fx/select/technique_validation.h"
-#include "fx/compile/effect_file.h"
 #include "fx/binding/effect_preview.h"
 #include "fx/binding/effect_scene.h"
 #include "fx/binding/preview_defaults.h"
+#include "fx/compile/effect_file.h"
+#include "fx/diagnostic_render.h"
+#include "fx/select/technique_validation.h"
 
 namespace fxkit {
 namespace {
@@ -68,7 +69,8 @@ int run_render(const RenderArgs& args) {
   }
   if (args.ps1x_precision) options.preprocessor.defines.emplace_back(fx::kPs1xPrecisionMacro, "1");
   unsigned width = 0, height = 0;
-  if (std::sscanf(args.size.c_str(), "%ux%u", &width, &height) != 2 || !width || !height || width > 8192 || height > 8192) {
+  if (std::sscanf(args.size.c_str(), "%ux%u", &width, &height) != 2 || !width || !height || width > 8192 ||
+      height > 8192) {
     std::fprintf(stderr, "fxkit render: --size wants WxH, got '%s'\n", args.size.c_str());
     return kUsageError;
   }
@@ -136,7 +138,8 @@ int run_render(const RenderArgs& args) {
     if (technique == fx::kNoIndex) {
       std::fprintf(stderr, "fxkit render: no technique of '%s' can be drawn here\n", args.file.c_str());
       for (uint32_t t = 0; t < binding->technique_count(); ++t)
-        std::fprintf(stderr, "  %s: %s\n", effect->model->techniques[t].name.c_str(), binding->technique_reason(t).c_str());
+        std::fprintf(stderr, "  %s: %s\n", effect->model->techniques[t].name.c_str(),
+                     binding->technique_reason(t).c_str());
       return kInputErrors;
     }
     if (!binding->technique_ok(technique)) {

@@ -59,9 +59,12 @@ int run_select(const SelectArgs& args) {
   fx::EffectSelection sel;
   if (parsed.ok) sel = fx::build_effect_selection(parsed.ast, sm, *caps, diags, sel_options);
 
-  fx::SelectionCriteria criteria{.distance = args.distance, .screen_size = args.screen_size, .pixels = args.pixels,
+  fx::SelectionCriteria criteria{.distance = args.distance,
+                                 .screen_size = args.screen_size,
+                                 .pixels = args.pixels,
                                  .vertices = args.vertices,
-                                 .scheme = args.scheme, .cost_budget_ms = args.budget_ms,
+                                 .scheme = args.scheme,
+                                 .cost_budget_ms = args.budget_ms,
                                  .max_error = args.max_error};
   fx::SelectionResult result = sel.plan.explain(sel.plan.query(criteria));
   // An effect with errors does not load (render, the viewer and EffectLibrary refuse it), so
@@ -88,10 +91,14 @@ int run_select(const SelectArgs& args) {
     nlohmann::json out = {
         {"file", args.file},
         {"caps", caps->name},
-        {"criteria", {{"distance", args.distance}, {"screen_size", args.screen_size}, {"pixels", args.pixels},
-                      {"vertices", args.vertices},
-                      {"scheme", args.scheme}, {"budget_ms", number_or_null(args.budget_ms)},
-                      {"max_error", number_or_null(args.max_error)}}},
+        {"criteria",
+         {{"distance", args.distance},
+          {"screen_size", args.screen_size},
+          {"pixels", args.pixels},
+          {"vertices", args.vertices},
+          {"scheme", args.scheme},
+          {"budget_ms", number_or_null(args.budget_ms)},
+          {"max_error", number_or_null(args.max_error)}}},
         {"chosen", ok ? nlohmann::json(std::string(sel.plan.name(result.chosen))) : nlohmann::json(nullptr)},
         {"route", fx::to_string(result.route)},
         {"fallback_path", std::move(path)},

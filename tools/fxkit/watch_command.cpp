@@ -11,12 +11,12 @@
 
 #include "command.h"
 #include "compile_workers_option.h"
-#include "fx/diagnostic_render.h"
-#include "fx/reload/effect_library.h"
-#include "fx/reload/reload_transaction.h"
 #include "fx/binding/effect_preview.h"
 #include "fx/binding/effect_scene.h"
 #include "fx/binding/preview_defaults.h"
+#include "fx/diagnostic_render.h"
+#include "fx/reload/effect_library.h"
+#include "fx/reload/reload_transaction.h"
 #include "fx/reload/vulkan_reload_backend.h"
 
 namespace fxkit {
@@ -27,9 +27,9 @@ struct WatchArgs {
   std::string file;
   std::string mesh, out;
   bool json = false;
-  int frames = 0;       // stop after this many frames (0: no limit)
-  int events = 0;       // stop after this many events (0: no limit)
-  double timeout = 0;   // stop after this many seconds (0: no limit)
+  int frames = 0;      // stop after this many frames (0: no limit)
+  int events = 0;      // stop after this many events (0: no limit)
+  double timeout = 0;  // stop after this many seconds (0: no limit)
   int coalesce_ms = 50;
   CompileWorkersFlag workers;
 };
@@ -70,8 +70,7 @@ void print_event(const fx::ReloadEvent& ev, bool json) {
     std::printf("%s %s (%s): %zu recompiled, %.1f ms (detect %.1f, parse %.1f, compile %.1f, pipeline %.1f)\n",
                 fx::to_string(ev.kind), ev.file.c_str(), comma_list(ev.changed).c_str(), ev.recompiled.size(),
                 ev.ms.total, ev.ms.detect, ev.ms.parse, ev.ms.compile, ev.ms.pipeline);
-    if (!ev.defaults_changed.empty())
-      std::printf("defaults changed: %s\n", comma_list(ev.defaults_changed).c_str());
+    if (!ev.defaults_changed.empty()) std::printf("defaults changed: %s\n", comma_list(ev.defaults_changed).c_str());
     if (!ev.diagnostics.empty() && ev.sources) std::fputs(fx::render_text(ev.diagnostics, *ev.sources).c_str(), stdout);
   }
   std::fflush(stdout);
@@ -104,7 +103,8 @@ int run_watch(const WatchArgs& args) {
     if (mesh) ctx = fx::vk::Context::headless({}, sink);
     if (ctx) preview = fx::vk::EffectPreview::create(*ctx, *mesh, {}, sink);
     if (!preview) {
-      for (const fx::Diagnostic& d : sink.diagnostics()) std::fprintf(stderr, "fxkit watch: %s [%s]\n", d.message.c_str(), d.id.c_str());
+      for (const fx::Diagnostic& d : sink.diagnostics())
+        std::fprintf(stderr, "fxkit watch: %s [%s]\n", d.message.c_str(), d.id.c_str());
       return kUsageError;
     }
     fx::vk::EffectPreview* p = preview.get();
@@ -146,7 +146,8 @@ int run_watch(const WatchArgs& args) {
                                  fx::vk::parameters_read(*version->programs, technique));
     fx::DiagnosticSink sink;
     auto image = preview->render(*binding, technique, 0, sink);
-    for (const fx::Diagnostic& d : sink.diagnostics()) std::fprintf(stderr, "fxkit watch: %s [%s]\n", d.message.c_str(), d.id.c_str());
+    for (const fx::Diagnostic& d : sink.diagnostics())
+      std::fprintf(stderr, "fxkit watch: %s [%s]\n", d.message.c_str(), d.id.c_str());
     if (image && !args.out.empty() && written_serial != version->serial) {
       if (fx::write_png(args.out, *image, sink)) written_serial = version->serial;
       else std::fprintf(stderr, "fxkit watch: cannot write '%s'\n", args.out.c_str());

@@ -257,7 +257,8 @@ glm::dvec4 read_parameter(const ParameterStore& params, const std::string& name)
 }
 
 const std::vector<ReferenceModel>& reference_models() {
-  static const std::vector<ReferenceModel> models = {hemisphere(), per_pixel_lighting(), strand_aniso(), aniso_lut_ward(), wood(), brdf()};
+  static const std::vector<ReferenceModel> models = {
+      hemisphere(), per_pixel_lighting(), strand_aniso(), aniso_lut_ward(), wood(), brdf()};
   return models;
 }
 

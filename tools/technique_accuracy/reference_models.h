@@ -15,11 +15,11 @@ namespace fx::bench {
 
 // What the G-buffer pass gives one pixel.
 struct PixelInputs {
-  glm::dvec3 position{0.0};                       // world
+  glm::dvec3 position{0.0};                                         // world
   glm::dvec3 tangent{1, 0, 0}, binormal{0, 1, 0}, normal{0, 0, 1};  // world, interpolated
   glm::dvec2 uv{0.0};
   std::vector<glm::dvec4> textures;  // ReferenceModel::textures, in order
-  glm::dvec3 eye{0.0};              // camera position, world
+  glm::dvec3 eye{0.0};               // camera position, world
 };
 
 // Named parameter values applied before a scene is rendered (the defaults otherwise).
@@ -38,7 +38,7 @@ struct TechniqueRef {
 glm::dvec4 read_parameter(const ParameterStore& params, const std::string& name);
 
 struct ReferenceModel {
-  std::string effect;      // "hemisphere.fx"
+  std::string effect;       // "hemisphere.fx"
   std::string description;  // what the model is, for reports
   // HLSL expressions of `uv` and `object` (the object-space position) whose values the
   // reference reads: the effect's own samplers and helpers, so filtering and mip selection

@@ -13,8 +13,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "fx/compile/effect_file.h"
 #include "fx/binding/effect_preview.h"
+#include "fx/compile/effect_file.h"
 #include "reference_models.h"
 
 namespace fx::bench {
@@ -268,7 +268,8 @@ bool measure_effect(const vk::Context& ctx, const ReferenceModel& model, const s
         }
         const ImageF& pos = gb[ch_position];
         auto covered = [&](int x, int y) {
-          return x >= 0 && y >= 0 && x < int(pos.width) && y < int(pos.height) && pos.at(uint32_t(x), uint32_t(y))[3] > 0.5f;
+          return x >= 0 && y >= 0 && x < int(pos.width) && y < int(pos.height) &&
+                 pos.at(uint32_t(x), uint32_t(y))[3] > 0.5f;
         };
         std::optional<ImageF> previous;  // the row before's image (a precision row's float twin)
         for (size_t k = first; k < rows.size(); ++k) {
@@ -285,7 +286,10 @@ bool measure_effect(const vk::Context& ctx, const ReferenceModel& model, const s
                   !covered(int(x), int(y) - 1) || !covered(int(x), int(y) + 1))
                 continue;
               PixelInputs in;
-              auto v3 = [&](size_t c) { const float* p = gb[c].at(x, y); return glm::dvec3(p[0], p[1], p[2]); };
+              auto v3 = [&](size_t c) {
+                const float* p = gb[c].at(x, y);
+                return glm::dvec3(p[0], p[1], p[2]);
+              };
               in.position = v3(ch_position);
               in.tangent = v3(ch_tangent);
               in.binormal = v3(ch_binormal);
@@ -443,8 +447,8 @@ std::optional<std::vector<TechniqueAccuracy>> measure_techniques(const vk::Conte
   std::vector<std::filesystem::path> files;
   for (const auto& e : std::filesystem::directory_iterator(options.effects_dir))
     if (e.path().extension() == ".fx" &&
-        (options.only.empty() || std::find(options.only.begin(), options.only.end(), e.path().filename().string()) !=
-                                     options.only.end()))
+        (options.only.empty() ||
+         std::find(options.only.begin(), options.only.end(), e.path().filename().string()) != options.only.end()))
       files.push_back(e.path());
   std::sort(files.begin(), files.end());
   for (const std::string& name : options.only)

@@ -2,9 +2,9 @@
 #include "imgui_layer.h"
 #include "vk_struct.h"
 
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
 
 #include <algorithm>
 #include <vector>
@@ -43,7 +43,8 @@ std::unique_ptr<ImGuiLayer> ImGuiLayer::create(VulkanWindow& window) {
   rp.pDependencies = &dep;
   if (vkCreateRenderPass(device, &rp, nullptr, &ui->render_pass_) != VK_SUCCESS) return nullptr;
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16}};
-  VkDescriptorPoolCreateInfo pool = vk_struct<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
+  VkDescriptorPoolCreateInfo pool =
+      vk_struct<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
   pool.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
   pool.maxSets = 16;
   pool.poolSizeCount = 1;
@@ -72,7 +73,8 @@ std::unique_ptr<ImGuiLayer> ImGuiLayer::create(VulkanWindow& window) {
   VkCommandPoolCreateInfo pci = vk_struct<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
   pci.queueFamilyIndex = window.queue_family();
   vkCreateCommandPool(device, &pci, nullptr, &cmd_pool);
-  VkCommandBufferAllocateInfo alloc = vk_struct<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
+  VkCommandBufferAllocateInfo alloc =
+      vk_struct<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
   alloc.commandPool = cmd_pool;
   alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   alloc.commandBufferCount = 1;

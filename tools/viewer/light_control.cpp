@@ -29,8 +29,8 @@ void LightControl::apply(fxkit::Effect& effect) const {
   const float a = azimuth_ * 3.14159265f / 180.f, e = elevation_ * 3.14159265f / 180.f;
   const float to_light[3] = {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
   for (const fxkit::ParamInfo& p : effect.params()) {
-    if (p.kind != fxkit::ParamKind::numeric || p.scalar != fxkit::ScalarKind::float32 || p.rows != 1 ||
-        p.elements || (p.columns != 3 && p.columns != 4))
+    if (p.kind != fxkit::ParamKind::numeric || p.scalar != fxkit::ScalarKind::float32 || p.rows != 1 || p.elements ||
+        (p.columns != 3 && p.columns != 4))
       continue;
     const std::string sem = lower(p.semantic), name = lower(p.name);
     const bool travels = sem == "direction" || sem == "lightdirection";

@@ -78,7 +78,8 @@ void draw_ui(fxkit::Effect& effect, fxkit::Technique& technique, Panels& ui, con
   ImGui::Text("technique: %s", technique.valid() ? technique.name().c_str() : "(none can draw)");
   if (ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) ui.light.draw();
   if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) draw_params(effect, ui);
-  if (ImGui::CollapsingHeader("Techniques", ImGuiTreeNodeFlags_DefaultOpen)) ui.techniques.draw(effect, technique, camera_distance);
+  if (ImGui::CollapsingHeader("Techniques", ImGuiTreeNodeFlags_DefaultOpen))
+    ui.techniques.draw(effect, technique, camera_distance);
   ImGui::End();
   draw_overlay(ui.problems);
 }
@@ -116,14 +117,14 @@ int main(int argc, char** argv) {
     std::fputs(kViewerUsage, error.empty() ? stdout : stderr);
     return error.empty() ? 0 : 2;
   }
-  auto window = VulkanWindow::create({.title = "fxkit-view " + opt.file, .width = opt.width, .height = opt.height,
-                                      .validation = opt.validate}, error);
+  auto window = VulkanWindow::create(
+      {.title = "fxkit-view " + opt.file, .width = opt.width, .height = opt.height, .validation = opt.validate}, error);
   if (!window) return std::fprintf(stderr, "fxkit-view: %s\n", error.c_str()), 2;
 
   fxkit::DeviceOptions options;
   options.target.formats = {.color = {window->color_format()}, .depth = window->depth_format()};
   options.target.vertex_layout = fxkit::Mesh::vertex_layout();
-  options.target.default_attribute_binding = 1;  // inputs the mesh lacks read (0, 0, 0, 1), as in D3D
+  options.target.default_attribute_binding = 1;                    // inputs the mesh lacks read (0, 0, 0, 1), as in D3D
   options.target.front_faces = fxkit::Winding::counter_clockwise;  // as the built-in meshes
   options.target.y_flip = fxkit::YFlip::negative_viewport;
   std::vector<fxkit::Message> errors;
@@ -187,13 +188,15 @@ int main(int argc, char** argv) {
     effect.set_scene(scene);
     if (effect.serial() != stand_ins_serial) {  // once per loaded version
       stand_ins_serial = effect.serial();
-      for (const std::string& name : effect.set_preview_defaults()) std::printf("stand-in value for %s\n", name.c_str());
+      for (const std::string& name : effect.set_preview_defaults())
+        std::printf("stand-in value for %s\n", name.c_str());
     }
     ui.light.apply(effect);
     if (const auto ms = timer.begin(frame.cmd, frame.slot); !ms.empty()) ui.pass_ms = ms;
     const float clear[4] = {0.18f, 0.2f, 0.24f, 1.f};
     window->begin_scene(frame, clear);
-    const VkViewport viewport{0, float(frame.extent.height), float(frame.extent.width), -float(frame.extent.height), 0, 1};
+    const VkViewport viewport{0, float(frame.extent.height), float(frame.extent.width), -float(frame.extent.height), 0,
+                              1};
     if (technique.begin(frame.cmd, viewport, {{0, 0}, frame.extent})) {
       for (uint32_t pass = 0; pass < technique.pass_count(); ++pass) {
         timer.mark(frame.cmd);
@@ -209,7 +212,8 @@ int main(int argc, char** argv) {
     ui_layer->record(frame);
     if (!scripted.screenshot.empty() && scripted.with_ui) window->capture(frame, true);
     if (!window->end_frame(frame)) break;
-    if (!scripted.screenshot.empty() && !write_screenshot(*window, scripted.screenshot, technique)) script_failed = true;
+    if (!scripted.screenshot.empty() && !write_screenshot(*window, scripted.screenshot, technique))
+      script_failed = true;
     if (scripted.quit) break;
   }
   window->wait_idle();

@@ -25,11 +25,11 @@ void OrbitCamera::zoom(float steps) {
 
 fxkit::Scene OrbitCamera::scene(float aspect, float time) const {
   fxkit::Scene s;
-  const glm::vec3 eye = distance_ * glm::vec3(std::cos(pitch_) * std::sin(yaw_), std::sin(pitch_),
-                                              std::cos(pitch_) * std::cos(yaw_));
+  const glm::vec3 eye =
+      distance_ * glm::vec3(std::cos(pitch_) * std::sin(yaw_), std::sin(pitch_), std::cos(pitch_) * std::cos(yaw_));
   const glm::mat4 view = glm::lookAtRH(eye, glm::vec3(0.f), glm::vec3(0.f, 1.f, 0.f));
-  const glm::mat4 projection = glm::perspectiveRH_ZO(glm::radians(40.f), aspect, distance_ * 0.02f,
-                                                     distance_ + radius_ * 4.f);
+  const glm::mat4 projection =
+      glm::perspectiveRH_ZO(glm::radians(40.f), aspect, distance_ * 0.02f, distance_ + radius_ * 4.f);
   std::copy_n(glm::value_ptr(view), 16, s.view);
   std::copy_n(glm::value_ptr(projection), 16, s.projection);
   s.eye[0] = eye.x, s.eye[1] = eye.y, s.eye[2] = eye.z;

@@ -35,7 +35,8 @@ bool load_params(fxkit::Effect& effect, const std::string& path, std::string& er
     auto p = std::find_if(params.begin(), params.end(), [&](const fxkit::ParamInfo& i) { return i.name == name; });
     bool set = false;
     if (p != params.end() && value.is_array() && value.size() == p->components) {
-      if (p->scalar == fxkit::ScalarKind::float32) set = effect.set(p->handle, std::span<const float>(value.get<std::vector<float>>()));
+      if (p->scalar == fxkit::ScalarKind::float32)
+        set = effect.set(p->handle, std::span<const float>(value.get<std::vector<float>>()));
       else set = effect.set(p->handle, std::span<const int32_t>(value.get<std::vector<int32_t>>()));
     }
     if (!set) error += (error.empty() ? path + ": not applied: " : ", ") + name;

@@ -33,21 +33,22 @@ const fxkit::Annotation* number_of(const fxkit::ParamInfo& p, std::initializer_l
 
 // Annotations the widget itself reads; every other string annotation is help text.
 bool is_ui_annotation(const std::string& name) {
-  static const char* const kRead[] = {"UIName", "UIWidget", "UIMin", "UIMax", "UIStep", "SasUiControl", "SasUiLabel",
-                                      "SasUiVisible", "SasUiMin", "SasUiMax", "ui_type", "ui_min", "ui_max",
-                                      "ui_step", "ui_label", "ui_tooltip", "ui_category", "ui_items",
-                                      "ResourceName", "ResourceType", "Object", "Space"};
+  static const char* const kRead[] = {
+      "UIName",      "UIWidget", "UIMin",        "UIMax",        "UIStep", "SasUiControl", "SasUiLabel", "SasUiVisible",
+      "SasUiMin",    "SasUiMax", "ui_type",      "ui_min",       "ui_max", "ui_step",      "ui_label",   "ui_tooltip",
+      "ui_category", "ui_items", "ResourceName", "ResourceType", "Object", "Space"};
   return std::any_of(std::begin(kRead), std::end(kRead), [&](const char* n) { return name == n; });
 }
 
 // Names Effect::set_scene binds (docs/parameters.md): shown, not edited.
 bool is_scene_bound(const fxkit::ParamInfo& p) {
-  static const char* const kScene[] = {"world", "view", "projection", "worldview", "viewprojection",
-                                       "worldviewprojection", "cameraposition", "eyeposition", "viewposition",
-                                       "time"};
+  static const char* const kScene[] = {
+      "world",          "view",        "projection",   "worldview", "viewprojection", "worldviewprojection",
+      "cameraposition", "eyeposition", "viewposition", "time"};
   std::string sem = lower(p.semantic);
   for (const char* suffix : {"inversetranspose", "inverse", "transpose"})
-    if (sem.size() > std::string(suffix).size() && sem.ends_with(suffix)) sem.resize(sem.size() - std::string(suffix).size());
+    if (sem.size() > std::string(suffix).size() && sem.ends_with(suffix))
+      sem.resize(sem.size() - std::string(suffix).size());
   return std::any_of(std::begin(kScene), std::end(kScene), [&](const char* n) { return sem == n; });
 }
 
@@ -102,8 +103,8 @@ bool draw_param(fxkit::Effect& effect, const fxkit::ParamInfo& p, const ParamWid
       std::snprintf(it->second.data(), it->second.size(), "%s", shown.c_str());
     }
     ImGui::TextUnformatted(w.label.c_str());
-    const bool entered = ImGui::InputText("##file", it->second.data(), it->second.size(),
-                                          ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool entered =
+        ImGui::InputText("##file", it->second.data(), it->second.size(), ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     if (ImGui::Button("load") || entered) changed = effect.set_texture_file(p.name, it->second.data());
   } else if (w.kind == ParamWidget::Kind::readonly) {
@@ -120,7 +121,9 @@ bool draw_param(fxkit::Effect& effect, const fxkit::ParamInfo& p, const ParamWid
         changed = n == 3 ? ImGui::ColorEdit3(w.label.c_str(), v, ImGuiColorEditFlags_Float)
                          : ImGui::ColorEdit4(w.label.c_str(), v, ImGuiColorEditFlags_Float);
         break;
-      case ParamWidget::Kind::slider: changed = ImGui::SliderScalarN(w.label.c_str(), ImGuiDataType_Float, v, n, &w.min, &w.max); break;
+      case ParamWidget::Kind::slider:
+        changed = ImGui::SliderScalarN(w.label.c_str(), ImGuiDataType_Float, v, n, &w.min, &w.max);
+        break;
       case ParamWidget::Kind::spinner:
         changed = ImGui::InputScalarN(w.label.c_str(), ImGuiDataType_Float, v, n, w.step > 0 ? &w.step : nullptr);
         break;

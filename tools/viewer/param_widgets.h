@@ -11,8 +11,8 @@ struct ParamWidget {
   enum class Kind { hidden, slider, drag, spinner, color, checkbox, readonly, texture_file };
   Kind kind = Kind::drag;
   std::string label;
-  std::string help;      // tooltip: ui_tooltip, then string annotations ("UIHelp: ...")
-  std::string category;  // ui_category ("" : the effect's own group)
+  std::string help;                        // tooltip: ui_tooltip, then string annotations ("UIHelp: ...")
+  std::string category;                    // ui_category ("" : the effect's own group)
   float min = 0.f, max = 1.f, step = 0.f;  // step 0: continuous
   bool has_range = false;
 };

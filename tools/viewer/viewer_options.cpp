@@ -24,13 +24,19 @@ bool parse_viewer_options(int argc, char** argv, ViewerOptions& o, std::string& 
       return true;
     };
     std::string v;
-    if (a == "--mesh") { if (!value(o.mesh)) return false; }
-    else if (a == "--technique") { if (!value(o.technique)) return false; }
-    else if (a == "--save-params") { if (!value(o.save_params)) return false; }
-    else if (a == "--load-params") { if (!value(o.load_params)) return false; }
-    else if (a == "--screenshot") { if (!value(o.screenshot)) return false; }
-    else if (a == "--script") { if (!value(o.script)) return false; }
-    else if (a == "--frames") {
+    if (a == "--mesh") {
+      if (!value(o.mesh)) return false;
+    } else if (a == "--technique") {
+      if (!value(o.technique)) return false;
+    } else if (a == "--save-params") {
+      if (!value(o.save_params)) return false;
+    } else if (a == "--load-params") {
+      if (!value(o.load_params)) return false;
+    } else if (a == "--screenshot") {
+      if (!value(o.screenshot)) return false;
+    } else if (a == "--script") {
+      if (!value(o.script)) return false;
+    } else if (a == "--frames") {
       if (!value(v)) return false;
       o.frames = std::atoi(v.c_str());
       if (o.frames < 0) return error = "--frames wants N >= 0", false;

@@ -8,7 +8,7 @@ struct ViewerOptions {
   std::string technique;        // "" : selection
   std::string save_params, load_params, screenshot;
   std::string script;  // --script F (viewer_script.h)
-  int frames = 0;  // 0: until the window closes
+  int frames = 0;      // 0: until the window closes
   int width = 1280, height = 800;
   bool validate = false;
 };

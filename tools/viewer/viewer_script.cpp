@@ -72,7 +72,8 @@ std::optional<ViewerScript> ViewerScript::load(const std::string& path, std::str
     } else if (verb == "quit") {
       c.kind = ScriptCommand::Kind::quit;
     } else {
-      return bad("unknown command '" + verb + "' (frames, set, technique, texture, wait-reload, screenshot, screenshot-window, quit)");
+      return bad("unknown command '" + verb +
+                 "' (frames, set, technique, texture, wait-reload, screenshot, screenshot-window, quit)");
     }
     if (!extra.empty()) return bad("unexpected '" + extra + "' after " + verb);
     script.commands_.push_back(std::move(c));
@@ -91,8 +92,8 @@ ScriptFrame ViewerScript::before_frame(fxkit::Effect& effect, TechniquePanel& pa
   if (waiting_) {
     if (!reloaded && std::chrono::steady_clock::now() < deadline_) return frame;
     if (!reloaded) {
-      frame.error = fail(commands_[next_ - 1], "no reload within " +
-                                                   std::to_string(int(commands_[next_ - 1].number)) + " s");
+      frame.error =
+          fail(commands_[next_ - 1], "no reload within " + std::to_string(int(commands_[next_ - 1].number)) + " s");
       frame.quit = true;
       return frame;
     }
@@ -104,8 +105,8 @@ ScriptFrame ViewerScript::before_frame(fxkit::Effect& effect, TechniquePanel& pa
       case ScriptCommand::Kind::frames: frames_left_ = int(c.number); return frame;
       case ScriptCommand::Kind::wait_reload:
         waiting_ = true;
-        deadline_ = std::chrono::steady_clock::now() +
-                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(c.number));
+        deadline_ = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                           std::chrono::duration<double>(c.number));
         return frame;
       case ScriptCommand::Kind::screenshot:
       case ScriptCommand::Kind::screenshot_window:

@@ -12,8 +12,8 @@
 namespace {
 
 VKAPI_ATTR VkBool32 VKAPI_CALL on_validation(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                             VkDebugUtilsMessageTypeFlagsEXT, const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                             void* counter) {
+                                             VkDebugUtilsMessageTypeFlagsEXT,
+                                             const VkDebugUtilsMessengerCallbackDataEXT* data, void* counter) {
   if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) {
     ++*static_cast<uint32_t*>(counter);
     std::fprintf(stderr, "validation: %s\n", data->pMessage);
@@ -52,10 +52,14 @@ struct VulkanWindow::Impl {
   uint32_t family = 0;
   float timestamp_period = 0;
   // The device's creation, kept for VulkanHandles::created_with.
-  VkPhysicalDeviceFeatures2 features = vk_struct<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
-  VkPhysicalDeviceVulkan11Features features11 = vk_struct<VkPhysicalDeviceVulkan11Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
-  VkPhysicalDeviceVulkan12Features features12 = vk_struct<VkPhysicalDeviceVulkan12Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES);
-  VkPhysicalDeviceVulkan13Features features13 = vk_struct<VkPhysicalDeviceVulkan13Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
+  VkPhysicalDeviceFeatures2 features =
+      vk_struct<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
+  VkPhysicalDeviceVulkan11Features features11 =
+      vk_struct<VkPhysicalDeviceVulkan11Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
+  VkPhysicalDeviceVulkan12Features features12 =
+      vk_struct<VkPhysicalDeviceVulkan12Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES);
+  VkPhysicalDeviceVulkan13Features features13 =
+      vk_struct<VkPhysicalDeviceVulkan13Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
   std::vector<const char*> extensions;
   VkDeviceQueueCreateInfo queue_info = vk_struct<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
   float priority = 1.0f;
@@ -101,7 +105,8 @@ struct VulkanWindow::Impl {
   bool make_swapchain(std::string& error);
   void destroy_swapchain();
   void barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
-               VkPipelineStageFlags2 src_stage, VkAccessFlags2 src, VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst);
+               VkPipelineStageFlags2 src_stage, VkAccessFlags2 src, VkPipelineStageFlags2 dst_stage,
+               VkAccessFlags2 dst);
 };
 
 bool VulkanWindow::Impl::make_instance(std::string& error) {
@@ -111,7 +116,8 @@ bool VulkanWindow::Impl::make_instance(std::string& error) {
   std::vector<const char*> exts(glfw_exts, glfw_exts + count);
   std::vector<const char*> layers;
   const bool validate = options.validation && has_layer("VK_LAYER_KHRONOS_validation");
-  if (options.validation && !validate) std::fprintf(stderr, "fxkit-view: VK_LAYER_KHRONOS_validation is not installed\n");
+  if (options.validation && !validate)
+    std::fprintf(stderr, "fxkit-view: VK_LAYER_KHRONOS_validation is not installed\n");
   if (validate) {
     layers.push_back("VK_LAYER_KHRONOS_validation");
     exts.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
@@ -127,7 +133,8 @@ bool VulkanWindow::Impl::make_instance(std::string& error) {
   info.ppEnabledLayerNames = layers.data();
   if (vkCreateInstance(&info, nullptr, &instance) != VK_SUCCESS) return error = "vkCreateInstance failed", false;
   if (validate) {
-    VkDebugUtilsMessengerCreateInfoEXT m = vk_struct<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
+    VkDebugUtilsMessengerCreateInfoEXT m =
+        vk_struct<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
     m.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
     m.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
     m.pfnUserCallback = on_validation;
@@ -150,7 +157,8 @@ bool VulkanWindow::Impl::make_device(std::string& error) {
   std::stable_sort(gpus.begin(), gpus.end(), [](VkPhysicalDevice a, VkPhysicalDevice b) {
     VkPhysicalDeviceProperties pa, pb;
     vkGetPhysicalDeviceProperties(a, &pa), vkGetPhysicalDeviceProperties(b, &pb);
-    return pa.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU && pb.deviceType != VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU;
+    return pa.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU &&
+           pb.deviceType != VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU;
   });
   for (VkPhysicalDevice candidate : gpus) {
     VkPhysicalDeviceProperties props;
@@ -180,7 +188,8 @@ bool VulkanWindow::Impl::make_device(std::string& error) {
   if (!features13.dynamicRendering || !features13.synchronization2)
     return error = "the device lacks dynamic rendering or synchronization2", false;
   extensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
-  if (has_extension(gpu, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME)) extensions.push_back(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
+  if (has_extension(gpu, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
+    extensions.push_back(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
   queue_info.queueFamilyIndex = family;
   queue_info.queueCount = 1;
   queue_info.pQueuePriorities = &priority;
@@ -197,7 +206,8 @@ bool VulkanWindow::Impl::make_device(std::string& error) {
     pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pool.queueFamilyIndex = family;
     vkCreateCommandPool(device, &pool, nullptr, &s.pool);
-    VkCommandBufferAllocateInfo alloc = vk_struct<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
+    VkCommandBufferAllocateInfo alloc =
+        vk_struct<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
     alloc.commandPool = s.pool;
     alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     alloc.commandBufferCount = 1;
@@ -247,7 +257,8 @@ bool VulkanWindow::Impl::make_swapchain(std::string& error) {
   info.clipped = VK_TRUE;
   info.oldSwapchain = swapchain;
   VkSwapchainKHR made = VK_NULL_HANDLE;
-  if (vkCreateSwapchainKHR(device, &info, nullptr, &made) != VK_SUCCESS) return error = "vkCreateSwapchainKHR failed", false;
+  if (vkCreateSwapchainKHR(device, &info, nullptr, &made) != VK_SUCCESS)
+    return error = "vkCreateSwapchainKHR failed", false;
   destroy_swapchain();
   swapchain = made;
   uint32_t n = 0;
@@ -381,7 +392,8 @@ bool VulkanWindow::begin_frame(WindowFrame& frame) {
   vkWaitForFences(s.device, 1, &slot.done, VK_TRUE, UINT64_MAX);
   std::string error;
   if (!s.swapchain && !s.make_swapchain(error)) return false;
-  VkResult acquired = vkAcquireNextImageKHR(s.device, s.swapchain, UINT64_MAX, slot.acquired, VK_NULL_HANDLE, &frame.image);
+  VkResult acquired =
+      vkAcquireNextImageKHR(s.device, s.swapchain, UINT64_MAX, slot.acquired, VK_NULL_HANDLE, &frame.image);
   if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
     if (!s.make_swapchain(error)) return false;
     acquired = vkAcquireNextImageKHR(s.device, s.swapchain, UINT64_MAX, slot.acquired, VK_NULL_HANDLE, &frame.image);
@@ -441,8 +453,8 @@ void VulkanWindow::capture(const WindowFrame& frame, bool with_ui) {
     vkGetBufferMemoryRequirements(s.device, s.readback, &req);
     VkMemoryAllocateInfo alloc = vk_struct<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
     alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = s.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                                                  VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    alloc.memoryTypeIndex =
+        s.memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     vkAllocateMemory(s.device, &alloc, nullptr, &s.readback_memory);
     vkBindBufferMemory(s.device, s.readback, s.readback_memory, 0);
     s.readback_size = size;

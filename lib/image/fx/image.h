@@ -25,9 +25,7 @@ struct Image {
   size_t row_bytes() const { return size_t(width) * channels; }
   // Pointer to the first channel of pixel (x, y); no bounds check.
   uint8_t* at(uint32_t x, uint32_t y) { return pixels.data() + (size_t(y) * width + x) * channels; }
-  const uint8_t* at(uint32_t x, uint32_t y) const {
-    return pixels.data() + (size_t(y) * width + x) * channels;
-  }
+  const uint8_t* at(uint32_t x, uint32_t y) const { return pixels.data() + (size_t(y) * width + x) * channels; }
 };
 
 // Tightly packed float image (linear values, not clamped).
@@ -38,18 +36,14 @@ struct ImageF {
   static ImageF blank(uint32_t width, uint32_t height, uint32_t channels);
   bool empty() const { return width == 0 || height == 0; }
   float* at(uint32_t x, uint32_t y) { return pixels.data() + (size_t(y) * width + x) * channels; }
-  const float* at(uint32_t x, uint32_t y) const {
-    return pixels.data() + (size_t(y) * width + x) * channels;
-  }
+  const float* at(uint32_t x, uint32_t y) const { return pixels.data() + (size_t(y) * width + x) * channels; }
 };
 
 // Decodes PNG (or any format stb_image reads) from memory. `want_channels` 0 keeps the
 // file's channel count, 1..4 converts. Reports "image-decode-failed" on error.
-std::optional<Image> decode_image(std::span<const uint8_t> bytes, DiagnosticSink& sink,
-                                  uint32_t want_channels = 0);
+std::optional<Image> decode_image(std::span<const uint8_t> bytes, DiagnosticSink& sink, uint32_t want_channels = 0);
 // Reads an image file; "image-open-failed" / "image-decode-failed" on error.
-std::optional<Image> read_png(const std::filesystem::path& path, DiagnosticSink& sink,
-                              uint32_t want_channels = 0);
+std::optional<Image> read_png(const std::filesystem::path& path, DiagnosticSink& sink, uint32_t want_channels = 0);
 // Reads an image file as floats (.hdr keeps its range; 8-bit formats map to [0,1]).
 std::optional<ImageF> read_image_float(const std::filesystem::path& path, DiagnosticSink& sink,
                                        uint32_t want_channels = 0);

@@ -85,8 +85,7 @@ Mesh sphere(uint32_t rings = 32, uint32_t segments = 64);
 // Torus around the Y axis: tube centre circle of radius `major_radius` in the XZ plane,
 // tube radius `minor_radius`. u runs around the axis (`rings` steps), v around the tube
 // (`segments` steps) starting at the outer equator. rings, segments >= 3.
-Mesh torus(float major_radius = 1.0f, float minor_radius = 0.35f, uint32_t rings = 48,
-           uint32_t segments = 24);
+Mesh torus(float major_radius = 1.0f, float minor_radius = 0.35f, uint32_t rings = 48, uint32_t segments = 24);
 
 // Unit square [-0.5, 0.5]^2 in the XY plane facing +Z; uv (0,0) at the top-left corner.
 Mesh quad();

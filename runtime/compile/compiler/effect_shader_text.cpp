@@ -115,8 +115,8 @@ void ShaderTextWriter::token(const Token& t, std::string_view spelling) {
   if (p.valid() && column_ < p.column && !directive) {
     out_.append(p.column - column_, ' ');
     column_ = p.column;
-  } else if (column_ > 1 && (t.leading_space() || (is_word_char(last_) && !text.empty() &&
-                                                   is_word_char(text.front())))) {
+  } else if (column_ > 1 &&
+             (t.leading_space() || (is_word_char(last_) && !text.empty() && is_word_char(text.front())))) {
     out_.push_back(' ');
     ++column_;
   }

@@ -35,9 +35,9 @@ class ShaderTextWriter {
 
   const SourceManager& sm_;
   std::string out_;
-  std::string file_;      // presumed file of the current output line ("" = unknown)
-  uint32_t line_ = 0;     // presumed line of the current output line
-  uint32_t column_ = 1;   // 1-based column where the next character goes
+  std::string file_;     // presumed file of the current output line ("" = unknown)
+  uint32_t line_ = 0;    // presumed line of the current output line
+  uint32_t column_ = 1;  // 1-based column where the next character goes
   char last_ = '\n';
 };
 

@@ -48,9 +48,7 @@ uint32_t location_of(const glslang::TType& t) {
   return t.getQualifier().hasLocation() ? t.getQualifier().layoutLocation : 0;
 }
 
-uint32_t set_of(const glslang::TType& t) {
-  return t.getQualifier().hasSet() ? t.getQualifier().layoutSet : 0;
-}
+uint32_t set_of(const glslang::TType& t) { return t.getQualifier().hasSet() ? t.getQualifier().layoutSet : 0; }
 uint32_t binding_of(const glslang::TType& t) {
   return t.getQualifier().hasBinding() ? t.getQualifier().layoutBinding : 0;
 }
@@ -88,8 +86,7 @@ BlockMember make_member(const glslang::TObjectReflection& u, const UniformBlock&
   m.type = reflected_type(*t);
   glslang::TLayoutMatrix layout = t->getQualifier().layoutMatrix;
   if (layout == glslang::ElmNone && block_type) layout = block_type->getQualifier().layoutMatrix;
-  glslang::TLayoutPacking packing =
-      block_type ? block_type->getQualifier().layoutPacking : glslang::ElpStd140;
+  glslang::TLayoutPacking packing = block_type ? block_type->getQualifier().layoutPacking : glslang::ElpStd140;
   if (packing == glslang::ElpNone) packing = glslang::ElpStd140;
   int size = 0, stride = 0;
   glslang::TType element(*t, 0);
@@ -105,12 +102,10 @@ BlockMember make_member(const glslang::TObjectReflection& u, const UniformBlock&
   }
   // The same for an array inside a struct (glslang gives `float scale[2]` of a struct in a
   // cbuffer a stride of 4; SPIR-V says 16): in std140 every array element starts a register.
-  if (t->isArray() && packing == glslang::ElpStd140)
-    m.array_stride = (static_cast<uint32_t>(size) + 15u) & ~15u;
+  if (t->isArray() && packing == glslang::ElpStd140) m.array_stride = (static_cast<uint32_t>(size) + 15u) & ~15u;
   uint32_t count = m.type.array_size ? m.type.array_size : 1;
   // The last element of an array takes its own size, not a full stride (std140 and HLSL).
-  m.size = m.array_stride ? m.array_stride * (count - 1) + static_cast<uint32_t>(size)
-                          : static_cast<uint32_t>(size);
+  m.size = m.array_stride ? m.array_stride * (count - 1) + static_cast<uint32_t>(size) : static_cast<uint32_t>(size);
   (void)block;
   return m;
 }
@@ -156,8 +151,7 @@ ShaderReflection reflect_program(const glslang::TProgram& program, EShLanguage s
     const glslang::TType* t = u.getType();
     if (u.index >= 0 && u.index < p.getNumUniformBlocks()) {
       const glslang::TObjectReflection& b = p.getUniformBlock(u.index);
-      auto& list = (b.getType() && b.getType()->getQualifier().isPushConstant()) ? r.push_constants
-                                                                                  : r.uniform_blocks;
+      auto& list = (b.getType() && b.getType()->getQualifier().isPushConstant()) ? r.push_constants : r.uniform_blocks;
       for (UniformBlock& block : list)
         if (block.name == b.name) block.members.push_back(make_member(u, block, block_types[u.index]));
       continue;

@@ -13,8 +13,7 @@ namespace fx {
 // Glslang reflection options fxkit uses: all block members (parameters that a pass does not
 // read still have a place in the buffer) and storage buffers kept apart from uniform blocks.
 constexpr int kReflectionOptions = EShReflectionSeparateBuffers | EShReflectionAllBlockVariables |
-                                   EShReflectionIntermediateIO |
-                                   EShReflectionAllIOVariables;
+                                   EShReflectionIntermediateIO | EShReflectionAllIOVariables;
 
 // Reads `program` (linked, buildReflection(kReflectionOptions) done) for `stage`. `spirv`
 // supplies HLSL input semantics; call it before stripping them.

@@ -25,7 +25,12 @@ struct StageResource {
 std::string member_layout(const UniformBlock& b) {
   std::string out = std::to_string(b.size) + "|";
   for (const BlockMember& m : b.members)
-    out.append(m.name).append("@").append(std::to_string(m.offset)).append(":").append(std::to_string(m.size)).append(";");
+    out.append(m.name)
+        .append("@")
+        .append(std::to_string(m.offset))
+        .append(":")
+        .append(std::to_string(m.size))
+        .append(";");
   return out;
 }
 
@@ -160,7 +165,8 @@ void link_varyings(CompiledShader& producer, CompiledShader& consumer, Diagnosti
     if (it == location_of.end() && !v.unread)
       sink.warning("shader-varying-unwritten", {},
                    std::string(to_string(consumer.reflection.stage)) + " input '" + v.name + "' (" + v.semantic +
-                       ") is not written by the " + to_string(producer.reflection.stage) + " stage; its value is undefined");
+                       ") is not written by the " + to_string(producer.reflection.stage) +
+                       " stage; its value is undefined");
     in_remap[v.location] = location;
     v.location = location;
   }

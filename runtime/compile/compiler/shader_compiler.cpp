@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <map>
 #include <cstdlib>
+#include <map>
 #include <memory>
 #include <mutex>
 
@@ -14,9 +14,9 @@
 #include <glslang/SPIRV/SpvTools.h>
 #include <spirv-tools/libspirv.h>
 
+#include "effect_shader_text.h"
 #include "fx/compile/compile_workers.h"
 #include "fx/compile/spirv_cache.h"
-#include "effect_shader_text.h"
 #include "glslang_reflect.h"
 #include "spirv_legalize.h"
 #include "spirv_words.h"
@@ -26,9 +26,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double ms_since(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 std::atomic<bool> glslang_process_started{false};
 
@@ -84,7 +82,9 @@ void apply_d3d_semantics(CompiledShader& out, const ShaderProfile& profile, Shad
   std::map<uint32_t, uint32_t> remap;
   for (InterfaceVariable& v : r.outputs) {
     std::string_view s = v.semantic;
-    std::string_view digits = s.substr(0, 5) == "COLOR" ? s.substr(5) : s.substr(0, 9) == "SV_TARGET" ? s.substr(9) : "-";
+    std::string_view digits = s.substr(0, 5) == "COLOR"       ? s.substr(5)
+                              : s.substr(0, 9) == "SV_TARGET" ? s.substr(9)
+                                                              : "-";
     if (digits == "-") continue;
     uint32_t index = digits.empty() ? 0 : static_cast<uint32_t>(digits[0] - '0');
     if (digits.size() > 1 || (!digits.empty() && (digits[0] < '0' || digits[0] > '7'))) continue;
@@ -106,7 +106,9 @@ bool uses_d3d9_sampler_intrinsics(std::string_view hlsl) {
   for (size_t at = hlsl.find("tex"); at != std::string_view::npos; at = hlsl.find("tex", at + 3)) {
     if (at > 0 && detail::is_word_char(hlsl[at - 1])) continue;
     std::string_view rest = hlsl.substr(at + 3);
-    size_t dim = rest.rfind("CUBE", 0) == 0 ? 4 : rest.size() >= 2 && rest[0] >= '1' && rest[0] <= '3' && rest[1] == 'D' ? 2 : 0;
+    size_t dim = rest.rfind("CUBE", 0) == 0                                               ? 4
+                 : rest.size() >= 2 && rest[0] >= '1' && rest[0] <= '3' && rest[1] == 'D' ? 2
+                                                                                          : 0;
     if (dim == 0) continue;
     size_t end = dim;
     while (end < rest.size() && detail::is_word_char(rest[end])) ++end;  // lod, bias, proj, grad
@@ -195,8 +197,8 @@ bool ShaderCompiler::glslang_started() { return glslang_process_started.load(); 
 
 std::string ShaderCompiler::glslang_version() {
   glslang::Version v = glslang::GetVersion();
-  return "glslang " + std::to_string(v.major) + "." + std::to_string(v.minor) + "." +
-         std::to_string(v.patch) + v.flavor;
+  return "glslang " + std::to_string(v.major) + "." + std::to_string(v.minor) + "." + std::to_string(v.patch) +
+         v.flavor;
 }
 
 CompiledShader ShaderCompiler::compile(const TranslationUnit& unit) const {
@@ -204,11 +206,11 @@ CompiledShader ShaderCompiler::compile(const TranslationUnit& unit) const {
   std::optional<ShaderProfile> profile = parse_profile(unit.profile);
   if (!profile) return rejected("unknown shader profile '" + unit.profile + "'");
   if (profile->language != unit.language)
-    return rejected("profile '" + unit.profile + "' is for " + to_string(profile->language) +
-                    " but the shader is " + to_string(unit.language));
+    return rejected("profile '" + unit.profile + "' is for " + to_string(profile->language) + " but the shader is " +
+                    to_string(unit.language));
   if (profile->stage && *profile->stage != unit.stage)
-    return rejected("profile '" + unit.profile + "' is a " + to_string(*profile->stage) +
-                    " profile, used for a " + to_string(unit.stage) + " shader");
+    return rejected("profile '" + unit.profile + "' is a " + to_string(*profile->stage) + " profile, used for a " +
+                    to_string(unit.stage) + " shader");
   if (unit.language == ShaderLanguage::glsl && unit.entry_point != "main")
     return rejected("GLSL shaders are entered through main(), not '" + unit.entry_point + "'");
 
@@ -245,11 +247,10 @@ CompiledShader ShaderCompiler::run_glslang(const TranslationUnit& unit, const Sh
   const bool hlsl = unit.language == ShaderLanguage::hlsl;
   const EShLanguage stage = glslang_stage(unit.stage);
   const bool vulkan_1_0 = options_.target == VulkanTarget::vulkan_1_0;
-  glslang::EShTargetClientVersion client =
-      options_.target == VulkanTarget::vulkan_1_0   ? glslang::EShTargetVulkan_1_0
-      : options_.target == VulkanTarget::vulkan_1_1 ? glslang::EShTargetVulkan_1_1
-      : options_.target == VulkanTarget::vulkan_1_2 ? glslang::EShTargetVulkan_1_2
-                                                    : glslang::EShTargetVulkan_1_3;
+  glslang::EShTargetClientVersion client = options_.target == VulkanTarget::vulkan_1_0   ? glslang::EShTargetVulkan_1_0
+                                           : options_.target == VulkanTarget::vulkan_1_1 ? glslang::EShTargetVulkan_1_1
+                                           : options_.target == VulkanTarget::vulkan_1_2 ? glslang::EShTargetVulkan_1_2
+                                                                                         : glslang::EShTargetVulkan_1_3;
 
   auto shader = std::make_unique<glslang::TShader>(stage);
   const char* text = unit.source.c_str();
@@ -261,8 +262,7 @@ CompiledShader ShaderCompiler::run_glslang(const TranslationUnit& unit, const Sh
   // The SPIR-V entry keeps the source name (VS, PS, Wood...): pipelines pass it as pName,
   // and disassembly and RenderDoc show the author's names.
   shader->setEntryPoint(unit.entry_point.c_str());
-  shader->setEnvInput(hlsl ? glslang::EShSourceHlsl : glslang::EShSourceGlsl, stage,
-                      glslang::EShClientVulkan, 100);
+  shader->setEnvInput(hlsl ? glslang::EShSourceHlsl : glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
   shader->setEnvClient(glslang::EShClientVulkan, client);
   shader->setEnvTarget(glslang::EShTargetSpv, vulkan_1_0 ? glslang::EShTargetSpv_1_0 : glslang::EShTargetSpv_1_3);
   shader->setAutoMapBindings(true);
@@ -271,9 +271,12 @@ CompiledShader ShaderCompiler::run_glslang(const TranslationUnit& unit, const Sh
     // D3D registers are counted per class (t0, s0, b0 and u0 are four slots), a Vulkan set
     // has one binding space: each class starts at its own base so `register(t0)` and
     // `register(s0)` never share a binding. link_program renumbers them densely afterwards.
-    for (auto [resource, base] : {std::pair{glslang::EResTexture, 0u}, {glslang::EResSampler, 128u},
-                                  {glslang::EResUbo, 256u}, {glslang::EResImage, 384u},
-                                  {glslang::EResUav, 384u}, {glslang::EResSsbo, 512u}})
+    for (auto [resource, base] : {std::pair{glslang::EResTexture, 0u},
+                                  {glslang::EResSampler, 128u},
+                                  {glslang::EResUbo, 256u},
+                                  {glslang::EResImage, 384u},
+                                  {glslang::EResUav, 384u},
+                                  {glslang::EResSsbo, 512u}})
       shader->setShiftBinding(resource, base);
     shader->setHlslIoMapping(true);
     // Semantics (POSITION, TEXCOORD0) reach reflection through UserSemantic decorations.
@@ -318,8 +321,8 @@ CompiledShader ShaderCompiler::run_glslang(const TranslationUnit& unit, const Sh
     // compile. Most shaders are valid without it: they skip it when neither glslang, nor a
     // scan for opaque values in memory, nor the validator finds a reason for it.
     bool validated = false;
-    if (hlsl && options_.validate && !intermediate.needsLegalization() &&
-        !spirv::opaque_values_in_memory(out.spirv) && !spirv::variable_image_offsets(out.spirv))
+    if (hlsl && options_.validate && !intermediate.needsLegalization() && !spirv::opaque_values_in_memory(out.spirv) &&
+        !spirv::variable_image_offsets(out.spirv))
       validated = spirv_valid(out.spirv, env, intermediate, nullptr);
     out.legalized = !validated;
     if (hlsl && !validated) {

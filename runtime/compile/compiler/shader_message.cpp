@@ -12,9 +12,8 @@ struct Prefix {
 };
 // glslang's TInfoSink prefixes (see glslang/Include/InfoSink.h).
 constexpr Prefix kPrefixes[] = {
-    {"ERROR: ", Severity::error},          {"WARNING: ", Severity::warning},
-    {"INTERNAL ERROR: ", Severity::fatal}, {"UNIMPLEMENTED: ", Severity::error},
-    {"NOTE: ", Severity::note},
+    {"ERROR: ", Severity::error},         {"WARNING: ", Severity::warning}, {"INTERNAL ERROR: ", Severity::fatal},
+    {"UNIMPLEMENTED: ", Severity::error}, {"NOTE: ", Severity::note},
 };
 
 bool all_digits(std::string_view s) {
@@ -109,7 +108,10 @@ std::vector<ShaderMessage> parse_info_log(std::string_view log) {
     if (line.empty()) continue;
     const Prefix* prefix = nullptr;
     for (const Prefix& p : kPrefixes)
-      if (line.substr(0, p.text.size()) == p.text) { prefix = &p; break; }
+      if (line.substr(0, p.text.size()) == p.text) {
+        prefix = &p;
+        break;
+      }
     if (!prefix) {
       if (merge_column_line(line, out)) continue;
       // Other continuation lines belong to the previous message.
@@ -154,7 +156,8 @@ ShaderLocationResolver resolver_for(const SourceManager& sm) {
       std::optional<uint32_t> offset = line_offset(text, line);
       if (!offset) continue;
       size_t line_end = text.find('\n', *offset);
-      uint32_t line_length = static_cast<uint32_t>((line_end == std::string_view::npos ? text.size() : line_end) - *offset);
+      uint32_t line_length =
+          static_cast<uint32_t>((line_end == std::string_view::npos ? text.size() : line_end) - *offset);
       uint32_t col = column ? std::min(column - 1, line_length) : 0;
       return sm.location(id, *offset + col);
     }
@@ -173,11 +176,11 @@ void report_messages(const std::vector<ShaderMessage>& messages, const ShaderLoc
       text = where + ": " + text;
     }
     bool link = m.file.empty() && m.text.find("Linking") != std::string::npos;
-    const char* id = !m.id.empty()                   ? m.id.c_str()
+    const char* id = !m.id.empty()                     ? m.id.c_str()
                      : m.severity == Severity::warning ? "shader-compile-warning"
-                     : m.severity == Severity::note  ? "shader-compile-note"
-                     : link                          ? "shader-link-error"
-                                                     : "shader-compile-error";
+                     : m.severity == Severity::note    ? "shader-compile-note"
+                     : link                            ? "shader-link-error"
+                                                       : "shader-compile-error";
     sink.report(m.severity, id, SourceRange{loc, {}}, std::move(text));
   }
 }

@@ -8,8 +8,12 @@ namespace {
 using nlohmann::json;
 
 json type_json(const ReflectedType& t) {
-  return {{"scalar", static_cast<int>(t.scalar)}, {"rows", t.rows}, {"columns", t.columns},
-          {"struct", t.is_struct}, {"array", t.array_size}, {"glsl", t.glsl_name}};
+  return {{"scalar", static_cast<int>(t.scalar)},
+          {"rows", t.rows},
+          {"columns", t.columns},
+          {"struct", t.is_struct},
+          {"array", t.array_size},
+          {"glsl", t.glsl_name}};
 }
 ReflectedType type_from(const json& j) {
   ReflectedType t;
@@ -25,9 +29,13 @@ ReflectedType type_from(const json& j) {
 json block_json(const UniformBlock& b) {
   json members = json::array();
   for (const BlockMember& m : b.members)
-    members.push_back({{"name", m.name}, {"type", type_json(m.type)}, {"offset", m.offset},
-                       {"size", m.size}, {"array_stride", m.array_stride},
-                       {"matrix_stride", m.matrix_stride}, {"matrix_layout", static_cast<int>(m.matrix_layout)}});
+    members.push_back({{"name", m.name},
+                       {"type", type_json(m.type)},
+                       {"offset", m.offset},
+                       {"size", m.size},
+                       {"array_stride", m.array_stride},
+                       {"matrix_stride", m.matrix_stride},
+                       {"matrix_layout", static_cast<int>(m.matrix_layout)}});
   return {{"name", b.name}, {"set", b.set}, {"binding", b.binding}, {"size", b.size}, {"members", members}};
 }
 UniformBlock block_from(const json& j) {
@@ -37,9 +45,9 @@ UniformBlock block_from(const json& j) {
   b.binding = j.at("binding").get<uint32_t>();
   b.size = j.at("size").get<uint32_t>();
   for (const json& m : j.at("members"))
-    b.members.push_back({m.at("name").get<std::string>(), type_from(m.at("type")),
-                         m.at("offset").get<uint32_t>(), m.at("size").get<uint32_t>(),
-                         m.at("array_stride").get<uint32_t>(), m.at("matrix_stride").get<uint32_t>(),
+    b.members.push_back({m.at("name").get<std::string>(), type_from(m.at("type")), m.at("offset").get<uint32_t>(),
+                         m.at("size").get<uint32_t>(), m.at("array_stride").get<uint32_t>(),
+                         m.at("matrix_stride").get<uint32_t>(),
                          static_cast<MatrixLayout>(m.at("matrix_layout").get<int>())});
   return b;
 }
@@ -61,20 +69,32 @@ std::string write_shader_metadata(const CompiledShader& s) {
   const ShaderReflection& r = s.reflection;
   json images = json::array();
   for (const ImageBinding& i : r.images)
-    images.push_back({{"name", i.name}, {"kind", static_cast<int>(i.kind)}, {"dim", static_cast<int>(i.dim)},
-                      {"arrayed", i.arrayed}, {"shadow", i.shadow}, {"set", i.set},
-                      {"binding", i.binding}, {"array", i.array_size}, {"multisampled", i.multisampled}});
+    images.push_back({{"name", i.name},
+                      {"kind", static_cast<int>(i.kind)},
+                      {"dim", static_cast<int>(i.dim)},
+                      {"arrayed", i.arrayed},
+                      {"shadow", i.shadow},
+                      {"set", i.set},
+                      {"binding", i.binding},
+                      {"array", i.array_size},
+                      {"multisampled", i.multisampled}});
   auto interface = [](const std::vector<InterfaceVariable>& vars) {
     json a = json::array();
     for (const InterfaceVariable& v : vars)
-      a.push_back({{"name", v.name}, {"location", v.location}, {"type", type_json(v.type)},
-                   {"semantic", v.semantic}, {"unread", v.unread}});
+      a.push_back({{"name", v.name},
+                   {"location", v.location},
+                   {"type", type_json(v.type)},
+                   {"semantic", v.semantic},
+                   {"unread", v.unread}});
     return a;
   };
   json messages = json::array();
   for (const ShaderMessage& m : s.messages) {
-    messages.push_back({{"severity", static_cast<int>(m.severity)}, {"file", m.file},
-                        {"line", m.line}, {"column", m.column}, {"text", m.text}});
+    messages.push_back({{"severity", static_cast<int>(m.severity)},
+                        {"file", m.file},
+                        {"line", m.line},
+                        {"column", m.column},
+                        {"text", m.text}});
     if (!m.id.empty()) messages.back()["id"] = m.id;
   }
   json j = {{"entry_point", s.entry_point},
@@ -113,13 +133,12 @@ bool read_shader_metadata(std::string_view text, CompiledShader& s) {
     for (const json& i : j.at("images"))
       r.images.push_back({i.at("name").get<std::string>(), static_cast<ImageBinding::Kind>(i.at("kind").get<int>()),
                           static_cast<ImageDim>(i.at("dim").get<int>()), i.at("arrayed").get<bool>(),
-                          i.at("shadow").get<bool>(), i.at("set").get<uint32_t>(),
-                          i.at("binding").get<uint32_t>(), i.at("array").get<uint32_t>(),
-                          i.at("multisampled").get<bool>()});
+                          i.at("shadow").get<bool>(), i.at("set").get<uint32_t>(), i.at("binding").get<uint32_t>(),
+                          i.at("array").get<uint32_t>(), i.at("multisampled").get<bool>()});
     for (auto [key, list] : {std::pair{"inputs", &r.inputs}, std::pair{"outputs", &r.outputs}})
       for (const json& v : j.at(key))
-        list->push_back({v.at("name").get<std::string>(), v.at("location").get<uint32_t>(),
-                         type_from(v.at("type")), v.at("semantic").get<std::string>(), v.value("unread", false)});
+        list->push_back({v.at("name").get<std::string>(), v.at("location").get<uint32_t>(), type_from(v.at("type")),
+                         v.at("semantic").get<std::string>(), v.value("unread", false)});
     for (int d = 0; d < 3; ++d) r.local_size[d] = j.at("local_size").at(static_cast<size_t>(d)).get<uint32_t>();
   } catch (const nlohmann::json::exception&) {
     return false;

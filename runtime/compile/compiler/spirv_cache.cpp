@@ -68,8 +68,8 @@ SpirvCacheKey spirv_cache_key(const TranslationUnit& unit, const CompileOptions&
     hash_field(state, d.name);
     hash_field(state, d.value);
   }
-  const uint8_t opts[] = {static_cast<uint8_t>(options.target), options.debug_info,
-                          options.keep_hlsl_semantics, options.warnings_as_errors, options.validate};
+  const uint8_t opts[] = {static_cast<uint8_t>(options.target), options.debug_info, options.keep_hlsl_semantics,
+                          options.warnings_as_errors, options.validate};
   hash_field(state, std::string_view(reinterpret_cast<const char*>(opts), sizeof opts));
   XXH128_hash_t h = XXH3_128bits_digest(state);
   XXH3_freeState(state);
@@ -166,9 +166,8 @@ std::optional<CompiledShader> SpirvCache::load_file(const SpirvCacheKey& key) {
   uint64_t file_size = std::filesystem::file_size(path, ec);
   FileHeader h{};
   if (ec || file_size < sizeof h || !in.read(reinterpret_cast<char*>(&h), sizeof h)) return reject();
-  if (std::memcmp(h.magic, kMagic, sizeof kMagic) != 0 || h.format_version != kFormatVersion ||
-      h.key_low != key.low || h.key_high != key.high || h.spirv_bytes % 4 != 0 ||
-      h.spirv_bytes > file_size || h.meta_bytes > file_size ||
+  if (std::memcmp(h.magic, kMagic, sizeof kMagic) != 0 || h.format_version != kFormatVersion || h.key_low != key.low ||
+      h.key_high != key.high || h.spirv_bytes % 4 != 0 || h.spirv_bytes > file_size || h.meta_bytes > file_size ||
       sizeof h + h.spirv_bytes + h.meta_bytes != file_size)
     return reject();
   std::string payload(h.spirv_bytes + h.meta_bytes, '\0');
@@ -198,9 +197,8 @@ void SpirvCache::write_file(const SpirvCacheKey& key, const CompiledShader& shad
   // A per-process, per-thread temp name: concurrent writers of one key each rename a
   // complete file, and the last rename wins with identical contents.
   std::filesystem::path final_path = directory_ / (key.hex() + ".spvc");
-  std::filesystem::path temp =
-      directory_ / (key.hex() + ".tmp" + std::to_string(getpid()) + "-" +
-                    std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id())));
+  std::filesystem::path temp = directory_ / (key.hex() + ".tmp" + std::to_string(getpid()) + "-" +
+                                             std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id())));
   bool written = false;
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);

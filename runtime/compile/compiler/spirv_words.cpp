@@ -167,8 +167,15 @@ size_t variable_image_offsets(const std::vector<uint32_t>& w) {
   // coordinate (and the depth reference where there is one). Gathers may keep Offset.
   auto mask_word = [](uint32_t op) -> uint32_t {
     switch (op) {
-      case 87: case 88: case 91: case 92: case 95: return 5;  // Sample(Proj)(Implicit|Explicit)Lod, Fetch
-      case 89: case 90: case 93: case 94: return 6;            // Sample(Proj)Dref...
+      case 87:
+      case 88:
+      case 91:
+      case 92:
+      case 95: return 5;  // Sample(Proj)(Implicit|Explicit)Lod, Fetch
+      case 89:
+      case 90:
+      case 93:
+      case 94: return 6;  // Sample(Proj)Dref...
       default: return 0;
     }
   };
@@ -231,10 +238,12 @@ bool opaque_values_in_memory(const std::vector<uint32_t>& w) {
     if (found || count < 2) return;
     const uint32_t result = w[i + 1];
     switch (op) {
-      case kOpTypeImage: case kOpTypeSampler: case kOpTypeSampledImage: case kOpTypeAccelerationStructure:
-        opaque.insert(result);
-        break;
-      case kOpTypeArray: case kOpTypeRuntimeArray:
+      case kOpTypeImage:
+      case kOpTypeSampler:
+      case kOpTypeSampledImage:
+      case kOpTypeAccelerationStructure: opaque.insert(result); break;
+      case kOpTypeArray:
+      case kOpTypeRuntimeArray:
         if (count >= 3 && opaque.count(w[i + 2])) opaque.insert(result);
         break;
       case kOpTypeStruct:
@@ -244,9 +253,7 @@ bool opaque_values_in_memory(const std::vector<uint32_t>& w) {
       case kOpTypePointer:
         if (count >= 4 && w[i + 2] != kStorageUniformConstant && opaque.count(w[i + 3])) opaque_pointer.insert(result);
         break;
-      case kOpVariable:
-        found = count >= 4 && opaque_pointer.count(w[i + 1]);
-        break;
+      case kOpVariable: found = count >= 4 && opaque_pointer.count(w[i + 1]); break;
       case kOpFunctionParameter:
         found = count >= 3 && (opaque_pointer.count(w[i + 1]) || opaque.count(w[i + 1]));
         break;
@@ -269,9 +276,10 @@ std::set<uint32_t> read_input_locations(const std::vector<uint32_t>& w) {
     // the set and instruction number); OpCopyMemory has no result.
     uint32_t first = 0;
     switch (op) {
-      case kOpLoad: case kOpAccessChain: case kOpInBoundsAccessChain: case kOpCopyObject:
-        first = 3, count = std::min(count, 4u);
-        break;
+      case kOpLoad:
+      case kOpAccessChain:
+      case kOpInBoundsAccessChain:
+      case kOpCopyObject: first = 3, count = std::min(count, 4u); break;
       case kOpCopyMemory: first = 2, count = std::min(count, 3u); break;
       case kOpFunctionCall: first = 4; break;
       case kOpExtInst: first = 5; break;
@@ -290,8 +298,7 @@ std::map<uint32_t, SetBinding> variable_bindings(const std::vector<uint32_t>& w)
     if (w[i + 2] == kDecorationDescriptorSet) out[w[i + 1]].first = w[i + 3];
     if (w[i + 2] == kDecorationBinding) out[w[i + 1]].second = w[i + 3], has_binding[w[i + 1]] = true;
   });
-  for (auto it = out.begin(); it != out.end();)
-    it = has_binding.count(it->first) ? std::next(it) : out.erase(it);
+  for (auto it = out.begin(); it != out.end();) it = has_binding.count(it->first) ? std::next(it) : out.erase(it);
   return out;
 }
 
@@ -312,10 +319,9 @@ size_t remap_bindings(std::vector<uint32_t>& w, const std::map<SetBinding, SetBi
 }
 
 bool pad_output(std::vector<uint32_t>& w, uint32_t location, uint32_t first, uint32_t count, Scalar scalar) {
-  constexpr uint32_t kOpEntryPoint = 15, kOpTypeInt = 21, kOpTypeFloat = 22, kOpTypeVector = 23,
-                     kOpTypePointer = 32, kOpConstant = 43, kOpConstantComposite = 44, kOpFunction = 54,
-                     kOpStore = 62, kOpEmitVertex = 218, kOpEmitStreamVertex = 220, kOpLabel = 248,
-                     kOpLine = 8, kOpNoLine = 317, kDecorationComponent = 31;
+  constexpr uint32_t kOpEntryPoint = 15, kOpTypeInt = 21, kOpTypeFloat = 22, kOpTypeVector = 23, kOpTypePointer = 32,
+                     kOpConstant = 43, kOpConstantComposite = 44, kOpFunction = 54, kOpStore = 62, kOpEmitVertex = 218,
+                     kOpEmitStreamVertex = 220, kOpLabel = 248, kOpLine = 8, kOpNoLine = 317, kDecorationComponent = 31;
   constexpr uint32_t kVertex = 0, kTessellationEvaluation = 2, kGeometry = 3;
   if (count == 0 || first + count > 4) return false;
   size_t entry_at = 0, first_type_at = 0, first_function_at = 0;
@@ -397,7 +403,8 @@ bool pad_output(std::vector<uint32_t>& w, uint32_t location, uint32_t first, uin
   if (store_at.empty()) return false;
 
   // Insert from the back so the earlier offsets stay valid.
-  for (auto at = store_at.rbegin(); at != store_at.rend(); ++at) w.insert(w.begin() + long(*at), store.begin(), store.end());
+  for (auto at = store_at.rbegin(); at != store_at.rend(); ++at)
+    w.insert(w.begin() + long(*at), store.begin(), store.end());
   w.insert(w.begin() + long(first_function_at), globals.begin(), globals.end());
   w.insert(w.begin() + long(first_type_at), decorations.begin(), decorations.end());
   const uint32_t entry_words = w[entry_at] >> 16;

@@ -16,9 +16,7 @@ const char* to_string(ShaderStage stage) {
   return "unknown";
 }
 
-const char* to_string(ShaderLanguage language) {
-  return language == ShaderLanguage::hlsl ? "hlsl" : "glsl";
-}
+const char* to_string(ShaderLanguage language) { return language == ShaderLanguage::hlsl ? "hlsl" : "glsl"; }
 
 std::optional<ShaderProfile> parse_profile(std::string_view p) {
   ShaderProfile out;
@@ -56,8 +54,8 @@ std::optional<ShaderProfile> parse_profile(std::string_view p) {
   if (!rest.empty() && rest.substr(0, 6) != "_level") return std::nullopt;
   if (out.major < 1 || out.major > 6) return std::nullopt;
   // Stages that did not exist in early shader models.
-  if ((s == "gs" && out.major < 4) || ((s == "hs" || s == "ds" || s == "cs") && out.major < 5 &&
-                                       !(s == "cs" && out.major == 4)))
+  if ((s == "gs" && out.major < 4) ||
+      ((s == "hs" || s == "ds" || s == "cs") && out.major < 5 && !(s == "cs" && out.major == 4)))
     return std::nullopt;
   return out;
 }

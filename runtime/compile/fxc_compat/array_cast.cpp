@@ -7,8 +7,8 @@ namespace fx::detail {
 namespace {
 
 // Element types fxc splits a vector into (a vector of that type and N components exists).
-constexpr std::string_view kScalars[] = {"float", "half", "int", "uint", "bool", "double",
-                                         "min16float", "min16int", "min16uint"};
+constexpr std::string_view kScalars[] = {"float",  "half",       "int",      "uint",     "bool",
+                                         "double", "min16float", "min16int", "min16uint"};
 
 }  // namespace
 
@@ -17,9 +17,10 @@ std::vector<ArrayCast> find_array_casts(const std::vector<Token>& toks, ast::Tok
   const uint32_t last = std::min<uint32_t>(body.last, static_cast<uint32_t>(toks.size()));
   for (uint32_t i = body.first + 1; i + 6 < last; ++i) {
     // `= ( T [ N ] ) operand`
-    if (!toks[i - 1].is(TokenKind::equal) || !toks[i].is(TokenKind::l_paren) || !toks[i + 1].is(TokenKind::identifier) ||
-        !toks[i + 2].is(TokenKind::l_square) || !toks[i + 3].is(TokenKind::integer) ||
-        !toks[i + 4].is(TokenKind::r_square) || !toks[i + 5].is(TokenKind::r_paren))
+    if (!toks[i - 1].is(TokenKind::equal) || !toks[i].is(TokenKind::l_paren) ||
+        !toks[i + 1].is(TokenKind::identifier) || !toks[i + 2].is(TokenKind::l_square) ||
+        !toks[i + 3].is(TokenKind::integer) || !toks[i + 4].is(TokenKind::r_square) ||
+        !toks[i + 5].is(TokenKind::r_paren))
       continue;
     const std::string_view type = toks[i + 1].text(), count = toks[i + 3].text();
     const bool scalar = std::find(std::begin(kScalars), std::end(kScalars), type) != std::end(kScalars);

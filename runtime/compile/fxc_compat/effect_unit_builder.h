@@ -49,8 +49,7 @@ std::string normalize_profile(std::string_view profile);
 // Builds EffectUnits from the AST: the shared HLSL text, the GLSL blocks and the passes.
 class EffectUnitBuilder {
  public:
-  EffectUnitBuilder(EffectUnits& units, const ast::Effect& effect, const SourceManager& sm,
-                    DiagnosticSink& sink)
+  EffectUnitBuilder(EffectUnits& units, const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& sink)
       : u_(units), effect_(effect), toks_(effect.tokens), sm_(sm), sink_(sink) {}
 
   void build();

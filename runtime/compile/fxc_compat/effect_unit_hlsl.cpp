@@ -146,9 +146,8 @@ void EffectUnitBuilder::emit_structure(detail::ShaderTextWriter& w, const ast::S
     }
     // glslang takes member functions only with their bodies: a prototype whose definition
     // follows the class (`float3 C::M(...) { }`) becomes that definition, without `C::`.
-    auto defined = std::find_if(s.methods.begin(), s.methods.end(), [&](const ast::Function& m) {
-      return !m.owner.empty() && m.prototype.first == i;
-    });
+    auto defined = std::find_if(s.methods.begin(), s.methods.end(),
+                                [&](const ast::Function& m) { return !m.owner.empty() && m.prototype.first == i; });
     if (defined != s.methods.end()) {
       emit_method_definition(w, *defined);
       i = defined->prototype.last - 1;
@@ -162,7 +161,8 @@ void EffectUnitBuilder::emit_structure(detail::ShaderTextWriter& w, const ast::S
 
 void EffectUnitBuilder::emit_method_definition(detail::ShaderTextWriter& w, const ast::Function& m) {
   uint32_t scope = m.tokens.first;  // the `::` after the class name
-  while (scope + 1 < m.tokens.last && !(toks_[scope].is(TokenKind::coloncolon) && toks_[scope + 1].is_identifier(m.name)))
+  while (scope + 1 < m.tokens.last &&
+         !(toks_[scope].is(TokenKind::coloncolon) && toks_[scope + 1].is_identifier(m.name)))
     ++scope;
   w.end_line();
   w.desync();
@@ -227,7 +227,9 @@ void EffectUnitBuilder::emit_function_tokens(detail::ShaderTextWriter& w, ast::T
   auto cast = casts.begin();
   for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) {
     if (cast != casts.end() && i >= cast->open) {  // the initializer list, then the cast's tokens blank
-      w.token(toks_[i], i == cast->open ? detail::array_cast_initializer(*cast, join_tokens(toks_, {cast->operand, cast->end})) : " ");
+      w.token(toks_[i], i == cast->open
+                            ? detail::array_cast_initializer(*cast, join_tokens(toks_, {cast->operand, cast->end}))
+                            : " ");
       if (i + 1 == cast->end) ++cast;
       continue;
     }
@@ -380,8 +382,7 @@ void EffectUnitBuilder::collect_glsl() {
       text.version = std::string(toks_[code.first].text());
       ++code.first;
     } else if (code.last - code.first >= 3 && toks_[code.first].is(TokenKind::hash) &&
-               toks_[code.first + 1].is_identifier("version") &&
-               toks_[code.first + 2].is(TokenKind::integer)) {
+               toks_[code.first + 1].is_identifier("version") && toks_[code.first + 2].is(TokenKind::integer)) {
       // `GLSLShader X { #version 450` : not at a line start, so the preprocessor left it as
       // tokens; a profile word (`core`, `es`) may follow on the same line.
       text.version = "#version " + std::string(toks_[code.first + 2].text());

@@ -106,10 +106,12 @@ void EffectUnitBuilder::add_fixed_function_stages(const ast::Technique& t, Effec
   }
   const bool vertex = vs != nullptr, pixel = ps != nullptr;
   const EffectModel& m = model();
-  if (pass.technique_index >= m.techniques.size() || pass.pass_index >= m.techniques[pass.technique_index].passes.size())
+  if (pass.technique_index >= m.techniques.size() ||
+      pass.pass_index >= m.techniques[pass.technique_index].passes.size())
     return;
   DiagnosticSink scratch;  // fixed_function_state reports nothing the model did not
-  FixedFunctionState state = fixed_function_state(m, m.techniques[pass.technique_index].passes[pass.pass_index], scratch);
+  FixedFunctionState state =
+      fixed_function_state(m, m.techniques[pass.technique_index].passes[pass.pass_index], scratch);
   if (hlsl_pixel_inputs) state.pixel_shader_inputs = *hlsl_pixel_inputs;
   if (hlsl_vertex_outputs) state.vertex_shader_outputs = *hlsl_vertex_outputs;
   auto add = [&](ShaderStage stage, FixedFunctionShader shader, const char* what) {
@@ -124,9 +126,11 @@ void EffectUnitBuilder::add_fixed_function_stages(const ast::Technique& t, Effec
     pass.stages.push_back(std::move(s));
   };
   if (!vertex)
-    add(ShaderStage::vertex, generate_fixed_function_vertex_shader(state), "fixed-function vertex processing as generated HLSL");
+    add(ShaderStage::vertex, generate_fixed_function_vertex_shader(state),
+        "fixed-function vertex processing as generated HLSL");
   if (!pixel)
-    add(ShaderStage::fragment, generate_fixed_function_pixel_shader(state), "fixed-function texture stages as generated HLSL");
+    add(ShaderStage::fragment, generate_fixed_function_pixel_shader(state),
+        "fixed-function texture stages as generated HLSL");
   std::stable_sort(pass.stages.begin(), pass.stages.end(),
                    [](const StageUnit& a, const StageUnit& b) { return a.stage < b.stage; });
 }
@@ -205,14 +209,15 @@ std::optional<FixedFunctionState::PixelShaderInputs> EffectUnitBuilder::pixel_sh
       continue;
     }
     const ast::Struct* fields = structure(p.type.name);  // an input struct: each member has a semantic
-    if (!fields) return std::nullopt;  // a compile-time argument, or nothing D3D links
+    if (!fields) return std::nullopt;                    // a compile-time argument, or nothing D3D links
     for (const ast::Variable& m : fields->members)
       if (m.semantic.empty() || !take(m.semantic)) return std::nullopt;
   }
   return in;
 }
 
-std::optional<FixedFunctionState::VertexShaderOutputs> EffectUnitBuilder::vertex_shader_outputs(const StageUnit& vs) const {
+std::optional<FixedFunctionState::VertexShaderOutputs> EffectUnitBuilder::vertex_shader_outputs(
+    const StageUnit& vs) const {
   if (!vs.choices.empty()) {  // a shader array: what every choice writes, at the fewest components
     std::optional<FixedFunctionState::VertexShaderOutputs> all;
     for (const StageUnit& c : vs.choices) {
@@ -354,9 +359,11 @@ bool EffectUnitBuilder::assembly(const ast::Expr& e, StageUnit& stage) {
     return invalid(stage, std::string("a ") + (pixel ? "pixel" : "vertex") + " shader state holds " +
                               program->version.spelled() + " assembly");
   static const ast::Pass no_pass{};
-  emulation::AssemblyBindings bindings = emulation::bind_pass_states(pass_ ? *pass_ : no_pass, pixel, variables_, sink_);
+  emulation::AssemblyBindings bindings =
+      emulation::bind_pass_states(pass_ ? *pass_ : no_pass, pixel, variables_, sink_);
   emulation::AssemblyOptions options;
-  options.hardware_precision = u_.options_.ps1x_precision || (technique_ && precision_annotation(technique_->annotations)) ||
+  options.hardware_precision = u_.options_.ps1x_precision ||
+                               (technique_ && precision_annotation(technique_->annotations)) ||
                                (pass_ && precision_annotation(pass_->annotations));
   std::optional<emulation::AssemblyTranslation> t = emulation::translate_assembly(*program, bindings, options, sink_);
   if (!t) return invalid(stage, "the assembly has errors");
@@ -390,7 +397,8 @@ bool EffectUnitBuilder::shader_array(const ast::Expr& e, StageUnit& stage, int d
   }
   if (choices.empty()) return invalid(stage, "the shader array '" + base->text + "' is empty");
   std::optional<int64_t> index = initial_value(*e.args[1], 0);
-  size_t choice = index && *index >= 0 && static_cast<size_t>(*index) < choices.size() ? static_cast<size_t>(*index) : 0;
+  size_t choice =
+      index && *index >= 0 && static_cast<size_t>(*index) < choices.size() ? static_cast<size_t>(*index) : 0;
   SourceRange range = stage.range;
   stage = choices[choice];
   stage.range = range;
@@ -469,7 +477,7 @@ const ast::Function* EffectUnitBuilder::function(std::string_view name, size_t a
 }
 
 bool EffectUnitBuilder::hlsl(StageUnit& stage, const std::string& profile, const std::string& name,
-          const std::vector<const ast::Expr*>& args, SourceRange range) {
+                             const std::vector<const ast::Expr*>& args, SourceRange range) {
   stage.kind = StageSourceKind::hlsl;
   stage.profile = profile;
   stage.function = name;

@@ -64,9 +64,9 @@ bool is_effect_only_type(std::string_view type) {
 // Types that are resources rather than constants (samplers, textures, buffers): their
 // `register(s0)`/`register(t0)` becomes a binding, which glslang keeps per kind.
 bool is_shader_object_type(std::string_view type) {
-  for (std::string_view prefix : {"sampler", "texture", "buffer", "rwbuffer", "rwtexture", "byteaddressbuffer",
-                                  "rwbyteaddressbuffer", "structuredbuffer", "rwstructuredbuffer",
-                                  "appendstructuredbuffer", "consumestructuredbuffer"})
+  for (std::string_view prefix :
+       {"sampler", "texture", "buffer", "rwbuffer", "rwtexture", "byteaddressbuffer", "rwbyteaddressbuffer",
+        "structuredbuffer", "rwstructuredbuffer", "appendstructuredbuffer", "consumestructuredbuffer"})
     if (type.size() >= prefix.size() && iequals(type.substr(0, prefix.size()), prefix)) return true;
   return false;
 }
@@ -148,8 +148,8 @@ std::string join_tokens(const std::vector<Token>& toks, ast::TokenSpan span) {
     const Token& t = toks[i];
     const std::string safe = glslang_spelling(toks, i, span.last);
     const std::string_view text = safe.empty() ? t.text() : std::string_view(safe);
-    if (!out.empty() && (t.leading_space() || (std::isalnum(static_cast<unsigned char>(out.back())) &&
-                                               !text.empty() && std::isalnum(static_cast<unsigned char>(text[0])))))
+    if (!out.empty() && (t.leading_space() || (std::isalnum(static_cast<unsigned char>(out.back())) && !text.empty() &&
+                                               std::isalnum(static_cast<unsigned char>(text[0])))))
       out.push_back(' ');
     out.append(text);
   }
@@ -215,8 +215,9 @@ void EffectUnitBuilder::mark_clip_distance_inputs() {
     if (!f) return;
     for (const ast::Variable& p : f->params)
       if (!(p.storage & (ast::kOut | ast::kUniform)) && !p.array_dims.empty() && carries_clip_distance(p, 0)) {
-        invalid(stage, "geometry shader '" + std::string(f->name) + "' reads SV_ClipDistance/SV_CullDistance in its input '" +
-                           std::string(p.name) + "', which glslang cannot compile (KhronosGroup/glslang#2392)");
+        invalid(stage, "geometry shader '" + std::string(f->name) +
+                           "' reads SV_ClipDistance/SV_CullDistance in its input '" + std::string(p.name) +
+                           "', which glslang cannot compile (KhronosGroup/glslang#2392)");
         return;
       }
   };
@@ -231,13 +232,15 @@ void EffectUnitBuilder::respell_helper_uniforms() {
         toks_[i + 3].is(TokenKind::l_paren) && toks_[i + 4].is(TokenKind::r_paren))
       direct.insert(toks_[i + 2].text());
     if (i + 6 < n && toks_[i].is_identifier("CompileShader") && toks_[i + 3].is(TokenKind::comma) &&
-        toks_[i + 4].is(TokenKind::identifier) && toks_[i + 5].is(TokenKind::l_paren) && toks_[i + 6].is(TokenKind::r_paren))
+        toks_[i + 4].is(TokenKind::identifier) && toks_[i + 5].is(TokenKind::l_paren) &&
+        toks_[i + 6].is(TokenKind::r_paren))
       direct.insert(toks_[i + 4].text());
   }
   for (const ast::Function* f : functions_) {
     if (f->body.empty() || direct.count(f->name)) continue;
     uint32_t open = f->tokens.first;
-    while (open + 1 < f->tokens.last && !(toks_[open].is_identifier(f->name) && toks_[open + 1].is(TokenKind::l_paren))) ++open;
+    while (open + 1 < f->tokens.last && !(toks_[open].is_identifier(f->name) && toks_[open + 1].is(TokenKind::l_paren)))
+      ++open;
     const uint32_t close = matching_close(open + 1, f->tokens.last);
     for (uint32_t i = open + 1; i < close; ++i)
       if (toks_[i].is_identifier("uniform")) respelled_.insert_or_assign(i, std::string(" "));
@@ -395,7 +398,10 @@ std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
     std::vector<std::string> argument_names;
     for (const std::string& a : stage.arguments)
       for (size_t i = 0; i < a.size();) {
-        if (!is_word_char(a[i])) { ++i; continue; }
+        if (!is_word_char(a[i])) {
+          ++i;
+          continue;
+        }
         size_t end = i;
         while (end < a.size() && is_word_char(a[end])) ++end;
         if (!std::isdigit(static_cast<unsigned char>(a[i]))) argument_names.push_back(a.substr(i, end - i));

@@ -29,10 +29,12 @@ struct KnownIssue {
 };
 constexpr KnownIssue kIssues[] = {
     {"sample1d", "a 1D lookup of a volume texture has no modern equivalent; fxkit samples it along x at (t, 0, 0)"},
-    {"volumetexture", "pre-release code sampled texture objects directly; fxkit declares them as sampler3D with "
-                      "default sampler state"},
-    {"smoothstep", "the source defines its own smoothstep, which overloads the intrinsic; its (a, b, s) argument "
-                   "order differs from HLSL's smoothstep(min, max, x)"},
+    {"volumetexture",
+     "pre-release code sampled texture objects directly; fxkit declares them as sampler3D with "
+     "default sampler state"},
+    {"smoothstep",
+     "the source defines its own smoothstep, which overloads the intrinsic; its (a, b, s) argument "
+     "order differs from HLSL's smoothstep(min, max, x)"},
 };
 
 }  // namespace

@@ -45,8 +45,8 @@ std::vector<LvalueConstructor> find_lvalue_constructors(const std::vector<Token>
     if (declaring && i > body.first && toks[i - 1].is(TokenKind::comma) && depth == declaring_depth)
       sizes[t.text()] = declaring;
     // `float4 ( a , b ) =` at the start of a statement.
-    const bool statement_start = i == body.first || toks[i - 1].is(TokenKind::semi) || toks[i - 1].is(TokenKind::l_brace) ||
-                                 toks[i - 1].is(TokenKind::r_brace);
+    const bool statement_start = i == body.first || toks[i - 1].is(TokenKind::semi) ||
+                                 toks[i - 1].is(TokenKind::l_brace) || toks[i - 1].is(TokenKind::r_brace);
     if (!n || !next.is(TokenKind::l_paren) || !statement_start) continue;
     std::vector<std::pair<std::string_view, uint32_t>> parts;
     uint32_t j = i + 2, total = 0;

@@ -14,11 +14,11 @@ namespace fx::detail {
 
 // One `T(a, b, ...) = value;` statement in a function body, as token indices.
 struct LvalueConstructor {
-  uint32_t type = 0;         // the vector type token that starts the statement
-  uint32_t equal = 0;        // its `=`
-  uint32_t semi = 0;         // the `;` that ends it
-  std::string temporary;     // the name the rewrite declares
-  std::string assignments;   // `a = t.xy; b = t.zw;`
+  uint32_t type = 0;        // the vector type token that starts the statement
+  uint32_t equal = 0;       // its `=`
+  uint32_t semi = 0;        // the `;` that ends it
+  std::string temporary;    // the name the rewrite declares
+  std::string assignments;  // `a = t.xy; b = t.zw;`
 };
 
 // The lvalue constructors in `body` whose parts are variables declared in it (parameters

@@ -13,7 +13,8 @@ float4 Tint = float4(1, 0.5, 0.25, 1);
 float4 shade() : COLOR { return Tint; }
 technique Full { pass P0 { PixelShader = compile ps_2_0 shade(); } }
 technique Fallback { pass P0 { ZEnable = false; PixelShader = compile ps_2_0 shade(); } }
-)", sm, diags);
+)",
+                                                  sm, diags);
   if (!effect.ok) {
     std::fputs(fx::render_text(diags.diagnostics(), sm).c_str(), stderr);
     return 1;

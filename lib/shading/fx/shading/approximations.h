@@ -18,12 +18,12 @@ struct ApproximationError {
                             // per_vertex, hemisphere, ln_hn, gaussian, brdf
   std::string description;  // one line for the report
   std::vector<std::pair<std::string, std::string>> params;  // size, exponent, index, ...
-  ErrorStats all;              // every sample
-  ErrorStats near_degenerate;  // log-spaced 1e-1 .. 1e-8 rad samples (count 0 if none)
+  ErrorStats all;                                           // every sample
+  ErrorStats near_degenerate;                               // log-spaced 1e-1 .. 1e-8 rad samples (count 0 if none)
 };
 
 struct ApproximationOptions {
-  SampleSetOptions samples;     // the shading configurations (uniform + near-degenerate)
+  SampleSetOptions samples;  // the shading configurations (uniform + near-degenerate)
   std::vector<int> lut_sizes = {16, 32, 64, 128, 256, 512, 1024};
   std::vector<double> strand_exponents = {8, 32, 128};
   std::vector<int> sphere_rings = {6, 12, 24, 48, 96};  // per-vertex: latitude rings

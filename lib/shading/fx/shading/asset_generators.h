@@ -51,7 +51,7 @@ struct HeightSpec {
   HeightPattern pattern = HeightPattern::noise;
   int frequency = 8;  // lattice cells per texture edge
   int octaves = 4;
-  int stretch = 8;    // streaks only: fibres per lattice cell across v
+  int stretch = 8;  // streaks only: fibres per lattice cell across v
   NoiseKind kind = NoiseKind::gradient;
   uint32_t seed = 1;
 };

@@ -20,10 +20,10 @@ enum class BrdfLobe {
 // An analytic BRDF in the tangent frame (N = z, tangent = x), times cos(theta_i).
 struct AnalyticBrdf {
   BrdfLobe lobe = BrdfLobe::phong;
-  double exponent = 16;                       // Phong, Blinn-Phong
-  double alpha_x = 0.15, alpha_y = 0.35;      // Ward roughness along x and y
-  double diffuse = 0;                         // Lambert albedo (a sum never factors exactly)
-  double specular = 1;                        // lobe weight
+  double exponent = 16;                   // Phong, Blinn-Phong
+  double alpha_x = 0.15, alpha_y = 0.35;  // Ward roughness along x and y
+  double diffuse = 0;                     // Lambert albedo (a sum never factors exactly)
+  double specular = 1;                    // lobe weight
   // f(wi, wo) * cos(theta_i) for unit wi, wo; 0 when either is below the horizon.
   double evaluate(const glm::dvec3& wi, const glm::dvec3& wo) const;
 };
@@ -39,18 +39,18 @@ glm::dvec2 parabolic_coords(const glm::dvec3& w);
 Table parabolic_to_cube(const Table& parabolic, int size);
 
 struct BrdfFactorizationOptions {
-  int size = 32;              // each factor is size x size
-  int samples = 16384;        // direction pairs (uniform in parabolic coordinates)
-  int iterations = 300;       // CGLS iterations
-  double smoothness = 0.05;   // weight of the Laplacian regularizer (fills unseen texels)
-  double log_floor = 1e-4;    // f below floor * max(f) is clamped before the log
-  double floor_weight = 0.05; // least row weight (rows are weighted by sqrt(f / max f))
+  int size = 32;               // each factor is size x size
+  int samples = 16384;         // direction pairs (uniform in parabolic coordinates)
+  int iterations = 300;        // CGLS iterations
+  double smoothness = 0.05;    // weight of the Laplacian regularizer (fills unseen texels)
+  double log_floor = 1e-4;     // f below floor * max(f) is clamped before the log
+  double floor_weight = 0.05;  // least row weight (rows are weighted by sqrt(f / max f))
   uint32_t seed = 1;
 };
 
 // The three factor tables (float32, 1 channel, parabolic map, clamp addressing).
 struct BrdfFactors {
-  Table in, half, out;        // p_i(wi), q(wh), p_o(wo)
+  Table in, half, out;          // p_i(wi), q(wh), p_o(wo)
   double log_residual_rms = 0;  // RMS of the weighted log-space residual over the samples
 };
 

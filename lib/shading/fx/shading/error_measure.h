@@ -26,11 +26,11 @@ struct ShadingSample {
 };
 
 struct SampleSetOptions {
-  int uniform = 4096;                 // uniform random configurations (all directions)
+  int uniform = 4096;                         // uniform random configurations (all directions)
   double min_angle = 1e-8, max_angle = 1e-1;  // log-spaced near-degenerate range
   int angles_per_decade = 2;
-  int frames_per_angle = 4;           // random orientations per (degeneracy, angle)
-  bool include_non_finite = false;    // NaN / Inf components (reference must define them)
+  int frames_per_angle = 4;         // random orientations per (degeneracy, angle)
+  bool include_non_finite = false;  // NaN / Inf components (reference must define them)
   uint32_t seed = 1;
 };
 
@@ -42,12 +42,12 @@ std::vector<ShadingSample> shading_samples(const SampleSetOptions& options = {})
 using ShadingTerm = std::function<double(const ShadingSample&)>;
 
 struct ErrorStats {
-  size_t count = 0;        // samples compared
-  size_t non_finite = 0;   // approximation returned NaN/Inf (counted, excluded from max/RMSE)
+  size_t count = 0;       // samples compared
+  size_t non_finite = 0;  // approximation returned NaN/Inf (counted, excluded from max/RMSE)
   double max_abs = 0;
   double rmse = 0;
-  double max_lsb8 = 0;     // max_abs in units of 1/255
-  ShadingSample worst;     // where max_abs occurred
+  double max_lsb8 = 0;  // max_abs in units of 1/255
+  ShadingSample worst;  // where max_abs occurred
 };
 
 // Statistics overall and per sample kind.

@@ -13,10 +13,14 @@
 namespace fx::shading {
 
 // Sky fraction a = 0.5 + 0.5 cos q from cos q = N.A (the seed's dp3 + mad). NaN -> 0.5.
-template <class T> T hemisphere_sky_fraction(T cos_q) { return T(0.5) + T(0.5) * clamp_cosine(cos_q); }
+template <class T>
+T hemisphere_sky_fraction(T cos_q) {
+  return T(0.5) + T(0.5) * clamp_cosine(cos_q);
+}
 
 // The seed's "actual integral" from cos q: 1 - 0.5 sin q facing the sky, 0.5 sin q away.
-template <class T> T hemisphere_sky_fraction_seed(T cos_q) {
+template <class T>
+T hemisphere_sky_fraction_seed(T cos_q) {
   T c = clamp_cosine(cos_q);
   T s = std::sqrt((T(1) - c) * (T(1) + c));
   return c >= T(0) ? T(1) - T(0.5) * s : T(0.5) * s;
@@ -28,11 +32,12 @@ template <class T> T hemisphere_sky_fraction_seed(T cos_q) {
 double hemisphere_sky_fraction_quadrature(double q_radians, int steps);
 
 // Inputs of the three-term hemisphere model plus one directional light.
-template <class T> struct HemisphereLight {
+template <class T>
+struct HemisphereLight {
   Vec3<T> sky_axis{0, 0, 1};
   Vec3<T> sky_color{1, 1, 1};
   Vec3<T> ground_color{0, 0, 0};
-  Vec3<T> material{1, 1, 1};   // c43 in the seed's vertex shader
+  Vec3<T> material{1, 1, 1};       // c43 in the seed's vertex shader
   Vec3<T> sun_direction{0, 0, 1};  // to the sun, unit
   Vec3<T> sun_color{0, 0, 0};      // zero disables the directional light
 };
@@ -40,7 +45,8 @@ template <class T> struct HemisphereLight {
 // color = material * ((a sky + (1 - a) ground) (1 - occlusion) + sun saturate(N.S)).
 // The occlusion term darkens only the hemisphere light (it is a sky-visibility ratio);
 // the sun's own shadowing belongs to a shadow map. Non-finite normal -> a = 0.5.
-template <class T> Vec3<T> hemisphere_lighting(const HemisphereLight<T>& h, const Vec3<T>& n, T occlusion) {
+template <class T>
+Vec3<T> hemisphere_lighting(const HemisphereLight<T>& h, const Vec3<T>& n, T occlusion) {
   T a = hemisphere_sky_fraction(finite(n) ? glm::dot(n, h.sky_axis) : T(0));
   Vec3<T> ambient = (h.sky_color - h.ground_color) * a + h.ground_color;  // the seed's lerp
   Vec3<T> lit = ambient * (T(1) - saturate(occlusion));

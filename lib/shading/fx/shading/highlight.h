@@ -9,7 +9,8 @@ namespace fx::shading {
 enum class HighlightModel { phong, blinn_phong };
 
 // Inputs in tangent space, all expected unit length (E and L as the seed normalizes them).
-template <class T> struct HighlightInputs {
+template <class T>
+struct HighlightInputs {
   Vec3<T> n{0, 0, 1};  // (bumped) normal
   Vec3<T> t{1, 0, 0};  // strand direction, nominally in the tangent plane
   Vec3<T> e{0, 0, 1};  // to the eye
@@ -20,13 +21,15 @@ template <class T> struct HighlightInputs {
 // normalize(L + V), or the zero vector when L = -V (the half vector is undefined there;
 // every dot product with the zero vector is 0, so Blinn-Phong gives no highlight, the same
 // answer a hemisphere test gives for a light exactly behind the surface).
-template <class T> Vec3<T> half_vector(const Vec3<T>& l, const Vec3<T>& v) {
+template <class T>
+Vec3<T> half_vector(const Vec3<T>& l, const Vec3<T>& v) {
   return normalize_or(l + v, Vec3<T>(0));
 }
 
 // Removes the component along the unit plane normal b and renormalizes; the zero vector
 // when x is (numerically) parallel to b, i.e. has no component in the plane.
-template <class T> Vec3<T> project_to_plane(const Vec3<T>& x, const Vec3<T>& b) {
+template <class T>
+Vec3<T> project_to_plane(const Vec3<T>& x, const Vec3<T>& b) {
   return normalize_or(x - glm::dot(x, b) * b, Vec3<T>(0));
 }
 
@@ -34,7 +37,8 @@ template <class T> Vec3<T> project_to_plane(const Vec3<T>& x, const Vec3<T>& b) 
 // normal is cross(N, T), normalized here (the seed skips it because T lies in the
 // unbumped tangent plane; with a bump map it does not). T parallel to N has no strand
 // plane: shade isotropically. Non-finite input -> 0.
-template <class T> T anisotropic_highlight(const HighlightInputs<T>& in, HighlightModel model, bool anisotropic) {
+template <class T>
+T anisotropic_highlight(const HighlightInputs<T>& in, HighlightModel model, bool anisotropic) {
   if (!finite(in.n) || !finite(in.t) || !finite(in.e) || !finite(in.l) || !finite(in.exponent)) return T(0);
   Vec3<T> e = in.e, l = in.l;
   Vec3<T> tplane = normalize_or(glm::cross(in.n, in.t), Vec3<T>(0));

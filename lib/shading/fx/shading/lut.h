@@ -26,8 +26,7 @@ enum class LutIndex { cosine, angle };
 
 // The address mode a mapping needs.
 inline AddressMode lut_address_mode(LutMapping m) {
-  return (m == LutMapping::seed_wrap || m == LutMapping::texel_centre_wrap) ? AddressMode::wrap
-                                                                           : AddressMode::clamp;
+  return (m == LutMapping::seed_wrap || m == LutMapping::texel_centre_wrap) ? AddressMode::wrap : AddressMode::clamp;
 }
 
 // True when the mapping supports n texels (wrap mappings rotate by n/2: n must be even).

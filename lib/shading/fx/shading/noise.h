@@ -11,10 +11,10 @@ enum class NoiseKind { value, gradient };
 
 // What to evaluate: lattice period (cells per tile along each axis), seed, kind, octaves.
 struct NoiseSpec {
-  int period = 8;        // the noise repeats every `period` lattice cells
+  int period = 8;  // the noise repeats every `period` lattice cells
   uint32_t seed = 1;
   NoiseKind kind = NoiseKind::gradient;
-  int octaves = 1;       // each octave doubles frequency (and period), halves amplitude
+  int octaves = 1;  // each octave doubles frequency (and period), halves amplitude
 };
 
 // Noise at p (lattice units) for one channel (channels use decorrelated hashes), in about

@@ -12,14 +12,16 @@
 namespace fx::shading {
 
 // The two strand terms for one light.
-template <class T> struct StrandTerms {
+template <class T>
+struct StrandTerms {
   T diffuse = 0;   // L.N'
   T specular = 0;  // (V.R')^n, clamped at 0 before the power
 };
 
 // The seed's formula verbatim, from the two cosines: goes NaN when rounding pushes |L.T|
 // past 1 and loses all precision near |L.T| = 1 (kept to demonstrate exactly that).
-template <class T> StrandTerms<T> strand_naive(T lt, T vt, T exponent) {
+template <class T>
+StrandTerms<T> strand_naive(T lt, T vt, T exponent) {
   T sl = std::sqrt(T(1) - lt * lt);
   T sv = std::sqrt(T(1) - vt * vt);
   return {sl, std::pow(sl * sv - lt * vt, exponent)};
@@ -29,7 +31,8 @@ template <class T> StrandTerms<T> strand_naive(T lt, T vt, T exponent) {
 // defined. Cosines are clamped to [-1, 1] (NaN -> 0, i.e. perpendicular),
 // 1-x^2 is evaluated as (1-x)(1+x) (exact factors for |x| >= 0.5), and the power is
 // guarded_pow. Used by the table bakers, where the cosine is exact.
-template <class T> StrandTerms<T> strand_from_cosines(T lt, T vt, T exponent) {
+template <class T>
+StrandTerms<T> strand_from_cosines(T lt, T vt, T exponent) {
   lt = clamp_cosine(lt);
   vt = clamp_cosine(vt);
   T sl = std::sqrt((T(1) - lt) * (T(1) + lt));
@@ -57,13 +60,13 @@ StrandTerms<T> strand_from_vectors(const Vec3<T>& l, const Vec3<T>& v, const Vec
 // Analytic reference: normalizes the inputs in double and evaluates through the angles,
 // V.R' = -cos(a + b) with a = angle(L,T), b = angle(V,T) from atan2(|x|, .).
 // Degenerate (zero or non-finite) input vectors -> {0, 0}, as in strand_from_vectors.
-StrandTerms<double> strand_reference(const glm::dvec3& l, const glm::dvec3& v, const glm::dvec3& t,
-                                     double exponent);
+StrandTerms<double> strand_reference(const glm::dvec3& l, const glm::dvec3& v, const glm::dvec3& t, double exponent);
 
 // Gram-Schmidt tangent against a bump-map normal, as the seed's ps.1.4 shader does it:
 // T - (N.T)N, without renormalization (the seed notes the missing normalize "has almost
 // no visual impact"; the shorter T' brightens the lighting near steep bumps).
-template <class T> Vec3<T> gram_schmidt_unnormalized(const Vec3<T>& t, const Vec3<T>& n) {
+template <class T>
+Vec3<T> gram_schmidt_unnormalized(const Vec3<T>& t, const Vec3<T>& n) {
   return t - glm::dot(n, t) * n;
 }
 
@@ -72,7 +75,8 @@ template <class T> Vec3<T> gram_schmidt_unnormalized(const Vec3<T>& t, const Vec
 // (or (1,0,0) when N itself is unusable). Always returns a finite unit vector.
 // The projection is applied twice ("twice is enough", Kahan/Parlett): one pass leaves a
 // component along N of ~eps / sin(angle(T, N)), the second brings it back to ~eps.
-template <class T> Vec3<T> gram_schmidt_tangent(const Vec3<T>& t, const Vec3<T>& n) {
+template <class T>
+Vec3<T> gram_schmidt_tangent(const Vec3<T>& t, const Vec3<T>& n) {
   if (!finite(n)) return Vec3<T>(1, 0, 0);
   Vec3<T> nn = normalize_or(n, Vec3<T>(0, 0, 1));
   Vec3<T> fallback = any_perpendicular(nn);

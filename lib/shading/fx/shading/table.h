@@ -19,8 +19,8 @@ struct Table {
   // A cube map: depth 6 holds the faces +X, -X, +Y, -Y, +Z, -Z (cube_direction gives the
   // direction of each texel); sample_linear does not read cube tables.
   bool cube = false;
-  std::vector<uint8_t> unorm8;   // used when format == unorm8
-  std::vector<float> float32;    // used when format == float32
+  std::vector<uint8_t> unorm8;  // used when format == unorm8
+  std::vector<float> float32;   // used when format == float32
 
   // An all-zero table of the given shape (sizes must be >= 1, channels 1..4).
   static Table make(int width, int height, int depth, int channels, TableFormat format);

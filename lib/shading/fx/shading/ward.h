@@ -15,13 +15,15 @@ enum class HalfAngleLobe {
 
 // The (L.N, H.N) table function: rgb = saturate(L.N), a = lobe(H.N). The NVIDIA texture's
 // own formula is unpublished (the seed says so); this is the documented stand-in.
-template <class T> struct HalfAngleTerms {
+template <class T>
+struct HalfAngleTerms {
   T diffuse = 0;
   T specular = 0;
 };
 
 // Table contents for cosines (L.N, H.N); `shape` is n for Blinn-Phong, m for Gaussian.
-template <class T> HalfAngleTerms<T> ln_hn_terms(T ln, T hn, HalfAngleLobe lobe, T shape) {
+template <class T>
+HalfAngleTerms<T> ln_hn_terms(T ln, T hn, HalfAngleLobe lobe, T shape) {
   ln = clamp_cosine(ln);
   hn = clamp_cosine(hn);
   HalfAngleTerms<T> out{saturate(ln), T(0)};
@@ -38,7 +40,8 @@ template <class T> HalfAngleTerms<T> ln_hn_terms(T ln, T hn, HalfAngleLobe lobe,
 // The seed's Gaussian: u = (T.H) * 0.3, w = N.H, e = k u / w, c = exp(-e*e). Guarded:
 // w <= 0 (half vector at or below the surface, where e is +-inf or 0/0) -> 0;
 // non-finite input -> 0. The seed's 0.3 is a wavelength it folds into k.
-template <class T> T ward_gaussian(const Vec3<T>& n, const Vec3<T>& t, const Vec3<T>& h, T k) {
+template <class T>
+T ward_gaussian(const Vec3<T>& n, const Vec3<T>& t, const Vec3<T>& h, T k) {
   if (!finite(n) || !finite(t) || !finite(h) || !finite(k)) return T(0);
   T u = glm::dot(t, h) * T(0.3);
   T w = glm::dot(n, h);

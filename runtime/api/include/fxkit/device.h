@@ -35,15 +35,15 @@ struct VulkanHandles {
 // For Device::headless (tools, tests, CI): fxkit makes its own instance and device.
 struct HeadlessOptions {
   bool validation = false;  // VK_LAYER_KHRONOS_validation; messages become vk-validation errors
-  std::string device{};       // index or name substring; "": FXKIT_DEVICE, else the best device
+  std::string device{};     // index or name substring; "": FXKIT_DEVICE, else the best device
 };
 
 struct DeviceOptions {
   Target target{};                          // required: formats, vertex layout, conventions
   std::vector<std::string> include_dirs{};  // searched after the including file's folder
   std::vector<std::string> defines{};       // "NAME" or "NAME=VALUE", as -D
-  bool watch = true;                      // reload effects when they or their includes change
-  uint32_t frames_in_flight = 2;          // frames the GPU may still be reading
+  bool watch = true;                        // reload effects when they or their includes change
+  uint32_t frames_in_flight = 2;            // frames the GPU may still be reading
   // Per frame in flight: uniform data fxkit writes (host-visible memory) and descriptor
   // sets it allocates. Running out is a vk-uniform-ring-full / vk-descriptor-pool-full error.
   uint32_t uniform_bytes_per_frame = 4u << 20;
@@ -52,8 +52,8 @@ struct DeviceOptions {
   // one pipeline serves many state combinations; false bakes every state into its pipeline
   // (more pipelines, as hand-written Vulkan usually does).
   bool dynamic_state = true;
-  std::string cache_dir{};                  // SPIR-V cache on disk; "": in memory only
-  uint32_t compile_threads = 0;             // threads compiling an effect's shaders; 0: one per core
+  std::string cache_dir{};       // SPIR-V cache on disk; "": in memory only
+  uint32_t compile_threads = 0;  // threads compiling an effect's shaders; 0: one per core
   // glslang runs in fxkit-compile-worker processes that stay alive (one per compile thread),
   // so a compiler crash or hang on an edited effect fails that reload with a
   // `compiler-crashed` error instead of taking the application down. false compiles in this
@@ -70,9 +70,9 @@ struct DeviceOptions {
 struct Reload {
   enum class Kind : uint8_t { reloaded, failed, deleted } kind = Kind::reloaded;
   std::string file{};
-  std::vector<Message> messages{};  // failed: why (the last good version stays live)
+  std::vector<Message> messages{};              // failed: why (the last good version stays live)
   std::vector<std::string> defaults_changed{};  // parameters that took an edited default
-  std::string technique{};          // the technique selection chose after the reload
+  std::string technique{};                      // the technique selection chose after the reload
   // One line per event, then the messages: "reloaded effects/lit.fx (technique lit)".
   std::string str() const;
 };

@@ -42,7 +42,7 @@ struct Criteria {
   float distance = 0.f;      // camera distance, world units
   float screen_size = -1.f;  // projected size in pixels; negative: unknown
   float pixels = 0.f;        // covered pixels (turns a per-pixel cost into milliseconds)
-  std::string scheme{};        // "" accepts every scheme
+  std::string scheme{};      // "" accepts every scheme
   float cost_budget_ms = std::numeric_limits<float>::infinity();
   float max_error = std::numeric_limits<float>::infinity();  // 8-bit levels
   // "" selects for this device. A caps profile (caps_profiles(): "dx6" ... "dx9c",
@@ -61,9 +61,9 @@ struct Scene {
   float view[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   float projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   float eye[3] = {0, 0, 3};
-  float time = 0.f;                  // seconds (TIME)
-  float elapsed = 1.f / 60.f;        // seconds since the previous frame (ELAPSEDTIME)
-  float viewport_size[2] = {0, 0};   // pixels (VIEWPORTPIXELSIZE); 0 leaves it alone
+  float time = 0.f;                 // seconds (TIME)
+  float elapsed = 1.f / 60.f;       // seconds since the previous frame (ELAPSEDTIME)
+  float viewport_size[2] = {0, 0};  // pixels (VIEWPORTPIXELSIZE); 0 leaves it alone
   // A camera looking at a sphere of `radius` around the origin, from the front and a
   // little above, filling about 85% of the shorter side of an image of `aspect`.
   static Scene framing(float radius, float aspect);
@@ -75,7 +75,7 @@ struct Annotation {
   enum class Kind : uint8_t { string, floats, ints, boolean };
   std::string name{};
   Kind kind = Kind::string;
-  std::string text{};          // Kind::string
+  std::string text{};           // Kind::string
   std::vector<float> values{};  // the numbers (bool: 0 or 1); empty for strings
   // The i-th number, 0 when there is none.
   float number(size_t i = 0) const { return i < values.size() ? values[i] : 0.f; }
@@ -166,7 +166,7 @@ class Technique {
   friend class Effect;
   std::shared_ptr<detail::EffectState> effect_;
   const detail::PassApply* pass_apply_ = nullptr;  // effect_'s, for the inline apply()
-  std::string name_;  // "" follows selection
+  std::string name_;                               // "" follows selection
   // name_'s technique index and its pass count in the version of serial resolved_serial_
   // (0: none yet), so that begin() and pass_count() compare no names while it stays.
   mutable uint64_t resolved_serial_ = 0;

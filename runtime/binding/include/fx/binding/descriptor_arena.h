@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "fx/vulkan/context.h"
 #include "fx/binding/shader_program.h"
+#include "fx/vulkan/context.h"
 
 namespace fx::vk {
 

@@ -20,12 +20,12 @@
 #include <string_view>
 #include <vector>
 
-#include "fx/compile/effect_programs.h"
-#include "fx/model/effect_model.h"
-#include "fx/model/parameter_store.h"
 #include "fx/binding/effect_textures.h"
 #include "fx/binding/pass_recorder.h"
 #include "fx/binding/pass_state_mapping.h"
+#include "fx/compile/effect_programs.h"
+#include "fx/model/effect_model.h"
+#include "fx/model/parameter_store.h"
 #include "fx/vulkan/sampler_cache.h"
 
 namespace fx::vk {
@@ -53,10 +53,10 @@ class EffectBinding {
   // run (assembly or fixed-function stages, compile errors, unsupported states, a missing
   // device feature, alpha test) is kept with its reason. Null only when nothing at all could
   // be set up (diagnostics say why). Everything referenced must outlive the binding.
-  static std::unique_ptr<EffectBinding> create(const Context& ctx, const EffectModel& model,
-                                               EffectPrograms& programs, ParameterStore& params,
-                                               EffectTextureCache& textures, FrameResources& frames,
-                                               const EffectBindingDesc& desc, DiagnosticSink& sink);
+  static std::unique_ptr<EffectBinding> create(const Context& ctx, const EffectModel& model, EffectPrograms& programs,
+                                               ParameterStore& params, EffectTextureCache& textures,
+                                               FrameResources& frames, const EffectBindingDesc& desc,
+                                               DiagnosticSink& sink);
   ~EffectBinding();
   EffectBinding(const EffectBinding&) = delete;
   EffectBinding& operator=(const EffectBinding&) = delete;
@@ -87,8 +87,8 @@ class EffectBinding {
   // Starts applying `technique` into `cmd` (inside the app's dynamic rendering with
   // attachments of `formats`); uploads textures not yet on the GPU. False (nothing is
   // recorded by apply then) when the technique cannot run or an upload failed.
-  bool begin(VkCommandBuffer cmd, uint32_t technique, const RenderingFormats& formats,
-             const VkViewport& viewport, const VkRect2D& scissor, DiagnosticSink& sink);
+  bool begin(VkCommandBuffer cmd, uint32_t technique, const RenderingFormats& formats, const VkViewport& viewport,
+             const VkRect2D& scissor, DiagnosticSink& sink);
   // Binds pass `pass` of the begun technique for geometry of `vertex_layout`; the app draws
   // after it returns true.
   bool apply(uint32_t pass, uint32_t vertex_layout, DiagnosticSink& sink);

@@ -8,9 +8,9 @@
 #include <optional>
 #include <span>
 
-#include "fx/mesh.h"
 #include "fx/binding/effect_binding.h"
 #include "fx/binding/effect_scene.h"
+#include "fx/mesh.h"
 #include "fx/vulkan/render_target.h"
 
 namespace fx::vk {
@@ -28,8 +28,8 @@ struct EffectPreviewDesc {
 class EffectPreview {
  public:
   // Uploads `mesh`; null with diagnostics on failure.
-  static std::unique_ptr<EffectPreview> create(const Context& ctx, const Mesh& mesh,
-                                               const EffectPreviewDesc& desc, DiagnosticSink& sink);
+  static std::unique_ptr<EffectPreview> create(const Context& ctx, const Mesh& mesh, const EffectPreviewDesc& desc,
+                                               DiagnosticSink& sink);
   ~EffectPreview();
 
   FrameResources& frames() { return *frames_; }
@@ -60,8 +60,8 @@ class EffectPreview {
   // pass), between two vkCmdWriteTimestamp around the rendering scope, drawn with `scissor`
   // (a 1x1 scissor off the mesh leaves the vertex work alone). No readback. nullopt with
   // "vk-no-timestamps" when the queue has none, or on a failed submission.
-  std::optional<double> time_passes(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
-                                    uint32_t draws, const VkRect2D& scissor, DiagnosticSink& sink);
+  std::optional<double> time_passes(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout, uint32_t draws,
+                                    const VkRect2D& scissor, DiagnosticSink& sink);
   // Frames rendered by render().
   uint64_t frames_rendered() const { return frames_rendered_; }
 

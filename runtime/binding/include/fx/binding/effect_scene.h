@@ -20,9 +20,9 @@ namespace fx::vk {
 struct SceneView {
   glm::mat4 world{1.0f}, view{1.0f}, projection{1.0f};
   glm::vec3 eye{0.0f, 0.0f, 3.0f};
-  float time = 0.0f;                // seconds
-  float elapsed = 1.0f / 60.0f;     // seconds since the previous frame (ELAPSEDTIME)
-  glm::vec2 viewport_size{0.0f};    // pixels (VIEWPORTPIXELSIZE); 0 leaves it alone
+  float time = 0.0f;              // seconds
+  float elapsed = 1.0f / 60.0f;   // seconds since the previous frame (ELAPSEDTIME)
+  glm::vec2 viewport_size{0.0f};  // pixels (VIEWPORTPIXELSIZE); 0 leaves it alone
 };
 
 // A camera looking at `bounds` from the front and a little above (so tops and fronts both

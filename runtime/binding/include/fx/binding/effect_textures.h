@@ -26,10 +26,10 @@ struct EffectTextureData {
   std::optional<fx::Image> image;       // PNG files and stand-ins
   std::optional<shading::Table> table;  // procedural generators
   bool stand_in = false;                // a neutral texture for a missing file
-  ImageDim dim = ImageDim::dim_2d;       // stand-ins take the shape the shader samples
-  bool arrayed = false;                  // ... as an array view (Texture2DArray)
-  bool depth = false;                    // a depth stand-in, for sampling with depth comparison
-  bool multisampled = false;             // a multisampled stand-in, for Texture2DMS(Array)
+  ImageDim dim = ImageDim::dim_2d;      // stand-ins take the shape the shader samples
+  bool arrayed = false;                 // ... as an array view (Texture2DArray)
+  bool depth = false;                   // a depth stand-in, for sampling with depth comparison
+  bool multisampled = false;            // a multisampled stand-in, for Texture2DMS(Array)
 };
 
 class EffectTextureCache {
@@ -48,8 +48,8 @@ class EffectTextureCache {
   // 2D, 3D or cube, as an array view for Texture2DArray and its kin): a view of another
   // shape is invalid, and lavapipe crashes on a 2D view bound to a 1D sampler.
   std::shared_ptr<const EffectTextureData> resolve(const EffectModel& model, const TextureInfo& texture,
-                                                   const std::filesystem::path& effect_dir, ImageDim dim,
-                                                   bool arrayed, DiagnosticSink& sink);
+                                                   const std::filesystem::path& effect_dir, ImageDim dim, bool arrayed,
+                                                   DiagnosticSink& sink);
   // A depth texture of 1.0 in the shape the shader samples, for an image sampled with depth
   // comparison (Vulkan compares only against depth formats): a shadow map nothing is in front of.
   std::shared_ptr<const EffectTextureData> depth_stand_in(ImageDim dim, bool arrayed);

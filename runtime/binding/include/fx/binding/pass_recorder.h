@@ -9,10 +9,10 @@
 #include <span>
 #include <vector>
 
-#include "fx/vulkan/apply_stats.h"
-#include "fx/vulkan/frame_resources.h"
 #include "fx/binding/pass_resources.h"
 #include "fx/binding/pipeline_cache.h"
+#include "fx/vulkan/apply_stats.h"
+#include "fx/vulkan/frame_resources.h"
 
 namespace fx::vk {
 
@@ -35,12 +35,10 @@ class PassRecorder {
  public:
   // `dynamic` chooses the pipeline path: DynamicStateSet::from_features(ctx.features()) or
   // DynamicStateSet::none(). Everything referenced must outlive the recorder.
-  PassRecorder(const Context& ctx, PipelineCache& pipelines, FrameResources& frames,
-               DynamicStateSet dynamic);
+  PassRecorder(const Context& ctx, PipelineCache& pipelines, FrameResources& frames, DynamicStateSet dynamic);
 
   // Starts recording passes into `cmd` for attachments of `formats`; sets viewport and scissor.
-  void begin(VkCommandBuffer cmd, const RenderingFormats& formats, const VkViewport& viewport,
-             const VkRect2D& scissor);
+  void begin(VkCommandBuffer cmd, const RenderingFormats& formats, const VkViewport& viewport, const VkRect2D& scissor);
   // Binds what `pass` needs. False (with diagnostics) if a pipeline, upload or descriptor
   // could not be made, or a texture is unbound ("vk-texture-unbound"); nothing is drawn then.
   bool apply(const PassDesc& pass, DiagnosticSink& sink);

@@ -24,12 +24,10 @@ class PassResources {
   // exceeds it.
   bool set_uniform(std::string_view name, const void* data, uint32_t bytes, DiagnosticSink& sink);
   // Copies raw bytes into block `block` at `offset` (dirty only if changed).
-  bool set_block_bytes(std::string_view block, uint32_t offset, const void* data, uint32_t bytes,
-                       DiagnosticSink& sink);
+  bool set_block_bytes(std::string_view block, uint32_t offset, const void* data, uint32_t bytes, DiagnosticSink& sink);
   // The same for block `index` of program.uniform_blocks(): callers that resolved the name
   // once skip the per-call lookup. "vk-uniform-unknown" for an index past the last block.
-  bool set_block_bytes(uint32_t index, uint32_t offset, const void* data, uint32_t bytes,
-                       DiagnosticSink& sink);
+  bool set_block_bytes(uint32_t index, uint32_t offset, const void* data, uint32_t bytes, DiagnosticSink& sink);
   // Binds a texture (and, for a combined image sampler, its sampler) to the descriptor called
   // `name`; for a separate sampler descriptor pass a null-view texture and the sampler.
   // False and "vk-resource-unknown" if the program has no such image or sampler.

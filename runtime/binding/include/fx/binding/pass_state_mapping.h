@@ -33,10 +33,8 @@ struct PassTargetInfo {
 // fillModeNonSolid, different blend per target without independentBlend). States emulated
 // elsewhere (alpha test in the fragment shader, sRGB write through an sRGB view, scissor
 // enable through the scissor rectangle) are not part of the pipeline state.
-std::optional<PipelineState> to_pipeline_state(const PassStateSummary& pass,
-                                               const PassTargetInfo& target,
-                                               const DeviceFeatures& features,
-                                               DiagnosticSink& sink);
+std::optional<PipelineState> to_pipeline_state(const PassStateSummary& pass, const PassTargetInfo& target,
+                                               const DeviceFeatures& features, DiagnosticSink& sink);
 
 // The Vulkan sampler description for a model sampler. A border colour other than
 // transparent black, opaque black or opaque white is approximated by the nearest of those

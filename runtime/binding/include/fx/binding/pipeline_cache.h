@@ -8,11 +8,11 @@
 #include <optional>
 #include <unordered_map>
 
+#include "fx/binding/shader_program.h"
+#include "fx/binding/vertex_layout.h"
 #include "fx/vulkan/context.h"
 #include "fx/vulkan/pipeline_state.h"
 #include "fx/vulkan/rendering_formats.h"
-#include "fx/binding/shader_program.h"
-#include "fx/binding/vertex_layout.h"
 
 namespace fx::vk {
 
@@ -49,9 +49,8 @@ class PipelineCache {
   // The pipeline for this program, state, vertex input and formats; created on first use.
   // Fields of `state` in `dynamic` are masked out of the key (and must be recorded by the
   // caller as dynamic state). Null (and a diagnostic) when creation fails.
-  VkPipeline get(const ShaderProgram& program, const PipelineState& state,
-                 const VertexInput& vertex_input, const RenderingFormats& formats,
-                 const DynamicStateSet& dynamic, DiagnosticSink& sink);
+  VkPipeline get(const ShaderProgram& program, const PipelineState& state, const VertexInput& vertex_input,
+                 const RenderingFormats& formats, const DynamicStateSet& dynamic, DiagnosticSink& sink);
 
   size_t size() const { return pipelines_.size(); }
   const PipelineCacheStats& stats() const { return stats_; }
@@ -66,8 +65,7 @@ class PipelineCache {
   // Reads a file written by save_file. A missing file gives an empty vector silently; a file
   // for another device or driver, or a corrupt one, gives an empty vector and a
   // "vk-pipeline-cache-stale" note (the cache then starts cold).
-  static std::vector<uint8_t> load_file(const Context& ctx, const std::filesystem::path& path,
-                                        DiagnosticSink& sink);
+  static std::vector<uint8_t> load_file(const Context& ctx, const std::filesystem::path& path, DiagnosticSink& sink);
 
   // Destroys every pipeline now (the device must be done with them).
   void clear();
@@ -76,9 +74,8 @@ class PipelineCache {
   struct KeyHash {
     size_t operator()(const PipelineKey& k) const { return size_t(k.hash()); }
   };
-  VkPipeline create_pipeline(const ShaderProgram& program, const PipelineState& state,
-                             const VertexInput& vertex_input, const RenderingFormats& formats,
-                             const DynamicStateSet& dynamic, DiagnosticSink& sink);
+  VkPipeline create_pipeline(const ShaderProgram& program, const PipelineState& state, const VertexInput& vertex_input,
+                             const RenderingFormats& formats, const DynamicStateSet& dynamic, DiagnosticSink& sink);
 
   const Context* ctx_ = nullptr;
   VkPipelineCache cache_ = VK_NULL_HANDLE;

@@ -27,7 +27,7 @@ enum class DescriptorMode {
 struct ProgramUniformBlock {
   std::string name;
   uint32_t binding = 0;
-  uint32_t size = 0;  // bytes
+  uint32_t size = 0;                         // bytes
   const UniformBlock* reflection = nullptr;  // members, from the first stage using it
 };
 
@@ -38,8 +38,8 @@ struct ProgramImage {
   ImageDim dim = ImageDim::dim_2d;
   uint32_t binding = 0;
   uint32_t count = 1;
-  bool arrayed = false;  // Texture2DArray, TextureCubeArray, Texture1DArray
-  bool shadow = false;   // sampled with depth comparison (SamplerComparisonState, sampler2DShadow)
+  bool arrayed = false;       // Texture2DArray, TextureCubeArray, Texture1DArray
+  bool shadow = false;        // sampled with depth comparison (SamplerComparisonState, sampler2DShadow)
   bool multisampled = false;  // Texture2DMS, Texture2DMSArray: needs an image of more than one sample
 };
 
@@ -50,10 +50,8 @@ class ShaderProgram {
   // "vk-program-tessellation-stages" (a hull shader without a domain shader or the reverse),
   // "vk-descriptor-unsupported" (storage resources, arrays in push mode) and
   // "vk-call-failed".
-  static std::optional<ShaderProgram> create(const Context& ctx,
-                                             const std::vector<const CompiledShader*>& stages,
-                                             const ProgramLayout& layout, DescriptorMode mode,
-                                             DiagnosticSink& sink);
+  static std::optional<ShaderProgram> create(const Context& ctx, const std::vector<const CompiledShader*>& stages,
+                                             const ProgramLayout& layout, DescriptorMode mode, DiagnosticSink& sink);
 
   ShaderProgram() = default;
   ShaderProgram(ShaderProgram&& other) noexcept;

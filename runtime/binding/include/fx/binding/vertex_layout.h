@@ -56,15 +56,13 @@ struct DefaultAttributeData {
 // 0: each vertex reads the same (0, 0, 0, 1), as Direct3D reads elements a vertex declaration
 // lacks. Semantic inputs are matched by semantic, GLSL inputs by name. The caller binds a
 // buffer holding a DefaultAttributeData at `binding`.
-VertexLayout with_default_attributes(VertexLayout layout, std::span<const InterfaceVariable> inputs,
-                                     uint32_t binding);
+VertexLayout with_default_attributes(VertexLayout layout, std::span<const InterfaceVariable> inputs, uint32_t binding);
 
 // Matches every shader input to an attribute by semantic (GLSL inputs, which have none,
 // match by variable name). A shader input with no attribute is "vk-vertex-attribute-missing"
 // naming the semantic and the attributes on offer; attributes the shader does not read are
 // left out. A binding referenced but not declared is "vk-vertex-binding-missing".
-std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout,
-                                               const std::vector<InterfaceVariable>& inputs,
+std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout, const std::vector<InterfaceVariable>& inputs,
                                                DiagnosticSink& sink);
 
 }  // namespace fx::vk

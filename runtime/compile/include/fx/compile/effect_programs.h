@@ -22,24 +22,24 @@ class TaskExecutor;
 // One compiled stage of a pass, with the diagnostics of its compilation.
 struct StageProgram {
   ShaderStage stage = ShaderStage::vertex;
-  TranslationUnit unit;              // what glslang compiled (for tools: --emit-source)
-  CompiledShader shader;             // SPIR-V and reflection (bindings after linking)
+  TranslationUnit unit;   // what glslang compiled (for tools: --emit-source)
+  CompiledShader shader;  // SPIR-V and reflection (bindings after linking)
   std::vector<Diagnostic> diagnostics;
-  double ms = 0;                     // wall time to get this stage (compile, cache or memo)
-  bool reused = false;               // an identical unit of an earlier pass was reused
+  double ms = 0;        // wall time to get this stage (compile, cache or memo)
+  bool reused = false;  // an identical unit of an earlier pass was reused
 };
 
 // A pass's program: its compiled stages and the layout they share.
 struct PassProgram {
   const EffectPass* pass = nullptr;
-  std::vector<StageProgram> stages;  // the stages that have a unit, in pipeline order
-  ProgramLayout layout;              // valid when every stage compiled
-  std::vector<Diagnostic> diagnostics;   // linking (shader-link-error, varyings)
+  std::vector<StageProgram> stages;     // the stages that have a unit, in pipeline order
+  ProgramLayout layout;                 // valid when every stage compiled
+  std::vector<Diagnostic> diagnostics;  // linking (shader-link-error, varyings)
   // Why the pass cannot run as written: assembly stages, fixed-function stages, invalid
   // shader references. The legacy path may emulate some of them.
   std::vector<std::string> unsupported;
-  bool compiled = false;             // every stage with a unit compiled and linked
-  double link_ms = 0;                // link_program time
+  bool compiled = false;  // every stage with a unit compiled and linked
+  double link_ms = 0;     // link_program time
 
   // True when the pass can be drawn with its compiled programs alone.
   bool ok() const { return compiled && unsupported.empty(); }

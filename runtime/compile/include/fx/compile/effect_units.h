@@ -1,7 +1,7 @@
 // The glslang translation units of a parsed effect: one per pass stage. HLSL stages get the
 // part of the effect's shader code their entry reaches (functions, structs, globals,
-// cbuffers) with the effect-only syntax left out and #line directives into the .fx files; GLSL stages get their named blocks
-// joined. Compile-time arguments (`compile ps_2_0 PS(true, 3)`) become a wrapper entry point.
+// cbuffers) with the effect-only syntax left out and #line directives into the .fx files; GLSL stages get their named
+// blocks joined. Compile-time arguments (`compile ps_2_0 PS(true, 3)`) become a wrapper entry point.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -20,11 +20,11 @@ namespace fx {
 
 // How a pass stage is written in the effect.
 enum class StageSourceKind : uint8_t {
-  hlsl,      // `compile vs_2_0 VS()`, `CompileShader(vs_4_0, VS())`, a shader variable
-  glsl,      // `VertexShader = Block;` or `= { Common, Block };`
-  assembly,  // `asm { }` / `decl { } asm { }`: shader model 1 assembly, translated to HLSL
+  hlsl,            // `compile vs_2_0 VS()`, `CompileShader(vs_4_0, VS())`, a shader variable
+  glsl,            // `VertexShader = Block;` or `= { Common, Block };`
+  assembly,        // `asm { }` / `decl { } asm { }`: shader model 1 assembly, translated to HLSL
   fixed_function,  // a D3D9 pass with no vertex or pixel shader: generated HLSL (fixed_function.h)
-  invalid,   // the stage names something that does not exist (reported as a diagnostic)
+  invalid,         // the stage names something that does not exist (reported as a diagnostic)
 };
 const char* to_string(StageSourceKind kind);
 
@@ -32,32 +32,32 @@ const char* to_string(StageSourceKind kind);
 struct StageUnit {
   ShaderStage stage = ShaderStage::vertex;
   StageSourceKind kind = StageSourceKind::hlsl;
-  std::string profile;                  // as written: "vs_2_0", "ps_2_a", "ps_4_0"; GLSL "450"
-  std::string function;                 // HLSL: the effect's function ("PS")
-  std::vector<std::string> glsl_blocks; // GLSL: the blocks, in order
-  std::vector<std::string> arguments;   // compile-time arguments, spelled as HLSL
-  std::string entry_point;              // the unit's entry: "PS", "PS__fx_args" or "main"
-  std::string unsupported;              // why no unit is built (invalid)
+  std::string profile;                   // as written: "vs_2_0", "ps_2_a", "ps_4_0"; GLSL "450"
+  std::string function;                  // HLSL: the effect's function ("PS")
+  std::vector<std::string> glsl_blocks;  // GLSL: the blocks, in order
+  std::vector<std::string> arguments;    // compile-time arguments, spelled as HLSL
+  std::string entry_point;               // the unit's entry: "PS", "PS__fx_args" or "main"
+  std::string unsupported;               // why no unit is built (invalid)
   // Assembly and fixed-function stages: the generated HLSL (fx/emulation/assembly.h,
   // fx/emulation/fixed_function.h) and what emulates it ("ps.1.1 assembly translated to
   // HLSL"); `profile` is the assembly's ("ps_1_1"), "fixed_function" for generated stages.
   std::string translated;
   std::string emulation;
-  SourceRange range;                    // the state assignment naming the shader
+  SourceRange range;  // the state assignment naming the shader
   // A shader array indexed in the pass (`VertexShader = (VSArray[VSIndices[ShaderIndex]]);`,
   // as the XNA stock effects choose their shader permutations): every element in order, and
   // which one the index selects with the parameters' initial values. The stage's own fields
   // are that element's, so the pass compiles and draws it.
   std::vector<StageUnit> choices;
   size_t choice = 0;
-  std::string selector;                 // the index expression, spelled
+  std::string selector;  // the index expression, spelled
 };
 
 // One pass of one technique with the stages it names, in pipeline order.
 struct EffectPass {
-  std::string group;      // fxgroup name, empty outside groups
-  std::string technique;  // name; "technique<i>" when unnamed
-  std::string pass;       // name; "pass<j>" when unnamed
+  std::string group;                             // fxgroup name, empty outside groups
+  std::string technique;                         // name; "technique<i>" when unnamed
+  std::string pass;                              // name; "pass<j>" when unnamed
   uint32_t technique_index = 0, pass_index = 0;  // technique index counts all techniques
   std::vector<StageUnit> stages;
   // Why the pass cannot run as written beyond its stages: fixed-function vertex or pixel
@@ -84,8 +84,7 @@ class EffectUnits {
  public:
   // Problems that are errors in the effect (an unknown shader function or GLSL block, too
   // many compile-time arguments) are reported into `sink` and mark the stage invalid.
-  EffectUnits(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& sink,
-              EffectUnitOptions options = {});
+  EffectUnits(const ast::Effect& effect, const SourceManager& sm, DiagnosticSink& sink, EffectUnitOptions options = {});
 
   // Every pass of every technique (fxgroups included), in source order.
   const std::vector<EffectPass>& passes() const { return passes_; }
@@ -131,11 +130,11 @@ class EffectUnits {
   struct DeclText {
     std::vector<std::string> names;  // a function's or type's name; every declarator; cbuffer members
     size_t begin = 0, end = 0;
-    std::vector<std::string> refs;   // identifiers in its tokens (calls, types, globals)
+    std::vector<std::string> refs;  // identifiers in its tokens (calls, types, globals)
     bool function = false;
-    bool always = false;             // a #pragma: in every unit
-    bool stage_only = false;         // has a stream or patch parameter (geometry, hull, domain)
-    std::string dynamic_linkage;     // the interface (instance) it uses, "" for none
+    bool always = false;          // a #pragma: in every unit
+    bool stage_only = false;      // has a stream or patch parameter (geometry, hull, domain)
+    std::string dynamic_linkage;  // the interface (instance) it uses, "" for none
     // A function: where in hlsl_ its body starts, for the initializations of the statics an
     // entry point reaches (0: none, the effect lowers no static).
     size_t prologue = 0;
@@ -160,7 +159,7 @@ class EffectUnits {
   std::string code_for(const std::vector<uint32_t>& reached, std::string_view entry = {}) const;
   // The initializations of the lowered statics among `reached` declared before `before`.
   std::string initializations(const std::vector<uint32_t>& reached, uint32_t before) const;
-  std::optional<StageUnit> check_;  // uncalled_check()
+  std::optional<StageUnit> check_;     // uncalled_check()
   std::vector<std::string> uncalled_;  // the functions it checks
   bool pre_release_ = false;
   std::vector<std::string> symbols_;

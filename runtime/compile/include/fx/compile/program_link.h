@@ -12,7 +12,12 @@ namespace fx {
 
 // Descriptor type of a program binding (what VkDescriptorSetLayoutBinding needs).
 enum class DescriptorKind : uint8_t {
-  uniform_buffer, storage_buffer, combined_image_sampler, sampled_image, sampler, storage_image
+  uniform_buffer,
+  storage_buffer,
+  combined_image_sampler,
+  sampled_image,
+  sampler,
+  storage_image
 };
 
 // One descriptor shared by the stages that use it.
@@ -20,8 +25,8 @@ struct ProgramBinding {
   std::string name;
   DescriptorKind kind = DescriptorKind::uniform_buffer;
   uint32_t set = 0, binding = 0;
-  uint32_t count = 1;        // descriptor array size
-  uint32_t stage_mask = 0;   // bit (1 << ShaderStage) per stage that uses it
+  uint32_t count = 1;       // descriptor array size
+  uint32_t stage_mask = 0;  // bit (1 << ShaderStage) per stage that uses it
 };
 
 // The program's descriptor layout, in binding order.

@@ -18,13 +18,13 @@ class SpirvCache;
 // `messages`) or the unit was rejected before glslang ran (bad profile or stage).
 struct CompiledShader {
   bool ok = false;
-  std::vector<uint32_t> spirv;        // SPIR-V words; empty unless ok
-  std::string entry_point;            // OpEntryPoint name: the unit's entry point, unchanged
+  std::vector<uint32_t> spirv;  // SPIR-V words; empty unless ok
+  std::string entry_point;      // OpEntryPoint name: the unit's entry point, unchanged
   ShaderReflection reflection;
-  std::vector<ShaderMessage> messages;  // parsed from info_log, in log order
-  std::string info_log;               // glslang's raw parse + link + SPIR-V log
+  std::vector<ShaderMessage> messages;             // parsed from info_log, in log order
+  std::string info_log;                            // glslang's raw parse + link + SPIR-V log
   double parse_ms = 0, link_ms = 0, total_ms = 0;  // wall time of this call
-  bool from_cache = false;            // true when no glslang work was done
+  bool from_cache = false;                         // true when no glslang work was done
   // False for HLSL that was valid without spirv-opt's legalization and skipped it (most
   // shaders; it costs ten times the rest of a compile). Its code still loads every input it
   // declares: link_program legalizes it when the stage before does not write one of them.
@@ -39,8 +39,7 @@ class ShaderCompiler {
   // `cache` (optional, not owned) is consulted before glslang and filled after it.
   // `workers` (optional, not owned): glslang runs in those processes instead of this one
   // (fx/compile/compile_workers.h).
-  explicit ShaderCompiler(CompileOptions options = {}, SpirvCache* cache = nullptr,
-                          CompileWorkers* workers = nullptr);
+  explicit ShaderCompiler(CompileOptions options = {}, SpirvCache* cache = nullptr, CompileWorkers* workers = nullptr);
 
   // Compiles `unit`; never throws. Errors are in the result's messages.
   CompiledShader compile(const TranslationUnit& unit) const;

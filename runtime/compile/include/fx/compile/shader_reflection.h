@@ -28,10 +28,10 @@ enum class MatrixLayout : uint8_t { none, column_major, row_major };
 struct BlockMember {
   std::string name;
   ReflectedType type;
-  uint32_t offset = 0;        // bytes from the block start
-  uint32_t size = 0;          // bytes, arrays included
-  uint32_t array_stride = 0;  // bytes between array elements; 0 when not an array
-  uint32_t matrix_stride = 0; // bytes between matrix columns (or rows when row_major)
+  uint32_t offset = 0;         // bytes from the block start
+  uint32_t size = 0;           // bytes, arrays included
+  uint32_t array_stride = 0;   // bytes between array elements; 0 when not an array
+  uint32_t matrix_stride = 0;  // bytes between matrix columns (or rows when row_major)
   MatrixLayout matrix_layout = MatrixLayout::none;
 };
 
@@ -39,7 +39,7 @@ struct BlockMember {
 struct UniformBlock {
   std::string name;
   uint32_t set = 0, binding = 0;
-  uint32_t size = 0;  // bytes
+  uint32_t size = 0;                 // bytes
   std::vector<BlockMember> members;  // in offset order
 };
 
@@ -52,11 +52,11 @@ struct ImageBinding {
   std::string name;
   Kind kind = Kind::combined_image_sampler;
   ImageDim dim = ImageDim::dim_2d;
-  bool arrayed = false;      // texture arrays (Texture2DArray, sampler2DArray)
-  bool shadow = false;       // comparison samplers
+  bool arrayed = false;  // texture arrays (Texture2DArray, sampler2DArray)
+  bool shadow = false;   // comparison samplers
   uint32_t set = 0, binding = 0;
-  uint32_t array_size = 0;   // descriptor count of an array of textures; 0 when not an array
-  bool multisampled = false; // Texture2DMS, Texture2DMSArray (SPIR-V OpTypeImage MS=1)
+  uint32_t array_size = 0;    // descriptor count of an array of textures; 0 when not an array
+  bool multisampled = false;  // Texture2DMS, Texture2DMSArray (SPIR-V OpTypeImage MS=1)
 };
 
 // A stage input or output (vertex attributes are the vertex stage's inputs), with its HLSL
@@ -65,7 +65,7 @@ struct InterfaceVariable {
   std::string name;
   uint32_t location = 0;
   ReflectedType type;
-  std::string semantic;        // upper-case, e.g. "POSITION", "TEXCOORD0"; empty for GLSL
+  std::string semantic;  // upper-case, e.g. "POSITION", "TEXCOORD0"; empty for GLSL
   // The code never reads it (spirv-opt dropped its semantic decoration; the semantic is the
   // declaration's): linking places it but does not warn that nothing writes it.
   bool unread = false;

@@ -26,10 +26,10 @@ SpirvCacheKey spirv_cache_key(const TranslationUnit& unit, const CompileOptions&
 // Counters for tests and the CLI's --stats.
 struct SpirvCacheStats {
   uint64_t memory_hits = 0, disk_hits = 0, misses = 0, stores = 0;
-  uint64_t disk_rejects = 0;      // files with a bad header, size or checksum (then replaced)
-  uint64_t disk_write_errors = 0; // the directory was not writable; memory still works
-  uint64_t evictions = 0;         // in-memory entries dropped to stay within the budget
-  uint64_t memory_bytes = 0;      // what the in-memory entries hold now (estimated)
+  uint64_t disk_rejects = 0;       // files with a bad header, size or checksum (then replaced)
+  uint64_t disk_write_errors = 0;  // the directory was not writable; memory still works
+  uint64_t evictions = 0;          // in-memory entries dropped to stay within the budget
+  uint64_t memory_bytes = 0;       // what the in-memory entries hold now (estimated)
 };
 
 // Thread-safe. Only successful compiles are stored. The in-memory entries are bounded by a

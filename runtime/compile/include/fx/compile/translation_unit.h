@@ -43,7 +43,7 @@ struct TranslationUnit {
   std::string entry_point = "main";  // the function in `source`; kept as the SPIR-V entry name
   std::string profile;               // "vs_2_0" ... "ps_5_0", "gs_4_0", "cs_5_0", "glsl", "450"
   std::vector<ShaderDefine> defines;
-  std::string name = "<shader>";     // file name glslang reports before the first #line
+  std::string name = "<shader>";  // file name glslang reports before the first #line
 };
 
 // Vulkan version the SPIR-V is produced for: 1.0 -> SPIR-V 1.0, 1.1+ -> SPIR-V 1.3.
@@ -52,7 +52,7 @@ enum class VulkanTarget : uint8_t { vulkan_1_0, vulkan_1_1, vulkan_1_2, vulkan_1
 // Compiler switches that change the produced SPIR-V (and so are part of the cache key).
 struct CompileOptions {
   VulkanTarget target = VulkanTarget::vulkan_1_1;
-  bool debug_info = false;          // OpLine/OpSource for debuggers (RenderDoc)
+  bool debug_info = false;  // OpLine/OpSource for debuggers (RenderDoc)
   // Keeps SPV_GOOGLE_hlsl_functionality1 semantic strings in the module. Off by default:
   // drivers need VK_GOOGLE_hlsl_functionality1 for them; reflection reads them first.
   bool keep_hlsl_semantics = false;

@@ -52,11 +52,11 @@ struct AssemblyOptions {
 };
 
 struct AssemblyTranslation {
-  std::string hlsl;                    // declarations, input/output structs and the entry
+  std::string hlsl;  // declarations, input/output structs and the entry
   std::string entry_point = "fx_main";
-  std::string profile;                 // what glslang compiles it as: "vs_3_0" / "ps_3_0"
-  std::string emulation;               // "vs.1.1 assembly translated to HLSL"
-  std::vector<uint32_t> stages;        // texture stages a pixel shader samples
+  std::string profile;           // what glslang compiles it as: "vs_3_0" / "ps_3_0"
+  std::string emulation;         // "vs.1.1 assembly translated to HLSL"
+  std::vector<uint32_t> stages;  // texture stages a pixel shader samples
 };
 
 // The HLSL for `program`. Instructions the translation does not cover are errors at the

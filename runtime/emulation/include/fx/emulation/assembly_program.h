@@ -23,18 +23,28 @@ struct AsmVersion {
 };
 
 // A register file. Output files are the vertex shader's (oPos, oD#, oT#, oFog, oPts).
-enum class RegisterFile : uint8_t { temp, input, constant, texture, address, out_position, out_color,
-                                    out_texcoord, out_fog, out_point_size };
+enum class RegisterFile : uint8_t {
+  temp,
+  input,
+  constant,
+  texture,
+  address,
+  out_position,
+  out_color,
+  out_texcoord,
+  out_fog,
+  out_point_size
+};
 
 // One source operand: `-r1.zxyw`, `1-t0`, `v0_bx2`, `c[a0.x + 4]`, `r0.a`.
 struct AsmSource {
   RegisterFile file = RegisterFile::temp;
   uint32_t index = 0;
-  bool relative = false;                 // c[a0.x + index]
+  bool relative = false;  // c[a0.x + index]
   std::array<uint8_t, 4> swizzle{0, 1, 2, 3};
-  bool negate = false, invert = false;   // `-x`, `1-x`
+  bool negate = false, invert = false;         // `-x`, `1-x`
   bool bias = false, bx2 = false, x2 = false;  // _bias, _bx2, _x2 (ps.1.4)
-  uint8_t divide = 0;                    // ps.1.4 _dz/_db (3: by z), _dw/_da (4: by w)
+  uint8_t divide = 0;                          // ps.1.4 _dz/_db (3: by z), _dw/_da (4: by w)
   SourceRange range;
 };
 
@@ -47,24 +57,24 @@ struct AsmDest {
 };
 
 struct AsmInstruction {
-  std::string op;            // base opcode, lower case: "dp3", "texm3x2pad", "def", "phase"
-  int scale = 0;             // result scaled by 2^scale: _x2 1, _x4 2, _x8 3, _d2 -1, _d4 -2, _d8 -3
-  bool saturate = false;     // _sat
-  bool coissue = false;      // `+` in front: runs alongside the previous instruction
+  std::string op;         // base opcode, lower case: "dp3", "texm3x2pad", "def", "phase"
+  int scale = 0;          // result scaled by 2^scale: _x2 1, _x4 2, _x8 3, _d2 -1, _d4 -2, _d8 -3
+  bool saturate = false;  // _sat
+  bool coissue = false;   // `+` in front: runs alongside the previous instruction
   bool has_dest = false;
   AsmDest dest;
   std::vector<AsmSource> sources;
   std::array<double, 4> literal{0, 0, 0, 0};  // def c#, x, y, z, w
-  std::string usage;         // vs dcl_<usage><n>: "position", "texcoord"
+  std::string usage;                          // vs dcl_<usage><n>: "position", "texcoord"
   uint32_t usage_index = 0;
-  uint32_t phase = 0;        // ps.1.4: 1 after `phase`
+  uint32_t phase = 0;  // ps.1.4: 1 after `phase`
   SourceRange range;
 };
 
 // A vertex input register and the mesh semantic it reads.
 struct AsmInput {
   uint32_t reg = 0;
-  std::string semantic;      // "POSITION", "NORMAL", "TEXCOORD0", "TANGENT"
+  std::string semantic;  // "POSITION", "NORMAL", "TEXCOORD0", "TANGENT"
 };
 
 struct AsmProgram {

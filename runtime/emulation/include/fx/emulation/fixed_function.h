@@ -31,11 +31,32 @@ namespace fx {
 
 // D3DTEXTUREOP, with D3D's values.
 enum class TextureOp : uint8_t {
-  disable = 1, select_arg1, select_arg2, modulate, modulate_2x, modulate_4x, add, add_signed,
-  add_signed_2x, subtract, add_smooth, blend_diffuse_alpha, blend_texture_alpha, blend_factor_alpha,
-  blend_texture_alpha_pm, blend_current_alpha, premodulate, modulate_alpha_add_color,
-  modulate_color_add_alpha, modulate_inv_alpha_add_color, modulate_inv_color_add_alpha, bump_env_map,
-  bump_env_map_luminance, dot_product3, multiply_add, lerp,
+  disable = 1,
+  select_arg1,
+  select_arg2,
+  modulate,
+  modulate_2x,
+  modulate_4x,
+  add,
+  add_signed,
+  add_signed_2x,
+  subtract,
+  add_smooth,
+  blend_diffuse_alpha,
+  blend_texture_alpha,
+  blend_factor_alpha,
+  blend_texture_alpha_pm,
+  blend_current_alpha,
+  premodulate,
+  modulate_alpha_add_color,
+  modulate_color_add_alpha,
+  modulate_inv_alpha_add_color,
+  modulate_inv_color_add_alpha,
+  bump_env_map,
+  bump_env_map_luminance,
+  dot_product3,
+  multiply_add,
+  lerp,
 };
 inline constexpr int kTextureOpFirst = 1, kTextureOpLast = 26;
 // "Modulate2x" ... as the state table spells it.
@@ -43,8 +64,8 @@ const char* to_string(TextureOp op);
 
 // D3DTA_* texture arguments: a register in the low bits and modifier flags.
 namespace texture_arg {
-inline constexpr uint32_t diffuse = 0, current = 1, texture = 2, tfactor = 3, specular = 4, temp = 5,
-                          constant = 6, select_mask = 0xF, complement = 0x10, alpha_replicate = 0x20;
+inline constexpr uint32_t diffuse = 0, current = 1, texture = 2, tfactor = 3, specular = 4, temp = 5, constant = 6,
+                          select_mask = 0xF, complement = 0x10, alpha_replicate = 0x20;
 }
 
 // The texture a stage samples, as its sampler type.
@@ -93,11 +114,11 @@ struct TextureStageState {
   uint32_t result_arg = texture_arg::current;  // current or temp
   uint32_t tex_coord_index = 0;                // set in the low 16 bits, texcoord_gen in the high
   uint32_t texture_transform_flags = texture_transform::disable;
-  FixedMatrix texture_transform;               // TextureTransform[n] (D3DTS_TEXTUREn)
-  std::array<FixedScalar, 4> bump_env_mat{};   // 00, 01, 10, 11
+  FixedMatrix texture_transform;              // TextureTransform[n] (D3DTS_TEXTUREn)
+  std::array<FixedScalar, 4> bump_env_mat{};  // 00, 01, 10, 11
   FixedScalar bump_env_lscale, bump_env_loffset;
-  FixedVector constant;                        // D3DTSS_CONSTANT (D3DTA_CONSTANT)
-  StageTexture texture = StageTexture::none;   // whether Texture[n] is bound, and its type
+  FixedVector constant;                       // D3DTSS_CONSTANT (D3DTA_CONSTANT)
+  StageTexture texture = StageTexture::none;  // whether Texture[n] is bound, and its type
   bool operator==(const TextureStageState&) const = default;
 };
 inline constexpr int kTextureStages = 8;
@@ -149,21 +170,21 @@ struct FixedFunctionState {
     bool operator==(const VertexShaderOutputs&) const = default;
   } vertex_shader_outputs;
   // Vertex processing (ignored with vertex_shader).
-  bool pretransformed = false;        // XYZRHW positions (D3DFVF_XYZRHW)
-  bool vertex_diffuse = true, vertex_specular = true;  // the mesh has COLOR0 / COLOR1
-  bool vertex_normal = true;          // the mesh has NORMAL
+  bool pretransformed = false;                                          // XYZRHW positions (D3DFVF_XYZRHW)
+  bool vertex_diffuse = true, vertex_specular = true;                   // the mesh has COLOR0 / COLOR1
+  bool vertex_normal = true;                                            // the mesh has NORMAL
   std::array<uint8_t, 8> vertex_texcoord_size{2, 2, 2, 2, 2, 2, 2, 2};  // components of TEXCOORDn
   FixedMatrix world, view, projection;
-  bool lighting = true;               // D3DRS_LIGHTING
+  bool lighting = true;  // D3DRS_LIGHTING
   std::array<FixedLight, kFixedLights> lights{};
   FixedVector material_diffuse, material_ambient, material_specular, material_emissive;
   FixedScalar material_power;
-  FixedVector ambient;                // D3DRS_AMBIENT
+  FixedVector ambient;  // D3DRS_AMBIENT
   bool specular_enable = false, color_vertex = true, local_viewer = true, normalize_normals = false;
   MaterialSource diffuse_source = MaterialSource::color1, specular_source = MaterialSource::color2,
                  ambient_source = MaterialSource::material, emissive_source = MaterialSource::material;
   FixedScalar point_size{1, {}};
-  bool point_size_written = false;    // a point state was set: the vertex shader writes PSIZE
+  bool point_size_written = false;  // a point state was set: the vertex shader writes PSIZE
   // PointScaleEnable: size = Vh * PointSize * sqrt(1 / (A + B De + C De^2)), De the eye
   // distance, Vh the viewport height (2 / |fx_ff_screen_to_clip.y|); then clamped to
   // [PointSize_Min, PointSize_Max].
@@ -182,7 +203,7 @@ struct FixedFunctionState {
   // Alpha test (emulated by a discard).
   bool alpha_test = false;
   CompareOp alpha_func = CompareOp::always;
-  FixedScalar alpha_ref;              // 0..255
+  FixedScalar alpha_ref;  // 0..255
 
   bool operator==(const FixedFunctionState&) const = default;
   static std::array<TextureStageState, kTextureStages> default_stages();

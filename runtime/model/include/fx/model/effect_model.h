@@ -38,10 +38,10 @@ const Annotation* find_annotation(const std::vector<Annotation>& list, std::stri
 struct Parameter {
   std::string name;
   Type type;
-  std::string semantic;               // as written (lookups ignore case)
+  std::string semantic;  // as written (lookups ignore case)
   std::vector<Annotation> annotations;
-  std::optional<Value> default_value; // converted to `type`; absent when not initialised
-  uint32_t storage = 0;               // ast::StorageClass bits
+  std::optional<Value> default_value;  // converted to `type`; absent when not initialised
+  uint32_t storage = 0;                // ast::StorageClass bits
   bool is_shared() const { return storage & ast::kShared; }
   bool is_static() const { return storage & ast::kStatic; }
   bool is_const() const { return storage & ast::kConst; }
@@ -49,11 +49,11 @@ struct Parameter {
   // Lands in a uniform block or a resource binding the app can set (not static, not a
   // string, shader or state object).
   bool shader_visible = false;
-  std::string constant_buffer;        // enclosing cbuffer/tbuffer ("" = the global block)
-  std::string register_binding;       // `: register(c0)` as written
-  SourceRange range;                  // the declaration
+  std::string constant_buffer;   // enclosing cbuffer/tbuffer ("" = the global block)
+  std::string register_binding;  // `: register(c0)` as written
+  SourceRange range;             // the declaration
   SourceRange name_range;
-  const ast::Variable* decl = nullptr;// into the ParsedEffect the model was built from
+  const ast::Variable* decl = nullptr;  // into the ParsedEffect the model was built from
 };
 
 // A texture parameter: a file, a procedural table, or set by the app.
@@ -73,7 +73,7 @@ struct SamplerInfo {
   uint32_t state_object = kNoIndex;  // the SamplerState object (D3D10 form)
   std::string name;
   SamplerDesc desc;
-  uint32_t texture = kNoIndex;       // the texture parameter `Texture = <t>` names
+  uint32_t texture = kNoIndex;  // the texture parameter `Texture = <t>` names
   SourceRange range;
 };
 
@@ -86,20 +86,24 @@ enum class ShaderSource : uint8_t { hlsl_compile, glsl_blocks, asm_block, null }
 struct ShaderBinding {
   PassStage stage = PassStage::vertex;
   ShaderSource source = ShaderSource::null;
-  std::string profile;                 // "vs_2_0", "ps_4_0", "glsl" for GLSL blocks
-  std::string entry;                   // entry function
-  std::vector<Value> args;             // folded compile-time arguments, in order
-  const ast::Expr* expr = nullptr;     // the compile/asm expression (for the shader builder)
-  std::vector<std::string> glsl_blocks;// GLSL block names, in order
-  ast::TokenSpan asm_code, decl_code;  // asm { } and decl { } tokens
-  std::string variable;                // the shader variable it came through ("" if inline)
+  std::string profile;                   // "vs_2_0", "ps_4_0", "glsl" for GLSL blocks
+  std::string entry;                     // entry function
+  std::vector<Value> args;               // folded compile-time arguments, in order
+  const ast::Expr* expr = nullptr;       // the compile/asm expression (for the shader builder)
+  std::vector<std::string> glsl_blocks;  // GLSL block names, in order
+  ast::TokenSpan asm_code, decl_code;    // asm { } and decl { } tokens
+  std::string variable;                  // the shader variable it came through ("" if inline)
   SourceRange range;
 };
 
 // What a resolved state value is.
 enum class StateValueKind : uint8_t {
-  invalid,       // could not be resolved (a diagnostic was reported)
-  boolean, integer, enumeration, floating, vector,
+  invalid,  // could not be resolved (a diagnostic was reported)
+  boolean,
+  integer,
+  enumeration,
+  floating,
+  vector,
   parameter,     // `<name>` or a name of a parameter (texture, sampler, matrix, constants)
   shader,        // index into Pass::shaders
   state_object,  // index into EffectModel::state_objects
@@ -107,16 +111,16 @@ enum class StateValueKind : uint8_t {
 };
 
 struct ResolvedState {
-  const StateInfo* info = nullptr;   // the state table row
-  uint32_t index = 0;                // `Texture[3]` -> 3 (0 when unindexed)
+  const StateInfo* info = nullptr;  // the state table row
+  uint32_t index = 0;               // `Texture[3]` -> 3 (0 when unindexed)
   bool indexed = false;
   StateValueKind kind = StateValueKind::invalid;
-  int64_t integer = 0;               // boolean (0/1), integer, enumeration and flags
+  int64_t integer = 0;  // boolean (0/1), integer, enumeration and flags
   double floating = 0;
   std::array<float, 4> vector{0, 0, 0, 0};  // float4 and colours (D3DCOLOR -> r,g,b,a)
-  Value constant;                    // the folded value for shader_constant literals
-  uint32_t target = kNoIndex;        // parameter / shader / state object index
-  std::vector<Value> call_args;      // SetBlendState(b, factor, mask): factor, mask
+  Value constant;                           // the folded value for shader_constant literals
+  uint32_t target = kNoIndex;               // parameter / shader / state object index
+  std::vector<Value> call_args;             // SetBlendState(b, factor, mask): factor, mask
   SourceRange range;
 };
 
@@ -133,15 +137,15 @@ struct StateObjectInfo {
   std::string name;
   std::vector<ResolvedState> states;
   std::vector<Annotation> annotations;
-  uint32_t sampler = kNoIndex;       // SamplerState objects: index into samplers
+  uint32_t sampler = kNoIndex;  // SamplerState objects: index into samplers
   SourceRange range;
 };
 
 struct PassInfo {
   std::string name;
   std::vector<Annotation> annotations;
-  std::vector<ResolvedState> states;       // in source order
-  std::vector<ShaderBinding> shaders;      // one per stage set (later ones replace)
+  std::vector<ResolvedState> states;   // in source order
+  std::vector<ShaderBinding> shaders;  // one per stage set (later ones replace)
   std::vector<UnsupportedState> unsupported;
   PassStateSummary summary;
   SourceRange range;
@@ -160,8 +164,8 @@ bool pixel_shader_replaces_or_reads(const StateInfo& info);
 
 struct TechniqueInfo {
   std::string name;
-  int version = 9;                         // 9, 10, 11
-  std::string group;                       // enclosing fxgroup ("" if none)
+  int version = 9;    // 9, 10, 11
+  std::string group;  // enclosing fxgroup ("" if none)
   std::vector<Annotation> annotations;
   std::vector<PassInfo> passes;
   SourceRange range;
@@ -178,9 +182,9 @@ struct EffectModel {
   std::vector<SamplerInfo> samplers;
   std::vector<StateObjectInfo> state_objects;
   std::vector<TechniqueInfo> techniques;
-  std::vector<std::string> functions;       // names of shader functions, in order
-  std::vector<std::string> glsl_blocks;     // names of GLSL blocks, in order
-  const ast::Effect* ast = nullptr;         // the tree it was built from (must outlive it)
+  std::vector<std::string> functions;    // names of shader functions, in order
+  std::vector<std::string> glsl_blocks;  // names of GLSL blocks, in order
+  const ast::Effect* ast = nullptr;      // the tree it was built from (must outlive it)
 
   // Lookups by exact name; kNoIndex / nullptr when absent.
   uint32_t find_parameter(std::string_view name) const;

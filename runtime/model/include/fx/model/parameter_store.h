@@ -14,8 +14,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "fx/model/effect_model.h"
 #include "fx/model/draw_state.h"
+#include "fx/model/effect_model.h"
 
 namespace fx {
 
@@ -50,10 +50,10 @@ enum class HostMatrixOrder : uint8_t { row_major, column_major };
 // Placement of one parameter (or member path `light.dir`, `bones[3]`) in a uniform block.
 struct BlockMemberLayout {
   std::string name;
-  uint32_t offset = 0;         // bytes
-  uint32_t size = 0;           // bytes, arrays included
-  uint32_t array_stride = 0;   // bytes between array elements (0: not an array)
-  uint32_t matrix_stride = 16; // bytes between registers of a matrix
+  uint32_t offset = 0;                            // bytes
+  uint32_t size = 0;                              // bytes, arrays included
+  uint32_t array_stride = 0;                      // bytes between array elements (0: not an array)
+  uint32_t matrix_stride = 16;                    // bytes between registers of a matrix
   MatrixOrder order = MatrixOrder::column_major;  // HLSL meaning (see docs/parameters.md)
 };
 
@@ -73,7 +73,7 @@ class ParameterPool {
   struct Entry {
     std::string name;
     Type type;
-    uint32_t offset = 0;   // into words_
+    uint32_t offset = 0;  // into words_
     uint32_t count = 0;
     uint64_t version = 1;  // bumped on every write, for the stores' dirty tracking
   };

@@ -13,13 +13,37 @@ namespace fx {
 
 enum class CompareOp : uint8_t { never, less, equal, less_or_equal, greater, not_equal, greater_or_equal, always };
 enum class BlendFactor : uint8_t {
-  zero, one, src_color, one_minus_src_color, dst_color, one_minus_dst_color, src_alpha,
-  one_minus_src_alpha, dst_alpha, one_minus_dst_alpha, constant_color, one_minus_constant_color,
-  constant_alpha, one_minus_constant_alpha, src_alpha_saturate, src1_color, one_minus_src1_color,
-  src1_alpha, one_minus_src1_alpha,
+  zero,
+  one,
+  src_color,
+  one_minus_src_color,
+  dst_color,
+  one_minus_dst_color,
+  src_alpha,
+  one_minus_src_alpha,
+  dst_alpha,
+  one_minus_dst_alpha,
+  constant_color,
+  one_minus_constant_color,
+  constant_alpha,
+  one_minus_constant_alpha,
+  src_alpha_saturate,
+  src1_color,
+  one_minus_src1_color,
+  src1_alpha,
+  one_minus_src1_alpha,
 };
 enum class BlendOp : uint8_t { add, subtract, reverse_subtract, min, max };
-enum class StencilOp : uint8_t { keep, zero, replace, increment_clamp, decrement_clamp, invert, increment_wrap, decrement_wrap };
+enum class StencilOp : uint8_t {
+  keep,
+  zero,
+  replace,
+  increment_clamp,
+  decrement_clamp,
+  invert,
+  increment_wrap,
+  decrement_wrap
+};
 enum class CullMode : uint8_t { none = 0, front = 1, back = 2 };
 enum class FrontFace : uint8_t { counter_clockwise = 0, clockwise = 1 };
 enum class FillMode : uint8_t { solid = 0, wireframe = 1, point = 2 };
@@ -54,8 +78,8 @@ struct PassStateSummary {
   CullMode cull = CullMode::back;
   FrontFace front_face = FrontFace::clockwise;
   FillMode fill = FillMode::solid;
-  float depth_bias = 0;             // D3D9: depth-buffer units (float); D3D10+: integer units
-  bool depth_bias_normalized = true;// true when depth_bias came from D3D9 (fraction of range)
+  float depth_bias = 0;               // D3D9: depth-buffer units (float); D3D10+: integer units
+  bool depth_bias_normalized = true;  // true when depth_bias came from D3D9 (fraction of range)
   float depth_bias_slope = 0;
   float depth_bias_clamp = 0;
   bool depth_clip = true;
@@ -72,10 +96,10 @@ struct PassStateSummary {
   std::array<TargetBlend, kMaxRenderTargets> blend{};
   std::array<float, 4> blend_constants{0, 0, 0, 0};
   bool alpha_to_coverage = false;
-  bool alpha_test = false;           // emulated: the backend adds a discard
+  bool alpha_test = false;  // emulated: the backend adds a discard
   CompareOp alpha_compare = CompareOp::always;
-  uint32_t alpha_ref = 0;            // 0..255 as in D3D9 (compare alpha*255 with it)
-  bool srgb_write = false;           // emulated: render through an sRGB view
+  uint32_t alpha_ref = 0;   // 0..255 as in D3D9 (compare alpha*255 with it)
+  bool srgb_write = false;  // emulated: render through an sRGB view
   bool multisample = true;
   uint32_t sample_mask = 0xFFFFFFFF;
   bool operator==(const PassStateSummary&) const = default;
@@ -91,8 +115,8 @@ struct SamplerDesc {
   uint32_t max_anisotropy = 1;
   float lod_bias = 0;
   float min_lod = 0, max_lod = 1000.0f;
-  uint32_t max_mip_level = 0;        // D3D9 MaxMipLevel: most detailed level used (min LOD)
-  bool srgb = false;                 // D3D9 SRGBTexture: decode through an sRGB view
+  uint32_t max_mip_level = 0;  // D3D9 MaxMipLevel: most detailed level used (min LOD)
+  bool srgb = false;           // D3D9 SRGBTexture: decode through an sRGB view
   bool compare_enable = false;
   CompareOp compare = CompareOp::never;
   bool operator==(const SamplerDesc&) const = default;

@@ -17,9 +17,11 @@ namespace fx {
 
 // The class of a type.
 enum class TypeClass : uint8_t {
-  error,         // could not be resolved (a diagnostic was reported)
+  error,  // could not be resolved (a diagnostic was reported)
   void_type,
-  scalar, vector, matrix,
+  scalar,
+  vector,
+  matrix,
   structure,
   string,
   texture,       // texture, texture2D, Texture2D<float4>, ...
@@ -33,13 +35,28 @@ enum class BaseType : uint8_t { boolean, int32, uint32, half, float32, float64 }
 
 // Texture shapes. `texture` (D3D9, untyped) is `any`.
 enum class TextureShape : uint8_t {
-  any, tex1d, tex2d, tex3d, cube, tex1d_array, tex2d_array, tex2dms, tex2dms_array,
-  cube_array, buffer,
+  any,
+  tex1d,
+  tex2d,
+  tex3d,
+  cube,
+  tex1d_array,
+  tex2d_array,
+  tex2dms,
+  tex2dms_array,
+  cube_array,
+  buffer,
 };
 
 // Sampler kinds; sampler_object covers D3D10 SamplerState, comparison SamplerComparisonState.
 enum class SamplerShape : uint8_t {
-  any, s1d, s2d, s3d, cube, sampler_object, comparison,
+  any,
+  s1d,
+  s2d,
+  s3d,
+  cube,
+  sampler_object,
+  comparison,
 };
 
 // How a matrix is laid out in a constant buffer in HLSL terms: column_major (the fxc
@@ -111,8 +128,8 @@ class TypeTable {
   // Resolves a type as written plus the declaration's storage (row_major/column_major)
   // and array dimensions. Unknown names -> `unknown-type` with a did-you-mean;
   // bad dimensions -> `bad-array-size`. Returns TypeClass::error after a diagnostic.
-  Type resolve(const ast::TypeRef& ref, uint32_t storage, const ast::List<ast::ExprPtr>& dims,
-               DiagnosticSink& diags, const ConstantScope* scope = nullptr) const;
+  Type resolve(const ast::TypeRef& ref, uint32_t storage, const ast::List<ast::ExprPtr>& dims, DiagnosticSink& diags,
+               const ConstantScope* scope = nullptr) const;
   // Resolves a name alone (no diagnostics); TypeClass::error if unknown.
   Type lookup(std::string_view name) const;
   const std::map<std::string, std::shared_ptr<const StructType>, std::less<>>& structs() const { return structs_; }

@@ -43,8 +43,8 @@ Value make_string(std::string text);
 using ConstantLookup = std::function<const Value*(std::string_view name)>;
 
 struct ConstantScope {
-  ConstantLookup lookup;            // may be empty
-  const TypeTable* types = nullptr; // for constructors and casts of typedef/struct names
+  ConstantLookup lookup;             // may be empty
+  const TypeTable* types = nullptr;  // for constructors and casts of typedef/struct names
 };
 
 // Folds an expression to a constant. Literals, constructors (`float4(0,0,0,1)`), `{}`
@@ -60,7 +60,6 @@ std::optional<Value> fold_constant(const ast::Expr& expr, const ConstantScope& s
 // component count (larger vectors truncate with a `truncated-initializer` warning); ints
 // convert to float and floats truncate to int; bools become 0/1. Strings only go to
 // strings. Mismatches report `initializer-mismatch` at `where` and return nullopt.
-std::optional<Value> convert_value(const Value& value, const Type& target, SourceRange where,
-                                   DiagnosticSink& diags);
+std::optional<Value> convert_value(const Value& value, const Type& target, SourceRange where, DiagnosticSink& diags);
 
 }  // namespace fx

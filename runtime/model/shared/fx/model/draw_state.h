@@ -10,13 +10,13 @@
 
 namespace fxkit::detail {
 
-struct alignas(32) DrawBlock {  // 32 bytes: a slot's address is a shift
+struct alignas(32) DrawBlock {     // 32 bytes: a slot's address is a shift
   const uint8_t* bytes = nullptr;  // the block's packed bytes
   uint32_t size = 0;
-  bool quiet = false;  // written since its layout was bound, no pooled parameter: only
-                       // logged changes or store_hot's writes into `bytes` (fresh) can
-                       // change it
-  bool fresh = false;  // store_hot wrote into `bytes` since they were last handed out
+  bool quiet = false;         // written since its layout was bound, no pooled parameter: only
+                              // logged changes or store_hot's writes into `bytes` (fresh) can
+                              // change it
+  bool fresh = false;         // store_hot wrote into `bytes` since they were last handed out
   uint64_t seen_changes = 0;  // DrawState::changes when the block was last brought up to date
   // The top-level parameters the block holds, bit `index % 64` each: a logged change whose
   // bit is clear is not this block's (a set bit may be another parameter's).
@@ -72,14 +72,16 @@ struct DrawState {
   // own (store_hot's writes into its bytes aside), with `changed` telling whether store_hot
   // wrote them since they were last handed out. Null: the store re-packs the block.
   const DrawBlock* up_to_date(uint32_t slot, bool& changed) {
-    if (slot >= blocks.size()) [[unlikely]] return nullptr;
+    if (slot >= blocks.size()) [[unlikely]]
+      return nullptr;
     DrawBlock& b = blocks[slot];
     uint64_t k = b.seen_changes;
     if (k == changes && b.quiet && !b.fresh) {  // the usual other block of a pass: nothing new
       changed = false;
       return &b;
     }
-    if (!b.quiet || changes - k > kTouchLog) [[unlikely]] return nullptr;
+    if (!b.quiet || changes - k > kTouchLog) [[unlikely]]
+      return nullptr;
     while (k != changes && !b.may_hold(touched[k % kTouchLog])) ++k;
     if (k != changes) return nullptr;
     b.seen_changes = k;
@@ -92,14 +94,17 @@ struct DrawState {
   // for the top-level parameter `index` of handle generation `generation` when it has a
   // hot block. False: nothing done, take the store's checked path.
   bool store_hot(uint32_t index, uint32_t handle_generation, const float* m16, bool m16_columns) {
-    if (handle_generation != generation || index >= hot.size()) [[unlikely]] return false;
+    if (handle_generation != generation || index >= hot.size()) [[unlikely]]
+      return false;
     HotMatrix& h = hot[index];
     // No hot block (none yet, or a set through the words ended it): the out-of-line path.
-    if (!h.block) [[unlikely]] return false;
+    if (!h.block) [[unlikely]]
+      return false;
     if (!matrix_registers::store_if_changed(h.to, m16, h.columns != m16_columns)) return true;  // no bit changed
     h.stale = true;
     h.block->fresh = true;
-    if (h.shared && !h.others_outdated) [[unlikely]] outdate_others(index, h);
+    if (h.shared && !h.others_outdated) [[unlikely]]
+      outdate_others(index, h);
     return true;
   }
   // A change of top-level parameter `index` through the words (set(), a reload's remap):

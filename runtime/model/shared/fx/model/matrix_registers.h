@@ -32,8 +32,8 @@ inline bool store_if_changed(uint8_t* to, const float* v, bool transpose) {
   auto differs = [&](__m128 r, int at) {
     return _mm_xor_si128(_mm_castps_si128(r), _mm_loadu_si128(reinterpret_cast<const __m128i*>(to + at)));
   };
-  const __m128i diff = _mm_or_si128(_mm_or_si128(differs(r0, 0), differs(r1, 16)),
-                                    _mm_or_si128(differs(r2, 32), differs(r3, 48)));
+  const __m128i diff =
+      _mm_or_si128(_mm_or_si128(differs(r0, 0), differs(r1, 16)), _mm_or_si128(differs(r2, 32), differs(r3, 48)));
   if (_mm_movemask_epi8(_mm_cmpeq_epi32(diff, _mm_setzero_si128())) == 0xFFFF) return false;
   store(to, r0, r1, r2, r3);
 #else

@@ -38,33 +38,33 @@ struct EffectLibraryOptions {
   std::vector<std::string> include_dirs;  // searched after the including file's folder
   std::vector<std::string> defines;       // "NAME" or "NAME=VALUE", as -D
   EffectProfile profile = EffectProfile::automatic;
-  bool watch = true;                      // reload on edits (a worker thread is started)
-  std::chrono::milliseconds coalesce{50}; // quiet time before an edited file is reloaded
+  bool watch = true;                       // reload on edits (a worker thread is started)
+  std::chrono::milliseconds coalesce{50};  // quiet time before an edited file is reloaded
   WatchBackend watch_backend = WatchBackend::automatic;
-  EffectBackend* backend = nullptr;       // not owned; nullptr: no GPU objects
-  std::optional<DeviceCaps> caps;         // techniques are validated against these
-  std::string spirv_cache_dir;            // "" keeps the SPIR-V cache in memory only
+  EffectBackend* backend = nullptr;  // not owned; nullptr: no GPU objects
+  std::optional<DeviceCaps> caps;    // techniques are validated against these
+  std::string spirv_cache_dir;       // "" keeps the SPIR-V cache in memory only
   // Threads that compile shaders (the stages of an effect, the effects of one load() call):
   // 0: one per hardware thread; 1: the calling thread alone. Ignored when `executor` is set.
   uint32_t compile_threads = 0;
-  TaskExecutor* executor = nullptr;       // not owned: the application's own job system
+  TaskExecutor* executor = nullptr;  // not owned: the application's own job system
   // Set: glslang runs in worker processes (fx/compile/compile_workers.h), so a compiler
   // crash on an edited file fails that load or reload instead of the application. When the
   // workers cannot start, shaders compile in this process and compile_workers_error() says
   // why. Unset: in this process.
   std::optional<CompileWorkerOptions> compile_workers;
-  uint32_t frames_in_flight = 2;          // how long replaced versions are kept (poll frames)
+  uint32_t frames_in_flight = 2;                     // how long replaced versions are kept (poll frames)
   std::function<void(const ReloadEvent&)> on_event;  // called from poll(), before it returns
 };
 
 // Counters for tests and tools.
 struct EffectLibraryStats {
-  uint64_t transactions = 0;   // reload attempts run by the worker
-  uint64_t reloads = 0;        // versions swapped in by poll()
-  uint64_t failures = 0;       // failed reload attempts reported
-  uint64_t deletions = 0;      // deleted events reported
-  size_t retiring = 0;         // replaced versions waiting for their frames to retire
-  size_t watched_files = 0;    // files in the include graph
+  uint64_t transactions = 0;  // reload attempts run by the worker
+  uint64_t reloads = 0;       // versions swapped in by poll()
+  uint64_t failures = 0;      // failed reload attempts reported
+  uint64_t deletions = 0;     // deleted events reported
+  size_t retiring = 0;        // replaced versions waiting for their frames to retire
+  size_t watched_files = 0;   // files in the include graph
 };
 
 namespace detail {

@@ -31,9 +31,9 @@ struct ReloadTimings {
 // One reload outcome, delivered by EffectLibrary::poll() and its callback.
 struct ReloadEvent {
   ReloadEventKind kind = ReloadEventKind::reloaded;
-  std::string file;                    // the effect file, as given to load()
-  std::vector<std::string> changed;    // the files whose edits caused this (effect or includes)
-  std::vector<std::string> recompiled; // "technique.pass.stage" units glslang compiled afresh
+  std::string file;                     // the effect file, as given to load()
+  std::vector<std::string> changed;     // the files whose edits caused this (effect or includes)
+  std::vector<std::string> recompiled;  // "technique.pass.stage" units glslang compiled afresh
   // reloaded: parameters the application never set (or reset) whose value is now the
   // edited file's different default (remap's result).
   std::vector<std::string> defaults_changed;
@@ -42,8 +42,8 @@ struct ReloadEvent {
   std::vector<Diagnostic> diagnostics;
   // The sources the diagnostics point into (render with fx::render_text / render_json).
   std::shared_ptr<const SourceManager> sources;
-  uint64_t serial = 0;                 // the live version's serial after this event
-  std::string technique;               // the technique re-selected with the last criteria
+  uint64_t serial = 0;    // the live version's serial after this event
+  std::string technique;  // the technique re-selected with the last criteria
 };
 
 }  // namespace fx

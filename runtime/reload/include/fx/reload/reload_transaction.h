@@ -39,17 +39,17 @@ struct EffectVersion {
   EffectVersion(const EffectVersion&) = delete;
   EffectVersion& operator=(const EffectVersion&) = delete;
 
-  std::string path;                      // the effect file
-  uint64_t serial = 0;                   // 1 for the first good load, +1 per swap
+  std::string path;     // the effect file
+  uint64_t serial = 0;  // 1 for the first good load, +1 per swap
   std::shared_ptr<SourceManager> sources;
   ParsedEffect parsed;
   std::shared_ptr<EffectModel> model;
-  std::shared_ptr<EffectUnits> units;          // nullptr when built without a compiler
-  std::shared_ptr<EffectPrograms> programs;    // every pass compiled
+  std::shared_ptr<EffectUnits> units;        // nullptr when built without a compiler
+  std::shared_ptr<EffectPrograms> programs;  // every pass compiled
   std::shared_ptr<ParameterStore> params;
   std::shared_ptr<const TechniqueChoice> techniques;  // indexed like model->techniques
-  std::shared_ptr<BackendEffect> gpu;          // nullptr without a backend
-  std::vector<Diagnostic> warnings;            // of the build that produced it
+  std::shared_ptr<BackendEffect> gpu;                 // nullptr without a backend
+  std::vector<Diagnostic> warnings;                   // of the build that produced it
 
   // Versions alive in this process (tests check that soaks return to the baseline).
   static size_t live_count();
@@ -62,22 +62,22 @@ struct EffectVersion {
 struct ReloadTransactionInput {
   std::string path;
   const FrontEndOptions* front_end = nullptr;
-  const ShaderCompiler* compiler = nullptr;     // thread-safe, shares the SPIR-V cache
-  TaskExecutor* executor = nullptr;             // compiles the stages in parallel; nullptr: in turn
-  std::mutex* backend_mutex = nullptr;          // held around backend->prepare when given
-  const DeviceCaps* caps = nullptr;             // nullptr: no device requirement checks
-  EffectBackend* backend = nullptr;             // nullptr: no GPU objects
-  uint64_t serial = 0;                          // given to the version on success
+  const ShaderCompiler* compiler = nullptr;  // thread-safe, shares the SPIR-V cache
+  TaskExecutor* executor = nullptr;          // compiles the stages in parallel; nullptr: in turn
+  std::mutex* backend_mutex = nullptr;       // held around backend->prepare when given
+  const DeviceCaps* caps = nullptr;          // nullptr: no device requirement checks
+  EffectBackend* backend = nullptr;          // nullptr: no GPU objects
+  uint64_t serial = 0;                       // given to the version on success
 };
 
 // The outcome: `version` on success; otherwise nullptr and at least one error.
 struct ReloadTransactionResult {
   std::unique_ptr<EffectVersion> version;
-  std::vector<Diagnostic> diagnostics;          // everything reported (errors and warnings)
-  std::shared_ptr<SourceManager> sources;       // what `diagnostics` point into
-  std::vector<std::string> files;               // files read (effect first), even on failure
-  std::vector<std::string> recompiled;          // "technique.pass.stage" compiled by glslang
-  ReloadTimings ms;                             // parse, compile, glslang, pipeline, first_frame
+  std::vector<Diagnostic> diagnostics;     // everything reported (errors and warnings)
+  std::shared_ptr<SourceManager> sources;  // what `diagnostics` point into
+  std::vector<std::string> files;          // files read (effect first), even on failure
+  std::vector<std::string> recompiled;     // "technique.pass.stage" compiled by glslang
+  ReloadTimings ms;                        // parse, compile, glslang, pipeline, first_frame
   bool ok() const { return version != nullptr; }
 };
 

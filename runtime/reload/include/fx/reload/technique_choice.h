@@ -50,8 +50,8 @@ class TechniqueChoice {
  public:
   // Validates against `caps` (when given) and compiles the plan; plan diagnostics
   // (bad annotations, unknown fallbacks) go to `diags` as warnings or errors.
-  static std::shared_ptr<const TechniqueChoice> build(std::vector<TechniqueFacts> techniques,
-                                                      const DeviceCaps* caps, DiagnosticSink& diags);
+  static std::shared_ptr<const TechniqueChoice> build(std::vector<TechniqueFacts> techniques, const DeviceCaps* caps,
+                                                      DiagnosticSink& diags);
   ~TechniqueChoice();
 
   // Chooses with per-object memory (`last`, `plan_key`: see fx::SelectionState).

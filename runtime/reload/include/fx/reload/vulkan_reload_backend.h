@@ -16,15 +16,15 @@
 #include <memory>
 #include <span>
 
-#include "fx/reload/effect_backend.h"
 #include "fx/binding/effect_binding.h"
+#include "fx/reload/effect_backend.h"
 
 namespace fx::vk {
 
 // What every version is bound for.
 struct ReloadBackendDesc {
-  RenderingFormats formats;  // the attachments the app renders to
-  EffectBindingDesc binding; // effect_dir is replaced by each version's folder
+  RenderingFormats formats;   // the attachments the app renders to
+  EffectBindingDesc binding;  // effect_dir is replaced by each version's folder
   // The application's vertex layout for a technique's vertex shader inputs (registered as
   // layout id 0 of every binding); unset: no warm-up, pipelines are made at first apply.
   std::function<VertexLayout(std::span<const InterfaceVariable>)> vertex_layout;

@@ -13,12 +13,12 @@ namespace fx {
 
 struct CapsRequirement {
   enum class Kind : uint8_t {
-    shader_profile,   // name = canonical profile
-    feature,          // name = caps_feature_table() row
-    limit,            // name = caps_limit_table() row, minimum = least value needed
-    vulkan_feature,   // name = VkPhysicalDevice*Features member
-    vulkan_extension, // name = extension
-    format,           // name = format, minimum unused; usage in `usage`
+    shader_profile,    // name = canonical profile
+    feature,           // name = caps_feature_table() row
+    limit,             // name = caps_limit_table() row, minimum = least value needed
+    vulkan_feature,    // name = VkPhysicalDevice*Features member
+    vulkan_extension,  // name = extension
+    format,            // name = format, minimum unused; usage in `usage`
   };
   Kind kind = Kind::feature;
   std::string name;
@@ -44,8 +44,7 @@ struct CapsRequirement {
 // On failure returns nullopt and sets *error to a sentence naming the problem.
 std::optional<CapsRequirement> parse_caps_requirement(std::string_view token, std::string* error);
 // Parses a whitespace/comma separated list; bad tokens are appended to *errors.
-std::vector<CapsRequirement> parse_caps_requirements(std::string_view list,
-                                                     std::vector<std::string>* errors);
+std::vector<CapsRequirement> parse_caps_requirements(std::string_view list, std::vector<std::string>* errors);
 
 // Why `caps` cannot meet `req` ("ps_2_0 not supported on dx7"), or nullopt when it can.
 std::optional<std::string> unmet_reason(const DeviceCaps& caps, const CapsRequirement& req);

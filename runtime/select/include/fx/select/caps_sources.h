@@ -21,8 +21,7 @@ DeviceCaps caps_from_physical_device(VkPhysicalDevice device);
 
 // Reads the Vulkan-profiles JSON that `vulkaninfo --json` writes. Missing sections are
 // reported as "caps-vulkaninfo" errors; nullopt when the document has no device at all.
-std::optional<DeviceCaps> caps_from_vulkaninfo_json(const nlohmann::json& report,
-                                                    DiagnosticSink& sink);
+std::optional<DeviceCaps> caps_from_vulkaninfo_json(const nlohmann::json& report, DiagnosticSink& sink);
 // Same without diagnostics.
 std::optional<DeviceCaps> caps_from_vulkaninfo_json(const nlohmann::json& report);
 

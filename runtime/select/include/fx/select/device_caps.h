@@ -24,11 +24,11 @@ std::optional<CapsGeneration> parse_caps_generation(std::string_view name);
 
 // Boolean capabilities; each row of caps_feature_table() names one member.
 struct CapsFeatures {
-  bool dot3 = false;                   // D3DTOP_DOTPRODUCT3 texture-stage operation
-  bool subtract = false;               // D3DTOP_SUBTRACT (emboss bump mapping)
+  bool dot3 = false;      // D3DTOP_DOTPRODUCT3 texture-stage operation
+  bool subtract = false;  // D3DTOP_SUBTRACT (emboss bump mapping)
   bool cube_maps = false;
   bool volume_textures = false;
-  bool float_textures = false;         // sampled 16/32-bit float RGBA
+  bool float_textures = false;  // sampled 16/32-bit float RGBA
   bool anisotropic_filtering = false;
   bool fixed_function_stages = false;  // D3D texture stages (ColorOp/AlphaOp...)
   bool alpha_test = false;             // AlphaTestEnable without shader emulation
@@ -41,29 +41,29 @@ struct CapsFeatures {
 struct CapsLimits {
   uint32_t simultaneous_textures = 0;  // textures one pass may sample at once
   uint32_t samplers = 0;
-  uint32_t uniform_bytes = 0;          // largest constant/uniform block
-  uint32_t interpolators = 0;          // vec4 varyings from vertex to pixel stage
-  uint32_t texture_size = 0;           // largest 2D texture edge
-  uint32_t render_targets = 0;         // simultaneous colour attachments (MRT count)
+  uint32_t uniform_bytes = 0;   // largest constant/uniform block
+  uint32_t interpolators = 0;   // vec4 varyings from vertex to pixel stage
+  uint32_t texture_size = 0;    // largest 2D texture edge
+  uint32_t render_targets = 0;  // simultaneous colour attachments (MRT count)
   friend bool operator==(const CapsLimits&, const CapsLimits&) = default;
 };
 
 // What a device can do with one Vulkan format (optimal tiling).
 struct FormatSupport {
   std::string format;  // without the VK_FORMAT_ prefix, e.g. "R16G16B16A16_SFLOAT"
-  bool sampled = false, filter_linear = false, color_attachment = false, blend = false,
-       depth_stencil = false, storage = false;
+  bool sampled = false, filter_linear = false, color_attachment = false, blend = false, depth_stencil = false,
+       storage = false;
   friend bool operator==(const FormatSupport&, const FormatSupport&) = default;
 };
 
 // Facts read from a Vulkan physical device (empty when the caps come from a D3D profile).
 struct VulkanCaps {
   bool present = false;
-  uint32_t api_version = 0;                // VK_MAKE_API_VERSION encoding
-  std::string device_type;                 // "discrete_gpu", "integrated_gpu", "cpu", ...
-  std::vector<std::string> features;       // enabled-capable feature names, sorted
-  std::vector<std::string> extensions;     // device extension names, sorted
-  std::vector<FormatSupport> formats;      // the formats effects use, sorted by name
+  uint32_t api_version = 0;             // VK_MAKE_API_VERSION encoding
+  std::string device_type;              // "discrete_gpu", "integrated_gpu", "cpu", ...
+  std::vector<std::string> features;    // enabled-capable feature names, sorted
+  std::vector<std::string> extensions;  // device extension names, sorted
+  std::vector<FormatSupport> formats;   // the formats effects use, sorted by name
   friend bool operator==(const VulkanCaps&, const VulkanCaps&) = default;
 };
 

@@ -18,10 +18,10 @@ namespace fx {
 
 // What the application asks for this object this frame.
 struct SelectionCriteria {
-  float distance = 0.f;       // camera distance, world units
-  float screen_size = -1.f;   // projected size in pixels; negative = unknown (bands ignored)
-  float pixels = 0.f;         // covered pixels, turns CostNsPerPixel into milliseconds
-  float vertices = 0.f;       // vertices drawn, turns CostNsPerVertex into milliseconds
+  float distance = 0.f;          // camera distance, world units
+  float screen_size = -1.f;      // projected size in pixels; negative = unknown (bands ignored)
+  float pixels = 0.f;            // covered pixels, turns CostNsPerPixel into milliseconds
+  float vertices = 0.f;          // vertices drawn, turns CostNsPerVertex into milliseconds
   std::string_view scheme = {};  // "" accepts every scheme
   float cost_budget_ms = std::numeric_limits<float>::infinity();  // per object
   float max_error = std::numeric_limits<float>::infinity();       // 8-bit levels (LSB)
@@ -36,7 +36,7 @@ struct SelectionQuery {
   float vertices = 0.f;
   float cost_budget_ms = std::numeric_limits<float>::infinity();
   float max_error = std::numeric_limits<float>::infinity();
-  uint64_t scheme_bit = 0;      // 0 = any scheme
+  uint64_t scheme_bit = 0;       // 0 = any scheme
   std::string_view scheme = {};  // for reason texts only
 };
 
@@ -63,7 +63,7 @@ struct SelectionResult {
 // Plan-wide settings.
 struct SelectionPlanOptions {
   std::string effect_fallback = {};  // technique used when nothing else survives ("" = none)
-  float hysteresis = 0.1f;      // default band margin as a fraction of the edge value
+  float hysteresis = 0.1f;           // default band margin as a fraction of the edge value
 };
 
 class SelectionPlan {
@@ -110,7 +110,11 @@ class SelectionPlan {
     bool cost_known;   // CostMs or CostNsPerPixel given
   };
   enum Failure : uint8_t {
-    fail_invalid = 1, fail_scheme = 2, fail_distance = 4, fail_screen = 8, fail_error = 16,
+    fail_invalid = 1,
+    fail_scheme = 2,
+    fail_distance = 4,
+    fail_screen = 8,
+    fail_error = 16,
     fail_cost = 32,
   };
   uint8_t failures(const Entry& e, const SelectionQuery& q, bool widened) const;
@@ -122,8 +126,7 @@ class SelectionPlan {
   static bool has_error_limit(const SelectionQuery& q);
   // The technique the filters and ranking choose directly, or kNoIndex.
   uint32_t first_survivor(const SelectionQuery& q, uint32_t last) const;
-  uint32_t choose(const SelectionQuery& q, uint32_t last, SelectionRoute* route,
-                  uint32_t* chain_start) const;
+  uint32_t choose(const SelectionQuery& q, uint32_t last, SelectionRoute* route, uint32_t* chain_start) const;
   std::string reason(uint32_t index, const SelectionQuery& q, bool widened, uint32_t chosen) const;
 
   std::vector<Entry> entries_;

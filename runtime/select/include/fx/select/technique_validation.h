@@ -24,7 +24,9 @@ struct EffectModel;
 struct TechniqueInfo;
 class EffectPrograms;
 class ShaderCompiler;
-namespace ast { struct Effect; }
+namespace ast {
+struct Effect;
+}
 
 // A technique annotation as selection reads it (the same alternatives as
 // technique_candidate.h's AnnotationValue, so values copy across unchanged).
@@ -33,12 +35,12 @@ using TechniqueAnnotation = std::pair<std::string, std::variant<bool, int32_t, f
 // One technique validated on one device.
 struct TechniqueValidation {
   std::string name;
-  SourceRange range;                            // the technique's declaration
+  SourceRange range;  // the technique's declaration
   bool valid = true;
   // Why not, one per cause, each with the range that caused it; severity note, ids in
   // docs/diagnostics.md ("Technique validation"). Empty when valid.
   std::vector<Diagnostic> reasons;
-  std::vector<TechniqueAnnotation> annotations; // literal annotations, in declaration order
+  std::vector<TechniqueAnnotation> annotations;  // literal annotations, in declaration order
   // How a Vulkan device runs what it has no native form of, one line per kind
   // ("emulated: vs.1.1 assembly translated to HLSL"). Empty on historic caps profiles.
   std::vector<std::string> emulation;
@@ -52,8 +54,7 @@ struct TechniqueValidationOptions {
 };
 
 // D3DX ValidateTechnique: one technique of `model` on `caps`.
-TechniqueValidation validate_technique(const EffectModel& model, const TechniqueInfo& technique,
-                                       const DeviceCaps& caps,
+TechniqueValidation validate_technique(const EffectModel& model, const TechniqueInfo& technique, const DeviceCaps& caps,
                                        const TechniqueValidationOptions& options = {});
 // Every technique of `model`, in declaration order.
 std::vector<TechniqueValidation> validate_techniques(const EffectModel& model, const DeviceCaps& caps,
@@ -63,8 +64,7 @@ std::vector<TechniqueValidation> validate_techniques(const EffectModel& model, c
 // technique; with `compile`, passes are compiled with `compiler` (a default compiler when
 // null). The one-call path for tools.
 std::vector<TechniqueValidation> validate_effect(const ast::Effect& effect, const SourceManager& sm,
-                                                 const DeviceCaps& caps, DiagnosticSink& diags,
-                                                 bool compile = true,
+                                                 const DeviceCaps& caps, DiagnosticSink& diags, bool compile = true,
                                                  const ShaderCompiler* compiler = nullptr);
 
 // D3DX FindNextValidTechnique: the first valid technique after `after` (from the start when

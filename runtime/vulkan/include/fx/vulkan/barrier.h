@@ -14,8 +14,8 @@ LayoutUse layout_use(VkImageLayout layout);
 
 // Records a barrier moving `range` of `image` from `from` to `to`, ordering against the
 // previous and next users implied by the layouts. UNDEFINED as `from` discards contents.
-void transition_image(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceRange& range,
-                      VkImageLayout from, VkImageLayout to);
+void transition_image(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceRange& range, VkImageLayout from,
+                      VkImageLayout to);
 
 // Records a global memory barrier (e.g. buffer copy -> host read).
 void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags src_stages, VkAccessFlags src_access,

@@ -22,8 +22,7 @@ struct BufferDesc {
 class Buffer {
  public:
   // Reports "vk-invalid-buffer" (size 0, no usage) or allocation failures.
-  static std::optional<Buffer> create(const Context& ctx, const BufferDesc& desc,
-                                      DiagnosticSink& sink);
+  static std::optional<Buffer> create(const Context& ctx, const BufferDesc& desc, DiagnosticSink& sink);
 
   Buffer() = default;
   Buffer(Buffer&& other) noexcept;

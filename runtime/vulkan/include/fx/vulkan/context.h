@@ -56,17 +56,15 @@ struct DeviceFeatures {
   struct Eds3 {
     bool tessellation_domain_origin = false, depth_clamp_enable = false, polygon_mode = false,
          rasterization_samples = false, sample_mask = false, alpha_to_coverage_enable = false,
-         alpha_to_one_enable = false, logic_op_enable = false, color_blend_enable = false,
-         color_blend_equation = false, color_write_mask = false, rasterization_stream = false,
-         conservative_rasterization_mode = false, extra_primitive_overestimation_size = false,
-         depth_clip_enable = false, sample_locations_enable = false, color_blend_advanced = false,
-         provoking_vertex_mode = false, line_rasterization_mode = false,
-         line_stipple_enable = false, depth_clip_negative_one_to_one = false,
-         viewport_w_scaling_enable = false, viewport_swizzle = false,
-         coverage_to_color_enable = false, coverage_to_color_location = false,
-         coverage_modulation_mode = false, coverage_modulation_table_enable = false,
-         coverage_modulation_table = false, coverage_reduction_mode = false,
-         representative_fragment_test_enable = false, shading_rate_image_enable = false;
+         alpha_to_one_enable = false, logic_op_enable = false, color_blend_enable = false, color_blend_equation = false,
+         color_write_mask = false, rasterization_stream = false, conservative_rasterization_mode = false,
+         extra_primitive_overestimation_size = false, depth_clip_enable = false, sample_locations_enable = false,
+         color_blend_advanced = false, provoking_vertex_mode = false, line_rasterization_mode = false,
+         line_stipple_enable = false, depth_clip_negative_one_to_one = false, viewport_w_scaling_enable = false,
+         viewport_swizzle = false, coverage_to_color_enable = false, coverage_to_color_location = false,
+         coverage_modulation_mode = false, coverage_modulation_table_enable = false, coverage_modulation_table = false,
+         coverage_reduction_mode = false, representative_fragment_test_enable = false,
+         shading_rate_image_enable = false;
     bool any() const;
   } eds3;
   bool push_descriptor = false;  // VK_KHR_push_descriptor
@@ -139,9 +137,8 @@ class Context {
   // Borrows the application's objects: the destructor destroys nothing. `enabled` says which
   // features the application enabled; without it, the physical device's support is assumed.
   // Non-core entry points are loaded if the device exposes them.
-  static Context wrap(VkInstance instance, VkPhysicalDevice physical_device, VkDevice device,
-                      VkQueue queue, uint32_t queue_family,
-                      std::optional<DeviceFeatures> enabled = std::nullopt);
+  static Context wrap(VkInstance instance, VkPhysicalDevice physical_device, VkDevice device, VkQueue queue,
+                      uint32_t queue_family, std::optional<DeviceFeatures> enabled = std::nullopt);
 
   Context(Context&& other) noexcept;
   Context& operator=(Context&& other) noexcept;

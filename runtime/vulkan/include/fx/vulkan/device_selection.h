@@ -28,8 +28,8 @@ inline constexpr const char* kDeviceEnvVar = "FXKIT_DEVICE";
 // otherwise ranks discrete > integrated > virtual > CPU > other among devices with
 // Vulkan >= 1.3 and a graphics queue, keeping enumeration order on ties. Reports
 // "vk-device-not-found" or "vk-no-suitable-device" (listing the devices) on failure.
-std::optional<uint32_t> select_device(const std::vector<DeviceCandidate>& candidates,
-                                      std::string_view request, DiagnosticSink& sink);
+std::optional<uint32_t> select_device(const std::vector<DeviceCandidate>& candidates, std::string_view request,
+                                      DiagnosticSink& sink);
 
 // The request in effect: `option` if non-empty, else $FXKIT_DEVICE, else "".
 std::string device_request(std::string_view option);

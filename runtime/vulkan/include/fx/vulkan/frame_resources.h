@@ -30,8 +30,7 @@ struct UniformAllocation {
 class FrameResources {
  public:
   // Reports allocation failures.
-  static std::optional<FrameResources> create(const Context& ctx, const FrameResourcesDesc& desc,
-                                              DiagnosticSink& sink);
+  static std::optional<FrameResources> create(const Context& ctx, const FrameResourcesDesc& desc, DiagnosticSink& sink);
 
   FrameResources() = default;
   FrameResources(FrameResources&& other) noexcept { *this = std::move(other); }
@@ -56,8 +55,7 @@ class FrameResources {
 
   // Copies `bytes` into this frame's ring slice. "vk-uniform-ring-full" when the slice has
   // no room (raise FrameResourcesDesc::uniform_bytes_per_frame).
-  std::optional<UniformAllocation> upload_uniform(const void* data, uint32_t bytes,
-                                                  DiagnosticSink& sink);
+  std::optional<UniformAllocation> upload_uniform(const void* data, uint32_t bytes, DiagnosticSink& sink);
   // Reserves `bytes` of this frame's ring slice for the caller to fill through `mapped`
   // (then flush_uniform): data packed straight into the ring, no staging copy. Inline: it
   // runs once per uniform block and draw.

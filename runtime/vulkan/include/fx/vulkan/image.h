@@ -41,8 +41,7 @@ uint32_t format_texel_bytes(VkFormat format);
 class GpuImage {
  public:
   // Checks format support first ("vk-format-unsupported"); reports allocation failures.
-  static std::optional<GpuImage> create(const Context& ctx, const ImageDesc& desc,
-                                     DiagnosticSink& sink);
+  static std::optional<GpuImage> create(const Context& ctx, const ImageDesc& desc, DiagnosticSink& sink);
 
   GpuImage() = default;
   GpuImage(GpuImage&& other) noexcept;

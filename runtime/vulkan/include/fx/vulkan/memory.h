@@ -17,9 +17,8 @@ enum class MemoryUsage {
 };
 
 // Index of a memory type in `type_bits` having all of `required`, preferring `preferred`.
-std::optional<uint32_t> find_memory_type(const VkPhysicalDeviceMemoryProperties& memory,
-                                         uint32_t type_bits, VkMemoryPropertyFlags required,
-                                         VkMemoryPropertyFlags preferred = 0);
+std::optional<uint32_t> find_memory_type(const VkPhysicalDeviceMemoryProperties& memory, uint32_t type_bits,
+                                         VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred = 0);
 
 // A freshly allocated block suited to `usage`; `flags` says what it turned out to be.
 struct Allocation {
@@ -28,8 +27,7 @@ struct Allocation {
 };
 
 // Allocates memory for `requirements`; reports "vk-no-memory-type" or "vk-call-failed".
-std::optional<Allocation> allocate_memory(const Context& ctx,
-                                          const VkMemoryRequirements& requirements,
+std::optional<Allocation> allocate_memory(const Context& ctx, const VkMemoryRequirements& requirements,
                                           MemoryUsage usage, DiagnosticSink& sink);
 
 }  // namespace fx::vk

@@ -29,8 +29,7 @@ class OneShotCommands {
   ~OneShotCommands() { reset(); }
 
   // Records, submits and waits up to `timeout_ns`; "vk-timeout" if the GPU does not finish.
-  bool run(const RecordCommands& record, DiagnosticSink& sink,
-           uint64_t timeout_ns = 10'000'000'000ull);
+  bool run(const RecordCommands& record, DiagnosticSink& sink, uint64_t timeout_ns = 10'000'000'000ull);
 
   void reset();
 

@@ -105,9 +105,8 @@ struct DynamicStateSet {
   // only; their count stays in the key too, being the program's).
   bool patch_control_points = false;
   // VK_EXT_extended_dynamic_state3, per state.
-  bool polygon_mode = false, depth_clamp = false, sample_mask = false,
-       alpha_to_coverage = false, color_blend_enable = false, color_blend_equation = false,
-       color_write_mask = false;
+  bool polygon_mode = false, depth_clamp = false, sample_mask = false, alpha_to_coverage = false,
+       color_blend_enable = false, color_blend_equation = false, color_write_mask = false;
 
   // Everything the context's device has enabled.
   static DynamicStateSet from_features(const DeviceFeatures& features);

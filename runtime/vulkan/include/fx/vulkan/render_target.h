@@ -46,8 +46,7 @@ class RenderTarget {
  public:
   // Reports "vk-feature-missing" without dynamic rendering, "vk-format-unsupported" if the
   // color or depth format cannot be an attachment, or allocation failures.
-  static std::optional<RenderTarget> create(const Context& ctx, const RenderTargetDesc& desc,
-                                            DiagnosticSink& sink);
+  static std::optional<RenderTarget> create(const Context& ctx, const RenderTargetDesc& desc, DiagnosticSink& sink);
 
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }

@@ -14,8 +14,8 @@ inline constexpr uint32_t kMaxColorAttachments = 4;
 
 // Attachment formats for dynamic rendering (VkPipelineRenderingCreateInfo).
 struct RenderingFormats {
-  VkFormat color[kMaxColorAttachments] = {VK_FORMAT_UNDEFINED, VK_FORMAT_UNDEFINED,
-                                          VK_FORMAT_UNDEFINED, VK_FORMAT_UNDEFINED};
+  VkFormat color[kMaxColorAttachments] = {VK_FORMAT_UNDEFINED, VK_FORMAT_UNDEFINED, VK_FORMAT_UNDEFINED,
+                                          VK_FORMAT_UNDEFINED};
   uint32_t color_count = 0;
   VkFormat depth = VK_FORMAT_UNDEFINED;
   VkFormat stencil = VK_FORMAT_UNDEFINED;

@@ -21,17 +21,15 @@ class Texture {
  public:
   // A 2D texture from an 8-bit image (1..4 channels; 3 channels are padded to RGBA).
   // `srgb` stores it as an SRGB format so sampling linearises it.
-  static std::optional<Texture> from_image(const Context& ctx, const fx::Image& image,
-                                           ColorSpace space, DiagnosticSink& sink);
+  static std::optional<Texture> from_image(const Context& ctx, const fx::Image& image, ColorSpace space,
+                                           DiagnosticSink& sink);
   // A cube texture from six square faces in +X, -X, +Y, -Y, +Z, -Z order.
-  static std::optional<Texture> cube_from_images(const Context& ctx,
-                                                 const std::array<const fx::Image*, 6>& faces,
+  static std::optional<Texture> cube_from_images(const Context& ctx, const std::array<const fx::Image*, 6>& faces,
                                                  ColorSpace space, DiagnosticSink& sink);
   // A 2D (depth 1) or 3D texture from a baked table; unorm8 tables become R8/RG8/RGBA8,
   // float32 tables R32/RG32/RGBA32_SFLOAT. "vk-format-unsupported" if the device cannot
   // sample the format with linear filtering.
-  static std::optional<Texture> from_table(const Context& ctx, const fx::shading::Table& table,
-                                           DiagnosticSink& sink);
+  static std::optional<Texture> from_table(const Context& ctx, const fx::shading::Table& table, DiagnosticSink& sink);
   // A one-texel texture of one colour in the shape a shader samples (1D, 2D, 3D, cube; as an
   // array view when `array`): what stands in for a texture the effect names but has no data for.
   static std::optional<Texture> solid(const Context& ctx, const std::array<uint8_t, 4>& rgba, ImageKind kind,
@@ -39,8 +37,8 @@ class Texture {
   // A 1x1 2D texture of more than one sample (4 where the device has it), every sample
   // `rgba`, for a Texture2DMS(Array) the effect reads with Load(coord, sample). Cleared, as no
   // buffer copy can fill a multisampled image.
-  static std::optional<Texture> solid_multisampled(const Context& ctx, const std::array<uint8_t, 4>& rgba,
-                                                   bool array, DiagnosticSink& sink);
+  static std::optional<Texture> solid_multisampled(const Context& ctx, const std::array<uint8_t, 4>& rgba, bool array,
+                                                   DiagnosticSink& sink);
   // The same for a depth comparison: one texel of `depth` in depth_stand_in_format.
   static std::optional<Texture> solid_depth(const Context& ctx, float depth, ImageKind kind, bool array,
                                             DiagnosticSink& sink);
@@ -62,9 +60,8 @@ class Texture {
 
  private:
   // Creates the image and copies `layers` slices of `bytes` into it.
-  static std::optional<Texture> upload(const Context& ctx, const ImageDesc& desc,
-                                       const uint8_t* bytes, size_t byte_count,
-                                       DiagnosticSink& sink);
+  static std::optional<Texture> upload(const Context& ctx, const ImageDesc& desc, const uint8_t* bytes,
+                                       size_t byte_count, DiagnosticSink& sink);
   GpuImage owned_;
   VkImageView borrowed_view_ = VK_NULL_HANDLE;
   VkImageLayout layout_ = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;

@@ -22,16 +22,16 @@ namespace fx::bench {
 // docs/legacy-assembly.md). It is a measurement of the technique under a compile option, not
 // a technique of its own: selection and COST_<technique> use the row without the model.
 struct TechniqueAccuracy {
-  std::string effect;     // file name, "hemisphere.fx"
+  std::string effect;  // file name, "hemisphere.fx"
   std::string technique;
   std::string scheme;     // the technique's Scheme annotation ("" when none)
   bool drawable = false;  // the Vulkan binding can draw it
   bool measured = false;
-  std::string reason;     // why not measured
-  std::string model;      // the reference model it was compared with
-  std::string substitutes;  // techniques of the effect with the same value are substitutes
-  std::string emulation;    // how the binding draws a legacy technique ("ps.1.1 assembly
-                            // translated to HLSL; ..."), "" for HLSL and GLSL techniques
+  std::string reason;            // why not measured
+  std::string model;             // the reference model it was compared with
+  std::string substitutes;       // techniques of the effect with the same value are substitutes
+  std::string emulation;         // how the binding draws a legacy technique ("ps.1.1 assembly
+                                 // translated to HLSL; ..."), "" for HLSL and GLSL techniques
   bool precision_model = false;  // compiled with the ps.1.x precision model
   // precision_model rows: what the model changes, |with - without| x 255 (displayed values,
   // worst channel) at the same pixels of the same scenes: the ps.1.x banding itself.
@@ -44,11 +44,11 @@ struct TechniqueAccuracy {
 };
 
 struct TechniqueAccuracyOptions {
-  std::string effects_dir;  // effects/ (includes resolve there)
-  uint32_t error_size = 128;   // square target for the error scenes
-  uint32_t timing_size = 256;  // square target for the timing scene
-  uint32_t draws = 4;          // repetitions of the technique's passes per timed frame
-  int repeats = 5;             // timed frames per technique (median)
+  std::string effects_dir;        // effects/ (includes resolve there)
+  uint32_t error_size = 128;      // square target for the error scenes
+  uint32_t timing_size = 256;     // square target for the timing scene
+  uint32_t draws = 4;             // repetitions of the technique's passes per timed frame
+  int repeats = 5;                // timed frames per technique (median)
   std::vector<std::string> only;  // effect file names to measure ("brdf.fx"); all when empty
 };
 
