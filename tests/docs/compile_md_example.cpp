@@ -1,5 +1,7 @@
 // docs/preprocessor.md, docs/effect-compilation.md and docs/shader-compilation.md: the
 // front end and the compiler on their own, without a device.
+// The examples are the docs' text, verbatim (examples_compiled_test.cpp): not reformatted.
+// clang-format off
 #include "example_fixture.h"
 #include "fx/compile/compile_workers.h"
 #include "fx/compile/effect_file.h"
@@ -21,10 +23,11 @@ TEST_F(ExampleTest, Preprocessing) {
 
   fx::SourceManager sm;
   fx::DiagnosticSink diags;
-  fx::Preprocessor pp(sm, diags, {.include_dirs = {"effects"}, .defines = {fx::parse_define("QUALITY=2")}});
-  std::vector<fx::Token> tokens;  // ends with one eof token
+  fx::Preprocessor pp(sm, diags, {.include_dirs = {"effects"},
+                                  .defines = {fx::parse_define("QUALITY=2")}});
+  std::vector<fx::Token> tokens;               // ends with one eof token
   bool ok = pp.run_file("effects/strand_aniso.fx", tokens);
-  for (const std::string& f : pp.files()) watch(f);  // include graph: pp.includes()
+  for (const std::string& f : pp.files()) watch(f);   // include graph: pp.includes()
 
   EXPECT_TRUE(ok);
   EXPECT_GE(watched.size(), 3u);  // the effect, common.fxh, generated/costs.fxh
@@ -40,13 +43,12 @@ TEST_F(ExampleTest, EffectCompilation) {
 
   fx::ParsedEffect parsed = fx::parse_effect_file("effects/wood.fx", sm, diags, options);
   fx::EffectUnits units(parsed.ast, sm, diags, fx::effect_unit_options(options));
-  fx::SpirvCache cache(".fxkit-cache");  // memory + optional directory
+  fx::SpirvCache cache(".fxkit-cache");                 // memory + optional directory
   fx::ShaderCompiler compiler({}, &cache);
   fx::EffectPrograms programs(units, compiler, sm);
-  const fx::PassProgram* p = programs.program("wood", "p0");  // compiles only this pass
+  const fx::PassProgram* p = programs.program("wood", "p0");      // compiles only this pass
   if (p && p->ok()) use(p->stages, p->layout);
-  if (p)
-    for (const std::string& why : p->unsupported) report(why);  // asm, fixed function
+  if (p) for (const std::string& why : p->unsupported) report(why);  // asm, fixed function
 
   EXPECT_EQ(used, 2u);
   EXPECT_EQ(reported, 0u);
@@ -62,7 +64,7 @@ TEST_F(ExampleTest, ShaderCompilation) {
   const fx::TranslationUnit vs_unit = *units.unit(*pass.find(fx::ShaderStage::vertex));
   const fx::TranslationUnit ps_unit = *units.unit(*pass.find(fx::ShaderStage::fragment));
 
-  fx::SpirvCache cache(".fxkit-cache");  // optional; memory only if no path
+  fx::SpirvCache cache(".fxkit-cache");                 // optional; memory only if no path
   fx::ShaderCompiler compiler({.target = fx::VulkanTarget::vulkan_1_1}, &cache);
   fx::CompiledShader vs = fx::compile_and_report(compiler, vs_unit, fx::resolver_for(sm), sink);
   fx::CompiledShader ps = fx::compile_and_report(compiler, ps_unit, fx::resolver_for(sm), sink);
@@ -83,7 +85,7 @@ TEST_F(ExampleTest, CompileWorkers) {
 
   std::string error;
   auto workers = fx::CompileWorkers::start({.workers = 2}, error);  // nullptr + error if not found
-  fx::ShaderCompiler compiler({}, &cache, workers.get());           // compile() is unchanged
+  fx::ShaderCompiler compiler({}, &cache, workers.get());          // compile() is unchanged
 
   ASSERT_TRUE(workers) << error;
   fx::CompiledShader vs = compiler.compile(vs_unit);

@@ -2,6 +2,8 @@
 // effect loaded and set up, and one frame recorded the way the page shows (into an
 // Offscreen image standing in for the engine's swapchain image). The frame loop followed
 // literally with a glm::mat4's memory draws what set_scene draws with the same transforms.
+// The examples are the docs' text, verbatim (examples_compiled_test.cpp): not reformatted.
+// clang-format off
 #include <algorithm>
 #include <cstdlib>
 #include <string>
@@ -47,16 +49,16 @@ TEST_F(ExampleTest, EmbeddingDeviceEffectFrame) {
 
   fxkit::DeviceOptions options;
   options.target.formats = {.color = {swapchain_format}, .depth = VK_FORMAT_D32_SFLOAT};
-  options.target.vertex_layout = {
-      .attributes = {{"POSITION", VK_FORMAT_R32G32B32_SFLOAT, 0}, {"NORMAL", VK_FORMAT_R32G32B32_SFLOAT, 12}},
-      .bindings = {{0, 24}}};
+  options.target.vertex_layout = {.attributes = {{"POSITION", VK_FORMAT_R32G32B32_SFLOAT, 0},
+                                                 {"NORMAL", VK_FORMAT_R32G32B32_SFLOAT, 12}},
+                                  .bindings = {{0, 24}}};
   options.target.front_faces = fxkit::Winding::counter_clockwise;  // glTF and OpenGL meshes
   options.target.y_flip = fxkit::YFlip::negative_viewport;         // the engine's viewports
-  options.target.default_attribute_binding = 1;                    // inputs the layout lacks read (0, 0, 0, 1)
+  options.target.default_attribute_binding = 1;  // inputs the layout lacks read (0, 0, 0, 1)
   options.include_dirs = {"effects"};
   std::vector<fxkit::Message> errors;
-  auto device = fxkit::Device::create(
-      {instance, physical_device, vk_device, graphics_queue, graphics_family, &device_create_info}, options, errors);
+  auto device = fxkit::Device::create({instance, physical_device, vk_device, graphics_queue,
+                                       graphics_family, &device_create_info}, options, errors);
   if (!device)
     for (const fxkit::Message& m : errors) log(m.rendered);
   ASSERT_TRUE(device) << (logged.empty() ? "" : logged[0]);
@@ -64,7 +66,7 @@ TEST_F(ExampleTest, EmbeddingDeviceEffectFrame) {
   fxkit::Effect effect = device->load("effects/wood.fx");
   if (!effect.ok())
     for (const fxkit::Message& m : effect.messages()) log(m.rendered);  // file:line:col: error: ...
-  fxkit::Technique technique = effect.technique("wood");                // or effect.select({.distance = 12.0f})
+  fxkit::Technique technique = effect.technique("wood");  // or effect.select({.distance = 12.0f})
   const fxkit::Param world_view_projection = effect.param("WORLDVIEWPROJECTION");  // name or semantic
   effect.set(effect.param("LightDirection"), {0.3f, -0.8f, -0.5f});
   ASSERT_TRUE(effect.ok() && technique.valid()) << technique.reason() << (logged.empty() ? "" : logged[0]);
@@ -75,8 +77,8 @@ TEST_F(ExampleTest, EmbeddingDeviceEffectFrame) {
   ASSERT_TRUE(image);
   fx::DiagnosticSink sink;
   const float triangle[3][6] = {{-1, -1, 0, 0, 0, -1}, {3, -1, 0, 0, 0, -1}, {-1, 3, 0, 0, 0, -1}};
-  auto buffer = fx::vk::Buffer::create(
-      ctx(), {sizeof triangle, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, fx::vk::MemoryUsage::upload, "triangle"}, sink);
+  auto buffer = fx::vk::Buffer::create(ctx(), {sizeof triangle, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                               fx::vk::MemoryUsage::upload, "triangle"}, sink);
   ASSERT_TRUE(buffer && buffer->write(triangle, sizeof triangle));
   const std::vector<Object> objects = {Object{.vertices = buffer->handle()}};
   const VkViewport viewport = image->viewport();

@@ -1,17 +1,19 @@
 // docs/hot-reload.md and runtime/reload/include/fx/reload/vulkan_reload_backend.h: a
 // FileWatcher loop, and an EffectLibrary drawing through a ReloadBackend (here into an
 // EffectPreview's target).
+// The examples are the docs' text, verbatim (examples_compiled_test.cpp): not reformatted.
+// clang-format off
 #include <array>
 #include <chrono>
 
 #include "example_fixture.h"
-#include "fx/binding/effect_preview.h"
 #include "fx/model/parameter_store.h"
 #include "fx/reload/effect_library.h"
 #include "fx/reload/file_watcher.h"
-#include "fx/reload/vulkan_reload_backend.h"
 #include "fx/select/caps_sources.h"
 #include "fx/select/selection.h"
+#include "fx/binding/effect_preview.h"
+#include "fx/reload/vulkan_reload_backend.h"
 
 namespace fx::docs {
 namespace {
@@ -29,9 +31,9 @@ TEST_F(ExampleTest, WatchingFiles) {
   auto reload_everything_that_uses = [&](const std::filesystem::path&, fx::FileEventKind) { ++reloads; };
 
   fx::FileWatcher watcher({.coalesce_window = std::chrono::milliseconds(50)});
-  watcher.watch("effects/strand_aniso.fx");  // and every file it #includes
+  watcher.watch("effects/strand_aniso.fx");     // and every file it #includes
   watcher.watch("effects/common.fxh");
-  while (running()) {  // a reload worker thread
+  while (running()) {                            // a reload worker thread
     for (const fx::FileEvent& e : watcher.poll(std::chrono::milliseconds(50)))
       reload_everything_that_uses(e.path, e.kind);  // kind: changed | deleted
   }
@@ -69,21 +71,16 @@ TEST_F(ReloadExample, LoadSetSelectDrawPoll) {
   };
   auto running = running_for(2);
 
-  fx::vk::ReloadBackend backend(ctx, textures, frames,
-                                {.formats = formats, .binding = desc, .vertex_layout = layout_for});
-  fx::EffectLibrary lib({.include_dirs = {"effects"},
-                         .coalesce = 50ms,
-                         .backend = &backend,
-                         .caps = caps,
-                         .frames_in_flight = 2,
-                         .on_event = log_event});
-  fx::EffectHandle e = lib.load("effects/strand_aniso.fx");  // ok(), diagnostics()
-  fx::Param light = e.param("Light0Direction");              // by name, else semantic
+  fx::vk::ReloadBackend backend(ctx, textures, frames, {.formats = formats, .binding = desc, .vertex_layout = layout_for});
+  fx::EffectLibrary lib({.include_dirs = {"effects"}, .coalesce = 50ms, .backend = &backend,
+                         .caps = caps, .frames_in_flight = 2, .on_event = log_event});
+  fx::EffectHandle e = lib.load("effects/strand_aniso.fx");   // ok(), diagnostics()
+  fxkit::Param light = e.param("Light0Direction");               // by name, else semantic
   e.params()->set(light, std::span<const float>(dir));
-  e.select({.distance = 12.f, .scheme = "quality"});  // remembered for reloads
+  e.select({.distance = 12.f, .scheme = "quality"});          // remembered for reloads
   for (uint64_t frame = 0; running(); ++frame) {
     fx::vk::EffectBinding* binding = fx::vk::ReloadBackend::binding(*e.version());
-    draw(*binding, e.technique());                                 // begin, apply each pass, end
+    draw(*binding, e.technique());                            // begin, apply each pass, end
     for (const fx::ReloadEvent& ev : lib.poll(frame)) report(ev);  // at the frame boundary
   }
 
