@@ -11,6 +11,7 @@
 #include "flat_initializer.h"
 #include "fx/ascii_case.h"
 #include "fx/state_table.h"
+#include "multisample_operator.h"
 
 namespace fx {
 
@@ -178,6 +179,7 @@ void EffectUnitBuilder::build() {
   find_lowered_globals();
   respelled_ = detail::flat_initializer_spellings(toks_);
   respelled_.merge(detail::case_insensitive_type_spellings(toks_, u_.symbols_));
+  respelled_.merge(detail::multisample_operator_spellings(toks_));
   respell_helper_uniforms();
   emit_hlsl();
   for (uint32_t i = 0; i < u_.decls_.size(); ++i) {
