@@ -85,6 +85,12 @@ PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique
   if (!compiled) return out;
 
   const PassProgram& program = programs.program(*ep);
+  // What fxkit cannot draw on a Vulkan device: a combination of stages its emulation does not
+  // cover. A historic caps profile (dx7, ...) describes the hardware the effect was written
+  // for, where the pass ran: there it stays valid, as D3DX says.
+  if (caps.generation == CapsGeneration::vulkan)
+    for (const std::string& why : program.unsupported)
+      out.reasons.push_back(reason("pass-not-drawable", pass_range, why));
   auto at = [&](ShaderStage s) {
     const StageUnit* ps = ep->find(s);
     return ps ? ps->range : pass_range;

@@ -83,6 +83,8 @@ class TechniqueValidator {
     out.range = technique.range;
     out.annotations = annotations(technique);
     for (uint32_t p = 0; p < technique.passes.size(); ++p) check_pass(technique, p);
+    // Nothing to draw: a binding has no pass to apply, so no device runs it.
+    if (technique.passes.empty()) reasons_.add("no-passes", technique.range, "the technique has no passes");
     check_requires(technique);
     out.reasons = reasons_.take();
     out.valid = out.reasons.empty();
@@ -347,6 +349,9 @@ class TechniqueValidator {
                        (hull ? "hull shader but no domain shader" : "domain shader but no hull shader") +
                        "; tessellation needs both");
     if (bound(PassStage::vertex)) return;
+    // ConstructGSWithSO of a vertex shader is that vertex shader with stream output: the pass
+    // draws with it.
+    if (const ShaderBinding* gs = bound(PassStage::geometry); gs && gs->profile.starts_with("vs_")) return;
     for (PassStage s : {PassStage::hull, PassStage::domain, PassStage::geometry, PassStage::pixel})
       if (const ShaderBinding* b = bound(s)) {
         reasons_.add("missing-vertex-shader", b->range,
