@@ -123,7 +123,6 @@ class MacroEngine {
   // Appends the expansion of `in` to `out` (nothing beyond `in` is read).
   void expand_list(std::span<const Token> in, std::vector<Token>& out);
   // True while a function-like macro's arguments are being collected from the files.
-  bool collecting_arguments() const { return collecting_ != 0; }
 
  private:
   struct Context;
@@ -149,7 +148,6 @@ class MacroEngine {
   size_t depth_ = 0;      // levels in use by nested expand_list calls
   size_t disabled_ = 0;   // macros currently disabled
   uint32_t counter_ = 0;  // __COUNTER__
-  int collecting_ = 0;
   std::string scratch_;
 };
 

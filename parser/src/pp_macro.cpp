@@ -84,7 +84,6 @@ void MacroEngine::reset(FileTokenSource* files) {
   depth_ = 0;
   disabled_ = 0;
   counter_ = 0;
-  collecting_ = 0;
   level(0).from_files = true;
 }
 
@@ -233,11 +232,9 @@ bool MacroEngine::collect_arguments(Level& l, const Token& name, Macro& m, Token
   l.arg_begin.assign(1, 0);
   size_t params = m.params.size();
   int depth = 1;
-  if (l.from_files) ++collecting_;
   for (;;) {
     Token t = next_raw(l);
     if (t.kind == TokenKind::eof) {
-      if (l.from_files) --collecting_;
       l.pushback.push_back(t);
       if (!budget_.exhausted())
         diags_.error("unterminated-macro-call", name.range(),
@@ -258,7 +255,6 @@ bool MacroEngine::collect_arguments(Level& l, const Token& name, Macro& m, Token
     }
     l.args.push_back(t);
   }
-  if (l.from_files) --collecting_;
   l.arg_begin.push_back(static_cast<uint32_t>(l.args.size()));
   size_t given = l.arg_begin.size() - 1;
   if (params == 0 && given == 1 && l.args.empty()) given = 0;

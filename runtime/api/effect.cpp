@@ -15,12 +15,6 @@
 namespace fxkit {
 namespace {
 
-fx::Param to_fx(Param p) { return {p.index, p.generation}; }
-
-fx::HostMatrixOrder to_fx(MatrixOrder order) {
-  return order == MatrixOrder::row_major ? fx::HostMatrixOrder::row_major : fx::HostMatrixOrder::column_major;
-}
-
 // Keeps a refused set's reason for messages() while it is true: until the parameter is set
 // (or reset), replacing the previous reason for it.
 bool kept(detail::EffectState& s, Param p, const fx::ParamStatus& status) {
@@ -70,8 +64,8 @@ std::vector<TechniqueInfo> Effect::techniques() const {
     info.drawable = info.reason.empty();
     // The emulated profile's reasons follow the device's in the selection's choice.
     if (choice && choice != version->techniques && version->techniques) {
-      const std::vector<std::string>& all = choice->rejections(t);
-      for (size_t r = version->techniques->rejections(t).size(); r < all.size(); ++r)
+      const std::vector<std::string>& all = choice->reasons(t);
+      for (size_t r = version->techniques->reasons(t).size(); r < all.size(); ++r)
         info.caps_reason += (info.caps_reason.empty() ? "" : "; ") + all[r];
     }
     out.push_back(std::move(info));
@@ -115,53 +109,52 @@ Technique Effect::select(const Criteria& criteria) const {
 
 Param Effect::param(std::string_view name_or_semantic) const {
   if (!state_) return {};
-  const fx::Param p = state_->handle.param(name_or_semantic);
-  return {p.index, p.generation};
+  return state_->handle.param(name_or_semantic);
 }
 
 bool Effect::set(Param p, float value) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && kept(*state_, p, store->set(to_fx(p), value));
+  return store && kept(*state_, p, store->set(p, value));
 }
 bool Effect::set(Param p, int32_t value) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && kept(*state_, p, store->set(to_fx(p), value));
+  return store && kept(*state_, p, store->set(p, value));
 }
 bool Effect::set(Param p, bool value) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && kept(*state_, p, store->set(to_fx(p), value));
+  return store && kept(*state_, p, store->set(p, value));
 }
 bool Effect::set(Param p, std::span<const float> values) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && kept(*state_, p, store->set(to_fx(p), values));
+  return store && kept(*state_, p, store->set(p, values));
 }
 
 bool Effect::set(Param p, std::span<const int32_t> values) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && kept(*state_, p, store->set(to_fx(p), values));
+  return store && kept(*state_, p, store->set(p, values));
 }
 
 // set_matrix past its inline per-object path: the checked store and its status.
 bool Effect::set_matrix_checked(Param p, const float* m16, MatrixOrder order) {
   detail::EffectState* s = state_.get();
   if (!s || !s->store) return false;
-  const fx::ParamStatus status = s->store->set_matrix(to_fx(p), std::span<const float>(m16, 16), to_fx(order));
+  const fx::ParamStatus status = s->store->set_matrix(p, std::span<const float>(m16, 16), order);
   return kept(*s, p, status);
 }
 
 bool Effect::get(Param p, std::span<float> out) const {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && store->get(to_fx(p), out);
+  return store && store->get(p, out);
 }
 
 bool Effect::get(Param p, std::span<int32_t> out) const {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && store->get(to_fx(p), out);
+  return store && store->get(p, out);
 }
 
 bool Effect::reset(Param p) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
-  return store && kept(*state_, p, store->reset(to_fx(p)));
+  return store && kept(*state_, p, store->reset(p));
 }
 
 uint32_t Effect::set_scene(const Scene& scene) {

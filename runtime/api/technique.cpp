@@ -37,7 +37,7 @@ namespace detail {
 std::string technique_reason(const fx::EffectVersion& version, uint32_t t) {
   if (!version.techniques->valid(t)) {
     std::string why;
-    for (const std::string& r : version.techniques->rejections(t)) why += (why.empty() ? "" : "; ") + r;
+    for (const std::string& r : version.techniques->reasons(t)) why += (why.empty() ? "" : "; ") + r;
     return why.empty() ? "rejected by validation" : why;
   }
   const fx::vk::EffectBinding* binding = fx::vk::ReloadBackend::binding(version);

@@ -221,12 +221,12 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
                                 m.size,
                                 m.array_stride,
                                 m.matrix_stride ? m.matrix_stride : 16u,
-                                MatrixOrder::column_major};
+                                MatrixPacking::column_major};
             // An HLSL matrix keeps its declared meaning; a GLSL mat4 M * v stores HLSL's
             // mul(v, M) transposed (column c of the GLSL matrix is row c of M).
             Param root = params.find(root_name(m.name));
             const Type* type = root.valid() ? params.type(root) : nullptr;
-            if (glsl) l.order = MatrixOrder::row_major;
+            if (glsl) l.order = MatrixPacking::row_major;
             else if (type) l.order = type->order;
             members.push_back(std::move(l));
           }

@@ -20,7 +20,7 @@ std::string upper(std::string_view s) {
 }
 
 // A column-vector matrix G (used as G * v) is HLSL's M in mul(v, M) transposed; glm's
-// column-major memory of G is exactly M's rows, so it goes in as HostMatrixOrder::row_major.
+// column-major memory of G is exactly M's rows, so it goes in as fxkit::MatrixOrder::row_major.
 bool set_matrix(ParameterStore& params, Param p, const Type& type, const glm::mat4& g) {
   const float* m = glm::value_ptr(g);  // m[r * 4 + c] == M[r][c]
   if (type.rows == 4 && type.cols == 4) return bool(params.set_matrix(p, std::span<const float>(m, 16)));

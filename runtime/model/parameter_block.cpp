@@ -12,7 +12,7 @@ namespace {
 // every array element and every matrix register starts a 16-byte register.
 uint32_t default_element_stride(const Type& t, uint32_t matrix_stride) {
   if (t.cls == TypeClass::matrix) {
-    uint32_t registers = t.order == MatrixOrder::row_major ? t.rows : t.cols;
+    uint32_t registers = t.order == MatrixPacking::row_major ? t.rows : t.cols;
     return registers * matrix_stride;
   }
   return 16;
@@ -117,7 +117,7 @@ void ParameterStore::Impl::plan_runs(const Node& n, const BlockMemberLayout& m, 
   for (uint32_t e = 0; e < count; ++e) {
     const uint64_t base = m.offset + static_cast<uint64_t>(e) * (count > 1 ? astride : 0);
     const uint32_t first = e * per;
-    const bool columns = elem.cls == TypeClass::matrix && m.order == MatrixOrder::column_major;
+    const bool columns = elem.cls == TypeClass::matrix && m.order == MatrixPacking::column_major;
     if (columns && elem.rows == 4 && elem.cols == 4 && mstride == 16 && base + 64 <= limit) {
       runs.push_back({n.offset + first, static_cast<uint32_t>(base), 16, 4, n.pooled, RunKind::columns4x4});
     } else if (columns) {

@@ -183,13 +183,13 @@ ParamStatus ParameterStore::set(Param p, std::span<const int32_t> v) {
   return {};
 }
 
-bool ParameterStore::set_matrix_fast(Param p, const float* v, size_t count, HostMatrixOrder order) {
+bool ParameterStore::set_matrix_fast(Param p, const float* v, size_t count, fxkit::MatrixOrder order) {
   Impl& s = *impl_;
   if (p.generation != s.draw.generation || p.index >= s.nodes.size()) return false;
   const Impl::Node& n = s.nodes[p.index];
   if (n.type.cls != TypeClass::matrix || !n.all_float || count != n.words) return false;
   s.sync(n.top);
-  if (order == HostMatrixOrder::row_major) {
+  if (order == fxkit::MatrixOrder::row_major) {
     s.store_floats(n, v);
     return true;
   }
@@ -198,13 +198,13 @@ bool ParameterStore::set_matrix_fast(Param p, const float* v, size_t count, Host
   return true;
 }
 
-ParamStatus ParameterStore::set_matrix_checked(Param p, std::span<const float> v, HostMatrixOrder order) {
+ParamStatus ParameterStore::set_matrix_checked(Param p, std::span<const float> v, fxkit::MatrixOrder order) {
   Impl& s = *impl_;
   uint32_t i;
   if (ParamStatus st = s.resolve(p, i); !st) return st;
   const Impl::Node& n = s.nodes[i];
   if (n.type.cls != TypeClass::matrix) return fail(ParamStatus::type_mismatch, s.describe(i) + " is not a matrix");
-  if (order == HostMatrixOrder::row_major) return s.write_floats(i, v.data(), v.size());
+  if (order == fxkit::MatrixOrder::row_major) return s.write_floats(i, v.data(), v.size());
   const uint32_t r = n.type.rows, c = n.type.cols, per = r * c;
   if (v.size() != n.words)
     return fail(ParamStatus::size_mismatch,
@@ -265,13 +265,13 @@ ParamStatus ParameterStore::get(Param p, std::span<int32_t> out) const {
   return {};
 }
 
-ParamStatus ParameterStore::get_matrix(Param p, std::span<float> out, HostMatrixOrder order) const {
+ParamStatus ParameterStore::get_matrix(Param p, std::span<float> out, fxkit::MatrixOrder order) const {
   const Impl& s = *impl_;
   uint32_t i;
   if (ParamStatus st = s.resolve(p, i); !st) return st;
   const Impl::Node& n = s.nodes[i];
   if (n.type.cls != TypeClass::matrix) return fail(ParamStatus::type_mismatch, s.describe(i) + " is not a matrix");
-  if (ParamStatus st = get(p, out); !st || order == HostMatrixOrder::row_major) return st;
+  if (ParamStatus st = get(p, out); !st || order == fxkit::MatrixOrder::row_major) return st;
   const uint32_t r = n.type.rows, c = n.type.cols, per = r * c;
   std::vector<float> rows(out.begin(), out.end());
   for (uint32_t e = 0; e < n.words / per; ++e)

@@ -363,8 +363,8 @@ Type TypeTable::resolve(const ast::TypeRef& ref, uint32_t storage, const ast::Li
     }
   }
   if (t.cls == TypeClass::matrix) {
-    if (storage & ast::kRowMajor) t.order = MatrixOrder::row_major;
-    if (storage & ast::kColumnMajor) t.order = MatrixOrder::column_major;
+    if (storage & ast::kRowMajor) t.order = MatrixPacking::row_major;
+    if (storage & ast::kColumnMajor) t.order = MatrixPacking::column_major;
   }
   std::vector<uint32_t> extra;
   for (const ast::ExprPtr& dim : dims) {

@@ -364,7 +364,6 @@ std::optional<std::chrono::steady_clock::time_point> FileWatcher::next_deadline(
 void FileWatcher::interrupt() { impl_->wake.interrupt(); }
 WatchBackend FileWatcher::backend() const { return impl_->active; }
 const DiagnosticSink& FileWatcher::diagnostics() const { return impl_->diagnostics; }
-void FileWatcher::clear_diagnostics() { impl_->diagnostics.clear(); }
 
 FileWatcherStats FileWatcher::stats() const {
   FileWatcherStats s = impl_->stats;

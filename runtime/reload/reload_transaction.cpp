@@ -41,7 +41,7 @@ void merge(std::vector<TechniqueFacts>& facts, const ProgramOutcome& outcome) {
       if (i == kNoIndex) continue;
     }
     facts[i].valid = false;
-    facts[i].rejections.push_back(r.reason);
+    facts[i].reasons.push_back(r.reason);
   }
 }
 

@@ -41,7 +41,7 @@ std::shared_ptr<const TechniqueChoice> TechniqueChoice::build(std::vector<Techni
     c.range = t.range;
     for (auto& [name, value] : t.annotations) c.annotations.set(std::move(name), std::move(value));
     c.valid = t.valid;
-    c.rejection_reasons = std::move(t.rejections);
+    c.reasons = std::move(t.reasons);
     choice->impl_->candidates.push_back(std::move(c));
   }
   if (caps) validate(choice->impl_->candidates, *caps);
@@ -55,7 +55,7 @@ std::shared_ptr<const TechniqueChoice> TechniqueChoice::restricted(
   choice->impl_->candidates = impl_->candidates;
   for (size_t i = 0; i < extra.size() && i < choice->impl_->candidates.size(); ++i) {
     TechniqueCandidate& c = choice->impl_->candidates[i];
-    for (const std::string& why : extra[i]) c.rejection_reasons.push_back(why);
+    for (const std::string& why : extra[i]) c.reasons.push_back(why);
     c.valid = c.valid && extra[i].empty();
   }
   DiagnosticSink ignored;  // the plan's annotation diagnostics were reported with this choice
@@ -78,9 +78,9 @@ std::string_view TechniqueChoice::name(uint32_t index) const {
 bool TechniqueChoice::valid(uint32_t index) const {
   return index < impl_->candidates.size() && impl_->candidates[index].valid;
 }
-const std::vector<std::string>& TechniqueChoice::rejections(uint32_t index) const {
+const std::vector<std::string>& TechniqueChoice::reasons(uint32_t index) const {
   static const std::vector<std::string> kNone;
-  return index < impl_->candidates.size() ? impl_->candidates[index].rejection_reasons : kNone;
+  return index < impl_->candidates.size() ? impl_->candidates[index].reasons : kNone;
 }
 const SelectionPlan& TechniqueChoice::plan() const { return impl_->plan; }
 

@@ -5,21 +5,20 @@
 
 #include "fx/model/effect_model.h"
 #include "fx/model/parameter_store.h"
+#include "fx/select/annotation_value.h"
 #include "version_steps.h"
 
 namespace fx {
 namespace {
 
-using FactValue = std::variant<bool, int32_t, float, std::string>;
-
-std::optional<FactValue> fact_value(const Value& v) {
-  if (v.is_string()) return FactValue(v.text);
+std::optional<AnnotationValue> fact_value(const Value& v) {
+  if (v.is_string()) return AnnotationValue(v.text);
   if (v.type.cls != TypeClass::scalar || v.components.empty()) return std::nullopt;
   switch (v.type.base) {
-    case BaseType::boolean: return FactValue(v.truthy());
+    case BaseType::boolean: return AnnotationValue(v.truthy());
     case BaseType::int32:
-    case BaseType::uint32: return FactValue(static_cast<int32_t>(v.number()));
-    default: return FactValue(static_cast<float>(v.number()));
+    case BaseType::uint32: return AnnotationValue(static_cast<int32_t>(v.number()));
+    default: return AnnotationValue(static_cast<float>(v.number()));
   }
 }
 

@@ -16,9 +16,9 @@ std::vector<TechniqueCandidate> effect_candidates(std::span<const TechniqueValid
     for (const TechniqueAnnotation& a : t.annotations)
       std::visit([&](const auto& v) { c.annotations.set(a.first, AnnotationValue(v)); }, a.second);
     for (size_t i = 0; i < t.reasons.size() && i < max_reasons; ++i)
-      c.rejection_reasons.push_back(located_reason(t.reasons[i], sm));
+      c.reasons.push_back(located_reason(t.reasons[i], sm));
     if (t.reasons.size() > max_reasons)
-      c.rejection_reasons.push_back("and " + std::to_string(t.reasons.size() - max_reasons) + " more");
+      c.reasons.push_back("and " + std::to_string(t.reasons.size() - max_reasons) + " more");
     out.push_back(std::move(c));
   }
   return out;

@@ -110,7 +110,7 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
     }
 
     std::string invalid;
-    for (const auto& r : c.rejection_reasons) invalid += (invalid.empty() ? "" : "; ") + r;
+    for (const auto& r : c.reasons) invalid += (invalid.empty() ? "" : "; ") + r;
     plan.entries_.push_back(e);
     plan.names_.push_back(c.name);
     plan.schemes_.push_back(std::move(schemes));

@@ -52,17 +52,17 @@ bool validate(TechniqueCandidate& candidate, const DeviceCaps& caps) {
       std::vector<std::string> errors;
       for (auto& r : parse_caps_requirements(*list, &errors)) reqs.push_back(std::move(r));
       for (auto& e : errors) {
-        candidate.rejection_reasons.push_back(std::move(e));
+        candidate.reasons.push_back(std::move(e));
         candidate.valid = false;
       }
     } else {
-      candidate.rejection_reasons.push_back("annotation Requires must be a string");
+      candidate.reasons.push_back("annotation Requires must be a string");
       candidate.valid = false;
     }
   }
   for (const auto& r : reqs) {
     if (auto why = unmet_reason(caps, r)) {
-      candidate.rejection_reasons.push_back(std::move(*why));
+      candidate.reasons.push_back(std::move(*why));
       candidate.valid = false;
     }
   }

@@ -57,7 +57,7 @@ FrameResources& FrameResources::operator=(FrameResources&& o) noexcept {
   frames_in_flight_ = o.frames_in_flight_;
   id_ = o.id_;
   slice_ = o.slice_, alignment_ = o.alignment_, head_ = o.head_, slice_start_ = o.slice_start_, frame_ = o.frame_;
-  bytes_uploaded_ = o.bytes_uploaded_, sets_allocated_ = o.sets_allocated_;
+  bytes_uploaded_ = o.bytes_uploaded_;
   return *this;
 }
 
@@ -100,7 +100,6 @@ VkDescriptorSet FrameResources::allocate_set(VkDescriptorSetLayout layout, Diagn
                "the descriptor pool of frame " + std::to_string(frame_) + " is exhausted");
     return VK_NULL_HANDLE;
   }
-  ++sets_allocated_;
   return set;
 }
 

@@ -29,9 +29,9 @@ TEST(ModelType, ScalarsVectorsMatrices) {
   EXPECT_EQ(m34.cols, 4);
   EXPECT_EQ(test::param(*b, "mm").type.to_string(), "float4x4");
   EXPECT_EQ(test::param(*b, "mt").type.to_string(), "float2x3");
-  EXPECT_EQ(test::param(*b, "rm").type.order, MatrixOrder::row_major);
-  EXPECT_EQ(test::param(*b, "cm").type.order, MatrixOrder::column_major);
-  EXPECT_EQ(test::param(*b, "m").type.order, MatrixOrder::column_major);
+  EXPECT_EQ(test::param(*b, "rm").type.order, MatrixPacking::row_major);
+  EXPECT_EQ(test::param(*b, "cm").type.order, MatrixPacking::column_major);
+  EXPECT_EQ(test::param(*b, "m").type.order, MatrixPacking::column_major);
 }
 
 TEST(ModelType, ArraysStructsTypedefs) {

@@ -175,14 +175,14 @@ TEST(EffectCandidates, CandidatesCopyAnnotationsAndCapTheirReasons) {
     EXPECT_EQ(c.name, t.name);
     EXPECT_EQ(c.valid, t.valid);
     EXPECT_TRUE(c.annotations.string("UIName").has_value()) << c.name;
-    EXPECT_EQ(c.rejection_reasons.size(), std::min<size_t>(t.reasons.size(), 5)) << c.name;
+    EXPECT_EQ(c.reasons.size(), std::min<size_t>(t.reasons.size(), 5)) << c.name;
     if (t.reasons.size() > 4) {
-      EXPECT_EQ(c.rejection_reasons[4], "and " + std::to_string(t.reasons.size() - 4) + " more");
+      EXPECT_EQ(c.reasons[4], "and " + std::to_string(t.reasons.size() - 4) + " more");
     }
   }
   auto small = fx::effect_candidates(modern.techniques, l->sm, 1);
   for (size_t i = 0; i < small.size(); ++i)
-    EXPECT_LE(small[i].rejection_reasons.size(), modern.techniques[i].reasons.empty() ? 0u : 2u);
+    EXPECT_LE(small[i].reasons.size(), modern.techniques[i].reasons.empty() ? 0u : 2u);
   EXPECT_EQ(modern.first_valid(), fx::find_next_valid(modern.techniques));
   ASSERT_TRUE(modern.first_valid().has_value());
   EXPECT_EQ(modern.techniques[*modern.first_valid()].name, "diffuse_ps20");

@@ -77,10 +77,10 @@ TEST(Generations, StrandsPickPerSeed) {
 TEST(Generations, ModernDeviceRejectsEverySm1AndFixedFunctionTechnique) {
   auto list = diffuse_bump();
   EXPECT_EQ(fx::validate(list, profile("modern")), 1u);
-  EXPECT_EQ(list[1].rejection_reasons,
+  EXPECT_EQ(list[1].reasons,
             (std::vector<std::string>{"vs_1_1 not supported on modern", "ps_1_1 not supported on modern"}));
-  EXPECT_EQ(list[2].rejection_reasons, (std::vector<std::string>{"fixed_function_stages not supported on modern",
-                                                                 "dot3 not supported on modern"}));
+  EXPECT_EQ(list[2].reasons, (std::vector<std::string>{"fixed_function_stages not supported on modern",
+                                                       "dot3 not supported on modern"}));
 }
 
 TEST(Generations, ReasonsExplainTheDx7Choice) {
@@ -110,14 +110,14 @@ TEST(Generations, FindNextValidWalksLikeD3dx) {
 TEST(Generations, ValidateKeepsUpstreamRejectionsAndFlagsBadRequires) {
   fx::TechniqueCandidate t = technique("broken", "ps_2_0 dott3");
   t.valid = false;
-  t.rejection_reasons = {"compile error in PS()"};
+  t.reasons = {"compile error in PS()"};
   t.requirements.push_back(fx::CapsRequirement::limit("render_targets", 2));
   EXPECT_FALSE(fx::validate(t, profile("dx9")));
-  EXPECT_EQ(t.rejection_reasons, (std::vector<std::string>{"compile error in PS()", "unknown requirement 'dott3'"}));
+  EXPECT_EQ(t.reasons, (std::vector<std::string>{"compile error in PS()", "unknown requirement 'dott3'"}));
   fx::TechniqueCandidate u = technique("typed", "");
   u.annotations = {{"Requires", 3}};
   EXPECT_FALSE(fx::validate(u, profile("dx9")));
-  EXPECT_EQ(u.rejection_reasons, std::vector<std::string>{"annotation Requires must be a string"});
+  EXPECT_EQ(u.reasons, std::vector<std::string>{"annotation Requires must be a string"});
 }
 
 }  // namespace

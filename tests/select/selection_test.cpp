@@ -16,7 +16,7 @@ fx::TechniqueCandidate tech(std::string name, Ann annotations, bool valid = true
   t.name = std::move(name);
   t.annotations = fx::AnnotationMap(annotations);
   t.valid = valid;
-  if (!valid) t.rejection_reasons = {"ps_3_0 not supported on dx9"};
+  if (!valid) t.reasons = {"ps_3_0 not supported on dx9"};
   return t;
 }
 

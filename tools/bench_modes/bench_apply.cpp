@@ -32,9 +32,9 @@ constexpr uint32_t kObjects = 2000;
 // A per-object matrix as both paths get it: the app's array, in the layout the shader's
 // registers read (see the object transforms below), and that layout for fxkit.
 struct AppMatrix {
-  fx::Param param;
+  fxkit::Param param;
   const glm::mat4* values = nullptr;
-  fx::HostMatrixOrder order = fx::HostMatrixOrder::row_major;
+  fxkit::MatrixOrder order = fxkit::MatrixOrder::row_major;
 };
 
 // One technique group as an engine holds it through the public API.
@@ -136,7 +136,7 @@ int bench_apply(const BenchArgs& args) {
     // Object transforms: a grid, the same for both paths. The app keeps them in the layout
     // its shaders' registers read, as an engine choosing its own math would: the transpose
     // for column_major registers. Both paths read the same arrays; fxkit is told their
-    // order (HostMatrixOrder), the hand-written path copies them as they are.
+    // order (fxkit::MatrixOrder), the hand-written path copies them as they are.
     std::vector<glm::mat4> world(kObjects), wvp(kObjects), world_t(kObjects), wvp_t(kObjects);
     for (uint32_t i = 0; i < kObjects; ++i) {
       world[i] =
@@ -148,9 +148,9 @@ int bench_apply(const BenchArgs& args) {
     for (Group& G : groups) {
       auto layout = [&](AppMatrix& m, const std::vector<glm::mat4>& rows, const std::vector<glm::mat4>& columns) {
         const fx::Type* type = G.effect->params->type(m.param);
-        const bool registers_are_columns = !type || type->order == fx::MatrixOrder::column_major;
+        const bool registers_are_columns = !type || type->order == fx::MatrixPacking::column_major;
         m.values = registers_are_columns ? columns.data() : rows.data();
-        m.order = registers_are_columns ? fx::HostMatrixOrder::column_major : fx::HostMatrixOrder::row_major;
+        m.order = registers_are_columns ? fxkit::MatrixOrder::column_major : fxkit::MatrixOrder::row_major;
       };
       layout(G.world, world, world_t);
       layout(G.wvp, wvp, wvp_t);
@@ -189,11 +189,8 @@ int bench_apply(const BenchArgs& args) {
         std::fprintf(stderr, "fxkit bench apply: %s: %s\n", name.c_str(), technique.reason().c_str());
         return kInputErrors;
       }
-      auto order = [](fx::HostMatrixOrder o) {
-        return o == fx::HostMatrixOrder::row_major ? fxkit::MatrixOrder::row_major : fxkit::MatrixOrder::column_major;
-      };
-      pub.push_back({effect, technique, effect.param("WORLD"), effect.param("WORLDVIEWPROJECTION"),
-                     order(G.world.order), order(G.wvp.order), G.world.values, G.wvp.values});
+      pub.push_back({effect, technique, effect.param("WORLD"), effect.param("WORLDVIEWPROJECTION"), G.world.order,
+                     G.wvp.order, G.world.values, G.wvp.values});
     }
 
     // The hand-written path's objects: the same pipelines, its own sets and ring.
@@ -260,14 +257,15 @@ int bench_apply(const BenchArgs& args) {
           block.bytes.assign(b.size, 0);
           std::vector<fx::BlockMemberLayout> members;
           for (const fx::BlockMember& m : b.reflection->members) {
-            const fx::Param root = values.find(root_name(m.name));
+            const fxkit::Param root = values.find(root_name(m.name));
             const fx::Type* type = root.valid() ? values.type(root) : nullptr;
-            const fx::MatrixOrder order = type ? type->order : fx::MatrixOrder::column_major;
+            const fx::MatrixPacking order = type ? type->order : fx::MatrixPacking::column_major;
             members.push_back(
                 {m.name, m.offset, m.size, m.array_stride, m.matrix_stride ? m.matrix_stride : 16u, order});
-            if (m.name == "World") block.world = m.offset, block.world_columns = order == fx::MatrixOrder::column_major;
+            if (m.name == "World")
+              block.world = m.offset, block.world_columns = order == fx::MatrixPacking::column_major;
             if (m.name == "WorldViewProjection")
-              block.wvp = m.offset, block.wvp_columns = order == fx::MatrixOrder::column_major;
+              block.wvp = m.offset, block.wvp_columns = order == fx::MatrixPacking::column_major;
           }
           values.bind_layout(block_id, members, b.size);
           values.write_block(block_id++, block.bytes);

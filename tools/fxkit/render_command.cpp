@@ -35,7 +35,7 @@ bool set_param(fx::ParameterStore& store, const std::string& assignment, std::st
   const size_t eq = assignment.find('=');
   if (eq == std::string::npos) return error = "--param wants NAME=VALUE, got '" + assignment + "'", false;
   const std::string name = assignment.substr(0, eq);
-  fx::Param p = store.find(name);
+  fxkit::Param p = store.find(name);
   if (!p.valid()) p = store.by_semantic(name);
   const fx::Type* type = store.type(p);
   if (!type) return error = "no parameter '" + name + "'", false;

@@ -17,8 +17,7 @@ using namespace detail;
 
 void EffectUnitBuilder::emit_hlsl() {
   detail::ShaderTextWriter w(sm_);
-  u_.pre_release_ = !effect_.profile_header.empty();
-  if (u_.pre_release_) w.out() += pre_release_hlsl_prelude();
+  if (!effect_.profile_header.empty()) w.out() += pre_release_hlsl_prelude();
   uint32_t last_span = UINT32_MAX;
   // Each declaration is a range of the text that a unit can leave out: it starts with its
   // own #line, and what follows it starts with one too.

@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "fx/model/draw_state.h"
+#include "fx/model/matrix_order.h"  // fxkit::MatrixOrder
+#include "fx/model/param.h"         // fxkit::Param
 #include "fx/vulkan/apply_stats.h"
 #include "fx/vulkan/pass_apply.h"
 #include "fxkit/message.h"
@@ -24,17 +26,8 @@ namespace detail {
 struct EffectState;
 }
 
-// A parameter of an effect (by name or semantic); stays valid across reloads. Invalid
-// handles make every set() return false and change nothing.
-struct Param {
-  uint32_t index = std::numeric_limits<uint32_t>::max();
-  uint32_t generation = 0;
-  bool valid() const { return index != std::numeric_limits<uint32_t>::max(); }
-};
-
-// How the application's 16 matrix floats are ordered: row_major = m[r][c] at r * 4 + c
-// (D3DX; the memory of a glm::mat4 M used as M * v is HLSL's matrix in mul(v, M)).
-enum class MatrixOrder : uint8_t { row_major, column_major };
+// fxkit::Param (fx/model/param.h): a parameter of an effect (by name or semantic); stays
+// valid across reloads. Invalid handles make every set() return false and change nothing.
 
 // What the application asks of an object this frame (docs/selection.md): techniques with
 // LOD bands, cost and error annotations are chosen against these.

@@ -115,8 +115,6 @@ class EffectUnits {
   // The names the effect declares at file scope (variables, functions, types, cbuffer
   // members), for "did you mean" on an unknown name in shader code.
   const std::vector<std::string>& symbols() const { return symbols_; }
-  // True when the pre-release HLSL prelude is prepended (an `fx.2.0`-style header).
-  bool pre_release() const { return pre_release_; }
 
  private:
   struct GlslBlockText {
@@ -161,7 +159,6 @@ class EffectUnits {
   std::string initializations(const std::vector<uint32_t>& reached, uint32_t before) const;
   std::optional<StageUnit> check_;     // uncalled_check()
   std::vector<std::string> uncalled_;  // the functions it checks
-  bool pre_release_ = false;
   std::vector<std::string> symbols_;
   std::vector<EffectPass> passes_;
   std::vector<GlslBlockText> glsl_blocks_;

@@ -17,8 +17,6 @@ namespace fx::emulation {
 struct AsmVersion {
   bool pixel = false;
   int major = 1, minor = 1;
-  // ps.1.1-1.3 (texture registers t#, register range [-1,1]) rather than ps.1.4.
-  bool ps_1_x_classic() const { return pixel && minor < 4; }
   std::string spelled() const;  // "ps.1.4"
 };
 

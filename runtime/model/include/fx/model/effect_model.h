@@ -44,7 +44,6 @@ struct Parameter {
   uint32_t storage = 0;                // ast::StorageClass bits
   bool is_shared() const { return storage & ast::kShared; }
   bool is_static() const { return storage & ast::kStatic; }
-  bool is_const() const { return storage & ast::kConst; }
   bool is_uniform() const { return !(storage & ast::kStatic); }
   // Lands in a uniform block or a resource binding the app can set (not static, not a
   // string, shader or state object).

@@ -16,17 +16,12 @@
 
 #include "fx/model/draw_state.h"
 #include "fx/model/effect_model.h"
+#include "fx/model/matrix_order.h"
+#include "fx/model/param.h"
 
 namespace fx {
 
-// A handle to a parameter, an array element or a struct member of one store. `generation`
-// is the store generation it was issued in; handles from before a remap() are translated.
-struct Param {
-  uint32_t index = kNoIndex;
-  uint32_t generation = 0;
-  bool valid() const { return index != kNoIndex; }
-  friend bool operator==(Param, Param) = default;
-};
+using fxkit::Param;  // fx/model/param.h: one handle type for the store and the public API
 
 // A bound uniform block of one store (ParameterStore::block).
 struct BlockHandle {
@@ -43,18 +38,14 @@ struct ParamStatus {
   explicit operator bool() const { return code == ok; }
 };
 
-// How the app's 16 floats are ordered: `row_major` = m[r][c] at r*4+c (D3DX, and the
-// memory of a glm::mat4 G used as G*v, which is HLSL's M in mul(v, M)).
-enum class HostMatrixOrder : uint8_t { row_major, column_major };
-
 // Placement of one parameter (or member path `light.dir`, `bones[3]`) in a uniform block.
 struct BlockMemberLayout {
   std::string name;
-  uint32_t offset = 0;                            // bytes
-  uint32_t size = 0;                              // bytes, arrays included
-  uint32_t array_stride = 0;                      // bytes between array elements (0: not an array)
-  uint32_t matrix_stride = 16;                    // bytes between registers of a matrix
-  MatrixOrder order = MatrixOrder::column_major;  // HLSL meaning (see docs/parameters.md)
+  uint32_t offset = 0;                                // bytes
+  uint32_t size = 0;                                  // bytes, arrays included
+  uint32_t array_stride = 0;                          // bytes between array elements (0: not an array)
+  uint32_t matrix_stride = 16;                        // bytes between registers of a matrix
+  MatrixPacking order = MatrixPacking::column_major;  // HLSL meaning (see docs/parameters.md)
 };
 
 // Storage of `shared` parameters, referenced by every store created with it. Matching is
@@ -120,7 +111,7 @@ class ParameterStore {
   // A matrix (or matrix array) given as 16-float host matrices (or rows*cols). Inline so
   // that the per-object call (a current handle, one matrix of the right count, either
   // order) returns without building a status: the caller's empty ParamStatus folds away.
-  ParamStatus set_matrix(Param p, std::span<const float> v, HostMatrixOrder order = HostMatrixOrder::row_major) {
+  ParamStatus set_matrix(Param p, std::span<const float> v, fxkit::MatrixOrder order = fxkit::MatrixOrder::row_major) {
     if (store_hot(p, v, order) || set_matrix_fast(p, v.data(), v.size(), order)) return {};
     return set_matrix_checked(p, v, order);
   }
@@ -131,7 +122,7 @@ class ParameterStore {
   ParamStatus get(Param p, bool& out) const;
   ParamStatus get(Param p, std::span<float> out) const;
   ParamStatus get(Param p, std::span<int32_t> out) const;
-  ParamStatus get_matrix(Param p, std::span<float> out, HostMatrixOrder order = HostMatrixOrder::row_major) const;
+  ParamStatus get_matrix(Param p, std::span<float> out, fxkit::MatrixOrder order = fxkit::MatrixOrder::row_major) const;
   ParamStatus get_string(Param p, std::string& out) const;
   // Restores the default of `p` (zero when it has none); from then on remap() gives `p` the
   // new file's default, as for a parameter never set.
@@ -171,13 +162,13 @@ class ParameterStore {
   friend std::vector<std::string> remap(const ParameterStore& old_store, ParameterStore& new_store);
   // set_matrix's per-object path, inline: a current handle of a float4x4 with a hot block
   // (below), 16 floats. True when it stored the value (nothing to report).
-  bool store_hot(Param p, std::span<const float> v, HostMatrixOrder order);
+  bool store_hot(Param p, std::span<const float> v, fxkit::MatrixOrder order);
   // set_matrix's out-of-line path for a current handle without a hot block (none yet, or
   // a set through the words ended it): into the words when the floats fit the node as they are; false
   // sends the call to the checked path.
-  bool set_matrix_fast(Param p, const float* v, size_t count, HostMatrixOrder order);
+  bool set_matrix_fast(Param p, const float* v, size_t count, fxkit::MatrixOrder order);
   // Everything else, with the status that says what is wrong.
-  ParamStatus set_matrix_checked(Param p, std::span<const float> v, HostMatrixOrder order);
+  ParamStatus set_matrix_checked(Param p, std::span<const float> v, fxkit::MatrixOrder order);
   // update_block's way for a block with logged changes or pooled parameters (re-packed),
   // or an invalid handle (empty).
   std::span<const uint8_t> update_block_slow(BlockHandle block, bool& changed);
@@ -194,8 +185,8 @@ class ParameterStore {
   DrawState* draw_ = nullptr;
 };
 
-inline bool ParameterStore::store_hot(Param p, std::span<const float> v, HostMatrixOrder order) {
-  return v.size() == 16 && draw_->store_hot(p.index, p.generation, v.data(), order == HostMatrixOrder::column_major);
+inline bool ParameterStore::store_hot(Param p, std::span<const float> v, fxkit::MatrixOrder order) {
+  return v.size() == 16 && draw_->store_hot(p.index, p.generation, v.data(), order == fxkit::MatrixOrder::column_major);
 }
 
 // After a reload: for every parameter of `old_store` that still exists in `new_store` with

@@ -59,9 +59,10 @@ enum class SamplerShape : uint8_t {
   comparison,
 };
 
-// How a matrix is laid out in a constant buffer in HLSL terms: column_major (the fxc
-// default) stores each HLSL column in one 16-byte register.
-enum class MatrixOrder : uint8_t { column_major, row_major };
+// How a matrix is packed in a constant buffer, in HLSL terms (the row_major/column_major
+// keywords): column_major (the fxc default) stores each HLSL column in one 16-byte register.
+// Not the order of the application's floats: that is fxkit::MatrixOrder.
+enum class MatrixPacking : uint8_t { column_major, row_major };
 
 struct StructType;
 struct ConstantScope;  // fx/model/value.h
@@ -72,9 +73,9 @@ struct Type {
   TypeClass cls = TypeClass::error;
   BaseType base = BaseType::float32;
   uint8_t rows = 1, cols = 1;
-  MatrixOrder order = MatrixOrder::column_major;  // matrices only
-  std::vector<uint32_t> array_dims;               // `float a[4][2]` -> {4, 2}
-  std::shared_ptr<const StructType> structure;    // TypeClass::structure
+  MatrixPacking order = MatrixPacking::column_major;  // matrices only
+  std::vector<uint32_t> array_dims;                   // `float a[4][2]` -> {4, 2}
+  std::shared_ptr<const StructType> structure;        // TypeClass::structure
   TextureShape texture = TextureShape::any;
   SamplerShape sampler = SamplerShape::any;
   std::string object_kind;  // shader / state_object: "VertexShader", "BlendState", ...

@@ -24,11 +24,16 @@
 #include "fx/reload/technique_choice.h"
 #include "fx/select/device_caps.h"
 
+namespace fxkit {
+struct Param;  // fx/model/param.h
+}
+
 namespace fx {
+
+using fxkit::Param;
 
 // Declared, not included, so this header stays light: include fx/model/parameter_store.h
 // (Param, ParameterStore) and fx/select/selection.h (SelectionCriteria) where you use them.
-struct Param;
 class ParameterStore;
 struct SelectionCriteria;
 struct EffectVersion;

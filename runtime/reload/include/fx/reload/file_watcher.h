@@ -104,7 +104,6 @@ class FileWatcher {
   WatchBackend backend() const;
   // Problems met so far: inotify unavailable, watch limit reached, unreadable files.
   const DiagnosticSink& diagnostics() const;
-  void clear_diagnostics();
   FileWatcherStats stats() const;
 
  private:

@@ -12,6 +12,7 @@
 
 #include "fx/diagnostic.h"
 #include "fx/no_index.h"
+#include "fx/select/annotation_value.h"
 #include "fx/select/device_caps.h"
 #include "fx/source_location.h"
 
@@ -25,9 +26,9 @@ struct TechniqueFacts {
   std::string name;
   SourceRange range;
   // Scalar and string annotations, typed as the file writes them.
-  std::vector<std::pair<std::string, std::variant<bool, int32_t, float, std::string>>> annotations;
-  bool valid = true;                    // every pass compiled and linked
-  std::vector<std::string> rejections;  // why not (unsupported or failed passes)
+  std::vector<std::pair<std::string, AnnotationValue>> annotations;
+  bool valid = true;                 // every pass compiled and linked
+  std::vector<std::string> reasons;  // why not (unsupported or failed passes)
 };
 
 // Criteria kept across reloads (the scheme string is owned).
@@ -60,7 +61,7 @@ class TechniqueChoice {
   std::string_view name(uint32_t index) const;
   // Whether the technique survived validation, and why not.
   bool valid(uint32_t index) const;
-  const std::vector<std::string>& rejections(uint32_t index) const;
+  const std::vector<std::string>& reasons(uint32_t index) const;
   // The same techniques with more reasons to reject them (`extra[i]` for technique i, empty
   // when it has none): validation against a caps profile to emulate. Valid only where both
   // this choice and the extra validation accept a technique, with both sets of reasons.

@@ -11,14 +11,12 @@
 #include <variant>
 #include <vector>
 
+#include "fx/select/annotation_value.h"
 #include "fx/select/caps_requirement.h"
 #include "fx/select/device_caps.h"
 #include "fx/source_location.h"
 
 namespace fx {
-
-// An annotation value as the effect file types it.
-using AnnotationValue = std::variant<bool, int32_t, float, std::string>;
 
 // A technique's annotations: a handful of entries, looked up case-insensitively by name,
 // kept in declaration order (later duplicates shadow nothing: the first one wins).
@@ -47,11 +45,11 @@ class AnnotationMap {
 // One technique as selection sees it.
 struct TechniqueCandidate {
   std::string name;
-  bool valid = true;                           // false: never chosen, reasons say why
-  std::vector<std::string> rejection_reasons;  // "ps_2_0 not supported on dx7"
-  AnnotationMap annotations;                   // vocabulary: docs/selection.md
-  std::vector<CapsRequirement> requirements;   // in addition to a `string Requires` annotation
-  SourceRange range;                           // the technique's declaration, for diagnostics
+  bool valid = true;                          // false: never chosen, reasons say why
+  std::vector<std::string> reasons;           // "ps_2_0 not supported on dx7"
+  AnnotationMap annotations;                  // vocabulary: docs/selection.md
+  std::vector<CapsRequirement> requirements;  // in addition to a `string Requires` annotation
+  SourceRange range;                          // the technique's declaration, for diagnostics
 };
 
 // D3DX ValidateTechnique: checks requirements (the list and the `Requires` annotation)

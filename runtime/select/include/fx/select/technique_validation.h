@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "fx/diagnostic.h"
+#include "fx/select/annotation_value.h"
 #include "fx/select/device_caps.h"
 #include "fx/source_manager.h"
 
@@ -28,9 +29,8 @@ namespace ast {
 struct Effect;
 }
 
-// A technique annotation as selection reads it (the same alternatives as
-// technique_candidate.h's AnnotationValue, so values copy across unchanged).
-using TechniqueAnnotation = std::pair<std::string, std::variant<bool, int32_t, float, std::string>>;
+// A technique annotation as selection reads it.
+using TechniqueAnnotation = std::pair<std::string, AnnotationValue>;
 
 // One technique validated on one device.
 struct TechniqueValidation {

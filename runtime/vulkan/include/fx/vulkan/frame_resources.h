@@ -77,7 +77,6 @@ class FrameResources {
 
   VkBuffer ring_buffer() const { return ring_.handle(); }
   uint64_t uniform_bytes_uploaded() const { return bytes_uploaded_; }
-  uint64_t sets_allocated() const { return sets_allocated_; }
 
  private:
   std::optional<UniformAllocation> ring_full(DiagnosticSink& sink) const;
@@ -94,7 +93,6 @@ class FrameResources {
   std::vector<VkDescriptorPool> pools_;
   uint64_t id_ = 0;
   uint32_t frames_in_flight_ = 0;
-  uint64_t sets_allocated_ = 0;
 };
 
 }  // namespace fx::vk
