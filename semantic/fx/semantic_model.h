@@ -41,11 +41,11 @@ std::string_view to_string(SymbolKind kind);
 struct Symbol {
   SymbolKind kind = SymbolKind::parameter;
   std::string_view name;
-  ShaderType type;            // values: declared type; functions: return type
-  SourceRange name_range;     // where the name is declared
-  SourceRange range;          // the whole declaration
-  std::string_view container;  // members: the struct; cbuffer members: the cbuffer; locals and
-                               // function parameters: the function
+  ShaderType type;                          // values: declared type; functions: return type
+  SourceRange name_range;                   // where the name is declared
+  SourceRange range;                        // the whole declaration
+  std::string_view container;               // members: the struct; cbuffer members: the cbuffer; locals and
+                                            // function parameters: the function
   const ast::Variable* variable = nullptr;  // parameters, members, cbuffer and function parameters
   const ast::Function* function = nullptr;  // functions
   const ast::Struct* structure = nullptr;   // structures
@@ -60,7 +60,7 @@ struct Reference {
   uint32_t token = 0;  // index into ast::Effect::tokens
   const Symbol* symbol = nullptr;
   const Intrinsic* intrinsic = nullptr;
-  ShaderType type;          // the value's type where known
+  ShaderType type;           // the value's type where known
   bool declaration = false;  // the identifier declares `symbol` (a local's name)
 };
 

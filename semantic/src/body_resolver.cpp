@@ -10,29 +10,67 @@ namespace fx::semantic {
 namespace {
 
 // Words of the language itself: never resolved, never counted.
-constexpr std::array<std::string_view, 46> kKeywords = {
-    "if",           "else",        "for",          "while",       "do",           "switch",          "case",
-    "default",      "break",       "continue",     "return",      "discard",      "true",            "false",
-    "TRUE",         "FALSE",       "NULL",         "this",        "struct",       "typedef",         "const",
-    "static",       "uniform",     "extern",       "volatile",    "precise",      "row_major",       "column_major",
-    "inline",       "groupshared", "nointerpolation", "noperspective", "centroid", "in",             "out",
-    "inout",        "register",    "packoffset",   "snorm",       "unorm",        "compile",         "sampler_state",
-    "stateblock_state", "asm",     "vector",       "matrix"};
+constexpr std::array<std::string_view, 46> kKeywords = {"if",
+                                                        "else",
+                                                        "for",
+                                                        "while",
+                                                        "do",
+                                                        "switch",
+                                                        "case",
+                                                        "default",
+                                                        "break",
+                                                        "continue",
+                                                        "return",
+                                                        "discard",
+                                                        "true",
+                                                        "false",
+                                                        "TRUE",
+                                                        "FALSE",
+                                                        "NULL",
+                                                        "this",
+                                                        "struct",
+                                                        "typedef",
+                                                        "const",
+                                                        "static",
+                                                        "uniform",
+                                                        "extern",
+                                                        "volatile",
+                                                        "precise",
+                                                        "row_major",
+                                                        "column_major",
+                                                        "inline",
+                                                        "groupshared",
+                                                        "nointerpolation",
+                                                        "noperspective",
+                                                        "centroid",
+                                                        "in",
+                                                        "out",
+                                                        "inout",
+                                                        "register",
+                                                        "packoffset",
+                                                        "snorm",
+                                                        "unorm",
+                                                        "compile",
+                                                        "sampler_state",
+                                                        "stateblock_state",
+                                                        "asm",
+                                                        "vector",
+                                                        "matrix"};
 
 // Modifiers that may precede a local declaration's type.
-constexpr std::array<std::string_view, 12> kModifiers = {"const",       "static",  "uniform",      "precise",
+constexpr std::array<std::string_view, 12> kModifiers = {"const",       "static",       "uniform",  "precise",
                                                          "row_major",   "column_major", "volatile", "extern",
-                                                         "groupshared", "snorm",   "unorm",        "inline"};
+                                                         "groupshared", "snorm",        "unorm",    "inline"};
 
 // Loop and branch attributes: `[unroll]`, `[loop]`, `[unroll(4)]` before a statement.
-constexpr std::array<std::string_view, 10> kAttributes = {"unroll", "loop",      "branch",  "flatten",
-                                                          "fastopt", "allow_uav_condition", "call", "forcecase",
-                                                          "isolate", "maxtempreg"};
+constexpr std::array<std::string_view, 10> kAttributes = {
+    "unroll", "loop",      "branch",  "flatten",   "fastopt", "allow_uav_condition",
+    "call",   "forcecase", "isolate", "maxtempreg"};
 
 // Constructs the model does not follow: a body holding one is resolved, but nothing in it
 // is reported.
-constexpr std::array<std::string_view, 9> kUnmodelled = {"struct", "typedef",  "class", "interface", "namespace",
-                                                         "template", "asm", "_asm", "__asm"};
+constexpr std::array<std::string_view, 9> kUnmodelled = {"struct",   "typedef", "class", "interface", "namespace",
+                                                         "template", "asm",     "_asm",  "__asm"};
 
 template <size_t N>
 bool one_of(const std::array<std::string_view, N>& words, std::string_view w) {
@@ -249,8 +287,8 @@ bool BodyResolver::try_declaration(uint32_t& i) {
   }
   if (k + 1 >= last_ || !tokens_[k].is(TokenKind::identifier) || one_of(kKeywords, tokens_[k].text())) return false;
   const TokenKind next = tokens_[k + 1].kind;
-  if (next != TokenKind::equal && next != TokenKind::semi && next != TokenKind::comma &&
-      next != TokenKind::l_square && next != TokenKind::colon)
+  if (next != TokenKind::equal && next != TokenKind::semi && next != TokenKind::comma && next != TokenKind::l_square &&
+      next != TokenKind::colon)
     return false;
   if (!known_type) modelled_ = false;
   ShaderType type;
@@ -319,8 +357,8 @@ void BodyResolver::resolve_identifier(uint32_t i) {
   if (const Symbol* s = lookup(name)) {
     ++model_.counts_.identifiers;
     ++model_.counts_.resolved;
-    const bool value = s->kind != SymbolKind::structure && s->kind != SymbolKind::type_alias &&
-                       s->kind != SymbolKind::function;
+    const bool value =
+        s->kind != SymbolKind::structure && s->kind != SymbolKind::type_alias && s->kind != SymbolKind::function;
     add_reference(i, s, value ? s->type : ShaderType{});
     return;
   }

@@ -48,10 +48,10 @@ class BodyResolver {
   const ast::Function& function_;
   const std::vector<Token>& tokens_;
   uint32_t first_ = 0, last_ = 0;
-  const ast::Struct* owner_ = nullptr;  // a method's class
-  bool modelled_ = true;                // false: resolve, but report nothing
-  std::vector<Symbol*> scope_;          // parameters and locals in view, innermost last
-  std::vector<size_t> scope_marks_;     // scope_.size() at each open `{`
+  const ast::Struct* owner_ = nullptr;              // a method's class
+  bool modelled_ = true;                            // false: resolve, but report nothing
+  std::vector<Symbol*> scope_;                      // parameters and locals in view, innermost last
+  std::vector<size_t> scope_marks_;                 // scope_.size() at each open `{`
   std::unordered_map<uint32_t, ShaderType> typed_;  // token (identifier or `]`) -> value type
   std::vector<uint32_t> brackets_;                  // open `[`
   Declaration declaration_;

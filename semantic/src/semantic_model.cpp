@@ -143,10 +143,8 @@ void SemanticModel::add_globals() {
   // Types need every struct and typedef declared first: a parameter may name a struct the
   // file declares later (fxc refuses it; the model need not).
   for (Symbol& s : symbols_) {
-    if (s.variable)
-      s.type = resolve_type(s.variable->type, s.variable->array_dims.size());
-    else if (s.function)
-      s.type = resolve_type(s.function->return_type, 0);
+    if (s.variable) s.type = resolve_type(s.variable->type, s.variable->array_dims.size());
+    else if (s.function) s.type = resolve_type(s.function->return_type, 0);
   }
 }
 

@@ -11,22 +11,51 @@ namespace fx::semantic {
 namespace {
 
 constexpr std::array<std::string_view, 18> kScalars = {
-    "bool",      "int",       "uint",     "dword",    "half",     "float",     "double", "min16float", "min10float",
-    "min16int",  "min12int",  "min16uint", "int16_t", "uint16_t", "int64_t", "uint64_t", "float16_t", "float32_t"};
+    "bool",     "int",      "uint",      "dword",   "half",     "float",   "double",   "min16float", "min10float",
+    "min16int", "min12int", "min16uint", "int16_t", "uint16_t", "int64_t", "uint64_t", "float16_t",  "float32_t"};
 
 // Lower-case names; shader code spells them in either case (`texture2D`, `Texture2D`).
-constexpr std::array<std::string_view, 41> kObjects = {
-    "texture",          "texture1d",          "texture2d",          "texture3d",
-    "texturecube",      "texture1darray",     "texture2darray",     "texture2dms",
-    "texture2dmsarray", "texturecubearray",   "sampler",            "sampler1d",
-    "sampler2d",        "sampler3d",          "samplercube",        "sampler_state",
-    "samplerstate",     "samplercomparisonstate", "buffer",         "rwbuffer",
-    "structuredbuffer", "rwstructuredbuffer", "appendstructuredbuffer", "consumestructuredbuffer",
-    "byteaddressbuffer", "rwbyteaddressbuffer", "rwtexture1d",      "rwtexture1darray",
-    "rwtexture2d",      "rwtexture2darray",   "rwtexture3d",        "inputpatch",
-    "outputpatch",      "pointstream",        "linestream",         "trianglestream",
-    "vertexshader",     "pixelshader",        "geometryshader",     "string",
-    "void"};
+constexpr std::array<std::string_view, 41> kObjects = {"texture",
+                                                       "texture1d",
+                                                       "texture2d",
+                                                       "texture3d",
+                                                       "texturecube",
+                                                       "texture1darray",
+                                                       "texture2darray",
+                                                       "texture2dms",
+                                                       "texture2dmsarray",
+                                                       "texturecubearray",
+                                                       "sampler",
+                                                       "sampler1d",
+                                                       "sampler2d",
+                                                       "sampler3d",
+                                                       "samplercube",
+                                                       "sampler_state",
+                                                       "samplerstate",
+                                                       "samplercomparisonstate",
+                                                       "buffer",
+                                                       "rwbuffer",
+                                                       "structuredbuffer",
+                                                       "rwstructuredbuffer",
+                                                       "appendstructuredbuffer",
+                                                       "consumestructuredbuffer",
+                                                       "byteaddressbuffer",
+                                                       "rwbyteaddressbuffer",
+                                                       "rwtexture1d",
+                                                       "rwtexture1darray",
+                                                       "rwtexture2d",
+                                                       "rwtexture2darray",
+                                                       "rwtexture3d",
+                                                       "inputpatch",
+                                                       "outputpatch",
+                                                       "pointstream",
+                                                       "linestream",
+                                                       "trianglestream",
+                                                       "vertexshader",
+                                                       "pixelshader",
+                                                       "geometryshader",
+                                                       "string",
+                                                       "void"};
 
 bool swizzle_letters(std::string_view s, std::string_view set, uint8_t size) {
   if (s.empty() || s.size() > 4) return false;
@@ -98,8 +127,9 @@ bool is_object_type_name(std::string_view name) {
 }
 
 bool takes_template_arguments(std::string_view name) {
-  return name == "vector" || name == "matrix" || (is_object_type_name(name) && !iequals(name, "string") &&
-                                                  !iequals(name, "void") && !iequals(name, "sampler_state"));
+  return name == "vector" || name == "matrix" ||
+         (is_object_type_name(name) && !iequals(name, "string") && !iequals(name, "void") &&
+          !iequals(name, "sampler_state"));
 }
 
 std::optional<ShaderType> swizzle_type(const ShaderType& base, std::string_view swizzle) {

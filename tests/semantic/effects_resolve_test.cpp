@@ -49,10 +49,11 @@ Tally model_tree(const fs::path& root) {
     if (e.is_regular_file() && e.path().extension() == ".fx") files.push_back(e.path());
   std::sort(files.begin(), files.end());
   for (const fs::path& f : files) model_file(f, tally);
-  std::printf("%s: %zu files, %zu identifiers in bodies: %zu resolved to declarations, %zu intrinsics, %zu left "
-              "alone, %zu findings in %zu files\n",
-              root.string().c_str(), tally.files, tally.counts.identifiers, tally.counts.resolved,
-              tally.counts.intrinsics, tally.counts.unresolved, tally.counts.diagnosed, tally.files_with_findings);
+  std::printf(
+      "%s: %zu files, %zu identifiers in bodies: %zu resolved to declarations, %zu intrinsics, %zu left "
+      "alone, %zu findings in %zu files\n",
+      root.string().c_str(), tally.files, tally.counts.identifiers, tally.counts.resolved, tally.counts.intrinsics,
+      tally.counts.unresolved, tally.counts.diagnosed, tally.files_with_findings);
   return tally;
 }
 

@@ -29,8 +29,8 @@ TEST(ShaderType, Swizzles) {
   EXPECT_EQ(swizzle_type(v3, "xy")->name, "float2");
   EXPECT_EQ(swizzle_type(v3, "bgr")->name, "float3");
   EXPECT_EQ(swizzle_type(v3, "x")->kind, TypeClass::scalar);
-  EXPECT_FALSE(swizzle_type(v3, "w"));     // beyond its size
-  EXPECT_FALSE(swizzle_type(v3, "xg"));    // two sets mixed
+  EXPECT_FALSE(swizzle_type(v3, "w"));      // beyond its size
+  EXPECT_FALSE(swizzle_type(v3, "xg"));     // two sets mixed
   EXPECT_FALSE(swizzle_type(v3, "xyzxy"));  // five components
   const ShaderType scalar = *builtin_numeric_type("float");
   EXPECT_EQ(swizzle_type(scalar, "xxxx")->name, "float4");
