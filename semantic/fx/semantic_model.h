@@ -69,6 +69,7 @@ struct ResolutionCounts {
   size_t identifiers = 0;  // identifiers in function bodies that are no keyword or built-in type
   size_t resolved = 0;     // to a declaration
   size_t intrinsics = 0;   // to an intrinsic function
+  size_t methods = 0;      // `.name` on a resource object (`tex.Sample`): no declaration to go to
   size_t unresolved = 0;   // left alone: from a macro, or in code the model does not model
   size_t diagnosed = 0;    // reported as unknown-identifier or unknown-member
 };

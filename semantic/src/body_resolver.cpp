@@ -425,7 +425,8 @@ void BodyResolver::resolve_member(uint32_t i) {
     report_unknown_member(i, base);
     return;
   }
-  ++model_.counts_.unresolved;  // an object's method (`tex.Sample`), or an unknown type
+  if (base.kind == TypeClass::object) ++model_.counts_.methods;  // `tex.Sample`
+  else ++model_.counts_.unresolved;                              // a value of a type not modelled
 }
 
 void BodyResolver::report_unknown_identifier(uint32_t i) {

@@ -240,6 +240,8 @@ ShaderType SemanticModel::resolve_type(const ast::TypeRef& type, size_t array_ra
     t.kind = TypeClass::structure;
     t.structure = type.definition;
     t.name = type.definition->name.empty() ? std::string("struct") : std::string(type.definition->name);
+  } else if ((type.name == "matrix" || type.name == "vector") && type.template_arg.empty()) {
+    t = *builtin_numeric_type(type.name == "matrix" ? "float4x4" : "float4");  // HLSL's defaults
   } else if (type.name == "vector" || type.name == "matrix" || !type.template_arg.empty()) {
     t.kind = is_object_type_name(type.name) ? TypeClass::object : TypeClass::unknown;
     t.name = type.name + "<" + type.template_arg + ">";

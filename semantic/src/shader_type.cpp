@@ -15,7 +15,13 @@ constexpr std::array<std::string_view, 18> kScalars = {
     "min16int", "min12int", "min16uint", "int16_t", "uint16_t", "int64_t", "uint64_t", "float16_t",  "float32_t"};
 
 // Lower-case names; shader code spells them in either case (`texture2D`, `Texture2D`).
-constexpr std::array<std::string_view, 41> kObjects = {"texture",
+constexpr std::array<std::string_view, 47> kObjects = {"computeshader",
+                                                       "domainshader",
+                                                       "hullshader",
+                                                       "depthstencilview",
+                                                       "rendertargetview",
+                                                       "stateblock",
+                                                       "texture",
                                                        "texture1d",
                                                        "texture2d",
                                                        "texture3d",

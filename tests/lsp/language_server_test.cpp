@@ -162,12 +162,13 @@ TEST_F(LanguageServerTest, DefinitionAcrossIncludesAndFromPasses) {
 
 TEST_F(LanguageServerTest, DocumentSymbolsOutlineTheEffect) {
   open_main();
-  json reply = session_.request("textDocument/documentSymbol", {{"textDocument", {{"uri", fxkit::lsp::path_to_uri(path("main.fx"))}}}});
+  json reply = session_.request("textDocument/documentSymbol",
+                                {{"textDocument", {{"uri", fxkit::lsp::path_to_uri(path("main.fx"))}}}});
   const json& symbols = reply["result"];
   std::vector<std::string> names;
   for (const json& s : symbols) names.push_back(s["name"]);
-  EXPECT_EQ(names, (std::vector<std::string>{"WorldViewProj", "Gloss", "Diffuse", "DiffuseSampler", "VSOut", "VS",
-                                             "PS", "Main"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"WorldViewProj", "Gloss", "Diffuse", "DiffuseSampler", "VSOut", "VS", "PS",
+                                             "Main"}));
   EXPECT_EQ(symbols[7]["children"][0]["name"], "P0");
   EXPECT_EQ(symbols[4]["children"].size(), 3u);
 }
@@ -214,8 +215,9 @@ TEST_F(LanguageServerTest, CancelledRequestsAreAnsweredAsCancelled) {
 TEST_F(LanguageServerTest, ConfigurationFromTheWorkspaceFile) {
   folder_.write("inc/extra.fxh", "float ExtraGloss = 2;\n");
   folder_.write("fxkit.json", R"({"includeDirs": ["inc"], "defines": ["STRENGTH=ExtraGloss"]})");
-  const std::string text = "#include \"extra.fxh\"\nfloat4 PS() : COLOR { return STRENGTH; }\n"
-                           "technique T { pass { PixelShader = compile ps_2_0 PS(); } }\n";
+  const std::string text =
+      "#include \"extra.fxh\"\nfloat4 PS() : COLOR { return STRENGTH; }\n"
+      "technique T { pass { PixelShader = compile ps_2_0 PS(); } }\n";
   folder_.write("cfg.fx", text);
   session_.initialize({}, folder_.path());
   session_.open(path("cfg.fx"), text);

@@ -35,11 +35,9 @@ class LspSession {
     return reply;
   }
   void open(const std::string& path, const std::string& text, int version = 1) {
-    notify("textDocument/didOpen", {{"textDocument",
-                                     {{"uri", fxkit::lsp::path_to_uri(path)},
-                                      {"languageId", "fx"},
-                                      {"version", version},
-                                      {"text", text}}}});
+    notify("textDocument/didOpen",
+           {{"textDocument",
+             {{"uri", fxkit::lsp::path_to_uri(path)}, {"languageId", "fx"}, {"version", version}, {"text", text}}}});
   }
   // An incremental change replacing [start, end) with `text`.
   void change(const std::string& path, int version, int l0, int c0, int l1, int c1, const std::string& text) {

@@ -27,7 +27,9 @@ struct Pipes {
       if (fd >= 0) ::close(fd);
   }
   void send(const json& m) { send_text(fxkit::lsp::frame(m)); }
-  void send_text(const std::string& text) { ASSERT_EQ(::write(to_server[1], text.data(), text.size()), ssize_t(text.size())); }
+  void send_text(const std::string& text) {
+    ASSERT_EQ(::write(to_server[1], text.data(), text.size()), ssize_t(text.size()));
+  }
   void close_input() {
     ::close(to_server[1]);
     to_server[1] = -1;
@@ -47,9 +49,10 @@ TEST(Transport, FramedSessionOverPipes) {
   // cancellation that names it, so it is answered as cancelled.
   p.send(message(1, "initialize", {{"capabilities", json::object()}}));
   p.send_text("Content-Length: 9\r\n\r\n{broken}!");
-  p.send({{"jsonrpc", "2.0"},
-          {"method", "textDocument/didOpen"},
-          {"params", {{"textDocument", {{"uri", "file:///nowhere/t.fx"}, {"version", 1}, {"text", "float x = y;\n"}}}}}});
+  p.send(
+      {{"jsonrpc", "2.0"},
+       {"method", "textDocument/didOpen"},
+       {"params", {{"textDocument", {{"uri", "file:///nowhere/t.fx"}, {"version", 1}, {"text", "float x = y;\n"}}}}}});
   p.send(message(2, "textDocument/hover",
                  {{"textDocument", {{"uri", "file:///nowhere/t.fx"}}}, {"position", {{"line", 0}, {"character", 6}}}}));
   p.send({{"jsonrpc", "2.0"}, {"method", "$/cancelRequest"}, {"params", {{"id", 2}}}});

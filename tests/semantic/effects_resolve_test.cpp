@@ -17,8 +17,9 @@ namespace fs = std::filesystem;
 
 struct Tally {
   size_t files = 0, files_with_findings = 0;
+  size_t parameters = 0, typed_parameters = 0;  // globals and cbuffer members; those with a known type
   fx::semantic::ResolutionCounts counts;
-  std::string findings;
+  std::string findings, untyped;
 };
 
 void model_file(const fs::path& file, Tally& tally) {
@@ -34,6 +35,13 @@ void model_file(const fs::path& file, Tally& tally) {
   tally.counts.identifiers += c.identifiers;
   tally.counts.resolved += c.resolved;
   tally.counts.intrinsics += c.intrinsics;
+  tally.counts.methods += c.methods;
+  for (const fx::semantic::Symbol* s : model.globals())
+    if (s->kind == fx::semantic::SymbolKind::parameter || s->kind == fx::semantic::SymbolKind::cbuffer_member) {
+      ++tally.parameters;
+      if (s->type.known()) ++tally.typed_parameters;
+      else tally.untyped += std::string(s->name) + ": " + s->type.name + "\n";
+    }
   tally.counts.unresolved += c.unresolved;
   tally.counts.diagnosed += c.diagnosed;
   if (!model.diagnostics().empty()) {
@@ -50,10 +58,11 @@ Tally model_tree(const fs::path& root) {
   std::sort(files.begin(), files.end());
   for (const fs::path& f : files) model_file(f, tally);
   std::printf(
-      "%s: %zu files, %zu identifiers in bodies: %zu resolved to declarations, %zu intrinsics, %zu left "
-      "alone, %zu findings in %zu files\n",
+      "%s: %zu files, %zu identifiers in bodies: %zu resolved to declarations, %zu intrinsics, %zu object "
+      "methods, %zu left alone, %zu findings in %zu files; %zu of %zu parameters typed\n%s",
       root.string().c_str(), tally.files, tally.counts.identifiers, tally.counts.resolved, tally.counts.intrinsics,
-      tally.counts.unresolved, tally.counts.diagnosed, tally.files_with_findings);
+      tally.counts.methods, tally.counts.unresolved, tally.counts.diagnosed, tally.files_with_findings,
+      tally.typed_parameters, tally.parameters, tally.untyped.c_str());
   return tally;
 }
 

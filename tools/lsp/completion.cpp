@@ -31,12 +31,43 @@ int kind_of(const fx::semantic::Symbol& s) {
   }
 }
 
-constexpr const char* kBuiltinTypes[] = {
-    "void",      "bool",       "int",        "uint",      "half",        "float",       "double",    "float2",
-    "float3",    "float4",     "half2",      "half3",     "half4",       "int2",        "int3",      "int4",
-    "uint2",     "uint3",      "uint4",      "bool2",     "bool3",       "bool4",       "float2x2",  "float3x3",
-    "float4x4",  "float4x3",   "float3x4",   "texture",   "sampler",     "sampler2D",   "sampler3D", "samplerCUBE",
-    "Texture2D", "Texture3D",  "TextureCube", "SamplerState", "SamplerComparisonState"};
+constexpr const char* kBuiltinTypes[] = {"void",
+                                         "bool",
+                                         "int",
+                                         "uint",
+                                         "half",
+                                         "float",
+                                         "double",
+                                         "float2",
+                                         "float3",
+                                         "float4",
+                                         "half2",
+                                         "half3",
+                                         "half4",
+                                         "int2",
+                                         "int3",
+                                         "int4",
+                                         "uint2",
+                                         "uint3",
+                                         "uint4",
+                                         "bool2",
+                                         "bool3",
+                                         "bool4",
+                                         "float2x2",
+                                         "float3x3",
+                                         "float4x4",
+                                         "float4x3",
+                                         "float3x4",
+                                         "texture",
+                                         "sampler",
+                                         "sampler2D",
+                                         "sampler3D",
+                                         "samplerCUBE",
+                                         "Texture2D",
+                                         "Texture3D",
+                                         "TextureCube",
+                                         "SamplerState",
+                                         "SamplerComparisonState"};
 
 json state_completion(const StateBlockSite& site, std::string_view prefix, const DocumentAnalysis& a) {
   json items = json::array();
@@ -102,8 +133,7 @@ json completion(const DocumentAnalysis& a, const TextDocument& document, Positio
   json items = json::array();
   const std::optional<uint32_t> token = a.token_before(at);
   const bool in_body = token && a.model().function_at(*token);
-  const std::vector<const fx::semantic::Symbol*> names =
-      in_body ? a.model().visible_at(*token) : a.model().globals();
+  const std::vector<const fx::semantic::Symbol*> names = in_body ? a.model().visible_at(*token) : a.model().globals();
   for (const fx::semantic::Symbol* s : names) items.push_back(item(s->name, kind_of(*s), symbol_detail(*s)));
   if (in_body)
     for (const fx::semantic::Intrinsic& in : fx::semantic::all_intrinsics())

@@ -94,6 +94,13 @@ const MacroDefinition* DocumentAnalysis::macro(std::string_view name) const {
 void DocumentAnalysis::index_tokens() const {
   if (indexed_) return;
   indexed_ = true;
+  // The document's tokens by offset in their buffer, then one walk over each buffer's text
+  // that counts lines and UTF-16 columns: linear in the text, with no per-token line lookup.
+  struct Spot {
+    fx::BufferId buffer;
+    uint32_t offset, token;
+  };
+  std::vector<Spot> spots;
   std::unordered_set<fx::BufferId> mine, others;
   const std::vector<fx::Token>& tokens = parsed_.ast.tokens;
   for (uint32_t i = 0; i < tokens.size(); ++i) {
@@ -102,14 +109,37 @@ void DocumentAnalysis::index_tokens() const {
     const fx::BufferId buffer = sm_.buffer_of(t.loc);
     if (others.count(buffer)) continue;
     if (!mine.count(buffer)) {
-      if (std::string(sm_.buffer_name(buffer)) != path_) {
+      if (sm_.buffer_name(buffer) != path_) {
         others.insert(buffer);
         continue;
       }
       mine.insert(buffer);
     }
-    const Position p = position_of(t.loc);
-    places_.push_back({p.line, p.character, utf16_length(t.text(), t.text().size()), i});
+    spots.push_back({buffer, sm_.offset_in_buffer(t.loc), i});
+  }
+  std::sort(spots.begin(), spots.end(), [](const Spot& a, const Spot& b) {
+    return a.buffer != b.buffer ? a.buffer < b.buffer : a.offset < b.offset;
+  });
+  fx::BufferId buffer = 0;
+  std::string_view text;
+  uint32_t at = 0, line = 0, character = 0;
+  for (const Spot& s : spots) {
+    if (s.buffer != buffer) {
+      buffer = s.buffer;
+      text = sm_.buffer_text(buffer);
+      at = line = character = 0;
+    }
+    for (; at < s.offset && at < text.size(); ++at) {
+      const auto c = static_cast<unsigned char>(text[at]);
+      if (c == '\n') {
+        ++line;
+        character = 0;
+      } else if ((c & 0xC0) != 0x80) {
+        character += c >= 0xF0 ? 2 : 1;  // one unit per UTF-8 sequence, two beyond the BMP
+      }
+    }
+    const std::string_view spelling = tokens[s.token].text();
+    places_.push_back({line, character, utf16_length(spelling, spelling.size()), s.token});
   }
   std::sort(places_.begin(), places_.end(), [](const TokenPlace& a, const TokenPlace& b) {
     return a.line != b.line ? a.line < b.line : a.character < b.character;

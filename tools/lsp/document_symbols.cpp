@@ -7,8 +7,19 @@ namespace fxkit::lsp {
 namespace {
 
 // LSP SymbolKind numbers.
-enum Kind { kModule = 2, kNamespace = 3, kPackage = 4, kClass = 5, kMethod = 6, kField = 8, kFunction = 12,
-            kVariable = 13, kObject = 19, kStruct = 23, kTypeParameter = 26 };
+enum Kind {
+  kModule = 2,
+  kNamespace = 3,
+  kPackage = 4,
+  kClass = 5,
+  kMethod = 6,
+  kField = 8,
+  kFunction = 12,
+  kVariable = 13,
+  kObject = 19,
+  kStruct = 23,
+  kTypeParameter = 26
+};
 
 json symbol(const DocumentAnalysis& a, std::string_view name, std::string_view fallback, int kind,
             fx::SourceRange range, fx::SourceRange name_range, std::string detail = {}) {
@@ -57,8 +68,8 @@ json document_symbols(const DocumentAnalysis& a) {
       case fx::ast::DeclKind::function:
         if (a.in_document(d.function->range.begin)) {
           const fx::semantic::Symbol* s = a.model().global(d.function->name);
-          out.push_back(symbol(a, d.function->name, "(function)", kFunction, d.function->range,
-                               d.function->name_range, s ? s->type.spelling() : std::string()));
+          out.push_back(symbol(a, d.function->name, "(function)", kFunction, d.function->range, d.function->name_range,
+                               s ? s->type.spelling() : std::string()));
         }
         break;
       case fx::ast::DeclKind::structure:

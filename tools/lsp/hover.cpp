@@ -12,7 +12,6 @@ json markdown(std::string text, const DocumentAnalysis& a, fx::SourceRange range
   return out;
 }
 
-
 std::string values_of(const fx::StateInfo& row) {
   std::string out;
   for (std::string_view v : fx::enum_names(row)) out += (out.empty() ? "" : ", ") + std::string(v);

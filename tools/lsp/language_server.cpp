@@ -3,8 +3,8 @@
 
 #include <deque>
 
-#include "language_features.h"
 #include "json_rpc.h"
+#include "language_features.h"
 
 namespace fxkit::lsp {
 namespace {
@@ -114,7 +114,8 @@ void LanguageServer::notification(const std::string& method, const json& params)
 
 json LanguageServer::initialize(const json& params) {
   initialized_ = true;
-  if (params.contains("rootUri") && params["rootUri"].is_string()) root_ = uri_to_path(params["rootUri"].get<std::string>());
+  if (params.contains("rootUri") && params["rootUri"].is_string())
+    root_ = uri_to_path(params["rootUri"].get<std::string>());
   else if (params.contains("rootPath") && params["rootPath"].is_string()) root_ = params["rootPath"].get<std::string>();
   initialization_options_ = params.value("initializationOptions", json::object());
   configure();
@@ -135,9 +136,8 @@ void LanguageServer::configure() {
   config.merge(settings_, root_, problems);
   config_ = std::move(config);
   for (const std::string& p : problems)
-    send_({{"jsonrpc", "2.0"},
-           {"method", "window/showMessage"},
-           {"params", {{"type", 2}, {"message", "fxkit: " + p}}}});
+    send_(
+        {{"jsonrpc", "2.0"}, {"method", "window/showMessage"}, {"params", {{"type", 2}, {"message", "fxkit: " + p}}}});
   for (auto& [uri, d] : documents_) {
     d.analysis.reset();
     d.publish = true;
@@ -214,9 +214,10 @@ void LanguageServer::publish_pending() {
     if (!d.publish) continue;
     d.publish = false;
     if (!d.analysis) d.analysis = std::make_shared<const DocumentAnalysis>(d.text, config_, texts_by_path(documents_));
-    send_({{"jsonrpc", "2.0"},
-           {"method", "textDocument/publishDiagnostics"},
-           {"params", {{"uri", uri}, {"version", d.text.version}, {"diagnostics", document_diagnostics(*d.analysis)}}}});
+    send_(
+        {{"jsonrpc", "2.0"},
+         {"method", "textDocument/publishDiagnostics"},
+         {"params", {{"uri", uri}, {"version", d.text.version}, {"diagnostics", document_diagnostics(*d.analysis)}}}});
   }
 }
 

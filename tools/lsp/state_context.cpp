@@ -53,11 +53,11 @@ std::optional<StateBlockSite> state_block_in_text(const TextDocument& document, 
   const std::string_view last = word_before(text, end);
   const std::string_view before = word_before(text, end);
   const StateBlockSite none{};
-  if (last == "pass" || before == "pass") return StateBlockSite{fx::StateBlock::pass, std::nullopt, none.range, nullptr};
+  if (last == "pass" || before == "pass")
+    return StateBlockSite{fx::StateBlock::pass, std::nullopt, none.range, nullptr};
   if (last == "sampler_state")
     return StateBlockSite{fx::StateBlock::sampler_state, fx::StateBlock::sampler_object, none.range, nullptr};
-  if (auto block = fx::state_object_block(before))
-    return StateBlockSite{*block, std::nullopt, none.range, nullptr};
+  if (auto block = fx::state_object_block(before)) return StateBlockSite{*block, std::nullopt, none.range, nullptr};
   return std::nullopt;
 }
 
