@@ -26,6 +26,7 @@ struct FrontEndFlags {
 using Runner = std::function<int()>;
 void register_check(CLI::App& app, Runner& run);
 void register_bench(CLI::App& app, Runner& run);
+void register_lsp(CLI::App& app, Runner& run);
 void register_compile(CLI::App& app, Runner& run);
 void register_info(CLI::App& app, Runner& run);
 void register_watch(CLI::App& app, Runner& run);

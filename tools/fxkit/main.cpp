@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   fxkit::Runner run;
   fxkit::register_check(app, run);
   fxkit::register_bench(app, run);
+  fxkit::register_lsp(app, run);
 #ifdef FXKIT_HAS_RUNTIME
   fxkit::register_compile(app, run);
   fxkit::register_info(app, run);

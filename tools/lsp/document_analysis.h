@@ -1,0 +1,83 @@
+// One analysis of an open effect: the front end (preprocess, parse, check) and the
+// semantic model run on the editor's text, with included files read from the editor's
+// buffers when open and from disk otherwise, and the mapping between the document's
+// positions and the effect's tokens that the requests use.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "fx/frontend.h"
+#include "fx/semantic_model.h"
+#include "text_document.h"
+#include "workspace_config.h"
+
+namespace fxkit::lsp {
+
+using json = nlohmann::json;
+
+// A `#define` found in the effect's files.
+struct MacroDefinition {
+  std::string name;
+  std::string line;  // the directive as written (first line)
+  fx::SourceLocation at;
+};
+
+class DocumentAnalysis {
+ public:
+  // Analyzes `document`; `open` maps paths to the texts of every open document.
+  DocumentAnalysis(const TextDocument& document, const WorkspaceConfig& config,
+                   const std::map<std::string, std::string>& open);
+
+  const std::string& path() const { return path_; }
+  int64_t version() const { return version_; }
+  const fx::SourceManager& sources() const { return sm_; }
+  const fx::ParsedEffect& parsed() const { return parsed_; }
+  const fx::semantic::SemanticModel& model() const { return *model_; }
+  // The front end's diagnostics followed by the semantic model's.
+  const std::vector<fx::Diagnostic>& diagnostics() const { return diags_.diagnostics(); }
+  const std::vector<MacroDefinition>& macros() const { return macros_; }
+
+  // The token of the document at `p` (a position inside a token or just after an
+  // identifier), or nullopt. Tokens made by macro expansion have no place of their own.
+  std::optional<uint32_t> token_at(Position p) const;
+  // The last token of the document that starts before `p`.
+  std::optional<uint32_t> token_before(Position p) const;
+  // LSP position and range of a location (its file location, for macro expansions).
+  Position position_of(fx::SourceLocation loc) const;
+  json range_json(fx::SourceRange range) const;
+  // An LSP Location: uri and range.
+  json location_json(fx::SourceRange range) const;
+  // The file a location is in (after following macro expansions to the invocation).
+  std::string file_of(fx::SourceLocation loc) const;
+  bool in_document(fx::SourceLocation loc) const { return file_of(loc) == path_; }
+  // The source text of a range within one file ("" when it spans files).
+  std::string_view text_of(fx::SourceRange range) const;
+  // A macro defined in the effect's files under `name`, or nullptr (the last definition).
+  const MacroDefinition* macro(std::string_view name) const;
+
+ private:
+  struct TokenPlace {
+    uint32_t line, character, length;  // LSP line and UTF-16 column; length in UTF-16 units
+    uint32_t token;
+  };
+  void index_tokens() const;
+  void find_macros();
+
+  std::string path_;
+  int64_t version_ = 0;
+  fx::SourceManager sm_;
+  fx::DiagnosticSink diags_;
+  fx::ParsedEffect parsed_;
+  std::unique_ptr<fx::semantic::SemanticModel> model_;
+  std::vector<MacroDefinition> macros_;
+  mutable std::vector<TokenPlace> places_;  // the document's tokens in order, built on first use
+  mutable bool indexed_ = false;
+};
+
+}  // namespace fxkit::lsp

@@ -1,0 +1,27 @@
+// The language features over one analysis, one file each: diagnostics for the document,
+// hover, go-to-definition, the document's outline and completion. Each returns the LSP
+// result as JSON (null where the protocol allows "nothing here").
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include "document_analysis.h"
+#include "text_document.h"
+
+namespace fxkit::lsp {
+
+// The analysis's diagnostics as LSP Diagnostics of `document`: those in included files sit
+// on the `#include` line that brings them in, with the include stack as related information.
+json document_diagnostics(const DocumentAnalysis& analysis);
+// Hover: a declaration with its type, semantic, default and annotations; a state with its
+// allowed values and Vulkan mapping; an intrinsic's signature; a macro's definition.
+json hover(const DocumentAnalysis& analysis, const TextDocument& document, Position at);
+// The declaration of what is at `at` (across includes; a pass's shader entry, a macro, an
+// included file).
+json definition(const DocumentAnalysis& analysis, const TextDocument& document, Position at);
+// Techniques with their passes, parameters, functions, structs with their members, cbuffers.
+json document_symbols(const DocumentAnalysis& analysis);
+// State names and values inside passes and state blocks; elsewhere the names in scope
+// (members after `.`), intrinsics and built-in types.
+json completion(const DocumentAnalysis& analysis, const TextDocument& document, Position at);
+
+}  // namespace fxkit::lsp

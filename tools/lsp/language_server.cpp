@@ -1,0 +1,262 @@
+// Request dispatch and document lifecycle of the language server (language_server.h).
+#include "language_server.h"
+
+#include <deque>
+
+#include "json_rpc.h"
+#include "language_features.h"
+
+namespace fxkit::lsp {
+namespace {
+
+// JSON-RPC and LSP error codes.
+constexpr int kParseError = -32700, kInvalidRequest = -32600, kMethodNotFound = -32601, kInvalidParams = -32602,
+              kInternalError = -32603, kServerNotInitialized = -32002, kRequestCancelled = -32800;
+
+Position position_of(const json& p) { return {p.at("line").get<uint32_t>(), p.at("character").get<uint32_t>()}; }
+
+std::map<std::string, std::string> texts_by_path(const auto& documents) {
+  std::map<std::string, std::string> out;
+  for (const auto& [uri, d] : documents) out.emplace(d.text.path, d.text.text);
+  return out;
+}
+
+}  // namespace
+
+LanguageServer::LanguageServer(Send send) : send_(std::move(send)) {}
+
+void LanguageServer::reply(const json& id, json result) {
+  send_({{"jsonrpc", "2.0"}, {"id", id}, {"result", std::move(result)}});
+}
+
+void LanguageServer::reply_error(const json& id, int code, const std::string& message) {
+  send_({{"jsonrpc", "2.0"}, {"id", id}, {"error", {{"code", code}, {"message", message}}}});
+}
+
+void LanguageServer::cancel(const json& id) { cancelled_.insert(id.dump()); }
+
+void LanguageServer::handle(const json& message) {
+  if (!message.is_object()) {
+    reply_error(nullptr, kInvalidRequest, "a message must be a JSON object");
+    return;
+  }
+  const auto method = message.find("method");
+  const auto id = message.find("id");
+  if (method == message.end() || !method->is_string()) {
+    if (id == message.end()) reply_error(nullptr, kInvalidRequest, "a message needs a method");
+    return;  // a reply to a request of ours: the server sends none that need one
+  }
+  const json params = message.value("params", json::object());
+  try {
+    if (id != message.end()) request(method->get<std::string>(), *id, params);
+    else notification(method->get<std::string>(), params);
+  } catch (const json::exception& e) {
+    if (id != message.end()) reply_error(*id, kInvalidParams, e.what());
+  } catch (const std::exception& e) {
+    if (id != message.end()) reply_error(*id, kInternalError, e.what());
+  }
+}
+
+void LanguageServer::request(const std::string& method, const json& id, const json& params) {
+  if (cancelled_.erase(id.dump())) {
+    reply_error(id, kRequestCancelled, "cancelled");
+    return;
+  }
+  if (method == "initialize") {
+    reply(id, initialize(params));
+    return;
+  }
+  if (!initialized_) {
+    reply_error(id, kServerNotInitialized, "initialize first");
+    return;
+  }
+  if (shutdown_) {
+    reply_error(id, kInvalidRequest, "the server is shutting down");
+    return;
+  }
+  if (method == "shutdown") {
+    shutdown_ = true;
+    reply(id, nullptr);
+  } else if (method == "textDocument/hover") {
+    auto [doc, a] = analyzed(params);
+    reply(id, hover(*a, doc->text, position_of(params.at("position"))));
+  } else if (method == "textDocument/definition") {
+    auto [doc, a] = analyzed(params);
+    reply(id, definition(*a, doc->text, position_of(params.at("position"))));
+  } else if (method == "textDocument/documentSymbol") {
+    reply(id, document_symbols(*analyzed(params).second));
+  } else if (method == "textDocument/completion") {
+    auto [doc, a] = analyzed(params);
+    reply(id, completion(*a, doc->text, position_of(params.at("position"))));
+  } else {
+    reply_error(id, kMethodNotFound, "fxkit lsp does not handle " + method);
+  }
+}
+
+void LanguageServer::notification(const std::string& method, const json& params) {
+  if (method == "exit") {
+    exited_ = true;
+  } else if (method == "$/cancelRequest") {
+    cancel(params.at("id"));
+  } else if (!initialized_ || shutdown_) {
+    return;
+  } else if (method == "textDocument/didOpen") {
+    did_open(params);
+  } else if (method == "textDocument/didChange") {
+    did_change(params);
+  } else if (method == "textDocument/didClose") {
+    did_close(params);
+  } else if (method == "workspace/didChangeConfiguration") {
+    settings_ = params.value("settings", json::object()).value("fxkit", json::object());
+    configure();
+  }
+}
+
+json LanguageServer::initialize(const json& params) {
+  initialized_ = true;
+  if (params.contains("rootUri") && params["rootUri"].is_string())
+    root_ = uri_to_path(params["rootUri"].get<std::string>());
+  else if (params.contains("rootPath") && params["rootPath"].is_string()) root_ = params["rootPath"].get<std::string>();
+  initialization_options_ = params.value("initializationOptions", json::object());
+  configure();
+  return {{"capabilities",
+           {{"textDocumentSync", {{"openClose", true}, {"change", 2}}},
+            {"hoverProvider", true},
+            {"definitionProvider", true},
+            {"documentSymbolProvider", true},
+            {"completionProvider", {{"triggerCharacters", {".", "="}}}}}},
+          {"serverInfo", {{"name", "fxkit"}}}};
+}
+
+void LanguageServer::configure() {
+  WorkspaceConfig config;
+  std::vector<std::string> problems;
+  merge_workspace_file(root_, config, problems);
+  config.merge(initialization_options_, root_, problems);
+  config.merge(settings_, root_, problems);
+  config_ = std::move(config);
+  for (const std::string& p : problems)
+    send_(
+        {{"jsonrpc", "2.0"}, {"method", "window/showMessage"}, {"params", {{"type", 2}, {"message", "fxkit: " + p}}}});
+  for (auto& [uri, d] : documents_) {
+    d.analysis.reset();
+    d.publish = true;
+  }
+}
+
+void LanguageServer::did_open(const json& params) {
+  const json& item = params.at("textDocument");
+  OpenDocument d;
+  d.text.uri = item.at("uri").get<std::string>();
+  d.text.path = uri_to_path(d.text.uri);
+  if (d.text.path.empty()) d.text.path = d.text.uri;
+  d.text.version = item.value("version", int64_t{0});
+  d.text.text = item.at("text").get<std::string>();
+  d.publish = true;
+  invalidate_includers(d.text.path);
+  documents_[d.text.uri] = std::move(d);
+}
+
+void LanguageServer::did_change(const json& params) {
+  const json& item = params.at("textDocument");
+  auto it = documents_.find(item.at("uri").get<std::string>());
+  if (it == documents_.end()) return;
+  OpenDocument& d = it->second;
+  for (const json& change : params.at("contentChanges")) {
+    if (change.contains("range")) {
+      const json& r = change.at("range");
+      d.text.replace(position_of(r.at("start")), position_of(r.at("end")), change.at("text").get<std::string>());
+    } else {
+      d.text.text = change.at("text").get<std::string>();
+    }
+  }
+  d.text.version = item.value("version", d.text.version + 1);
+  d.analysis.reset();
+  d.publish = true;
+  invalidate_includers(d.text.path);
+}
+
+void LanguageServer::did_close(const json& params) {
+  const std::string uri = params.at("textDocument").at("uri").get<std::string>();
+  auto it = documents_.find(uri);
+  if (it == documents_.end()) return;
+  const std::string path = it->second.text.path;
+  documents_.erase(it);
+  invalidate_includers(path);  // they read it from disk again
+  send_({{"jsonrpc", "2.0"},
+         {"method", "textDocument/publishDiagnostics"},
+         {"params", {{"uri", uri}, {"diagnostics", json::array()}}}});
+}
+
+void LanguageServer::invalidate_includers(const std::string& path) {
+  for (auto& [uri, d] : documents_) {
+    if (!d.analysis) continue;
+    const std::vector<std::string>& files = d.analysis->parsed().files;
+    if (std::find(files.begin(), files.end(), path) != files.end()) {
+      d.analysis.reset();
+      d.publish = true;
+    }
+  }
+}
+
+std::pair<LanguageServer::OpenDocument*, std::shared_ptr<const DocumentAnalysis>> LanguageServer::analyzed(
+    const json& params) {
+  const std::string uri = params.at("textDocument").at("uri").get<std::string>();
+  auto it = documents_.find(uri);
+  if (it == documents_.end()) throw std::invalid_argument(uri + " is not open");
+  OpenDocument& d = it->second;
+  if (!d.analysis) d.analysis = std::make_shared<const DocumentAnalysis>(d.text, config_, texts_by_path(documents_));
+  return {&d, d.analysis};
+}
+
+void LanguageServer::publish_pending() {
+  for (auto& [uri, d] : documents_) {
+    if (!d.publish) continue;
+    d.publish = false;
+    if (!d.analysis) d.analysis = std::make_shared<const DocumentAnalysis>(d.text, config_, texts_by_path(documents_));
+    send_(
+        {{"jsonrpc", "2.0"},
+         {"method", "textDocument/publishDiagnostics"},
+         {"params", {{"uri", uri}, {"version", d.text.version}, {"diagnostics", document_diagnostics(*d.analysis)}}}});
+  }
+}
+
+int run_stdio(int in_fd, int out_fd) {
+  MessageReader reader(in_fd);
+  LanguageServer server([out_fd](const json& m) { write_message(out_fd, m); });
+  std::deque<json> queue;
+  auto enqueue = [&](const std::string& text) {
+    json message = json::parse(text, nullptr, false);
+    if (message.is_discarded()) {
+      write_message(out_fd, {{"jsonrpc", "2.0"},
+                             {"id", nullptr},
+                             {"error", {{"code", kParseError}, {"message", "the message is no JSON"}}}});
+      return;
+    }
+    // A cancellation takes effect on the queued request it names, before that is handled.
+    if (message.is_object() && message.value("method", "") == "$/cancelRequest" && message.contains("params") &&
+        message["params"].is_object() && message["params"].contains("id"))
+      server.cancel(message["params"]["id"]);
+    else queue.push_back(std::move(message));
+  };
+  while (!server.exited()) {
+    if (queue.empty()) {
+      server.publish_pending();
+      std::optional<std::string> text = reader.read();
+      if (!text) break;
+      enqueue(*text);
+    }
+    while (reader.more_waiting()) {
+      std::optional<std::string> text = reader.read();
+      if (!text) break;
+      enqueue(*text);
+    }
+    if (queue.empty()) continue;
+    json message = std::move(queue.front());
+    queue.pop_front();
+    server.handle(message);
+  }
+  return server.exited() ? server.exit_code() : 1;
+}
+
+}  // namespace fxkit::lsp

@@ -1,0 +1,61 @@
+// Workspace configuration for the language server (workspace_config.h).
+#include "workspace_config.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fxkit::lsp {
+
+void WorkspaceConfig::merge(const nlohmann::json& settings, const std::string& root,
+                            std::vector<std::string>& problems) {
+  if (!settings.is_object()) return;
+  auto strings = [&](const char* key, auto&& add) {
+    auto it = settings.find(key);
+    if (it == settings.end()) return;
+    if (!it->is_array()) {
+      problems.push_back(std::string(key) + " must be an array of strings");
+      return;
+    }
+    for (const auto& v : *it) {
+      if (v.is_string()) add(v.get<std::string>());
+      else problems.push_back(std::string(key) + " holds a value that is no string");
+    }
+  };
+  strings("includeDirs", [&](std::string dir) {
+    std::filesystem::path p(dir);
+    if (p.is_relative() && !root.empty()) p = std::filesystem::path(root) / p;
+    include_dirs.push_back(p.lexically_normal().generic_string());
+  });
+  strings("defines", [&](std::string d) { defines.push_back(std::move(d)); });
+  if (auto it = settings.find("profile"); it != settings.end()) {
+    if (it->is_string() && (it->get<std::string>() == "auto" || fx::parse_effect_profile(it->get<std::string>())))
+      profile = it->get<std::string>();
+    else problems.push_back("profile must be auto, fx_2_0, fx_4_0, fx_4_1 or fx_5_0");
+  }
+}
+
+fx::FrontEndOptions WorkspaceConfig::front_end_options() const {
+  fx::FrontEndOptions options;
+  options.preprocessor.include_dirs = include_dirs;
+  for (const std::string& d : defines) options.preprocessor.defines.push_back(fx::parse_define(d));
+  options.check.profile = fx::parse_effect_profile(profile).value_or(fx::EffectProfile::automatic);
+  return options;
+}
+
+void merge_workspace_file(const std::string& root, WorkspaceConfig& config, std::vector<std::string>& problems) {
+  if (root.empty()) return;
+  const std::filesystem::path file = std::filesystem::path(root) / kWorkspaceFile;
+  std::ifstream in(file);
+  if (!in) return;
+  std::stringstream text;
+  text << in.rdbuf();
+  nlohmann::json settings = nlohmann::json::parse(text.str(), nullptr, false);
+  if (!settings.is_object()) {
+    problems.push_back(file.string() + " is no JSON object");
+    return;
+  }
+  config.merge(settings, root, problems);
+}
+
+}  // namespace fxkit::lsp

@@ -1,0 +1,31 @@
+// What the front end needs to read a workspace's effects: include folders, defines and the
+// effect profile, from the client's initializationOptions or settings and from a
+// `fxkit.json` at the workspace root (docs/editor.md).
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "fx/frontend.h"
+
+namespace fxkit::lsp {
+
+struct WorkspaceConfig {
+  std::vector<std::string> include_dirs;  // absolute, or relative to the server's folder
+  std::vector<std::string> defines;       // NAME or NAME=VALUE
+  std::string profile = "auto";
+
+  // Adds the settings of one source, `{"includeDirs": [..], "defines": [..], "profile": ".."}`;
+  // relative folders are taken against `root`. A malformed entry adds a line to `problems`.
+  void merge(const nlohmann::json& settings, const std::string& root, std::vector<std::string>& problems);
+  fx::FrontEndOptions front_end_options() const;
+};
+
+// The configuration file at the root of a workspace.
+inline constexpr const char* kWorkspaceFile = "fxkit.json";
+// Merges `root/fxkit.json` into `config` when it exists; a file that is no JSON object adds
+// a line to `problems`.
+void merge_workspace_file(const std::string& root, WorkspaceConfig& config, std::vector<std::string>& problems);
+
+}  // namespace fxkit::lsp
