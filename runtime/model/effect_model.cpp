@@ -175,6 +175,7 @@ class Builder {
       } else if ((iequals(a.name, "ResourceName") || iequals(a.name, "File")) && a.value.is_string()) {
         t.resource_name = a.value.text;
       } else if (a.value.is_string()) {
+        t.resource_range = a.range;
         t.generator_params.set(a.name, a.value.text);
       } else if (a.value.components.size() == 1) {
         t.generator_params.set(a.name, a.value.number());

@@ -114,6 +114,7 @@ int run_render(const RenderArgs& args) {
     fx::vk::EffectBindingDesc desc = preview->binding_desc();
     desc.effect_dir = std::filesystem::path(args.file).parent_path();
     auto binding = fx::vk::EffectBinding::create(*ctx, *effect->model, *effect->programs, *effect->params,
+    desc.texture_dirs.assign(options.preprocessor.include_dirs.begin(), options.preprocessor.include_dirs.end());
                                                  preview->textures(), preview->frames(), desc, diags);
     if (!binding) return report(diags), kInputErrors;
 

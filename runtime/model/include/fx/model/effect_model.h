@@ -63,6 +63,7 @@ struct TextureInfo {
   std::string resource_name;                  // `string ResourceName = "x.png"` (or Name/File)
   std::string generator;                      // `string Generator = "strand"` ("" if none)
   shading::GeneratorParams generator_params;  // every numeric/string annotation but Generator
+  SourceRange resource_range;                 // the ResourceName annotation
   SourceRange generator_range;                // the Generator annotation
 };
 
