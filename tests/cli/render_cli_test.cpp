@@ -79,6 +79,8 @@ float4x4 g_mWorld;
 float3 g_LightDir[2];
 float4 g_LightDiffuse[2];
 int g_nNumLights;
+texture g_MeshTexture;
+sampler MeshTextureSampler = sampler_state { Texture = <g_MeshTexture>; };
 struct VSOut { float4 Position : POSITION; float4 Diffuse : COLOR0; };
 VSOut VS(float4 p : POSITION, float3 n : NORMAL) {
   VSOut o;
@@ -89,12 +91,13 @@ VSOut VS(float4 p : POSITION, float3 n : NORMAL) {
   o.Diffuse = float4(lit, 1);
   return o;
 }
-float4 PS(float4 c : COLOR0) : COLOR0 { return c; }
+float4 PS(float4 c : COLOR0) : COLOR0 { return c * tex2D(MeshTextureSampler, float2(0.5, 0.5)); }
 technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
 )",
                                  "--verbose --validation");
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* line : {"g_LightDir <- direction to the light (stand-in)",
+                           "g_MeshTexture <- neutral texture (stand-in: no ResourceName)",
                            "g_LightDiffuse <- visible colour (stand-in)", "g_nNumLights <- light count (stand-in)"})
     EXPECT_NE(r.err.find(line), std::string::npos) << line << "\n" << r.err;
   ASSERT_TRUE(image);

@@ -178,6 +178,14 @@ int run_render(const RenderArgs& args) {
       if (!script) return report(diags), kInputErrors;
       if (args.verbose) std::fprintf(stderr, "fxkit render: running the technique's DXSAS Script\n");
     }
+    // Textures with neither a file nor a generator, and no script target: the cache binds
+    // a neutral stand-in (a missing file has its own warning).
+    if (args.verbose)
+      for (const fx::TextureInfo& t : effect->model->textures) {
+        const std::string& name = effect->model->parameters[t.parameter].name;
+        if (t.generator.empty() && t.resource_name.empty() && !(script && script->target(name)))
+          std::fprintf(stderr, "fxkit render: %s <- neutral texture (stand-in: no ResourceName)\n", name.c_str());
+      }
     auto frame = [&] {
       return script ? preview->render_script(*script, layout, diags)
                     : preview->render(*binding, technique, layout, diags);
