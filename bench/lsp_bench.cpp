@@ -30,25 +30,30 @@ std::pair<std::string, std::string> generated_effect(size_t& lines) {
   for (int i = 0; i < 70; ++i) {
     main += "float4 Colour" + std::to_string(i) + " : DIFFUSE < string UIName = \"Colour " + std::to_string(i) +
             "\"; float UIMin = 0; float UIMax = 1; > = {1, 1, 1, 1};\n";
-    main += "texture Map" + std::to_string(i) + ";\nsampler2D Sampler" + std::to_string(i) + " = sampler_state { Texture = <Map" +
-            std::to_string(i) + ">; MinFilter = Linear; MagFilter = Linear; AddressU = Wrap; };\n";
+    main += "texture Map" + std::to_string(i) + ";\nsampler2D Sampler" + std::to_string(i) +
+            " = sampler_state { Texture = <Map" + std::to_string(i) +
+            ">; MinFilter = Linear; MagFilter = Linear; AddressU = Wrap; };\n";
   }
   main += "float4x4 WorldViewProj : WORLDVIEWPROJECTION;\nfloat3 LightDir = {0, -1, 0};\n";
   main += "struct VSIn { float4 pos : POSITION; float3 normal : NORMAL; float2 uv : TEXCOORD0; };\n";
   main += "struct VSOut { float4 pos : POSITION; float3 normal : TEXCOORD1; float2 uv : TEXCOORD0; };\n";
-  main += "VSOut VS(VSIn v)\n{\n    VSOut o = (VSOut)0;\n    o.pos = mul(v.pos, WorldViewProj);\n"
-          "    o.normal = v.normal;\n    o.uv = v.uv;\n    return o;\n}\n";
+  main +=
+      "VSOut VS(VSIn v)\n{\n    VSOut o = (VSOut)0;\n    o.pos = mul(v.pos, WorldViewProj);\n"
+      "    o.normal = v.normal;\n    o.uv = v.uv;\n    return o;\n}\n";
   for (int i = 0; i < 70; ++i) {
     const std::string n = std::to_string(i);
     main += "float4 PS" + n + "(VSOut i) : COLOR\n{\n    float3 n = normalize(i.normal);\n";
     main += "    float4 base = tex2D(Sampler" + n + ", i.uv) * Colour" + n + ";\n";
     main += "    float3 lit = light_term" + std::to_string(i % 40) + "(n, -LightDir, base.rgb);\n";
-    main += "    for (int k = 0; k < 4; ++k)\n    {\n        float w = 0.25 * k;\n        lit += base.rgb * w;\n    }\n";
+    main +=
+        "    for (int k = 0; k < 4; ++k)\n    {\n        float w = 0.25 * k;\n        lit += base.rgb * w;\n    }\n";
     main += "    return float4(lit, base.a);\n}\n";
     main += "technique T" + n + "\n{\n    pass P0\n    {\n        VertexShader = compile vs_2_0 VS();\n";
-    main += "        PixelShader = compile ps_2_0 PS" + n + "();\n        CullMode = CCW;\n        ZEnable = TRUE;\n    }\n}\n";
+    main += "        PixelShader = compile ps_2_0 PS" + n +
+            "();\n        CullMode = CCW;\n        ZEnable = TRUE;\n    }\n}\n";
   }
-  lines = static_cast<size_t>(std::count(header.begin(), header.end(), '\n') + std::count(main.begin(), main.end(), '\n'));
+  lines =
+      static_cast<size_t>(std::count(header.begin(), header.end(), '\n') + std::count(main.begin(), main.end(), '\n'));
   return {header, main};
 }
 

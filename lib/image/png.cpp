@@ -28,25 +28,6 @@
 namespace fx {
 namespace {
 
-std::optional<std::vector<uint8_t>> read_file_bytes(const std::filesystem::path& path, DiagnosticSink& sink) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) {
-    sink.error("image-open-failed", {}, "cannot open image '" + path.string() + "'");
-    return std::nullopt;
-  }
-  std::vector<uint8_t> bytes;
-  uint8_t chunk[1 << 16];
-  size_t n;
-  while ((n = std::fread(chunk, 1, sizeof chunk, f)) > 0) bytes.insert(bytes.end(), chunk, chunk + n);
-  bool failed = std::ferror(f) != 0;
-  std::fclose(f);
-  if (failed) {
-    sink.error("image-open-failed", {}, "error reading image '" + path.string() + "'");
-    return std::nullopt;
-  }
-  return bytes;
-}
-
 bool valid_channels(uint32_t c) { return c >= 1 && c <= 4; }
 
 void append_bytes(void* context, void* data, int size) {
@@ -85,12 +66,31 @@ std::optional<Image> decode(std::span<const uint8_t> bytes, DiagnosticSink& sink
 
 }  // namespace
 
+std::optional<std::vector<uint8_t>> read_image_bytes(const std::filesystem::path& path, DiagnosticSink& sink) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) {
+    sink.error("image-open-failed", {}, "cannot open image '" + path.string() + "'");
+    return std::nullopt;
+  }
+  std::vector<uint8_t> bytes;
+  uint8_t chunk[1 << 16];
+  size_t n;
+  while ((n = std::fread(chunk, 1, sizeof chunk, f)) > 0) bytes.insert(bytes.end(), chunk, chunk + n);
+  bool failed = std::ferror(f) != 0;
+  std::fclose(f);
+  if (failed) {
+    sink.error("image-open-failed", {}, "error reading image '" + path.string() + "'");
+    return std::nullopt;
+  }
+  return bytes;
+}
+
 std::optional<Image> decode_image(std::span<const uint8_t> bytes, DiagnosticSink& sink, uint32_t want_channels) {
   return decode(bytes, sink, want_channels, "");
 }
 
 std::optional<Image> read_png(const std::filesystem::path& path, DiagnosticSink& sink, uint32_t want_channels) {
-  auto bytes = read_file_bytes(path, sink);
+  auto bytes = read_image_bytes(path, sink);
   if (!bytes) return std::nullopt;
   return decode(*bytes, sink, want_channels, path.string());
 }
@@ -101,7 +101,7 @@ std::optional<ImageF> read_image_float(const std::filesystem::path& path, Diagno
     sink.error("image-decode-failed", {}, "requested more than 4 channels");
     return std::nullopt;
   }
-  auto bytes = read_file_bytes(path, sink);
+  auto bytes = read_image_bytes(path, sink);
   if (!bytes) return std::nullopt;
   if (bytes->size() > size_t(INT32_MAX)) {
     sink.error("image-decode-failed", {}, "image '" + path.string() + "' larger than 2 GiB");

@@ -286,7 +286,8 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
           } else {
             const bool first = std::find(resolved.begin(), resolved.end(), slot.texture_param) == resolved.end();
             DiagnosticSink repeat;  // the same warning for every pass sampling the texture is noise
-            slot.data = textures.resolve(model, *tex, desc.effect_dir, image.dim, image.arrayed, first ? sink : repeat);
+            slot.data = textures.resolve(model, *tex, desc.effect_dir, image.dim, image.arrayed, first ? sink : repeat,
+                                         desc.texture_dirs);
             if (first) resolved.push_back(slot.texture_param);
           }
           if (!slot.data) {

@@ -2,6 +2,7 @@
 #include "fx/binding/effect_textures.h"
 
 #include <cctype>
+#include <span>
 #include <system_error>
 #include <variant>
 
@@ -67,31 +68,105 @@ ImageKind image_kind(ImageDim dim) {
   }
 }
 
+// The first of effect_dir/name, then each of more_dirs/name that is a readable file ("" if
+// none); `size` gets its size. An absolute name is taken as it is.
+std::filesystem::path find_texture_file(const std::string& name, const std::filesystem::path& effect_dir,
+                                        std::span<const std::filesystem::path> more_dirs, std::uintmax_t& size) {
+  const std::filesystem::path relative(name);
+  std::vector<std::filesystem::path> candidates;
+  if (relative.is_absolute()) candidates.push_back(relative);
+  else {
+    candidates.push_back(effect_dir / relative);
+    for (const auto& dir : more_dirs) candidates.push_back(dir / relative);
+  }
+  for (const auto& candidate : candidates) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(candidate, ec)) continue;
+    size = std::filesystem::file_size(candidate, ec);
+    if (!ec) return candidate;
+  }
+  return {};
+}
+
+const char* dim_name(ImageDim dim) {
+  switch (dim) {
+    case ImageDim::dim_1d: return "a 1D";
+    case ImageDim::dim_3d: return "a 3D";
+    case ImageDim::cube: return "a cube";
+    default: return "a 2D";
+  }
+}
+
+// A texture file as the shader samples it: DDS (any shape, by its header) or what stb reads
+// (2D). Nullopt, with `why`, when it cannot be decoded, has another shape than `dim`, or is
+// in a format the device can neither sample nor fxkit decode.
+std::optional<EffectTextureData> read_texture_file(const Context& ctx, const std::filesystem::path& file, ImageDim dim,
+                                                   bool arrayed, DiagnosticSink& sink, std::string& why) {
+  auto bytes = fx::read_image_bytes(file, sink);
+  if (!bytes) return std::nullopt;
+  EffectTextureData data;
+  data.dim = dim;
+  data.arrayed = arrayed;
+  ImageDim shape = ImageDim::dim_2d;
+  uint32_t layers = 1;
+  if (fx::is_dds(*bytes)) {
+    data.dds = fx::decode_dds(*bytes, sink, file.string());
+    if (!data.dds) return std::nullopt;
+    if (!Texture::can_sample_dds(ctx, *data.dds)) {
+      why = "device '" + ctx.info().name + "' cannot sample its DXGI format " + std::to_string(int(data.dds->format)) +
+            " and fxkit does not decode it";
+      return std::nullopt;
+    }
+    shape = data.dds->shape == fx::DdsShape::texture1d ? ImageDim::dim_1d
+            : data.dds->shape == fx::DdsShape::volume  ? ImageDim::dim_3d
+            : data.dds->shape == fx::DdsShape::cube    ? ImageDim::cube
+                                                       : ImageDim::dim_2d;
+    layers = data.dds->shape == fx::DdsShape::cube ? data.dds->layers / 6 : data.dds->layers;
+  } else {
+    data.image = fx::decode_image(*bytes, sink);
+    if (!data.image) return std::nullopt;
+  }
+  if (shape != dim) {
+    why = std::string("the file holds ") + dim_name(shape) + " texture; the shader samples " + dim_name(dim) + " one";
+    return std::nullopt;
+  }
+  if (layers > 1 && !arrayed) {
+    why = "the file holds an array of " + std::to_string(layers) + "; the shader samples one texture";
+    return std::nullopt;
+  }
+  return data;
+}
+
 }  // namespace
 
 std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const EffectModel& model,
                                                                      const TextureInfo& texture,
                                                                      const std::filesystem::path& effect_dir,
-                                                                     ImageDim dim, bool arrayed, DiagnosticSink& sink) {
+                                                                     ImageDim dim, bool arrayed, DiagnosticSink& sink,
+                                                                     std::span<const std::filesystem::path> more_dirs) {
   const Parameter* param = texture.parameter < model.parameters.size() ? &model.parameters[texture.parameter] : nullptr;
   const bool normal_map = param && (iequals(param->semantic, "NORMALMAP") || iequals(param->semantic, "NORMAL"));
   const StandIn neutral = normal_map ? StandIn::flat_normal : StandIn::white;
+  const SourceRange at = texture.resource_range.valid() ? texture.resource_range : param ? param->range : SourceRange{};
+  const std::string what =
+      "texture file '" + texture.resource_name + "' of '" + (param ? param->name : std::string()) + "'";
+  const std::string standing_in =
+      std::string("; a neutral ") + (normal_map ? "flat normal" : "white") + " texture stands in";
   std::string key;
   std::filesystem::path file;
   if (!texture.generator.empty()) {
     key = generator_key(texture);
   } else if (!texture.resource_name.empty()) {
-    file = std::filesystem::path(texture.resource_name);
-    if (file.is_relative()) file = effect_dir / file;
     std::error_code ec;
-    const auto size = std::filesystem::file_size(file, ec);
-    if (!ec) {
+    std::uintmax_t size = 0;
+    file = find_texture_file(texture.resource_name, effect_dir, more_dirs, size);
+    if (!file.empty()) {
       const auto mtime = std::filesystem::last_write_time(file, ec).time_since_epoch().count();
-      key = "file:" + file.lexically_normal().string() + ':' + std::to_string(size) + ':' + std::to_string(mtime);
+      key = "file:" + file.lexically_normal().string() + ':' + std::to_string(size) + ':' + std::to_string(mtime) +
+            ':' + std::to_string(int(dim)) + (arrayed ? ":array" : "");
     } else {
-      sink.warning("vk-texture-file-missing", param ? param->range : SourceRange{},
-                   "texture file '" + file.string() + "' of '" + (param ? param->name : std::string()) +
-                       "' cannot be read; a neutral " + (normal_map ? "flat normal" : "white") + " texture stands in");
+      sink.warning("vk-texture-file-missing", at,
+                   what + " cannot be found beside the effect or in the include folders" + standing_in);
       key = stand_in_key(neutral, dim, arrayed);
     }
   } else {
@@ -109,13 +184,14 @@ std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const Effec
     data.table = std::move(*table);
   } else {
     DiagnosticSink decode;
-    auto image = fx::read_png(file, decode);
-    if (!image) {
-      sink.warning("vk-texture-file-missing", param ? param->range : SourceRange{},
-                   "texture file '" + file.string() + "' cannot be decoded; a neutral texture stands in");
-      data = stand_in(neutral, dim, arrayed);
+    std::string why;
+    if (auto file_data = read_texture_file(*ctx_, file, dim, arrayed, decode, why)) {
+      data = std::move(*file_data);
     } else {
-      data.image = std::move(*image);
+      for (const Diagnostic& d : decode.diagnostics()) why += (why.empty() ? "" : "; ") + d.message;
+      sink.warning("vk-texture-file-missing", at, what + " cannot be used (" + why + ")" + standing_in);
+      data = stand_in(neutral, dim, arrayed);
+      key = data.key;
     }
   }
   data.key = key;
@@ -157,6 +233,7 @@ const Texture* EffectTextureCache::gpu(const EffectTextureData& data, Diagnostic
     const uint8_t* p = data.image->pixels.data();
     texture = Texture::solid(*ctx_, {p[0], p[1], p[2], p[3]}, image_kind(data.dim), data.arrayed, sink);
   } else if (data.table) texture = Texture::from_table(*ctx_, *data.table, sink);
+  else if (data.dds) texture = Texture::from_dds(*ctx_, *data.dds, data.arrayed, sink);
   else if (data.image) texture = Texture::from_image(*ctx_, *data.image, ColorSpace::linear, sink);
   if (!texture) return nullptr;
   return &gpu_.emplace(data.key, std::move(*texture)).first->second;

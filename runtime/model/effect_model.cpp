@@ -95,6 +95,7 @@ class Builder {
         case ast::DeclKind::directive: break;
       }
     }
+    plan_scripts(model_, diags_);
     return std::move(model_);
   }
 
@@ -109,7 +110,7 @@ class Builder {
       if (!v) continue;
       auto converted = convert_value(*v, t, a.value->range, diags_);
       if (!converted) continue;
-      out.push_back({a.name, std::move(*converted), a.range});
+      out.push_back({a.name, std::move(*converted), a.range, a.value->range});
     }
     return out;
   }
@@ -174,6 +175,7 @@ class Builder {
         t.generator_range = a.range;
       } else if ((iequals(a.name, "ResourceName") || iequals(a.name, "File")) && a.value.is_string()) {
         t.resource_name = a.value.text;
+        t.resource_range = a.range;
       } else if (a.value.is_string()) {
         t.generator_params.set(a.name, a.value.text);
       } else if (a.value.components.size() == 1) {

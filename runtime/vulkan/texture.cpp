@@ -45,7 +45,8 @@ bool check_image(const fx::Image& image, DiagnosticSink& sink) {
 }  // namespace
 
 std::optional<Texture> Texture::upload(const Context& ctx, const ImageDesc& desc, const uint8_t* bytes,
-                                       size_t byte_count, DiagnosticSink& sink) {
+                                       size_t byte_count, DiagnosticSink& sink,
+                                       std::span<const VkBufferImageCopy> regions) {
   // Depth textures are compared, not filtered: sampling them is enough.
   const bool depth = is_depth_format(desc.format);
   if (!ctx.supports_format(desc.format, VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
@@ -70,7 +71,9 @@ std::optional<Texture> Texture::upload(const Context& ctx, const ImageDesc& desc
             depth ? VkImageAspectFlags(VK_IMAGE_ASPECT_DEPTH_BIT) : VkImageAspectFlags(VK_IMAGE_ASPECT_COLOR_BIT), 0, 0,
             img.desc().array_layers};
         copy.imageExtent = img.extent();
-        vkCmdCopyBufferToImage(cmd, staging->handle(), img.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+        if (regions.empty()) regions = {&copy, 1};
+        vkCmdCopyBufferToImage(cmd, staging->handle(), img.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                               uint32_t(regions.size()), regions.data());
         img.transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
       },
       sink);

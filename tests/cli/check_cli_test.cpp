@@ -31,6 +31,20 @@ TEST(CheckCli, CleanEffectExitsZeroAndPrintsNothing) {
   EXPECT_EQ(r.err, "");
 }
 
+// A DXSAS Script mistake is a warning at its column inside the annotation's string.
+TEST(CheckCli, ScriptMistakeIsLocatedInsideTheString) {
+  std::string path = write_temp("script.fx",
+                                "float4 PS() : COLOR0 { return 1; }\n"
+                                "technique T < string Script = \"Clear=Color; Pass=Bler;\"; > {\n"
+                                "  pass Blur { PixelShader = compile ps_2_0 PS(); }\n"
+                                "}\n");
+  auto r = run_fxkit("check " + path, true);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find(path + ":2:50: warning: technique 'T' has no pass 'Bler'; did you mean 'Blur'?"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST(CheckCli, ErrorsExitOneWithFileLineColumnAndCaret) {
   std::string path = write_temp("broken.fx",
                                 "float4 Color;\n"

@@ -69,6 +69,42 @@ TEST(FxkitRender, AnEngineEffectDrawsWithStandInsAndSaysWhichItGave) {
   EXPECT_GT(centre[0], 60);
 }
 
+// A DirectX SDK-style lit effect (BasicHLSL's names): g_LightDir is the direction towards the
+// light, an array of them one per light, and no value has a default. The stand-ins follow
+// that convention, so the side of the sphere facing the camera is lit, not black.
+TEST(FxkitRender, SdkLightDirectionPointsTowardsTheLight) {
+  const auto [r, image] = render("sdk_lit", R"(
+float4x4 g_mWorldViewProjection;
+float4x4 g_mWorld;
+float3 g_LightDir[2];
+float4 g_LightDiffuse[2];
+int g_nNumLights;
+texture g_MeshTexture;
+sampler MeshTextureSampler = sampler_state { Texture = <g_MeshTexture>; };
+struct VSOut { float4 Position : POSITION; float4 Diffuse : COLOR0; };
+VSOut VS(float4 p : POSITION, float3 n : NORMAL) {
+  VSOut o;
+  o.Position = mul(p, g_mWorldViewProjection);
+  float3 normal = normalize(mul(n, (float3x3)g_mWorld));
+  float3 lit = 0;
+  for (int i = 0; i < g_nNumLights; ++i) lit += g_LightDiffuse[i].rgb * max(0, dot(normal, g_LightDir[i]));
+  o.Diffuse = float4(lit, 1);
+  return o;
+}
+float4 PS(float4 c : COLOR0) : COLOR0 { return c * tex2D(MeshTextureSampler, float2(0.5, 0.5)); }
+technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile ps_3_0 PS(); } }
+)",
+                                 "--verbose --validation");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* line : {"g_LightDir <- direction to the light (stand-in)",
+                           "g_MeshTexture <- neutral texture (stand-in: no ResourceName)",
+                           "g_LightDiffuse <- visible colour (stand-in)", "g_nNumLights <- light count (stand-in)"})
+    EXPECT_NE(r.err.find(line), std::string::npos) << line << "\n" << r.err;
+  ASSERT_TRUE(image);
+  const uint8_t* centre = image->at(image->width / 2, image->height / 2);
+  EXPECT_GT(centre[0], 100) << "the side facing the camera is lit";
+}
+
 // An engine's space-to-space names (Kodu's LocalToModel, WorldToCamera): the transforms
 // between scene spaces are bound by their names, one within object space is the identity.
 TEST(FxkitRender, SpaceToSpaceTransformsAreBoundByTheirNames) {

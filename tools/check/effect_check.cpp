@@ -10,6 +10,7 @@
 #include "check_cache.h"
 #include "fx/compile/effect_file.h"
 #include "fx/compile/effect_programs.h"
+#include "fx/model/effect_model.h"
 #include "fx/select/technique_validation.h"
 #endif
 
@@ -70,6 +71,17 @@ void compile_shaders(const fx::ParsedEffect& parsed, const EffectCheckSettings& 
     shown.add(program.diagnostics, name);
   }
 }
+
+// The DXSAS Script warnings of the effect's model (docs/dxsas.md); the model's other
+// diagnostics repeat the front end's checks.
+std::vector<fx::Diagnostic> script_diagnostics(const fx::ParsedEffect& parsed, const fx::SourceManager& sm) {
+  fx::DiagnosticSink model;
+  fx::build_effect_model(parsed, sm, model);
+  std::vector<fx::Diagnostic> out;
+  for (const fx::Diagnostic& d : model.diagnostics())
+    if (d.id.rfind("script-", 0) == 0) out.push_back(d);
+  return out;
+}
 #endif
 
 }  // namespace
@@ -92,6 +104,7 @@ EffectCheck check_effect(const std::string& file, const EffectCheckSettings& set
   // The shaders of an effect whose front end failed would only repeat its errors.
   if (settings.compile && settings.compiler && !diags.has_errors()) compile_shaders(parsed, settings, sm, diags, shown);
   else shown.add(diags.diagnostics(), "");
+  if (parsed.ok) shown.add(script_diagnostics(parsed, sm), "");
   if (settings.caps && parsed.ok) {
     fx::DiagnosticSink caps_diags;
     out.runnable = report_techniques(parsed, settings, sm, caps_diags, out);

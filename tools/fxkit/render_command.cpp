@@ -15,6 +15,7 @@
 #include "fx/binding/effect_preview.h"
 #include "fx/binding/effect_scene.h"
 #include "fx/binding/preview_defaults.h"
+#include "fx/binding/script_runner.h"
 #include "fx/compile/effect_file.h"
 #include "fx/diagnostic_render.h"
 #include "fx/select/technique_validation.h"
@@ -113,6 +114,7 @@ int run_render(const RenderArgs& args) {
     if (!preview) return report(diags), kUsageError;
     fx::vk::EffectBindingDesc desc = preview->binding_desc();
     desc.effect_dir = std::filesystem::path(args.file).parent_path();
+    desc.texture_dirs.assign(options.preprocessor.include_dirs.begin(), options.preprocessor.include_dirs.end());
     auto binding = fx::vk::EffectBinding::create(*ctx, *effect->model, *effect->programs, *effect->params,
                                                  preview->textures(), preview->frames(), desc, diags);
     if (!binding) return report(diags), kInputErrors;
@@ -168,13 +170,33 @@ int run_render(const RenderArgs& args) {
                    "fxkit render: warning: '%s' is read by the shaders but left zero (no standard semantic, and "
                    "not a name docs/parameters.md lists); set it with --param\n",
                    name.c_str());
+    // A technique with a DXSAS Script runs it: its render targets, passes and full-screen quads.
+    std::unique_ptr<fx::vk::ScriptRunner> script;
+    if (effect->model->techniques[technique].script) {
+      script = fx::vk::ScriptRunner::create(*ctx, *effect->model, *binding, *effect->params, technique, width, height,
+                                            diags);
+      if (!script) return report(diags), kInputErrors;
+      if (args.verbose) std::fprintf(stderr, "fxkit render: running the technique's DXSAS Script\n");
+    }
+    // Textures with neither a file nor a generator, and no script target: the cache binds
+    // a neutral stand-in (a missing file has its own warning).
+    if (args.verbose)
+      for (const fx::TextureInfo& t : effect->model->textures) {
+        const std::string& name = effect->model->parameters[t.parameter].name;
+        if (t.generator.empty() && t.resource_name.empty() && !(script && script->target(name)))
+          std::fprintf(stderr, "fxkit render: %s <- neutral texture (stand-in: no ResourceName)\n", name.c_str());
+      }
+    auto frame = [&] {
+      return script ? preview->render_script(*script, layout, diags)
+                    : preview->render(*binding, technique, layout, diags);
+    };
     // The first frame pays for the driver's shader compile; later ones are timed (wall
     // clock, submit to readback) and the median is reported.
-    auto image = preview->render(*binding, technique, layout, diags);
+    auto image = frame();
     std::vector<double> ms;
     for (int f = 1; image && f < args.frames; ++f) {
       auto start = std::chrono::steady_clock::now();
-      image = preview->render(*binding, technique, layout, diags);
+      image = frame();
       ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
     report(diags);

@@ -39,6 +39,8 @@ struct ImageF {
   const float* at(uint32_t x, uint32_t y) const { return pixels.data() + (size_t(y) * width + x) * channels; }
 };
 
+// The bytes of an image file; "image-open-failed" on error.
+std::optional<std::vector<uint8_t>> read_image_bytes(const std::filesystem::path& path, DiagnosticSink& sink);
 // Decodes PNG (or any format stb_image reads) from memory. `want_channels` 0 keeps the
 // file's channel count, 1..4 converts. Reports "image-decode-failed" on error.
 std::optional<Image> decode_image(std::span<const uint8_t> bytes, DiagnosticSink& sink, uint32_t want_channels = 0);

@@ -45,6 +45,8 @@ struct EffectBindingDesc {
   PassTargetInfo target;
   // Folder that texture ResourceNames are relative to (the effect file's folder).
   std::filesystem::path effect_dir;
+  // Folders looked in after effect_dir (the -I folders).
+  std::vector<std::filesystem::path> texture_dirs;
 };
 
 class EffectBinding {

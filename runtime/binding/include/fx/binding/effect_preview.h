@@ -15,6 +15,8 @@
 
 namespace fx::vk {
 
+class ScriptRunner;
+
 struct EffectPreviewDesc {
   uint32_t width = 256, height = 256;
   // RGBA8 for pictures (render); R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT to read the
@@ -53,6 +55,11 @@ class EffectPreview {
   // per pass, end, read back. nullopt with diagnostics on failure.
   std::optional<fx::Image> render(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
                                   DiagnosticSink& sink);
+  // One frame of a technique's DXSAS Script (the runner made for this binding and technique
+  // with the preview's size): the frame cleared, then the script's steps, Draw=Geometry
+  // drawing the mesh and Draw=Buffer a full-screen quad in the same vertex layout; read back.
+  // Defined in effect_preview_script.cpp.
+  std::optional<fx::Image> render_script(ScriptRunner& runner, uint32_t vertex_layout, DiagnosticSink& sink);
   // The same frame read back as floats, from a float color_format.
   std::optional<fx::ImageF> render_floats(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
                                           DiagnosticSink& sink);
@@ -73,6 +80,8 @@ class EffectPreview {
   // pass) within `scissor`, and the end of the target's rendering; false on a failed apply.
   bool record_passes(VkCommandBuffer cmd, EffectBinding& binding, uint32_t technique, uint32_t vertex_layout,
                      uint32_t draws, const VkRect2D& scissor, DiagnosticSink& sink);
+  // Uploads the full-screen quad of Draw=Buffer on first use.
+  bool make_quad(DiagnosticSink& sink);
   const Context* ctx_;
   EffectPreviewDesc desc_;
   MeshBounds bounds_;
@@ -81,6 +90,8 @@ class EffectPreview {
   EffectTextureCache textures_;
   Buffer vertices_, indices_, constants_;
   uint32_t index_count_ = 0;
+  Buffer quad_vertices_, quad_indices_;
+  uint32_t quad_index_count_ = 0;
   uint64_t frames_rendered_ = 0;
 };
 

@@ -1,6 +1,6 @@
 // fx::vk::EffectTextureCache: the textures effect parameters name, shared by every effect
 // binding (and every reloaded version) of one device: procedural tables baked once per
-// (generator, parameters), PNG files decoded once per (path, size, mtime), and neutral
+// (generator, parameters), image files (DDS, PNG, ...) decoded once per (path, size, mtime), and neutral
 // stand-ins for files that are missing. CPU data is resolved on any thread (reload workers
 // bake while the app renders); GPU images are created only on the render thread, because
 // uploads use the context's queue, which Vulkan does not let two threads share.
@@ -10,9 +10,11 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "fx/compile/shader_reflection.h"
+#include "fx/dds.h"
 #include "fx/image.h"
 #include "fx/model/effect_model.h"
 #include "fx/shading/table.h"
@@ -23,7 +25,8 @@ namespace fx::vk {
 // The CPU contents of one effect texture: an 8-bit image or a baked table.
 struct EffectTextureData {
   std::string key;                      // identity in the cache
-  std::optional<fx::Image> image;       // PNG files and stand-ins
+  std::optional<fx::Image> image;       // PNG (and other stb) files and stand-ins
+  std::optional<fx::DdsTexture> dds;    // DDS files
   std::optional<shading::Table> table;  // procedural generators
   bool stand_in = false;                // a neutral texture for a missing file
   ImageDim dim = ImageDim::dim_2d;      // stand-ins take the shape the shader samples
@@ -39,9 +42,11 @@ class EffectTextureCache {
   EffectTextureCache& operator=(const EffectTextureCache&) = delete;
 
   // The data for `texture` of `model` (thread-safe). A generator is baked (failures are
-  // errors from the generator registry); a ResourceName is read relative to `effect_dir`.
-  // A file that is missing or unreadable gets a stand-in (flat normal for NORMALMAP
-  // semantics, white otherwise) and the warning "vk-texture-file-missing"; a texture with
+  // errors from the generator registry); a ResourceName is looked for beside the effect
+  // (`effect_dir`), then in `more_dirs` (the -I folders), and read as DDS or what stb reads.
+  // A file that is missing, unreadable or of another shape than the shader samples gets a
+  // stand-in (flat normal for NORMALMAP semantics, white otherwise) and the warning
+  // "vk-texture-file-missing" at the annotation; a texture with
   // neither (set by the application) gets the stand-in silently. Null only when a
   // generator fails.
   // `dim` and `arrayed` are how the shader samples it (stand-ins are made in that shape: 1D,
@@ -49,7 +54,8 @@ class EffectTextureCache {
   // shape is invalid, and lavapipe crashes on a 2D view bound to a 1D sampler.
   std::shared_ptr<const EffectTextureData> resolve(const EffectModel& model, const TextureInfo& texture,
                                                    const std::filesystem::path& effect_dir, ImageDim dim, bool arrayed,
-                                                   DiagnosticSink& sink);
+                                                   DiagnosticSink& sink,
+                                                   std::span<const std::filesystem::path> more_dirs = {});
   // A depth texture of 1.0 in the shape the shader samples, for an image sampled with depth
   // comparison (Vulkan compares only against depth formats): a shadow map nothing is in front of.
   std::shared_ptr<const EffectTextureData> depth_stand_in(ImageDim dim, bool arrayed);

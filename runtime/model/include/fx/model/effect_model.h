@@ -15,6 +15,7 @@
 #include "fx/ast.h"
 #include "fx/diagnostic.h"
 #include "fx/frontend.h"
+#include "fx/model/dxsas_script.h"
 #include "fx/model/pass_state.h"
 #include "fx/model/type.h"
 #include "fx/model/value.h"
@@ -30,6 +31,7 @@ struct Annotation {
   std::string name;
   Value value;
   SourceRange range;
+  SourceRange value_range;  // the value's expression (a string: from its opening quote)
 };
 
 // The annotation named `name` (case-sensitive, as D3DX), or nullptr.
@@ -60,6 +62,7 @@ struct TextureInfo {
   uint32_t parameter = kNoIndex;
   TextureShape shape = TextureShape::any;
   std::string resource_name;                  // `string ResourceName = "x.png"` (or Name/File)
+  SourceRange resource_range;                 // the ResourceName annotation
   std::string generator;                      // `string Generator = "strand"` ("" if none)
   shading::GeneratorParams generator_params;  // every numeric/string annotation but Generator
   SourceRange generator_range;                // the Generator annotation
@@ -147,6 +150,7 @@ struct PassInfo {
   std::vector<ShaderBinding> shaders;  // one per stage set (later ones replace)
   std::vector<UnsupportedState> unsupported;
   PassStateSummary summary;
+  std::optional<ScriptPlan> script;  // its DXSAS Script annotation (fx/model/dxsas_script.h)
   SourceRange range;
   // The binding for `stage`, or nullptr.
   const ShaderBinding* shader(PassStage stage) const;
@@ -167,6 +171,7 @@ struct TechniqueInfo {
   std::string group;  // enclosing fxgroup ("" if none)
   std::vector<Annotation> annotations;
   std::vector<PassInfo> passes;
+  std::optional<ScriptPlan> script;  // its DXSAS Script annotation (fx/model/dxsas_script.h)
   SourceRange range;
 };
 
@@ -183,6 +188,7 @@ struct EffectModel {
   std::vector<TechniqueInfo> techniques;
   std::vector<std::string> functions;    // names of shader functions, in order
   std::vector<std::string> glsl_blocks;  // names of GLSL blocks, in order
+  ScriptGlobal script_global;            // the STANDARDSGLOBAL parameter (DXSAS)
   const ast::Effect* ast = nullptr;      // the tree it was built from (must outlive it)
 
   // Lookups by exact name; kNoIndex / nullptr when absent.

@@ -1,12 +1,14 @@
 // fx::vk::Texture: a sampled image bound to effect parameters: uploaded from an fx::Image
-// (PNG), from six fx::Images (cube), from a baked fx::shading::Table (1D/2D/3D lookup
+// (PNG), from six fx::Images (cube), from a DDS file, from a baked fx::shading::Table (1D/2D/3D lookup
 // tables), or the application's VkImageView borrowed without ownership.
 #pragma once
 #include <vulkan/vulkan.h>
 
 #include <array>
 #include <optional>
+#include <span>
 
+#include "fx/dds.h"
 #include "fx/image.h"
 #include "fx/shading/table.h"
 #include "fx/vulkan/context.h"
@@ -30,6 +32,14 @@ class Texture {
   // float32 tables R32/RG32/RGBA32_SFLOAT. "vk-format-unsupported" if the device cannot
   // sample the format with linear filtering.
   static std::optional<Texture> from_table(const Context& ctx, const fx::shading::Table& table, DiagnosticSink& sink);
+  // A texture from a DDS file's subresources (defined in dds_texture.cpp): 1D, 2D, cube,
+  // volume and arrays with their mip chains; block-compressed data is uploaded compressed
+  // where the device samples the format, else BC1-BC5 are decoded to RGBA8 first and other
+  // formats report "vk-format-unsupported". `array_view` views a single layer as an array.
+  static std::optional<Texture> from_dds(const Context& ctx, const fx::DdsTexture& dds, bool array_view,
+                                         DiagnosticSink& sink);
+  // Whether from_dds can make `dds` on this device (any thread: a format query only).
+  static bool can_sample_dds(const Context& ctx, const fx::DdsTexture& dds);
   // A one-texel texture of one colour in the shape a shader samples (1D, 2D, 3D, cube; as an
   // array view when `array`): what stands in for a texture the effect names but has no data for.
   static std::optional<Texture> solid(const Context& ctx, const std::array<uint8_t, 4>& rgba, ImageKind kind,
@@ -59,9 +69,10 @@ class Texture {
   explicit operator bool() const { return view() != VK_NULL_HANDLE; }
 
  private:
-  // Creates the image and copies `layers` slices of `bytes` into it.
+  // Creates the image and copies `bytes` into it: into every layer of mip 0, or by `regions`.
   static std::optional<Texture> upload(const Context& ctx, const ImageDesc& desc, const uint8_t* bytes,
-                                       size_t byte_count, DiagnosticSink& sink);
+                                       size_t byte_count, DiagnosticSink& sink,
+                                       std::span<const VkBufferImageCopy> regions = {});
   GpuImage owned_;
   VkImageView borrowed_view_ = VK_NULL_HANDLE;
   VkImageLayout layout_ = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
