@@ -11,15 +11,15 @@
 #ifndef FXKIT_GENERATED_COSTS_FXH
 #define FXKIT_GENERATED_COSTS_FXH
 // aniso_highlights_glsl.fx aniso_blinn_phong
-#define COST_aniso_blinn_phong string ErrorNotMeasured = "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
+#define COST_aniso_blinn_phong float CostNsPerPixel = 92.370; float CostNsPerVertex = 9.466; float MaxError = 121.46; string Substitutes = "blinn_phong";
 // aniso_highlights_glsl.fx aniso_phong
-#define COST_aniso_phong string ErrorNotMeasured = "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
+#define COST_aniso_phong float CostNsPerPixel = 109.470; float CostNsPerVertex = 9.602; float MaxError = 62.54; string Substitutes = "phong";
 // aniso_highlights_glsl.fx iso_blinn_phong
-#define COST_iso_blinn_phong string ErrorNotMeasured = "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
+#define COST_iso_blinn_phong float CostNsPerPixel = 44.133; float CostNsPerVertex = 23.685; float MaxError = 11.95; string Substitutes = "isotropic, blinn_phong";
 // aniso_highlights_glsl.fx iso_phong
-#define COST_iso_phong string ErrorNotMeasured = "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
+#define COST_iso_phong float CostNsPerPixel = 39.325; float CostNsPerVertex = 25.407; float MaxError = 2.69; string Substitutes = "isotropic, phong";
 // aniso_highlights_glsl.fx runtime_switch
-#define COST_runtime_switch string ErrorNotMeasured = "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
+#define COST_runtime_switch float CostNsPerPixel = 99.632; float CostNsPerVertex = 10.907; float MaxError = 62.54; string Substitutes = "interactive";
 // aniso_lut_ward.fx gaussian_per_pixel
 #define COST_gaussian_per_pixel float CostNsPerPixel = 12.123; float CostNsPerVertex = 4.450; float MaxError = 0.00; string Substitutes = "gaussian";
 // aniso_lut_ward.fx gaussian_per_vertex
