@@ -690,6 +690,30 @@ technique sm2 { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = comp
 
 // A colour with no default draws black until set_preview_defaults gives it a stand-in;
 // parameters with defaults keep them.
+// techniques() gives each distance band as `fxkit select` prints it (one formatting function,
+// fx::band_text): an open end is -inf or inf, and a technique without a band has none.
+TEST_F(PublicApiTest, TechniquesGiveTheirDistanceBandAsSelectPrintsIt) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  const std::string path = write_effect("api_distance_bands.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
+float4 PS() : COLOR0 { return float4(1, 1, 1, 1); }
+technique near < float MaxDistance = 50.0; > { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+technique far < float MinDistance = 50.0; > { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+technique middle < float LodMin = 2.5; float LodMax = 50.0; > { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+technique any { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)");
+  fxkit::Effect effect = r.device->load(path);
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  const auto listed = effect.techniques();
+  ASSERT_EQ(listed.size(), 4u);
+  EXPECT_EQ(listed[0].distance_band, "[-inf, 50)");
+  EXPECT_EQ(listed[1].distance_band, "[50, inf)");
+  EXPECT_EQ(listed[2].distance_band, "[2.5, 50)");
+  EXPECT_EQ(listed[3].distance_band, "");
+}
+
 TEST_F(PublicApiTest, PreviewDefaultsGiveAColourWithoutADefaultAVisibleValue) {
   Rig r = rig();
   ASSERT_TRUE(r) << text(r.errors);
