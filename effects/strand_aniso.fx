@@ -355,7 +355,11 @@ technique strand_per_vertex
 
 // The seed's ps.1.4 shader verbatim except its texcrd destinations (the listing writes
 // all five into r1; r1..r5 is what the dp3s read). Stage 0: direction map (alpha = 1),
-// stages 1-4: the wrapped table, stage 5: base map; c1-c4 light colours.
+// stages 1-4: the wrapped table, stage 5: base map; c1-c4 light colours. Its dp3_d2 makes
+// the table's 0.5 L.T itself, so the vertex shader passes L and V unscaled (c20 = 1; the
+// ps.1.1 listing's texm3x2 does not halve, and its vertex shader scales by 0.5). The sum
+// has no Kd/Ks weights and no ambient: with these light colours it saturates wherever
+// sin(L,T) is large (docs/effects.md).
 technique strand_four_lights_ps14
 <
     string Requires = "vs_1_1 ps_1_4 textures>=6";
@@ -372,7 +376,7 @@ technique strand_four_lights_ps14
         VertexShaderConstant[17] = <Light1Direction>;
         VertexShaderConstant[18] = <Light2Direction>;
         VertexShaderConstant[19] = <Light3Direction>;
-        VertexShaderConstant[20] = float4(0.5, 0.5, 0.5, 0.5);
+        VertexShaderConstant[20] = float4(1.0, 1.0, 1.0, 1.0);  // unscaled: dp3_d2 halves
         VertexShaderConstant[24] = <CameraPosition>;
         PixelShaderConstant[1] = <Light0Color>;
         PixelShaderConstant[2] = <Light1Color>;
@@ -413,7 +417,7 @@ technique strand_four_lights_ps14
             dp3 r8.x, r3, r2           // view into tangent space
             dp3 r8.y, r4, r2
             dp3 r8.z, r5, r2
-            mul oT5.xyz, r8.xyz, c20   // 0.5 V
+            mul oT5.xyz, r8.xyz, c20   // V (c20 = 1)
             dp3 r6.x, r3, -c16         // light 0
             dp3 r6.y, r4, -c16
             dp3 r6.z, r5, -c16

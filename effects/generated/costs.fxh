@@ -11,15 +11,15 @@
 #ifndef FXKIT_GENERATED_COSTS_FXH
 #define FXKIT_GENERATED_COSTS_FXH
 // aniso_highlights_glsl.fx aniso_blinn_phong
-#define COST_aniso_blinn_phong string ErrorNotMeasured = "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
+#define COST_aniso_blinn_phong float CostNsPerPixel = 92.370; float CostNsPerVertex = 9.466; float MaxError = 121.46; string Substitutes = "blinn_phong";
 // aniso_highlights_glsl.fx aniso_phong
-#define COST_aniso_phong string ErrorNotMeasured = "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
+#define COST_aniso_phong float CostNsPerPixel = 109.470; float CostNsPerVertex = 9.602; float MaxError = 62.54; string Substitutes = "phong";
 // aniso_highlights_glsl.fx iso_blinn_phong
-#define COST_iso_blinn_phong string ErrorNotMeasured = "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
+#define COST_iso_blinn_phong float CostNsPerPixel = 44.133; float CostNsPerVertex = 23.685; float MaxError = 11.95; string Substitutes = "isotropic, blinn_phong";
 // aniso_highlights_glsl.fx iso_phong
-#define COST_iso_phong string ErrorNotMeasured = "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
+#define COST_iso_phong float CostNsPerPixel = 39.325; float CostNsPerVertex = 25.407; float MaxError = 2.69; string Substitutes = "isotropic, phong";
 // aniso_highlights_glsl.fx runtime_switch
-#define COST_runtime_switch string ErrorNotMeasured = "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
+#define COST_runtime_switch float CostNsPerPixel = 99.632; float CostNsPerVertex = 10.907; float MaxError = 62.54; string Substitutes = "interactive";
 // aniso_lut_ward.fx gaussian_per_pixel
 #define COST_gaussian_per_pixel float CostNsPerPixel = 12.123; float CostNsPerVertex = 4.450; float MaxError = 0.00; string Substitutes = "gaussian";
 // aniso_lut_ward.fx gaussian_per_vertex
@@ -69,23 +69,23 @@
 // per_pixel_lighting.fx specular_emboss
 #define COST_specular_emboss float CostNsPerPixel = 26.516; float CostNsPerVertex = 71.017; float MaxError = 147.50; string Substitutes = "specular";
 // strand_aniso.fx strand_bump_renormalized
-#define COST_strand_bump_renormalized float CostNsPerPixel = 45.244; float CostNsPerVertex = 13.099; float MaxError = 21.13; string Substitutes = "bump mapped";
+#define COST_strand_bump_renormalized float CostNsPerPixel = 134.000; float CostNsPerVertex = 37.579; float MaxError = 21.13; string Substitutes = "bump mapped";
 // strand_aniso.fx strand_bump_unnormalized
-#define COST_strand_bump_unnormalized float CostNsPerPixel = 42.241; float CostNsPerVertex = 12.445; float MaxError = 43.55; string Substitutes = "bump mapped";
+#define COST_strand_bump_unnormalized float CostNsPerPixel = 134.302; float CostNsPerVertex = 20.920; float MaxError = 43.55; string Substitutes = "bump mapped";
 // strand_aniso.fx strand_analytic
-#define COST_strand_analytic float CostNsPerPixel = 28.910; float CostNsPerVertex = 12.228; float MaxError = 5.96;
+#define COST_strand_analytic float CostNsPerPixel = 76.730; float CostNsPerVertex = 20.228; float MaxError = 5.96;
 // strand_aniso.fx strand_lut
-#define COST_strand_lut float CostNsPerPixel = 33.773; float CostNsPerVertex = 13.006; float MaxError = 16.28;
+#define COST_strand_lut float CostNsPerPixel = 61.749; float CostNsPerVertex = 24.947; float MaxError = 16.28;
 // strand_aniso.fx strand_lut_seed_wrap
-#define COST_strand_lut_seed_wrap float CostNsPerPixel = 32.444; float CostNsPerVertex = 13.411; float MaxError = 48.50;
+#define COST_strand_lut_seed_wrap float CostNsPerPixel = 54.541; float CostNsPerVertex = 29.461; float MaxError = 48.50;
 // strand_aniso.fx strand_four_lights
-#define COST_strand_four_lights float CostNsPerPixel = 65.259; float CostNsPerVertex = 14.170; float MaxError = 16.38; string Substitutes = "four lights";
+#define COST_strand_four_lights float CostNsPerPixel = 138.776; float CostNsPerVertex = 7.448; float MaxError = 16.38; string Substitutes = "four lights";
 // strand_aniso.fx strand_per_vertex
-#define COST_strand_per_vertex float CostNsPerPixel = 10.265; float CostNsPerVertex = 12.214; float MaxError = 66.61;
+#define COST_strand_per_vertex float CostNsPerPixel = 14.141; float CostNsPerVertex = 0.000; float MaxError = 66.61;
 // strand_aniso.fx strand_four_lights_ps14
-#define COST_strand_four_lights_ps14 float CostNsPerPixel = 32.077; float CostNsPerVertex = 10.363; float MaxError = 187.92; string Substitutes = "four lights"; float Ps1xPrecisionMaxError = 187.92; float Ps1xPrecisionCostNsPerPixel = 48.412;
+#define COST_strand_four_lights_ps14 float CostNsPerPixel = 54.889; float CostNsPerVertex = 30.571; float MaxError = 160.93; string Substitutes = "four lights"; float Ps1xPrecisionMaxError = 141.85; float Ps1xPrecisionCostNsPerPixel = 138.614;
 // strand_aniso.fx strand_lut_ps11
-#define COST_strand_lut_ps11 float CostNsPerPixel = 13.516; float CostNsPerVertex = 8.462; float MaxError = 242.77; float Ps1xPrecisionMaxError = 242.81; float Ps1xPrecisionCostNsPerPixel = 18.585;
+#define COST_strand_lut_ps11 float CostNsPerPixel = 43.817; float CostNsPerVertex = 11.514; float MaxError = 242.77; float Ps1xPrecisionMaxError = 242.81; float Ps1xPrecisionCostNsPerPixel = 56.932;
 // wood.fx wood
 #define COST_wood float CostNsPerPixel = 48.775; float CostNsPerVertex = 10.413; float MaxError = 0.00;
 // wood.fx wood_renderman_rings

@@ -62,6 +62,7 @@ std::vector<TechniqueInfo> Effect::techniques() const {
       info.annotations.push_back(detail::to_public(a));
     info.reason = detail::technique_reason(*version, t);
     info.drawable = info.reason.empty();
+    if (version->techniques) info.distance_band = version->techniques->plan().distance_band(t);
     // The emulated profile's reasons follow the device's in the selection's choice.
     if (choice && choice != version->techniques && version->techniques) {
       const std::vector<std::string>& all = choice->reasons(t);

@@ -1,33 +1,9 @@
 // EffectPreview: mesh buffers, an offscreen target and a one-frame render loop.
 #include "fx/binding/effect_preview.h"
 
-#include <algorithm>
-#include <cctype>
-
 #include "fx/vulkan/one_shot.h"
 
 namespace fx::vk {
-namespace {
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
-// The mesh semantic a GLSL input name suggests ("inTexCoord" -> TEXCOORD), or empty.
-std::string_view guess_semantic(std::string_view name) {
-  const std::string n = lower(name);
-  auto has = [&](const char* s) { return n.find(s) != std::string::npos; };
-  if (has("binormal") || has("bitangent")) return "BINORMAL";
-  if (has("tangent")) return "TANGENT";
-  if (has("normal")) return "NORMAL";
-  if (has("pos")) return "POSITION";
-  if (has("texcoord") || has("uv")) return "TEXCOORD";
-  return {};
-}
-
-}  // namespace
 
 std::unique_ptr<EffectPreview> EffectPreview::create(const Context& ctx, const Mesh& mesh,
                                                      const EffectPreviewDesc& desc, DiagnosticSink& sink) {
@@ -89,20 +65,8 @@ SceneView EffectPreview::scene() const {
 }
 
 VertexLayout EffectPreview::vertex_layout(std::span<const InterfaceVariable> inputs) const {
-  VertexLayout layout = to_vertex_layout(mesh_vertex_layout(), 0);
-  const std::vector<VertexAttribute> mesh = layout.attributes;
-  // GLSL inputs (no semantics) read the mesh attribute their name suggests.
-  for (const InterfaceVariable& in : inputs) {
-    if (!in.semantic.empty()) continue;
-    const bool listed = std::any_of(layout.attributes.begin(), layout.attributes.end(),
-                                    [&](const VertexAttribute& v) { return v.semantic == in.name; });
-    const std::string_view guess = guess_semantic(in.name);
-    auto a = std::find_if(mesh.begin(), mesh.end(), [&](const VertexAttribute& m) {
-      return !guess.empty() && canonical_semantic(m.semantic) == guess;
-    });
-    if (!listed && a != mesh.end()) layout.attributes.push_back({in.name, a->format, a->offset, 0});
-  }
-  layout = with_default_attributes(std::move(layout), inputs, 1);
+  // GLSL inputs (no semantics) read the mesh attribute their name suggests (match_vertex_layout).
+  VertexLayout layout = with_default_attributes(to_vertex_layout(mesh_vertex_layout(), 0), inputs, 1);
   for (VertexAttribute& a : layout.attributes)
     if (a.binding == 1 && a.format == VK_FORMAT_R32G32B32A32_SFLOAT &&
         canonical_semantic(a.semantic).starts_with("BLENDWEIGHT"))

@@ -7,6 +7,7 @@
 #include <xxhash.h>
 
 #include <algorithm>
+#include <cctype>
 
 #include "fx/mesh.h"
 
@@ -46,6 +47,18 @@ std::string canonical_semantic(std::string_view semantic) {
   return s;
 }
 
+std::string_view glsl_input_semantic(std::string_view name) {
+  std::string n(name);
+  for (char& c : n) c = char(std::tolower(static_cast<unsigned char>(c)));
+  auto has = [&](const char* s) { return n.find(s) != std::string::npos; };
+  if (has("binormal") || has("bitangent")) return "BINORMAL";
+  if (has("tangent")) return "TANGENT";
+  if (has("normal")) return "NORMAL";
+  if (has("pos")) return "POSITION";
+  if (has("texcoord") || has("uv")) return "TEXCOORD";
+  return {};
+}
+
 std::vector<std::string> input_semantics(const InterfaceVariable& input) {
   const std::string semantic = input.semantic.empty() ? input.name : input.semantic;
   const uint32_t slots = input.type.rows > 1 ? std::max<uint32_t>(1, input.type.columns) : 1;
@@ -70,6 +83,10 @@ std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout, const
       const std::string& want = slots[slot];
       auto it = std::find_if(layout.attributes.begin(), layout.attributes.end(),
                              [&](const VertexAttribute& a) { return canonical_semantic(a.semantic) == want; });
+      const std::string_view guess = in.semantic.empty() ? glsl_input_semantic(in.name) : std::string_view();
+      if (it == layout.attributes.end() && !guess.empty())
+        it = std::find_if(layout.attributes.begin(), layout.attributes.end(),
+                          [&](const VertexAttribute& a) { return canonical_semantic(a.semantic) == guess; });
       if (it == layout.attributes.end()) {
         std::string offered;
         for (const VertexAttribute& a : layout.attributes) offered += (offered.empty() ? "" : ", ") + a.semantic;
@@ -135,7 +152,9 @@ VertexLayout with_default_attributes(VertexLayout layout, std::span<const Interf
     const uint32_t offset =
         format == VK_FORMAT_R32G32B32A32_SFLOAT ? 0 : uint32_t(offsetof(DefaultAttributeData, ints));
     if (in.semantic.empty()) {
-      if (!has(in.name, false)) layout.attributes.push_back({in.name, format, offset, binding});
+      const std::string_view guess = glsl_input_semantic(in.name);
+      if (!has(in.name, false) && (guess.empty() || !has(std::string(guess), true)))
+        layout.attributes.push_back({in.name, format, offset, binding});
       continue;
     }
     for (const std::string& semantic : input_semantics(in))

@@ -34,6 +34,14 @@ std::string join(const std::vector<std::string>& items) {
 
 }  // namespace
 
+std::string band_text(float lo, float hi) { return "[" + number(lo) + ", " + number(hi) + ")"; }
+
+std::string SelectionPlan::distance_band(uint32_t index) const {
+  if (index >= entries_.size()) return {};
+  const Entry& e = entries_[index];
+  return std::isinf(e.dist_min) && std::isinf(e.dist_max) ? std::string() : band_text(e.dist_min, e.dist_max);
+}
+
 const char* to_string(SelectionRoute r) {
   switch (r) {
     case SelectionRoute::direct: return "direct";
@@ -52,11 +60,11 @@ std::string SelectionPlan::reason(uint32_t index, const SelectionQuery& q, bool 
   if (f & fail_scheme) return "scheme '" + join(schemes_[index]) + "' not in '" + std::string(q.scheme) + "'";
   if (f & fail_distance) {
     float lo = widened ? e.dist_min_h : e.dist_min, hi = widened ? e.dist_max_h : e.dist_max;
-    return "outside distance band [" + number(lo) + ", " + number(hi) + ") at " + number(q.distance) + suffix;
+    return "outside distance band " + band_text(lo, hi) + " at " + number(q.distance) + suffix;
   }
   if (f & fail_screen) {
     float lo = widened ? e.size_min_h : e.size_min, hi = widened ? e.size_max_h : e.size_max;
-    return "outside screen-size band [" + number(lo) + ", " + number(hi) + ") at " + number(q.screen_size) + suffix;
+    return "outside screen-size band " + band_text(lo, hi) + " at " + number(q.screen_size) + suffix;
   }
   if (f & fail_error) {
     if (!e.error_known && !unmeasured_reasons_[index].empty())

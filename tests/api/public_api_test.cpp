@@ -690,6 +690,47 @@ technique sm2 { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = comp
 
 // A colour with no default draws black until set_preview_defaults gives it a stand-in;
 // parameters with defaults keep them.
+// A GLSL effect draws through a device whose vertex layout names mesh semantics (POSITION,
+// NORMAL, ...): its inputs (inPosition, inTexCoord, ...) have no semantics and read the
+// attribute their names suggest, as fxkit render reads them. (It drew nothing in fxkit-view:
+// vk-vertex-attribute-missing for every input.)
+TEST_F(PublicApiTest, AGlslEffectsInputsReadTheMeshAttributesTheirNamesSuggest) {
+  Rig r = rig(options(), 64);
+  ASSERT_TRUE(r) << text(r.errors);
+  fxkit::Effect effect = r.device->load(std::string(FXKIT_SOURCE_DIR) + "/effects/aniso_highlights_glsl.fx");
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  fxkit::Technique technique = effect.technique("aniso_blinn_phong");
+  ASSERT_TRUE(technique.valid()) << technique.reason();
+  const auto centre = draw(*r.device, technique, *r.mesh, *r.image);
+  EXPECT_GT(int(centre[0]) + centre[1] + centre[2], 0) << "nothing drawn at the centre";
+  EXPECT_EQ(text(effect.messages()), "");
+}
+
+// techniques() gives each distance band as `fxkit select` prints it (one formatting function,
+// fx::band_text): an open end is -inf or inf, and a technique without a band has none.
+TEST_F(PublicApiTest, TechniquesGiveTheirDistanceBandAsSelectPrintsIt) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  const std::string path = write_effect("api_distance_bands.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
+float4 PS() : COLOR0 { return float4(1, 1, 1, 1); }
+technique near < float MaxDistance = 50.0; > { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+technique far < float MinDistance = 50.0; > { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+technique middle < float LodMin = 2.5; float LodMax = 50.0; > { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+technique any { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)");
+  fxkit::Effect effect = r.device->load(path);
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  const auto listed = effect.techniques();
+  ASSERT_EQ(listed.size(), 4u);
+  EXPECT_EQ(listed[0].distance_band, "[-inf, 50)");
+  EXPECT_EQ(listed[1].distance_band, "[50, inf)");
+  EXPECT_EQ(listed[2].distance_band, "[2.5, 50)");
+  EXPECT_EQ(listed[3].distance_band, "");
+}
+
 TEST_F(PublicApiTest, PreviewDefaultsGiveAColourWithoutADefaultAVisibleValue) {
   Rig r = rig();
   ASSERT_TRUE(r) << text(r.errors);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # fxkit-view driven by --script: a scripted parameter change changes the picture (and a
-# frame with no change does not), a saved edit arrives through wait-reload, a texture file
-# replaces the stand-in, and commands that cannot run fail at their line.
+# frame with no change does not), at the default size the scene is right of the panel, a
+# saved edit arrives through wait-reload (a failed one makes the exit status 1), a texture
+# file replaces the stand-in, and commands that cannot run fail at their line.
 # Usage: viewer_script.sh XVFB_RUN FXKIT_VIEW EFFECT WORK_DIR
 set -euo pipefail
 # Under the sanitizer build: GLFW's X11 and Vulkan libraries, loaded with dlopen and closed at
@@ -27,6 +28,14 @@ cat set.log
 cmp -s before.png after.png && { echo "set Tint did not change the picture"; exit 1; }
 cmp -s after.png again.png || { echo "two frames with no change differ"; exit 1; }
 
+# At the default size the scene is drawn right of the panel (360 pixels wide), so the panel
+# covers none of the mesh; a window narrower than that leaves the panel over the scene.
+printf 'frames 2\nscreenshot wide.png\n' >wide.script
+"$xvfb" -a -s "-screen 0 1280x800x24" "$view" lit.fx --validate --script wide.script >wide.log 2>&1 || { cat wide.log; exit 1; }
+cat wide.log
+left=$(sed -n 's/.*pixels drawn in columns \([0-9]*\) to .*/\1/p' wide.log)
+[ -n "$left" ] && [ "$left" -ge 360 ] || { echo "the mesh starts at column '$left', under the panel"; exit 1; }
+
 # Waits are for what the viewer writes; a wait gives up after 60 s times FXKIT_TEST_SLOWDOWN
 # (10 in sanitizer builds).
 patience=$((60 * ${FXKIT_TEST_SLOWDOWN:-1}))
@@ -47,6 +56,24 @@ wait $pid || { echo "the reload script failed"; cat reload.log; exit 1; }
 cat reload.log
 grep -q "^reloaded " reload.log || { echo "no reload reported"; exit 1; }
 cmp -s loaded.png edited.png && { echo "the saved edit did not change the picture"; exit 1; }
+
+# A wait-reload that sees a failed reload goes on with the script, and the run's exit status
+# is 1: what was on screen was the last good version, not the file as saved.
+cp lit.fx broken.fx
+cat >broken.script <<END
+frames 2
+screenshot broken_loaded.png
+wait-reload $patience
+frames 2
+END
+"$xvfb" -a "$view" broken.fx --size 160x120 --script broken.script >broken.log 2>&1 &
+pid=$!
+give_up=$((SECONDS + patience))
+while ((SECONDS < give_up)) && ! [ -s broken_loaded.png ]; do sleep 0.1; done
+[ -s broken_loaded.png ] || { echo "no first screenshot"; cat broken.log; kill $pid; exit 1; }
+echo "technique broken { pass p0 { VertexShader = compile vs_2_0 Nowhere(); } }" >>broken.fx
+if wait $pid; then echo "a run whose last reload failed exited 0"; cat broken.log; exit 1; fi
+grep -q "^failed " broken.log || { echo "no failed reload reported"; cat broken.log; exit 1; }
 
 # A texture parameter sampled from a file the script names (Effect::set_texture_file).
 cat >textured.fx <<'END'

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
@@ -196,6 +197,42 @@ TEST(SelectCli, ErrorLimitPicksTheCheapestTechniqueOfTheMeasuredTable) {
     }
   }
   EXPECT_GE(picked, 6);  // at least two effects with measured techniques, several limits
+}
+
+// Every drawable technique of every effect in effects/ has a measured row in the technique
+// table (docs/accuracy.json), so `select --max-error` meets no unknown error among them and
+// docs/accuracy.md plots each of them: the table has rows for every effect file of the
+// folder, one per technique `select` lists, and each drawable one is measured. A new effect
+// or technique without a reference model fails here until scripts/accuracy-report measures it.
+TEST(SelectCli, EveryDrawableTechniqueOfTheEffectsHasAMeasuredRow) {
+  std::ifstream in(std::string(FXKIT_SOURCE_DIR) + "/docs/accuracy.json");
+  nlohmann::json table = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_FALSE(table.is_discarded());
+  std::map<std::string, std::map<std::string, nlohmann::json>> rows;  // effect -> technique -> row
+  for (const auto& t : table["techniques"])
+    if (!t.value("precision_model", false)) rows[t["effect"].get<std::string>()][t["technique"].get<std::string>()] = t;
+  int drawable = 0, measured = 0;
+  for (const auto& file : std::filesystem::directory_iterator(kEffects)) {
+    if (file.path().extension() != ".fx") continue;
+    const std::string effect = file.path().filename().string();
+    SCOPED_TRACE(effect);
+    ASSERT_TRUE(rows.count(effect)) << "no rows in docs/accuracy.json (scripts/accuracy-report --effect " << effect
+                                    << ")";
+    CliRun r = fxkit("select " + kEffects + effect + " --caps device --json");
+    nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
+    ASSERT_FALSE(j.is_discarded()) << r.out << r.err;
+    EXPECT_EQ(j["techniques"].size(), rows[effect].size());
+    for (const auto& t : j["techniques"]) EXPECT_TRUE(rows[effect].count(t["name"].get<std::string>())) << t["name"];
+    for (const auto& [name, row] : rows[effect]) {
+      if (!row["drawable"].get<bool>()) continue;
+      ++drawable;
+      const bool ok = row["measured"].get<bool>() && row.contains("max_error_lsb");
+      measured += ok;
+      EXPECT_TRUE(ok) << name << " is drawable and not measured: " << row.value("reason", std::string());
+    }
+  }
+  std::printf("measured rows: %d/%d drawable techniques\n", measured, drawable);
+  EXPECT_GE(drawable, 40);
 }
 
 }  // namespace

@@ -118,6 +118,30 @@ TEST_F(TechniqueAccuracyTest, APerturbedFormulaIsCaught) {
   EXPECT_GT(sun->max_error_lsb, 2.0);
 }
 
+// A GLSL effect is measured through a GLSL G-buffer pass: aniso_highlights_glsl.fx's five
+// techniques against lib/shading's highlight (each its own scheme), and an exponent 10% off
+// in the shader shows up.
+TEST_F(TechniqueAccuracyTest, TheGlslEffectIsMeasuredAgainstTheHighlightModel) {
+  const std::string file = "aniso_highlights_glsl.fx";
+  const auto rows = measure(ctx(), effect_copy("glsl", "", "", file));
+  ASSERT_EQ(rows.size(), 5u);
+  for (const auto& r : rows) {
+    SCOPED_TRACE(r.technique);
+    EXPECT_TRUE(r.drawable && r.measured) << r.reason;
+    EXPECT_GT(r.pixels_compared, 1000u);
+    EXPECT_EQ(r.substitutes, r.scheme);
+    std::printf("%s max %.2f p99 %.2f rmse %.2f LSB\n", r.technique.c_str(), r.max_error_lsb, r.p99_error_lsb,
+                r.rmse_lsb);
+    EXPECT_LE(r.p99_error_lsb, 4.0);
+  }
+  const auto perturbed =
+      measure(ctx(), effect_copy("glsl_perturbed", "gloss.g * gloss.g * 128.0", "gloss.g * gloss.g * 115.0", file));
+  const auto* before = find(rows, "aniso_phong");
+  const auto* after = find(perturbed, "aniso_phong");
+  ASSERT_TRUE(before && after);
+  EXPECT_GT(after->p99_error_lsb, before->p99_error_lsb + 2.0);
+}
+
 // The seed's ps.1.1 specular by four squarings (per_pixel_lighting.fx specular_squaring_ps11)
 // has a second row compiled with the ps.1.x precision model. What the model changes at each
 // pixel (banding_max_lsb) must be more than rounding the output alone would (half a level:

@@ -8,6 +8,7 @@
 
 #include "fx/shading/brdf_factorization.h"
 #include "fx/shading/hemisphere.h"
+#include "fx/shading/highlight.h"
 #include "fx/shading/specular_power.h"
 #include "fx/shading/strand.h"
 #include "fx/shading/ward.h"
@@ -28,6 +29,12 @@ dvec3 normalized_or(const dvec3& v, const dvec3& fallback) {
 dvec3 to_world(const PixelInputs& in, const dvec3& v) {
   return normalized_or(in.tangent, {1, 0, 0}) * v.x + normalized_or(in.binormal, {0, 1, 0}) * v.y +
          normalized_or(in.normal, {0, 0, 1}) * v.z;
+}
+
+// A world-space vector in the pixel's own (interpolated, renormalized) tangent frame.
+dvec3 to_tangent(const PixelInputs& in, const dvec3& w) {
+  return dvec3(glm::dot(w, normalized_or(in.tangent, {1, 0, 0})), glm::dot(w, normalized_or(in.binormal, {0, 1, 0})),
+               glm::dot(w, normalized_or(in.normal, {0, 0, 1})));
 }
 
 // The normal map's normal in world space.
@@ -227,17 +234,61 @@ ReferenceModel brdf() {
                       {"light head-on", {{"lhtR", {0.0f, -0.1f, -1.0f, 0.0f}}}},
                       {"light grazing", {{"lhtR", {1.0f, 0.0f, 0.05f, 0.0f}}}}};
   m.shade = [](const PixelInputs& in, const ParameterStore& p, const TechniqueRef&) {
-    const dvec3 t = normalized_or(in.tangent, {1, 0, 0}), b = normalized_or(in.binormal, {0, 1, 0});
-    const dvec3 n = normalized_or(in.normal, {0, 0, 1});
-    auto tangent_space = [&](const dvec3& w) { return dvec3(glm::dot(w, t), glm::dot(w, b), glm::dot(w, n)); };
-    const dvec3 l = tangent_space(normalized_or(-dvec3(read_parameter(p, "lhtR")), {0, 0, 1}));
-    const dvec3 v = tangent_space(normalized_or(in.eye - in.position, {0, 0, 1}));
+    const dvec3 l = to_tangent(in, normalized_or(-dvec3(read_parameter(p, "lhtR")), {0, 0, 1}));
+    const dvec3 v = to_tangent(in, normalized_or(in.eye - in.position, {0, 0, 1}));
     shading::AnalyticBrdf ward;
     ward.lobe = shading::BrdfLobe::ward;
     ward.alpha_x = 0.15;
     ward.alpha_y = 0.35;
     const double f = l.z > 0.0 ? ward.evaluate(normalized_or(l, {0, 0, 1}), normalized_or(v, {0, 0, 1})) : 0.0;
     return f * dvec3(in.textures[0]) * rgb(p, "MaterialColor");
+  };
+  return m;
+}
+
+// aniso_highlights_glsl.fx: LightColor (color saturate(N.L) + gloss.r highlight), the
+// highlight lib/fx/shading/highlight.h's (Phong R.E or Blinn-Phong N.H, E and L or H
+// projected onto the plane of the strand and the normal when anisotropic). In tangent
+// space: N from the normal map, E and L per pixel through the interpolated frame, the
+// strand and exponent decoded from the gloss map as the seed does. Each scheme is its own
+// group; runtime_switch follows the toggleaniso/togglemodel parameters.
+ReferenceModel aniso_highlights_glsl() {
+  ReferenceModel m;
+  m.effect = "aniso_highlights_glsl.fx";
+  m.description =
+      "LightColor (color saturate(N.L) + gloss.r highlight), highlight = Phong R.E or Blinn-Phong N.H with E, L (or "
+      "H) projected onto the strand plane when anisotropic, exponent gloss.g^2 128, strand angle from gloss.b; E, L "
+      "per pixel in the interpolated tangent frame";
+  m.textures = {"texture(ColorMap, uv)", "texture(NormalMap, uv)", "texture(GlossMap, uv)"};
+  m.glsl_blocks = {"Header", "Interface"};
+  m.parameter_sets = {{"defaults", {}},
+                      {"light head-on", {{"LightPosition", {0.0f, 0.5f, 10.0f, 1.0f}}}},
+                      {"light grazing", {{"LightPosition", {10.0f, 0.0f, 0.5f, 1.0f}}}},
+                      {"light behind", {{"LightPosition", {0.0f, 0.0f, -10.0f, 1.0f}}}}};
+  m.group = [](const TechniqueRef& t) { return t.scheme; };
+  m.shade = [](const PixelInputs& in, const ParameterStore& p, const TechniqueRef& t) {
+    bool anisotropic = t.scheme.find("isotropic") == std::string::npos;
+    bool blinn_phong = t.scheme.find("blinn_phong") != std::string::npos;
+    if (t.scheme == "interactive") {
+      int32_t aniso = 0, model = 0;
+      p.get(p.find("toggleaniso"), aniso);
+      p.get(p.find("togglemodel"), model);
+      anisotropic = aniso != 0, blinn_phong = model != 0;
+    }
+    const glm::dvec4 gloss = in.textures[2];
+    shading::HighlightInputs<double> h;
+    h.n = normalized_or(dvec3(in.textures[1]) - 0.5, {0, 0, 1});
+    h.e = normalized_or(to_tangent(in, in.eye - in.position), h.n);
+    h.l = normalized_or(to_tangent(in, dvec3(read_parameter(p, "LightPosition")) - in.position), h.n);
+    h.exponent = gloss.y * gloss.y * 128.0;
+    // Strand angle: blue 0 isotropic, else (blue 255 - 2) degrees from the tangent.
+    const double angle = (gloss.z * 255.0 - 2.0) * (3.14159265358979 / 180.0);
+    h.t = dvec3(std::cos(angle), std::sin(angle), 0.0);
+    const double highlight = shading::anisotropic_highlight(
+        h, blinn_phong ? shading::HighlightModel::blinn_phong : shading::HighlightModel::phong,
+        anisotropic && gloss.z * 255.0 >= 2.5);
+    const double diffuse = std::clamp(glm::dot(h.n, h.l), 0.0, 1.0);
+    return rgb(p, "LightColor") * (dvec3(in.textures[0]) * diffuse + gloss.x * highlight);
   };
   return m;
 }
@@ -258,14 +309,8 @@ glm::dvec4 read_parameter(const ParameterStore& params, const std::string& name)
 
 const std::vector<ReferenceModel>& reference_models() {
   static const std::vector<ReferenceModel> models = {
-      hemisphere(), per_pixel_lighting(), strand_aniso(), aniso_lut_ward(), wood(), brdf()};
+      hemisphere(), per_pixel_lighting(), strand_aniso(), aniso_lut_ward(), wood(), brdf(), aniso_highlights_glsl()};
   return models;
-}
-
-std::string unmodelled_reason(const std::string& effect) {
-  if (effect == "aniso_highlights_glsl.fx")
-    return "no reference model yet: a GLSL effect, and the G-buffer pass is HLSL appended to the effect's source";
-  return "no double-precision reference model for this effect yet";
 }
 
 }  // namespace fx::bench

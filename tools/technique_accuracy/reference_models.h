@@ -40,10 +40,14 @@ glm::dvec4 read_parameter(const ParameterStore& params, const std::string& name)
 struct ReferenceModel {
   std::string effect;       // "hemisphere.fx"
   std::string description;  // what the model is, for reports
-  // HLSL expressions of `uv` and `object` (the object-space position) whose values the
+  // Shader expressions of `uv` and `object` (the object-space position) whose values the
   // reference reads: the effect's own samplers and helpers, so filtering and mip selection
   // match the technique's.
   std::vector<std::string> textures;
+  // A GLSL effect's measurement pass is GLSL: the effect's blocks each of its stages starts
+  // with (its #version and the uniform interface), and `textures` are GLSL expressions.
+  // Empty: the pass is HLSL (the effect includes common.fxh).
+  std::vector<std::string> glsl_blocks;
   std::vector<ParameterSet> parameter_sets;
   // Whether the model covers a technique (the ones it does not stay unmeasured).
   std::function<bool(const TechniqueRef&)> covers = [](const TechniqueRef&) { return true; };
@@ -56,8 +60,5 @@ struct ReferenceModel {
 
 // The models, one per effect that has one.
 const std::vector<ReferenceModel>& reference_models();
-
-// Why an effect without a model has none (the reason its techniques are listed unmeasured).
-std::string unmodelled_reason(const std::string& effect);
 
 }  // namespace fx::bench

@@ -36,7 +36,7 @@ enum Channel { ch_position, ch_tangent, ch_binormal, ch_normal, ch_uv, ch_textur
 // HLSL appended to an effect that includes common.fxh: the G-buffer technique per channel
 // (the effect's WorldViewProjection and tangent_frame, so coverage and frame match) and
 // the empty technique whose time is subtracted.
-std::string measurement_block(const ReferenceModel& m) {
+std::string hlsl_measurement_block(const ReferenceModel& m) {
   std::ostringstream s;
   s << R"(
 struct FxkitMeasureIn { float4 position : POSITION; float3 normal : NORMAL; float3 tangent : TANGENT; float3 binormal : BINORMAL; float2 uv : TEXCOORD0; };
@@ -78,6 +78,89 @@ technique fxkit_measure_empty < string Requires = "vs_2_0 ps_2_0"; > { pass p0 {
          "PixelShader = compile ps_3_0 FxkitGbufferPS("
       << c << "); } }\n";
   return s.str();
+}
+
+// GLSL appended to a GLSL effect: the same techniques, each stage the model's glsl_blocks
+// (the effect's #version and uniform interface) then the measurement's own. The frame is the
+// one a GLSL effect's vertex shader builds (World's upper 3x3 on each vector, normalized).
+std::string glsl_measurement_block(const ReferenceModel& m) {
+  std::string prelude;
+  for (const std::string& b : m.glsl_blocks) prelude += b + ", ";
+  std::ostringstream s;
+  s << R"(
+GLSLShader FxkitMeasureVS
+{
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec3 inTangent;
+layout(location = 3) in vec3 inBinormal;
+layout(location = 4) in vec2 inTexCoord;
+layout(location = 0) out vec3 fxkitWorld;
+layout(location = 1) out vec3 fxkitT;
+layout(location = 2) out vec3 fxkitB;
+layout(location = 3) out vec3 fxkitN;
+layout(location = 4) out vec2 fxkitUv;
+layout(location = 5) out vec3 fxkitObject;
+void main()
+{
+    fxkitWorld = (World * vec4(inPosition, 1.0)).xyz;
+    fxkitT = normalize(mat3(World) * inTangent);
+    fxkitB = normalize(mat3(World) * inBinormal);
+    fxkitN = normalize(mat3(World) * inNormal);
+    fxkitUv = inTexCoord;
+    fxkitObject = inPosition;
+    gl_Position = WorldViewProjection * vec4(inPosition, 1.0);
+}
+}
+GLSLShader FxkitMeasureFS
+{
+layout(location = 0) in vec3 fxkitWorld;
+layout(location = 1) in vec3 fxkitT;
+layout(location = 2) in vec3 fxkitB;
+layout(location = 3) in vec3 fxkitN;
+layout(location = 4) in vec2 fxkitUv;
+layout(location = 5) in vec3 fxkitObject;
+layout(location = 0) out vec4 fxkitColor;
+vec4 fxkitChannel()
+{
+    vec2 uv = fxkitUv;
+    vec3 object = fxkitObject;
+    if (kFxkitChannel == 0) return vec4(fxkitWorld, 1.0);
+    if (kFxkitChannel == 1) return vec4(fxkitT, 1.0);
+    if (kFxkitChannel == 2) return vec4(fxkitB, 1.0);
+    if (kFxkitChannel == 3) return vec4(fxkitN, 1.0);
+    if (kFxkitChannel == 4) return vec4(uv, 0.0, 1.0);
+)";
+  for (size_t i = 0; i < m.textures.size(); ++i)
+    s << "    if (kFxkitChannel == " << ch_textures + i << ") return " << m.textures[i] << ";\n";
+  s << R"(    return vec4(0.0, 0.0, 0.0, 1.0);
+}
+void main() { fxkitColor = fxkitChannel(); }
+}
+GLSLShader FxkitEmptyVS
+{
+layout(location = 0) in vec3 inPosition;
+void main() { gl_Position = WorldViewProjection * vec4(inPosition, 1.0); }
+}
+GLSLShader FxkitEmptyFS
+{
+layout(location = 0) out vec4 fxkitColor;
+void main() { fxkitColor = vec4(0.0, 0.0, 0.0, 1.0); }
+}
+)";
+  s << "technique fxkit_measure_empty < string Requires = \"glsl_450\"; > { pass p0 { VertexShader = { " << prelude
+    << "FxkitEmptyVS }; PixelShader = { " << prelude << "FxkitEmptyFS }; } }\n";
+  for (size_t c = 0; c < ch_textures + m.textures.size(); ++c)
+    s << "GLSLShader FxkitChannel" << c << " { const int kFxkitChannel = " << c << "; }\n"
+      << "technique fxkit_measure_gbuffer" << c << " < string Requires = \"glsl_450\"; > { pass p0 { VertexShader = { "
+      << prelude << "FxkitMeasureVS }; PixelShader = { " << prelude << "FxkitChannel" << c
+      << ", FxkitMeasureFS }; } }\n";
+  return s.str();
+}
+
+// The measurement techniques in the effect's own shader language.
+std::string measurement_block(const ReferenceModel& m) {
+  return m.glsl_blocks.empty() ? hlsl_measurement_block(m) : glsl_measurement_block(m);
 }
 
 std::string read_text(const std::filesystem::path& p) {
@@ -419,7 +502,8 @@ bool list_effect(const vk::Context& ctx, const std::filesystem::path& source, co
     r.scheme = scheme_of(em.techniques[t]);
     r.drawable = b->binding->technique_ok(t);
     r.emulation = legacy_of(*b->effect->units, t).emulation;
-    r.reason = r.drawable ? unmodelled_reason(r.effect) : "not drawable on Vulkan: " + b->binding->technique_reason(t);
+    r.reason = r.drawable ? "no double-precision reference model for this effect yet"
+                          : "not drawable on Vulkan: " + b->binding->technique_reason(t);
     rows.push_back(r);
   }
   return true;

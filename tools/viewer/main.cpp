@@ -67,11 +67,19 @@ void draw_params(fxkit::Effect& effect, Panels& ui) {
   }
 }
 
-void draw_ui(fxkit::Effect& effect, fxkit::Technique& technique, Panels& ui, const std::string& device_name,
-             float camera_distance) {
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(420, std::max(300.f, ImGui::GetIO().DisplaySize.y - 20)), ImGuiCond_FirstUseEver);
-  ImGui::Begin(effect.path().c_str());
+// The panel's width at first; it is docked at the left edge, full height, and can be widened.
+constexpr float kPanelWidth = 360.f;
+
+// The panel; returns its width. Every text wraps at its edge.
+float draw_ui(fxkit::Effect& effect, fxkit::Technique& technique, Panels& ui, const std::string& device_name,
+              float camera_distance) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, display.y), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(kPanelWidth, display.x), display.y),
+                                      ImVec2(std::max(kPanelWidth, display.x * 0.5f), display.y));
+  ImGui::Begin(effect.path().c_str(), nullptr, ImGuiWindowFlags_NoMove);
+  ImGui::PushTextWrapPos(0.f);
   ImGui::Text("%s", device_name.c_str());
   ImGui::Text("frame %.2f ms (%.0f fps)", 1000.0 / std::max(ImGui::GetIO().Framerate, 1e-3f), ImGui::GetIO().Framerate);
   for (size_t p = 0; p < ui.pass_ms.size(); ++p) ImGui::Text("  pass %zu: %.3f ms GPU", p, ui.pass_ms[p]);
@@ -80,16 +88,40 @@ void draw_ui(fxkit::Effect& effect, fxkit::Technique& technique, Panels& ui, con
   if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) draw_params(effect, ui);
   if (ImGui::CollapsingHeader("Techniques", ImGuiTreeNodeFlags_DefaultOpen))
     ui.techniques.draw(effect, technique, camera_distance);
+  ImGui::PopTextWrapPos();
+  const float width = ImGui::GetWindowWidth();
   ImGui::End();
   draw_overlay(ui.problems);
+  return width;
 }
 
-// 0: the image is one colour (nothing drawn); else how many pixels differ from the corner.
-size_t drawn_pixels(const std::vector<uint8_t>& rgba) {
-  size_t n = 0;
-  for (size_t i = 0; i + 3 < rgba.size(); i += 4)
-    n += !std::equal(rgba.begin() + long(i), rgba.begin() + long(i) + 3, rgba.begin());
-  return n;
+// The part of the window the scene is drawn into: right of the panel when what is left there
+// is at least as wide as it is tall (the mesh is then not under the panel), else the whole
+// window with the panel over it.
+VkRect2D scene_area(VkExtent2D window, float panel_width) {
+  const uint32_t panel = uint32_t(std::ceil(panel_width));
+  if (panel < window.width && window.width - panel >= window.height)
+    return {{int32_t(panel), 0}, {window.width - panel, window.height}};
+  return {{0, 0}, window};
+}
+
+// What a screenshot shows: the pixels that differ from its top-left corner (the clear
+// colour), and the first and last column holding one.
+struct Drawn {
+  size_t pixels = 0;
+  uint32_t left = 0, right = 0;
+};
+
+Drawn drawn(const std::vector<uint8_t>& rgba, uint32_t width) {
+  Drawn d;
+  d.left = width;
+  for (size_t i = 0; i + 3 < rgba.size(); i += 4) {
+    if (std::equal(rgba.begin() + long(i), rgba.begin() + long(i) + 3, rgba.begin())) continue;
+    const uint32_t x = uint32_t(i / 4 % width);
+    ++d.pixels, d.left = std::min(d.left, x), d.right = std::max(d.right, x);
+  }
+  if (!d.pixels) d.left = 0;
+  return d;
 }
 
 // Writes the last capture() as a PNG and says what it shows; false when it cannot.
@@ -101,8 +133,9 @@ bool write_screenshot(VulkanWindow& window, const std::string& path, const fxkit
     std::fprintf(stderr, "fxkit-view: cannot write %s\n", path.c_str());
     return false;
   }
-  std::printf("fxkit-view: %s: %ux%u, technique %s, %zu pixels drawn\n", path.c_str(), w, h, technique.name().c_str(),
-              drawn_pixels(rgba));
+  const Drawn d = drawn(rgba, w);
+  std::printf("fxkit-view: %s: %ux%u, technique %s, %zu pixels drawn in columns %u to %u\n", path.c_str(), w, h,
+              technique.name().c_str(), d.pixels, d.left, d.right);
   std::fflush(stdout);
   return true;
 }
@@ -179,12 +212,13 @@ int main(int argc, char** argv) {
       if (io.MouseDown[0]) camera.turn(io.MouseDelta.x, io.MouseDelta.y);
       if (io.MouseWheel != 0.f) camera.zoom(io.MouseWheel);
     }
-    draw_ui(effect, technique, ui, device->device_name(), camera.distance());
+    const float panel_width = draw_ui(effect, technique, ui, device->device_name(), camera.distance());
+    const VkRect2D area = scene_area(frame.extent, panel_width);
 
-    const float aspect = float(frame.extent.width) / float(frame.extent.height);
+    const float aspect = float(area.extent.width) / float(area.extent.height);
     fxkit::Scene scene = camera.scene(aspect, float(glfwGetTime()));
     scene.elapsed = 1.f / std::max(ImGui::GetIO().Framerate, 1.f);
-    scene.viewport_size[0] = float(frame.extent.width), scene.viewport_size[1] = float(frame.extent.height);
+    scene.viewport_size[0] = float(area.extent.width), scene.viewport_size[1] = float(area.extent.height);
     effect.set_scene(scene);
     if (effect.serial() != stand_ins_serial) {  // once per loaded version
       stand_ins_serial = effect.serial();
@@ -195,9 +229,9 @@ int main(int argc, char** argv) {
     if (const auto ms = timer.begin(frame.cmd, frame.slot); !ms.empty()) ui.pass_ms = ms;
     const float clear[4] = {0.18f, 0.2f, 0.24f, 1.f};
     window->begin_scene(frame, clear);
-    const VkViewport viewport{0, float(frame.extent.height), float(frame.extent.width), -float(frame.extent.height), 0,
-                              1};
-    if (technique.begin(frame.cmd, viewport, {{0, 0}, frame.extent})) {
+    const VkViewport viewport{
+        float(area.offset.x), float(area.extent.height), float(area.extent.width), -float(area.extent.height), 0, 1};
+    if (technique.begin(frame.cmd, viewport, area)) {
       for (uint32_t pass = 0; pass < technique.pass_count(); ++pass) {
         timer.mark(frame.cmd);
         if (technique.apply(pass)) mesh->draw(frame.cmd);

@@ -1,7 +1,8 @@
 // ParamWidget: how a parameter is shown, read from its annotations: SAS / D3DX (UIName,
 // UIWidget, UIMin, UIMax, UIStep, SasUiControl, SasUiLabel, SasUiVisible, SasUiMin,
 // SasUiMax) and ReShade's (ui_type, ui_min, ui_max, ui_step, ui_label, ui_tooltip,
-// ui_category); other string annotations become help text. draw_param draws it with ImGui.
+// ui_category); other string annotations become help text. draw_param (param_draw.cpp)
+// draws it with ImGui.
 #pragma once
 #include <fxkit/fxkit.h>
 
@@ -18,9 +19,9 @@ struct ParamWidget {
 };
 
 // The widget `param`'s annotations ask for. A texture gets a file field (its ResourceName,
-// loaded with Effect::set_texture_file). Parameters the application cannot set, scene
-// transforms (a standard semantic or a name Effect::set_scene binds) and matrices are
-// read-only; UIWidget "None" and SasUiVisible false hide.
+// loaded with Effect::set_texture_file). Strings, scene transforms (a standard semantic or a
+// name Effect::set_scene binds), matrices and arrays are read-only; UIWidget "None",
+// SasUiVisible false and statics (values no application sets) are hidden.
 ParamWidget widget_for(const fxkit::ParamInfo& param);
 
 // Draws `param` as `widget` and writes a changed value into `effect`; true when it did.

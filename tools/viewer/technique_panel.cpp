@@ -15,22 +15,15 @@ void TechniquePanel::pin(const fxkit::Effect& effect, fxkit::Technique& techniqu
 
 namespace {
 
-// "[0, 20)" from MinDistance/MaxDistance (or LodMin/LodMax) with the Hysteresis margin when
-// given; "" when the technique has no distance band (docs/selection.md).
+// The technique's distance band as selection prints it (TechniqueInfo::distance_band), with
+// the Hysteresis margin when given; "" when it has none (docs/selection.md).
 std::string distance_band(const fxkit::TechniqueInfo& t) {
-  const fxkit::Annotation* lo = t.annotation("MinDistance");
-  const fxkit::Annotation* hi = t.annotation("MaxDistance");
-  if (!lo) lo = t.annotation("LodMin");
-  if (!hi) hi = t.annotation("LodMax");
-  if (!lo && !hi) return {};
-  char band[96];
-  const double min = lo ? lo->number() : 0.0;
-  if (hi) std::snprintf(band, sizeof band, "[%g, %g)", min, hi->number());
-  else std::snprintf(band, sizeof band, "[%g, inf)", min);
-  std::string out = band;
+  if (t.distance_band.empty()) return {};
+  std::string out = t.distance_band;
   if (const fxkit::Annotation* h = t.annotation("Hysteresis")) {
-    std::snprintf(band, sizeof band, ", hysteresis %g", h->number());
-    out += band;
+    char margin[48];
+    std::snprintf(margin, sizeof margin, ", hysteresis %g", h->number());
+    out += margin;
   }
   return out;
 }

@@ -121,6 +121,9 @@ struct TechniqueInfo {
   // Why the caps profile the last select() emulated rejects it ("" when it accepts it, or
   // when select() emulated none).
   std::string caps_reason{};
+  // The distance band selection tests it against (MinDistance/MaxDistance or LodMin/LodMax),
+  // as `fxkit select` prints it: "[-inf, 40)", "[40, inf)"; "" when it has none.
+  std::string distance_band{};
   // As the file writes them: selection's (Scheme, MaxError, CostNsPerPixel, ...; see
   // docs/selection.md) and any other.
   std::vector<Annotation> annotations{};

@@ -41,6 +41,10 @@ std::string canonical_semantic(std::string_view semantic);
 // one semantic index each (TEXCOORD4..TEXCOORD7). Canonical spellings.
 std::vector<std::string> input_semantics(const InterfaceVariable& input);
 
+// The mesh semantic a GLSL input's name suggests ("inTexCoord" -> TEXCOORD, "aPos" ->
+// POSITION), or "": what a GLSL input reads when the layout has no attribute of its name.
+std::string_view glsl_input_semantic(std::string_view name);
+
 // The format an input missing from the application's layout is read with: (0, 0, 0, 1) as
 // floats, or as integers for integer inputs (BLENDINDICES as uint4), which Vulkan requires.
 VkFormat default_attribute_format(const InterfaceVariable& input);
@@ -54,14 +58,14 @@ struct DefaultAttributeData {
 
 // `layout` plus, for every input it lacks, an attribute at `binding` whose buffer has stride
 // 0: each vertex reads the same (0, 0, 0, 1), as Direct3D reads elements a vertex declaration
-// lacks. Semantic inputs are matched by semantic, GLSL inputs by name. The caller binds a
+// lacks. Inputs are matched as match_vertex_layout matches them. The caller binds a
 // buffer holding a DefaultAttributeData at `binding`.
 VertexLayout with_default_attributes(VertexLayout layout, std::span<const InterfaceVariable> inputs, uint32_t binding);
 
 // Matches every shader input to an attribute by semantic (GLSL inputs, which have none,
-// match by variable name). A shader input with no attribute is "vk-vertex-attribute-missing"
-// naming the semantic and the attributes on offer; attributes the shader does not read are
-// left out. A binding referenced but not declared is "vk-vertex-binding-missing".
+// match an attribute of their variable name, else the semantic glsl_input_semantic gives). A shader input with no
+// attribute is "vk-vertex-attribute-missing" naming the semantic and the attributes on offer; attributes the shader
+// does not read are left out. A binding referenced but not declared is "vk-vertex-binding-missing".
 std::optional<VertexInput> match_vertex_layout(const VertexLayout& layout, const std::vector<InterfaceVariable>& inputs,
                                                DiagnosticSink& sink);
 

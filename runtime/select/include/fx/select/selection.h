@@ -66,6 +66,9 @@ struct SelectionPlanOptions {
   float hysteresis = 0.1f;           // default band margin as a fraction of the edge value
 };
 
+// A band [lo, hi) as selection's reasons print it: "[-inf, 40)", "[0.5, 2)".
+std::string band_text(float lo, float hi);
+
 class SelectionPlan {
  public:
   SelectionPlan() = default;
@@ -86,6 +89,9 @@ class SelectionPlan {
 
   size_t size() const { return entries_.size(); }
   std::string_view name(uint32_t index) const;
+  // The distance band the plan tests a candidate against, as explain() prints it
+  // ("[-inf, 40)", "[40, inf)"); "" when the candidate has none.
+  std::string distance_band(uint32_t index) const;
   std::optional<uint32_t> index_of(std::string_view name) const;
   // Candidate indices from best to worst rank: techniques with a measured error first; among
   // them substitute groups (the Substitutes annotation: errors measured against the same
