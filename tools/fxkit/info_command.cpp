@@ -130,6 +130,7 @@ json shader_json(const fx::StageProgram& s, const fx::StageUnit* stage, const fx
           {"inputs", interface(s.shader.reflection.inputs)},
           {"outputs", interface(s.shader.reflection.outputs)},
           {"uniform_blocks", blocks(s.shader.reflection.uniform_blocks)},
+          {"storage_blocks", blocks(s.shader.reflection.storage_blocks)},
           {"push_constants", blocks(s.shader.reflection.push_constants)},
           {"images", images},
           {"diagnostics", fx::render_json(s.diagnostics, sm)}};
