@@ -103,10 +103,14 @@ class Builder {
     std::vector<Annotation> out;
     for (const ast::Annotation& a : list) {
       if (!a.value) continue;
-      Type t = model_.types.resolve(a.type, 0, a.array_dims, diags_, &const_scope_);
-      if (t.cls == TypeClass::error) continue;
       auto v = fold_constant(*a.value, const_scope_, diags_);
       if (!v) continue;
+      // `< float a[] = {1, 2}; >`: sized by its value, as a parameter by its initializer.
+      std::optional<uint32_t> scalars;
+      if (!a.array_dims.empty() && !a.array_dims[0] && v->is_numeric())
+        scalars = static_cast<uint32_t>(v->components.size());
+      Type t = model_.types.resolve(a.type, 0, a.array_dims, diags_, &const_scope_, scalars);
+      if (t.cls == TypeClass::error) continue;
       auto converted = convert_value(*v, t, a.value->range, diags_);
       if (!converted) continue;
       out.push_back({a.name, std::move(*converted), a.range});

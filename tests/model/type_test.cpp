@@ -147,6 +147,9 @@ TEST(ModelType, UnsizedArraysTakeTheirInitializersSize) {
   EXPECT_EQ(test::param(*b, "Offsets").default_value->number(5), 6.0);
   EXPECT_TRUE(test::build("float2 Odd[] = { 1, 2, 3 };")->has("bad-array-size"));
   EXPECT_TRUE(test::build("float2 None[];")->has("bad-array-size"));
+  auto annotated = test::build("float x < float Weights[] = {1, 2, 3}; >;");
+  ASSERT_FALSE(annotated->diags.has_errors()) << annotated->text();
+  EXPECT_EQ(test::param(*annotated, "x").annotations.at(0).value.components.size(), 3u);
 }
 
 // Annotation type names in any case, as D3DX reads them (`String UIName`), on parameters,
