@@ -83,7 +83,8 @@ struct EffectState {
     std::string name;
     VkBuffer buffer = VK_NULL_HANDLE;  // a storage buffer's range, or
     VkDeviceSize offset = 0, range = 0;
-    VkImageView view = VK_NULL_HANDLE;  // a storage image's view
+    VkImageView view = VK_NULL_HANDLE;    // a storage image's view, or
+    VkBufferView texel = VK_NULL_HANDLE;  // a texel buffer's view
   };
   std::vector<AppStorage> app_storage;
   uint64_t textures_serial = 0;   // the version app_textures were bound to

@@ -48,8 +48,9 @@ bool EffectState::bind_app_textures(const fx::EffectVersion& version, fx::vk::Ef
   bool ok = true;
   for (const AppTexture& t : app_textures) ok &= binding.set_texture(t.name, t.view, t.layout, t.kind, sink);
   for (const AppStorage& r : app_storage)
-    ok &= r.view ? binding.set_storage_image(r.name, r.view, sink)
-                 : binding.set_buffer(r.name, r.buffer, r.offset, r.range, sink);
+    ok &= r.view    ? binding.set_storage_image(r.name, r.view, sink)
+          : r.texel ? binding.set_texel_buffer(r.name, r.texel, sink)
+                    : binding.set_buffer(r.name, r.buffer, r.offset, r.range, sink);
   textures_serial = version.serial;
   keep_problems();
   return ok;

@@ -382,6 +382,19 @@ bool EffectBinding::set_storage_image(std::string_view name, VkImageView view, D
   return false;
 }
 
+bool EffectBinding::set_texel_buffer(std::string_view name, VkBufferView view, DiagnosticSink& sink) {
+  for (const auto& tech : techniques_)
+    for (const auto& pass : tech->passes)
+      for (const ProgramTexelBuffer& t : pass->shader.texel_buffers())
+        if (t.name == name) {
+          storage_.set_texel_view(name, view);
+          textures_pending_ = true;
+          return true;
+        }
+  sink.error("vk-resource-unknown", {}, "no pass of the effect uses a texel buffer '" + std::string(name) + "'");
+  return false;
+}
+
 bool EffectBinding::bind_textures(DiagnosticSink& sink) {
   for (auto& tech : techniques_)
     for (auto& pass : tech->passes) {
@@ -389,6 +402,13 @@ bool EffectBinding::bind_textures(DiagnosticSink& sink) {
       for (const ProgramStorageBuffer& b : pass->shader.storage_buffers()) {
         std::optional<VkDescriptorBufferInfo> info = storage_.buffer(b.name, sink);
         if (!info || !pass->resources->bind_buffer(b.name, info->buffer, info->offset, info->range, sink)) return false;
+      }
+      for (const ProgramTexelBuffer& t : pass->shader.texel_buffers()) {
+        const uint32_t param = model_->find_parameter(t.name);
+        const VkFormat format =
+            param != kNoIndex ? storage_image_format(model_->parameters[param].type.element) : VK_FORMAT_UNDEFINED;
+        const VkBufferView view = storage_.texel_view(t.name, format, sink);
+        if (!view || !pass->resources->bind_texel_buffer(t.name, view, sink)) return false;
       }
       for (ImageSlot& slot : pass->images) {
         if (slot.kind == DescriptorKind::storage_image) {

@@ -5,6 +5,7 @@
 
 #include "fx/vulkan/barrier.h"
 #include "fx/vulkan/one_shot.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 
@@ -22,6 +23,56 @@ EffectStorage::StorageImage& EffectStorage::image_entry(std::string_view name) {
   return images_.back();
 }
 
+EffectStorage::TexelBuffer& EffectStorage::texel_entry(std::string_view name) {
+  auto it = std::find_if(texels_.begin(), texels_.end(), [&](const TexelBuffer& t) { return t.name == name; });
+  if (it != texels_.end()) return *it;
+  texels_.push_back({std::string(name), VK_NULL_HANDLE, std::nullopt, VK_NULL_HANDLE});
+  return texels_.back();
+}
+
+EffectStorage::~EffectStorage() {
+  for (TexelBuffer& t : texels_)
+    if (t.stand_in_view) vkDestroyBufferView(ctx_->device(), t.stand_in_view, nullptr);
+}
+
+void EffectStorage::set_texel_view(std::string_view name, VkBufferView view) { texel_entry(name).view = view; }
+
+std::optional<Buffer> EffectStorage::zeroed_buffer(const std::string& name, VkBufferUsageFlags usage,
+                                                   DiagnosticSink& sink) {
+  auto buffer =
+      Buffer::create(*ctx_, {kStandInBufferBytes, usage, MemoryUsage::upload, "fxkit storage stand-in"}, sink);
+  if (!buffer) return std::nullopt;
+  const std::vector<uint8_t> zeros(kStandInBufferBytes, 0);
+  if (!buffer->write(zeros.data(), zeros.size())) {
+    sink.error("vk-call-failed", {}, "could not zero the stand-in for '" + name + "'");
+    return std::nullopt;
+  }
+  return buffer;
+}
+
+VkBufferView EffectStorage::texel_view(std::string_view name, VkFormat format, DiagnosticSink& sink) {
+  TexelBuffer& t = texel_entry(name);
+  if (t.view) return t.view;
+  if (format == VK_FORMAT_UNDEFINED) {
+    sink.error("vk-storage-image-unbound", {},
+               "texel buffer '" + t.name + "' has no view: set_texel_buffer() binds one (stand-ins are buffers of " +
+                   "a 32-bit float, int or uint element)");
+    return VK_NULL_HANDLE;
+  }
+  std::optional<Buffer> buffer =
+      zeroed_buffer(t.name, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, sink);
+  if (!buffer) return VK_NULL_HANDLE;
+  auto info = structure<VkBufferViewCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO);
+  info.buffer = buffer->handle();
+  info.format = format;
+  info.range = VK_WHOLE_SIZE;
+  if (!check(vkCreateBufferView(ctx_->device(), &info, nullptr, &t.stand_in_view), sink, "vkCreateBufferView"))
+    return VK_NULL_HANDLE;
+  t.stand_in = std::move(*buffer);
+  t.view = t.stand_in_view;
+  return t.view;
+}
+
 void EffectStorage::set_buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
   buffer_entry(name).info = {buffer, offset, range};
 }
@@ -31,16 +82,8 @@ void EffectStorage::set_image(std::string_view name, VkImageView view) { image_e
 std::optional<VkDescriptorBufferInfo> EffectStorage::buffer(std::string_view name, DiagnosticSink& sink) {
   StorageBuffer& b = buffer_entry(name);
   if (b.info.buffer) return b.info;
-  auto stand_in = Buffer::create(
-      *ctx_,
-      {kStandInBufferBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUsage::upload, "fxkit storage buffer stand-in"},
-      sink);
+  std::optional<Buffer> stand_in = zeroed_buffer(b.name, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, sink);
   if (!stand_in) return std::nullopt;
-  const std::vector<uint8_t> zeros(kStandInBufferBytes, 0);
-  if (!stand_in->write(zeros.data(), zeros.size())) {
-    sink.error("vk-call-failed", {}, "could not zero the stand-in for storage buffer '" + b.name + "'");
-    return std::nullopt;
-  }
   b.stand_in = std::move(*stand_in);
   b.info = {b.stand_in->handle(), 0, kStandInBufferBytes};
   return b.info;

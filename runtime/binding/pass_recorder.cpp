@@ -188,6 +188,12 @@ bool PassRecorder::images_bound(const PassResources& r, DiagnosticSink& sink) co
       sink.error("vk-texture-unbound", {}, "storage buffer '" + buffers[i].name + "' has no buffer bound");
       return false;
     }
+  const auto& texel = r.program().texel_buffers();
+  for (size_t i = 0; i < texel.size(); ++i)
+    if (!r.texel_views_[i]) {
+      sink.error("vk-texture-unbound", {}, "texel buffer '" + texel[i].name + "' has no view bound");
+      return false;
+    }
   return true;
 }
 
@@ -236,7 +242,8 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
     image_infos.resize(elements);
     writes.clear();
     const auto& storage = program.storage_buffers();
-    writes.reserve(blocks.size() + images.size() + storage.size());
+    const auto& texel = program.texel_buffers();
+    writes.reserve(blocks.size() + images.size() + storage.size() + texel.size());
     for (size_t i = 0; i < blocks.size(); ++i) {
       buffers[i] = {frames_->ring_buffer(), push ? offsets[i] : 0, blocks[i].size};
       auto w = structure<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
@@ -270,6 +277,15 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
       w.descriptorCount = 1;
       w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
       w.pBufferInfo = &r.buffers_[i];
+      writes.push_back(w);
+    }
+    for (size_t i = 0; i < texel.size(); ++i) {
+      auto w = structure<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+      w.dstSet = set;
+      w.dstBinding = texel[i].binding;
+      w.descriptorCount = 1;
+      w.descriptorType = to_vk_descriptor(texel[i].kind, program.descriptor_mode());
+      w.pTexelBufferView = &r.texel_views_[i];
       writes.push_back(w);
     }
   };

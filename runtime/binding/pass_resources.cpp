@@ -11,6 +11,7 @@ PassResources::PassResources(const ShaderProgram& program) : program_(&program) 
     blocks_.push_back({std::vector<uint8_t>(b.size, 0), true, 0, 0});
   images_.resize(program.images().size());
   buffers_.resize(program.storage_buffers().size());
+  texel_views_.resize(program.texel_buffers().size(), VK_NULL_HANDLE);
 }
 
 static bool write_if_changed(std::vector<uint8_t>& dst, uint32_t offset, const void* data, uint32_t bytes,
@@ -97,6 +98,21 @@ bool PassResources::bind_buffer(std::string_view name, VkBuffer buffer, VkDevice
     return true;
   }
   sink.error("vk-resource-unknown", {}, "the program has no storage buffer '" + std::string(name) + "'");
+  return false;
+}
+
+bool PassResources::bind_texel_buffer(std::string_view name, VkBufferView view, DiagnosticSink& sink) {
+  const auto& texel = program_->texel_buffers();
+  for (size_t i = 0; i < texel.size(); ++i) {
+    if (texel[i].name != name) continue;
+    if (texel_views_[i] != view) {
+      texel_views_[i] = view;
+      images_changed_ = true;
+      ++images_version_;
+    }
+    return true;
+  }
+  sink.error("vk-resource-unknown", {}, "the program has no texel buffer '" + std::string(name) + "'");
   return false;
 }
 

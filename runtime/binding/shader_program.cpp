@@ -58,6 +58,8 @@ VkDescriptorType to_vk_descriptor(DescriptorKind kind, DescriptorMode mode) {
     case DescriptorKind::sampled_image: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
     case DescriptorKind::sampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
     case DescriptorKind::storage_image: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    case DescriptorKind::uniform_texel_buffer: return VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    case DescriptorKind::storage_texel_buffer: return VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
   }
   return VK_DESCRIPTOR_TYPE_MAX_ENUM;
 }
@@ -88,6 +90,7 @@ ShaderProgram& ShaderProgram::operator=(ShaderProgram&& o) noexcept {
   blocks_ = std::move(o.blocks_);
   images_ = std::move(o.images_);
   storage_buffers_ = std::move(o.storage_buffers_);
+  texel_buffers_ = std::move(o.texel_buffers_);
   compute_pipeline_ = std::exchange(o.compute_pipeline_, VK_NULL_HANDLE);
   std::copy(std::begin(o.local_size_), std::end(o.local_size_), local_size_);
   o.modules_.clear();
@@ -202,6 +205,8 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx, const std
         for (const UniformBlock& u : s->reflection.storage_blocks)
           if (u.binding == b.binding) buffer.size = std::max(buffer.size, u.size), buffer.written |= u.written;
       p.storage_buffers_.push_back(buffer);
+    } else if (b.kind == DescriptorKind::uniform_texel_buffer || b.kind == DescriptorKind::storage_texel_buffer) {
+      p.texel_buffers_.push_back({b.name, b.kind, b.binding});
     } else {
       ProgramImage image{b.name, b.kind, ImageDim::dim_2d, b.binding, b.count};
       for (const CompiledShader* s : ordered)
@@ -209,12 +214,6 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx, const std
           if (i.binding == b.binding)
             image.dim = i.dim, image.arrayed = i.arrayed, image.shadow |= i.shadow,
             image.multisampled |= i.multisampled;
-      if (image.dim == ImageDim::buffer) {
-        // Buffer<T> / RWBuffer<T> need VkBufferViews (uniform and storage texel buffers).
-        sink.error("vk-descriptor-unsupported", {},
-                   "'" + b.name + "' is a texel buffer (Buffer<T> or RWBuffer<T>), which fxkit does not bind yet");
-        return std::nullopt;
-      }
       p.images_.push_back(image);
     }
   }

@@ -256,6 +256,27 @@ technique11 T {
   EXPECT_NEAR(centre[2], 128, 1);
 }
 
+// Texel buffers: an RWBuffer<float4> (a storage texel buffer, a zeroed stand-in in
+// R32G32B32A32_SFLOAT) written by a compute pass and read by the pixel shader, beside a
+// Buffer<float4> (a uniform texel buffer) that holds zeros.
+TEST_F(EffectRenderTest, ComputePassWritesATexelBufferThePixelShaderReads) {
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_compute_texel", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+RWBuffer<float4> Written;
+Buffer<float4> Zeros;
+[numthreads(4, 1, 1)] void Fill(uint3 id : SV_DispatchThreadID) { Written[id.x] = float4(0.25 * id.x, 0.5, 1, 1); }
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target { return Written[1] + Zeros[0]; }
+technique11 T {
+  pass Fill < int3 Dispatch = {1, 1, 1}; > { SetComputeShader(CompileShader(cs_5_0, Fill())); }
+  pass Draw { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); }
+}
+)");
+  EXPECT_NEAR(centre[0], 64, 1);  // Written[1] = (0.25, 0.5, 1)
+  EXPECT_NEAR(centre[1], 128, 1);
+  EXPECT_EQ(centre[2], 255);
+}
+
 // A multisampled texture read with Load(coord, sample): the stand-in is a multisampled image
 // (a single-sample one is a validation error), every sample cleared white.
 TEST_F(EffectRenderTest, MultisampledTextureLoadsReadAMultisampledStandIn) {

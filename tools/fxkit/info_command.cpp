@@ -113,6 +113,8 @@ const char* kind_name(fx::DescriptorKind k) {
     case fx::DescriptorKind::sampled_image: return "sampled_image";
     case fx::DescriptorKind::sampler: return "sampler";
     case fx::DescriptorKind::storage_image: return "storage_image";
+    case fx::DescriptorKind::uniform_texel_buffer: return "uniform_texel_buffer";
+    case fx::DescriptorKind::storage_texel_buffer: return "storage_texel_buffer";
   }
   return "unknown";
 }

@@ -263,6 +263,10 @@ class Effect {
   // view, in VK_IMAGE_LAYOUT_GENERAL, of an image with VK_IMAGE_USAGE_STORAGE_BIT. Until then a
   // zeroed 2D image the size of the target serves an RWTexture2D.
   bool set_storage_image(std::string_view name, VkImageView view);
+  // The same for the texel buffer `name` (Buffer<T>, RWBuffer<T>): the application's buffer
+  // view (VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT or STORAGE_TEXEL_BUFFER_BIT). Until then a
+  // view of a zeroed 64 KiB stand-in in the element's format (float4: R32G32B32A32_SFLOAT).
+  bool set_texel_buffer(std::string_view name, VkBufferView view);
 
  private:
   friend class Device;

@@ -92,6 +92,9 @@ class EffectBinding {
   bool set_buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range,
                   DiagnosticSink& sink);
   bool set_storage_image(std::string_view name, VkImageView view, DiagnosticSink& sink);
+  // The application's buffer view for the texel buffer `name` (Buffer<T>, RWBuffer<T>),
+  // instead of a view of a zeroed stand-in in the element's format.
+  bool set_texel_buffer(std::string_view name, VkBufferView view, DiagnosticSink& sink);
   // Whether pass `pass` of `technique` runs a compute shader (dispatch() it; apply() refuses).
   bool compute_pass(uint32_t technique, uint32_t pass) const;
   // The workgroup counts a preview dispatches compute pass `pass` with: the pass's

@@ -29,6 +29,8 @@ class EffectStorage {
   void set_buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);
   // The application's view, in VK_IMAGE_LAYOUT_GENERAL, for the storage image `name`.
   void set_image(std::string_view name, VkImageView view);
+  // The application's buffer view for the texel buffer `name` (Buffer<T>, RWBuffer<T>).
+  void set_texel_view(std::string_view name, VkBufferView view);
 
   // What the storage buffer `name` reads and writes: the application's range, else a zeroed
   // stand-in of kStandInBufferBytes (made on first use, shared by every pass naming it).
@@ -38,12 +40,26 @@ class EffectStorage {
   // with "vk-storage-image-unbound" when it needs a stand-in of another shape (`two_d`
   // false: 1D, 3D, arrays) or the format cannot be a storage image.
   VkImageView image(std::string_view name, VkFormat format, bool two_d, VkExtent2D extent, DiagnosticSink& sink);
+  // The buffer view of the texel buffer `name`: the application's, else a view in `format`
+  // of a zeroed stand-in buffer of kStandInBufferBytes. VK_NULL_HANDLE with
+  // "vk-storage-image-unbound" when `format` is VK_FORMAT_UNDEFINED (an element without a
+  // 32-bit format) and the application gave no view.
+  VkBufferView texel_view(std::string_view name, VkFormat format, DiagnosticSink& sink);
+  ~EffectStorage();
+  EffectStorage(const EffectStorage&) = delete;
+  EffectStorage& operator=(const EffectStorage&) = delete;
 
  private:
   struct StorageBuffer {
     std::string name;
     VkDescriptorBufferInfo info{};
     std::optional<Buffer> stand_in;
+  };
+  struct TexelBuffer {
+    std::string name;
+    VkBufferView view = VK_NULL_HANDLE;
+    std::optional<Buffer> stand_in;
+    VkBufferView stand_in_view = VK_NULL_HANDLE;  // owned
   };
   struct StorageImage {
     std::string name;
@@ -52,13 +68,17 @@ class EffectStorage {
   };
   StorageBuffer& buffer_entry(std::string_view name);
   StorageImage& image_entry(std::string_view name);
+  TexelBuffer& texel_entry(std::string_view name);
+  // A zeroed stand-in buffer of kStandInBufferBytes for `usage`.
+  std::optional<Buffer> zeroed_buffer(const std::string& name, VkBufferUsageFlags usage, DiagnosticSink& sink);
 
   const Context* ctx_;
   std::vector<StorageBuffer> buffers_;
   std::vector<StorageImage> images_;
+  std::vector<TexelBuffer> texels_;
 };
 
-// The format glslang gives an HLSL RWTexture's element type (float4 -> R32G32B32A32_SFLOAT,
+// The format glslang gives an HLSL RWTexture's or (RW)Buffer's element type (float4 -> R32G32B32A32_SFLOAT,
 // uint -> R32_UINT, ...); VK_FORMAT_UNDEFINED for an element it has no 32-bit format for.
 VkFormat storage_image_format(std::string_view element);
 

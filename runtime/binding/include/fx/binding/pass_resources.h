@@ -38,6 +38,9 @@ class PassResources {
   // False and "vk-resource-unknown" if the program has no such storage buffer.
   bool bind_buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range,
                    DiagnosticSink& sink);
+  // Binds `view` to the texel buffer called `name`. False and "vk-resource-unknown" if the
+  // program has no such texel buffer.
+  bool bind_texel_buffer(std::string_view name, VkBufferView view, DiagnosticSink& sink);
 
   const ShaderProgram& program() const { return *program_; }
   // Descriptor sets (DescriptorMode::sets) kept in `arena` across frames, one per frame in
@@ -70,6 +73,7 @@ class PassResources {
   std::vector<Block> blocks_;                    // parallel to program.uniform_blocks()
   std::vector<Bound> images_;                    // parallel to program.images()
   std::vector<VkDescriptorBufferInfo> buffers_;  // parallel to program.storage_buffers()
+  std::vector<VkBufferView> texel_views_;        // parallel to program.texel_buffers()
   bool images_changed_ = true;                   // descriptor set contents must be rewritten
   uint64_t images_version_ = 1;                  // bumped with every change of images_
   VkDescriptorSet set_ = VK_NULL_HANDLE;
