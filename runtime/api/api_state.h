@@ -78,6 +78,15 @@ struct EffectState {
     fx::vk::ImageKind kind = fx::vk::ImageKind::image2d;
   };
   std::vector<AppTexture> app_textures;
+  // The application's storage buffers and images (set_buffer, set_storage_image), by name.
+  struct AppStorage {
+    std::string name;
+    VkBuffer buffer = VK_NULL_HANDLE;  // a storage buffer's range, or
+    VkDeviceSize offset = 0, range = 0;
+    VkImageView view = VK_NULL_HANDLE;    // a storage image's view, or
+    VkBufferView texel = VK_NULL_HANDLE;  // a texel buffer's view
+  };
+  std::vector<AppStorage> app_storage;
   uint64_t textures_serial = 0;   // the version app_textures were bound to
   uint64_t scene_checked = 0;     // the version set_scene() last checked for unbound transforms
   fx::DiagnosticSink sink;        // problems of set/apply calls, moved to `problems`
@@ -94,7 +103,8 @@ struct EffectState {
 
   // Moves what `sink` collected into `problems`.
   void keep_problems();
-  // Binds app_textures to `binding` (of `version`); false if one names no texture parameter.
+  // Binds app_textures and app_storage to `binding` (of `version`); false if one names no
+  // texture parameter or storage resource.
   bool bind_app_textures(const fx::EffectVersion& version, fx::vk::EffectBinding& binding);
 };
 

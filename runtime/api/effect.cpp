@@ -223,6 +223,31 @@ bool Effect::set_texture(std::string_view name, VkImageView view, VkImageLayout 
   return binding && state_->bind_app_textures(*version, *binding);
 }
 
+// Records the application's storage resource `name` and binds it to the live version.
+static bool set_storage(detail::EffectState& state, std::string_view name, VkBuffer buffer, VkDeviceSize offset,
+                        VkDeviceSize range, VkImageView view, VkBufferView texel = VK_NULL_HANDLE) {
+  auto& list = state.app_storage;
+  auto same = std::find_if(list.begin(), list.end(), [&](const auto& r) { return r.name == name; });
+  if (same == list.end()) same = list.insert(list.end(), {std::string(name)});
+  same->buffer = buffer, same->offset = offset, same->range = range, same->view = view, same->texel = texel;
+  state.textures_serial = 0;  // bound to the live version at the next begin() or dispatch()
+  auto version = state.handle.version();
+  fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
+  return binding && state.bind_app_textures(*version, *binding);
+}
+
+bool Effect::set_buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
+  return state_ && set_storage(*state_, name, buffer, offset, range, VK_NULL_HANDLE);
+}
+
+bool Effect::set_storage_image(std::string_view name, VkImageView view) {
+  return state_ && set_storage(*state_, name, VK_NULL_HANDLE, 0, 0, view);
+}
+
+bool Effect::set_texel_buffer(std::string_view name, VkBufferView view) {
+  return state_ && set_storage(*state_, name, VK_NULL_HANDLE, 0, 0, VK_NULL_HANDLE, view);
+}
+
 bool Effect::set_texture_file(std::string_view name, const std::string& file) {
   if (!state_) return false;
   detail::EffectState& s = *state_;

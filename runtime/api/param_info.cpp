@@ -18,6 +18,7 @@ ParamKind kind_of(const fx::Type& t) {
     case fx::TypeClass::string: return ParamKind::string;
     case fx::TypeClass::texture: return ParamKind::texture;
     case fx::TypeClass::sampler: return ParamKind::sampler;
+    case fx::TypeClass::view: return ParamKind::view;
     default: return ParamKind::other;
   }
 }

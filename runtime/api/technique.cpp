@@ -47,6 +47,10 @@ std::string technique_reason(const fx::EffectVersion& version, uint32_t t) {
 bool EffectState::bind_app_textures(const fx::EffectVersion& version, fx::vk::EffectBinding& binding) {
   bool ok = true;
   for (const AppTexture& t : app_textures) ok &= binding.set_texture(t.name, t.view, t.layout, t.kind, sink);
+  for (const AppStorage& r : app_storage)
+    ok &= r.view    ? binding.set_storage_image(r.name, r.view, sink)
+          : r.texel ? binding.set_texel_buffer(r.name, r.texel, sink)
+                    : binding.set_buffer(r.name, r.buffer, r.offset, r.range, sink);
   textures_serial = version.serial;
   keep_problems();
   return ok;
@@ -110,6 +114,26 @@ bool Technique::begin(VkCommandBuffer cmd, const VkViewport& viewport, const VkR
   }
   if (!s.sink.diagnostics().empty()) s.keep_problems();
   if (ok) s.recording = binding, s.pass_apply.binding = binding;
+  return ok;
+}
+
+bool Technique::compute_pass(uint32_t pass) const {
+  auto version = effect_ ? effect_->handle.version() : nullptr;
+  const fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
+  return binding && binding->compute_pass(resolve(*effect_, *version, name_), pass);
+}
+
+bool Technique::dispatch(VkCommandBuffer cmd, uint32_t pass, uint32_t x, uint32_t y, uint32_t z) {
+  if (!effect_) return false;
+  detail::EffectState& s = *effect_;
+  auto version = s.handle.version();
+  fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
+  if (!binding) return false;
+  if (!name_.empty()) remember(s, *version, name_, resolved_serial_, resolved_, passes_);
+  const uint32_t t = name_.empty() ? s.handle.technique() : resolved_;
+  if (s.textures_serial != version->serial) s.bind_app_textures(*version, *binding);
+  const bool ok = binding->dispatch(cmd, t, pass, {x, y, z}, s.sink);
+  if (!s.sink.diagnostics().empty()) s.keep_problems();
   return ok;
 }
 

@@ -33,6 +33,8 @@ VkDescriptorPool DescriptorArena::add_pool(const ShaderProgram& program, Diagnos
       uint32_t(program.uniform_blocks().size()));
   for (const ProgramImage& image : program.images())
     add(to_vk_descriptor(image.kind, DescriptorMode::sets), image.count);
+  add(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, uint32_t(program.storage_buffers().size()));
+  for (const ProgramTexelBuffer& t : program.texel_buffers()) add(to_vk_descriptor(t.kind, DescriptorMode::sets), 1);
   for (VkDescriptorPoolSize& size : sizes)
     size.descriptorCount = std::max(size.descriptorCount, kPerSet) * kSetsPerPool;
   auto info = structure<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);

@@ -20,6 +20,8 @@ struct ImageSlot {
   VkSampler sampler = VK_NULL_HANDLE;
   uint32_t texture_param = kNoIndex;              // the texture parameter it samples
   std::shared_ptr<const EffectTextureData> data;  // the effect's own texture
+  VkFormat storage_format = VK_FORMAT_UNDEFINED;  // a storage image's stand-in format
+  bool storage_2d = false;                        // ... and whether a 2D stand-in fits it
 };
 
 // A uniform block of a pass, packed by the parameter store (block id `id`) straight into
@@ -114,7 +116,7 @@ bool stage_is_glsl(const PassProgram& program) {
 }  // namespace
 
 EffectBinding::EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures)
-    : params_(&params), textures_(&textures), samplers_(ctx), descriptor_sets_(ctx) {}
+    : params_(&params), textures_(&textures), samplers_(ctx), descriptor_sets_(ctx), storage_(ctx) {}
 
 EffectBinding::~EffectBinding() {
   recorder_.reset();    // declared first for apply(), it must not outlive what it references
@@ -128,6 +130,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
                                                      const EffectBindingDesc& desc, DiagnosticSink& sink) {
   std::unique_ptr<EffectBinding> b(new EffectBinding(ctx, params, textures));
   b->model_ = &model;
+  b->storage_extent_ = desc.storage_image_extent;
   b->pipelines_ = PipelineCache::create(ctx, sink);
   if (!b->pipelines_) return nullptr;
   b->frames_ = &frames;
@@ -244,6 +247,13 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
         ImageSlot slot;
         slot.name = image.name;
         slot.kind = image.kind;
+        if (image.kind == DescriptorKind::storage_image) {  // EffectStorage's, bound in bind_textures()
+          const uint32_t param = model.find_parameter(image.name);
+          if (param != kNoIndex) slot.storage_format = storage_image_format(model.parameters[param].type.element);
+          slot.storage_2d = image.dim == ImageDim::dim_2d && !image.arrayed && image.count == 1;
+          pass->images.push_back(std::move(slot));
+          continue;
+        }
         const fx::SamplerDesc* sampler_desc = nullptr;
         fx::SamplerDesc stage_sampler;
         resolve_image(model, pass_info, image.name, &sampler_desc, &slot.texture_param, stage_sampler);
@@ -346,11 +356,71 @@ bool EffectBinding::set_texture(std::string_view texture, VkImageView view, VkIm
   return true;
 }
 
+bool EffectBinding::set_buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range,
+                               DiagnosticSink& sink) {
+  for (const auto& tech : techniques_)
+    for (const auto& pass : tech->passes)
+      for (const ProgramStorageBuffer& b : pass->shader.storage_buffers())
+        if (b.name == name) {
+          storage_.set_buffer(name, buffer, offset, range);
+          textures_pending_ = true;
+          return true;
+        }
+  sink.error("vk-resource-unknown", {}, "no pass of the effect uses a storage buffer '" + std::string(name) + "'");
+  return false;
+}
+
+bool EffectBinding::set_storage_image(std::string_view name, VkImageView view, DiagnosticSink& sink) {
+  for (const auto& tech : techniques_)
+    for (const auto& pass : tech->passes)
+      for (const ProgramImage& image : pass->shader.images())
+        if (image.kind == DescriptorKind::storage_image && image.name == name) {
+          storage_.set_image(name, view);
+          textures_pending_ = true;
+          return true;
+        }
+  sink.error("vk-resource-unknown", {}, "no pass of the effect uses a storage image '" + std::string(name) + "'");
+  return false;
+}
+
+bool EffectBinding::set_texel_buffer(std::string_view name, VkBufferView view, DiagnosticSink& sink) {
+  for (const auto& tech : techniques_)
+    for (const auto& pass : tech->passes)
+      for (const ProgramTexelBuffer& t : pass->shader.texel_buffers())
+        if (t.name == name) {
+          storage_.set_texel_view(name, view);
+          textures_pending_ = true;
+          return true;
+        }
+  sink.error("vk-resource-unknown", {}, "no pass of the effect uses a texel buffer '" + std::string(name) + "'");
+  return false;
+}
+
 bool EffectBinding::bind_textures(DiagnosticSink& sink) {
   for (auto& tech : techniques_)
     for (auto& pass : tech->passes) {
       pass->resources->rewrite_sets();  // set_texture's view may have another's handle
+      for (const ProgramStorageBuffer& b : pass->shader.storage_buffers()) {
+        std::optional<VkDescriptorBufferInfo> info = storage_.buffer(b.name, sink);
+        if (!info || !pass->resources->bind_buffer(b.name, info->buffer, info->offset, info->range, sink)) return false;
+      }
+      for (const ProgramTexelBuffer& t : pass->shader.texel_buffers()) {
+        const uint32_t param = model_->find_parameter(t.name);
+        const VkFormat format =
+            param != kNoIndex ? storage_image_format(model_->parameters[param].type.element) : VK_FORMAT_UNDEFINED;
+        const VkBufferView view = storage_.texel_view(t.name, format, sink);
+        if (!view || !pass->resources->bind_texel_buffer(t.name, view, sink)) return false;
+      }
       for (ImageSlot& slot : pass->images) {
+        if (slot.kind == DescriptorKind::storage_image) {
+          const VkImageView view =
+              storage_.image(slot.name, slot.storage_format, slot.storage_2d, storage_extent_, sink);
+          if (!view ||
+              !pass->resources->bind(slot.name, Texture::wrap(view, VK_IMAGE_LAYOUT_GENERAL, ImageKind::image2d),
+                                     VK_NULL_HANDLE, sink))
+            return false;
+          continue;
+        }
         if (slot.kind == DescriptorKind::sampler) {
           if (!pass->resources->bind_sampler(slot.name, slot.sampler, sink)) return false;
           continue;
@@ -390,6 +460,7 @@ bool EffectBinding::warm(uint32_t technique, const RenderingFormats& formats, ui
   }
   bool ok = true;
   for (auto& pass : techniques_[technique]->passes) {
+    if (pass->shader.compute_pipeline()) continue;  // made with its program
     const VertexInput* input = vertex_input(*pass, vertex_layout, sink);
     ok = input && pipelines_->get(pass->shader, pass->state, *input, formats, recorder_->dynamic(), sink) && ok;
   }
@@ -412,17 +483,12 @@ bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const Renderi
   return true;
 }
 
-[[gnu::always_inline]] inline bool EffectBinding::apply_inline(uint32_t pass_index, uint32_t vertex_layout,
-                                                               DiagnosticSink& sink) {
-  if (!active_ || pass_index >= active_->passes.size()) [[unlikely]]
-    return unknown_pass(pass_index, sink);
-  Pass& pass = *active_->passes[pass_index];
+[[gnu::always_inline]] inline bool EffectBinding::write_blocks(Pass& pass, bool& moved, DiagnosticSink& sink) {
   // Locals: the stores below (the ring, the blocks) may alias members as far as the
   // compiler knows, and this runs once per object.
   ParameterStore& params = *params_;
   PassRecorder& recorder = *recorder_;
   const uint64_t frame = frames_->frame();
-  bool moved = false;                                // a block was written to a new ring offset
   uint32_t* ring_offset = pass.ring_offsets.data();  // parallel to pass.blocks
   for (BlockSlot& block : pass.blocks) {
     bool changed;
@@ -449,11 +515,22 @@ bool EffectBinding::begin(VkCommandBuffer cmd, uint32_t technique, const Renderi
     block.frame = frame;
     moved = true;
   }
+  return true;
+}
+
+[[gnu::always_inline]] inline bool EffectBinding::apply_inline(uint32_t pass_index, uint32_t vertex_layout,
+                                                               DiagnosticSink& sink) {
+  if (!active_ || pass_index >= active_->passes.size()) [[unlikely]]
+    return unknown_pass(pass_index, sink);
+  Pass& pass = *active_->passes[pass_index];
+  bool moved = false;  // a block was written to a new ring offset
+  if (!write_blocks(pass, moved, sink)) [[unlikely]]
+    return false;
   // The same pass again (the next object of a group): only the uniform offsets can differ.
   // The recorder's last apply() was this pass's (apply_pass sets applied_ only then) and
   // its images are bound only in begin(), which clears applied_: reapply()'s own checks
   // would repeat these.
-  if (&pass == applied_ && vertex_layout == applied_layout_ && recorder.rebind(pass.ring_offsets, moved)) [[likely]]
+  if (&pass == applied_ && vertex_layout == applied_layout_ && recorder_->rebind(pass.ring_offsets, moved)) [[likely]]
     return true;
   return apply_pass(pass, vertex_layout, sink);
 }
@@ -474,6 +551,10 @@ bool EffectBinding::unknown_pass(uint32_t pass_index, DiagnosticSink& sink) {
 
 bool EffectBinding::apply_pass(Pass& pass, uint32_t vertex_layout, DiagnosticSink& sink) {
   applied_ = nullptr;
+  if (pass.shader.compute_pipeline()) {
+    sink.error("vk-pass-compute", {}, "a compute pass is dispatched (dispatch()), outside begin()/end(), not applied");
+    return false;
+  }
   const VertexInput* input = vertex_input(pass, vertex_layout, sink);
   if (!input) return false;
   if (!(pass.pipeline_formats == formats_)) {
@@ -511,6 +592,51 @@ bool EffectBinding::pass_objects(uint32_t technique, uint32_t pass_index, const 
   program = &pass.shader;
   update_object_count();
   return pipeline != VK_NULL_HANDLE;
+}
+
+bool EffectBinding::compute_pass(uint32_t technique, uint32_t pass) const {
+  return technique_ok(technique) && pass < techniques_[technique]->passes.size() &&
+         techniques_[technique]->passes[pass]->shader.compute_pipeline() != VK_NULL_HANDLE;
+}
+
+std::array<uint32_t, 3> EffectBinding::dispatch_groups(uint32_t technique, uint32_t pass, uint32_t width,
+                                                       uint32_t height) const {
+  std::array<uint32_t, 3> groups{1, 1, 1};
+  if (!compute_pass(technique, pass)) return groups;
+  for (const Annotation& a : model_->techniques[technique].passes[pass].annotations)
+    if (a.name == "Dispatch" && a.value.is_numeric()) {
+      for (size_t d = 0; d < 3 && d < a.value.components.size(); ++d)
+        groups[d] = uint32_t(std::clamp(a.value.components[d], 1.0, 65535.0));
+      return groups;
+    }
+  const uint32_t* local = techniques_[technique]->passes[pass]->shader.local_size();
+  groups[0] = (std::max(width, 1u) + local[0] - 1) / local[0];
+  groups[1] = (std::max(height, 1u) + local[1] - 1) / local[1];
+  return groups;
+}
+
+bool EffectBinding::dispatch(VkCommandBuffer cmd, uint32_t technique, uint32_t pass_index,
+                             const std::array<uint32_t, 3>& groups, DiagnosticSink& sink) {
+  if (active_) {
+    sink.error("vk-pass-compute", {}, "dispatch() between begin() and end(): compute runs outside rendering");
+    return false;
+  }
+  if (!compute_pass(technique, pass_index)) {
+    sink.error("vk-pass-unknown", {},
+               "pass " + std::to_string(pass_index) + " of technique " + std::to_string(technique) +
+                   " is no compute pass that can run" +
+                   (technique_ok(technique) ? "" : " (" + technique_reason(technique) + ")"));
+    return false;
+  }
+  if (textures_pending_ && !bind_textures(sink)) return false;
+  Pass& pass = *techniques_[technique]->passes[pass_index];
+  bool moved = false;
+  if (!write_blocks(pass, moved, sink)) return false;
+  PassDesc desc{&pass.shader, pass.state, nullptr, pass.resources.get(), VK_NULL_HANDLE, pass.ring_offsets};
+  const size_t pools = descriptor_sets_.pool_count();
+  const bool ok = recorder_->dispatch(cmd, desc, groups.data(), sink);
+  if (descriptor_sets_.pool_count() != pools) update_object_count();
+  return ok;
 }
 
 void EffectBinding::end() {

@@ -55,6 +55,7 @@ EffectBindingDesc EffectPreview::binding_desc() const {
   // from outside (fx/mesh.h).
   d.target.negative_viewport_height = true;
   d.target.mesh_front_face = FrontFace::counter_clockwise;
+  d.storage_image_extent = {desc_.width, desc_.height};
   return d;
 }
 
@@ -106,10 +107,16 @@ bool EffectPreview::record_passes(VkCommandBuffer cmd, EffectBinding& binding, u
                                   uint32_t vertex_layout, uint32_t draws, const VkRect2D& scissor,
                                   DiagnosticSink& sink) {
   const VkViewport viewport{0.0f, float(desc_.height), float(desc_.width), -float(desc_.height), 0.0f, 1.0f};
+  // The technique's compute passes first, outside rendering ("simulate, then draw").
+  bool recorded = true;
+  for (uint32_t p = 0; p < binding.pass_count(technique) && recorded; ++p)
+    if (binding.compute_pass(technique, p))
+      recorded =
+          binding.dispatch(cmd, technique, p, binding.dispatch_groups(technique, p, desc_.width, desc_.height), sink);
   ClearValues clear;
   clear.color = desc_.clear;
   target_->begin(cmd, clear);
-  bool recorded = binding.begin(cmd, technique, formats(), viewport, scissor, sink);
+  recorded = recorded && binding.begin(cmd, technique, formats(), viewport, scissor, sink);
   if (recorded) {
     const VkBuffer buffers[2] = {vertices_.handle(), constants_.handle()};
     const VkDeviceSize offsets[2] = {0, 0};
@@ -117,6 +124,7 @@ bool EffectPreview::record_passes(VkCommandBuffer cmd, EffectBinding& binding, u
     vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
     for (uint32_t d = 0; d < draws && recorded; ++d) {
       for (uint32_t p = 0; p < binding.pass_count(technique) && recorded; ++p) {
+        if (binding.compute_pass(technique, p)) continue;
         recorded = binding.apply(p, vertex_layout, sink);
         if (recorded) vkCmdDrawIndexed(cmd, index_count_, 1, 0, 0, 0);
       }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "fx/vulkan/barrier.h"
 #include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
@@ -30,6 +31,28 @@ void PassRecorder::end() {
   offsets_.clear();
   pushed_ = nullptr;
   applied_ = nullptr;
+}
+
+bool PassRecorder::dispatch(VkCommandBuffer cmd, const PassDesc& pass, const uint32_t groups[3], DiagnosticSink& sink) {
+  end();
+  cmd_ = cmd;
+  bind_point_ = VK_PIPELINE_BIND_POINT_COMPUTE;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.program->compute_pipeline());
+  ++stats_.pipeline_binds;
+  const bool bound = bind_descriptors(pass, sink);
+  if (bound) {
+    vkCmdDispatch(cmd, groups[0], groups[1], groups[2]);
+    memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                   VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
+                       VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                   VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT |
+                       VK_ACCESS_INDEX_READ_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    ++stats_.passes;
+  }
+  bind_point_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  end();  // the graphics passes after it bind their own pipeline and set
+  return bound;
 }
 
 bool PassRecorder::apply(const PassDesc& pass, DiagnosticSink& sink) {
@@ -151,13 +174,26 @@ bool PassRecorder::images_bound(const PassResources& r, DiagnosticSink& sink) co
   for (size_t i = 0; i < images.size(); ++i) {
     const PassResources::Bound& b = r.images_[i];
     const bool needs_view = images[i].kind != DescriptorKind::sampler;
-    const bool needs_sampler = images[i].kind != DescriptorKind::sampled_image;
+    const bool needs_sampler =
+        images[i].kind == DescriptorKind::sampler || images[i].kind == DescriptorKind::combined_image_sampler;
     if ((needs_view && !b.view) || (needs_sampler && !b.sampler)) {
       sink.error("vk-texture-unbound", {},
                  "'" + images[i].name + "' has no " + (needs_view && !b.view ? "texture" : "sampler") + " bound");
       return false;
     }
   }
+  const auto& buffers = r.program().storage_buffers();
+  for (size_t i = 0; i < buffers.size(); ++i)
+    if (!r.buffers_[i].buffer) {
+      sink.error("vk-texture-unbound", {}, "storage buffer '" + buffers[i].name + "' has no buffer bound");
+      return false;
+    }
+  const auto& texel = r.program().texel_buffers();
+  for (size_t i = 0; i < texel.size(); ++i)
+    if (!r.texel_views_[i]) {
+      sink.error("vk-texture-unbound", {}, "texel buffer '" + texel[i].name + "' has no view bound");
+      return false;
+    }
   return true;
 }
 
@@ -205,7 +241,9 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
     for (const ProgramImage& image : images) elements += image.count;  // at least 1 (link_program)
     image_infos.resize(elements);
     writes.clear();
-    writes.reserve(blocks.size() + images.size());
+    const auto& storage = program.storage_buffers();
+    const auto& texel = program.texel_buffers();
+    writes.reserve(blocks.size() + images.size() + storage.size() + texel.size());
     for (size_t i = 0; i < blocks.size(); ++i) {
       buffers[i] = {frames_->ring_buffer(), push ? offsets[i] : 0, blocks[i].size};
       auto w = structure<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
@@ -232,12 +270,30 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
       writes.push_back(w);
       first += count;
     }
+    for (size_t i = 0; i < storage.size(); ++i) {
+      auto w = structure<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+      w.dstSet = set;
+      w.dstBinding = storage[i].binding;
+      w.descriptorCount = 1;
+      w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+      w.pBufferInfo = &r.buffers_[i];
+      writes.push_back(w);
+    }
+    for (size_t i = 0; i < texel.size(); ++i) {
+      auto w = structure<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+      w.dstSet = set;
+      w.dstBinding = texel[i].binding;
+      w.descriptorCount = 1;
+      w.descriptorType = to_vk_descriptor(texel[i].kind, program.descriptor_mode());
+      w.pTexelBufferView = &r.texel_views_[i];
+      writes.push_back(w);
+    }
   };
 
   if (push) {
     write_all(VK_NULL_HANDLE);
-    ctx_->functions().push_descriptor_set(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, program.pipeline_layout(), 0,
-                                          uint32_t(writes.size()), writes.data());
+    ctx_->functions().push_descriptor_set(cmd_, bind_point_, program.pipeline_layout(), 0, uint32_t(writes.size()),
+                                          writes.data());
     ++stats_.descriptor_pushes;
     r.images_changed_ = false;
     pushed_ = &r;
@@ -275,8 +331,8 @@ bool PassRecorder::bind_descriptors(const PassDesc& pass, DiagnosticSink& sink) 
       r.images_changed_ = false;
     }
     if (r.set_ != set_ || !same_offsets || layout_changed) {
-      vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, program.pipeline_layout(), 0, 1, &r.set_,
-                              uint32_t(offsets.size()), offsets.data());
+      vkCmdBindDescriptorSets(cmd_, bind_point_, program.pipeline_layout(), 0, 1, &r.set_, uint32_t(offsets.size()),
+                              offsets.data());
       ++stats_.descriptor_binds;
       set_ = r.set_;
     }

@@ -10,6 +10,8 @@ PassResources::PassResources(const ShaderProgram& program) : program_(&program) 
   for (const ProgramUniformBlock& b : program.uniform_blocks())
     blocks_.push_back({std::vector<uint8_t>(b.size, 0), true, 0, 0});
   images_.resize(program.images().size());
+  buffers_.resize(program.storage_buffers().size());
+  texel_views_.resize(program.texel_buffers().size(), VK_NULL_HANDLE);
 }
 
 static bool write_if_changed(std::vector<uint8_t>& dst, uint32_t offset, const void* data, uint32_t bytes,
@@ -79,6 +81,38 @@ bool PassResources::bind(std::string_view name, const Texture& texture, VkSample
     return true;
   }
   sink.error("vk-resource-unknown", {}, "the program has no texture or sampler '" + std::string(name) + "'");
+  return false;
+}
+
+bool PassResources::bind_buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range,
+                                DiagnosticSink& sink) {
+  const auto& buffers = program_->storage_buffers();
+  for (size_t i = 0; i < buffers.size(); ++i) {
+    if (buffers[i].name != name) continue;
+    VkDescriptorBufferInfo& cur = buffers_[i];
+    if (cur.buffer != buffer || cur.offset != offset || cur.range != range) {
+      cur = {buffer, offset, range};
+      images_changed_ = true;
+      ++images_version_;
+    }
+    return true;
+  }
+  sink.error("vk-resource-unknown", {}, "the program has no storage buffer '" + std::string(name) + "'");
+  return false;
+}
+
+bool PassResources::bind_texel_buffer(std::string_view name, VkBufferView view, DiagnosticSink& sink) {
+  const auto& texel = program_->texel_buffers();
+  for (size_t i = 0; i < texel.size(); ++i) {
+    if (texel[i].name != name) continue;
+    if (texel_views_[i] != view) {
+      texel_views_[i] = view;
+      images_changed_ = true;
+      ++images_version_;
+    }
+    return true;
+  }
+  sink.error("vk-resource-unknown", {}, "the program has no texel buffer '" + std::string(name) + "'");
   return false;
 }
 

@@ -58,6 +58,8 @@ VkDescriptorType to_vk_descriptor(DescriptorKind kind, DescriptorMode mode) {
     case DescriptorKind::sampled_image: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
     case DescriptorKind::sampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
     case DescriptorKind::storage_image: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    case DescriptorKind::uniform_texel_buffer: return VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    case DescriptorKind::storage_texel_buffer: return VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
   }
   return VK_DESCRIPTOR_TYPE_MAX_ENUM;
 }
@@ -87,12 +89,18 @@ ShaderProgram& ShaderProgram::operator=(ShaderProgram&& o) noexcept {
   patch_control_points_ = o.patch_control_points_;
   blocks_ = std::move(o.blocks_);
   images_ = std::move(o.images_);
+  storage_buffers_ = std::move(o.storage_buffers_);
+  texel_buffers_ = std::move(o.texel_buffers_);
+  compute_pipeline_ = std::exchange(o.compute_pipeline_, VK_NULL_HANDLE);
+  std::copy(std::begin(o.local_size_), std::end(o.local_size_), local_size_);
   o.modules_.clear();
   return *this;
 }
 
 void ShaderProgram::reset() {
   if (device_ == VK_NULL_HANDLE) return;
+  if (compute_pipeline_) vkDestroyPipeline(device_, compute_pipeline_, nullptr);
+  compute_pipeline_ = VK_NULL_HANDLE;
   for (VkShaderModule m : modules_) vkDestroyShaderModule(device_, m, nullptr);
   modules_.clear();
   stage_infos_.clear();
@@ -110,6 +118,7 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx, const std
   p.device_ = ctx.device();
   p.mode_ = mode;
   const CompiledShader* vertex = nullptr;
+  const CompiledShader* compute = nullptr;
   XXH3_state_t* hs = XXH3_createState();
   XXH3_64bits_reset(hs);
   std::vector<const CompiledShader*> ordered = stages;
@@ -118,6 +127,7 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx, const std
   p.entry_points_.reserve(ordered.size());  // stage infos point into these strings
   for (const CompiledShader* s : ordered) {
     if (s->reflection.stage == ShaderStage::vertex) vertex = s;
+    if (s->reflection.stage == ShaderStage::compute) compute = s;
     if (s->reflection.stage == ShaderStage::fragment) p.color_outputs_ = uint32_t(s->reflection.outputs.size());
     XXH3_64bits_update(hs, s->spirv.data(), s->spirv.size() * 4);
     XXH3_64bits_update(hs, s->entry_point.c_str(), s->entry_point.size() + 1);
@@ -140,7 +150,11 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx, const std
   }
   p.hash_ = XXH3_64bits_digest(hs);
   XXH3_freeState(hs);
-  if (!vertex) {
+  if (compute && ordered.size() > 1) {
+    sink.error("vk-program-no-vertex-stage", {}, "a compute shader runs alone: its pass can have no other stage");
+    return std::nullopt;
+  }
+  if (!vertex && !compute) {
     sink.error("vk-program-no-vertex-stage", {}, "a graphics program needs a vertex shader");
     return std::nullopt;
   }
@@ -157,18 +171,20 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx, const std
   for (const CompiledShader* s : ordered)
     if (s->reflection.stage == ShaderStage::tess_control)
       p.patch_control_points_ = tessellation_patch_sizes(s->spirv).input;
-  const std::vector<uint32_t> live = input_locations(vertex->spirv);
-  for (const InterfaceVariable& input : vertex->reflection.inputs)
-    if (std::find(live.begin(), live.end(), input.location) != live.end()) p.vertex_inputs_.push_back(input);
+  if (vertex) {
+    const std::vector<uint32_t> live = input_locations(vertex->spirv);
+    for (const InterfaceVariable& input : vertex->reflection.inputs)
+      if (std::find(live.begin(), live.end(), input.location) != live.end()) p.vertex_inputs_.push_back(input);
+  }
+  if (compute)
+    for (int d = 0; d < 3; ++d) p.local_size_[d] = std::max(1u, compute->reflection.local_size[d]);
 
   std::vector<VkDescriptorSetLayoutBinding> bindings;
   for (const ProgramBinding& b : layout.bindings) {
-    if (b.set != 0 || b.kind == DescriptorKind::storage_buffer || b.kind == DescriptorKind::storage_image ||
-        (mode == DescriptorMode::push && b.count != 1)) {
+    if (b.set != 0 || (mode == DescriptorMode::push && b.count != 1)) {
       sink.error("vk-descriptor-unsupported", {},
                  "resource '" + b.name + "' (set " + std::to_string(b.set) +
-                     ") is not a uniform block or texture/sampler in set 0 that this descriptor "
-                     "mode can bind");
+                     ") is not a resource in set 0 that this descriptor mode can bind");
       return std::nullopt;
     }
     VkDescriptorSetLayoutBinding vb{};
@@ -183,6 +199,14 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx, const std
         for (const UniformBlock& u : s->reflection.uniform_blocks)
           if (u.binding == b.binding && !block.reflection) block.size = u.size, block.reflection = &u;
       p.blocks_.push_back(block);
+    } else if (b.kind == DescriptorKind::storage_buffer) {
+      ProgramStorageBuffer buffer{b.name, b.binding, 0, false};
+      for (const CompiledShader* s : ordered)
+        for (const UniformBlock& u : s->reflection.storage_blocks)
+          if (u.binding == b.binding) buffer.size = std::max(buffer.size, u.size), buffer.written |= u.written;
+      p.storage_buffers_.push_back(buffer);
+    } else if (b.kind == DescriptorKind::uniform_texel_buffer || b.kind == DescriptorKind::storage_texel_buffer) {
+      p.texel_buffers_.push_back({b.name, b.kind, b.binding});
     } else {
       ProgramImage image{b.name, b.kind, ImageDim::dim_2d, b.binding, b.count};
       for (const CompiledShader* s : ordered)
@@ -215,6 +239,15 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx, const std
   if (!check(vkCreatePipelineLayout(ctx.device(), &layout_info, nullptr, &p.pipeline_layout_), sink,
              "vkCreatePipelineLayout"))
     return std::nullopt;
+  if (compute) {
+    VkComputePipelineCreateInfo info =
+        structure<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    info.stage = p.stage_infos_.front();
+    info.layout = p.pipeline_layout_;
+    if (!check(vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &info, nullptr, &p.compute_pipeline_), sink,
+               "vkCreateComputePipelines"))
+      return std::nullopt;
+  }
   return p;
 }
 

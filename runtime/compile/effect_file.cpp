@@ -1,6 +1,8 @@
 // EffectFile: front end -> model -> units -> lazily compiled programs -> parameter store.
 #include "fx/compile/effect_file.h"
 
+#include "fx/diagnostic_render.h"
+
 namespace fx {
 
 EffectUnitOptions effect_unit_options(const FrontEndOptions& options) {
@@ -11,13 +13,17 @@ EffectUnitOptions effect_unit_options(const FrontEndOptions& options) {
 }
 
 std::unique_ptr<EffectFile> EffectFile::load(const std::string& path, const FrontEndOptions& options,
-                                             DiagnosticSink& sink) {
+                                             DiagnosticSink& sink, std::string* located) {
   auto e = std::make_unique<EffectFile>();
   e->path = path;
+  auto failed = [&] {
+    if (located) *located = render_text(sink.diagnostics(), e->sources);
+    return nullptr;
+  };
   e->parsed = parse_effect_file(path, e->sources, sink, options);
-  if (sink.has_errors()) return nullptr;
+  if (sink.has_errors()) return failed();
   e->model = std::make_unique<EffectModel>(build_effect_model(e->parsed, e->sources, sink));
-  if (sink.has_errors()) return nullptr;
+  if (sink.has_errors()) return failed();
   e->units = std::make_unique<EffectUnits>(e->parsed.ast, e->sources, sink, effect_unit_options(options));
   e->compiler = std::make_unique<ShaderCompiler>();
   e->programs = std::make_unique<EffectPrograms>(*e->units, *e->compiler, e->sources);

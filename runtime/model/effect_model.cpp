@@ -104,10 +104,14 @@ class Builder {
     std::vector<Annotation> out;
     for (const ast::Annotation& a : list) {
       if (!a.value) continue;
-      Type t = model_.types.resolve(a.type, 0, a.array_dims, diags_, &const_scope_);
-      if (t.cls == TypeClass::error) continue;
       auto v = fold_constant(*a.value, const_scope_, diags_);
       if (!v) continue;
+      // `< float a[] = {1, 2}; >`: sized by its value, as a parameter by its initializer.
+      std::optional<uint32_t> scalars;
+      if (!a.array_dims.empty() && !a.array_dims[0] && v->is_numeric())
+        scalars = static_cast<uint32_t>(v->components.size());
+      Type t = model_.types.resolve(a.type, 0, a.array_dims, diags_, &const_scope_, scalars);
+      if (t.cls == TypeClass::error) continue;
       auto converted = convert_value(*v, t, a.value->range, diags_);
       if (!converted) continue;
       out.push_back({a.name, std::move(*converted), a.range, a.value->range});
@@ -119,7 +123,7 @@ class Builder {
     if (v.name.empty() || model_.parameter_index.count(v.name)) return;  // duplicates: the checker's report
     Parameter p;
     p.name = v.name;
-    p.type = model_.types.resolve(v.type, v.storage, v.array_dims, diags_, &const_scope_);
+    p.type = model_.types.resolve(v.type, v.storage, v.array_dims, diags_, &const_scope_, initializer_scalars(v));
     p.semantic = v.semantic;
     p.storage = v.storage;
     p.constant_buffer = cbuffer;
@@ -129,13 +133,24 @@ class Builder {
     p.decl = &v;
     p.annotations = annotations(v.annotations);
     const TypeClass cls = p.type.cls;
-    p.shader_visible = !(v.storage & ast::kStatic) && (p.type.is_numeric() || cls == TypeClass::structure ||
-                                                       cls == TypeClass::texture || cls == TypeClass::sampler);
+    p.shader_visible = !(v.storage & ast::kStatic) &&
+                       (p.type.is_numeric() || cls == TypeClass::structure || cls == TypeClass::texture ||
+                        cls == TypeClass::sampler || cls == TypeClass::view);
     const uint32_t index = static_cast<uint32_t>(model_.parameters.size());
     if (v.initializer) initialize(p, *v.initializer, index);
     model_.parameter_index.emplace(p.name, index);
     model_.parameters.push_back(std::move(p));
     if (cls == TypeClass::texture) add_texture(index);
+  }
+
+  // The scalars of an unsized array's initializer (`float2 Offsets[] = { ... };`), which
+  // size the array; folding errors are reported when the default is folded.
+  std::optional<uint32_t> initializer_scalars(const ast::Variable& v) {
+    if (!v.initializer || v.array_dims.empty() || v.array_dims[0]) return std::nullopt;
+    DiagnosticSink quiet;
+    std::optional<Value> folded = fold_constant(*v.initializer, const_scope_, quiet, false);
+    if (!folded || !folded->is_numeric()) return std::nullopt;
+    return static_cast<uint32_t>(folded->components.size());
   }
 
   void initialize(Parameter& p, const ast::Expr& init, uint32_t index) {
@@ -151,6 +166,7 @@ class Builder {
         return;
       case TypeClass::shader: ctx_.shader_variables[p.name] = &init; return;
       case TypeClass::texture:
+      case TypeClass::view:
       case TypeClass::state_object:
       case TypeClass::error:
       case TypeClass::void_type: return;

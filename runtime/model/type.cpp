@@ -105,6 +105,27 @@ std::optional<Type> object_name(std::string_view name, std::string_view template
       t.sampler = shape;
       return t;
     }
+  static const std::pair<const char*, ViewKind> views[] = {
+      {"structuredbuffer", ViewKind::structured_buffer},
+      {"rwstructuredbuffer", ViewKind::rw_structured_buffer},
+      {"appendstructuredbuffer", ViewKind::append_structured_buffer},
+      {"consumestructuredbuffer", ViewKind::consume_structured_buffer},
+      {"byteaddressbuffer", ViewKind::byte_address_buffer},
+      {"rwbyteaddressbuffer", ViewKind::rw_byte_address_buffer},
+      {"rwbuffer", ViewKind::rw_buffer},
+      {"rwtexture1d", ViewKind::rw_texture1d},
+      {"rwtexture1darray", ViewKind::rw_texture1d_array},
+      {"rwtexture2d", ViewKind::rw_texture2d},
+      {"rwtexture2darray", ViewKind::rw_texture2d_array},
+      {"rwtexture3d", ViewKind::rw_texture3d}};
+  for (auto& [spelling, kind] : views)
+    if (n == spelling) {
+      Type t;
+      t.cls = TypeClass::view;
+      t.view = kind;
+      t.element = std::string(template_arg);
+      return t;
+    }
   if (std::optional<PassStage> stage = shader_type_stage(n))
     return object_type(TypeClass::shader, std::string(shader_type_name(*stage)));
   static const char* objects[] = {"BlendState", "DepthStencilState", "RasterizerState"};
@@ -165,6 +186,11 @@ std::vector<std::string_view> known_names(const TypeTable& table) {
                                    "samplerCUBE",
                                    "SamplerState",
                                    "SamplerComparisonState",
+                                   "StructuredBuffer",
+                                   "RWStructuredBuffer",
+                                   "ByteAddressBuffer",
+                                   "RWByteAddressBuffer",
+                                   "RWTexture2D",
                                    "VertexShader",
                                    "PixelShader",
                                    "BlendState",
@@ -232,6 +258,23 @@ std::string Type::to_string() const {
     }
     case TypeClass::shader:
     case TypeClass::state_object: s = object_kind; break;
+    case TypeClass::view: {
+      static const char* names[] = {"StructuredBuffer",
+                                    "RWStructuredBuffer",
+                                    "AppendStructuredBuffer",
+                                    "ConsumeStructuredBuffer",
+                                    "ByteAddressBuffer",
+                                    "RWByteAddressBuffer",
+                                    "RWBuffer",
+                                    "RWTexture1D",
+                                    "RWTexture1DArray",
+                                    "RWTexture2D",
+                                    "RWTexture2DArray",
+                                    "RWTexture3D"};
+      s = names[static_cast<int>(view)];
+      if (!element.empty()) s += "<" + element + ">";
+      break;
+    }
   }
   for (uint32_t d : array_dims) s.append("[").append(std::to_string(d)).append("]");
   return s;
@@ -254,6 +297,7 @@ bool Type::same_as(const Type& o) const {
       return true;
     case TypeClass::texture: return texture == o.texture;
     case TypeClass::sampler: return sampler == o.sampler;
+    case TypeClass::view: return view == o.view && element == o.element;
     case TypeClass::shader:
     case TypeClass::state_object: return object_kind == o.object_kind;
     default: return true;
@@ -319,7 +363,8 @@ Type TypeTable::lookup(std::string_view name) const {
 }
 
 Type TypeTable::resolve(const ast::TypeRef& ref, uint32_t storage, const ast::List<ast::ExprPtr>& dims,
-                        DiagnosticSink& diags, const ConstantScope* scope) const {
+                        DiagnosticSink& diags, const ConstantScope* scope,
+                        std::optional<uint32_t> initializer_scalars) const {
   Type t;
   std::string_view name = ref.name;
   if (name == "struct" || name == "const") name = ref.template_arg;  // defensive: never produced today
@@ -367,9 +412,17 @@ Type TypeTable::resolve(const ast::TypeRef& ref, uint32_t storage, const ast::Li
     if (storage & ast::kColumnMajor) t.order = MatrixPacking::column_major;
   }
   std::vector<uint32_t> extra;
+  bool unsized = false;  // the outermost dimension is the initializer's element count
   for (const ast::ExprPtr& dim : dims) {
+    if (!dim && extra.empty() && initializer_scalars) {
+      unsized = true;
+      extra.push_back(1);
+      continue;
+    }
     if (!dim) {
-      diags.error("bad-array-size", ref.range, "array dimension must be given for an effect parameter");
+      diags.error("bad-array-size", ref.range,
+                  extra.empty() ? "array dimension must be given for an effect parameter without an initializer"
+                                : "only the outermost array dimension may be left unsized");
       return {};
     }
     ConstantScope empty;
@@ -385,6 +438,17 @@ Type TypeTable::resolve(const ast::TypeRef& ref, uint32_t storage, const ast::Li
   // Declarator dimensions come first: `typedef float4 T[2]; T a[3];` is float4[3][2].
   extra.insert(extra.end(), t.array_dims.begin(), t.array_dims.end());
   t.array_dims = std::move(extra);
+  if (unsized) {
+    const uint32_t element = t.component_count();  // the outermost dimension is 1 yet
+    if (element == 0 || *initializer_scalars == 0 || *initializer_scalars % element != 0) {
+      diags.error("bad-array-size", ref.range,
+                  "the initializer's " + std::to_string(*initializer_scalars) +
+                      " values do not fill whole elements of " + t.element_type().to_string() + " (" +
+                      std::to_string(element) + " each)");
+      return {};
+    }
+    t.array_dims[0] = *initializer_scalars / element;
+  }
   if (t.component_count() > (1u << 22)) {
     diags.error("bad-array-size", ref.range,
                 "parameter too large (" + std::to_string(t.component_count()) + " components)");

@@ -32,6 +32,10 @@ std::optional<FrameResources> FrameResources::create(const Context& ctx, const F
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, desc.descriptors_per_type},
       {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, desc.descriptors_per_type},
       {VK_DESCRIPTOR_TYPE_SAMPLER, desc.descriptors_per_type},
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, desc.descriptors_per_type},
+      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, desc.descriptors_per_type},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, desc.descriptors_per_type},
+      {VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, desc.descriptors_per_type},
   };
   for (uint32_t i = 0; i < f.frames_in_flight_; ++i) {
     auto info = structure<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);

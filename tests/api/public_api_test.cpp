@@ -818,5 +818,64 @@ technique one { pass p0 { CullMode = None; VertexShader = compile vs_2_0 VS(); P
   EXPECT_EQ(ctx().validation_error_count(), 0u) << describe_messages(ctx());
 }
 
+// FX11's "simulate, then draw" through the public API: the application's buffer is bound to
+// the compute pass's RWStructuredBuffer and to the draw's StructuredBuffer (one buffer, two
+// views, as an engine binds a UAV and an SRV of it); the compute pass is dispatched before
+// the rendering and the draw reads what it wrote (the barrier is dispatch()'s).
+TEST_F(PublicApiTest, DispatchWritesTheApplicationsBufferThatALaterDrawReads) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  fxkit::Effect effect = r.device->load(write_effect("api_compute.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+RWStructuredBuffer<float4> Written;
+StructuredBuffer<float4> Read;
+[numthreads(4, 1, 1)] void Simulate(uint3 id : SV_DispatchThreadID) { Written[id.x] = float4(0.25 * id.x, 0.5, 1, 1); }
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target { return Read[3]; }
+technique11 T {
+  pass Simulate { SetComputeShader(CompileShader(cs_5_0, Simulate())); }
+  pass Draw { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); }
+}
+)"));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  fx::DiagnosticSink sink;
+  auto buffer = fx::vk::Buffer::create(
+      ctx(), {64, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, fx::vk::MemoryUsage::readback, "test particles"}, sink);
+  ASSERT_TRUE(buffer);
+  EXPECT_TRUE(effect.set_buffer("Written", buffer->handle(), 0, 64));
+  EXPECT_TRUE(effect.set_buffer("Read", buffer->handle()));
+  EXPECT_FALSE(effect.set_buffer("Missing", buffer->handle())) << "no pass uses it";
+  fxkit::Technique technique = effect.technique("T");
+  ASSERT_TRUE(technique.valid()) << technique.reason();
+  EXPECT_TRUE(technique.compute_pass(0));
+  EXPECT_FALSE(technique.compute_pass(1));
+
+  r.device->begin_frame();
+  bool dispatched = false, refused = false, drawn = false;
+  ASSERT_TRUE(r.device->submit([&](VkCommandBuffer cmd) {
+    dispatched = technique.dispatch(cmd, 0, 1);
+    r.image->begin(cmd);
+    if (technique.begin(cmd, r.image->viewport(), r.image->scissor())) {
+      refused = !technique.apply(0);
+      if (technique.apply(1)) r.mesh->draw(cmd), drawn = true;
+    }
+    technique.end();
+    r.image->end(cmd);
+  }));
+  EXPECT_TRUE(dispatched) << text(effect.messages());
+  EXPECT_TRUE(refused) << "a compute pass is dispatched, not applied";
+  EXPECT_TRUE(drawn) << text(effect.messages());
+  float written[16] = {};
+  ASSERT_TRUE(buffer->read(written, sizeof written));
+  EXPECT_FLOAT_EQ(written[4 * 2], 0.5f);
+  EXPECT_FLOAT_EQ(written[4 * 3 + 1], 0.5f);
+  const auto rgba = r.image->read_rgba8();
+  const size_t c = (size_t(r.image->height() / 2) * r.image->width() + r.image->width() / 2) * 4;
+  EXPECT_NEAR(rgba.at(c), 191, 1);  // Read[3] = (0.75, 0.5, 1)
+  EXPECT_NEAR(rgba.at(c + 1), 128, 1);
+  EXPECT_EQ(rgba.at(c + 2), 255);
+}
+
 }  // namespace
 }  // namespace fx::vk::testing

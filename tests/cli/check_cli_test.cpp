@@ -59,6 +59,34 @@ TEST(CheckCli, ErrorsExitOneWithFileLineColumnAndCaret) {
       << r.err;
 }
 
+// What select and render refuse, check refuses, located alike: the effect model's errors
+// (an unknown type, an unsized array its initializer does not fill) were clean in check and
+// reached render without a location.
+TEST(CheckCli, CheckSelectAndRenderRefuseModelErrorsAtTheSameLocation) {
+  const std::string tail =
+      "float4 VS(float4 p : POSITION) : SV_Position { return p; }\n"
+      "float4 PS() : SV_Target { return 1; }\n"
+      "technique11 T { pass P { SetVertexShader(CompileShader(vs_5_0, VS())); "
+      "SetPixelShader(CompileShader(ps_5_0, PS())); } }\n";
+  const struct {
+    const char* name;
+    std::string text, error;
+  } cases[] = {
+      {"unknown_view.fx", "float4 Tint;\nRWTexture4D<float4> Canvas;\n" + tail,
+       ":2:1: error: unknown type 'RWTexture4D'; did you mean 'RWTexture2D'? [unknown-type]"},
+      {"unfilled_array.fx", "float2 Offsets[] = { 1, 2, 3 };\n" + tail,
+       ":1:1: error: the initializer's 3 values do not fill whole elements of float2 (2 each) [bad-array-size]"},
+  };
+  for (const auto& c : cases) {
+    const std::string path = write_temp(c.name, c.text);
+    for (const std::string command : {"check ", "select --caps modern ", "render --out /dev/null "}) {
+      auto r = run_fxkit(command + path, true);
+      EXPECT_EQ(r.status, 1) << command << path;
+      EXPECT_NE(r.err.find(path + c.error), std::string::npos) << command << path << "\n" << r.err;
+    }
+  }
+}
+
 #ifdef FXKIT_COMPILE_WORKER_BINARY
 // A glslang crash, forced by a worker that aborts on a marker in the unit (through a
 // wrapper named by FXKIT_COMPILE_WORKER, as a user points fxkit at another worker), is a

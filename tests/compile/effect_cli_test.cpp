@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -158,6 +159,47 @@ TEST(FxkitInfo, JsonMatchesTheSchemaAndReflectsTheEffect) {
   EXPECT_TRUE(pass["ok"].get<bool>());
   EXPECT_EQ(pass["vertex_inputs"].size(), 3u);
   EXPECT_TRUE(doc["techniques"][1]["passes"][0]["ok"].get<bool>());  // fixed-function pixel, generated
+}
+
+// D3D11 buffers and unordered-access views are listed with their element layout: each
+// stage's storage blocks (an AppendStructuredBuffer's counter a block of its own) and its
+// storage images, as the linked bindings' kinds say.
+TEST(FxkitInfo, ListsStorageBuffersWithTheirElementLayoutAndStorageImages) {
+  const std::string file =
+      (fs::path(::testing::TempDir()) / ("info_storage_" + std::to_string(::getpid()) + ".fx")).string();
+  std::ofstream(file) << R"(struct Particle { float3 pos; float size; };
+StructuredBuffer<Particle> Particles;
+AppendStructuredBuffer<Particle> Born;
+RWTexture2D<float4> Canvas;
+[numthreads(8, 8, 1)] void CS(uint3 id : SV_DispatchThreadID) {
+  Particle p = Particles[id.x];
+  Born.Append(p);
+  Canvas[id.xy] = float4(p.pos, p.size);
+}
+technique11 T { pass P { SetComputeShader(CompileShader(cs_5_0, CS())); } }
+)";
+  CliRun r = run("info --json " + file);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  json doc = json::parse(r.out);
+  SchemaValidator v(load_schema());
+  for (const std::string& e : v.validate(doc)) ADD_FAILURE() << e;
+  const json& pass = doc["techniques"][0]["passes"][0];
+  ASSERT_EQ(pass["shaders"].size(), 1u);
+  const json& cs = pass["shaders"][0];
+  EXPECT_EQ(cs["stage"], "compute");
+  std::map<std::string, json> blocks;
+  for (const json& b : cs["storage_blocks"]) blocks[b["name"]] = b;
+  ASSERT_TRUE(blocks.count("Particles")) << cs.dump(1);
+  ASSERT_TRUE(blocks.count("Born@count")) << cs.dump(1);
+  std::map<std::string, uint32_t> offsets;
+  for (const json& m : blocks["Particles"]["members"]) offsets[m["name"]] = m["offset"];
+  EXPECT_EQ(offsets.size(), 2u) << blocks["Particles"].dump(1);
+  std::map<std::string, std::string> kinds;
+  for (const json& b : pass["bindings"]) kinds[b["name"]] = b["kind"];
+  EXPECT_EQ(kinds["Particles"], "storage_buffer");
+  EXPECT_EQ(kinds["Born"], "storage_buffer");
+  EXPECT_EQ(kinds["Canvas"], "storage_image");
+  fs::remove(file);
 }
 
 // `info --json` and `check --json` describe the same declarations alike: locations under one

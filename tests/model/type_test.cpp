@@ -109,6 +109,66 @@ TEST(ModelType, ResourcesShadersStateObjects) {
   EXPECT_EQ(b->model.state_objects[0].block, StateBlock::blend_state);
 }
 
+// D3D11 buffers and unordered-access views are resource parameters (shader visible, no
+// texture to load), each with its element type, not unknown types.
+TEST(ModelType, BuffersAndUnorderedAccessViews) {
+  auto b = test::build(R"(
+    struct Particle { float3 pos; float size; };
+    StructuredBuffer<Particle> sb; RWStructuredBuffer<float4> rwsb; AppendStructuredBuffer<Particle> asb;
+    ConsumeStructuredBuffer<Particle> csb; ByteAddressBuffer bab; RWByteAddressBuffer rwbab; RWBuffer<float> rwb;
+    RWTexture1D<float> rw1; RWTexture2D<float4> rw2; RWTexture2DArray<uint> rw2a; RWTexture3D<int> rw3;
+  )");
+  ASSERT_FALSE(b->diags.has_errors()) << b->text();
+  EXPECT_EQ(test::param(*b, "sb").type.view, ViewKind::structured_buffer);
+  EXPECT_EQ(test::param(*b, "sb").type.element, "Particle");
+  EXPECT_EQ(test::param(*b, "rwsb").type.to_string(), "RWStructuredBuffer<float4>");
+  EXPECT_EQ(test::param(*b, "asb").type.view, ViewKind::append_structured_buffer);
+  EXPECT_EQ(test::param(*b, "csb").type.view, ViewKind::consume_structured_buffer);
+  EXPECT_EQ(test::param(*b, "bab").type.to_string(), "ByteAddressBuffer");
+  EXPECT_EQ(test::param(*b, "rwbab").type.view, ViewKind::rw_byte_address_buffer);
+  EXPECT_EQ(test::param(*b, "rwb").type.view, ViewKind::rw_buffer);
+  EXPECT_EQ(test::param(*b, "rw1").type.view, ViewKind::rw_texture1d);
+  EXPECT_EQ(test::param(*b, "rw2").type.to_string(), "RWTexture2D<float4>");
+  EXPECT_EQ(test::param(*b, "rw2a").type.view, ViewKind::rw_texture2d_array);
+  EXPECT_EQ(test::param(*b, "rw3").type.view, ViewKind::rw_texture3d);
+  EXPECT_EQ(test::param(*b, "rw2").type.cls, TypeClass::view);
+  EXPECT_TRUE(test::param(*b, "rw2").shader_visible);
+  EXPECT_TRUE(b->model.textures.empty());
+}
+
+// `float2 Offsets[] = { ... };` is sized by its initializer, in elements of the element
+// type; values that do not fill whole elements, or no initializer, are bad-array-size.
+TEST(ModelType, UnsizedArraysTakeTheirInitializersSize) {
+  auto b = test::build("float2 Offsets[] = { float2(1, 2), float2(3, 4), float2(5, 6) }; float Flat[] = { 1, 2 };");
+  ASSERT_FALSE(b->diags.has_errors()) << b->text();
+  EXPECT_EQ(test::param(*b, "Offsets").type.to_string(), "float2[3]");
+  EXPECT_EQ(test::param(*b, "Flat").type.to_string(), "float[2]");
+  ASSERT_TRUE(test::param(*b, "Offsets").default_value);
+  EXPECT_EQ(test::param(*b, "Offsets").default_value->number(5), 6.0);
+  EXPECT_TRUE(test::build("float2 Odd[] = { 1, 2, 3 };")->has("bad-array-size"));
+  EXPECT_TRUE(test::build("float2 None[];")->has("bad-array-size"));
+  auto annotated = test::build("float x < float Weights[] = {1, 2, 3}; >;");
+  ASSERT_FALSE(annotated->diags.has_errors()) << annotated->text();
+  EXPECT_EQ(test::param(*annotated, "x").annotations.at(0).value.components.size(), 3u);
+}
+
+// Annotation type names in any case, as D3DX reads them (`String UIName`), on parameters,
+// textures, techniques and passes.
+TEST(ModelType, AnnotationTypeNamesInAnyCase) {
+  auto b = test::build(R"(
+    float4 Tint < String UIName = "Tint"; STRING UIWidget = "Color"; FLOAT UIMax = 2; > = 1;
+    texture2D Tex < String ResourceName = "x.png"; >;
+  )");
+  ASSERT_FALSE(b->diags.has_errors()) << b->text();
+  const Parameter& tint = test::param(*b, "Tint");
+  ASSERT_EQ(tint.annotations.size(), 3u);
+  EXPECT_EQ(tint.annotations[0].value.text, "Tint");
+  EXPECT_EQ(tint.annotations[1].value.text, "Color");
+  EXPECT_EQ(tint.annotations[2].value.number(), 2.0);
+  ASSERT_EQ(b->model.textures.size(), 1u);
+  EXPECT_EQ(b->model.textures[0].resource_name, "x.png");
+}
+
 TEST(ModelType, PreReleaseNames) {
   auto b = test::build("vec3 c = vec3(0.3f, 0.12f, 0.03f); vec4 p; vec2 uv;");
   ASSERT_FALSE(b->diags.has_errors()) << b->text();

@@ -177,6 +177,106 @@ technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelS
   EXPECT_NEAR(centre[1], 128, 1);
 }
 
+// The same lookup through a helper function: glslang types the texture parameter, not the
+// global, as a depth image, so the global was reflected as a colour texture, given a colour
+// stand-in, and the comparison was a validation error (VUID-vkCmdDrawIndexed-None-06479).
+TEST_F(EffectRenderTest, ComparisonSamplerHandedToAHelperFunctionComparesAgainstDepth) {
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_comparison_helper", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+Texture2D ShadowMap;
+SamplerComparisonState ShadowSampler { ComparisonFunc = LESS; Filter = COMPARISON_MIN_MAG_MIP_LINEAR; };
+float Shadow(SamplerComparisonState s, Texture2D t, float2 uv, float depth) { return t.SampleCmpLevelZero(s, uv, depth); }
+struct V { float4 p : SV_Position; float2 uv : TEXCOORD0; };
+V VS(float4 p : POSITION, float2 uv : TEXCOORD0) { V o; o.p = mul(p, WorldViewProjection); o.uv = uv; return o; }
+float4 PS(V i) : SV_Target {
+  float lit = Shadow(ShadowSampler, ShadowMap, i.uv, 0.5);
+  return float4(lit, lit * 0.5, 0, 1);
+}
+technique11 T { pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)");
+  EXPECT_EQ(centre[0], 255);  // 0.5 < 1.0: lit
+  EXPECT_NEAR(centre[1], 128, 1);
+}
+
+// `float2 Offsets[] = { ... };` takes its size from its initializer, as fxc sizes it (it
+// was bad-array-size at render while check called it clean), and its values reach the shader.
+TEST_F(EffectRenderTest, UnsizedArrayParameterIsSizedByItsInitializer) {
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_unsized_array", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float2 Offsets[] = { float2(0.2, 0.4), float2(0.0, 0.0), float2(0.6, 0.8) };
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target { return float4(Offsets[0].x, Offsets[2].y, Offsets[1].x, 1); }
+technique11 T { pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)");
+  EXPECT_NEAR(centre[0], 51, 1);   // 0.2
+  EXPECT_NEAR(centre[1], 204, 1);  // 0.8
+  EXPECT_EQ(centre[2], 0);
+}
+
+// "Simulate, then draw": a compute pass writes a structured buffer (a zeroed stand-in) and
+// the draw after it reads what it wrote, ordered by the barrier dispatch() records. Without
+// the compute pass the buffer holds zeros and the sphere is black.
+TEST_F(EffectRenderTest, ComputePassWritesAStructuredBufferALaterDrawReads) {
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_compute_buffer", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+RWStructuredBuffer<float4> Colors;
+[numthreads(4, 1, 1)] void Simulate(uint3 id : SV_DispatchThreadID) {
+  Colors[id.x] = float4(0.25 * id.x, 1, 0.5, 1);
+}
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target { return Colors[2]; }
+technique11 T {
+  pass Simulate < int3 Dispatch = {1, 1, 1}; > { SetComputeShader(CompileShader(cs_5_0, Simulate())); }
+  pass Draw { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); }
+}
+)");
+  EXPECT_NEAR(centre[0], 128, 1);  // element 2 of the 4 the dispatch wrote
+  EXPECT_EQ(centre[1], 255);
+  EXPECT_NEAR(centre[2], 128, 1);
+}
+
+// A compute pass writes an RWTexture2D (a stand-in the size of the target, one thread per
+// pixel by default) that the pixel shader then reads at its own pixel.
+TEST_F(EffectRenderTest, ComputePassWritesAStorageImageThePixelShaderReads) {
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_compute_image", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+RWTexture2D<float4> Canvas;
+[numthreads(8, 8, 1)] void Paint(uint3 id : SV_DispatchThreadID) {
+  Canvas[id.xy] = float4(id.x / 32.0, 0.75, id.y / 32.0, 1);
+}
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS(float4 pos : SV_Position) : SV_Target { return Canvas[uint2(pos.xy)]; }
+technique11 T {
+  pass Paint { SetComputeShader(CompileShader(cs_5_0, Paint())); }
+  pass Draw { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); }
+}
+)");
+  EXPECT_NEAR(centre[0], 128, 1);  // x = 16 of 32
+  EXPECT_NEAR(centre[1], 191, 1);
+  EXPECT_NEAR(centre[2], 128, 1);
+}
+
+// Texel buffers: an RWBuffer<float4> (a storage texel buffer, a zeroed stand-in in
+// R32G32B32A32_SFLOAT) written by a compute pass and read by the pixel shader, beside a
+// Buffer<float4> (a uniform texel buffer) that holds zeros.
+TEST_F(EffectRenderTest, ComputePassWritesATexelBufferThePixelShaderReads) {
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_compute_texel", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+RWBuffer<float4> Written;
+Buffer<float4> Zeros;
+[numthreads(4, 1, 1)] void Fill(uint3 id : SV_DispatchThreadID) { Written[id.x] = float4(0.25 * id.x, 0.5, 1, 1); }
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target { return Written[1] + Zeros[0]; }
+technique11 T {
+  pass Fill < int3 Dispatch = {1, 1, 1}; > { SetComputeShader(CompileShader(cs_5_0, Fill())); }
+  pass Draw { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); }
+}
+)");
+  EXPECT_NEAR(centre[0], 64, 1);  // Written[1] = (0.25, 0.5, 1)
+  EXPECT_NEAR(centre[1], 128, 1);
+  EXPECT_EQ(centre[2], 255);
+}
+
 // A multisampled texture read with Load(coord, sample): the stand-in is a multisampled image
 // (a single-sample one is a validation error), every sample cleared white.
 TEST_F(EffectRenderTest, MultisampledTextureLoadsReadAMultisampledStandIn) {

@@ -101,6 +101,18 @@ EffectCheck check_effect(const std::string& file, const EffectCheckSettings& set
   out.effect["includes"] = parsed.files;
   fx::ShownOnce shown;
 #ifdef FXKIT_HAS_RUNTIME
+  // What select and render refuse, check refuses: the effect model's errors (types,
+  // array sizes, defaults) beside the front end's. Its warnings repeat the front end's.
+  if (!diags.has_errors()) {
+    fx::DiagnosticSink model_diags;
+    fx::build_effect_model(parsed, sm, model_diags);
+    for (const fx::Diagnostic& d : model_diags.diagnostics())
+      if (d.severity >= fx::Severity::error) {
+        fx::Diagnostic& copy = diags.report(d.severity, d.id, d.range, d.message);
+        copy.notes = d.notes;
+        copy.fixits = d.fixits;
+      }
+  }
   // The shaders of an effect whose front end failed would only repeat its errors.
   if (settings.compile && settings.compiler && !diags.has_errors()) compile_shaders(parsed, settings, sm, diags, shown);
   else shown.add(diags.diagnostics(), "");

@@ -113,6 +113,8 @@ const char* kind_name(fx::DescriptorKind k) {
     case fx::DescriptorKind::sampled_image: return "sampled_image";
     case fx::DescriptorKind::sampler: return "sampler";
     case fx::DescriptorKind::storage_image: return "storage_image";
+    case fx::DescriptorKind::uniform_texel_buffer: return "uniform_texel_buffer";
+    case fx::DescriptorKind::storage_texel_buffer: return "storage_texel_buffer";
   }
   return "unknown";
 }
@@ -130,6 +132,7 @@ json shader_json(const fx::StageProgram& s, const fx::StageUnit* stage, const fx
           {"inputs", interface(s.shader.reflection.inputs)},
           {"outputs", interface(s.shader.reflection.outputs)},
           {"uniform_blocks", blocks(s.shader.reflection.uniform_blocks)},
+          {"storage_blocks", blocks(s.shader.reflection.storage_blocks)},
           {"push_constants", blocks(s.shader.reflection.push_constants)},
           {"images", images},
           {"diagnostics", fx::render_json(s.diagnostics, sm)}};

@@ -80,9 +80,10 @@ int run_render(const RenderArgs& args) {
     return kUsageError;
   }
   fx::DiagnosticSink diags;
-  auto effect = fx::EffectFile::load(args.file, options, diags);
+  std::string located;
+  auto effect = fx::EffectFile::load(args.file, options, diags, &located);
   if (!effect) {
-    std::fputs(fx::render_text(diags.diagnostics(), fx::SourceManager{}).c_str(), stderr);
+    std::fputs(located.c_str(), stderr);
     return kInputErrors;
   }
   auto report = [&](const fx::DiagnosticSink& sink) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <set>
 
 #include <glslang/Include/Types.h>
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -173,13 +174,31 @@ ShaderReflection reflect_program(const glslang::TProgram& program, EShLanguage s
     if (t->isArray() && t->isSizedArray()) img.array_size = static_cast<uint32_t>(t->getOuterArraySize());
     r.images.push_back(std::move(img));
   }
-  for (int i = 0; i < p.getNumBufferBlocks(); ++i) r.storage_blocks.push_back(make_block(p.getBufferBlock(i)));
+  // Comparison through a helper function's parameters: the code compares, the type does not say so.
+  const std::set<spirv::SetBinding> compared = spirv::depth_compared_bindings(spirv);
+  for (ImageBinding& img : r.images)
+    if (compared.count({img.set, img.binding})) img.shadow = true;
+  for (int i = 0; i < p.getNumBufferBlocks(); ++i) {
+    UniformBlock block = make_block(p.getBufferBlock(i));
+    const glslang::TType* t = p.getBufferBlock(i).getType();
+    block.written = t && !t->getQualifier().readonly;
+    r.storage_blocks.push_back(std::move(block));
+  }
   for (int i = 0; i < p.getNumBufferVariables(); ++i) {
     const glslang::TObjectReflection& u = p.getBufferVariable(i);
     if (u.index < 0 || u.index >= p.getNumBufferBlocks()) continue;
     const glslang::TObjectReflection& b = p.getBufferBlock(u.index);
     for (UniformBlock& block : r.storage_blocks)
       if (block.name == b.name) block.members.push_back(make_member(u, block, b.getType()));
+  }
+  // glslang lists each member of a runtime array's element twice ("Particles.@data[0].pos"
+  // and "Particles.@data.pos"): the element's layout is the indexed spelling's.
+  for (UniformBlock& block : r.storage_blocks) {
+    std::set<std::string> twice;
+    for (const BlockMember& m : block.members)
+      if (size_t at = m.name.find("[0]"); at != std::string::npos)
+        twice.insert(m.name.substr(0, at) + m.name.substr(at + 3));
+    std::erase_if(block.members, [&](const BlockMember& m) { return twice.count(m.name) > 0; });
   }
   for (auto* list : {&r.uniform_blocks, &r.storage_blocks, &r.push_constants})
     for (UniformBlock& block : *list)

@@ -34,7 +34,10 @@ std::string member_layout(const UniformBlock& b) {
   return out;
 }
 
-DescriptorKind descriptor_kind(ImageBinding::Kind k) {
+DescriptorKind descriptor_kind(ImageBinding::Kind k, ImageDim dim) {
+  if (dim == ImageDim::buffer)
+    return k == ImageBinding::Kind::storage_image ? DescriptorKind::storage_texel_buffer
+                                                  : DescriptorKind::uniform_texel_buffer;
   switch (k) {
     case ImageBinding::Kind::combined_image_sampler: return DescriptorKind::combined_image_sampler;
     case ImageBinding::Kind::sampled_image: return DescriptorKind::sampled_image;
@@ -51,7 +54,7 @@ std::vector<StageResource> resources_of(const ShaderReflection& r) {
   for (const UniformBlock& b : r.storage_blocks)
     out.push_back({b.name, DescriptorKind::storage_buffer, b.set, b.binding, 1, b.size, member_layout(b)});
   for (const ImageBinding& i : r.images)
-    out.push_back({i.name, descriptor_kind(i.kind), i.set, i.binding, std::max(1u, i.array_size), 0, {}});
+    out.push_back({i.name, descriptor_kind(i.kind, i.dim), i.set, i.binding, std::max(1u, i.array_size), 0, {}});
   // Declaration order as glslang numbered them.
   std::stable_sort(out.begin(), out.end(), [](const StageResource& a, const StageResource& b) {
     return std::pair(a.set, a.binding) < std::pair(b.set, b.binding);

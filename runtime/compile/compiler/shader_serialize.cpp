@@ -36,7 +36,8 @@ json block_json(const UniformBlock& b) {
                        {"array_stride", m.array_stride},
                        {"matrix_stride", m.matrix_stride},
                        {"matrix_layout", static_cast<int>(m.matrix_layout)}});
-  return {{"name", b.name}, {"set", b.set}, {"binding", b.binding}, {"size", b.size}, {"members", members}};
+  return {{"name", b.name}, {"set", b.set},       {"binding", b.binding},
+          {"size", b.size}, {"members", members}, {"written", b.written}};
 }
 UniformBlock block_from(const json& j) {
   UniformBlock b;
@@ -44,6 +45,7 @@ UniformBlock block_from(const json& j) {
   b.set = j.at("set").get<uint32_t>();
   b.binding = j.at("binding").get<uint32_t>();
   b.size = j.at("size").get<uint32_t>();
+  b.written = j.at("written").get<bool>();
   for (const json& m : j.at("members"))
     b.members.push_back({m.at("name").get<std::string>(), type_from(m.at("type")), m.at("offset").get<uint32_t>(),
                          m.at("size").get<uint32_t>(), m.at("array_stride").get<uint32_t>(),

@@ -414,4 +414,50 @@ bool pad_output(std::vector<uint32_t>& w, uint32_t location, uint32_t first, uin
   return true;
 }
 
+std::set<SetBinding> depth_compared_bindings(const std::vector<uint32_t>& w) {
+  constexpr uint32_t kOpLoad = 61, kOpAccessChain = 65, kOpInBoundsAccessChain = 66, kOpCopyObject = 83,
+                     kOpSampledImage = 86;
+  // Result id -> the ids it was made from, back to the variables.
+  std::map<uint32_t, std::vector<uint32_t>> sources;
+  std::vector<uint32_t> compared;  // the sampled images of depth-comparing instructions
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t count) {
+    switch (op) {
+      case kOpLoad:
+      case kOpAccessChain:
+      case kOpInBoundsAccessChain:
+      case kOpCopyObject:
+        if (count >= 4) sources[w[i + 2]].push_back(w[i + 3]);
+        break;
+      case kOpSampledImage:
+        if (count >= 5) sources[w[i + 2]] = {w[i + 3], w[i + 4]};
+        break;
+      case 89:
+      case 90:
+      case 91:
+      case 92:
+      case 97:  // OpImage(Proj)SampleDref*, OpImageDrefGather
+      case 305:
+      case 306:
+      case 309:
+      case 310:
+      case 315:  // their sparse forms
+        if (count >= 4) compared.push_back(w[i + 3]);
+        break;
+      default: break;
+    }
+  });
+  const std::map<uint32_t, SetBinding> bindings = variable_bindings(w);
+  std::set<SetBinding> out;
+  std::set<uint32_t> seen;
+  while (!compared.empty()) {
+    const uint32_t id = compared.back();
+    compared.pop_back();
+    if (!seen.insert(id).second) continue;
+    if (auto b = bindings.find(id); b != bindings.end()) out.insert(b->second);
+    if (auto s = sources.find(id); s != sources.end())
+      compared.insert(compared.end(), s->second.begin(), s->second.end());
+  }
+  return out;
+}
+
 }  // namespace fx::spirv

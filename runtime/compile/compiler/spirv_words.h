@@ -85,4 +85,11 @@ size_t remap_bindings(std::vector<uint32_t>& words, const std::map<SetBinding, S
 // (set, binding) of every decorated variable, by result id.
 std::map<uint32_t, SetBinding> variable_bindings(const std::vector<uint32_t>& words);
 
+// (set, binding) of every image and sampler variable a depth-comparing sample or gather
+// (OpImage*Dref*) reads. glslang's HLSL front end gives a texture a depth-image type only
+// when SampleCmp names its comparison sampler directly: a texture handed to a helper
+// function (`float Shadow(SamplerComparisonState s, Texture2D t, ...)`) keeps a colour type
+// in reflection while the code compares against it.
+std::set<SetBinding> depth_compared_bindings(const std::vector<uint32_t>& words);
+
 }  // namespace fx::spirv

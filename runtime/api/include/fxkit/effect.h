@@ -75,7 +75,9 @@ struct Annotation {
 };
 
 // What a parameter holds.
-enum class ParamKind : uint8_t { numeric, structure, string, texture, sampler, other };
+// `view`: a D3D11 buffer or storage image (StructuredBuffer, ByteAddressBuffer, RWTexture2D,
+// ...) that set_buffer() or set_storage_image() binds.
+enum class ParamKind : uint8_t { numeric, structure, string, texture, sampler, other, view };
 // The component type of a numeric parameter (half and double read as float).
 enum class ScalarKind : uint8_t { boolean, int32, uint32, float32 };
 
@@ -157,6 +159,14 @@ class Technique {
   }
   // Ends the recording; the next begin() assumes nothing is bound.
   void end();
+  // Whether pass `pass` runs a compute shader (SetComputeShader): dispatch() it, not apply().
+  bool compute_pass(uint32_t pass) const;
+  // Records compute pass `pass` into `cmd` with x * y * z workgroups, outside the
+  // application's rendering and outside begin()/end(), followed by the barrier that makes
+  // its buffer and image writes visible to every draw and dispatch recorded after it
+  // ("simulate, then draw": dispatch the compute passes, then begin() and apply() the
+  // others). False, with the reason in messages(), when it is no compute pass.
+  bool dispatch(VkCommandBuffer cmd, uint32_t pass, uint32_t x, uint32_t y = 1, uint32_t z = 1);
 
  private:
   friend class Effect;
@@ -238,6 +248,21 @@ class Effect {
   // time). False, with the reason in messages(), when `name` is no texture parameter or the
   // file cannot be read.
   bool set_texture_file(std::string_view name, const std::string& file);
+  // Binds `range` bytes of the application's `buffer` from `offset` (it needs
+  // VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) to the storage buffer `name`: a StructuredBuffer,
+  // RWStructuredBuffer, (RW)ByteAddressBuffer, Append/ConsumeStructuredBuffer (its counter is
+  // the buffer "name@count") or tbuffer, from the next begin() or dispatch(), also after
+  // reloads. Until then a zeroed 64 KiB stand-in serves it. The buffer must outlive the
+  // frames that use it. False, with the reason in messages(), when no pass uses `name`.
+  bool set_buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset = 0, VkDeviceSize range = VK_WHOLE_SIZE);
+  // The same for the storage image `name` (RWTexture1D/2D/3D and arrays): the application's
+  // view, in VK_IMAGE_LAYOUT_GENERAL, of an image with VK_IMAGE_USAGE_STORAGE_BIT. Until then a
+  // zeroed 2D image the size of the target serves an RWTexture2D.
+  bool set_storage_image(std::string_view name, VkImageView view);
+  // The same for the texel buffer `name` (Buffer<T>, RWBuffer<T>): the application's buffer
+  // view (VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT or STORAGE_TEXEL_BUFFER_BIT). Until then a
+  // view of a zeroed 64 KiB stand-in in the element's format (float4: R32G32B32A32_SFLOAT).
+  bool set_texel_buffer(std::string_view name, VkBufferView view);
 
  private:
   friend class Device;

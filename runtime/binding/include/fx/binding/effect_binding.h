@@ -12,6 +12,7 @@
 #pragma once
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <atomic>
 #include <filesystem>
 #include <memory>
@@ -20,6 +21,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fx/binding/effect_storage.h"
 #include "fx/binding/effect_textures.h"
 #include "fx/binding/pass_recorder.h"
 #include "fx/binding/pass_state_mapping.h"
@@ -47,6 +49,9 @@ struct EffectBindingDesc {
   std::filesystem::path effect_dir;
   // Folders looked in after effect_dir (the -I folders).
   std::vector<std::filesystem::path> texture_dirs;
+  // Size of the stand-in storage images (RWTexture2D) nothing else is bound to: a preview
+  // gives its target's.
+  VkExtent2D storage_image_extent{256, 256};
 };
 
 class EffectBinding {
@@ -81,6 +86,29 @@ class EffectBinding {
   // "vk-resource-unknown" when the effect has no such texture parameter.
   bool set_texture(std::string_view texture, VkImageView view, VkImageLayout layout, ImageKind kind,
                    DiagnosticSink& sink);
+  // The application's buffer range for the storage buffer `name` (a StructuredBuffer,
+  // ByteAddressBuffer, Append/Consume buffer or its "name@count" counter, tbuffer) and its
+  // view (VK_IMAGE_LAYOUT_GENERAL) for the storage image `name` (RWTexture*), instead of the
+  // zeroed stand-ins (EffectStorage). From the next begin() or dispatch(); false and
+  // "vk-resource-unknown" when no pass uses such a resource.
+  bool set_buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range,
+                  DiagnosticSink& sink);
+  bool set_storage_image(std::string_view name, VkImageView view, DiagnosticSink& sink);
+  // The application's buffer view for the texel buffer `name` (Buffer<T>, RWBuffer<T>),
+  // instead of a view of a zeroed stand-in in the element's format.
+  bool set_texel_buffer(std::string_view name, VkBufferView view, DiagnosticSink& sink);
+  // Whether pass `pass` of `technique` runs a compute shader (dispatch() it; apply() refuses).
+  bool compute_pass(uint32_t technique, uint32_t pass) const;
+  // The workgroup counts a preview dispatches compute pass `pass` with: the pass's
+  // `Dispatch` annotation (`int3 Dispatch = {64, 1, 1};`, missing counts 1), else one thread
+  // per pixel of a `width` x `height` target (ceil(width / numthreads.x), ceil(height /
+  // numthreads.y), 1).
+  std::array<uint32_t, 3> dispatch_groups(uint32_t technique, uint32_t pass, uint32_t width, uint32_t height) const;
+  // Records compute pass `pass` of `technique` into `cmd`, outside rendering and outside
+  // begin()/end(): uniforms, storage resources, `groups` workgroups, then the barrier that
+  // makes its writes visible to every later draw and dispatch (PassRecorder::dispatch).
+  bool dispatch(VkCommandBuffer cmd, uint32_t technique, uint32_t pass, const std::array<uint32_t, 3>& groups,
+                DiagnosticSink& sink);
 
   // Creates the technique's pipelines for these formats and layout now (instead of at the
   // first apply). False with diagnostics if one cannot be made.
@@ -125,6 +153,9 @@ class EffectBinding {
   struct Technique;
   EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures);
   bool bind_textures(DiagnosticSink& sink);
+  // Writes the pass's changed uniform blocks into the frame's ring (pass.ring_offsets);
+  // `moved` is set when one went to a new offset.
+  bool write_blocks(Pass& pass, bool& moved, DiagnosticSink& sink);
   // apply()'s out-of-line parts, so the per-object path stays small: the error for a bad
   // pass index, and a pass bound from scratch (pipeline, state, descriptors).
   [[gnu::noinline]] static bool unknown_pass(uint32_t pass_index, DiagnosticSink& sink);
@@ -150,6 +181,8 @@ class EffectBinding {
   std::vector<std::unique_ptr<Technique>> techniques_;
   std::vector<VertexLayout> layouts_;
   std::vector<std::pair<uint32_t, Texture>> app_textures_;  // texture parameter -> app view
+  EffectStorage storage_;
+  VkExtent2D storage_extent_{};
   bool textures_pending_ = true;
   RenderingFormats formats_;  // of the begun technique
   int64_t counted_objects_ = 0;

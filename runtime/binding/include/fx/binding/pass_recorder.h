@@ -71,6 +71,12 @@ class PassRecorder {
   }
   // Ends the sequence; the next begin() assumes nothing is bound.
   void end();
+  // Records compute pass `pass` (a compute program; no vertex input, no state) into `cmd`
+  // outside any rendering: binds its pipeline and descriptors, dispatches `groups`
+  // workgroups, then a barrier that makes its writes (storage buffers and images) visible to
+  // the shader reads, vertex and index fetches and indirect arguments of everything recorded
+  // after it. Between passes (not between begin() and end()).
+  bool dispatch(VkCommandBuffer cmd, const PassDesc& pass, const uint32_t groups[3], DiagnosticSink& sink);
   // Reserves `bytes` of the frame's uniform ring, lets `fill(uint8_t*)` write them in place
   // and returns their offset for PassDesc::uniform_offsets (counted as an upload).
   // nullopt and "vk-uniform-ring-full" when the frame's slice has no room.
@@ -91,6 +97,7 @@ class PassRecorder {
  private:
   void record_dynamic_state(const PipelineState& s, bool all);
   bool bind_descriptors(const PassDesc& pass, DiagnosticSink& sink);
+  VkPipelineBindPoint bind_point_ = VK_PIPELINE_BIND_POINT_GRAPHICS;  // of the pass being bound
   bool images_bound(const PassResources& r, DiagnosticSink& sink) const;
 
   // What reapply() reads, once per object, first: together in one or two cache lines.

@@ -29,10 +29,18 @@ class PassResources {
   // once skip the per-call lookup. "vk-uniform-unknown" for an index past the last block.
   bool set_block_bytes(uint32_t index, uint32_t offset, const void* data, uint32_t bytes, DiagnosticSink& sink);
   // Binds a texture (and, for a combined image sampler, its sampler) to the descriptor called
-  // `name`; for a separate sampler descriptor pass a null-view texture and the sampler.
+  // `name`; for a separate sampler descriptor pass a null-view texture and the sampler; for a
+  // storage image, a texture in VK_IMAGE_LAYOUT_GENERAL and no sampler.
   // False and "vk-resource-unknown" if the program has no such image or sampler.
   bool bind(std::string_view name, const Texture& texture, VkSampler sampler, DiagnosticSink& sink);
   bool bind_sampler(std::string_view name, VkSampler sampler, DiagnosticSink& sink);
+  // Binds `range` bytes of `buffer` from `offset` to the storage buffer called `name`.
+  // False and "vk-resource-unknown" if the program has no such storage buffer.
+  bool bind_buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range,
+                   DiagnosticSink& sink);
+  // Binds `view` to the texel buffer called `name`. False and "vk-resource-unknown" if the
+  // program has no such texel buffer.
+  bool bind_texel_buffer(std::string_view name, VkBufferView view, DiagnosticSink& sink);
 
   const ShaderProgram& program() const { return *program_; }
   // Descriptor sets (DescriptorMode::sets) kept in `arena` across frames, one per frame in
@@ -62,10 +70,12 @@ class PassResources {
     VkSampler sampler = VK_NULL_HANDLE;
   };
   const ShaderProgram* program_;
-  std::vector<Block> blocks_;    // parallel to program.uniform_blocks()
-  std::vector<Bound> images_;    // parallel to program.images()
-  bool images_changed_ = true;   // descriptor set contents must be rewritten
-  uint64_t images_version_ = 1;  // bumped with every change of images_
+  std::vector<Block> blocks_;                    // parallel to program.uniform_blocks()
+  std::vector<Bound> images_;                    // parallel to program.images()
+  std::vector<VkDescriptorBufferInfo> buffers_;  // parallel to program.storage_buffers()
+  std::vector<VkBufferView> texel_views_;        // parallel to program.texel_buffers()
+  bool images_changed_ = true;                   // descriptor set contents must be rewritten
+  uint64_t images_version_ = 1;                  // bumped with every change of images_
   VkDescriptorSet set_ = VK_NULL_HANDLE;
   uint64_t set_frame_ = 0;
   // keep_sets_in's sets, by frame % frames in flight: what each was written with and the

@@ -43,13 +43,29 @@ struct ProgramImage {
   bool multisampled = false;  // Texture2DMS, Texture2DMSArray: needs an image of more than one sample
 };
 
+// One storage buffer of the program (set 0): a (RW/Append/Consume)StructuredBuffer,
+// (RW)ByteAddressBuffer or tbuffer, or an Append/Consume buffer's counter ("name@count").
+struct ProgramStorageBuffer {
+  std::string name;
+  uint32_t binding = 0;
+  uint32_t size = 0;     // bytes before any runtime-sized array (the fixed part of the block)
+  bool written = false;  // some stage writes it (an RW, Append or Consume buffer, a counter)
+};
+
+// One texel buffer of the program (set 0): Buffer<T> (uniform) or RWBuffer<T> (storage).
+struct ProgramTexelBuffer {
+  std::string name;
+  DescriptorKind kind = DescriptorKind::uniform_texel_buffer;
+  uint32_t binding = 0;
+};
+
 class ShaderProgram {
  public:
   // `stages` must be compiled, linked with link_program (giving `layout`) and outlive the
   // program (reflection is referenced, not copied). Reports "vk-program-no-vertex-stage",
   // "vk-program-tessellation-stages" (a hull shader without a domain shader or the reverse),
-  // "vk-descriptor-unsupported" (storage resources, arrays in push mode) and
-  // "vk-call-failed".
+  // "vk-descriptor-unsupported" (arrays in push mode) and "vk-call-failed".
+  // A program of one compute stage is a compute program: its pipeline is made here.
   static std::optional<ShaderProgram> create(const Context& ctx, const std::vector<const CompiledShader*>& stages,
                                              const ProgramLayout& layout, DescriptorMode mode, DiagnosticSink& sink);
 
@@ -77,6 +93,11 @@ class ShaderProgram {
   uint32_t patch_control_points() const { return patch_control_points_; }
   const std::vector<ProgramUniformBlock>& uniform_blocks() const { return blocks_; }
   const std::vector<ProgramImage>& images() const { return images_; }
+  const std::vector<ProgramStorageBuffer>& storage_buffers() const { return storage_buffers_; }
+  const std::vector<ProgramTexelBuffer>& texel_buffers() const { return texel_buffers_; }
+  // A compute program's pipeline (VK_NULL_HANDLE for a graphics program) and workgroup size.
+  VkPipeline compute_pipeline() const { return compute_pipeline_; }
+  const uint32_t* local_size() const { return local_size_; }
   // Descriptor counts of the set layout, for pool sizing.
   uint32_t uniform_descriptor_count() const { return uint32_t(blocks_.size()); }
 
@@ -96,6 +117,10 @@ class ShaderProgram {
   uint32_t patch_control_points_ = 0;
   std::vector<ProgramUniformBlock> blocks_;
   std::vector<ProgramImage> images_;
+  std::vector<ProgramStorageBuffer> storage_buffers_;
+  std::vector<ProgramTexelBuffer> texel_buffers_;
+  VkPipeline compute_pipeline_ = VK_NULL_HANDLE;
+  uint32_t local_size_[3] = {1, 1, 1};
 };
 
 // VkShaderStageFlagBits of a shader stage.

@@ -34,9 +34,11 @@ struct EffectFile {
   std::unique_ptr<EffectPrograms> programs;
   std::unique_ptr<ParameterStore> params;
 
-  // Loads `path`; null when the front end or the model reported errors (in `sink`).
-  static std::unique_ptr<EffectFile> load(const std::string& path, const FrontEndOptions& options,
-                                          DiagnosticSink& sink);
+  // Loads `path`; null when the front end or the model reported errors (in `sink`). Then
+  // `located`, when given, receives them as `file:line:col: error: ...` text: the sources
+  // their ranges point into end with the failed load.
+  static std::unique_ptr<EffectFile> load(const std::string& path, const FrontEndOptions& options, DiagnosticSink& sink,
+                                          std::string* located = nullptr);
   // The technique named `name`, or kNoIndex.
   uint32_t find_technique(std::string_view name) const;
 };

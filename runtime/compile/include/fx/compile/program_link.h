@@ -17,7 +17,9 @@ enum class DescriptorKind : uint8_t {
   combined_image_sampler,
   sampled_image,
   sampler,
-  storage_image
+  storage_image,
+  uniform_texel_buffer,  // Buffer<T>: a VkBufferView read as a texture
+  storage_texel_buffer,  // RWBuffer<T>
 };
 
 // One descriptor shared by the stages that use it.

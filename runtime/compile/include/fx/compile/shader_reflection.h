@@ -41,6 +41,7 @@ struct UniformBlock {
   uint32_t set = 0, binding = 0;
   uint32_t size = 0;                 // bytes
   std::vector<BlockMember> members;  // in offset order
+  bool written = false;              // storage blocks: not readonly (RWStructuredBuffer, a counter)
 };
 
 // Image dimension of a texture or combined sampler.

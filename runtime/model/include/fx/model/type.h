@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,6 +29,7 @@ enum class TypeClass : uint8_t {
   sampler,       // sampler, sampler2D, SamplerState, ...
   shader,        // VertexShader / PixelShader / ... variables
   state_object,  // BlendState, DepthStencilState, RasterizerState objects
+  view,          // D3D11 buffers and unordered-access views: StructuredBuffer<T>, RWTexture2D<T>, ...
 };
 
 // Component type of scalars, vectors and matrices. DWORD is uint.
@@ -46,6 +48,23 @@ enum class TextureShape : uint8_t {
   tex2dms_array,
   cube_array,
   buffer,
+};
+
+// D3D11 resource views that are not sampled textures (TypeClass::view); `Buffer<T>` is a
+// texture of shape `buffer`. Their element type is Type::element.
+enum class ViewKind : uint8_t {
+  structured_buffer,
+  rw_structured_buffer,
+  append_structured_buffer,
+  consume_structured_buffer,
+  byte_address_buffer,
+  rw_byte_address_buffer,
+  rw_buffer,
+  rw_texture1d,
+  rw_texture1d_array,
+  rw_texture2d,
+  rw_texture2d_array,
+  rw_texture3d,
 };
 
 // Sampler kinds; sampler_object covers D3D10 SamplerState, comparison SamplerComparisonState.
@@ -78,8 +97,9 @@ struct Type {
   std::shared_ptr<const StructType> structure;        // TypeClass::structure
   TextureShape texture = TextureShape::any;
   SamplerShape sampler = SamplerShape::any;
-  std::string object_kind;  // shader / state_object: "VertexShader", "BlendState", ...
-  std::string element;      // texture template argument (`Texture2D<float4>` -> "float4")
+  ViewKind view = ViewKind::structured_buffer;  // TypeClass::view
+  std::string object_kind;                      // shader / state_object: "VertexShader", "BlendState", ...
+  std::string element;                          // texture or view template argument (`Texture2D<float4>` -> "float4")
 
   bool is_numeric() const { return cls == TypeClass::scalar || cls == TypeClass::vector || cls == TypeClass::matrix; }
   bool is_array() const { return !array_dims.empty(); }
@@ -129,8 +149,11 @@ class TypeTable {
   // Resolves a type as written plus the declaration's storage (row_major/column_major)
   // and array dimensions. Unknown names -> `unknown-type` with a did-you-mean;
   // bad dimensions -> `bad-array-size`. Returns TypeClass::error after a diagnostic.
+  // `initializer_scalars`: the scalars of the declaration's folded initializer, which size
+  // an unsized outermost dimension (`float2 a[] = { ... };`, as fxc); without one such a
+  // dimension is `bad-array-size`.
   Type resolve(const ast::TypeRef& ref, uint32_t storage, const ast::List<ast::ExprPtr>& dims, DiagnosticSink& diags,
-               const ConstantScope* scope = nullptr) const;
+               const ConstantScope* scope = nullptr, std::optional<uint32_t> initializer_scalars = {}) const;
   // Resolves a name alone (no diagnostics); TypeClass::error if unknown.
   Type lookup(std::string_view name) const;
   const std::map<std::string, std::shared_ptr<const StructType>, std::less<>>& structs() const { return structs_; }
