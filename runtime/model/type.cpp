@@ -128,7 +128,10 @@ std::optional<Type> object_name(std::string_view name, std::string_view template
     }
   if (std::optional<PassStage> stage = shader_type_stage(n))
     return object_type(TypeClass::shader, std::string(shader_type_name(*stage)));
-  static const char* objects[] = {"BlendState", "DepthStencilState", "RasterizerState"};
+  // State objects, and the views a D3D10 effect declares for the application to set (FX11's
+  // RenderTargetView / DepthStencilView variables; no shader reads them).
+  static const char* objects[] = {"BlendState", "DepthStencilState", "RasterizerState", "RenderTargetView",
+                                  "DepthStencilView"};
   for (const char* s : objects)
     if (iequals(n, s)) return object_type(TypeClass::state_object, s);
   return std::nullopt;
