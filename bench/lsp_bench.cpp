@@ -76,12 +76,12 @@ int main() {
   size_t lines = 0;
   auto [header, text] = generated_effect(lines);
   std::ofstream(dir / "lighting.fxh") << header;
-  const std::string path = (dir / "bench.fx").string(), uri = fxkit::lsp::path_to_uri(path);
+  const std::string path = (dir / "bench.fx").string(), uri = fx::tools::lsp::path_to_uri(path);
 
   size_t published_bytes = 0, errors = 0;
   json last_reply;
-  fxkit::lsp::LanguageServer server([&](const json& m) {
-    published_bytes += fxkit::lsp::frame(m).size();  // what the transport would write
+  fx::tools::lsp::LanguageServer server([&](const json& m) {
+    published_bytes += fx::tools::lsp::frame(m).size();  // what the transport would write
     if (m.contains("id")) last_reply = m;
     if (m.value("method", "") == "textDocument/publishDiagnostics") errors += m["params"]["diagnostics"].size();
   });

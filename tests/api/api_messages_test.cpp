@@ -46,9 +46,9 @@ size_t count(const std::string& text, const std::string& what) {
 // What `fxkit check FILE` prints for the file's diagnostics.
 std::string checked_text(const std::string& path) {
   fx::ShaderCompiler compiler;
-  fxkit::EffectCheckSettings settings;
+  fx::tools::EffectCheckSettings settings;
   settings.compiler = &compiler;
-  return fxkit::check_effect(path, settings).text;
+  return fx::tools::check_effect(path, settings).text;
 }
 
 class ApiMessagesTest : public VulkanTest {
@@ -72,7 +72,7 @@ class ApiMessagesTest : public VulkanTest {
   std::vector<fxkit::Reload> rewrite_and_reload(const std::string& path, const std::string& content) {
     std::ofstream(path, std::ios::trunc) << content;
     std::vector<fxkit::Reload> reloads;
-    const auto give_up = std::chrono::steady_clock::now() + fxkit_test::patience();
+    const auto give_up = std::chrono::steady_clock::now() + fx::testing::patience();
     while (reloads.empty() && std::chrono::steady_clock::now() < give_up) {
       device_->wait_for_reload(std::chrono::milliseconds(100));
       reloads = device_->begin_frame();

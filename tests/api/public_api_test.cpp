@@ -69,12 +69,12 @@ class PublicApiTest : public VulkanTest {
     return {ctx().instance(), ctx().physical_device(), ctx().device(), ctx().queue(), ctx().queue_family()};
   }
   // Writes `text` over the effect file at `path` and runs frames until the device reports
-  // the reload (giving up after fxkit_test::patience()); what begin_frame() reported.
+  // the reload (giving up after fx::testing::patience()); what begin_frame() reported.
   static std::vector<fxkit::Reload> rewrite_and_reload(fxkit::Device& device, const std::string& path,
                                                        const std::string& text) {
     std::ofstream(path, std::ios::trunc) << text;
     std::vector<fxkit::Reload> reloads;
-    const auto give_up = std::chrono::steady_clock::now() + fxkit_test::patience();
+    const auto give_up = std::chrono::steady_clock::now() + fx::testing::patience();
     while (reloads.empty() && std::chrono::steady_clock::now() < give_up) {
       device.wait_for_reload(std::chrono::milliseconds(20));
       reloads = device.begin_frame();
@@ -670,7 +670,7 @@ technique sm2 { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = comp
                                               "PixelShader = compile ps_1_1 Bright(); } }\n" +
                                               sm1;
   std::vector<fxkit::Reload> reloads;
-  for (auto give_up = std::chrono::steady_clock::now() + fxkit_test::patience();
+  for (auto give_up = std::chrono::steady_clock::now() + fx::testing::patience();
        reloads.empty() && std::chrono::steady_clock::now() < give_up;) {
     r.device->wait_for_reload(std::chrono::milliseconds(20));
     reloads = r.device->begin_frame();

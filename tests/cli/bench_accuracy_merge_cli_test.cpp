@@ -14,7 +14,7 @@
 
 namespace {
 
-using fxkit_test::run_fxkit;
+using fx::testing::run_fxkit;
 
 const std::string kSource = FXKIT_SOURCE_DIR;
 

@@ -10,7 +10,7 @@
 
 namespace {
 
-using fxkit_test::run_fxkit;
+using fx::testing::run_fxkit;
 
 TEST(BenchCli, ProcessesReportTheMedianOfEachProcessRatio) {
 #ifndef FXKIT_CLI_COMPILES

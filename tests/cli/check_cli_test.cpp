@@ -12,7 +12,7 @@
 
 namespace {
 
-using fxkit_test::run_fxkit;
+using fx::testing::run_fxkit;
 namespace fs = std::filesystem;
 
 const std::string kData = std::string(FXKIT_SOURCE_DIR) + "/tests/parser/data/";

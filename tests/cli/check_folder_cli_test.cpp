@@ -12,11 +12,11 @@
 
 namespace {
 
-using fxkit_test::run_fxkit;
+using fx::testing::run_fxkit;
 namespace fs = std::filesystem;
 
 // Effects that include each other, one of them broken through its header.
-struct ShaderFolder : fxkit_test::EffectFolder {
+struct ShaderFolder : fx::testing::EffectFolder {
   explicit ShaderFolder(const std::string& name) : EffectFolder("folder_" + name) {
     write("common/lighting.fxh", "float4 Ambient = {0.1, 0.1, 0.1, 1};\n");
     write("broken.fxh", "float4 Tint : COLOR;\ntechnique T { pass P { ZEnable = Maybe; } }\n");
@@ -114,7 +114,7 @@ TEST(CheckFolder, ShardsSplitTheFilesStably) {
 
 // A CI job pointed at the wrong folder, or with globs matching nothing, must not pass green.
 TEST(CheckFolder, AFolderWithNoEffectsFailsUnlessAllowed) {
-  fxkit_test::EffectFolder f("empty");
+  fx::testing::EffectFolder f("empty");
   f.write("empty/readme.txt", "no effects here\n");
   auto r = run_fxkit("check --syntax-only " + f.path("empty"), true);
   EXPECT_EQ(r.status, 2) << r.err;

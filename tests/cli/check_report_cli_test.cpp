@@ -17,11 +17,11 @@
 
 namespace {
 
-using fxkit_test::run_fxkit;
+using fx::testing::run_fxkit;
 using nlohmann::json;
 
 // Errors in included files: a state error in a header, a macro-expanded one, a warning.
-struct ReportFolder : fxkit_test::EffectFolder {
+struct ReportFolder : fx::testing::EffectFolder {
   ReportFolder() : EffectFolder("report") {
     write("inc/states.fxh", "#define BAD_STATE ZEnable = Maybe;\ntechnique T { pass P { BAD_STATE } }\n");
     write("uses states.fx", "#include \"inc/states.fxh\"\n");  // a space: the URI must encode it

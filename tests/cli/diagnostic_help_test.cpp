@@ -44,8 +44,8 @@ TEST(DiagnosticHelp, EveryReportedIdHasHelpText) {
   const std::map<std::string, std::string> ids = reported_ids();
   ASSERT_GT(ids.size(), 100u) << "the scan found too few ids: has the reporting style changed?";
   for (const auto& [id, file] : ids) {
-    auto help = fxkit::diagnostic_help().find(id);
-    if (help == fxkit::diagnostic_help().end()) {
+    auto help = fx::tools::diagnostic_help().find(id);
+    if (help == fx::tools::diagnostic_help().end()) {
       ADD_FAILURE() << "'" << id << "' (" << file << ") has no row in docs/diagnostics.md";
       continue;
     }
@@ -55,14 +55,14 @@ TEST(DiagnosticHelp, EveryReportedIdHasHelpText) {
 }
 
 TEST(DiagnosticHelp, ASarifRunReportingEveryIdDescribesEveryRule) {
-  fxkit::EffectCheck check;
+  fx::tools::EffectCheck check;
   check.file = "every.fx";
   for (const auto& [id, file] : reported_ids())
     check.diagnostics.push_back(
         {{"file", "every.fx"}, {"line", 1}, {"column", 1}, {"severity", "error"}, {"id", id}, {"message", "a " + id}});
-  fxkit::CheckRun run;
+  fx::tools::CheckRun run;
   run.checks.push_back(check);
-  const nlohmann::json sarif = fxkit::sarif_report(run, "/work");
+  const nlohmann::json sarif = fx::tools::sarif_report(run, "/work");
   EXPECT_EQ(sarif["version"], "2.1.0");
   ASSERT_EQ(sarif["runs"].size(), 1u);
   const nlohmann::json& rules = sarif["runs"][0]["tool"]["driver"]["rules"];

@@ -22,7 +22,7 @@
 
 #include "fxkit_cli.h"
 
-namespace fxkit_test {
+namespace fx::testing {
 namespace {
 
 namespace fs = std::filesystem;
@@ -196,4 +196,4 @@ TEST_F(Mutants, CheckNeverCrashesAndLocatesEveryRejection) {
 }
 
 }  // namespace
-}  // namespace fxkit_test
+}  // namespace fx::testing

@@ -16,7 +16,7 @@ namespace {
 // `fxkit render` of `source` (written as NAME.fx) with `options`, into NAME.png, and the PNG
 // it wrote (empty when it wrote none).
 struct Rendered {
-  fxkit_test::CliRun run;
+  fx::testing::CliRun run;
   std::optional<fx::Image> image;
 };
 Rendered render(const std::string& name, const std::string& source, const std::string& options) {
@@ -25,7 +25,7 @@ Rendered render(const std::string& name, const std::string& source, const std::s
   const auto file = dir / (name + ".fx"), png = dir / (name + ".png");
   std::ofstream(file) << source;
   Rendered r;
-  r.run = fxkit_test::run_fxkit("render " + file.string() + " " + options + " --out " + png.string(), true);
+  r.run = fx::testing::run_fxkit("render " + file.string() + " " + options + " --out " + png.string(), true);
   fx::DiagnosticSink sink;
   if (r.run.status == 0) r.image = fx::read_png(png, sink, 4);
   return r;
@@ -269,14 +269,14 @@ technique SpriteBatch { pass { VertexShader = compile vs_2_0 SpriteVertexShader(
 }
 
 TEST(FxkitRender, AFlatImageIsAWarningNamingTheUnboundTransform) {
-  const fxkit_test::CliRun r = render("unbound", R"(
+  const fx::testing::CliRun r = render("unbound", R"(
 float4x4 ClipFromObjectXf;
 float4 VS(float4 p : POSITION) : POSITION { return mul(p, ClipFromObjectXf); }
 float4 PS() : COLOR0 { return float4(1, 0, 0, 1); }
 technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
 )",
-                                      "")
-                                   .run;
+                                       "")
+                                    .run;
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("'ClipFromObjectXf' is read by the shaders but left zero"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("warning: the image is constant"), std::string::npos) << r.err;

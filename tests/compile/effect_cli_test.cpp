@@ -24,7 +24,7 @@ struct CliRun {
 };
 
 CliRun run(const std::string& args) {
-  fxkit_test::CliRun r = fxkit_test::run_fxkit(args);
+  fx::testing::CliRun r = fx::testing::run_fxkit(args);
   return {r.status, std::move(r.out)};
 }
 
@@ -358,7 +358,7 @@ TEST(FxkitCompile, AnErrorInASharedFunctionIsShownOnce) {
          "float4 PS(float4 c : COLOR0) : COLOR0 { return Helper(c.rgb).xyzz; }\n"
          "technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n"
          "technique U { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }\n";
-  fxkit_test::CliRun r = fxkit_test::run_fxkit("compile " + bad.string(), true);
+  fx::testing::CliRun r = fx::testing::run_fxkit("compile " + bad.string(), true);
   EXPECT_EQ(r.status, 1);
   size_t errors = 0;
   for (size_t at = r.err.find(": error: "); at != std::string::npos; at = r.err.find(": error: ", at + 1)) ++errors;

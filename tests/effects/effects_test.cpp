@@ -225,7 +225,7 @@ TEST(Effects, StrandFeatureVariantsCompileOnlyWhatTheSceneEnables) {
 // The seeds' generational story (docs/effects.md): what each profile runs, distance 0,
 // no scheme asked for.
 TEST(Effects, EachGenerationPicksWhatTheSeedDescribes) {
-  for (const auto& row : fxkit::testing::seed_picks())
+  for (const auto& row : fx::testing::seed_picks())
     for (const auto& [caps, want] : row.picks) EXPECT_EQ(pick(row.effect, caps), want) << row.effect << " on " << caps;
 }
 

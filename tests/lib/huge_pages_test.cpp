@@ -12,8 +12,8 @@
 
 namespace {
 
-using fxkit_test::kernel_has_transparent_huge_pages;
-using fxkit_test::vm_flags_at;
+using fx::testing::kernel_has_transparent_huge_pages;
+using fx::testing::vm_flags_at;
 
 TEST(HugePages, ReserveKeepsTheElementsInOrder) {
   std::vector<uint64_t> v(1000);

@@ -10,9 +10,9 @@
 
 namespace {
 
-using fxkit_test::has;
-using fxkit_test::labels;
-using fxkit_test::LspSession;
+using fx::testing::has;
+using fx::testing::labels;
+using fx::testing::LspSession;
 using nlohmann::json;
 
 constexpr const char* kEffect = R"(#include "lights.fxh"
@@ -53,7 +53,7 @@ class LanguageServerTest : public ::testing::Test {
     session_.open(path("main.fx"), kEffect);
   }
 
-  fxkit_test::EffectFolder folder_;
+  fx::testing::EffectFolder folder_;
   LspSession session_;
 };
 
@@ -111,7 +111,7 @@ TEST_F(LanguageServerTest, DiagnosticsInAnIncludeSitOnTheIncludeLine) {
   EXPECT_EQ(d[0]["range"]["start"]["line"], 0);
   EXPECT_NE(d[0]["message"].get<std::string>().find("in included file lights.fxh: "), std::string::npos);
   const json& related = d[0]["relatedInformation"][0];
-  EXPECT_EQ(related["location"]["uri"], fxkit::lsp::path_to_uri(path("lights.fxh")));
+  EXPECT_EQ(related["location"]["uri"], fx::tools::lsp::path_to_uri(path("lights.fxh")));
   EXPECT_GE(related["location"]["range"]["start"]["line"], 1);
 }
 
@@ -148,22 +148,22 @@ TEST_F(LanguageServerTest, DefinitionAcrossIncludesAndFromPasses) {
   open_main();
   json loc = session_.at("textDocument/definition", path("main.fx"), 14, 50);  // SunDirection
   ASSERT_TRUE(loc.is_object());
-  EXPECT_EQ(loc["uri"], fxkit::lsp::path_to_uri(path("lights.fxh")));
+  EXPECT_EQ(loc["uri"], fx::tools::lsp::path_to_uri(path("lights.fxh")));
   EXPECT_EQ(loc["range"]["start"]["line"], 1);
   EXPECT_EQ(loc["range"]["start"]["character"], 7);
   loc = session_.at("textDocument/definition", path("main.fx"), 19, 35);  // compile vs_2_0 VS()
-  EXPECT_EQ(loc["uri"], fxkit::lsp::path_to_uri(path("main.fx")));
+  EXPECT_EQ(loc["uri"], fx::tools::lsp::path_to_uri(path("main.fx")));
   EXPECT_EQ(loc["range"]["start"]["line"], 6);
   loc = session_.at("textDocument/definition", path("main.fx"), 10, 4);  // o.n -> the member
   EXPECT_EQ(loc["range"]["start"]["line"], 5);
   loc = session_.at("textDocument/definition", path("main.fx"), 0, 12);  // #include
-  EXPECT_EQ(loc["uri"], fxkit::lsp::path_to_uri(path("lights.fxh")));
+  EXPECT_EQ(loc["uri"], fx::tools::lsp::path_to_uri(path("lights.fxh")));
 }
 
 TEST_F(LanguageServerTest, DocumentSymbolsOutlineTheEffect) {
   open_main();
   json reply = session_.request("textDocument/documentSymbol",
-                                {{"textDocument", {{"uri", fxkit::lsp::path_to_uri(path("main.fx"))}}}});
+                                {{"textDocument", {{"uri", fx::tools::lsp::path_to_uri(path("main.fx"))}}}});
   const json& symbols = reply["result"];
   std::vector<std::string> names;
   for (const json& s : symbols) names.push_back(s["name"]);
@@ -203,7 +203,7 @@ TEST_F(LanguageServerTest, CompletionOfStatesValuesAndNamesInScope) {
 
 TEST_F(LanguageServerTest, CancelledRequestsAreAnsweredAsCancelled) {
   open_main();
-  const json document = {{"textDocument", {{"uri", fxkit::lsp::path_to_uri(path("main.fx"))}}}};
+  const json document = {{"textDocument", {{"uri", fx::tools::lsp::path_to_uri(path("main.fx"))}}}};
   session_.server().cancel(7);  // no such request yet
   json reply = session_.request("textDocument/documentSymbol", document);
   EXPECT_TRUE(reply.contains("result"));
@@ -243,7 +243,7 @@ TEST_F(LanguageServerTest, ClosingADocumentClearsItsDiagnostics) {
   open_main();
   session_.change(path("main.fx"), 2, 15, 50, 15, 55, "Glos");
   ASSERT_EQ(session_.diagnostics(path("main.fx")).size(), 1u);
-  session_.notify("textDocument/didClose", {{"textDocument", {{"uri", fxkit::lsp::path_to_uri(path("main.fx"))}}}});
+  session_.notify("textDocument/didClose", {{"textDocument", {{"uri", fx::tools::lsp::path_to_uri(path("main.fx"))}}}});
   EXPECT_TRUE(session_.diagnostics(path("main.fx")).empty());
 }
 

@@ -8,7 +8,7 @@
 
 #include "language_server.h"
 
-namespace fxkit_test {
+namespace fx::testing {
 
 using nlohmann::json;
 
@@ -29,20 +29,21 @@ class LspSession {
   }
   json initialize(json options = json::object(), std::string root = "") {
     json params = {{"processId", nullptr}, {"capabilities", json::object()}, {"initializationOptions", options}};
-    if (!root.empty()) params["rootUri"] = fxkit::lsp::path_to_uri(root);
+    if (!root.empty()) params["rootUri"] = fx::tools::lsp::path_to_uri(root);
     json reply = request("initialize", params);
     notify("initialized", json::object());
     return reply;
   }
   void open(const std::string& path, const std::string& text, int version = 1) {
-    notify("textDocument/didOpen",
-           {{"textDocument",
-             {{"uri", fxkit::lsp::path_to_uri(path)}, {"languageId", "fx"}, {"version", version}, {"text", text}}}});
+    notify(
+        "textDocument/didOpen",
+        {{"textDocument",
+          {{"uri", fx::tools::lsp::path_to_uri(path)}, {"languageId", "fx"}, {"version", version}, {"text", text}}}});
   }
   // An incremental change replacing [start, end) with `text`.
   void change(const std::string& path, int version, int l0, int c0, int l1, int c1, const std::string& text) {
     notify("textDocument/didChange",
-           {{"textDocument", {{"uri", fxkit::lsp::path_to_uri(path)}, {"version", version}}},
+           {{"textDocument", {{"uri", fx::tools::lsp::path_to_uri(path)}, {"version", version}}},
             {"contentChanges",
              {{{"range", {{"start", {{"line", l0}, {"character", c0}}}, {"end", {{"line", l1}, {"character", c1}}}}},
                {"text", text}}}}});
@@ -53,24 +54,24 @@ class LspSession {
     json last = nullptr;
     for (const json& m : sent_)
       if (m.value("method", "") == "textDocument/publishDiagnostics" &&
-          m["params"]["uri"] == fxkit::lsp::path_to_uri(path))
+          m["params"]["uri"] == fx::tools::lsp::path_to_uri(path))
         last = m["params"]["diagnostics"];
     return last;
   }
   // A request about a position of `path`; the reply's result.
   json at(const std::string& method, const std::string& path, int line, int character) {
-    json reply = request(method, {{"textDocument", {{"uri", fxkit::lsp::path_to_uri(path)}}},
+    json reply = request(method, {{"textDocument", {{"uri", fx::tools::lsp::path_to_uri(path)}}},
                                   {"position", {{"line", line}, {"character", character}}}});
     EXPECT_TRUE(reply.contains("result")) << reply.dump();
     return reply.value("result", json());
   }
 
-  fxkit::lsp::LanguageServer& server() { return server_; }
+  fx::tools::lsp::LanguageServer& server() { return server_; }
   std::vector<json>& sent() { return sent_; }
 
  private:
   std::vector<json> sent_;
-  fxkit::lsp::LanguageServer server_;
+  fx::tools::lsp::LanguageServer server_;
   int next_id_ = 0;
 };
 
@@ -85,4 +86,4 @@ inline bool has(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
 }
 
-}  // namespace fxkit_test
+}  // namespace fx::testing

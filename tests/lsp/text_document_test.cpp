@@ -5,7 +5,7 @@
 
 namespace {
 
-using fxkit::lsp::TextDocument;
+using fx::tools::lsp::TextDocument;
 
 TEST(TextDocument, IncrementalEditsCountUtf16Units) {
   // "é" is 2 bytes and 1 UTF-16 unit; "𝄞" is 4 bytes and 2 units.
@@ -19,7 +19,7 @@ TEST(TextDocument, IncrementalEditsCountUtf16Units) {
   EXPECT_EQ(d.line(0), "float a;float bee;");
   d.replace({5, 0}, {9, 0}, "!");  // past the end: clamped
   EXPECT_EQ(d.text.back(), '!');
-  EXPECT_EQ(fxkit::lsp::utf16_length("\xC3\xA9\xF0\x9D\x84\x9E", 6), 3u);
+  EXPECT_EQ(fx::tools::lsp::utf16_length("\xC3\xA9\xF0\x9D\x84\x9E", 6), 3u);
 }
 
 TEST(TextDocument, WordAtAPosition) {
@@ -31,9 +31,9 @@ TEST(TextDocument, WordAtAPosition) {
 }
 
 TEST(TextDocument, FileUris) {
-  EXPECT_EQ(fxkit::lsp::uri_to_path("file:///work/my%20effects/a.fx"), "/work/my effects/a.fx");
-  EXPECT_EQ(fxkit::lsp::path_to_uri("/work/my effects/a.fx"), "file:///work/my%20effects/a.fx");
-  EXPECT_EQ(fxkit::lsp::uri_to_path("untitled:1"), "");
+  EXPECT_EQ(fx::tools::lsp::uri_to_path("file:///work/my%20effects/a.fx"), "/work/my effects/a.fx");
+  EXPECT_EQ(fx::tools::lsp::path_to_uri("/work/my effects/a.fx"), "file:///work/my%20effects/a.fx");
+  EXPECT_EQ(fx::tools::lsp::uri_to_path("untitled:1"), "");
 }
 
 }  // namespace

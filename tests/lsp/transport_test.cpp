@@ -26,7 +26,7 @@ struct Pipes {
     for (int fd : {to_server[0], to_server[1], from_server[0], from_server[1]})
       if (fd >= 0) ::close(fd);
   }
-  void send(const json& m) { send_text(fxkit::lsp::frame(m)); }
+  void send(const json& m) { send_text(fx::tools::lsp::frame(m)); }
   void send_text(const std::string& text) {
     ASSERT_EQ(::write(to_server[1], text.data(), text.size()), ssize_t(text.size()));
   }
@@ -43,8 +43,8 @@ json message(int id, const std::string& method, json params) {
 TEST(Transport, FramedSessionOverPipes) {
   Pipes p;
   int exit_code = -1;
-  std::thread server([&] { exit_code = fxkit::lsp::run_stdio(p.to_server[0], p.from_server[1]); });
-  fxkit::lsp::MessageReader replies(p.from_server[0]);
+  std::thread server([&] { exit_code = fx::tools::lsp::run_stdio(p.to_server[0], p.from_server[1]); });
+  fx::tools::lsp::MessageReader replies(p.from_server[0]);
   // Everything is written before the server reads: the hover is queued behind the
   // cancellation that names it, so it is answered as cancelled.
   p.send(message(1, "initialize", {{"capabilities", json::object()}}));
@@ -81,7 +81,7 @@ TEST(Transport, EndOfInputWithoutExitIsAnError) {
   Pipes p;
   p.send(message(1, "initialize", json::object()));
   p.close_input();
-  EXPECT_EQ(fxkit::lsp::run_stdio(p.to_server[0], p.from_server[1]), 1);
+  EXPECT_EQ(fx::tools::lsp::run_stdio(p.to_server[0], p.from_server[1]), 1);
 }
 
 TEST(Transport, FuzzedEditingSessionLeavesNoStaleDiagnostics) {
@@ -91,7 +91,7 @@ V VS(float4 p : POSITION) { V o = (V)0; o.p = p; return o; }
 float4 PS(V i) : COLOR { return float4(i.uv, Gloss, 1); }
 technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); CullMode = CCW; } }
 )";
-  fxkit_test::LspSession s;
+  fx::testing::LspSession s;
   s.initialize();
   s.open("/nowhere/fuzz.fx", base);
   std::mt19937 rng(38);

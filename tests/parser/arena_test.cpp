@@ -67,7 +67,8 @@ TEST(Arena, LargeRequestsAndMovesKeepStorage) {
 // A 10 MB effect fills tens of MB of blocks, each page written once: the blocks of 4 MB
 // and up are advised for 2 MB pages, as the token stream is (fx/huge_pages.h).
 TEST(Arena, LargeBlocksAreAdvisedForHugePages) {
-  if (!fxkit_test::kernel_has_transparent_huge_pages()) GTEST_SKIP() << "transparent huge pages are off on this kernel";
+  if (!fx::testing::kernel_has_transparent_huge_pages())
+    GTEST_SKIP() << "transparent huge pages are off on this kernel";
   Arena arena;
   constexpr size_t kPiece = 64 << 10;
   std::byte* run = nullptr;  // first piece of the current block's contiguous run
@@ -85,12 +86,12 @@ TEST(Arena, LargeBlocksAreAdvisedForHugePages) {
   }
   ASSERT_GE(run_bytes, size_t(6) << 20) << "no block of 6 MB or more";
   // 3 MB into a block of 8 MB lies inside one of its whole 2 MB pages.
-  const std::string flags = fxkit_test::vm_flags_at(run + (3u << 20));
+  const std::string flags = fx::testing::vm_flags_at(run + (3u << 20));
   ASSERT_FALSE(flags.empty());
   EXPECT_NE(flags.find(" hg"), std::string::npos) << flags;
   // A small effect's first block is left alone.
   Arena small;
-  EXPECT_EQ(fxkit_test::vm_flags_at(small.allocate(16, 16)).find(" hg"), std::string::npos);
+  EXPECT_EQ(fx::testing::vm_flags_at(small.allocate(16, 16)).find(" hg"), std::string::npos);
 }
 
 }  // namespace

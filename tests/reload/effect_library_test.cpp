@@ -209,7 +209,7 @@ TEST_F(EffectLibraryTest, ReplacedVersionsAreReleasedOnlyAfterTheirFramesRetire)
   EffectHandle e = lib.load(path("a.fx"));
   std::weak_ptr<const EffectVersion> old = e.version();
   save_truncate_write(dir / "a.fx", effect_text("0, 0, 0, 1"));
-  ASSERT_TRUE(lib.wait(fxkit_test::patience()));
+  ASSERT_TRUE(lib.wait(fx::testing::patience()));
   ASSERT_EQ(lib.poll(10).size(), 1u);  // swapped in while recording frame 10
   EXPECT_EQ(lib.stats().retiring, 1u);
   EXPECT_FALSE(old.expired()) << "frames 8 and 9 may still use it";

@@ -236,7 +236,7 @@ TEST_P(FileWatcherTest, WaitHandleSignalsSettledEvents) {
   save_rename_over(fx, "v2");
   // An application loop: block on the handle, then poll without blocking.
   std::vector<FileEvent> events;
-  const auto give_up = std::chrono::steady_clock::now() + fxkit_test::patience();
+  const auto give_up = std::chrono::steady_clock::now() + fx::testing::patience();
   while (events.empty() && std::chrono::steady_clock::now() < give_up) {
     pollfd p{handle, POLLIN, 0};
     ASSERT_GE(::poll(&p, 1, 1000), 0);

@@ -45,9 +45,9 @@ inline EffectLibraryOptions test_options() {
   return o;
 }
 
-// Waits until at least `count` events arrived (giving up after fxkit_test::patience()).
+// Waits until at least `count` events arrived (giving up after fx::testing::patience()).
 inline std::vector<ReloadEvent> next_events(EffectLibrary& lib, size_t count = 1,
-                                            std::chrono::milliseconds limit = fxkit_test::patience()) {
+                                            std::chrono::milliseconds limit = fx::testing::patience()) {
   std::vector<ReloadEvent> out;
   auto deadline = std::chrono::steady_clock::now() + limit;
   while (out.size() < count) {

@@ -61,10 +61,10 @@ inline void save_backup_rename(const fs::path& file, const std::string& text) {
   fs::remove(backup);
 }
 
-// Waits until at least one event arrives (giving up after fxkit_test::patience()); returns
+// Waits until at least one event arrives (giving up after fx::testing::patience()); returns
 // what arrived.
 inline std::vector<FileEvent> wait_for_events(FileWatcher& watcher,
-                                              std::chrono::milliseconds limit = fxkit_test::patience()) {
+                                              std::chrono::milliseconds limit = fx::testing::patience()) {
   auto deadline = std::chrono::steady_clock::now() + limit;
   for (;;) {
     auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());

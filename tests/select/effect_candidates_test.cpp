@@ -86,7 +86,7 @@ const fx::TechniqueValidation& technique(const fx::EffectSelection& s, const std
 // The picks of docs/effects.md (also tests/effects, which reads annotations alone); here
 // the validity comes from the passes, compiled.
 TEST(EffectCandidates, EachGenerationPicksWhatTheSeedDescribesWithRealValidation) {
-  for (const auto& row : fxkit::testing::seed_picks())
+  for (const auto& row : fx::testing::seed_picks())
     for (const auto& [profile, want] : row.picks)
       EXPECT_EQ(pick(row.effect, profile), want) << row.effect << " on " << profile;
   fx::SelectionCriteria specular{.scheme = "specular"};

@@ -16,8 +16,8 @@
 
 namespace {
 
-using fxkit_test::CliRun;
-CliRun fxkit(const std::string& args) { return fxkit_test::run_fxkit(args); }
+using fx::testing::CliRun;
+CliRun fxkit(const std::string& args) { return fx::testing::run_fxkit(args); }
 
 const std::string kEffects = std::string(FXKIT_SOURCE_DIR) + "/effects/";
 

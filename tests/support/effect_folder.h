@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-namespace fxkit_test {
+namespace fx::testing {
 
 class EffectFolder {
  public:
@@ -33,4 +33,4 @@ class EffectFolder {
   std::filesystem::path root_;
 };
 
-}  // namespace fxkit_test
+}  // namespace fx::testing

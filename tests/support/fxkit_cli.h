@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <string>
 
-namespace fxkit_test {
+namespace fx::testing {
 
 struct CliRun {
   int status = -1;  // exit code, or -1 if fxkit did not exit normally
@@ -41,4 +41,4 @@ inline CliRun run_fxkit(const std::string& args, bool capture_stderr = false, co
   return r;
 }
 
-}  // namespace fxkit_test
+}  // namespace fx::testing

@@ -9,11 +9,11 @@
 #define FXKIT_TEST_SLOWDOWN 1
 #endif
 
-namespace fxkit_test {
+namespace fx::testing {
 
 // `limit` (a minute unless said otherwise) scaled for the build.
 inline constexpr std::chrono::milliseconds patience(std::chrono::milliseconds limit = std::chrono::seconds(60)) {
   return limit * FXKIT_TEST_SLOWDOWN;
 }
 
-}  // namespace fxkit_test
+}  // namespace fx::testing

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace fxkit::testing {
+namespace fx::testing {
 
 struct SeedPicks {
   const char* effect;                        // under effects/
@@ -49,4 +49,4 @@ inline const std::vector<SeedPicks>& seed_picks() {
   return rows;
 }
 
-}  // namespace fxkit::testing
+}  // namespace fx::testing

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-namespace fxkit_test {
+namespace fx::testing {
 
 // The VmFlags of the mapping of this process that holds `address`, or "" if none was found.
 inline std::string vm_flags_at(const void* address) {
@@ -34,4 +34,4 @@ inline bool kernel_has_transparent_huge_pages() {
   return !s.empty() && s.find("[never]") == std::string::npos;
 }
 
-}  // namespace fxkit_test
+}  // namespace fx::testing

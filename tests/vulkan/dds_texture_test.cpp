@@ -13,7 +13,7 @@ namespace fx::vk::testing {
 namespace {
 
 using fx::testing::DdsHeader;
-using fxkit_test::EffectFolder;
+using fx::testing::EffectFolder;
 
 // Writes `text` as `name` in `folder` and returns its path.
 std::string write(const EffectFolder& folder, const std::string& name, const std::string& text) {

@@ -91,10 +91,10 @@ struct ReloadHarness {
     return image;
   }
 
-  // Renders frames until a reload event arrives (giving up after fxkit_test::patience());
+  // Renders frames until a reload event arrives (giving up after fx::testing::patience());
   // the frames are checked.
   ReloadEvent frames_until_event(std::vector<fx::Image>* images = nullptr) {
-    const auto give_up = std::chrono::steady_clock::now() + fxkit_test::patience();
+    const auto give_up = std::chrono::steady_clock::now() + fx::testing::patience();
     std::vector<ReloadEvent> events;
     while (events.empty() && std::chrono::steady_clock::now() < give_up) {
       lib->wait(std::chrono::milliseconds(2));

@@ -41,7 +41,7 @@ technique Post < string Script = "RenderColorTarget0=ScnMap; RenderDepthStencilT
 class ScriptRenderTest : public VulkanTest {};
 
 TEST_F(ScriptRenderTest, PostEffectBlursTheSceneItDrewIntoATarget) {
-  fxkit_test::EffectFolder folder("script_post");
+  fx::testing::EffectFolder folder("script_post");
   folder.write("post.fx", kPostEffect);
   constexpr uint32_t kSize = 64;
   auto plain = bind_effect(ctx(), folder.path("post.fx"), "Plain", "sphere", kSize);
@@ -82,7 +82,7 @@ TEST_F(ScriptRenderTest, PostEffectBlursTheSceneItDrewIntoATarget) {
 
 // A technique without a Script gets no runner, and says so.
 TEST_F(ScriptRenderTest, TechniqueWithoutScriptHasNoRunner) {
-  fxkit_test::EffectFolder folder("script_none");
+  fx::testing::EffectFolder folder("script_none");
   folder.write("post.fx", kPostEffect);
   auto plain = bind_effect(ctx(), folder.path("post.fx"), "Plain", "sphere", 16);
   ASSERT_TRUE(plain);

@@ -6,7 +6,7 @@
 
 #include "tool_output.h"
 
-namespace fxkit {
+namespace fx::tools {
 
 struct BenchArgs {
   std::string mode;     // frontend, ...
@@ -50,4 +50,4 @@ int bench_accuracy(const BenchArgs& args);
 // `fxkit bench MODE --processes N`: MODE in N fresh processes, the median of their ratios.
 int bench_processes(const BenchArgs& args);
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -21,7 +21,7 @@
 #include "fx/source_manager.h"
 #include "fx/vulkan/context.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 constexpr uint32_t kTargetSize = 1024;
@@ -316,4 +316,4 @@ int bench_accuracy(const BenchArgs& args) {
   return 0;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -8,7 +8,7 @@
 #include "fx/diagnostic.h"
 #include "fx/shading/table.h"
 
-namespace fxkit {
+namespace fx::tools {
 
 // One full-screen (or gridded) pass that mirrors an approximation's shader code.
 struct GpuKernel {
@@ -46,4 +46,4 @@ std::vector<GpuKernel> accuracy_kernels(int size);
 std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32_t size, int repeats,
                                    fx::DiagnosticSink& sink);
 
-}  // namespace fxkit
+}  // namespace fx::tools

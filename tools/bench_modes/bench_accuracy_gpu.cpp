@@ -15,7 +15,7 @@
 #include "fx/vulkan/render_target.h"
 #include "fx/vulkan/texture.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 constexpr uint32_t kDraws = 4;  // overdraw per pass: lifts the signal above timestamp noise
@@ -268,4 +268,4 @@ std::optional<GpuRun> time_kernels(const std::vector<GpuKernel>& kernels, uint32
   return run;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

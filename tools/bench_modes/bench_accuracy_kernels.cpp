@@ -8,7 +8,7 @@
 #include "bench_accuracy.h"
 #include "fx/shading/bakers.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 using fx::shading::LutIndex;
@@ -215,4 +215,4 @@ std::vector<GpuKernel> accuracy_kernels(int size) {
   return out;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

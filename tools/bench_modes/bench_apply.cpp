@@ -23,7 +23,7 @@
 #include "fx/vulkan/one_shot.h"
 #include "fxkit/fxkit.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -509,4 +509,4 @@ int bench_apply(const BenchArgs& args) {
   return status;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

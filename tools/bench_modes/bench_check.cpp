@@ -19,7 +19,7 @@
 #include "fx/reload/effect_library.h"
 #include "fx/worker_pool.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 using BenchClock = std::chrono::steady_clock;
@@ -124,4 +124,4 @@ int bench_check(const BenchArgs& args) {
   return kSuccess;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -14,7 +14,7 @@
 #include "fx/compile/spirv_cache.h"
 #include "fx/frontend.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -146,4 +146,4 @@ int bench_compile(const BenchArgs& args) {
   return kSuccess;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -15,7 +15,7 @@
 #include "effect_generator.h"
 #include "fx/frontend.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -150,4 +150,4 @@ int bench_frontend(const BenchArgs& args) {
   return best.errors || !glslang_ok ? kInputErrors : kSuccess;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -15,7 +15,7 @@
 
 extern char** environ;
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 // The child's command line: this binary, the same mode and options, one process, JSON.
@@ -117,4 +117,4 @@ int bench_processes(const BenchArgs& args) {
   return status;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

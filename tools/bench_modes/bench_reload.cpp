@@ -30,7 +30,7 @@
 #include "fx/reload/reload_transaction.h"
 #include "fx/reload/vulkan_reload_backend.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 namespace fs = std::filesystem;
@@ -277,4 +277,4 @@ int bench_reload(const BenchArgs& args) {
   return failed ? kInputErrors : kSuccess;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -2,7 +2,7 @@
 
 #include <string>
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 // One module: `id` keeps every name unique across modules.
@@ -106,4 +106,4 @@ GeneratedEffect generate_effect(size_t min_bytes) {
   return g;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-namespace fxkit {
+namespace fx::tools {
 
 struct GeneratedEffect {
   std::string main_name;                     // "bench_main.fx"
@@ -18,4 +18,4 @@ struct GeneratedEffect {
 // At least `min_bytes` of effect source, split into modules of about 64 KiB.
 GeneratedEffect generate_effect(size_t min_bytes);
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -11,7 +11,7 @@
 
 #include "tool_output.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 namespace fs = std::filesystem;
@@ -121,4 +121,4 @@ void CheckCache::evict() {
 
 CheckCacheStats CheckCache::stats() const { return {hits_.load(), misses_.load(), stores_.load(), evicted_.load()}; }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -12,7 +12,7 @@
 
 #include "effect_check.h"
 
-namespace fxkit {
+namespace fx::tools {
 
 struct CheckCacheStats {
   uint64_t hits = 0, misses = 0, stores = 0, evicted = 0;
@@ -47,4 +47,4 @@ class CheckCache {
 // A hash of `text` as 32 hex digits (xxh3-128).
 std::string content_hash(std::string_view text);
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -8,7 +8,7 @@
 #include <regex>
 #include <set>
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 namespace fs = std::filesystem;
@@ -119,4 +119,4 @@ bool find_check_inputs(const std::vector<std::string>& paths, const CheckInputOp
   return true;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

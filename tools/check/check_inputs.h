@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace fxkit {
+namespace fx::tools {
 
 struct CheckInputOptions {
   // fnmatch(3) patterns: one without '/' matches a file's name, one with '/' the path below
@@ -35,4 +35,4 @@ bool parse_shard(const std::string& text, unsigned& shard, unsigned& shards);
 // its shard when others are added or removed.
 unsigned shard_of(const std::string& file, unsigned shards);
 
-}  // namespace fxkit
+}  // namespace fx::tools

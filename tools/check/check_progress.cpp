@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-namespace fxkit {
+namespace fx::tools {
 
 CheckProgress::CheckProgress(size_t total, bool shown) : total_(total), shown_(shown) {}
 
@@ -24,4 +24,4 @@ void CheckProgress::clear() {
   drawn_ = false;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

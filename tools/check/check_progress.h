@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cstddef>
 
-namespace fxkit {
+namespace fx::tools {
 
 class CheckProgress {
  public:
@@ -23,4 +23,4 @@ class CheckProgress {
   Clock::time_point start_ = Clock::now(), last_{};
 };
 
-}  // namespace fxkit
+}  // namespace fx::tools

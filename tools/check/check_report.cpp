@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-namespace fxkit {
+namespace fx::tools {
 
 size_t CheckRun::clean() const {
   size_t n = 0;
@@ -105,4 +105,4 @@ std::string junit_report(const CheckRun& run) {
   return out;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -8,7 +8,7 @@
 
 #include "effect_check.h"
 
-namespace fxkit {
+namespace fx::tools {
 
 struct CheckRun {
   std::vector<EffectCheck> checks;  // in file order
@@ -36,4 +36,4 @@ std::string junit_report(const CheckRun& run);
 // Text escaped for an XML attribute or element.
 std::string xml_escaped(const std::string& text);
 
-}  // namespace fxkit
+}  // namespace fx::tools

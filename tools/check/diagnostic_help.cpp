@@ -3,7 +3,7 @@
 #include <sstream>
 #include <vector>
 
-namespace fxkit {
+namespace fx::tools {
 
 extern const char* const kDiagnosticsMarkdown;  // docs/diagnostics.md (generated diagnostics_md.cpp)
 
@@ -57,4 +57,4 @@ const std::map<std::string, DiagnosticHelp>& diagnostic_help() {
   return table;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -5,7 +5,7 @@
 #include <map>
 #include <string>
 
-namespace fxkit {
+namespace fx::tools {
 
 struct DiagnosticHelp {
   std::string severity;  // as the table says: "error", "warning", "error / warning"
@@ -19,4 +19,4 @@ const std::map<std::string, DiagnosticHelp>& diagnostic_help();
 // Markdown reduced to plain text: backticks dropped, `\|` unescaped.
 std::string plain_text(const std::string& markdown);
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -14,7 +14,7 @@
 #include "fx/select/technique_validation.h"
 #endif
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 #ifdef FXKIT_HAS_RUNTIME
@@ -185,4 +185,4 @@ bool from_json(const nlohmann::json& j, EffectCheck& c) {
   return true;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

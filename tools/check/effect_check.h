@@ -17,7 +17,7 @@ class ShaderCompiler;
 struct DeviceCaps;
 }  // namespace fx
 
-namespace fxkit {
+namespace fx::tools {
 
 class CheckCache;
 
@@ -59,4 +59,4 @@ void check_effects(const std::vector<std::string>& files, const EffectCheckSetti
 nlohmann::json to_json(const EffectCheck& check);
 bool from_json(const nlohmann::json& j, EffectCheck& check);
 
-}  // namespace fxkit
+}  // namespace fx::tools

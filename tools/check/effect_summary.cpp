@@ -1,6 +1,6 @@
 #include "effect_summary.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 nlohmann::json annotations(const fx::ast::List<fx::ast::Annotation>& list) {
@@ -78,4 +78,4 @@ nlohmann::json summarize_effect(const fx::ast::Effect& effect, const fx::SourceM
           {"state_objects", state_objects}};
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

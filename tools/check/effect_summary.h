@@ -6,7 +6,7 @@
 #include "fx/ast.h"
 #include "fx/source_manager.h"
 
-namespace fxkit {
+namespace fx::tools {
 
 nlohmann::json summarize_effect(const fx::ast::Effect& effect, const fx::SourceManager& sm);
 
@@ -18,4 +18,4 @@ nlohmann::json source_location(const fx::SourceManager& sm, fx::SourceRange rang
 // lists and constructors.
 nlohmann::json annotation_value(const fx::ast::Expr* e);
 
-}  // namespace fxkit
+}  // namespace fx::tools

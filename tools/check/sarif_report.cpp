@@ -5,7 +5,7 @@
 
 #include "diagnostic_help.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 // SARIF's levels: error, warning, note (our notes are never results of their own).
@@ -114,4 +114,4 @@ nlohmann::json sarif_report(const CheckRun& run, const std::string& base) {
           {"runs", nlohmann::json::array({std::move(sarif_run)})}};
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -8,7 +8,7 @@
 
 #include "check_report.h"
 
-namespace fxkit {
+namespace fx::tools {
 
 // `base` is the folder relative paths are relative to (the working directory): it becomes
 // the run's SRCROOT.
@@ -18,4 +18,4 @@ nlohmann::json sarif_report(const CheckRun& run, const std::string& base);
 // become file:// URIs; bytes outside the unreserved set are percent-encoded.
 std::string path_uri(const std::string& path);
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace fxkit {
+namespace fx::tools {
 
 enum ExitCode { kSuccess = 0, kInputErrors = 1, kUsageError = 2 };
 
@@ -16,4 +16,4 @@ inline std::string json_text(const nlohmann::json& j, int indent = 2) {
   return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -3,7 +3,7 @@
 
 #include "bench.h"
 
-namespace fxkit {
+namespace fx::tools {
 
 void register_bench(CLI::App& app, Runner& run) {
   auto args = std::make_shared<BenchArgs>();
@@ -71,4 +71,4 @@ void register_bench(CLI::App& app, Runner& run) {
   });
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

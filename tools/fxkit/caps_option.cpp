@@ -10,7 +10,7 @@
 #include "fx/select/caps_sources.h"
 #include "fx/vulkan/context.h"
 
-namespace fxkit {
+namespace fx::tools {
 
 std::string caps_option_help() {
   std::string names;
@@ -42,4 +42,4 @@ std::optional<fx::DeviceCaps> load_caps_option(const std::string& value, fx::Dia
   return fx::caps_from_vulkaninfo_json(j, sink);
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

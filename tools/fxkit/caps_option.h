@@ -8,7 +8,7 @@
 #include "fx/diagnostic.h"
 #include "fx/select/device_caps.h"
 
-namespace fxkit {
+namespace fx::tools {
 
 // Help text listing the accepted values.
 std::string caps_option_help();
@@ -16,4 +16,4 @@ std::string caps_option_help();
 // or "caps-file" when a file cannot be read) and give nullopt.
 std::optional<fx::DeviceCaps> load_caps_option(const std::string& value, fx::DiagnosticSink& sink);
 
-}  // namespace fxkit
+}  // namespace fx::tools

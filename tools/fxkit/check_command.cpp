@@ -29,7 +29,7 @@
 #include "fx/select/device_caps.h"
 #endif
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 struct CheckArgs {
@@ -252,4 +252,4 @@ void register_check(CLI::App& app, Runner& run) {
   cmd->callback([args, &run] { run = [args] { return run_check(*args); }; });
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

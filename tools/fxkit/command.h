@@ -9,7 +9,7 @@
 #include "fx/frontend.h"
 #include "tool_output.h"
 
-namespace fxkit {
+namespace fx::tools {
 
 // -I, -D and --profile, as every command that reads effects takes them.
 struct FrontEndFlags {
@@ -33,4 +33,4 @@ void register_watch(CLI::App& app, Runner& run);
 void register_select(CLI::App& app, Runner& run);
 void register_render(CLI::App& app, Runner& run);
 
-}  // namespace fxkit
+}  // namespace fx::tools

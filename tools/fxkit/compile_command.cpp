@@ -14,7 +14,7 @@
 #include "fx/diagnostic_render.h"
 #include "fx/shown_once.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 // One compiled stage as `fxkit compile --json` lists it. A stage of a shader array also
@@ -213,4 +213,4 @@ void register_compile(CLI::App& app, Runner& run) {
   cmd->callback([args, &run] { run = [args] { return run_compile(*args); }; });
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-namespace fxkit {
+namespace fx::tools {
 
 void CompileWorkersFlag::add_to(CLI::App& command) {
   command.add_flag("--in-process", in_process,
@@ -25,4 +25,4 @@ std::unique_ptr<fx::CompileWorkers> CompileWorkersFlag::start(const char* comman
   return pool;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

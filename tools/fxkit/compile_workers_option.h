@@ -8,7 +8,7 @@
 
 #include "fx/compile/compile_workers.h"
 
-namespace fxkit {
+namespace fx::tools {
 
 struct CompileWorkersFlag {
   bool in_process = false;
@@ -21,4 +21,4 @@ struct CompileWorkersFlag {
   std::unique_ptr<fx::CompileWorkers> start(const char* command, unsigned jobs) const;
 };
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -16,7 +16,7 @@
 #include "fx/model/effect_model.h"
 #include "fx/state_table.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 using nlohmann::json;
@@ -337,4 +337,4 @@ void register_info(CLI::App& app, Runner& run) {
   cmd->callback([args, &run] { run = [args] { return run_info(*args); }; });
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -5,7 +5,7 @@
 #include "command.h"
 #include "language_server.h"
 
-namespace fxkit {
+namespace fx::tools {
 
 void register_lsp(CLI::App& app, Runner& run) {
   CLI::App* command = app.add_subcommand("lsp", "Serve the Language Server Protocol on stdin/stdout");
@@ -14,4 +14,4 @@ void register_lsp(CLI::App& app, Runner& run) {
   command->callback([&run] { run = [] { return lsp::run_stdio(STDIN_FILENO, STDOUT_FILENO); }; });
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

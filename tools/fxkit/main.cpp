@@ -3,7 +3,7 @@
 
 #include "command.h"
 
-namespace fxkit {
+namespace fx::tools {
 
 void FrontEndFlags::add_to(CLI::App& command) {
   // One value per flag, as in fxc and clang (`-I a -I b`, `-Ia`, `-DNAME=V`): otherwise the
@@ -26,27 +26,27 @@ bool FrontEndFlags::to_options(fx::FrontEndOptions& options, std::string& error)
   return true;
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools
 
 int main(int argc, char** argv) {
   CLI::App app{"fxkit: effect files (.fx) for Vulkan"};
   app.require_subcommand(1);
-  fxkit::Runner run;
-  fxkit::register_check(app, run);
-  fxkit::register_bench(app, run);
-  fxkit::register_lsp(app, run);
+  fx::tools::Runner run;
+  fx::tools::register_check(app, run);
+  fx::tools::register_bench(app, run);
+  fx::tools::register_lsp(app, run);
 #ifdef FXKIT_HAS_RUNTIME
-  fxkit::register_compile(app, run);
-  fxkit::register_info(app, run);
-  fxkit::register_watch(app, run);
-  fxkit::register_select(app, run);
-  fxkit::register_render(app, run);
+  fx::tools::register_compile(app, run);
+  fx::tools::register_info(app, run);
+  fx::tools::register_watch(app, run);
+  fx::tools::register_select(app, run);
+  fx::tools::register_render(app, run);
 #endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     int code = app.exit(e);
-    return code == 0 ? fxkit::kSuccess : fxkit::kUsageError;
+    return code == 0 ? fx::tools::kSuccess : fx::tools::kUsageError;
   }
-  return run ? run() : fxkit::kUsageError;
+  return run ? run() : fx::tools::kUsageError;
 }

@@ -20,7 +20,7 @@
 #include "fx/diagnostic_render.h"
 #include "fx/select/technique_validation.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 struct RenderArgs {
@@ -259,4 +259,4 @@ void register_render(CLI::App& app, Runner& run) {
   cmd->callback([args, &run] { run = [args] { return run_render(*args); }; });
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

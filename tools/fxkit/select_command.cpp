@@ -13,7 +13,7 @@
 #include "fx/diagnostic_render.h"
 #include "fx/select/effect_candidates.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 struct SelectArgs {
@@ -153,4 +153,4 @@ void register_select(CLI::App& app, Runner& run) {
   cmd->callback([args, &run] { run = [args] { return run_select(*args); }; });
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

@@ -19,7 +19,7 @@
 #include "fx/reload/reload_transaction.h"
 #include "fx/reload/vulkan_reload_backend.h"
 
-namespace fxkit {
+namespace fx::tools {
 namespace {
 
 struct WatchArgs {
@@ -188,4 +188,4 @@ void register_watch(CLI::App& app, Runner& run) {
   cmd->callback([args, &run] { run = [args] { return run_watch(*args); }; });
 }
 
-}  // namespace fxkit
+}  // namespace fx::tools

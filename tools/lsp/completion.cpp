@@ -6,7 +6,7 @@
 #include "state_context.h"
 #include "symbol_text.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 namespace {
 
 using fx::semantic::SymbolKind;
@@ -142,4 +142,4 @@ json completion(const DocumentAnalysis& a, const TextDocument& document, Positio
   return items;
 }
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

@@ -1,7 +1,7 @@
 // Go to definition (language_features.h): the declaration of what is under the cursor.
 #include "language_features.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 
 json definition(const DocumentAnalysis& a, const TextDocument& document, Position at) {
   const std::vector<fx::Token>& tokens = a.parsed().ast.tokens;
@@ -26,4 +26,4 @@ json definition(const DocumentAnalysis& a, const TextDocument& document, Positio
   return nullptr;
 }
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <unordered_set>
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 
 DocumentAnalysis::DocumentAnalysis(const TextDocument& document, const WorkspaceConfig& config,
                                    const std::map<std::string, std::string>& open)
@@ -167,4 +167,4 @@ std::optional<uint32_t> DocumentAnalysis::token_at(Position p) const {
   return t.token;
 }
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

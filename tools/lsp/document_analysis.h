@@ -17,7 +17,7 @@
 #include "text_document.h"
 #include "workspace_config.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 
 using json = nlohmann::json;
 
@@ -80,4 +80,4 @@ class DocumentAnalysis {
   mutable bool indexed_ = false;
 };
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

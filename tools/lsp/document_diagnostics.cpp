@@ -3,7 +3,7 @@
 
 #include "language_features.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 namespace {
 
 int lsp_severity(fx::Severity s) {
@@ -58,4 +58,4 @@ json document_diagnostics(const DocumentAnalysis& a) {
   return out;
 }
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

@@ -3,7 +3,7 @@
 #include "language_features.h"
 #include "symbol_text.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 namespace {
 
 // LSP SymbolKind numbers.
@@ -114,4 +114,4 @@ json document_symbols(const DocumentAnalysis& a) {
   return out;
 }
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

@@ -3,7 +3,7 @@
 #include "state_context.h"
 #include "symbol_text.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 namespace {
 
 json markdown(std::string text, const DocumentAnalysis& a, fx::SourceRange range) {
@@ -68,4 +68,4 @@ json hover(const DocumentAnalysis& a, const TextDocument& document, Position at)
   return nullptr;
 }
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

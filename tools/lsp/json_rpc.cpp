@@ -7,7 +7,7 @@
 #include <cerrno>
 #include <cstdlib>
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 
 std::optional<std::string> MessageReader::take_buffered() {
   const size_t header_end = buffer_.find("\r\n\r\n");
@@ -92,4 +92,4 @@ bool write_message(int fd, const json& message) {
   return true;
 }
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 
 using json = nlohmann::json;
 
@@ -33,4 +33,4 @@ bool write_message(int fd, const json& message);
 // The framed text of one message (what write_message writes).
 std::string frame(const json& message);
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

@@ -7,7 +7,7 @@
 #include "document_analysis.h"
 #include "text_document.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 
 // The analysis's diagnostics as LSP Diagnostics of `document`: those in included files sit
 // on the `#include` line that brings them in, with the include stack as related information.
@@ -24,4 +24,4 @@ json document_symbols(const DocumentAnalysis& analysis);
 // (members after `.`), intrinsics and built-in types.
 json completion(const DocumentAnalysis& analysis, const TextDocument& document, Position at);
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

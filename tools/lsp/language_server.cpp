@@ -6,7 +6,7 @@
 #include "json_rpc.h"
 #include "language_features.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 namespace {
 
 // JSON-RPC and LSP error codes.
@@ -259,4 +259,4 @@ int run_stdio(int in_fd, int out_fd) {
   return server.exited() ? server.exit_code() : 1;
 }
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

@@ -15,7 +15,7 @@
 #include "text_document.h"
 #include "workspace_config.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 
 using json = nlohmann::json;
 
@@ -71,4 +71,4 @@ class LanguageServer {
 // the exit code.
 int run_stdio(int in_fd, int out_fd);
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

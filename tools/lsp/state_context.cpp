@@ -1,7 +1,7 @@
 // State blocks of an effect for hover and completion (state_context.h).
 #include "state_context.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 namespace {
 
 void add_technique(const fx::ast::Technique& t, std::vector<StateBlockSite>& out) {
@@ -92,4 +92,4 @@ const fx::StateInfo* state_row(const StateBlockSite& site, std::string_view name
   return row;
 }
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

@@ -8,7 +8,7 @@
 #include "document_analysis.h"
 #include "fx/state_table.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 
 // A block of state assignments and the table block its names are looked up in.
 struct StateBlockSite {
@@ -27,4 +27,4 @@ const fx::StateInfo* state_row(const StateBlockSite& site, std::string_view name
 // the block may not parse. nullopt outside any.
 std::optional<StateBlockSite> state_block_in_text(const TextDocument& document, Position at);
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

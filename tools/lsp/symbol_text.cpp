@@ -1,7 +1,7 @@
 // Hover and completion text of symbols (symbol_text.h).
 #include "symbol_text.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 namespace {
 
 using fx::semantic::SymbolKind;
@@ -52,4 +52,4 @@ std::string symbol_markdown(const DocumentAnalysis& a, const fx::semantic::Symbo
   return md;
 }
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

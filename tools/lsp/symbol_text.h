@@ -6,11 +6,11 @@
 
 #include "document_analysis.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 
 // One line: "float4 colour (member of Light)".
 std::string symbol_detail(const fx::semantic::Symbol& s);
 // Markdown: the declaration in a code block, then its facts.
 std::string symbol_markdown(const DocumentAnalysis& analysis, const fx::semantic::Symbol& s);
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 namespace {
 
 // Bytes of the UTF-8 sequence starting with `lead` (1 for stray continuation bytes).
@@ -116,4 +116,4 @@ void TextDocument::replace(Position from, Position to, std::string_view with) {
   text.replace(a, b - a, with);
 }
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 
 // LSP positions count UTF-16 code units; fxkit's columns count bytes.
 struct Position {
@@ -38,4 +38,4 @@ struct TextDocument {
   std::string_view line(uint32_t line) const;
 };
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

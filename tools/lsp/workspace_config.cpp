@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 
 void WorkspaceConfig::merge(const nlohmann::json& settings, const std::string& root,
                             std::vector<std::string>& problems) {
@@ -58,4 +58,4 @@ void merge_workspace_file(const std::string& root, WorkspaceConfig& config, std:
   config.merge(settings, root, problems);
 }
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp

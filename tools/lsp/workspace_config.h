@@ -9,7 +9,7 @@
 
 #include "fx/frontend.h"
 
-namespace fxkit::lsp {
+namespace fx::tools::lsp {
 
 struct WorkspaceConfig {
   std::vector<std::string> include_dirs;  // absolute, or relative to the server's folder
@@ -28,4 +28,4 @@ inline constexpr const char* kWorkspaceFile = "fxkit.json";
 // a line to `problems`.
 void merge_workspace_file(const std::string& root, WorkspaceConfig& config, std::vector<std::string>& problems);
 
-}  // namespace fxkit::lsp
+}  // namespace fx::tools::lsp
