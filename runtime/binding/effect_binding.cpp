@@ -646,7 +646,6 @@ void EffectBinding::end() {
 }
 
 size_t EffectBinding::pipeline_count() const { return pipelines_->size(); }
-const PipelineCacheStats& EffectBinding::pipeline_stats() const { return pipelines_->stats(); }
 
 void EffectBinding::update_object_count() {
   // + the VkPipelineCache and the descriptor pools of the kept sets

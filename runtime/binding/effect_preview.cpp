@@ -99,7 +99,6 @@ bool EffectPreview::draw_frame(EffectBinding& binding, uint32_t technique, uint3
       },
       sink);
   if (!submitted || !recorded) return false;
-  ++frames_rendered_;
   return true;
 }
 

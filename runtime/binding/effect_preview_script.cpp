@@ -56,7 +56,6 @@ std::optional<fx::Image> EffectPreview::render_script(ScriptRunner& runner, uint
       },
       sink);
   if (!submitted || !recorded) return std::nullopt;
-  ++frames_rendered_;
   return target_->readback_pixels(sink);
 }
 

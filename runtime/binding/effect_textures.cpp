@@ -239,11 +239,6 @@ const Texture* EffectTextureCache::gpu(const EffectTextureData& data, Diagnostic
   return &gpu_.emplace(data.key, std::move(*texture)).first->second;
 }
 
-size_t EffectTextureCache::cpu_count() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return cpu_.size();
-}
-
 void EffectTextureCache::clear() {
   gpu_.clear();
   std::lock_guard<std::mutex> lock(mutex_);

@@ -85,7 +85,6 @@ ShaderProgram& ShaderProgram::operator=(ShaderProgram&& o) noexcept {
   set_layout_ = std::exchange(o.set_layout_, VK_NULL_HANDLE);
   pipeline_layout_ = std::exchange(o.pipeline_layout_, VK_NULL_HANDLE);
   vertex_inputs_ = std::move(o.vertex_inputs_);
-  color_outputs_ = o.color_outputs_;
   patch_control_points_ = o.patch_control_points_;
   blocks_ = std::move(o.blocks_);
   images_ = std::move(o.images_);
@@ -128,7 +127,6 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx, const std
   for (const CompiledShader* s : ordered) {
     if (s->reflection.stage == ShaderStage::vertex) vertex = s;
     if (s->reflection.stage == ShaderStage::compute) compute = s;
-    if (s->reflection.stage == ShaderStage::fragment) p.color_outputs_ = uint32_t(s->reflection.outputs.size());
     XXH3_64bits_update(hs, s->spirv.data(), s->spirv.size() * 4);
     XXH3_64bits_update(hs, s->entry_point.c_str(), s->entry_point.size() + 1);
     VkShaderModuleCreateInfo info = structure<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);

@@ -138,8 +138,6 @@ class EffectBinding {
   void reset_stats() { recorder_->reset_stats(); }
   // Pipelines created and samplers held by this binding.
   size_t pipeline_count() const;
-  size_t sampler_count() const { return samplers_.size(); }
-  const PipelineCacheStats& pipeline_stats() const;
   const DynamicStateSet& dynamic() const { return recorder_->dynamic(); }
 
   // Vulkan objects (shader modules, layouts, pipelines, samplers, pipeline caches, descriptor

@@ -70,7 +70,6 @@ class EffectPreview {
   std::optional<double> time_passes(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout, uint32_t draws,
                                     const VkRect2D& scissor, DiagnosticSink& sink);
   // Frames rendered by render().
-  uint64_t frames_rendered() const { return frames_rendered_; }
 
  private:
   explicit EffectPreview(const Context& ctx) : ctx_(&ctx), textures_(ctx) {}
@@ -92,7 +91,6 @@ class EffectPreview {
   uint32_t index_count_ = 0;
   Buffer quad_vertices_, quad_indices_;
   uint32_t quad_index_count_ = 0;
-  uint64_t frames_rendered_ = 0;
 };
 
 // The union of the vertex shader inputs of a technique's passes (for vertex_layout()).

@@ -69,7 +69,6 @@ class EffectTextureCache {
 
   // GPU textures alive (for leak checks) and CPU entries held.
   size_t gpu_count() const { return gpu_.size(); }
-  size_t cpu_count() const;
   // Drops everything (render thread; the device must be done with the textures).
   void clear();
 

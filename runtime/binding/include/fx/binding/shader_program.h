@@ -87,7 +87,6 @@ class ShaderProgram {
   // reads (an input the compiler removed as unused must not be fed an attribute).
   const std::vector<InterfaceVariable>& vertex_inputs() const { return vertex_inputs_; }
   // Colour outputs of the fragment stage (0 without a fragment stage).
-  uint32_t color_output_count() const { return color_outputs_; }
   // Control points per patch the hull (tessellation control) shader takes: its pipelines
   // draw patch lists of this size. 0 for a program without tessellation stages.
   uint32_t patch_control_points() const { return patch_control_points_; }
@@ -99,7 +98,6 @@ class ShaderProgram {
   VkPipeline compute_pipeline() const { return compute_pipeline_; }
   const uint32_t* local_size() const { return local_size_; }
   // Descriptor counts of the set layout, for pool sizing.
-  uint32_t uniform_descriptor_count() const { return uint32_t(blocks_.size()); }
 
   void reset();
 
@@ -113,7 +111,6 @@ class ShaderProgram {
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
   std::vector<InterfaceVariable> vertex_inputs_;
-  uint32_t color_outputs_ = 0;
   uint32_t patch_control_points_ = 0;
   std::vector<ProgramUniformBlock> blocks_;
   std::vector<ProgramImage> images_;
