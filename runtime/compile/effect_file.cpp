@@ -12,27 +12,52 @@ EffectUnitOptions effect_unit_options(const FrontEndOptions& options) {
   return unit_options;
 }
 
-std::unique_ptr<EffectFile> EffectFile::load(const std::string& path, const FrontEndOptions& options,
-                                             DiagnosticSink& sink, std::string* located) {
+std::unique_ptr<EffectFile> EffectFile::parse(const std::string& path, const FrontEndOptions& options,
+                                              DiagnosticSink& sink) {
   auto e = std::make_unique<EffectFile>();
   e->path = path;
-  auto failed = [&] {
+  e->options = options;
+  e->parsed = parse_effect_file(path, e->sources, sink, options);
+  return e;
+}
+
+std::unique_ptr<EffectFile> EffectFile::parse_text(const std::string& path, std::string text,
+                                                   const FrontEndOptions& options, DiagnosticSink& sink) {
+  auto e = std::make_unique<EffectFile>();
+  e->path = path;
+  e->options = options;
+  e->parsed = parse_effect_text(path, std::move(text), e->sources, sink, options);
+  return e;
+}
+
+bool EffectFile::build_model(DiagnosticSink& sink) {
+  const size_t errors = sink.error_count();
+  model = std::make_unique<EffectModel>(build_effect_model(parsed, sources, sink));
+  if (sink.error_count() != errors) return false;
+  params = std::make_unique<ParameterStore>(*model, nullptr, &sink);
+  return sink.error_count() == errors;
+}
+
+void EffectFile::build_programs(DiagnosticSink& sink, const ShaderCompiler* shared) {
+  programs.reset();  // before the units and the compiler it points into
+  units = std::make_unique<EffectUnits>(parsed.ast, sources, sink, effect_unit_options(options));
+  if (!shared && !compiler) compiler = std::make_unique<ShaderCompiler>();
+  programs = std::make_unique<EffectPrograms>(*units, shared ? *shared : *compiler, sources);
+}
+
+std::unique_ptr<EffectFile> EffectFile::load(const std::string& path, const FrontEndOptions& options,
+                                             DiagnosticSink& sink, std::string* located) {
+  std::unique_ptr<EffectFile> e = parse(path, options, sink);
+  if (sink.has_errors() || !e->build_model(sink)) {
     if (located) *located = render_text(sink.diagnostics(), e->sources);
     return nullptr;
-  };
-  e->parsed = parse_effect_file(path, e->sources, sink, options);
-  if (sink.has_errors()) return failed();
-  e->model = std::make_unique<EffectModel>(build_effect_model(e->parsed, e->sources, sink));
-  if (sink.has_errors()) return failed();
-  e->units = std::make_unique<EffectUnits>(e->parsed.ast, e->sources, sink, effect_unit_options(options));
-  e->compiler = std::make_unique<ShaderCompiler>();
-  e->programs = std::make_unique<EffectPrograms>(*e->units, *e->compiler, e->sources);
-  e->params = std::make_unique<ParameterStore>(*e->model, nullptr, &sink);
+  }
+  e->build_programs(sink);
   return e;
 }
 
 uint32_t EffectFile::find_technique(std::string_view name) const {
-  const TechniqueInfo* t = model->find_technique(name);
+  const TechniqueInfo* t = model ? model->find_technique(name) : nullptr;
   return t ? static_cast<uint32_t>(t - model->techniques.data()) : kNoIndex;
 }
 

@@ -3,6 +3,8 @@
 
 #include <chrono>
 
+#include "fx/compile/effect_file.h"
+
 #include "version_steps.h"
 
 namespace fx {
@@ -18,6 +20,8 @@ EffectVersion::~EffectVersion() {
   programs.reset();
   units.reset();
   model.reset();
+  sources.reset();
+  file.reset();
   live_.fetch_sub(1, std::memory_order_relaxed);
 }
 size_t EffectVersion::live_count() { return live_.load(std::memory_order_relaxed); }
@@ -52,16 +56,16 @@ ReloadTransactionResult run_reload_transaction(const ReloadTransactionInput& inp
   auto version = std::make_unique<EffectVersion>();
   version->path = input.path;
   version->serial = input.serial;
-  version->sources = std::make_shared<SourceManager>();
-  result.sources = version->sources;
   DiagnosticSink sink;
   static const FrontEndOptions kDefaults;
   const FrontEndOptions& fe = input.front_end ? *input.front_end : kDefaults;
 
   // Parse: front end, effect model, parameters.
   Clock::time_point start = Clock::now();
-  version->parsed = parse_effect_file(input.path, *version->sources, sink, fe);
-  result.files = version->parsed.files;
+  version->file = EffectFile::parse(input.path, fe, sink);
+  version->sources = std::shared_ptr<SourceManager>(version->file, &version->file->sources);
+  result.sources = version->sources;
+  result.files = version->file->parsed.files;
   if (result.files.empty()) result.files.push_back(input.path);
   std::vector<TechniqueFacts> facts;
   bool ok = !sink.has_errors() && build_version_model(*version, sink, facts);
@@ -71,7 +75,7 @@ ReloadTransactionResult run_reload_transaction(const ReloadTransactionInput& inp
   if (ok && input.compiler) {
     start = Clock::now();
     ProgramOutcome outcome;
-    ok = build_version_programs(*version, *input.compiler, input.executor, fe, sink, outcome);
+    ok = build_version_programs(*version, *input.compiler, input.executor, sink, outcome);
     result.ms.compile = ms_since(start);
     result.ms.glslang = outcome.glslang_ms;
     result.recompiled = std::move(outcome.recompiled);

@@ -3,6 +3,7 @@
 #include <optional>
 #include <variant>
 
+#include "fx/compile/effect_file.h"
 #include "fx/model/effect_model.h"
 #include "fx/model/parameter_store.h"
 #include "fx/select/annotation_value.h"
@@ -26,9 +27,11 @@ std::optional<AnnotationValue> fact_value(const Value& v) {
 
 bool build_version_model(EffectVersion& version, DiagnosticSink& sink, std::vector<TechniqueFacts>& facts) {
   size_t errors = sink.error_count();
-  version.model = std::make_shared<EffectModel>(build_effect_model(version.parsed, *version.sources, sink));
-  if (sink.error_count() != errors) return false;
-  version.params = std::make_shared<ParameterStore>(*version.model, nullptr, &sink);
+  EffectFile& file = *version.file;
+  const bool built = file.build_model(sink);
+  version.model = std::shared_ptr<EffectModel>(version.file, file.model.get());
+  if (!built) return false;
+  version.params = std::shared_ptr<ParameterStore>(version.file, file.params.get());
   facts.clear();
   for (const TechniqueInfo& t : version.model->techniques) {
     TechniqueFacts f;

@@ -10,11 +10,11 @@
 namespace fx {
 
 bool build_version_programs(EffectVersion& version, const ShaderCompiler& compiler, TaskExecutor* executor,
-                            const FrontEndOptions& options, DiagnosticSink& sink, ProgramOutcome& outcome) {
+                            DiagnosticSink& sink, ProgramOutcome& outcome) {
   size_t errors = sink.error_count();
-  version.units =
-      std::make_shared<EffectUnits>(version.parsed.ast, *version.sources, sink, effect_unit_options(options));
-  version.programs = std::make_shared<EffectPrograms>(*version.units, compiler, *version.sources);
+  version.file->build_programs(sink, &compiler);
+  version.units = std::shared_ptr<EffectUnits>(version.file, version.file->units.get());
+  version.programs = std::shared_ptr<EffectPrograms>(version.file, version.file->programs.get());
   // Every pass, not just the selected technique's: a broken fallback must not be
   // discovered the day the fallback is chosen.
   if (executor) version.programs->compile_all(*executor);

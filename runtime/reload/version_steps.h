@@ -8,6 +8,8 @@
 
 namespace fx {
 
+// Both run the steps of the version's EffectFile.
+
 // Model side (version_model.cpp): effect model, parameter store, technique facts (names,
 // annotations). Returns false when the model reported errors.
 bool build_version_model(EffectVersion& version, DiagnosticSink& sink, std::vector<TechniqueFacts>& facts);
@@ -27,7 +29,7 @@ struct ProgramOutcome {
 // stages spread over `executor` when given. Stage and link diagnostics go to `sink`.
 // Returns false when any of them is an error.
 bool build_version_programs(EffectVersion& version, const ShaderCompiler& compiler, TaskExecutor* executor,
-                            const FrontEndOptions& options, DiagnosticSink& sink, ProgramOutcome& outcome);
+                            DiagnosticSink& sink, ProgramOutcome& outcome);
 
 // Copies a diagnostic into a sink (keeping its severity, id, range, notes and fix-its).
 inline void forward(const Diagnostic& d, DiagnosticSink& sink) {

@@ -1,6 +1,7 @@
 // Candidates and a selection plan from an effect's validated techniques.
-// This file must not include fx/model/effect_model.h (see technique_validation.h).
 #include "fx/select/effect_candidates.h"
+
+#include "fx/compile/effect_file.h"
 
 namespace fx {
 
@@ -24,11 +25,11 @@ std::vector<TechniqueCandidate> effect_candidates(std::span<const TechniqueValid
   return out;
 }
 
-EffectSelection build_effect_selection(const ast::Effect& effect, const SourceManager& sm, const DeviceCaps& caps,
-                                       DiagnosticSink& diags, const EffectSelectionOptions& options) {
+EffectSelection build_effect_selection(EffectFile& effect, const DeviceCaps& caps, DiagnosticSink& diags,
+                                       const EffectSelectionOptions& options) {
   EffectSelection s;
-  s.techniques = validate_effect(effect, sm, caps, diags, options.compile, options.compiler);
-  s.candidates = effect_candidates(s.techniques, sm);
+  s.techniques = validate_effect(effect, caps, diags, options.compile, options.compiler);
+  s.candidates = effect_candidates(s.techniques, effect.sources);
   s.plan = SelectionPlan::build(s.candidates, diags, options.plan);
   return s;
 }

@@ -39,17 +39,6 @@ const EffectPass* find_pass(const EffectUnits& units, uint32_t t, std::string_vi
   return nullptr;
 }
 
-struct OwnedPrograms {
-  DiagnosticSink unit_diags;  // the model reports bad shader references; these would repeat them
-  EffectUnits units;
-  std::unique_ptr<ShaderCompiler> own_compiler;
-  EffectPrograms programs;
-  OwnedPrograms(const ast::Effect& effect, const SourceManager& sm, const ShaderCompiler* compiler)
-      : units(effect, sm, unit_diags),
-        own_compiler(compiler ? nullptr : std::make_unique<ShaderCompiler>()),
-        programs(units, compiler ? *compiler : *own_compiler, sm) {}
-};
-
 }  // namespace
 
 std::string unmet_limit(const DeviceCaps& caps, std::string_view limit, uint32_t need) {
@@ -59,12 +48,6 @@ std::string unmet_limit(const DeviceCaps& caps, std::string_view limit, uint32_t
       return unmet_reason(caps, CapsRequirement::limit(limit, need)).value_or("");
     }
   return {};
-}
-
-std::shared_ptr<EffectPrograms> make_effect_programs(const ast::Effect& effect, const SourceManager& sm,
-                                                     const ShaderCompiler* compiler) {
-  auto owned = std::make_shared<OwnedPrograms>(effect, sm, compiler);
-  return std::shared_ptr<EffectPrograms>(owned, &owned->programs);
 }
 
 PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique_index, std::string_view technique,

@@ -2,7 +2,6 @@
 // and compile success of a pass's linked program).
 #pragma once
 #include <cstdint>
-#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,10 +12,6 @@
 
 namespace fx {
 class EffectPrograms;
-class ShaderCompiler;
-namespace ast {
-struct Effect;
-}
 }  // namespace fx
 
 namespace fx::detail {
@@ -32,11 +27,6 @@ struct PassProgramCheck {
 // (named `technique`, "" when unnamed) and checks it against `caps`.
 PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique_index, std::string_view technique,
                                     uint32_t pass, SourceRange pass_range, const DeviceCaps& caps);
-
-// Lazily compiled programs of `effect` together with what they need to live (units, a
-// default compiler when `compiler` is null). `effect`, `sm` and `compiler` must outlive it.
-std::shared_ptr<EffectPrograms> make_effect_programs(const ast::Effect& effect, const SourceManager& sm,
-                                                     const ShaderCompiler* compiler);
 
 // unmet_reason for a limit, or "" when met or when the caps do not state it (0).
 std::string unmet_limit(const DeviceCaps& caps, std::string_view limit, uint32_t need);

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "fx/ascii_case.h"
+#include "fx/compile/effect_file.h"
 #include "fx/model/effect_model.h"
 #include "fx/select/caps_requirement.h"
 #include "fx/state_table.h"
@@ -403,13 +404,15 @@ std::vector<TechniqueValidation> validate_techniques(const EffectModel& model, c
   return out;
 }
 
-std::vector<TechniqueValidation> validate_effect(const ast::Effect& effect, const SourceManager& sm,
-                                                 const DeviceCaps& caps, DiagnosticSink& diags, bool compile,
-                                                 const ShaderCompiler* compiler) {
-  EffectModel model = build_effect_model(effect, sm, diags);
-  if (!compile) return validate_techniques(model, caps);
-  std::shared_ptr<EffectPrograms> programs = detail::make_effect_programs(effect, sm, compiler);
-  return validate_techniques(model, caps, {.programs = programs.get()});
+std::vector<TechniqueValidation> validate_effect(EffectFile& effect, const DeviceCaps& caps, DiagnosticSink& diags,
+                                                 bool compile, const ShaderCompiler* compiler) {
+  if (!effect.model) effect.build_model(diags);
+  if (!compile) return validate_techniques(*effect.model, caps);
+  if (!effect.programs) {
+    DiagnosticSink repeated;  // the model reports bad shader references; the units would repeat them
+    effect.build_programs(repeated, compiler);
+  }
+  return validate_techniques(*effect.model, caps, {.programs = effect.programs.get()});
 }
 
 std::optional<size_t> find_next_valid(std::span<const TechniqueValidation> techniques, std::optional<size_t> after) {

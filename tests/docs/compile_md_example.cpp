@@ -34,19 +34,17 @@ TEST_F(ExampleTest, Preprocessing) {
 }
 
 TEST_F(ExampleTest, EffectCompilation) {
-  fx::SourceManager sm;
   fx::DiagnosticSink diags;
   fx::FrontEndOptions options;
   size_t used = 0, reported = 0;
   auto use = [&](const std::vector<fx::StageProgram>& stages, const fx::ProgramLayout&) { used = stages.size(); };
   auto report = [&](const std::string&) { ++reported; };
 
-  fx::ParsedEffect parsed = fx::parse_effect_file("effects/wood.fx", sm, diags, options);
-  fx::EffectUnits units(parsed.ast, sm, diags, fx::effect_unit_options(options));
+  auto file = fx::EffectFile::parse("effects/wood.fx", options, diags);  // the front end
   fx::SpirvCache cache(".fxkit-cache");                 // memory + optional directory
   fx::ShaderCompiler compiler({}, &cache);
-  fx::EffectPrograms programs(units, compiler, sm);
-  const fx::PassProgram* p = programs.program("wood", "p0");      // compiles only this pass
+  file->build_programs(diags, &compiler);              // units and lazily compiled programs
+  const fx::PassProgram* p = file->programs->program("wood", "p0");  // compiles only this pass
   if (p && p->ok()) use(p->stages, p->layout);
   if (p) for (const std::string& why : p->unsupported) report(why);  // asm, fixed function
 

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "fx/compile/effect_file.h"
 #include "fx/compile/shader_compiler.h"
 #include "fx/compile/spirv_cache.h"
 #include "fx/diagnostic_render.h"
@@ -22,9 +23,8 @@ namespace {
 const std::string kEffects = std::string(FXKIT_SOURCE_DIR) + "/effects/";
 
 struct Loaded {
-  fx::SourceManager sm;
   fx::DiagnosticSink diags;
-  fx::ParsedEffect parsed;
+  std::unique_ptr<fx::EffectFile> file;
 };
 
 // One compiler and memory cache for the whole suite: each profile revalidates the same shaders.
@@ -38,8 +38,8 @@ std::unique_ptr<Loaded> load(const std::string& name) {
   auto l = std::make_unique<Loaded>();
   fx::FrontEndOptions options;
   options.preprocessor.include_dirs = {kEffects};
-  l->parsed = fx::parse_effect_file(kEffects + name, l->sm, l->diags, options);
-  EXPECT_FALSE(l->diags.has_errors()) << fx::render_text(l->diags.diagnostics(), l->sm);
+  l->file = fx::EffectFile::parse(kEffects + name, options, l->diags);
+  EXPECT_FALSE(l->diags.has_errors()) << fx::render_text(l->diags.diagnostics(), l->file->sources);
   return l;
 }
 
@@ -52,9 +52,9 @@ fx::DeviceCaps caps(const std::string& name) {
 
 fx::EffectSelection selection(Loaded& l, const std::string& profile) {
   fx::DiagnosticSink sink;
-  fx::EffectSelection s = fx::build_effect_selection(l.parsed.ast, l.sm, caps(profile), sink,
-                                                     {.compile = true, .compiler = &compiler(), .plan = {}});
-  EXPECT_FALSE(sink.has_errors()) << fx::render_text(sink.diagnostics(), l.sm);
+  fx::EffectSelection s =
+      fx::build_effect_selection(*l.file, caps(profile), sink, {.compile = true, .compiler = &compiler(), .plan = {}});
+  EXPECT_FALSE(sink.has_errors()) << fx::render_text(sink.diagnostics(), l.file->sources);
   return s;
 }
 
@@ -105,8 +105,10 @@ TEST(EffectCandidates, EveryShippedTechniqueCompilesOnModern) {
     fx::EffectSelection s = selection(*l, "modern");
     for (const auto& t : s.techniques)
       for (const auto& r : t.reasons) {
-        EXPECT_NE(r.id, "shader-compile-failed") << effect << " " << t.name << ": " << fx::render_text(r, l->sm);
-        EXPECT_NE(r.id, "shader-exceeds-limit") << effect << " " << t.name << ": " << fx::render_text(r, l->sm);
+        EXPECT_NE(r.id, "shader-compile-failed")
+            << effect << " " << t.name << ": " << fx::render_text(r, l->file->sources);
+        EXPECT_NE(r.id, "shader-exceeds-limit")
+            << effect << " " << t.name << ": " << fx::render_text(r, l->file->sources);
       }
   }
 }
@@ -117,7 +119,7 @@ TEST(EffectCandidates, RejectionsNameTheirFileAndLine) {
   const auto& emboss = technique(modern, "emboss");
   ASSERT_FALSE(emboss.valid);
   // The vertex shader is vs.1.1 assembly (first), then the texture-stage states.
-  auto located = [&](const fx::Diagnostic& d) { return fx::located_reason(d, l->sm); };
+  auto located = [&](const fx::Diagnostic& d) { return fx::located_reason(d, l->file->sources); };
   bool found = false;
   uint32_t color_op_line = 0;
   {
@@ -141,16 +143,16 @@ TEST(EffectCandidates, RejectionsNameTheirFileAndLine) {
         << r.message;
     // ColorOp[0] is the reason or one of its located notes.
     if (r.message.find("'ColorOp[0]'") != std::string::npos)
-      found = l->sm.presumed(r.range.begin).line == color_op_line;
+      found = l->file->sources.presumed(r.range.begin).line == color_op_line;
     for (const auto& n : r.notes)
       if (n.message == "fixed-function state 'ColorOp[0]' here too")
-        found = l->sm.presumed(n.location).line == color_op_line;
+        found = l->file->sources.presumed(n.location).line == color_op_line;
   }
-  EXPECT_TRUE(found) << fx::render_text(emboss.reasons, l->sm);
+  EXPECT_TRUE(found) << fx::render_text(emboss.reasons, l->file->sources);
 
   fx::EffectSelection dx7 = selection(*l, "dx7");
   const auto& ps20 = technique(dx7, "diffuse_ps20");
-  ASSERT_EQ(ps20.reasons.size(), 2u) << fx::render_text(ps20.reasons, l->sm);
+  ASSERT_EQ(ps20.reasons.size(), 2u) << fx::render_text(ps20.reasons, l->file->sources);
   uint32_t ps_line =
       line_containing("per_pixel_lighting.fx", "PixelShader = compile ps_2_0 TangentSpacePS(SPECULAR_NONE)");
   EXPECT_EQ(located(ps20.reasons[1]),
@@ -180,7 +182,7 @@ TEST(EffectCandidates, CandidatesCopyAnnotationsAndCapTheirReasons) {
       EXPECT_EQ(c.reasons[4], "and " + std::to_string(t.reasons.size() - 4) + " more");
     }
   }
-  auto small = fx::effect_candidates(modern.techniques, l->sm, 1);
+  auto small = fx::effect_candidates(modern.techniques, l->file->sources, 1);
   for (size_t i = 0; i < small.size(); ++i)
     EXPECT_LE(small[i].reasons.size(), modern.techniques[i].reasons.empty() ? 0u : 2u);
   EXPECT_EQ(modern.first_valid(), fx::find_next_valid(modern.techniques));

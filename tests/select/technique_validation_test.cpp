@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "fx/compile/effect_file.h"
 #include "fx/diagnostic_render.h"
 #include "fx/frontend.h"
 #include "fx/model/effect_model.h"
@@ -15,15 +16,14 @@
 namespace {
 
 struct Loaded {
-  fx::SourceManager sm;
   fx::DiagnosticSink diags;
-  fx::ParsedEffect parsed;
+  std::unique_ptr<fx::EffectFile> file;
 };
 
 std::unique_ptr<Loaded> parse(const std::string& text) {
   auto l = std::make_unique<Loaded>();
-  l->parsed = fx::parse_effect_text("v.fx", text, l->sm, l->diags);
-  EXPECT_FALSE(l->diags.has_errors()) << fx::render_text(l->diags.diagnostics(), l->sm);
+  l->file = fx::EffectFile::parse_text("v.fx", text, {}, l->diags);
+  EXPECT_FALSE(l->diags.has_errors()) << fx::render_text(l->diags.diagnostics(), l->file->sources);
   return l;
 }
 
@@ -35,16 +35,16 @@ fx::DeviceCaps caps(const char* name) {
 }
 
 std::vector<fx::TechniqueValidation> validate(Loaded& l, const fx::DeviceCaps& c, bool compile = true) {
-  auto out = fx::validate_effect(l.parsed.ast, l.sm, c, l.diags, compile);
-  EXPECT_FALSE(l.diags.has_errors()) << fx::render_text(l.diags.diagnostics(), l.sm);
+  auto out = fx::validate_effect(*l.file, c, l.diags, compile);
+  EXPECT_FALSE(l.diags.has_errors()) << fx::render_text(l.diags.diagnostics(), l.file->sources);
   return out;
 }
 
 // The line a reason points at.
-uint32_t line_of(const Loaded& l, const fx::Diagnostic& d) { return l.sm.presumed(d.range.begin).line; }
+uint32_t line_of(const Loaded& l, const fx::Diagnostic& d) { return l.file->sources.presumed(d.range.begin).line; }
 
 std::string all(const Loaded& l, const fx::TechniqueValidation& t) {
-  return fx::render_text(t.reasons, l.sm, {.show_source_line = false});
+  return fx::render_text(t.reasons, l.file->sources, {.show_source_line = false});
 }
 
 const char* kFixedFunction = R"(texture Height;
@@ -85,10 +85,10 @@ TEST(TechniqueValidation, FixedFunctionStatesAreRejectedOnModernWithTheirLines) 
             "fixed-function state 'ColorOp[0]' has no Vulkan equivalent (modern has no fixed-function texture "
             "stages); 3 more in pass 'p0'");
   EXPECT_EQ(line_of(*l, first), 9u);
-  EXPECT_EQ(fx::located_reason(first, l->sm).rfind("v.fx:9: fixed-function state 'ColorOp[0]'", 0), 0u);
+  EXPECT_EQ(fx::located_reason(first, l->file->sources).rfind("v.fx:9: fixed-function state 'ColorOp[0]'", 0), 0u);
   ASSERT_EQ(first.notes.size(), 3u);
   EXPECT_EQ(first.notes[1].message, "fixed-function state 'ColorOp[1]' here too");
-  EXPECT_EQ(l->sm.presumed(first.notes[1].location).line, 11u);
+  EXPECT_EQ(l->file->sources.presumed(first.notes[1].location).line, 11u);
 }
 
 TEST(TechniqueValidation, FixedFunctionStagesRunWhereTheCapsHaveTheOperations) {
@@ -277,7 +277,7 @@ technique broken
   EXPECT_NE(v[0].reasons[0].message.find("undefined_name"), std::string::npos) << v[0].reasons[0].message;
   EXPECT_EQ(line_of(*l, v[0].reasons[0]), 3u);
   ASSERT_EQ(v[0].reasons[0].notes.size(), 1u);
-  EXPECT_EQ(l->sm.presumed(v[0].reasons[0].notes[0].location).line, 9u);
+  EXPECT_EQ(l->file->sources.presumed(v[0].reasons[0].notes[0].location).line, 9u);
   // Without compiling, the same technique looks valid: the profile is fine.
   EXPECT_TRUE(validate(*l, caps("modern"), /*compile=*/false)[0].valid);
 }
@@ -470,7 +470,7 @@ TEST(TechniqueValidation, FindNextValidWalksInDeclarationOrder) {
 TEST(TechniqueValidation, ValidateTechniqueOnAModelAndItsAnnotations) {
   auto l = parse(
       R"(technique a < string Scheme = "quality"; float MaxDistance = 20; int Priority = 2; bool B = true; float2 V = {1, 2}; > { pass p0 { } })");
-  fx::EffectModel model = fx::build_effect_model(l->parsed, l->sm, l->diags);
+  fx::EffectModel model = fx::build_effect_model(l->file->parsed, l->file->sources, l->diags);
   ASSERT_EQ(model.techniques.size(), 1u);
   fx::TechniqueValidation t = fx::validate_technique(model, model.techniques[0], caps("dx6"));
   EXPECT_TRUE(t.valid);

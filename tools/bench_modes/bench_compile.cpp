@@ -6,10 +6,12 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include <nlohmann/json.hpp>
 
 #include "bench.h"
+#include "fx/compile/effect_file.h"
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/spirv_cache.h"
 #include "fx/frontend.h"
@@ -36,18 +38,17 @@ struct LoadTimes {
 LoadTimes load(const std::string& path, const fx::ShaderCompiler& compiler) {
   LoadTimes t;
   Clock::time_point start = Clock::now();
-  fx::SourceManager sm;
   fx::DiagnosticSink diags;
   fx::FrontEndOptions options;
   options.preprocessor.include_dirs = {std::filesystem::path(path).parent_path().string()};
-  fx::ParsedEffect parsed = fx::parse_effect_file(path, sm, diags, options);
+  std::unique_ptr<fx::EffectFile> effect = fx::EffectFile::parse(path, options, diags);
   t.front_end = ms_since(start);
   Clock::time_point u0 = Clock::now();
-  fx::EffectUnits units(parsed.ast, sm, diags);
+  effect->build_programs(diags, &compiler);
   t.units = ms_since(u0);
   Clock::time_point c0 = Clock::now();
-  fx::EffectPrograms programs(units, compiler, sm);
-  for (const fx::EffectPass& p : units.passes()) {
+  fx::EffectPrograms& programs = *effect->programs;
+  for (const fx::EffectPass& p : effect->units->passes()) {
     const fx::PassProgram& prog = programs.program(p);
     t.shaders += prog.stages.size();
     for (const fx::StageProgram& s : prog.stages) t.failed += !s.shader.ok;

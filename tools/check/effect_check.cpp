@@ -1,6 +1,7 @@
 #include "effect_check.h"
 
 #include <chrono>
+#include <memory>
 
 #include "effect_summary.h"
 #include "fx/diagnostic_render.h"
@@ -19,10 +20,11 @@ namespace {
 
 #ifdef FXKIT_HAS_RUNTIME
 // Every technique valid or not on the caps, as text and in the summary; false when none is.
-bool report_techniques(const fx::ParsedEffect& parsed, const EffectCheckSettings& settings, fx::SourceManager& sm,
-                       fx::DiagnosticSink& diags, EffectCheck& out) {
+bool report_techniques(fx::EffectFile& effect, const EffectCheckSettings& settings, fx::DiagnosticSink& diags,
+                       EffectCheck& out) {
   const fx::DeviceCaps& caps = *settings.caps;
-  auto techniques = fx::validate_effect(parsed.ast, sm, caps, diags, settings.caps_compile, settings.compiler);
+  const fx::SourceManager& sm = effect.sources;
+  auto techniques = fx::validate_effect(effect, caps, diags, settings.caps_compile, settings.compiler);
   size_t valid = 0;
   for (const auto& t : techniques) valid += t.valid ? 1 : 0;
   nlohmann::json list = nlohmann::json::array();
@@ -45,10 +47,11 @@ bool report_techniques(const fx::ParsedEffect& parsed, const EffectCheckSettings
 // fixed-function stages are not reported: the legacy path runs them, so they are not a
 // defect of the effect (`fxkit compile` lists them, as it is asked for SPIR-V). A stage
 // fxkit cannot run at all is an error.
-void compile_shaders(const fx::ParsedEffect& parsed, const EffectCheckSettings& settings, fx::SourceManager& sm,
-                     fx::DiagnosticSink& diags, fx::ShownOnce& shown) {
-  fx::EffectUnits units(parsed.ast, sm, diags, fx::effect_unit_options(settings.front_end));
-  fx::EffectPrograms programs(units, *settings.compiler, sm);
+void compile_shaders(fx::EffectFile& effect, const EffectCheckSettings& settings, fx::DiagnosticSink& diags,
+                     fx::ShownOnce& shown) {
+  effect.build_programs(diags, settings.compiler);
+  const fx::EffectUnits& units = *effect.units;
+  fx::EffectPrograms& programs = *effect.programs;
   if (settings.executor) programs.compile_all(*settings.executor, true);
   shown.add(diags.diagnostics(), "");
   for (const fx::EffectPass& pass : units.passes()) {
@@ -72,11 +75,9 @@ void compile_shaders(const fx::ParsedEffect& parsed, const EffectCheckSettings& 
   }
 }
 
-// The DXSAS Script warnings of the effect's model (docs/dxsas.md); the model's other
-// diagnostics repeat the front end's checks.
-std::vector<fx::Diagnostic> script_diagnostics(const fx::ParsedEffect& parsed, const fx::SourceManager& sm) {
-  fx::DiagnosticSink model;
-  fx::build_effect_model(parsed, sm, model);
+// The DXSAS Script warnings among the effect model's diagnostics (docs/dxsas.md); the
+// model's other warnings repeat the front end's checks.
+std::vector<fx::Diagnostic> script_diagnostics(const fx::DiagnosticSink& model) {
   std::vector<fx::Diagnostic> out;
   for (const fx::Diagnostic& d : model.diagnostics())
     if (d.id.rfind("script-", 0) == 0) out.push_back(d);
@@ -90,9 +91,15 @@ EffectCheck check_effect(const std::string& file, const EffectCheckSettings& set
   auto start = std::chrono::steady_clock::now();
   EffectCheck out;
   out.file = file;
-  fx::SourceManager sm;
   fx::DiagnosticSink diags;
-  fx::ParsedEffect parsed = fx::parse_effect_file(file, sm, diags, settings.front_end);
+#ifdef FXKIT_HAS_RUNTIME
+  std::unique_ptr<fx::EffectFile> effect = fx::EffectFile::parse(file, settings.front_end, diags);
+  const fx::SourceManager& sm = effect->sources;
+  const fx::ParsedEffect& parsed = effect->parsed;
+#else
+  fx::SourceManager sm;
+  const fx::ParsedEffect parsed = fx::parse_effect_file(file, sm, diags, settings.front_end);
+#endif
   out.files = parsed.files;
   if (out.files.empty()) out.files.push_back(file);
   out.effect = summarize_effect(parsed.ast, sm);
@@ -103,9 +110,9 @@ EffectCheck check_effect(const std::string& file, const EffectCheckSettings& set
 #ifdef FXKIT_HAS_RUNTIME
   // What select and render refuse, check refuses: the effect model's errors (types,
   // array sizes, defaults) beside the front end's. Its warnings repeat the front end's.
-  if (!diags.has_errors()) {
-    fx::DiagnosticSink model_diags;
-    fx::build_effect_model(parsed, sm, model_diags);
+  fx::DiagnosticSink model_diags;
+  if (parsed.ok) {
+    effect->build_model(model_diags);
     for (const fx::Diagnostic& d : model_diags.diagnostics())
       if (d.severity >= fx::Severity::error) {
         fx::Diagnostic& copy = diags.report(d.severity, d.id, d.range, d.message);
@@ -114,12 +121,13 @@ EffectCheck check_effect(const std::string& file, const EffectCheckSettings& set
       }
   }
   // The shaders of an effect whose front end failed would only repeat its errors.
-  if (settings.compile && settings.compiler && !diags.has_errors()) compile_shaders(parsed, settings, sm, diags, shown);
+  if (settings.compile && settings.compiler && !diags.has_errors()) compile_shaders(*effect, settings, diags, shown);
   else shown.add(diags.diagnostics(), "");
-  if (parsed.ok) shown.add(script_diagnostics(parsed, sm), "");
+  if (parsed.ok) shown.add(script_diagnostics(model_diags), "");
   if (settings.caps && parsed.ok) {
     fx::DiagnosticSink caps_diags;
-    out.runnable = report_techniques(parsed, settings, sm, caps_diags, out);
+    out.runnable = report_techniques(*effect, settings, caps_diags, out);
+    shown.add(model_diags.diagnostics(), "");
     shown.add(caps_diags.diagnostics(), "");
   }
 #else

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 
 #include <nlohmann/json.hpp>
 
@@ -78,15 +79,16 @@ int run_compile(const CompileArgs& args) {
       return kUsageError;
     }
   }
-  fx::SourceManager sm;
-  fx::DiagnosticSink diags;
-  fx::ParsedEffect parsed = fx::parse_effect_file(args.file, sm, diags, options);
-  fx::EffectUnits units(parsed.ast, sm, diags, fx::effect_unit_options(options));
   fx::SpirvCache cache(args.cache_dir);
   // One worker: the passes below compile one after another.
   std::unique_ptr<fx::CompileWorkers> workers = args.workers.start("compile", 1);
   fx::ShaderCompiler compiler({}, &cache, workers.get());
-  fx::EffectPrograms programs(units, compiler, sm);
+  fx::DiagnosticSink diags;
+  std::unique_ptr<fx::EffectFile> effect = fx::EffectFile::parse(args.file, options, diags);
+  const fx::SourceManager& sm = effect->sources;
+  effect->build_programs(diags, &compiler);
+  const fx::EffectUnits& units = *effect->units;
+  fx::EffectPrograms& programs = *effect->programs;
 
   bool failed = diags.has_errors();
   bool matched = args.technique.empty();

@@ -201,18 +201,20 @@ int run_info(const InfoArgs& args) {
     std::fprintf(stderr, "fxkit info: cannot read '%s'\n", args.file.c_str());
     return kUsageError;
   }
-  fx::SourceManager sm;
-  fx::DiagnosticSink diags;
-  fx::ParsedEffect parsed = fx::parse_effect_file(args.file, sm, diags, options);
-  fx::EffectUnits units(parsed.ast, sm, diags, fx::effect_unit_options(options));
   fx::SpirvCache cache(args.cache_dir);
   fx::ShaderCompiler compiler({}, &cache);
-  fx::EffectPrograms programs(units, compiler, sm);
+  fx::DiagnosticSink diags;
+  std::unique_ptr<fx::EffectFile> effect = fx::EffectFile::parse(args.file, options, diags);
+  const fx::SourceManager& sm = effect->sources;
+  const fx::ParsedEffect& parsed = effect->parsed;
+  effect->build_programs(diags, &compiler);
+  const fx::EffectUnits& units = *effect->units;
   std::vector<const fx::PassProgram*> compiled;
-  for (const fx::EffectPass& p : units.passes()) compiled.push_back(&programs.program(p));
+  for (const fx::EffectPass& p : units.passes()) compiled.push_back(&effect->programs->program(p));
   // Folded defaults. The model's own diagnostics repeat the front end's, which are reported.
   fx::DiagnosticSink model_diags;
-  const fx::EffectModel model = fx::build_effect_model(parsed.ast, sm, model_diags);
+  effect->build_model(model_diags);
+  const fx::EffectModel& model = *effect->model;
   auto model_parameter = [&](const fx::ast::Variable& v) -> const fx::Parameter* {
     for (const fx::Parameter& p : model.parameters)
       if (p.decl == &v) return &p;

@@ -5,11 +5,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <memory>
 
 #include <nlohmann/json.hpp>
 
 #include "caps_option.h"
 #include "command.h"
+#include "fx/compile/effect_file.h"
 #include "fx/diagnostic_render.h"
 #include "fx/select/effect_candidates.h"
 
@@ -45,19 +47,20 @@ int run_select(const SelectArgs& args) {
     std::fprintf(stderr, "fxkit select: cannot read '%s'\n", args.file.c_str());
     return kUsageError;
   }
-  fx::SourceManager sm;
   fx::DiagnosticSink diags;
   auto caps = load_caps_option(args.caps, diags);
   if (!caps) {
-    std::fputs(fx::render_text(diags.diagnostics(), sm).c_str(), stderr);
+    std::fputs(fx::render_text(diags.diagnostics(), fx::SourceManager()).c_str(), stderr);
     return kUsageError;
   }
-  fx::ParsedEffect parsed = fx::parse_effect_file(args.file, sm, diags, options);
+  std::unique_ptr<fx::EffectFile> effect = fx::EffectFile::parse(args.file, options, diags);
+  const fx::ParsedEffect& parsed = effect->parsed;
+  const fx::SourceManager& sm = effect->sources;
   fx::EffectSelectionOptions sel_options;
   sel_options.compile = !args.no_compile;
   sel_options.plan.effect_fallback = args.fallback;
   fx::EffectSelection sel;
-  if (parsed.ok) sel = fx::build_effect_selection(parsed.ast, sm, *caps, diags, sel_options);
+  if (parsed.ok) sel = fx::build_effect_selection(*effect, *caps, diags, sel_options);
 
   fx::SelectionCriteria criteria{.distance = args.distance,
                                  .screen_size = args.screen_size,

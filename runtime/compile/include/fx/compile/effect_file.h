@@ -1,8 +1,9 @@
-// fx::EffectFile: one effect file loaded for rendering without hot reload: parsed,
-// modelled, split into translation units, compiled lazily, with its parameter values.
-// What `fxkit render`, `fxkit bench apply` and the rendering tests start from. Hot reload
-// builds the same pieces per version (fx/reload, shared and cached), with the same unit
-// options (effect_unit_options).
+// fx::EffectFile: one effect built the way every consumer builds it: the front end, then
+// on request the effect model with its parameter store, and the translation units (with
+// the unit options the front-end options imply) with their programs, compiled lazily or
+// all at once. `fxkit check`, `compile`, `info`, `select` and `render`, technique
+// validation, hot reload (one EffectFile per version, fx/reload) and the benches run
+// these steps and differ only in where they stop and what they print.
 #pragma once
 #include <memory>
 #include <string>
@@ -26,20 +27,35 @@ inline constexpr const char* kPs1xPrecisionMacro = "FXKIT_PS1X_PRECISION";
 
 struct EffectFile {
   std::string path;
+  FrontEndOptions options;
   SourceManager sources;
   ParsedEffect parsed;
-  std::unique_ptr<EffectModel> model;
-  std::unique_ptr<EffectUnits> units;
-  std::unique_ptr<ShaderCompiler> compiler;
-  std::unique_ptr<EffectPrograms> programs;
-  std::unique_ptr<ParameterStore> params;
+  std::unique_ptr<EffectModel> model;        // after build_model
+  std::unique_ptr<ParameterStore> params;    // after a build_model without errors
+  std::unique_ptr<EffectUnits> units;        // after build_programs
+  std::unique_ptr<ShaderCompiler> compiler;  // the own compiler, when build_programs was given none
+  std::unique_ptr<EffectPrograms> programs;  // after build_programs
 
-  // Loads `path`; null when the front end or the model reported errors (in `sink`). Then
-  // `located`, when given, receives them as `file:line:col: error: ...` text: the sources
-  // their ranges point into end with the failed load.
+  // The front end on the file at `path` (or on `text` named `path`); its diagnostics go to
+  // `sink`, and `parsed.ok` says whether it reported errors.
+  static std::unique_ptr<EffectFile> parse(const std::string& path, const FrontEndOptions& options,
+                                           DiagnosticSink& sink);
+  static std::unique_ptr<EffectFile> parse_text(const std::string& path, std::string text,
+                                                const FrontEndOptions& options, DiagnosticSink& sink);
+  // The effect model, then the parameter store; false (and no store) when the model
+  // reported errors.
+  bool build_model(DiagnosticSink& sink);
+  // The translation units and their (lazily compiled) programs, compiled by `shared`, or by
+  // an own compiler when null. The units' diagnostics go to `sink`.
+  void build_programs(DiagnosticSink& sink, const ShaderCompiler* shared = nullptr);
+
+  // parse + build_model + build_programs: what rendering starts from. Null when the front
+  // end or the model reported errors (in `sink`); then `located`, when given, receives them
+  // as `file:line:col: error: ...` text, since the sources their ranges point into end with
+  // the failed load.
   static std::unique_ptr<EffectFile> load(const std::string& path, const FrontEndOptions& options, DiagnosticSink& sink,
                                           std::string* located = nullptr);
-  // The technique named `name`, or kNoIndex.
+  // The technique named `name`, or kNoIndex (after build_model).
   uint32_t find_technique(std::string_view name) const;
 };
 

@@ -24,6 +24,7 @@ namespace fx {
 
 // Declared, not included, so users of a transaction need not include every layer; members
 // are shared_ptrs.
+struct EffectFile;
 struct EffectModel;
 class EffectUnits;
 class TaskExecutor;
@@ -39,10 +40,11 @@ struct EffectVersion {
   EffectVersion(const EffectVersion&) = delete;
   EffectVersion& operator=(const EffectVersion&) = delete;
 
-  std::string path;     // the effect file
-  uint64_t serial = 0;  // 1 for the first good load, +1 per swap
+  std::string path;                  // the effect file
+  uint64_t serial = 0;               // 1 for the first good load, +1 per swap
+  std::shared_ptr<EffectFile> file;  // the effect as every consumer builds it (fx/compile/effect_file.h)
+  // The file's pieces, sharing its ownership: a holder of one keeps the whole build alive.
   std::shared_ptr<SourceManager> sources;
-  ParsedEffect parsed;
   std::shared_ptr<EffectModel> model;
   std::shared_ptr<EffectUnits> units;        // nullptr when built without a compiler
   std::shared_ptr<EffectPrograms> programs;  // every pass compiled

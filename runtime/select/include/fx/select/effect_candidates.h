@@ -37,9 +37,9 @@ struct EffectSelection {
   std::optional<size_t> first_valid() const { return find_next_valid(techniques); }
 };
 
-// Validates every technique of `effect` on `caps`, builds the candidates and the plan. Model
+// Validates every technique of `effect` on `caps` (validate_effect), builds the candidates and the plan. Model
 // and plan diagnostics (bad annotations, unknown fallbacks) go to `diags`.
-EffectSelection build_effect_selection(const ast::Effect& effect, const SourceManager& sm, const DeviceCaps& caps,
-                                       DiagnosticSink& diags, const EffectSelectionOptions& options = {});
+EffectSelection build_effect_selection(EffectFile& effect, const DeviceCaps& caps, DiagnosticSink& diags,
+                                       const EffectSelectionOptions& options = {});
 
 }  // namespace fx

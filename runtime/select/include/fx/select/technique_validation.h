@@ -21,6 +21,7 @@
 
 namespace fx {
 
+struct EffectFile;
 struct EffectModel;
 struct TechniqueInfo;
 class EffectPrograms;
@@ -60,12 +61,12 @@ TechniqueValidation validate_technique(const EffectModel& model, const Technique
 std::vector<TechniqueValidation> validate_techniques(const EffectModel& model, const DeviceCaps& caps,
                                                      const TechniqueValidationOptions& options = {});
 
-// Builds the model of a parsed effect (its diagnostics go to `diags`) and validates every
-// technique; with `compile`, passes are compiled with `compiler` (a default compiler when
-// null). The one-call path for tools.
-std::vector<TechniqueValidation> validate_effect(const ast::Effect& effect, const SourceManager& sm,
-                                                 const DeviceCaps& caps, DiagnosticSink& diags, bool compile = true,
-                                                 const ShaderCompiler* compiler = nullptr);
+// Every technique of `effect`, the one-call path for tools: its model is built first when
+// it was not (its diagnostics go to `diags`); with `compile`, passes are compiled through
+// its programs, built first when they were not (with `compiler`, or a default one when
+// null; the units' diagnostics repeat the model's and are not reported).
+std::vector<TechniqueValidation> validate_effect(EffectFile& effect, const DeviceCaps& caps, DiagnosticSink& diags,
+                                                 bool compile = true, const ShaderCompiler* compiler = nullptr);
 
 // D3DX FindNextValidTechnique: the first valid technique after `after` (from the start when
 // nullopt), in declaration order.
