@@ -133,5 +133,32 @@ TEST(PassState, StateObjectArrayElementsAreObjectsOfTheirOwn) {
   EXPECT_EQ(passes[2].summary.cull, CullMode::none);
 }
 
+// `StateBlock = <sb>;` applies the stateblock's states at that point of the pass (D3DX9
+// applies the block it captured), shaders included; a later state of the pass wins.
+TEST(PassState, StateBlockStatesApplyWhereThePassNamesIt) {
+  auto b = test::build(R"(
+    float4 VS(float4 p : POSITION) : POSITION { return p; }
+    stateblock Opaque = stateblock_state {
+      CullMode = None; ZWriteEnable = false; VertexShader = compile vs_2_0 VS();
+    };
+    technique T {
+      pass P0 { StateBlock = <Opaque>; }
+      pass P1 { StateBlock = <Opaque>; ZWriteEnable = true; }
+      pass P2 { ZWriteEnable = false; }
+    }
+  )",
+                       true);
+  ASSERT_FALSE(b->diags.has_errors()) << b->text();
+  EXPECT_EQ(b->model.find_parameter("Opaque"), kNoIndex);  // states, not a parameter
+  const auto& passes = b->model.techniques[0].passes;
+  EXPECT_EQ(passes[0].summary.cull, CullMode::none);
+  EXPECT_FALSE(passes[0].summary.depth_write);
+  ASSERT_NE(passes[0].shader(PassStage::vertex), nullptr);
+  EXPECT_EQ(passes[0].shader(PassStage::vertex)->entry, "VS");
+  EXPECT_TRUE(passes[1].summary.depth_write);
+  EXPECT_EQ(passes[2].summary.cull, CullMode::back);
+  EXPECT_EQ(passes[2].shader(PassStage::vertex), nullptr);
+}
+
 }  // namespace
 }  // namespace fx
