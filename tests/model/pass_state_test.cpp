@@ -160,5 +160,29 @@ TEST(PassState, StateBlockStatesApplyWhereThePassNamesIt) {
   EXPECT_EQ(passes[2].shader(PassStage::vertex), nullptr);
 }
 
+// A state computed from a call of an effect function, or from a parameter the application
+// sets, is an expression fxc leaves to the effect runtime at apply time: a located
+// unsupported-state-expression, not a claim that the value is no constant.
+TEST(PassState, StateExpressionsOverParametersAreLocatedAsUnsupported) {
+  auto b = test::build(R"(
+    float4 a;
+    float3 f, g;
+    float bias() { return a.x * 2; }
+    SamplerState S { MipLODBias = bias(); BorderColor = sin(a) + 1; };
+    BlendState B { BlendEnable[0] = f * g; };
+    technique10 T { pass P { SetBlendState(B, float4(0, 0, 0, 0), 0xFFFFFFFF); } }
+  )",
+                       true);
+  std::vector<std::pair<std::string, uint32_t>> found;
+  for (const Diagnostic& d : b->diags.diagnostics())
+    if (d.severity == Severity::error) found.emplace_back(d.id, b->sm->presumed(d.range.begin).line);
+  using Row = std::pair<std::string, uint32_t>;
+  EXPECT_EQ(found, (std::vector<Row>{{"unsupported-state-expression", 5},
+                                     {"unsupported-state-expression", 5},
+                                     {"unsupported-state-expression", 6}}))
+      << b->text();
+  EXPECT_NE(b->text().find("depends on a call of 'bias'"), std::string::npos) << b->text();
+}
+
 }  // namespace
 }  // namespace fx
