@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "fx/ascii_case.h"
+#include "fx/pass_states.h"
 #include "model_build.h"
 #include "model_internal.h"
 
@@ -121,6 +122,8 @@ class Builder {
 
   void add_parameter(const ast::Variable& v, const std::string& cbuffer) {
     if (v.name.empty() || model_.parameter_index.count(v.name)) return;  // duplicates: the checker's report
+    // A stateblock holds pass states, which the passes that name it apply (fx/pass_states.h).
+    if (iequals(v.type.name, "stateblock")) return;
     Parameter p;
     p.name = v.name;
     p.type = model_.types.resolve(v.type, v.storage, v.array_dims, diags_, &const_scope_, initializer_scalars(v));
@@ -276,9 +279,9 @@ class Builder {
       pass.name = p.name;
       pass.annotations = annotations(p.annotations);
       pass.range = p.range;
-      for (const ast::StateAssignment& a : p.states) {
+      for (const ast::StateAssignment* a : applied_pass_states(effect_, p)) {
         ResolvedState r;
-        if (model_detail::resolve_state(a, StateBlock::pass, ctx_, r, &pass.shaders, &pass.unsupported))
+        if (model_detail::resolve_state(*a, StateBlock::pass, ctx_, r, &pass.shaders, &pass.unsupported))
           pass.states.push_back(std::move(r));
       }
       pass.summary = model_detail::summarize_pass(pass.states, model_);

@@ -76,7 +76,34 @@ std::array<float, 4> unpack_color(uint32_t c) {
   return {((c >> 16) & 0xFF) / 255.0f, ((c >> 8) & 0xFF) / 255.0f, (c & 0xFF) / 255.0f, ((c >> 24) & 0xFF) / 255.0f};
 }
 
+// The first part of `e` only the effect runtime could compute when the pass is applied: a
+// call of a function of the effect, or a parameter the application sets that has no value
+// to fold. fxc compiles such a state into an expression (a D3D9 preshader, an fx_4/fx_5
+// FXLVM expression) that D3DX evaluates at apply time.
+const ast::Expr* runtime_part(const ast::Expr& e, const EffectModel& model) {
+  if (e.kind == ast::ExprKind::call &&
+      std::find(model.functions.begin(), model.functions.end(), e.text) != model.functions.end())
+    return &e;
+  if (e.kind == ast::ExprKind::identifier || e.kind == ast::ExprKind::reference) {
+    uint32_t p = model.find_parameter(e.text);
+    if (p != kNoIndex && !model.parameters[p].is_static() && !model.parameters[p].default_value) return &e;
+  }
+  for (const ast::ExprPtr& a : e.args)
+    if (a)
+      if (const ast::Expr* part = runtime_part(*a, model)) return part;
+  return nullptr;
+}
+
 void not_constant(ResolveContext& ctx, const ast::Expr& e, const StateInfo& info) {
+  if (const ast::Expr* part = runtime_part(e, ctx.model)) {
+    std::string what = part->kind == ast::ExprKind::call ? "a call of '" + std::string(part->text) + "'"
+                                                         : "the parameter '" + std::string(part->text) + "'";
+    ctx.diags.error("unsupported-state-expression", e.range,
+                    "the value of '" + std::string(info.name) + "' depends on " + what +
+                        ": fxc compiles it to an expression the effect runtime evaluates when the pass is "
+                        "applied, which fxkit does not run; set the state to a constant or to a parameter");
+    return;
+  }
   // Re-fold loudly so the user sees what is not constant.
   if (!fold_constant(e, ctx.scope, ctx.diags, false)) return;
   ctx.diags.error("bad-state-value", e.range,

@@ -146,6 +146,23 @@ TEST(EffectUnits, AShaderArrayIndexedInAPassOffersEveryElement) {
   EXPECT_EQ(vs->choices[2].profile, "vs_2_0");
 }
 
+// `StateBlock = <sb>;` brings the stateblock's shaders into the pass; the pass's own
+// assignment of a stage after it wins.
+TEST(EffectUnits, AStateBlockBringsItsShadersIntoThePass) {
+  auto l = load(data("tests/compile/data/fxc_accepts/stateblock_applied_by_a_pass.fx"));
+  ASSERT_FALSE(l->diags.has_errors()) << render_text(l->diags.diagnostics(), l->sm);
+  for (const char* name : {"Plain", "Lit"}) {
+    const EffectPass* pass = l->units->find("StateBlocks", name);
+    ASSERT_TRUE(pass) << name;
+    const StageUnit* vs = pass->find(ShaderStage::vertex);
+    const StageUnit* ps = pass->find(ShaderStage::fragment);
+    ASSERT_TRUE(vs && ps) << name;
+    EXPECT_EQ(vs->function, "VS");
+    EXPECT_EQ(ps->function, "PS");
+    EXPECT_EQ(ps->arguments, std::vector<std::string>{std::string(name) == "Lit" ? "true" : "false"}) << name;
+  }
+}
+
 // A D3D9 pass with an HLSL vertex shader and no pixel shader: the generated texture stages
 // read the colours, texture coordinates and fog the vertex shader writes (return value or
 // struct, out and inout parameters, SV_ forms), each with its own components.

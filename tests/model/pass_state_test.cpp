@@ -133,5 +133,56 @@ TEST(PassState, StateObjectArrayElementsAreObjectsOfTheirOwn) {
   EXPECT_EQ(passes[2].summary.cull, CullMode::none);
 }
 
+// `StateBlock = <sb>;` applies the stateblock's states at that point of the pass (D3DX9
+// applies the block it captured), shaders included; a later state of the pass wins.
+TEST(PassState, StateBlockStatesApplyWhereThePassNamesIt) {
+  auto b = test::build(R"(
+    float4 VS(float4 p : POSITION) : POSITION { return p; }
+    stateblock Opaque = stateblock_state {
+      CullMode = None; ZWriteEnable = false; VertexShader = compile vs_2_0 VS();
+    };
+    technique T {
+      pass P0 { StateBlock = <Opaque>; }
+      pass P1 { StateBlock = <Opaque>; ZWriteEnable = true; }
+      pass P2 { ZWriteEnable = false; }
+    }
+  )",
+                       true);
+  ASSERT_FALSE(b->diags.has_errors()) << b->text();
+  EXPECT_EQ(b->model.find_parameter("Opaque"), kNoIndex);  // states, not a parameter
+  const auto& passes = b->model.techniques[0].passes;
+  EXPECT_EQ(passes[0].summary.cull, CullMode::none);
+  EXPECT_FALSE(passes[0].summary.depth_write);
+  ASSERT_NE(passes[0].shader(PassStage::vertex), nullptr);
+  EXPECT_EQ(passes[0].shader(PassStage::vertex)->entry, "VS");
+  EXPECT_TRUE(passes[1].summary.depth_write);
+  EXPECT_EQ(passes[2].summary.cull, CullMode::back);
+  EXPECT_EQ(passes[2].shader(PassStage::vertex), nullptr);
+}
+
+// A state computed from a call of an effect function, or from a parameter the application
+// sets, is an expression fxc leaves to the effect runtime at apply time: a located
+// unsupported-state-expression, not a claim that the value is no constant.
+TEST(PassState, StateExpressionsOverParametersAreLocatedAsUnsupported) {
+  auto b = test::build(R"(
+    float4 a;
+    float3 f, g;
+    float bias() { return a.x * 2; }
+    SamplerState S { MipLODBias = bias(); BorderColor = sin(a) + 1; };
+    BlendState B { BlendEnable[0] = f * g; };
+    technique10 T { pass P { SetBlendState(B, float4(0, 0, 0, 0), 0xFFFFFFFF); } }
+  )",
+                       true);
+  std::vector<std::pair<std::string, uint32_t>> found;
+  for (const Diagnostic& d : b->diags.diagnostics())
+    if (d.severity == Severity::error) found.emplace_back(d.id, b->sm->presumed(d.range.begin).line);
+  using Row = std::pair<std::string, uint32_t>;
+  EXPECT_EQ(found, (std::vector<Row>{{"unsupported-state-expression", 5},
+                                     {"unsupported-state-expression", 5},
+                                     {"unsupported-state-expression", 6}}))
+      << b->text();
+  EXPECT_NE(b->text().find("depends on a call of 'bias'"), std::string::npos) << b->text();
+}
+
 }  // namespace
 }  // namespace fx

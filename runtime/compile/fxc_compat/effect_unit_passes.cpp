@@ -9,6 +9,7 @@
 #include "fx/ascii_case.h"
 #include "fx/emulation/assembly.h"
 #include "fx/emulation/fixed_function.h"
+#include "fx/pass_states.h"
 #include "fx/state_table.h"
 
 namespace fx {
@@ -37,7 +38,8 @@ void EffectUnitBuilder::add_technique(const ast::Technique& t, const std::string
     pass.pass_index = pass_index++;
     pass.range = p.range;
     bool null_pixel = false;
-    for (const ast::StateAssignment& s : p.states) {
+    for (const ast::StateAssignment* applied : applied_pass_states(effect_, p)) {
+      const ast::StateAssignment& s = *applied;
       std::optional<ShaderStage> stage = stage_of_state(s.name);
       if (!stage || !s.value) continue;
       StageUnit ps;

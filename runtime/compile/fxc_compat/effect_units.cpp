@@ -12,6 +12,7 @@
 #include "fx/ascii_case.h"
 #include "fx/state_table.h"
 #include "multisample_operator.h"
+#include "untyped_sampler.h"
 
 namespace fx {
 
@@ -180,6 +181,7 @@ void EffectUnitBuilder::build() {
   respelled_ = detail::flat_initializer_spellings(toks_);
   respelled_.merge(detail::case_insensitive_type_spellings(toks_, u_.symbols_));
   respelled_.merge(detail::multisample_operator_spellings(toks_));
+  respelled_.merge(detail::untyped_sampler_spellings(toks_));
   respell_helper_uniforms();
   emit_hlsl();
   for (uint32_t i = 0; i < u_.decls_.size(); ++i) {
