@@ -50,7 +50,7 @@ void OneShotCommands::reset() {
   cmd_ = VK_NULL_HANDLE;
 }
 
-bool OneShotCommands::run(const RecordCommands& record, DiagnosticSink& sink, uint64_t timeout_ns) {
+bool OneShotCommands::run(const RecordCommands& record, DiagnosticSink& sink) {
   if (!cmd_) {
     sink.error("vk-invalid-submission", {}, "OneShotCommands used after reset or move");
     return false;
@@ -65,15 +65,10 @@ bool OneShotCommands::run(const RecordCommands& record, DiagnosticSink& sink, ui
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &cmd_;
   if (!check(vkQueueSubmit(queue_, 1, &submit, fence_), sink, "vkQueueSubmit")) return false;
-  VkResult waited = vkWaitForFences(device_, 1, &fence_, VK_TRUE, timeout_ns);
-  if (waited == VK_TIMEOUT) {
-    // The fence stays unsignalled and in use; waiting for idle keeps the objects valid.
-    vkDeviceWaitIdle(device_);
-    vkResetFences(device_, 1, &fence_);
-    sink.error("vk-timeout", {},
-               "one-shot submission did not finish within " + std::to_string(timeout_ns / 1'000'000) + " ms");
-    return false;
-  }
+  // No deadline: a slow device (a CPU driver on a loaded machine) finishes late, and a hung
+  // one is lost (VK_ERROR_DEVICE_LOST, reported below); a timeout could not abandon the
+  // submission anyway, since its pool and fence stay in use until the device is done.
+  VkResult waited = vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX);
   if (!check(waited, sink, "vkWaitForFences")) return false;
   return check(vkResetFences(device_, 1, &fence_), sink, "vkResetFences");
 }

@@ -28,8 +28,9 @@ class OneShotCommands {
   OneShotCommands& operator=(const OneShotCommands&) = delete;
   ~OneShotCommands() { reset(); }
 
-  // Records, submits and waits up to `timeout_ns`; "vk-timeout" if the GPU does not finish.
-  bool run(const RecordCommands& record, DiagnosticSink& sink, uint64_t timeout_ns = 10'000'000'000ull);
+  // Records, submits and waits until the device finishes it or is lost (no deadline: a slow
+  // device is not an error, and a pending submission cannot be abandoned).
+  bool run(const RecordCommands& record, DiagnosticSink& sink);
 
   void reset();
 
