@@ -257,7 +257,8 @@ class Effect {
   bool set_buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset = 0, VkDeviceSize range = VK_WHOLE_SIZE);
   // The same for the storage image `name` (RWTexture1D/2D/3D and arrays): the application's
   // view, in VK_IMAGE_LAYOUT_GENERAL, of an image with VK_IMAGE_USAGE_STORAGE_BIT. Until then a
-  // zeroed 2D image the size of the target serves an RWTexture2D.
+  // zeroed stand-in of the texture's shape serves it: the target's width (1D), its size (2D),
+  // its size and 4 deep (3D), 4 layers (1D and 2D arrays).
   bool set_storage_image(std::string_view name, VkImageView view);
   // The same for the texel buffer `name` (Buffer<T>, RWBuffer<T>): the application's buffer
   // view (VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT or STORAGE_TEXEL_BUFFER_BIT). Until then a
