@@ -639,6 +639,14 @@ bool EffectBinding::dispatch(VkCommandBuffer cmd, uint32_t technique, uint32_t p
   return ok;
 }
 
+bool EffectBinding::dispatch_compute_passes(VkCommandBuffer cmd, uint32_t technique, uint32_t width, uint32_t height,
+                                            DiagnosticSink& sink) {
+  for (uint32_t p = 0; p < pass_count(technique); ++p)
+    if (compute_pass(technique, p) && !dispatch(cmd, technique, p, dispatch_groups(technique, p, width, height), sink))
+      return false;
+  return true;
+}
+
 void EffectBinding::end() {
   if (active_) recorder_->end();
   active_ = nullptr;

@@ -167,6 +167,11 @@ class Technique {
   // ("simulate, then draw": dispatch the compute passes, then begin() and apply() the
   // others). False, with the reason in messages(), when it is no compute pass.
   bool dispatch(VkCommandBuffer cmd, uint32_t pass, uint32_t x, uint32_t y = 1, uint32_t z = 1);
+  // Dispatches every compute pass, in pass order, as fxkit render does before it draws: each
+  // with its `Dispatch` pass annotation's workgroup counts (`int3 Dispatch = {64, 1, 1};`),
+  // else one thread per pixel of a `width` x `height` target. Outside rendering and
+  // begin()/end(); the draw loop then skips the compute passes. True when there are none.
+  bool dispatch_compute_passes(VkCommandBuffer cmd, uint32_t width, uint32_t height);
 
  private:
   friend class Effect;
