@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <fstream>
 
@@ -54,6 +55,12 @@ struct Rig {
   std::unique_ptr<fxkit::Offscreen> image;
   std::vector<fxkit::Message> errors;
   explicit operator bool() const { return device && mesh && image; }
+  // The red, green and blue of the image's centre pixel.
+  std::array<uint8_t, 3> centre() const {
+    const auto rgba = image->read_rgba8();
+    const size_t c = (size_t(image->height() / 2) * image->width() + image->width() / 2) * 4;
+    return {rgba.at(c), rgba.at(c + 1), rgba.at(c + 2)};
+  }
 };
 
 class PublicApiTest : public VulkanTest {
@@ -378,9 +385,7 @@ TEST_F(PublicApiTest, SetMatrixPerObjectDrawsEachValueAndFollowsReloads) {
       technique.end();
       r.image->end(cmd);
     }));
-    const auto rgba = r.image->read_rgba8();
-    const size_t c = (size_t(r.image->height() / 2) * r.image->width() + r.image->width() / 2) * 4;
-    return std::array<uint8_t, 3>{rgba.at(c), rgba.at(c + 1), rgba.at(c + 2)};
+    return r.centre();
   };
   EXPECT_NE(two_objects(off, off), sphere) << "both off screen";
   EXPECT_EQ(two_objects(off, on), sphere) << "the second object draws with its own matrix";
@@ -796,9 +801,7 @@ technique one { pass p0 { CullMode = None; VertexShader = compile vs_2_0 VS(); P
       if (begun) begun->end();
       r.image->end(cmd);
     }));
-    const auto rgba = r.image->read_rgba8();
-    const size_t c = (size_t(r.image->height() / 2) * r.image->width() + r.image->width() / 2) * 4;
-    return std::array<uint8_t, 3>{rgba.at(c), rgba.at(c + 1), rgba.at(c + 2)};
+    return r.centre();
   };
   const auto blue = frame({{&two, on}});
   const auto orange = frame({{&one, on}});
@@ -870,11 +873,10 @@ technique11 T {
   ASSERT_TRUE(buffer->read(written, sizeof written));
   EXPECT_FLOAT_EQ(written[4 * 2], 0.5f);
   EXPECT_FLOAT_EQ(written[4 * 3 + 1], 0.5f);
-  const auto rgba = r.image->read_rgba8();
-  const size_t c = (size_t(r.image->height() / 2) * r.image->width() + r.image->width() / 2) * 4;
-  EXPECT_NEAR(rgba.at(c), 191, 1);  // Read[3] = (0.75, 0.5, 1)
-  EXPECT_NEAR(rgba.at(c + 1), 128, 1);
-  EXPECT_EQ(rgba.at(c + 2), 255);
+  const std::array<uint8_t, 3> centre = r.centre();
+  EXPECT_NEAR(centre[0], 191, 1);  // Read[3] = (0.75, 0.5, 1)
+  EXPECT_NEAR(centre[1], 128, 1);
+  EXPECT_EQ(centre[2], 255);
 }
 
 // An AppendStructuredBuffer and a ConsumeStructuredBuffer on one application buffer and one
@@ -939,11 +941,10 @@ technique11 T {
   float appended[16] = {};
   ASSERT_TRUE(items->read(appended, sizeof appended));
   for (int i = 0; i < 4; ++i) EXPECT_FLOAT_EQ(appended[4 * i], 0.25f * float(i));
-  const auto rgba = r.image->read_rgba8();
-  const size_t c = (size_t(r.image->height() / 2) * r.image->width() + r.image->width() / 2) * 4;
-  EXPECT_NEAR(rgba.at(c), 191, 1);  // the last appended item, (0.75, 0.5, 1), consumed first
-  EXPECT_NEAR(rgba.at(c + 1), 128, 1);
-  EXPECT_EQ(rgba.at(c + 2), 255);
+  const std::array<uint8_t, 3> centre = r.centre();
+  EXPECT_NEAR(centre[0], 191, 1);  // the last appended item, (0.75, 0.5, 1), consumed first
+  EXPECT_NEAR(centre[1], 128, 1);
+  EXPECT_EQ(centre[2], 255);
 }
 
 // A tbuffer is a storage buffer: the zeroed stand-in draws black, the application's buffer
@@ -970,9 +971,7 @@ technique11 T { pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelS
       technique.end();
       r.image->end(cmd);
     }));
-    const auto rgba = r.image->read_rgba8();
-    const size_t c = (size_t(r.image->height() / 2) * r.image->width() + r.image->width() / 2) * 4;
-    return std::array<uint8_t, 3>{rgba.at(c), rgba.at(c + 1), rgba.at(c + 2)};
+    return r.centre();
   };
   EXPECT_EQ(centre(), (std::array<uint8_t, 3>{0, 0, 0})) << "the zeroed stand-in" << text(effect.messages());
   fx::DiagnosticSink sink;
