@@ -125,6 +125,8 @@ class Checker {
   void check_leaf(const StateInfo& info, const ast::Expr& value);
   void check_name(const StateInfo& info, const ast::Expr& value);
   void check_shader(const StateInfo& info, const ast::Expr& value);
+  // ConstructGSWithSO's declaration strings (and fx_5_0's rasterized stream) after its shader.
+  void check_stream_out(const ast::Expr& construct);
   void check_compile(const StateInfo& info, std::string_view profile, SourceRange profile_range,
                      std::string_view function, SourceRange range);
   void check_symbol_type(const StateInfo& info, const Symbol& symbol, const ast::Expr& value);

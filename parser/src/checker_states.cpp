@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "checker_internal.h"
+#include "fx/stream_out_decl.h"
 
 namespace fx::check {
 namespace {
@@ -487,6 +488,7 @@ void Checker::check_shader(const StateInfo& info, const ast::Expr& e) {
         // ConstructGSWithSO(shader, ...): the shader may be a vertex shader, whose output is
         // then streamed out with no geometry stage.
         const ast::Expr& shader = *e.args[0];
+        if (iequals(e.text, "ConstructGSWithSO")) check_stream_out(e);
         std::string_view profile =
             shader.kind == K::compile ? std::string_view(shader.text)
             : shader.kind == K::call && iequals(shader.text, "CompileShader") && !shader.args.empty() && shader.args[0]
@@ -510,6 +512,37 @@ void Checker::check_shader(const StateInfo& info, const ast::Expr& e) {
       }
       return;
     default: return;
+  }
+}
+
+void Checker::check_stream_out(const ast::Expr& construct) {
+  for (size_t i = 1; i < construct.args.size(); ++i) {
+    const ast::Expr* arg = construct.args[i];
+    if (!arg) continue;
+    if (arg->kind == ast::ExprKind::int_literal) {
+      // fx_5_0: ConstructGSWithSO(shader, decl0, decl1, decl2, decl3, rasterized stream)
+      if (arg->number >= kStreamOutSlots)
+        diags_.error("bad-stream-out-decl", arg->range,
+                     "rasterized stream " + std::string(arg->text) + " is out of range: 0 to " +
+                         std::to_string(kStreamOutSlots - 1) + ", or -1 for none");
+      continue;
+    }
+    if (arg->kind != ast::ExprKind::string_literal) continue;
+    const std::string_view text = arg->text;
+    // A problem's place inside the literal when the literal is written as one plain string.
+    const std::string_view written = arg->range.valid() && !sm_.is_expansion(arg->range.begin)
+                                         ? sm_.text_at(arg->range.begin).substr(0, text.size() + 2)
+                                         : std::string_view();
+    const bool plain = written.size() == text.size() + 2 && written.front() == '"' &&
+                       written.substr(1, text.size()) == text && written.back() == '"';
+    for (const StreamOutProblem& p : parse_stream_out_decl(text).problems) {
+      SourceRange at = arg->range;
+      if (plain) {
+        at.begin = arg->range.begin.offset(1 + p.offset);
+        at.end = at.begin.offset(std::max(1u, p.length));
+      }
+      diags_.error("bad-stream-out-decl", at, "stream-output declaration: " + p.message);
+    }
   }
 }
 

@@ -30,6 +30,19 @@ void remember(const detail::EffectState& s, const fx::EffectVersion& version, co
   serial = version.serial;
 }
 
+// The live version's binding with the application's resources bound, and the index `t` of
+// the technique `name` (kept in the Technique's fields as remember() does); null: none.
+fx::vk::EffectBinding* dispatch_binding(detail::EffectState& s, const std::string& name, uint64_t& serial,
+                                        uint32_t& index, uint32_t& passes, uint32_t& t) {
+  auto version = s.handle.version();
+  fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
+  if (!binding) return nullptr;
+  if (!name.empty()) remember(s, *version, name, serial, index, passes);
+  t = name.empty() ? s.handle.technique() : index;
+  if (s.textures_serial != version->serial) s.bind_app_textures(*version, *binding);
+  return binding;
+}
+
 }  // namespace
 
 namespace detail {
@@ -124,16 +137,22 @@ bool Technique::compute_pass(uint32_t pass) const {
 }
 
 bool Technique::dispatch(VkCommandBuffer cmd, uint32_t pass, uint32_t x, uint32_t y, uint32_t z) {
-  if (!effect_) return false;
-  detail::EffectState& s = *effect_;
-  auto version = s.handle.version();
-  fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
+  uint32_t t = 0;
+  fx::vk::EffectBinding* binding =
+      effect_ ? dispatch_binding(*effect_, name_, resolved_serial_, resolved_, passes_, t) : nullptr;
   if (!binding) return false;
-  if (!name_.empty()) remember(s, *version, name_, resolved_serial_, resolved_, passes_);
-  const uint32_t t = name_.empty() ? s.handle.technique() : resolved_;
-  if (s.textures_serial != version->serial) s.bind_app_textures(*version, *binding);
-  const bool ok = binding->dispatch(cmd, t, pass, {x, y, z}, s.sink);
-  if (!s.sink.diagnostics().empty()) s.keep_problems();
+  const bool ok = binding->dispatch(cmd, t, pass, {x, y, z}, effect_->sink);
+  if (!effect_->sink.diagnostics().empty()) effect_->keep_problems();
+  return ok;
+}
+
+bool Technique::dispatch_compute_passes(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
+  uint32_t t = 0;
+  fx::vk::EffectBinding* binding =
+      effect_ ? dispatch_binding(*effect_, name_, resolved_serial_, resolved_, passes_, t) : nullptr;
+  if (!binding) return false;
+  const bool ok = binding->dispatch_compute_passes(cmd, t, width, height, effect_->sink);
+  if (!effect_->sink.diagnostics().empty()) effect_->keep_problems();
   return ok;
 }
 

@@ -18,10 +18,10 @@ struct ImageSlot {
   std::string name;
   DescriptorKind kind = DescriptorKind::combined_image_sampler;
   VkSampler sampler = VK_NULL_HANDLE;
-  uint32_t texture_param = kNoIndex;              // the texture parameter it samples
-  std::shared_ptr<const EffectTextureData> data;  // the effect's own texture
-  VkFormat storage_format = VK_FORMAT_UNDEFINED;  // a storage image's stand-in format
-  bool storage_2d = false;                        // ... and whether a 2D stand-in fits it
+  uint32_t texture_param = kNoIndex;               // the texture parameter it samples
+  std::shared_ptr<const EffectTextureData> data;   // the effect's own texture
+  VkFormat storage_format = VK_FORMAT_UNDEFINED;   // a storage image's stand-in format
+  std::optional<StorageImageShape> storage_shape;  // ... and its shape (none: no stand-in fits)
 };
 
 // A uniform block of a pass, packed by the parameter store (block id `id`) straight into
@@ -250,7 +250,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
         if (image.kind == DescriptorKind::storage_image) {  // EffectStorage's, bound in bind_textures()
           const uint32_t param = model.find_parameter(image.name);
           if (param != kNoIndex) slot.storage_format = storage_image_format(model.parameters[param].type.element);
-          slot.storage_2d = image.dim == ImageDim::dim_2d && !image.arrayed && image.count == 1;
+          slot.storage_shape = storage_image_shape(image.dim, image.arrayed, image.count);
           pass->images.push_back(std::move(slot));
           continue;
         }
@@ -414,10 +414,10 @@ bool EffectBinding::bind_textures(DiagnosticSink& sink) {
       for (ImageSlot& slot : pass->images) {
         if (slot.kind == DescriptorKind::storage_image) {
           const VkImageView view =
-              storage_.image(slot.name, slot.storage_format, slot.storage_2d, storage_extent_, sink);
-          if (!view ||
-              !pass->resources->bind(slot.name, Texture::wrap(view, VK_IMAGE_LAYOUT_GENERAL, ImageKind::image2d),
-                                     VK_NULL_HANDLE, sink))
+              storage_.image(slot.name, slot.storage_format, slot.storage_shape, storage_extent_, sink);
+          const ImageKind kind = slot.storage_shape ? slot.storage_shape->kind : ImageKind::image2d;
+          if (!view || !pass->resources->bind(slot.name, Texture::wrap(view, VK_IMAGE_LAYOUT_GENERAL, kind),
+                                              VK_NULL_HANDLE, sink))
             return false;
           continue;
         }
@@ -637,6 +637,14 @@ bool EffectBinding::dispatch(VkCommandBuffer cmd, uint32_t technique, uint32_t p
   const bool ok = recorder_->dispatch(cmd, desc, groups.data(), sink);
   if (descriptor_sets_.pool_count() != pools) update_object_count();
   return ok;
+}
+
+bool EffectBinding::dispatch_compute_passes(VkCommandBuffer cmd, uint32_t technique, uint32_t width, uint32_t height,
+                                            DiagnosticSink& sink) {
+  for (uint32_t p = 0; p < pass_count(technique); ++p)
+    if (compute_pass(technique, p) && !dispatch(cmd, technique, p, dispatch_groups(technique, p, width, height), sink))
+      return false;
+  return true;
 }
 
 void EffectBinding::end() {

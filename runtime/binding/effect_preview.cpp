@@ -107,11 +107,7 @@ bool EffectPreview::record_passes(VkCommandBuffer cmd, EffectBinding& binding, u
                                   DiagnosticSink& sink) {
   const VkViewport viewport{0.0f, float(desc_.height), float(desc_.width), -float(desc_.height), 0.0f, 1.0f};
   // The technique's compute passes first, outside rendering ("simulate, then draw").
-  bool recorded = true;
-  for (uint32_t p = 0; p < binding.pass_count(technique) && recorded; ++p)
-    if (binding.compute_pass(technique, p))
-      recorded =
-          binding.dispatch(cmd, technique, p, binding.dispatch_groups(technique, p, desc_.width, desc_.height), sink);
+  bool recorded = binding.dispatch_compute_passes(cmd, technique, desc_.width, desc_.height, sink);
   ClearValues clear;
   clear.color = desc_.clear;
   target_->begin(cmd, clear);

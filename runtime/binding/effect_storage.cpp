@@ -89,20 +89,24 @@ std::optional<VkDescriptorBufferInfo> EffectStorage::buffer(std::string_view nam
   return b.info;
 }
 
-VkImageView EffectStorage::image(std::string_view name, VkFormat format, bool two_d, VkExtent2D extent,
-                                 DiagnosticSink& sink) {
+VkImageView EffectStorage::image(std::string_view name, VkFormat format, std::optional<StorageImageShape> shape,
+                                 VkExtent2D extent, DiagnosticSink& sink) {
   StorageImage& i = image_entry(name);
   if (i.view) return i.view;
-  if (!two_d || format == VK_FORMAT_UNDEFINED) {
+  if (!shape || format == VK_FORMAT_UNDEFINED) {
     sink.error("vk-storage-image-unbound", {},
                "storage image '" + i.name + "' has no view: set_storage_image() binds one (stand-ins are " +
-                   "2D images of a 32-bit float, int or uint element)");
+                   "single 1D, 2D or 3D images or arrays of a 32-bit float, int or uint element)");
     return VK_NULL_HANDLE;
   }
   ImageDesc desc;
+  desc.kind = shape->kind;
   desc.format = format;
   desc.width = std::max(1u, extent.width);
-  desc.height = std::max(1u, extent.height);
+  desc.height = shape->kind == ImageKind::image1d ? 1 : std::max(1u, extent.height);
+  desc.depth = shape->kind == ImageKind::image3d ? kStandInLayers : 1;
+  desc.array_layers = shape->arrayed ? kStandInLayers : 1;
+  desc.array_view = shape->arrayed;
   desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   desc.debug_name = "fxkit storage image stand-in";
   std::optional<GpuImage> image = GpuImage::create(*ctx_, desc, sink);
@@ -122,6 +126,18 @@ VkImageView EffectStorage::image(std::string_view name, VkFormat format, bool tw
   i.stand_in = std::move(*image);
   i.view = i.stand_in->view();
   return i.view;
+}
+
+std::optional<StorageImageShape> storage_image_shape(ImageDim dim, bool arrayed, uint32_t count) {
+  if (count != 1) return std::nullopt;
+  switch (dim) {
+    case ImageDim::dim_1d: return StorageImageShape{ImageKind::image1d, arrayed};
+    case ImageDim::dim_2d: return StorageImageShape{ImageKind::image2d, arrayed};
+    case ImageDim::dim_3d:
+      if (!arrayed) return StorageImageShape{ImageKind::image3d, false};
+      return std::nullopt;
+    default: return std::nullopt;
+  }
 }
 
 VkFormat storage_image_format(std::string_view element) {

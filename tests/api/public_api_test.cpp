@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <fstream>
 
@@ -54,6 +55,12 @@ struct Rig {
   std::unique_ptr<fxkit::Offscreen> image;
   std::vector<fxkit::Message> errors;
   explicit operator bool() const { return device && mesh && image; }
+  // The red, green and blue of the image's centre pixel.
+  std::array<uint8_t, 3> centre() const {
+    const auto rgba = image->read_rgba8();
+    const size_t c = (size_t(image->height() / 2) * image->width() + image->width() / 2) * 4;
+    return {rgba.at(c), rgba.at(c + 1), rgba.at(c + 2)};
+  }
 };
 
 class PublicApiTest : public VulkanTest {
@@ -378,9 +385,7 @@ TEST_F(PublicApiTest, SetMatrixPerObjectDrawsEachValueAndFollowsReloads) {
       technique.end();
       r.image->end(cmd);
     }));
-    const auto rgba = r.image->read_rgba8();
-    const size_t c = (size_t(r.image->height() / 2) * r.image->width() + r.image->width() / 2) * 4;
-    return std::array<uint8_t, 3>{rgba.at(c), rgba.at(c + 1), rgba.at(c + 2)};
+    return r.centre();
   };
   EXPECT_NE(two_objects(off, off), sphere) << "both off screen";
   EXPECT_EQ(two_objects(off, on), sphere) << "the second object draws with its own matrix";
@@ -796,9 +801,7 @@ technique one { pass p0 { CullMode = None; VertexShader = compile vs_2_0 VS(); P
       if (begun) begun->end();
       r.image->end(cmd);
     }));
-    const auto rgba = r.image->read_rgba8();
-    const size_t c = (size_t(r.image->height() / 2) * r.image->width() + r.image->width() / 2) * 4;
-    return std::array<uint8_t, 3>{rgba.at(c), rgba.at(c + 1), rgba.at(c + 2)};
+    return r.centre();
   };
   const auto blue = frame({{&two, on}});
   const auto orange = frame({{&one, on}});
@@ -870,11 +873,118 @@ technique11 T {
   ASSERT_TRUE(buffer->read(written, sizeof written));
   EXPECT_FLOAT_EQ(written[4 * 2], 0.5f);
   EXPECT_FLOAT_EQ(written[4 * 3 + 1], 0.5f);
-  const auto rgba = r.image->read_rgba8();
-  const size_t c = (size_t(r.image->height() / 2) * r.image->width() + r.image->width() / 2) * 4;
-  EXPECT_NEAR(rgba.at(c), 191, 1);  // Read[3] = (0.75, 0.5, 1)
-  EXPECT_NEAR(rgba.at(c + 1), 128, 1);
-  EXPECT_EQ(rgba.at(c + 2), 255);
+  const std::array<uint8_t, 3> centre = r.centre();
+  EXPECT_NEAR(centre[0], 191, 1);  // Read[3] = (0.75, 0.5, 1)
+  EXPECT_NEAR(centre[1], 128, 1);
+  EXPECT_EQ(centre[2], 255);
+}
+
+// An AppendStructuredBuffer and a ConsumeStructuredBuffer on one application buffer and one
+// counter (glslang's "name@count" buffer), as FX11 binds one UAV to both: a compute pass
+// appends four items, the next consumes two into an RWStructuredBuffer, and the draw shows
+// the last item consumed first.
+TEST_F(PublicApiTest, AppendedItemsAreConsumedInTheNextPassAndDrawn) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  fxkit::Effect effect = r.device->load(write_effect("api_append_consume.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+AppendStructuredBuffer<float4> Emitted;
+ConsumeStructuredBuffer<float4> Pending;
+RWStructuredBuffer<float4> Taken;
+[numthreads(1, 1, 1)] void Emit() {
+  for (uint i = 0; i < 4; ++i) Emitted.Append(float4(0.25 * i, 0.5, 1, 1));
+}
+[numthreads(1, 1, 1)] void Take() {
+  Taken[0] = Pending.Consume();
+  Taken[1] = Pending.Consume();
+}
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target { return Taken[0]; }
+technique11 T {
+  pass Emit { SetComputeShader(CompileShader(cs_5_0, Emit())); }
+  pass Take { SetComputeShader(CompileShader(cs_5_0, Take())); }
+  pass Draw { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); }
+}
+)"));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  fx::DiagnosticSink sink;
+  auto items = fx::vk::Buffer::create(
+      ctx(), {64, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, fx::vk::MemoryUsage::readback, "test items"}, sink);
+  auto counter = fx::vk::Buffer::create(
+      ctx(), {16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, fx::vk::MemoryUsage::readback, "test item count"}, sink);
+  ASSERT_TRUE(items && counter);
+  const uint32_t zeros[4] = {};
+  ASSERT_TRUE(counter->write(zeros, sizeof zeros));
+  EXPECT_TRUE(effect.set_buffer("Emitted", items->handle()));
+  EXPECT_TRUE(effect.set_buffer("Emitted@count", counter->handle()));
+  EXPECT_TRUE(effect.set_buffer("Pending", items->handle()));
+  EXPECT_TRUE(effect.set_buffer("Pending@count", counter->handle()));
+  fxkit::Technique technique = effect.technique("T");
+  ASSERT_TRUE(technique.valid()) << technique.reason();
+
+  r.device->begin_frame();
+  bool dispatched = false, drawn = false;
+  ASSERT_TRUE(r.device->submit([&](VkCommandBuffer cmd) {
+    dispatched = technique.dispatch(cmd, 0, 1) && technique.dispatch(cmd, 1, 1);
+    r.image->begin(cmd);
+    if (technique.begin(cmd, r.image->viewport(), r.image->scissor()) && technique.apply(2))
+      r.mesh->draw(cmd), drawn = true;
+    technique.end();
+    r.image->end(cmd);
+  }));
+  EXPECT_TRUE(dispatched) << text(effect.messages());
+  EXPECT_TRUE(drawn) << text(effect.messages());
+  uint32_t count = 99;
+  ASSERT_TRUE(counter->read(&count, sizeof count));
+  EXPECT_EQ(count, 2u) << "four appended, two consumed";
+  float appended[16] = {};
+  ASSERT_TRUE(items->read(appended, sizeof appended));
+  for (int i = 0; i < 4; ++i) EXPECT_FLOAT_EQ(appended[4 * i], 0.25f * float(i));
+  const std::array<uint8_t, 3> centre = r.centre();
+  EXPECT_NEAR(centre[0], 191, 1);  // the last appended item, (0.75, 0.5, 1), consumed first
+  EXPECT_NEAR(centre[1], 128, 1);
+  EXPECT_EQ(centre[2], 255);
+}
+
+// A tbuffer is a storage buffer: the zeroed stand-in draws black, the application's buffer
+// (set_buffer by the tbuffer's name) draws its member.
+TEST_F(PublicApiTest, TbufferReadsTheApplicationsBuffer) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  fxkit::Effect effect = r.device->load(write_effect("api_tbuffer.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+tbuffer Lighting { float4 Ambient; float4 Tint; };
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target { return float4(Tint.rgb, 1); }
+technique11 T { pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)"));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  fxkit::Technique technique = effect.technique("T");
+  ASSERT_TRUE(technique.valid()) << technique.reason();
+  const auto centre = [&] {
+    r.device->begin_frame();
+    EXPECT_TRUE(r.device->submit([&](VkCommandBuffer cmd) {
+      r.image->begin(cmd);
+      if (technique.begin(cmd, r.image->viewport(), r.image->scissor()) && technique.apply(0)) r.mesh->draw(cmd);
+      technique.end();
+      r.image->end(cmd);
+    }));
+    return r.centre();
+  };
+  EXPECT_EQ(centre(), (std::array<uint8_t, 3>{0, 0, 0})) << "the zeroed stand-in" << text(effect.messages());
+  fx::DiagnosticSink sink;
+  auto lighting = fx::vk::Buffer::create(
+      ctx(), {32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, fx::vk::MemoryUsage::upload, "test tbuffer"}, sink);
+  ASSERT_TRUE(lighting);
+  const float values[8] = {1, 1, 1, 1, 0.25f, 0.5f, 1, 1};
+  ASSERT_TRUE(lighting->write(values, sizeof values));
+  EXPECT_TRUE(effect.set_buffer("Lighting", lighting->handle()));
+  const auto tinted = centre();
+  EXPECT_NEAR(tinted[0], 64, 1) << text(effect.messages());
+  EXPECT_NEAR(tinted[1], 128, 1);
+  EXPECT_EQ(tinted[2], 255);
 }
 
 }  // namespace

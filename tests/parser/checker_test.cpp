@@ -244,6 +244,31 @@ TEST(Checker, StreamOutputTakesAVertexOrGeometryShader) {
   EXPECT_EQ(c->diags.diagnostics()[0].message, "state 'SetGeometryShader' needs a gs_* profile, found 'ps_4_0'");
 }
 
+// Stream-output declarations are parsed as FX11 parses them, each problem located inside
+// the string: a slot past 3, a mask that is no run of xyzw/rgba, an unknown $ gap, and a
+// rasterized stream past 3 (fx_5_0's form); slots, semantic indices, gaps and rgba pass.
+TEST(Checker, StreamOutputDeclarationsAreCheckedWhereTheyAreWritten) {
+  auto c = check(
+      "struct G { float4 p : SV_Position; float3 n : NORMAL; float2 t : TEXCOORD1; };\n"
+      "[maxvertexcount(3)] void GS(triangle G i[3], inout TriangleStream<G> s) { s.Append(i[0]); }\n"
+      "technique11 t {\n"
+      "  pass ok { SetGeometryShader(ConstructGSWithSO(CompileShader(gs_4_0, GS()), "
+      "\"SV_Position.xyz; 1:NORMAL.rgb; $SKIP.x; TEXCOORD1.yz\")); }\n"
+      "  pass bad { SetGeometryShader(ConstructGSWithSO(CompileShader(gs_4_0, GS()), "
+      "\"4:NORMAL.xyz; SV_Position.xz; $GAP\")); }\n"
+      "  pass five { SetGeometryShader(ConstructGSWithSO(CompileShader(gs_5_0, GS()), "
+      "\"SV_Position.xyzw\", NULL, NULL, \"0:NORMAL.x\", 7)); }\n"
+      "}\n");
+  ASSERT_EQ(c->ids(), (Ids{"bad-stream-out-decl", "bad-stream-out-decl", "bad-stream-out-decl", "bad-stream-out-decl"}))
+      << c->text();
+  const std::string text = c->text();
+  EXPECT_NE(text.find("5:80: error: stream-output declaration: output slot 4 is out of range"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("5:106: error: stream-output declaration: component mask 'xz'"), std::string::npos) << text;
+  EXPECT_NE(text.find("5:110: error: stream-output declaration: unknown '$GAP'"), std::string::npos) << text;
+  EXPECT_NE(text.find("6:126: error: rasterized stream 7 is out of range"), std::string::npos) << text;
+}
+
 // Profiles match in any case, and only whole: the longest, a prefix or an extension of one,
 // and one past the 16 characters the lookup packs are told apart.
 TEST(Checker, ShaderProfileNamesMatchWhole) {

@@ -256,6 +256,37 @@ technique11 T {
   EXPECT_NEAR(centre[2], 128, 1);
 }
 
+// Storage images of every other shape get stand-ins too: an RWTexture1D (target-wide), an
+// RWTexture3D (target-sized, EffectStorage::kStandInLayers deep), an RWTexture1DArray and an
+// RWTexture2DArray (kStandInLayers layers), each written at one texel by a compute pass and
+// read back by the pixel shader.
+TEST_F(EffectRenderTest, ComputePassWritesOneDThreeDAndArrayStorageImageStandIns) {
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_compute_image_shapes", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+RWTexture1D<float4> Line;
+RWTexture3D<float4> Volume;
+RWTexture1DArray<float4> Lines;
+RWTexture2DArray<float4> Layers;
+[numthreads(1, 1, 1)] void Paint() {
+  Line[5] = float4(0.25, 0, 0, 0);
+  Volume[uint3(1, 2, 3)] = float4(0, 0.5, 0, 0);
+  Lines[uint2(3, 1)] = float4(0, 0, 0.25, 0);
+  Layers[uint3(4, 5, 2)] = float4(0, 0, 0.5, 0);
+}
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target {
+  return float4(Line[5].r, Volume[uint3(1, 2, 3)].g, Lines[uint2(3, 1)].b + Layers[uint3(4, 5, 2)].b, 1);
+}
+technique11 T {
+  pass Paint < int3 Dispatch = {1, 1, 1}; > { SetComputeShader(CompileShader(cs_5_0, Paint())); }
+  pass Draw { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); }
+}
+)");
+  EXPECT_NEAR(centre[0], 64, 1);   // Line[5].r = 0.25
+  EXPECT_NEAR(centre[1], 128, 1);  // Volume[1, 2, 3].g = 0.5
+  EXPECT_NEAR(centre[2], 191, 1);  // 0.25 from layer 1 of Lines, 0.5 from layer 2 of Layers
+}
+
 // Texel buffers: an RWBuffer<float4> (a storage texel buffer, a zeroed stand-in in
 // R32G32B32A32_SFLOAT) written by a compute pass and read by the pixel shader, beside a
 // Buffer<float4> (a uniform texel buffer) that holds zeros.

@@ -227,6 +227,8 @@ int main(int argc, char** argv) {
     }
     ui.light.apply(effect);
     if (const auto ms = timer.begin(frame.cmd, frame.slot); !ms.empty()) ui.pass_ms = ms;
+    // The technique's compute passes first, outside rendering, as fxkit render runs them.
+    technique.dispatch_compute_passes(frame.cmd, area.extent.width, area.extent.height);
     const float clear[4] = {0.18f, 0.2f, 0.24f, 1.f};
     window->begin_scene(frame, clear);
     const VkViewport viewport{
@@ -234,7 +236,7 @@ int main(int argc, char** argv) {
     if (technique.begin(frame.cmd, viewport, area)) {
       for (uint32_t pass = 0; pass < technique.pass_count(); ++pass) {
         timer.mark(frame.cmd);
-        if (technique.apply(pass)) mesh->draw(frame.cmd);
+        if (!technique.compute_pass(pass) && technique.apply(pass)) mesh->draw(frame.cmd);
         timer.mark(frame.cmd);
       }
     }

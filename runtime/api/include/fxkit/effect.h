@@ -167,6 +167,11 @@ class Technique {
   // ("simulate, then draw": dispatch the compute passes, then begin() and apply() the
   // others). False, with the reason in messages(), when it is no compute pass.
   bool dispatch(VkCommandBuffer cmd, uint32_t pass, uint32_t x, uint32_t y = 1, uint32_t z = 1);
+  // Dispatches every compute pass, in pass order, as fxkit render does before it draws: each
+  // with its `Dispatch` pass annotation's workgroup counts (`int3 Dispatch = {64, 1, 1};`),
+  // else one thread per pixel of a `width` x `height` target. Outside rendering and
+  // begin()/end(); the draw loop then skips the compute passes. True when there are none.
+  bool dispatch_compute_passes(VkCommandBuffer cmd, uint32_t width, uint32_t height);
 
  private:
   friend class Effect;
@@ -257,7 +262,8 @@ class Effect {
   bool set_buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset = 0, VkDeviceSize range = VK_WHOLE_SIZE);
   // The same for the storage image `name` (RWTexture1D/2D/3D and arrays): the application's
   // view, in VK_IMAGE_LAYOUT_GENERAL, of an image with VK_IMAGE_USAGE_STORAGE_BIT. Until then a
-  // zeroed 2D image the size of the target serves an RWTexture2D.
+  // zeroed stand-in of the texture's shape serves it: the target's width (1D), its size (2D),
+  // its size and 4 deep (3D), 4 layers (1D and 2D arrays).
   bool set_storage_image(std::string_view name, VkImageView view);
   // The same for the texel buffer `name` (Buffer<T>, RWBuffer<T>): the application's buffer
   // view (VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT or STORAGE_TEXEL_BUFFER_BIT). Until then a

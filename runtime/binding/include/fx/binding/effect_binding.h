@@ -109,6 +109,11 @@ class EffectBinding {
   // makes its writes visible to every later draw and dispatch (PassRecorder::dispatch).
   bool dispatch(VkCommandBuffer cmd, uint32_t technique, uint32_t pass, const std::array<uint32_t, 3>& groups,
                 DiagnosticSink& sink);
+  // Records every compute pass of `technique`, in pass order, with dispatch_groups() for a
+  // `width` x `height` target: what a preview (fxkit render, the viewer) does before it
+  // draws the technique's other passes ("simulate, then draw"). True when it has none.
+  bool dispatch_compute_passes(VkCommandBuffer cmd, uint32_t technique, uint32_t width, uint32_t height,
+                               DiagnosticSink& sink);
 
   // Creates the technique's pipelines for these formats and layout now (instead of at the
   // first apply). False with diagnostics if one cannot be made.
