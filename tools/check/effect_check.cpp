@@ -41,12 +41,26 @@ bool report_techniques(const fx::ParsedEffect& parsed, const EffectCheckSettings
   return valid > 0;
 }
 
-// What compiling every shader of the effect reports, each diagnostic once. Assembly and
-// fixed-function stages are not reported: the legacy path runs them, so they are not a
-// defect of the effect (`fxkit compile` lists them, as it is asked for SPIR-V). A stage
-// fxkit cannot run at all is an error.
-void compile_shaders(const fx::ParsedEffect& parsed, const EffectCheckSettings& settings, fx::SourceManager& sm,
-                     fx::DiagnosticSink& diags, fx::ShownOnce& shown) {
+// The DXSAS Script warnings of the effect's model (docs/dxsas.md); the model's other
+// diagnostics repeat the front end's checks.
+std::vector<fx::Diagnostic> script_diagnostics(const fx::ParsedEffect& parsed, const fx::SourceManager& sm) {
+  fx::DiagnosticSink model;
+  fx::build_effect_model(parsed, sm, model);
+  std::vector<fx::Diagnostic> out;
+  for (const fx::Diagnostic& d : model.diagnostics())
+    if (d.id.rfind("script-", 0) == 0) out.push_back(d);
+  return out;
+}
+#endif
+
+}  // namespace
+
+#ifdef FXKIT_HAS_RUNTIME
+// Assembly and fixed-function stages are not reported: the legacy path runs them, so they
+// are not a defect of the effect (`fxkit compile` lists them, as it is asked for SPIR-V). A
+// stage fxkit cannot run at all is an error.
+void check_shaders(const fx::ParsedEffect& parsed, const EffectCheckSettings& settings, const fx::SourceManager& sm,
+                   fx::DiagnosticSink& diags, fx::ShownOnce& shown) {
   fx::EffectUnits units(parsed.ast, sm, diags, fx::effect_unit_options(settings.front_end));
   fx::EffectPrograms programs(units, *settings.compiler, sm);
   if (settings.executor) programs.compile_all(*settings.executor, true);
@@ -71,20 +85,7 @@ void compile_shaders(const fx::ParsedEffect& parsed, const EffectCheckSettings& 
     shown.add(program.diagnostics, name);
   }
 }
-
-// The DXSAS Script warnings of the effect's model (docs/dxsas.md); the model's other
-// diagnostics repeat the front end's checks.
-std::vector<fx::Diagnostic> script_diagnostics(const fx::ParsedEffect& parsed, const fx::SourceManager& sm) {
-  fx::DiagnosticSink model;
-  fx::build_effect_model(parsed, sm, model);
-  std::vector<fx::Diagnostic> out;
-  for (const fx::Diagnostic& d : model.diagnostics())
-    if (d.id.rfind("script-", 0) == 0) out.push_back(d);
-  return out;
-}
 #endif
-
-}  // namespace
 
 EffectCheck check_effect(const std::string& file, const EffectCheckSettings& settings) {
   auto start = std::chrono::steady_clock::now();
@@ -114,7 +115,7 @@ EffectCheck check_effect(const std::string& file, const EffectCheckSettings& set
       }
   }
   // The shaders of an effect whose front end failed would only repeat its errors.
-  if (settings.compile && settings.compiler && !diags.has_errors()) compile_shaders(parsed, settings, sm, diags, shown);
+  if (settings.compile && settings.compiler && !diags.has_errors()) check_shaders(parsed, settings, sm, diags, shown);
   else shown.add(diags.diagnostics(), "");
   if (parsed.ok) shown.add(script_diagnostics(parsed, sm), "");
   if (settings.caps && parsed.ok) {

@@ -12,6 +12,7 @@
 #include "fx/frontend.h"
 
 namespace fx {
+class ShownOnce;
 class TaskExecutor;
 class ShaderCompiler;
 struct DeviceCaps;
@@ -48,6 +49,12 @@ struct EffectCheck {
 };
 
 EffectCheck check_effect(const std::string& file, const EffectCheckSettings& settings);
+
+// Runtime builds: what compiling every shader of the parsed effect reports (settings.compiler
+// required), added to `shown` after what `diags` holds, each diagnostic once with "also
+// reported for" notes. check_effect runs it; the language server publishes the same.
+void check_shaders(const fx::ParsedEffect& parsed, const EffectCheckSettings& settings, const fx::SourceManager& sm,
+                   fx::DiagnosticSink& diags, fx::ShownOnce& shown);
 
 // Every file checked into results[i] on settings.executor (files and, within them, stages
 // in parallel; in turn without one), each looked up in and stored to `cache` when given

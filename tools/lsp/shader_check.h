@@ -1,0 +1,37 @@
+// Compiled-shader diagnostics for the language server: a snapshot of a document compiled
+// as `fxkit check` compiles an effect (tools/check check_shaders: every pass stage and
+// shader array element, each diagnostic once with "also reported for" notes), with glslang
+// in compile worker processes so a compiler crash costs one result, not the editor's server.
+// Runtime builds only (FXKIT_VULKAN); CompileScheduler runs it off the request thread.
+#pragma once
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "compile_scheduler.h"
+
+namespace fx {
+class CompileWorkers;
+class ShaderCompiler;
+}  // namespace fx
+
+namespace fx::tools::lsp {
+
+class ShaderCheck {
+ public:
+  // `workers` (optional, taken over): glslang runs there; nullptr compiles in this process.
+  explicit ShaderCheck(std::unique_ptr<fx::CompileWorkers> workers);
+  ~ShaderCheck();
+
+  // The snapshot's compiled-shader diagnostics as LSP Diagnostics of its document; none
+  // when the front end or the semantic model finds errors (glslang would only repeat them).
+  // Thread-safe.
+  json diagnostics(const CompileSnapshot& snapshot) const;
+
+ private:
+  std::unique_ptr<fx::CompileWorkers> workers_;
+  std::unique_ptr<fx::ShaderCompiler> compiler_;
+};
+
+}  // namespace fx::tools::lsp
