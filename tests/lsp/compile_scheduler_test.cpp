@@ -23,9 +23,9 @@ CompileSnapshot snapshot(const std::string& uri, uint64_t generation) {
 }
 
 // A compile that reports which snapshot it saw.
-json compiled(CompileEvents& events, const CompileSnapshot& s) {
+fx::tools::lsp::CompileFindings compiled(CompileEvents& events, const CompileSnapshot& s) {
   events.started(s.generation);
-  return json::array({{{"message", s.document.text}}});
+  return {json::array({{{"message", s.document.text}}})};
 }
 
 TEST(CompileScheduler, ResultArrivesThroughTheReadyCallback) {
@@ -38,7 +38,7 @@ TEST(CompileScheduler, ResultArrivesThroughTheReadyCallback) {
   ASSERT_EQ(results.size(), 1u);
   EXPECT_EQ(results[0].uri, "file:///a.fx");
   EXPECT_EQ(results[0].generation, 1u);
-  EXPECT_EQ(results[0].diagnostics[0]["message"], "text of 1");
+  EXPECT_EQ(results[0].findings.diagnostics[0]["message"], "text of 1");
   EXPECT_TRUE(scheduler.take_results().empty());  // each once
 }
 
@@ -56,7 +56,7 @@ TEST(CompileScheduler, OutdatedResultIsThrownAwayAndWaitingSnapshotReplaced) {
   auto results = scheduler.take_results();
   ASSERT_EQ(results.size(), 1u);
   EXPECT_EQ(results[0].generation, 3u);
-  EXPECT_EQ(results[0].diagnostics[0]["message"], "text of 3");
+  EXPECT_EQ(results[0].findings.diagnostics[0]["message"], "text of 3");
   EXPECT_EQ(events.started_generations(), (std::vector<uint64_t>{1, 3}));
   const CompileScheduler::Stats stats = scheduler.stats();
   EXPECT_EQ(stats.replaced, 1u);
@@ -82,13 +82,14 @@ TEST(CompileScheduler, CancelledDocumentGetsNoResult) {
 
 TEST(CompileScheduler, CompileThatThrowsBecomesADiagnostic) {
   CompileEvents events;
-  CompileScheduler scheduler([](const CompileSnapshot&) -> json { throw std::runtime_error("out of luck"); },
-                             std::chrono::milliseconds(0), [&] { events.ready(); });
+  CompileScheduler scheduler(
+      [](const CompileSnapshot&) -> fx::tools::lsp::CompileFindings { throw std::runtime_error("out of luck"); },
+      std::chrono::milliseconds(0), [&] { events.ready(); });
   scheduler.schedule(snapshot("file:///a.fx", 1));
   events.wait_ready(1);
   auto results = scheduler.take_results();
   ASSERT_EQ(results.size(), 1u);
-  EXPECT_EQ(results[0].diagnostics[0]["message"], "compiling the shaders failed: out of luck");
+  EXPECT_EQ(results[0].findings.diagnostics[0]["message"], "compiling the shaders failed: out of luck");
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // Compiled-shader diagnostics in the language server, with glslang in a real compile
 // worker: a shader error appears once its compile ends, with "also reported for" the other
 // passes that compile it, goes away after the fix, and the compile of an outdated text never
-// overwrites newer diagnostics. Driven by the scheduler's events, never by the clock.
+// overwrites newer diagnostics; technique validity per caps profile as code lenses. Driven
+// by the scheduler's events, never by the clock.
 #include <gtest/gtest.h>
 
 #include "compile_events.h"
@@ -46,7 +47,9 @@ class CompiledDiagnosticsTest : public ::testing::Test {
     check_ = std::make_unique<fx::tools::lsp::ShaderCheck>(fx::CompileWorkers::start({.workers = 1}, error));
     EXPECT_EQ(error, "");
     folder_.write("main.fx", kEffect);
-    session_.initialize({}, folder_.path(), {{"window", {{"workDoneProgress", true}}}});
+    session_.initialize(
+        {}, folder_.path(),
+        {{"window", {{"workDoneProgress", true}}}, {"workspace", {{"codeLens", {{"refreshSupport", true}}}}}});
   }
   std::string main() const { return folder_.path("main.fx"); }
   // Removes `, i.uv` from the tex2D call of PS (line 11): a call glslang has no overload for.
@@ -58,7 +61,7 @@ class CompiledDiagnosticsTest : public ::testing::Test {
   std::unique_ptr<fx::tools::lsp::ShaderCheck> check_;
   CompileScheduler scheduler_{[this](const CompileSnapshot& s) {
                                 events_.started(s.generation);
-                                return check_->diagnostics(s);
+                                return check_->check(s);
                               },
                               std::chrono::milliseconds(0), [this] { events_.ready(); }};
   LspSession session_{&scheduler_};
@@ -119,6 +122,31 @@ TEST_F(CompiledDiagnosticsTest, OutdatedCompileNeverOverwritesNewerDiagnostics) 
   EXPECT_TRUE(session_.diagnostics(main()).empty());
   for (const json& p : session_.publications(main())) EXPECT_TRUE(p["diagnostics"].empty()) << p.dump(1);
   EXPECT_EQ(scheduler_.stats().discarded, 1u);
+}
+
+TEST_F(CompiledDiagnosticsTest, TechniqueValidityPerCapsProfileAsCodeLenses) {
+  session_.open(main(), kEffect);
+  session_.diagnostics(main());
+  events_.wait_ready(1);
+  session_.diagnostics(main());
+  const json document = {{"textDocument", {{"uri", fx::tools::lsp::path_to_uri(main())}}}};
+  json lenses = session_.request("textDocument/codeLens", document)["result"];
+  ASSERT_EQ(lenses.size(), 2u) << lenses.dump(1);
+  EXPECT_EQ(lenses[0]["range"]["start"]["line"], 13);  // technique Main
+  EXPECT_EQ(lenses[1]["range"]["start"]["line"], 16);  // technique Again
+  EXPECT_EQ(lenses[0]["command"]["title"], "valid on dx9, modern; dx8: vs_2_0 not supported on dx8");
+  size_t refreshes = 0;
+  for (const json& m : session_.sent()) refreshes += m.value("method", "") == "workspace/codeLens/refresh";
+  EXPECT_EQ(refreshes, 1u);
+  // Once the text changes, the lenses wait for its compile.
+  break_the_call(2);
+  session_.diagnostics(main());
+  EXPECT_TRUE(session_.request("textDocument/codeLens", document)["result"].empty());
+  events_.wait_ready(2);
+  session_.diagnostics(main());
+  lenses = session_.request("textDocument/codeLens", document)["result"];
+  ASSERT_EQ(lenses.size(), 2u) << lenses.dump(1);
+  EXPECT_EQ(lenses[0]["command"]["title"].get<std::string>().rfind("valid on none", 0), 0u) << lenses.dump(1);
 }
 
 }  // namespace

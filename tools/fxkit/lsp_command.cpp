@@ -24,7 +24,7 @@ void register_lsp(CLI::App& app, Runner& run) {
     run = [workers] {
       lsp::ShaderCheck check(workers->start("lsp", 1));
       return lsp::run_stdio(STDIN_FILENO, STDOUT_FILENO,
-                            [&check](const lsp::CompileSnapshot& s) { return check.diagnostics(s); });
+                            [&check](const lsp::CompileSnapshot& s) { return check.check(s); });
     };
   });
 #else

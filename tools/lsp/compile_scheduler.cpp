@@ -70,14 +70,15 @@ void CompileScheduler::run() {
     CompileSnapshot snapshot = std::move(next->second.snapshot);
     waiting_.erase(next);
     lock.unlock();
-    CompileResult result{snapshot.uri, snapshot.generation, json::array()};
+    CompileResult result{snapshot.uri, snapshot.generation, {}};
     try {
-      result.diagnostics = compile_(snapshot);
+      result.findings = compile_(snapshot);
     } catch (const std::exception& e) {  // shown where the editor shows problems, not lost
-      result.diagnostics.push_back({{"range", {{"start", {{"line", 0}, {"character", 0}}}, {"end", {{"line", 0}, {"character", 0}}}}},
-                                    {"severity", 1},
-                                    {"source", "fxkit"},
-                                    {"message", std::string("compiling the shaders failed: ") + e.what()}});
+      result.findings.diagnostics.push_back(
+          {{"range", {{"start", {{"line", 0}, {"character", 0}}}, {"end", {{"line", 0}, {"character", 0}}}}},
+           {"severity", 1},
+           {"source", "fxkit"},
+           {"message", std::string("compiling the shaders failed: ") + e.what()}});
     }
     lock.lock();
     ++stats_.compiled;

@@ -31,17 +31,22 @@ struct CompileSnapshot {
   std::map<std::string, std::string> open;  // paths to the texts of the open documents
 };
 
-// The LSP diagnostics a compile found for a snapshot.
+// What a compile found: LSP Diagnostics, and CodeLenses (technique validity).
+struct CompileFindings {
+  json diagnostics = json::array();
+  json code_lenses = json::array();
+};
+
 struct CompileResult {
   std::string uri;
   uint64_t generation = 0;
-  json diagnostics = json::array();
+  CompileFindings findings;
 };
 
 class CompileScheduler {
  public:
-  // Runs on the scheduler's thread: the snapshot's compiled-shader diagnostics.
-  using Compile = std::function<json(const CompileSnapshot&)>;
+  // Runs on the scheduler's thread: what compiling the snapshot finds.
+  using Compile = std::function<CompileFindings(const CompileSnapshot&)>;
   // Called on the scheduler's thread when a result is ready to take (the transport wakes).
   using Ready = std::function<void()>;
 
@@ -81,8 +86,8 @@ class CompileScheduler {
   Ready ready_;
   mutable std::mutex mutex_;
   std::condition_variable changed_;
-  std::map<std::string, Waiting> waiting_;     // by URI
-  std::map<std::string, uint64_t> latest_;     // the newest generation scheduled, by URI
+  std::map<std::string, Waiting> waiting_;  // by URI
+  std::map<std::string, uint64_t> latest_;  // the newest generation scheduled, by URI
   std::vector<CompileResult> results_;
   Stats stats_;
   bool stopping_ = false;

@@ -96,6 +96,9 @@ void LanguageServer::request(const std::string& method, const json& id, const js
   } else if (method == "textDocument/codeAction") {
     auto [doc, a] = analyzed(params);
     reply(id, code_actions(*a, doc->text, params.at("range")));
+  } else if (method == "textDocument/codeLens") {
+    // Technique validity comes with the compile: none while the text has changed since.
+    reply(id, analyzed(params).first->code_lenses);
   } else if (method == "textDocument/documentSymbol") {
     reply(id, document_symbols(*analyzed(params).second));
   } else if (method == "textDocument/completion") {
@@ -133,6 +136,8 @@ json LanguageServer::initialize(const json& params) {
   initialization_options_ = params.value("initializationOptions", json::object());
   const json capabilities = params.value("capabilities", json::object());
   progress_ = capabilities.value("window", json::object()).value("workDoneProgress", false);
+  refresh_lenses_ =
+      capabilities.value("workspace", json::object()).value("codeLens", json::object()).value("refreshSupport", false);
   configure();
   return {{"capabilities",
            {{"textDocumentSync", {{"openClose", true}, {"change", 2}}},
@@ -141,6 +146,7 @@ json LanguageServer::initialize(const json& params) {
             {"referencesProvider", true},
             {"codeActionProvider", {{"codeActionKinds", {"quickfix"}}}},
             {"documentSymbolProvider", true},
+            {"codeLensProvider", {{"resolveProvider", false}}},
             {"completionProvider", {{"triggerCharacters", {".", "="}}}}}},
           {"serverInfo", {{"name", "fxkit"}}}};
 }
@@ -249,7 +255,7 @@ void LanguageServer::schedule_compile(OpenDocument& d) {
   if (!progress_ || !d.progress.empty()) return;
   // Server-initiated progress: the token is created, then used at once (as rust-analyzer
   // and clangd do); a client that refuses it ignores the reports.
-  d.progress = "fxkit/compile/" + std::to_string(++next_progress_);
+  d.progress = "fxkit/compile/" + std::to_string(++next_request_);
   send_({{"jsonrpc", "2.0"},
          {"id", d.progress},
          {"method", "window/workDoneProgress/create"},
@@ -278,7 +284,8 @@ void LanguageServer::publish_pending() {
       auto it = documents_.find(r.uri);
       // Only the result of the snapshot scheduled last: an older one describes other text.
       if (it == documents_.end() || it->second.compile_generation != r.generation) continue;
-      it->second.compiled = std::move(r.diagnostics);
+      it->second.compiled = std::move(r.findings.diagnostics);
+      it->second.code_lenses = std::move(r.findings.code_lenses);
       end_compile(it->second);
       compiled.insert(r.uri);
     }
@@ -288,10 +295,15 @@ void LanguageServer::publish_pending() {
     if (d.publish) {
       d.publish = false;
       d.compiled = json::array();  // placed in the old text; the new compile brings its own
+      d.code_lenses = json::array();
       schedule_compile(d);
     }
     publish(uri, d);
   }
+  if (!compiled.empty() && refresh_lenses_)
+    send_({{"jsonrpc", "2.0"},
+           {"id", "fxkit/codeLens/" + std::to_string(++next_request_)},
+           {"method", "workspace/codeLens/refresh"}});
 }
 
 namespace {

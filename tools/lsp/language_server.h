@@ -49,6 +49,7 @@ class LanguageServer {
     std::shared_ptr<const DocumentAnalysis> analysis;  // of text at analysis->version(), or null
     bool publish = false;                              // diagnostics not yet published for the text
     json compiled = json::array();                     // the compiled shaders' diagnostics of compile_generation
+    json code_lenses = json::array();                  // its techniques' validity
     uint64_t compile_generation = 0;                   // the snapshot scheduled last (0: none)
     std::string progress;                              // the token of the pending compile's progress report, if shown
   };
@@ -71,8 +72,9 @@ class LanguageServer {
 
   Send send_;
   CompileScheduler* compiles_ = nullptr;
-  uint64_t next_generation_ = 0, next_progress_ = 0;
-  bool progress_ = false;  // the client takes server-initiated progress (window.workDoneProgress)
+  uint64_t next_generation_ = 0, next_request_ = 0;  // snapshots; our requests and tokens
+  bool progress_ = false;        // the client takes server-initiated progress (window.workDoneProgress)
+  bool refresh_lenses_ = false;  // the client asks for code lenses again when told (workspace/codeLens/refresh)
   std::map<std::string, OpenDocument> documents_;  // by URI
   std::set<std::string> cancelled_;                // request ids, as JSON text
   WorkspaceConfig config_;

@@ -1,31 +1,73 @@
-// Compiled-shader diagnostics of a document snapshot (shader_check.h).
+// Compiled-shader findings of a document snapshot (shader_check.h).
 #include "shader_check.h"
 
 #include "effect_check.h"
 #include "fx/compile/compile_workers.h"
 #include "fx/compile/shader_compiler.h"
+#include "fx/compile/spirv_cache.h"
+#include "fx/select/caps_sources.h"
+#include "fx/select/technique_validation.h"
 #include "fx/shown_once.h"
 #include "language_features.h"
 
 namespace fx::tools::lsp {
+namespace {
+
+// "valid on dx9, modern; dx8: ps_2_0 not supported" per technique, from validating it on
+// each profile; unknown profile names are left out.
+json technique_lenses(const DocumentAnalysis& a, const std::vector<std::string>& profiles,
+                      const fx::ShaderCompiler& compiler) {
+  struct Lens {
+    fx::SourceRange range;
+    std::string valid, invalid;
+  };
+  std::vector<Lens> lenses;
+  for (const std::string& profile : profiles) {
+    fx::DiagnosticSink ignored;
+    const std::optional<fx::DeviceCaps> caps = fx::load_caps_profile(profile, ignored);
+    if (!caps) continue;
+    const std::vector<fx::TechniqueValidation> techniques =
+        fx::validate_effect(a.parsed().ast, a.sources(), *caps, ignored, true, &compiler);
+    if (lenses.empty())
+      for (const fx::TechniqueValidation& t : techniques) lenses.push_back({t.range, "", ""});
+    for (size_t i = 0; i < techniques.size() && i < lenses.size(); ++i) {
+      const fx::TechniqueValidation& t = techniques[i];
+      if (t.valid) lenses[i].valid += (lenses[i].valid.empty() ? "" : ", ") + profile;
+      else lenses[i].invalid += "; " + profile + ": " + (t.reasons.empty() ? "invalid" : t.reasons.front().message);
+    }
+  }
+  json out = json::array();
+  for (const Lens& l : lenses) {
+    if (!l.range.begin.valid() || !a.in_document(l.range.begin)) continue;
+    std::string title = l.valid.empty() ? "valid on none" : "valid on " + l.valid;
+    title += l.invalid;
+    out.push_back(
+        {{"range", a.range_json({l.range.begin, l.range.begin})}, {"command", {{"title", title}, {"command", ""}}}});
+  }
+  return out;
+}
+
+}  // namespace
 
 ShaderCheck::ShaderCheck(std::unique_ptr<fx::CompileWorkers> workers)
-    : workers_(std::move(workers)), compiler_(std::make_unique<fx::ShaderCompiler>(fx::CompileOptions{}, nullptr,
-                                                                                   workers_.get())) {}
+    : workers_(std::move(workers)),
+      cache_(std::make_unique<fx::SpirvCache>()),
+      compiler_(std::make_unique<fx::ShaderCompiler>(fx::CompileOptions{}, cache_.get(), workers_.get())) {}
 
 ShaderCheck::~ShaderCheck() = default;
 
-json ShaderCheck::diagnostics(const CompileSnapshot& snapshot) const {
+CompileFindings ShaderCheck::check(const CompileSnapshot& snapshot) const {
   const DocumentAnalysis analysis(snapshot.document, snapshot.config, snapshot.open);
   for (const fx::Diagnostic& d : analysis.diagnostics())
-    if (d.severity >= fx::Severity::error) return json::array();
+    if (d.severity >= fx::Severity::error) return {};
   EffectCheckSettings settings;
   settings.front_end = snapshot.config.front_end_options();
   settings.compiler = compiler_.get();
   fx::DiagnosticSink units;
   fx::ShownOnce shown;
   check_shaders(analysis.parsed(), settings, analysis.sources(), units, shown);
-  return document_diagnostics(analysis, shown.diagnostics());
+  return {document_diagnostics(analysis, shown.diagnostics()),
+          technique_lenses(analysis, snapshot.config.validation_profiles(), *compiler_)};
 }
 
 }  // namespace fx::tools::lsp
