@@ -1,6 +1,6 @@
 // The language server per request, driven in-process: initialize and its capabilities,
 // text sync, diagnostics (front end and semantic model, includes), hover, definition,
-// document symbols, completion, cancellation, configuration, shutdown and exit.
+// references, code actions, document symbols, completion, cancellation, configuration, shutdown and exit.
 #include "language_server.h"
 
 #include <gtest/gtest.h>
@@ -63,6 +63,8 @@ TEST_F(LanguageServerTest, InitializeAnnouncesCapabilities) {
   EXPECT_EQ(caps["textDocumentSync"]["change"], 2);  // incremental
   EXPECT_TRUE(caps["hoverProvider"].get<bool>());
   EXPECT_TRUE(caps["definitionProvider"].get<bool>());
+  EXPECT_TRUE(caps["referencesProvider"].get<bool>());
+  EXPECT_EQ(caps["codeActionProvider"]["codeActionKinds"][0], "quickfix");
   EXPECT_TRUE(caps["documentSymbolProvider"].get<bool>());
   EXPECT_TRUE(caps["completionProvider"].is_object());
 }
@@ -158,6 +160,67 @@ TEST_F(LanguageServerTest, DefinitionAcrossIncludesAndFromPasses) {
   EXPECT_EQ(loc["range"]["start"]["line"], 5);
   loc = session_.at("textDocument/definition", path("main.fx"), 0, 12);  // #include
   EXPECT_EQ(loc["uri"], fx::tools::lsp::path_to_uri(path("lights.fxh")));
+}
+
+// "line:character" of each location of a references result, in order.
+std::vector<std::string> places(const json& locations) {
+  std::vector<std::string> out;
+  for (const json& l : locations)
+    out.push_back(std::to_string(l["range"]["start"]["line"].get<int>()) + ":" +
+                  std::to_string(l["range"]["start"]["character"].get<int>()));
+  return out;
+}
+
+TEST_F(LanguageServerTest, ReferencesFromBodiesPassesAndStateBlocks) {
+  open_main();
+  const std::string uri = fx::tools::lsp::path_to_uri(path("main.fx"));
+  auto refs = [&](int line, int character, bool declaration) {
+    json reply = session_.request("textDocument/references", {{"textDocument", {{"uri", uri}}},
+                                                              {"position", {{"line", line}, {"character", character}}},
+                                                              {"context", {{"includeDeclaration", declaration}}}});
+    EXPECT_TRUE(reply.contains("result")) << reply.dump();
+    return reply.value("result", json::array());
+  };
+  EXPECT_EQ(places(refs(13, 7, true)), (std::vector<std::string>{"13:7", "20:33"}));  // PS: the pass names it
+  EXPECT_EQ(places(refs(20, 33, false)), (std::vector<std::string>{"20:33"}));
+  EXPECT_EQ(places(refs(3, 8, true)), (std::vector<std::string>{"3:8", "4:54"}));              // Diffuse: <Diffuse>
+  EXPECT_EQ(places(refs(14, 8, true)), (std::vector<std::string>{"14:8", "15:39", "15:47"}));  // the local d
+  json sun = refs(14, 50, true);  // declared in the include
+  ASSERT_EQ(sun.size(), 2u) << sun.dump(1);
+  EXPECT_EQ(sun[0]["uri"], fx::tools::lsp::path_to_uri(path("lights.fxh")));
+  EXPECT_EQ(sun[1]["uri"], uri);
+}
+
+TEST_F(LanguageServerTest, CodeActionsOfferTheFixIts) {
+  open_main();
+  const std::string uri = fx::tools::lsp::path_to_uri(path("main.fx"));
+  auto actions = [&](int line, int from, int to) {
+    json reply = session_.request(
+        "textDocument/codeAction",
+        {{"textDocument", {{"uri", uri}}},
+         {"range", {{"start", {{"line", line}, {"character", from}}}, {"end", {{"line", line}, {"character", to}}}}},
+         {"context", {{"diagnostics", json::array()}}}});
+    EXPECT_TRUE(reply.contains("result")) << reply.dump();
+    return reply.value("result", json::array());
+  };
+  EXPECT_TRUE(actions(15, 50, 55).empty());
+  session_.change(path("main.fx"), 2, 15, 50, 15, 55, "Glos");  // did you mean 'Gloss'?
+  json a = actions(15, 52, 52);
+  ASSERT_EQ(a.size(), 1u) << a.dump(1);
+  EXPECT_EQ(a[0]["title"], "Change to 'Gloss'");
+  EXPECT_EQ(a[0]["kind"], "quickfix");
+  EXPECT_EQ(a[0]["diagnostics"][0]["code"], "unknown-identifier");
+  const json& edit = a[0]["edit"]["changes"][uri][0];
+  EXPECT_EQ(edit["newText"], "Gloss");
+  EXPECT_EQ(edit["range"]["start"]["character"], 50);
+  EXPECT_EQ(edit["range"]["end"]["character"], 54);
+  EXPECT_TRUE(actions(3, 0, 5).empty());                  // nothing to fix there
+  session_.change(path("main.fx"), 3, 1, 44, 1, 45, "");  // `float4x4 WorldViewProj : WORLDVIEWPROJECTION`
+  a = actions(1, 0, 44);
+  ASSERT_EQ(a.size(), 1u) << a.dump(1);
+  EXPECT_EQ(a[0]["title"], "Insert ';'");
+  EXPECT_EQ(a[0]["edit"]["changes"][uri][0]["range"]["start"]["line"], 1);
+  EXPECT_EQ(a[0]["edit"]["changes"][uri][0]["range"]["start"]["character"], 44);
 }
 
 TEST_F(LanguageServerTest, DocumentSymbolsOutlineTheEffect) {

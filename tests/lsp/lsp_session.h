@@ -14,7 +14,9 @@ using nlohmann::json;
 
 class LspSession {
  public:
-  LspSession() : server_([this](const json& m) { sent_.push_back(m); }) {}
+  // `compiles` (optional): the scheduler of compiled-shader diagnostics the server uses.
+  explicit LspSession(fx::tools::lsp::CompileScheduler* compiles = nullptr)
+      : server_([this](const json& m) { sent_.push_back(m); }, compiles) {}
 
   // Sends a request and returns the server's reply to it (null if there was none).
   json request(const std::string& method, json params) {
@@ -27,8 +29,8 @@ class LspSession {
   void notify(const std::string& method, json params) {
     server_.handle({{"jsonrpc", "2.0"}, {"method", method}, {"params", std::move(params)}});
   }
-  json initialize(json options = json::object(), std::string root = "") {
-    json params = {{"processId", nullptr}, {"capabilities", json::object()}, {"initializationOptions", options}};
+  json initialize(json options = json::object(), std::string root = "", json capabilities = json::object()) {
+    json params = {{"processId", nullptr}, {"capabilities", capabilities}, {"initializationOptions", options}};
     if (!root.empty()) params["rootUri"] = fx::tools::lsp::path_to_uri(root);
     json reply = request("initialize", params);
     notify("initialized", json::object());
@@ -51,12 +53,17 @@ class LspSession {
   // Publishes pending diagnostics and returns the last ones published for `path`.
   json diagnostics(const std::string& path) {
     server_.publish_pending();
-    json last = nullptr;
+    const std::vector<json> all = publications(path);
+    return all.empty() ? json() : all.back()["diagnostics"];
+  }
+  // Every publication for `path` so far (the params of publishDiagnostics), in order.
+  std::vector<json> publications(const std::string& path) const {
+    std::vector<json> out;
     for (const json& m : sent_)
       if (m.value("method", "") == "textDocument/publishDiagnostics" &&
           m["params"]["uri"] == fx::tools::lsp::path_to_uri(path))
-        last = m["params"]["diagnostics"];
-    return last;
+        out.push_back(m["params"]);
+    return out;
   }
   // A request about a position of `path`; the reply's result.
   json at(const std::string& method, const std::string& path, int line, int character) {

@@ -1,6 +1,6 @@
 -- End-to-end: Neovim's built-in LSP client drives `fxkit lsp` on a real effect (open, hover,
 -- definition across includes, an edit that gets a diagnostic, completion in a pass, the
--- edit undone, shutdown). Run headless by ctest (tests/lsp/CMakeLists.txt); exits 0 when
+-- edit undone, a shader error only the compile finds and its fix, shutdown). Run headless by ctest (tests/lsp/CMakeLists.txt); exits 0 when
 -- every check holds, 1 with the failures on stderr otherwise. Waits are for events (a
 -- publication, a reply), bounded by FXKIT_PATIENCE_MS so a broken server cannot hang CI.
 local fxkit = os.getenv("FXKIT_BINARY")
@@ -84,6 +84,18 @@ local function main()
   vim.api.nvim_buf_set_text(buf, 91, 35, 91, 51, { "SpecularExponent" })
   check(vim.wait(patience, function() return published > before and errors_with(nil) == 0 end, 5),
     "diagnostics stayed after the undo: " .. vim.inspect(last_diagnostics))
+
+  -- A call only glslang rejects (tex2D without coordinates): the compiled-shader diagnostic
+  -- arrives after the debounce and the compile, and goes with the fix.
+  before = published
+  vim.api.nvim_buf_set_text(buf, 75, 37, 75, 44, { "" })
+  check(vim.wait(patience, function() return published > before and errors_with(nil) >= 1 end, 5),
+    "no compiled-shader error after the edit: " .. vim.inspect(last_diagnostics))
+  check(last_diagnostics[1].range.start.line == 75, "compiled-shader error: " .. vim.inspect(last_diagnostics))
+  before = published
+  vim.api.nvim_buf_set_text(buf, 75, 37, 75, 37, { ", IN.uv" })
+  check(vim.wait(patience, function() return published > before and errors_with(nil) == 0 end, 5),
+    "the compiled-shader error stayed after the fix: " .. vim.inspect(last_diagnostics))
 
   vim.lsp.stop_client(client_id)
   check(vim.wait(patience, function() return exit_code ~= nil end, 5), "the server did not exit")

@@ -43,15 +43,24 @@ bool report_techniques(fx::EffectFile& effect, const EffectCheckSettings& settin
   return valid > 0;
 }
 
-// What compiling every shader of the effect reports, each diagnostic once. Assembly and
-// fixed-function stages are not reported: the legacy path runs them, so they are not a
-// defect of the effect (`fxkit compile` lists them, as it is asked for SPIR-V). A stage
-// fxkit cannot run at all is an error.
-void compile_shaders(fx::EffectFile& effect, const EffectCheckSettings& settings, fx::DiagnosticSink& diags,
-                     fx::ShownOnce& shown) {
-  effect.build_programs(diags, settings.compiler);
-  const fx::EffectUnits& units = *effect.units;
-  fx::EffectPrograms& programs = *effect.programs;
+// The DXSAS Script warnings among the effect model's diagnostics (docs/dxsas.md); the
+// model's other warnings repeat the front end's checks.
+std::vector<fx::Diagnostic> script_diagnostics(const fx::DiagnosticSink& model) {
+  std::vector<fx::Diagnostic> out;
+  for (const fx::Diagnostic& d : model.diagnostics())
+    if (d.id.rfind("script-", 0) == 0) out.push_back(d);
+  return out;
+}
+#endif
+
+}  // namespace
+
+#ifdef FXKIT_HAS_RUNTIME
+// Assembly and fixed-function stages are not reported: the legacy path runs them, so they
+// are not a defect of the effect (`fxkit compile` lists them, as it is asked for SPIR-V). A
+// stage fxkit cannot run at all is an error.
+void check_shaders(const fx::EffectUnits& units, fx::EffectPrograms& programs, const EffectCheckSettings& settings,
+                   fx::DiagnosticSink& diags, fx::ShownOnce& shown) {
   if (settings.executor) programs.compile_all(*settings.executor, true);
   shown.add(diags.diagnostics(), "");
   for (const fx::EffectPass& pass : units.passes()) {
@@ -74,18 +83,7 @@ void compile_shaders(fx::EffectFile& effect, const EffectCheckSettings& settings
     shown.add(program.diagnostics, name);
   }
 }
-
-// The DXSAS Script warnings among the effect model's diagnostics (docs/dxsas.md); the
-// model's other warnings repeat the front end's checks.
-std::vector<fx::Diagnostic> script_diagnostics(const fx::DiagnosticSink& model) {
-  std::vector<fx::Diagnostic> out;
-  for (const fx::Diagnostic& d : model.diagnostics())
-    if (d.id.rfind("script-", 0) == 0) out.push_back(d);
-  return out;
-}
 #endif
-
-}  // namespace
 
 EffectCheck check_effect(const std::string& file, const EffectCheckSettings& settings) {
   auto start = std::chrono::steady_clock::now();
@@ -121,8 +119,10 @@ EffectCheck check_effect(const std::string& file, const EffectCheckSettings& set
       }
   }
   // The shaders of an effect whose front end failed would only repeat its errors.
-  if (settings.compile && settings.compiler && !diags.has_errors()) compile_shaders(*effect, settings, diags, shown);
-  else shown.add(diags.diagnostics(), "");
+  if (settings.compile && settings.compiler && !diags.has_errors()) {
+    effect->build_programs(diags, settings.compiler);
+    check_shaders(*effect->units, *effect->programs, settings, diags, shown);
+  } else shown.add(diags.diagnostics(), "");
   if (parsed.ok) shown.add(script_diagnostics(model_diags), "");
   if (settings.caps && parsed.ok) {
     fx::DiagnosticSink caps_diags;

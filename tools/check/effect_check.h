@@ -12,6 +12,9 @@
 #include "fx/frontend.h"
 
 namespace fx {
+class EffectPrograms;
+class EffectUnits;
+class ShownOnce;
 class TaskExecutor;
 class ShaderCompiler;
 struct DeviceCaps;
@@ -48,6 +51,13 @@ struct EffectCheck {
 };
 
 EffectCheck check_effect(const std::string& file, const EffectCheckSettings& settings);
+
+// Runtime builds: what compiling every shader of an effect's units reports (through its
+// programs), added to `shown` after what `diags` holds, each diagnostic once with "also
+// reported for" notes. check_effect runs it on its EffectFile; the language server on the
+// units of its document snapshot, and publishes the same.
+void check_shaders(const fx::EffectUnits& units, fx::EffectPrograms& programs, const EffectCheckSettings& settings,
+                   fx::DiagnosticSink& diags, fx::ShownOnce& shown);
 
 // Every file checked into results[i] on settings.executor (files and, within them, stages
 // in parallel; in turn without one), each looked up in and stored to `cache` when given

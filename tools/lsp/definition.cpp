@@ -4,15 +4,8 @@
 namespace fx::tools::lsp {
 
 json definition(const DocumentAnalysis& a, const TextDocument& document, Position at) {
-  const std::vector<fx::Token>& tokens = a.parsed().ast.tokens;
-  if (const std::optional<uint32_t> token = a.token_at(at); token && tokens[*token].is(fx::TokenKind::identifier)) {
-    const fx::semantic::Symbol* target = nullptr;
-    if (const fx::semantic::Reference* r = a.model().reference_at(*token)) target = r->symbol;
-    // Outside function bodies (a pass's `compile vs_2_0 VS()`, `<Texture>`, a state object):
-    // the global of that name.
-    if (!target) target = a.model().global(tokens[*token].text());
-    if (target && target->name_range.valid()) return a.location_json(target->name_range);
-  }
+  if (const fx::semantic::Symbol* target = a.symbol_at(at); target && target->name_range.valid())
+    return a.location_json(target->name_range);
   const std::string_view word = document.word_at(at);
   if (const MacroDefinition* m = word.empty() ? nullptr : a.macro(word))
     return a.location_json({m->at, m->at.offset(static_cast<uint32_t>(m->name.size()))});

@@ -146,6 +146,14 @@ void DocumentAnalysis::index_tokens() const {
   });
 }
 
+const fx::semantic::Symbol* DocumentAnalysis::symbol_at(Position p) const {
+  const std::vector<fx::Token>& tokens = parsed_.ast.tokens;
+  const std::optional<uint32_t> token = token_at(p);
+  if (!token || !tokens[*token].is(fx::TokenKind::identifier)) return nullptr;
+  if (const fx::semantic::Reference* r = model_->reference_at(*token)) return r->symbol;
+  return model_->global(tokens[*token].text());
+}
+
 std::optional<uint32_t> DocumentAnalysis::token_before(Position p) const {
   index_tokens();
   auto it = std::lower_bound(places_.begin(), places_.end(), p, [](const TokenPlace& t, Position q) {

@@ -46,6 +46,9 @@ class DocumentAnalysis {
   // The token of the document at `p` (a position inside a token or just after an
   // identifier), or nullopt. Tokens made by macro expansion have no place of their own.
   std::optional<uint32_t> token_at(Position p) const;
+  // What the identifier at `p` names: its reference in a function body, else (a pass's
+  // `compile vs_2_0 VS()`, `<Texture>`, a state object) the global of that name; or nullptr.
+  const fx::semantic::Symbol* symbol_at(Position p) const;
   // The last token of the document that starts before `p`.
   std::optional<uint32_t> token_before(Position p) const;
   // LSP position and range of a location (its file location, for macro expansions).

@@ -22,10 +22,12 @@ json related(const DocumentAnalysis& a, fx::SourceLocation at, const std::string
 
 }  // namespace
 
-json document_diagnostics(const DocumentAnalysis& a) {
+json document_diagnostics(const DocumentAnalysis& a) { return document_diagnostics(a, a.diagnostics()); }
+
+json document_diagnostics(const DocumentAnalysis& a, const std::vector<fx::Diagnostic>& diagnostics) {
   json out = json::array();
   const fx::SourceManager& sm = a.sources();
-  for (const fx::Diagnostic& d : a.diagnostics()) {
+  for (const fx::Diagnostic& d : diagnostics) {
     json item = {{"severity", lsp_severity(d.severity)}, {"code", d.id}, {"source", "fxkit"}};
     json info = json::array();
     fx::SourceLocation at = d.range.begin;

@@ -1,7 +1,13 @@
 // Request dispatch and document lifecycle of the language server (language_server.h).
 #include "language_server.h"
 
+#include <fcntl.h>
+#include <poll.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <deque>
+#include <filesystem>
 
 #include "json_rpc.h"
 #include "language_features.h"
@@ -23,7 +29,7 @@ std::map<std::string, std::string> texts_by_path(const auto& documents) {
 
 }  // namespace
 
-LanguageServer::LanguageServer(Send send) : send_(std::move(send)) {}
+LanguageServer::LanguageServer(Send send, CompileScheduler* compiles) : send_(std::move(send)), compiles_(compiles) {}
 
 void LanguageServer::reply(const json& id, json result) {
   send_({{"jsonrpc", "2.0"}, {"id", id}, {"result", std::move(result)}});
@@ -83,6 +89,16 @@ void LanguageServer::request(const std::string& method, const json& id, const js
   } else if (method == "textDocument/definition") {
     auto [doc, a] = analyzed(params);
     reply(id, definition(*a, doc->text, position_of(params.at("position"))));
+  } else if (method == "textDocument/references") {
+    auto [doc, a] = analyzed(params);
+    const bool declaration = params.value("context", json::object()).value("includeDeclaration", false);
+    reply(id, references(*a, position_of(params.at("position")), declaration));
+  } else if (method == "textDocument/codeAction") {
+    auto [doc, a] = analyzed(params);
+    reply(id, code_actions(*a, doc->text, params.at("range")));
+  } else if (method == "textDocument/codeLens") {
+    // Technique validity comes with the compile: none while the text has changed since.
+    reply(id, analyzed(params).first->code_lenses);
   } else if (method == "textDocument/documentSymbol") {
     reply(id, document_symbols(*analyzed(params).second));
   } else if (method == "textDocument/completion") {
@@ -118,12 +134,19 @@ json LanguageServer::initialize(const json& params) {
     root_ = uri_to_path(params["rootUri"].get<std::string>());
   else if (params.contains("rootPath") && params["rootPath"].is_string()) root_ = params["rootPath"].get<std::string>();
   initialization_options_ = params.value("initializationOptions", json::object());
+  const json capabilities = params.value("capabilities", json::object());
+  progress_ = capabilities.value("window", json::object()).value("workDoneProgress", false);
+  refresh_lenses_ =
+      capabilities.value("workspace", json::object()).value("codeLens", json::object()).value("refreshSupport", false);
   configure();
   return {{"capabilities",
            {{"textDocumentSync", {{"openClose", true}, {"change", 2}}},
             {"hoverProvider", true},
             {"definitionProvider", true},
+            {"referencesProvider", true},
+            {"codeActionProvider", {{"codeActionKinds", {"quickfix"}}}},
             {"documentSymbolProvider", true},
+            {"codeLensProvider", {{"resolveProvider", false}}},
             {"completionProvider", {{"triggerCharacters", {".", "="}}}}}},
           {"serverInfo", {{"name", "fxkit"}}}};
 }
@@ -181,6 +204,8 @@ void LanguageServer::did_close(const json& params) {
   auto it = documents_.find(uri);
   if (it == documents_.end()) return;
   const std::string path = it->second.text.path;
+  if (compiles_) compiles_->cancel(uri);
+  end_compile(it->second);
   documents_.erase(it);
   invalidate_includers(path);  // they read it from disk again
   send_({{"jsonrpc", "2.0"},
@@ -209,21 +234,123 @@ std::pair<LanguageServer::OpenDocument*, std::shared_ptr<const DocumentAnalysis>
   return {&d, d.analysis};
 }
 
-void LanguageServer::publish_pending() {
-  for (auto& [uri, d] : documents_) {
-    if (!d.publish) continue;
-    d.publish = false;
-    if (!d.analysis) d.analysis = std::make_shared<const DocumentAnalysis>(d.text, config_, texts_by_path(documents_));
-    send_(
-        {{"jsonrpc", "2.0"},
+void LanguageServer::publish(const std::string& uri, OpenDocument& d) {
+  json diagnostics = document_diagnostics(*d.analysis);
+  for (const json& c : d.compiled) diagnostics.push_back(c);
+  send_({{"jsonrpc", "2.0"},
          {"method", "textDocument/publishDiagnostics"},
-         {"params", {{"uri", uri}, {"version", d.text.version}, {"diagnostics", document_diagnostics(*d.analysis)}}}});
+         {"params", {{"uri", uri}, {"version", d.text.version}, {"diagnostics", std::move(diagnostics)}}}});
+}
+
+void LanguageServer::schedule_compile(OpenDocument& d) {
+  if (!compiles_) return;
+  for (const fx::Diagnostic& diagnostic : d.analysis->diagnostics())
+    if (diagnostic.severity >= fx::Severity::error) {  // glslang would only repeat them
+      compiles_->cancel(d.text.uri);
+      end_compile(d);
+      return;
+    }
+  d.compile_generation = ++next_generation_;
+  compiles_->schedule({d.text.uri, d.compile_generation, d.text, config_, texts_by_path(documents_)});
+  if (!progress_ || !d.progress.empty()) return;
+  // Server-initiated progress: the token is created, then used at once (as rust-analyzer
+  // and clangd do); a client that refuses it ignores the reports.
+  d.progress = "fxkit/compile/" + std::to_string(++next_request_);
+  send_({{"jsonrpc", "2.0"},
+         {"id", d.progress},
+         {"method", "window/workDoneProgress/create"},
+         {"params", {{"token", d.progress}}}});
+  const std::string file = std::filesystem::path(d.text.path).filename().string();
+  send_(
+      {{"jsonrpc", "2.0"},
+       {"method", "$/progress"},
+       {"params",
+        {{"token", d.progress},
+         {"value", {{"kind", "begin"}, {"title", "Compiling shaders"}, {"message", file}, {"cancellable", false}}}}}});
+}
+
+void LanguageServer::end_compile(OpenDocument& d) {
+  if (d.progress.empty()) return;
+  send_({{"jsonrpc", "2.0"},
+         {"method", "$/progress"},
+         {"params", {{"token", d.progress}, {"value", {{"kind", "end"}}}}}});
+  d.progress.clear();
+}
+
+void LanguageServer::publish_pending() {
+  std::set<std::string> compiled;
+  if (compiles_)
+    for (CompileResult& r : compiles_->take_results()) {
+      auto it = documents_.find(r.uri);
+      // Only the result of the snapshot scheduled last: an older one describes other text.
+      if (it == documents_.end() || it->second.compile_generation != r.generation) continue;
+      it->second.compiled = std::move(r.findings.diagnostics);
+      it->second.code_lenses = std::move(r.findings.code_lenses);
+      end_compile(it->second);
+      compiled.insert(r.uri);
+    }
+  for (auto& [uri, d] : documents_) {
+    if (!d.publish && !compiled.count(uri)) continue;
+    if (!d.analysis) d.analysis = std::make_shared<const DocumentAnalysis>(d.text, config_, texts_by_path(documents_));
+    if (d.publish) {
+      d.publish = false;
+      d.compiled = json::array();  // placed in the old text; the new compile brings its own
+      d.code_lenses = json::array();
+      schedule_compile(d);
+    }
+    publish(uri, d);
+  }
+  if (!compiled.empty() && refresh_lenses_)
+    send_({{"jsonrpc", "2.0"},
+           {"id", "fxkit/codeLens/" + std::to_string(++next_request_)},
+           {"method", "workspace/codeLens/refresh"}});
+}
+
+namespace {
+
+// A pipe the compile thread writes a byte to when a result is ready, so the loop wakes.
+struct WakePipe {
+  int fds[2] = {-1, -1};
+  WakePipe() {
+    if (::pipe2(fds, O_NONBLOCK | O_CLOEXEC) != 0) fds[0] = fds[1] = -1;
+  }
+  ~WakePipe() {
+    for (int fd : fds)
+      if (fd >= 0) ::close(fd);
+  }
+  void wake() const {
+    const char byte = 1;
+    [[maybe_unused]] ssize_t n = ::write(fds[1], &byte, 1);  // full: a wake-up is pending anyway
+  }
+  void drain() const {
+    char bytes[64];
+    while (::read(fds[0], bytes, sizeof bytes) > 0) {
+    }
+  }
+};
+
+// Waits until `in_fd` has input (true) or `wake_fd` is written to (false).
+bool wait_for_input(int in_fd, int wake_fd) {
+  for (;;) {
+    pollfd p[2] = {{in_fd, POLLIN, 0}, {wake_fd, POLLIN, 0}};
+    if (::poll(p, wake_fd >= 0 ? 2 : 1, -1) < 0) {
+      if (errno == EINTR) continue;
+      return true;  // let the read report the problem
+    }
+    if (p[0].revents) return true;
+    if (wake_fd >= 0 && p[1].revents) return false;
   }
 }
 
-int run_stdio(int in_fd, int out_fd) {
+}  // namespace
+
+int run_stdio(int in_fd, int out_fd, CompileScheduler::Compile compile) {
   MessageReader reader(in_fd);
-  LanguageServer server([out_fd](const json& m) { write_message(out_fd, m); });
+  WakePipe wake;
+  std::unique_ptr<CompileScheduler> compiles;
+  if (compile)
+    compiles = std::make_unique<CompileScheduler>(std::move(compile), kCompileDebounce, [&wake] { wake.wake(); });
+  LanguageServer server([out_fd](const json& m) { write_message(out_fd, m); }, compiles.get());
   std::deque<json> queue;
   auto enqueue = [&](const std::string& text) {
     json message = json::parse(text, nullptr, false);
@@ -242,6 +369,10 @@ int run_stdio(int in_fd, int out_fd) {
   while (!server.exited()) {
     if (queue.empty()) {
       server.publish_pending();
+      if (!reader.more_waiting() && !wait_for_input(in_fd, compiles ? wake.fds[0] : -1)) {
+        wake.drain();
+        continue;
+      }
       std::optional<std::string> text = reader.read();
       if (!text) break;
       enqueue(*text);

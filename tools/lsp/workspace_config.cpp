@@ -28,11 +28,17 @@ void WorkspaceConfig::merge(const nlohmann::json& settings, const std::string& r
     include_dirs.push_back(p.lexically_normal().generic_string());
   });
   strings("defines", [&](std::string d) { defines.push_back(std::move(d)); });
+  strings("capsProfiles", [&](std::string name) { caps_profiles.push_back(std::move(name)); });
   if (auto it = settings.find("profile"); it != settings.end()) {
     if (it->is_string() && (it->get<std::string>() == "auto" || fx::parse_effect_profile(it->get<std::string>())))
       profile = it->get<std::string>();
     else problems.push_back("profile must be auto, fx_2_0, fx_4_0, fx_4_1 or fx_5_0");
   }
+}
+
+std::vector<std::string> WorkspaceConfig::validation_profiles() const {
+  if (caps_profiles.empty()) return {"dx8", "dx9", "modern"};
+  return caps_profiles;
 }
 
 fx::FrontEndOptions WorkspaceConfig::front_end_options() const {

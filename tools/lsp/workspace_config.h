@@ -15,8 +15,13 @@ struct WorkspaceConfig {
   std::vector<std::string> include_dirs;  // absolute, or relative to the server's folder
   std::vector<std::string> defines;       // NAME or NAME=VALUE
   std::string profile = "auto";
+  std::vector<std::string> caps_profiles;  // shipped caps profiles techniques are validated on
 
-  // Adds the settings of one source, `{"includeDirs": [..], "defines": [..], "profile": ".."}`;
+  // The caps profiles code lenses report: those given, or dx8, dx9 and modern.
+  std::vector<std::string> validation_profiles() const;
+
+  // Adds the settings of one source, `{"includeDirs": [..], "defines": [..], "profile": "..",
+  // "capsProfiles": [..]}`;
   // relative folders are taken against `root`. A malformed entry adds a line to `problems`.
   void merge(const nlohmann::json& settings, const std::string& root, std::vector<std::string>& problems);
   fx::FrontEndOptions front_end_options() const;
