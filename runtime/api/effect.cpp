@@ -7,6 +7,7 @@
 #include "fx/binding/effect_scene.h"
 #include "fx/binding/effect_textures.h"
 #include "fx/binding/preview_defaults.h"
+#include "fx/model/class_instances.h"
 #include "fx/model/parameter_store.h"
 #include "fx/reload/reload_transaction.h"
 #include "fx/select/caps_sources.h"
@@ -120,6 +121,27 @@ bool Effect::set(Param p, float value) {
 bool Effect::set(Param p, int32_t value) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;
   return store && kept(*state_, p, store->set(p, value));
+}
+bool Effect::set_class_instance(Param interface_variable, std::string_view instance) {
+  fx::ParameterStore* store = state_ ? state_->store : nullptr;
+  auto version = state_ ? state_->handle.version() : nullptr;
+  if (!store || !version) return false;
+  const std::vector<fx::Parameter>& params = version->model->parameters;
+  const uint32_t index = interface_variable.index;
+  if (index < params.size() && params[index].decl &&
+      fx::find_interface(version->parsed.ast, params[index].decl->type.name)) {
+    const std::vector<fx::BindableInstance> instances =
+        fx::bindable_instances(version->parsed.ast, params[index].decl->type.name);
+    auto found = std::find_if(instances.begin(), instances.end(),
+                              [&](const fx::BindableInstance& b) { return b.name == instance; });
+    if (found != instances.end())
+      return kept(*state_, interface_variable,
+                  store->set(interface_variable, static_cast<int32_t>(found - instances.begin())));
+  }
+  const std::string name = index < params.size() ? params[index].name : std::string("the parameter");
+  return kept(*state_, interface_variable,
+              {fx::ParamStatus::not_found,
+               "'" + std::string(instance) + "' is not a class instance that '" + name + "' can be bound to"});
 }
 bool Effect::set(Param p, bool value) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;

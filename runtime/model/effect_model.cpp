@@ -38,7 +38,7 @@ std::optional<Value> fold_default(const ast::Expr& e, const ConstantScope& scope
 class Builder {
  public:
   Builder(const ast::Effect& effect, DiagnosticSink& diags)
-      : effect_(effect), diags_(diags), ctx_{model_, diags, {}, {}, {}} {
+      : effect_(effect), diags_(diags), ctx_{model_, diags, {}, {}, {}, {}} {
     model_.ast = &effect;
     // Initializers and annotations see `static`/`const` parameters; state values see every
     // parameter's default (the value the pass uses until the app sets it).
@@ -63,6 +63,8 @@ class Builder {
       switch (d.kind) {
         case ast::DeclKind::structure:
           if (d.structure) model_.types.add_struct(*d.structure, diags_, &const_scope_);
+          if (d.structure && d.structure->kind != ast::StructKind::structure)
+            ctx_.class_linkage_types.insert(d.structure->name);
           break;
         case ast::DeclKind::type_alias:
           if (d.type_alias) model_.types.add_typedef(*d.type_alias, diags_, &const_scope_);

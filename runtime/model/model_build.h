@@ -2,6 +2,7 @@
 #pragma once
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "fx/model/effect_model.h"
@@ -14,6 +15,9 @@ struct ResolveContext {
   ConstantScope scope;  // static consts and, for state values, other parameters' defaults
   std::unordered_map<std::string, const ast::Expr*> shader_variables;  // name -> initializer
   std::unordered_map<std::string, bool> glsl_blocks;                   // names declared
+  // fx_5_0 interface and class type names: a compile-time argument naming a variable of one
+  // is a class instance the compiler binds (class linkage), not a constant.
+  std::unordered_set<std::string> class_linkage_types;
 };
 
 // Resolves one assignment of `block` against the state table. Shader bindings of pass

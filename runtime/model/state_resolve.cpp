@@ -119,6 +119,13 @@ ShaderBinding shader_from(const ast::Expr& e, PassStage stage, ResolveContext& c
   auto fold_args = [&](std::span<const ast::ExprPtr> args) {
     for (const ast::ExprPtr& a : args) {
       if (!a) continue;
+      // `PS(g_abstractLight)`, `PS(g_lamps[1])`: an interface variable or class instance.
+      const ast::Expr* base = a->kind == ast::ExprKind::index && !a->args.empty() && a->args[0] ? a->args[0] : a;
+      auto named = ctx.model.parameter_index.find(base->text);
+      if (base->kind == ast::ExprKind::identifier && named != ctx.model.parameter_index.end() &&
+          ctx.model.parameters[named->second].decl &&
+          ctx.class_linkage_types.count(std::string(ctx.model.parameters[named->second].decl->type.name)))
+        continue;
       auto v = fold_constant(*a, ctx.scope, ctx.diags, true);
       if (!v) {
         ctx.diags.error("not-constant", a->range, "compile-time shader argument must be a constant");
@@ -159,7 +166,8 @@ ShaderBinding shader_from(const ast::Expr& e, PassStage stage, ResolveContext& c
         fold_args(fn.args);
         return b;
       }
-      if (iequals(e.text, "ConstructGSWithSO") && !e.args.empty() && e.args[0]) {
+      // BindInterfaces(shader, instances...): the instances are the compiler's (class linkage).
+      if ((iequals(e.text, "ConstructGSWithSO") || iequals(e.text, "BindInterfaces")) && !e.args.empty() && e.args[0]) {
         ShaderBinding inner = shader_from(*e.args[0], stage, ctx, depth + 1);
         inner.range = e.range;
         return inner;

@@ -463,6 +463,11 @@ Type TypeTable::resolve(const ast::TypeRef& ref, uint32_t storage, const ast::Li
 void TypeTable::add_struct(const ast::Struct& decl, DiagnosticSink& diags, const ConstantScope* scope) {
   if (decl.name.empty()) return;
   if (structs_.count(decl.name)) return;  // redefinitions are the checker's report
+  // An interface variable holds the id of the class instance bound to it (docs/fx11-parity.md).
+  if (decl.kind == ast::StructKind::interface_type) {
+    typedefs_.emplace(decl.name, make_numeric(BaseType::int32));
+    return;
+  }
   // A named struct defined in place as a member's type is a type of its own from there on.
   for (const ast::Variable& m : decl.members)
     if (m.type.definition && !m.type.definition->name.empty()) add_struct(*m.type.definition, diags, scope);

@@ -987,5 +987,50 @@ technique11 T { pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelS
   EXPECT_EQ(tinted[2], 255);
 }
 
+// fx_5_0 class linkage: a pixel shader calls through an interface parameter bound in the pass
+// to an interface variable; the application binds that variable to one class instance, then
+// to another, and the draw runs each class (one with member data the application set, one
+// without), with no recompile between them.
+TEST_F(PublicApiTest, SetClassInstanceSwitchesTheClassAnInterfaceCallRuns) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  fxkit::Effect effect = r.device->load(write_effect("api_class_linkage.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+interface iColour { float3 Colour(); };
+class cSolid : iColour { float3 colour; float3 Colour() { return colour; } };
+class cGreen : iColour { float3 Colour() { return float3(0, 1, 0); } };
+iColour g_colour;
+cGreen g_green;
+cSolid g_solid;
+struct V { float4 pos : SV_Position; };
+V VS(float4 p : POSITION) { V o; o.pos = mul(p, WorldViewProjection); return o; }
+float4 PS(V i, iColour colour) : SV_Target { return float4(colour.Colour(), 1); }
+technique11 T {
+  pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(BindInterfaces(CompileShader(ps_5_0, PS()), g_colour)); }
+}
+)"));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  const std::vector<fxkit::ParamInfo> params = effect.params();
+  auto colour = std::find_if(params.begin(), params.end(), [](const auto& p) { return p.name == "g_colour"; });
+  ASSERT_NE(colour, params.end());
+  EXPECT_EQ(colour->class_instances, (std::vector<std::string>{"g_green", "g_solid"}));
+  EXPECT_EQ(colour->scalar, fxkit::ScalarKind::int32);
+
+  fxkit::Technique technique = effect.technique("T");
+  ASSERT_TRUE(technique.valid()) << technique.reason();
+  const fxkit::Param g_colour = effect.param("g_colour");
+  ASSERT_TRUE(effect.set(effect.param("g_solid"), {0.0f, 0.0f, 1.0f}));
+  ASSERT_TRUE(effect.set_class_instance(g_colour, "g_solid"));
+  const auto blue = draw(*r.device, technique, *r.mesh, *r.image);
+  EXPECT_EQ(blue, (std::array<uint8_t, 3>{0, 0, 255})) << "cSolid's colour member, set by the application";
+  ASSERT_TRUE(effect.set_class_instance(g_colour, "g_green"));
+  const auto green = draw(*r.device, technique, *r.mesh, *r.image);
+  EXPECT_EQ(green, (std::array<uint8_t, 3>{0, 255, 0})) << "cGreen's method";
+  EXPECT_FALSE(effect.set_class_instance(g_colour, "g_nothing"));
+  EXPECT_NE(text(effect.messages()).find("'g_nothing' is not a class instance"), std::string::npos)
+      << text(effect.messages());
+}
+
 }  // namespace
 }  // namespace fx::vk::testing

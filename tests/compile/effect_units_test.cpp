@@ -223,8 +223,9 @@ technique T {
 }
 
 // fx_5_0 dynamic linkage: classes compile as the structs with methods they are; a stage
-// that calls through an interface is not compiled and says why; other stages are unaffected.
-TEST(EffectUnits, InterfacesFailOnlyTheStagesThatUseThem) {
+// that calls through an interface no class instance implements has nothing to dispatch to,
+// is not compiled and says why; other stages are unaffected.
+TEST(EffectUnits, InterfacesWithoutAnInstanceFailOnlyTheStagesThatCallThem) {
   fs::path dir = temp_dir("interfaces");
   write(dir / "linkage.fx", R"(interface ILight { float3 Shade(float3 n); };
 class Ambient : ILight { float3 color; float3 Shade(float3 n) { return color; } };
@@ -233,7 +234,7 @@ float4 Through(float3 n : NORMAL) : SV_Target { return float4(g_light.Shade(n), 
 float4 Direct(float3 n : NORMAL) : SV_Target { Ambient a; a.color = n; return float4(a.Shade(n), 1); }
 float4 VS(float4 p : POSITION, inout float3 n : NORMAL) : SV_Position { return p; }
 technique11 T {
-  pass Interface { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(BindInterfaces(CompileShader(ps_5_0, Through()), g_light)); }
+  pass Interface { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, Through())); }
   pass Class { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, Direct())); }
 }
 )");
@@ -244,8 +245,8 @@ technique11 T {
   EXPECT_EQ(through->kind, StageSourceKind::invalid);
   EXPECT_EQ(
       through->unsupported,
-      "fx_5_0 dynamic linkage: 'Through' uses interface instance 'g_light', and fxkit does not compile interfaces "
-      "to SPIR-V");
+      "fx_5_0 dynamic linkage: 'Through' calls through interface variable 'g_light' of interface 'ILight', which no "
+      "class instance implements: declare an instance of a class that does");
   ShaderCompiler compiler;
   EffectPrograms programs(*l->units, compiler, l->sm);
   const PassProgram* with_class = programs.program("T", "Class");
@@ -277,7 +278,7 @@ float4 Direct(float3 n : NORMAL) : SV_Target { Ambient a; a.color = n; return fl
 float4 Plain(float3 n : NORMAL) : SV_Target { return float4(n, 1); }
 float4 VS(float4 p : POSITION, inout float3 n : NORMAL) : SV_Position { return p; }
 technique11 T {
-  pass Interface { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(BindInterfaces(CompileShader(ps_5_0, Through()), g_light)); }
+  pass Interface { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, Through())); }
   pass Class { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, Direct())); }
   pass Other { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, Plain())); }
 }
@@ -299,6 +300,40 @@ technique11 T {
   EXPECT_NE(direct.find("g_scale"), std::string::npos) << "what the methods use comes along\n" << direct;
   EXPECT_EQ(programs.program("T", "Other")->find(ShaderStage::fragment)->unit.source.find("Ambient"), std::string::npos)
       << "a stage that does not use the class leaves it out";
+}
+
+// An interface parameter no BindInterfaces binds, and a bound instance that is no class
+// instance or interface variable, are errors at the pass state and the argument; the pass
+// that binds its parameter compiles.
+TEST(EffectUnits, InterfaceParametersMustEachBeBoundToAnInstance) {
+  fs::path dir = temp_dir("interface_binding");
+  write(dir / "binding.fx", R"(interface ILight { float3 Shade(float3 n); };
+class Ambient : ILight { float3 color; float3 Shade(float3 n) { return color; } };
+Ambient g_ambient;
+float3 g_colour;
+float4 PS(float3 n : NORMAL, ILight light) : SV_Target { return float4(light.Shade(n), 1); }
+float4 VS(float4 p : POSITION, inout float3 n : NORMAL) : SV_Position { return p; }
+technique11 T {
+  pass Bound { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(BindInterfaces(CompileShader(ps_5_0, PS()), g_ambient)); }
+  pass Unbound { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); }
+  pass NotAnInstance { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(BindInterfaces(CompileShader(ps_5_0, PS()), g_colour)); }
+}
+)");
+  auto l = load((dir / "binding.fx").string());
+  const std::string text = render_text(l->diags.diagnostics(), l->sm);
+  EXPECT_NE(text.find("binding.fx:9:79: error: 'PS' takes 1 interface parameter(s), but 0 instance(s) are bound"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("binding.fx:10:129: error: BindInterfaces binds an interface variable or a class instance"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(l->units->find("T", "Unbound")->find(ShaderStage::fragment)->kind, StageSourceKind::invalid);
+  ShaderCompiler compiler;
+  EffectPrograms programs(*l->units, compiler, l->sm);
+  const PassProgram* bound = programs.program("T", "Bound");
+  ASSERT_TRUE(bound);
+  for (const StageProgram& s : bound->stages)
+    EXPECT_TRUE(s.shader.ok) << to_string(s.stage) << "\n" << render_text(s.diagnostics, l->sm) << s.unit.source;
 }
 
 // glslang crashes on a geometry shader whose input array carries SV_ClipDistance

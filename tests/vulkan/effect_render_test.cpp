@@ -405,5 +405,31 @@ technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile
   EXPECT_EQ(centre[2], 255);
 }
 
+// fx_5_0 class linkage bound statically: BindInterfaces names a class instance, so the pass
+// runs that instance's class; the same shader bound to the other instance draws the other.
+TEST_F(EffectRenderTest, BindInterfacesToAClassInstanceRunsThatClass) {
+  auto effect = [](const std::string& instance) {
+    return R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+interface iColour { float3 Colour(float3 base); };
+class cRed : iColour { float3 Colour(float3 base) { return base.xyz; } };
+class cGreen : iColour { float3 Colour(float3 base) { return base.zxy; } };
+cRed g_red;
+cGreen g_green;
+struct V { float4 p : SV_Position; };
+V VS(float4 p : POSITION) { V o; o.p = mul(p, WorldViewProjection); return o; }
+float4 PS(V i, iColour colour) : SV_Target { return float4(colour.Colour(float3(1, 0, 0)), 1); }
+technique11 T { pass P {
+  SetVertexShader(CompileShader(vs_5_0, VS()));
+  SetPixelShader(BindInterfaces(CompileShader(ps_5_0, PS()), )" +
+           instance + R"());
+} }
+)";
+  };
+  const std::array<uint8_t, 4> red = centre_of("fxkit_bound_red", effect("g_red"));
+  const std::array<uint8_t, 4> green = centre_of("fxkit_bound_green", effect("g_green"));
+  EXPECT_EQ(red, (std::array<uint8_t, 4>{255, 0, 0, 255}));
+  EXPECT_EQ(green, (std::array<uint8_t, 4>{0, 255, 0, 255}));
+}
+
 }  // namespace
 }  // namespace fx::vk::testing

@@ -11,6 +11,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "class_linkage.h"
 #include "effect_shader_text.h"
 #include "fx/ast.h"
 #include "fx/compile/effect_units.h"
@@ -66,9 +67,8 @@ class EffectUnitBuilder {
       }
   }
 
-  // A stage whose code calls through an interface needs the class bound to each instance
-  // per pass (BindInterfaces), which fxkit does not compile: the stage says so, at the pass
-  // state, instead of glslang's parse error on `interface`.
+  // A stage whose code calls through an interface that no class instance implements has
+  // nothing to dispatch to: the stage says so, at the pass state (class_linkage.h).
   void mark_dynamic_linkage();
 
   // glslang crashes on a geometry shader whose per-vertex input array carries
@@ -94,15 +94,15 @@ class EffectUnitBuilder {
 
   void emit_hlsl();
 
-  // fx_5_0 dynamic linkage: glslang has no interfaces, so an interface declaration is left
-  // out, and a class is written as the struct with methods it otherwise is (`class C : I {`
-  // -> `struct C {`). Functions that use an interface fail their stages (see
-  // mark_dynamic_linkage).
+  // fx_5_0 dynamic linkage: glslang has no interfaces, so an interface declaration becomes
+  // its dispatchers' prototypes, and a class the struct with methods it otherwise is
+  // (`class C : I {` -> `struct C {`) followed by its method wrappers (class_linkage.h).
   void emit_structure(detail::ShaderTextWriter& w, const ast::Struct& s);
   // A class method defined outside the class, in the class's place of its prototype.
   void emit_method_definition(detail::ShaderTextWriter& w, const ast::Function& m);
 
-  // The first interface or interface instance a function's tokens name ("" for none).
+  // The first interface or interface variable a function's tokens name that no class
+  // instance implements ("" for none): its calls have nothing to dispatch to.
   std::string dynamic_linkage_in(ast::TokenSpan span) const;
 
   // --- effect_unit_initializers.cpp ---
@@ -223,6 +223,14 @@ class EffectUnitBuilder {
   // one (scalars, vectors and matrices, each with a semantic); null otherwise.
   const ast::Struct* system_value_struct(const ast::Variable& p) const;
 
+  // Whether a parameter takes a compile-time argument (`uniform`) or a BindInterfaces instance
+  // (an interface type).
+  bool takes_argument(const ast::Variable& p) const;
+  // A BindInterfaces argument as the wrapper passes it to a parameter of interface `iface`:
+  // an interface variable as itself (the id the application sets), a class instance as its
+  // id; false (with a located error) for anything else.
+  bool spell_bound_instance(const ast::Expr& e, const ast::Struct& iface, std::string& out);
+
   // `R F__fx_args(varying params) : SEM { return F(varying..., literal...); }`, placed at the
   // function's own line so errors in the wrapper point at the function.
   std::string wrapper(const ast::Function& f, const std::vector<std::string>& args) const;
@@ -238,8 +246,9 @@ class EffectUnitBuilder {
   std::vector<const ast::Function*> functions_;
   std::vector<const ast::Variable*> variables_;
   std::vector<std::string> glsl_names_;
-  std::vector<std::string> interfaces_;           // fx_5_0 interface type names
-  std::vector<std::string> interface_instances_;  // globals of an interface type
+  detail::ClassLinkage linkage_;  // fx_5_0 interfaces, classes and their instances
+  // `BindInterfaces(shader, instances...)`: the instances, while its shader is resolved.
+  std::vector<const ast::Expr*> bound_interfaces_;
   // The pass and technique whose states are being resolved (assembly reads their constants,
   // textures and precision annotation).
   const ast::Pass* pass_ = nullptr;

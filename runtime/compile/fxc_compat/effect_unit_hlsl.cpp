@@ -15,6 +15,11 @@ namespace fx {
 
 using namespace detail;
 
+namespace {
+// The declaration that defines every interface's dispatchers (class_linkage.h).
+constexpr const char* kDispatchers = "interface_dispatchers__fx";
+}  // namespace
+
 void EffectUnitBuilder::emit_hlsl() {
   detail::ShaderTextWriter w(sm_);
   if (!effect_.profile_header.empty()) w.out() += pre_release_hlsl_prelude();
@@ -47,11 +52,6 @@ void EffectUnitBuilder::emit_hlsl() {
     switch (d.kind) {
       case ast::DeclKind::variable: {
         const ast::Variable& v = *d.variable;
-        // An interface instance is bound per pass (BindInterfaces): no shader declaration.
-        if (std::find(interfaces_.begin(), interfaces_.end(), std::string_view(v.type.name)) != interfaces_.end()) {
-          interface_instances_.push_back(v.name);
-          break;
-        }
         if (v.tokens.empty() || is_effect_only_type(v.type.name)) break;
         if (shares_last(v.tokens.first, v.name)) break;
         last_span = v.tokens.first;
@@ -79,6 +79,8 @@ void EffectUnitBuilder::emit_hlsl() {
         emit_structure(w, *d.structure);
         end(from, {d.structure->name}, d.structure->tokens);
         if (u_.decls_.size() == count) break;
+        // An interface's dispatchers are defined after every class instance (see below).
+        if (d.structure->kind == ast::StructKind::interface_type) u_.decls_.back().refs.push_back(kDispatchers);
         // Methods defined outside the class are emitted inside it: what they use comes along.
         std::vector<std::string>& refs = u_.decls_.back().refs;
         for (const ast::Function& m : d.structure->methods)
@@ -126,15 +128,19 @@ void EffectUnitBuilder::emit_hlsl() {
       case ast::DeclKind::glsl_block: break;
     }
   }
+  if (!linkage_.empty()) {
+    const size_t from = begin();
+    w.out() += detail::interface_dispatchers(toks_, linkage_);
+    end(from, {kDispatchers}, {});
+    if (!u_.decls_.empty() && u_.decls_.back().begin == from)
+      for (const ast::Variable* v : linkage_.instances) u_.decls_.back().refs.emplace_back(v->name);
+  }
   w.end_line();
   u_.hlsl_ = std::move(w.out());
 }
 
 void EffectUnitBuilder::emit_structure(detail::ShaderTextWriter& w, const ast::Struct& s) {
-  if (s.kind == ast::StructKind::interface_type) {
-    interfaces_.push_back(s.name);
-    return;
-  }
+  if (s.kind == ast::StructKind::interface_type) return w.line(detail::interface_prototypes(toks_, s));
   if (s.kind == ast::StructKind::structure) return emit_tokens(w, s.tokens);
   bool in_bases = false, body = false;
   for (uint32_t i = s.tokens.first; i < s.tokens.last && i < toks_.size(); ++i) {
@@ -156,6 +162,8 @@ void EffectUnitBuilder::emit_structure(detail::ShaderTextWriter& w, const ast::S
     if (t.is(TokenKind::l_brace)) body = true, in_bases = false;
     if (!in_bases) put_hlsl(w, i, s.tokens.last);
   }
+  w.end_line();
+  w.line(detail::class_method_wrappers(toks_, s));
 }
 
 void EffectUnitBuilder::emit_method_definition(detail::ShaderTextWriter& w, const ast::Function& m) {
@@ -175,10 +183,11 @@ std::string EffectUnitBuilder::dynamic_linkage_in(ast::TokenSpan span) const {
   for (uint32_t i = span.first; i < span.last && i < toks_.size(); ++i) {
     if (!toks_[i].is(TokenKind::identifier)) continue;
     const std::string_view word = toks_[i].text();
-    for (const std::string& name : interfaces_)
-      if (word == name) return "interface '" + name + "'";
-    for (const std::string& name : interface_instances_)
-      if (word == name) return "interface instance '" + name + "'";
+    for (const ast::Struct* iface : linkage_.interfaces)
+      if (word == iface->name && linkage_.bindable(*iface).empty()) return "interface '" + iface->name + "'";
+    for (const ast::Variable* v : linkage_.interface_variables)
+      if (word == v->name && linkage_.bindable(*linkage_.interface_named(v->type.name)).empty())
+        return "interface variable '" + v->name + "' of interface '" + v->type.name + "'";
   }
   return {};
 }

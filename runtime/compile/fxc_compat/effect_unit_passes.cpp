@@ -302,9 +302,17 @@ bool EffectUnitBuilder::resolve(const ast::Expr& e, StageUnit& stage, int depth)
         for (const ast::ExprPtr& a : e.args[1]->args) args.push_back(a);
         return hlsl(stage, e.args[0]->text, e.args[1]->text, args, e.range);
       }
-      // ConstructGSWithSO(shader, ...), BindInterfaces(shader, instances...), SetXShader(shader).
-      if ((iequals(e.text, "ConstructGSWithSO") || iequals(e.text, "BindInterfaces") || stage_of_state(e.text)) &&
-          !e.args.empty() && e.args[0])
+      // BindInterfaces(shader, instances...): the shader's interface parameters take the instances.
+      if (iequals(e.text, "BindInterfaces") && !e.args.empty() && e.args[0]) {
+        std::vector<const ast::Expr*> outer = std::move(bound_interfaces_);
+        bound_interfaces_.clear();
+        for (size_t i = 1; i < e.args.size(); ++i) bound_interfaces_.push_back(e.args[i]);
+        const bool resolved = resolve(*e.args[0], stage, depth + 1);
+        bound_interfaces_ = std::move(outer);
+        return resolved;
+      }
+      // ConstructGSWithSO(shader, ...), SetXShader(shader).
+      if ((iequals(e.text, "ConstructGSWithSO") || stage_of_state(e.text)) && !e.args.empty() && e.args[0])
         return resolve(*e.args[0], stage, depth + 1);
       return invalid(stage, "'" + e.text + "(...)' does not name a shader");
     }
@@ -487,22 +495,44 @@ bool EffectUnitBuilder::hlsl(StageUnit& stage, const std::string& profile, const
   const ast::Function* f = function(name, args.size());
   // The checker reports unknown functions (undefined-reference).
   if (!f) return invalid(stage, "no shader function '" + name + "' with a body");
+  // Interface parameters: a `uniform` one takes a compile-time argument (the SDK's
+  // PSMainUniform(g_abstractLight)), any other an instance BindInterfaces binds.
+  const size_t interfaces = std::count_if(f->params.begin(), f->params.end(), [&](const ast::Variable& p) {
+    return is_interface_parameter(linkage_, p) && !(p.storage & ast::kUniform);
+  });
+  if (interfaces != bound_interfaces_.size()) {
+    sink_.error("unsupported-interface-binding", range,
+                "'" + name + "' takes " + std::to_string(interfaces) + " interface parameter(s), but " +
+                    std::to_string(bound_interfaces_.size()) +
+                    " instance(s) are bound: bind one to each with BindInterfaces(shader, instances...)");
+    return invalid(stage, "its interface parameters are not bound");
+  }
   // Entry points overloaded by their uniform parameters (`PS()` beside `PS(uniform int mode)`)
   // share a name glslang cannot take as an entry point: a wrapper calls the one chosen.
   const bool overloaded = std::count_if(functions_.begin(), functions_.end(), [&](const ast::Function* g) {
                             return g->name == name && !g->body.empty();
                           }) > 1;
-  if (args.empty() && !overloaded && !(stage.stage == ShaderStage::fragment && has_d3d9_system_value(*f))) return true;
-  size_t uniforms = 0;
-  for (const ast::Variable& p : f->params) uniforms += (p.storage & ast::kUniform) != 0;
-  if (args.size() > uniforms) {
+  if (args.empty() && interfaces == 0 && !overloaded &&
+      !(stage.stage == ShaderStage::fragment && has_d3d9_system_value(*f)))
+    return true;
+  std::vector<const ast::Variable*> uniforms;
+  for (const ast::Variable& p : f->params)
+    if (p.storage & ast::kUniform) uniforms.push_back(&p);
+  if (args.size() > uniforms.size()) {
     sink_.error("effect-shader-arguments", range,
-                "'" + name + "' takes " + std::to_string(uniforms) + " uniform parameter(s), but " +
+                "'" + name + "' takes " + std::to_string(uniforms.size()) + " uniform parameter(s), but " +
                     std::to_string(args.size()) + " compile-time argument(s) are given");
     return invalid(stage, "too many compile-time arguments");
   }
-  for (const ast::Expr* a : args) {
+  for (size_t k = 0; k < args.size(); ++k) {
+    const ast::Expr* a = args[k];
     std::string text;
+    if (const ast::Struct* iface = a ? linkage_.interface_named(uniforms[k]->type.name) : nullptr) {
+      if (!spell_bound_instance(*a, *iface, text))
+        return invalid(stage, "an interface argument is not a class instance or interface variable");
+      stage.arguments.push_back(std::move(text));
+      continue;
+    }
     if (!a || a->kind == ast::ExprKind::compile || a->kind == ast::ExprKind::asm_block ||
         a->kind == ast::ExprKind::state_block || !spell(a, text)) {
       sink_.error("effect-shader-argument", a ? a->range : range,
@@ -510,6 +540,28 @@ bool EffectUnitBuilder::hlsl(StageUnit& stage, const std::string& profile, const
       return invalid(stage, "a compile-time argument is not a constant expression");
     }
     stage.arguments.push_back(std::move(text));
+  }
+  // The arguments in parameter order: compile-time ones to uniform parameters, bound
+  // instances to the other interface parameters.
+  if (interfaces) {
+    std::vector<std::string> ordered;
+    size_t uniform = 0, bound = 0;
+    for (const ast::Variable& p : f->params) {
+      if ((p.storage & ast::kUniform) && uniform == stage.arguments.size()) {
+        sink_.error("unsupported-interface-binding", range,
+                    "'" + name + "' takes interface parameters: give each of its uniform parameters an argument too");
+        return invalid(stage, "a uniform parameter has no argument");
+      }
+      if (p.storage & ast::kUniform) {
+        ordered.push_back(stage.arguments[uniform++]);
+      } else if (const ast::Struct* iface = linkage_.interface_named(p.type.name)) {
+        std::string text;
+        if (!spell_bound_instance(*bound_interfaces_[bound++], *iface, text))
+          return invalid(stage, "a bound instance is not a class instance or interface variable");
+        ordered.push_back(std::move(text));
+      }
+    }
+    stage.arguments = std::move(ordered);
   }
   stage.entry_point = name + "__fx_args";
   for (const EffectUnits::Wrapper& w : u_.wrappers_)
@@ -561,6 +613,26 @@ bool EffectUnitBuilder::has_d3d9_system_value(const ast::Function& f) const {
   return false;
 }
 
+bool EffectUnitBuilder::takes_argument(const ast::Variable& p) const {
+  return (p.storage & ast::kUniform) || is_interface_parameter(linkage_, p);
+}
+
+bool EffectUnitBuilder::spell_bound_instance(const ast::Expr& e, const ast::Struct& iface, std::string& out) {
+  const ast::Expr* base = e.kind == ast::ExprKind::index && !e.args.empty() ? e.args[0] : &e;
+  std::string spelled;
+  if (base && base->kind == ast::ExprKind::identifier && spell(&e, spelled)) {
+    for (const ast::Variable* v : linkage_.interface_variables)
+      if (v->name == base->text && v->type.name == iface.name) return out = spelled, true;
+    // A class instance binds statically: its id, a constant the dispatcher's switch folds.
+    spelled.erase(std::remove(spelled.begin(), spelled.end(), ' '), spelled.end());
+    if (std::optional<int> id = linkage_.instance_id(iface, spelled)) return out = std::to_string(*id), true;
+  }
+  sink_.error("unsupported-interface-binding", e.range,
+              "BindInterfaces binds an interface variable or a class instance of a class implementing '" +
+                  std::string(iface.name) + "', written as its name or name[literal]");
+  return false;
+}
+
 std::string EffectUnitBuilder::wrapper(const ast::Function& f, const std::vector<std::string>& args) const {
   std::string text;
   PresumedLocation at = sm_.presumed(f.name_range.begin);
@@ -576,7 +648,7 @@ std::string EffectUnitBuilder::wrapper(const ast::Function& f, const std::vector
   for (size_t i = 0; i < f.params.size(); ++i) {
     const ast::Variable& p = f.params[i];
     if (i) call += ", ";
-    if ((p.storage & ast::kUniform) && bound < args.size()) {
+    if (takes_argument(p) && bound < args.size()) {
       call += args[bound++];
       continue;
     }

@@ -177,11 +177,13 @@ void EffectUnitBuilder::build() {
     }
   if (u_.name_.empty()) u_.name_ = "<effect>";
   index_declarations();
+  linkage_ = detail::class_linkage(effect_);
   find_lowered_globals();
   respelled_ = detail::flat_initializer_spellings(toks_);
   respelled_.merge(detail::case_insensitive_type_spellings(toks_, u_.symbols_));
   respelled_.merge(detail::multisample_operator_spellings(toks_));
   respelled_.merge(detail::untyped_sampler_spellings(toks_));
+  respelled_.merge(detail::class_linkage_spellings(toks_, linkage_, functions_));
   respell_helper_uniforms();
   emit_hlsl();
   for (uint32_t i = 0; i < u_.decls_.size(); ++i) {
@@ -259,8 +261,9 @@ void EffectUnitBuilder::mark_dynamic_linkage() {
     if (fresh) it->second = u_.reached_from({stage.function});
     for (uint32_t i : it->second)
       if (!u_.decls_[i].dynamic_linkage.empty()) {
-        invalid(stage, "fx_5_0 dynamic linkage: '" + u_.decls_[i].names.front() + "' uses " +
-                           u_.decls_[i].dynamic_linkage + ", and fxkit does not compile interfaces to SPIR-V");
+        invalid(stage, "fx_5_0 dynamic linkage: '" + u_.decls_[i].names.front() + "' calls through " +
+                           u_.decls_[i].dynamic_linkage +
+                           ", which no class instance implements: declare an instance of a class that does");
         return;
       }
   };

@@ -105,6 +105,9 @@ struct ParamInfo {
   // static, not a shader or state object).
   bool settable = false;
   std::vector<Annotation> annotations{};
+  // An fx_5_0 interface variable (`iLight g_light;`, an int): the class instance variables it
+  // can be bound to, in the order of the ids it holds (Effect::set_class_instance).
+  std::vector<std::string> class_instances{};
   // The annotation called `name`, or nullptr.
   const Annotation* annotation(std::string_view name) const;
 };
@@ -129,6 +132,9 @@ struct TechniqueInfo {
   // As the file writes them: selection's (Scheme, MaxError, CostNsPerPixel, ...; see
   // docs/selection.md) and any other.
   std::vector<Annotation> annotations{};
+  // An fx_5_0 interface variable (`iLight g_light;`, an int): the class instance variables it
+  // can be bound to, in the order of the ids it holds (Effect::set_class_instance).
+  std::vector<std::string> class_instances{};
   // The annotation called `name`, or nullptr.
   const Annotation* annotation(std::string_view name) const;
 };
@@ -223,6 +229,10 @@ class Effect {
     return set_matrix_checked(p, m16, order);
   }
   bool set(Param p, std::span<const int32_t> values);
+  // Binds an fx_5_0 interface variable to a class instance variable (`g_sun`, `g_lamps[1]`),
+  // as FX11's SetClassInstance: calls through the variable run that instance's class. No
+  // recompile; false when `instance` is not one of ParamInfo::class_instances.
+  bool set_class_instance(Param interface_variable, std::string_view instance);
   // The current value of ParamInfo::components: floats for float parameters, ints for int,
   // uint and bool ones (false when the kind or the count does not match).
   bool get(Param p, std::span<float> out) const;

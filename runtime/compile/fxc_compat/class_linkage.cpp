@@ -1,0 +1,190 @@
+// implements `class_linkage.h`: fx_5_0 interfaces and classes written as HLSL glslang takes.
+#include "class_linkage.h"
+
+#include <algorithm>
+#include <unordered_set>
+
+#include "effect_unit_builder.h"  // join_tokens
+
+namespace fx::detail {
+namespace {
+
+const ast::Struct* named(const std::vector<const ast::Struct*>& list, std::string_view name) {
+  for (const ast::Struct* s : list)
+    if (s->name == name) return s;
+  return nullptr;
+}
+
+// `R name(params)` for a method (its return type and parameters as written).
+std::string signature(const std::vector<Token>& toks, const ast::Function& m, const std::string& name,
+                      const std::string& leading) {
+  std::string text = std::string(m.return_type.name);
+  if (!m.return_type.template_arg.empty()) text += "<" + std::string(m.return_type.template_arg) + ">";
+  text += " " + name + "(" + leading;
+  for (const ast::Variable& p : m.params) {
+    if (!leading.empty() || &p != &m.params.front()) text += ", ";
+    text += join_tokens(toks, p.tokens);
+  }
+  return text + ")";
+}
+
+// The arguments that pass a method's parameters on: `a, b`.
+std::string forwarded(const ast::Function& m) {
+  std::string text;
+  for (const ast::Variable& p : m.params) text += (text.empty() ? "" : ", ") + std::string(p.name);
+  return text;
+}
+
+// The `]` closing the `[` at `open`, or 0.
+size_t closing_square(const std::vector<Token>& toks, size_t open, size_t last) {
+  int depth = 0;
+  for (size_t i = open; i < last; ++i) {
+    if (toks[i].is(TokenKind::l_square)) ++depth;
+    if (toks[i].is(TokenKind::r_square) && --depth == 0) return i;
+  }
+  return 0;
+}
+
+// The index of the token spelling a declaration's type name.
+std::optional<uint32_t> type_token(const std::vector<Token>& toks, const ast::Variable& v) {
+  for (uint32_t i = v.tokens.first; i < v.tokens.last && i < toks.size(); ++i)
+    if (toks[i].is_identifier(v.type.name)) return i;
+  return std::nullopt;
+}
+
+bool has_method(const ast::Struct& s, std::string_view name) {
+  return std::any_of(s.methods.begin(), s.methods.end(), [&](const ast::Function& m) { return m.name == name; });
+}
+
+}  // namespace
+
+const ast::Struct* ClassLinkage::interface_named(std::string_view name) const { return named(interfaces, name); }
+
+const ast::Struct* ClassLinkage::class_named(std::string_view name) const { return named(classes, name); }
+
+std::vector<BindableInstance> ClassLinkage::bindable(const ast::Struct& iface) const {
+  return effect ? bindable_instances(*effect, iface.name) : std::vector<BindableInstance>{};
+}
+
+std::optional<int> ClassLinkage::instance_id(const ast::Struct& iface, std::string_view instance) const {
+  std::vector<BindableInstance> list = bindable(iface);
+  for (size_t i = 0; i < list.size(); ++i)
+    if (list[i].name == instance) return static_cast<int>(i);
+  return std::nullopt;
+}
+
+ClassLinkage class_linkage(const ast::Effect& effect) {
+  ClassLinkage out;
+  out.effect = &effect;
+  for (const ast::Decl& d : effect.decls)
+    if (d.kind == ast::DeclKind::structure && d.structure->kind == ast::StructKind::interface_type)
+      out.interfaces.push_back(d.structure);
+    else if (d.kind == ast::DeclKind::structure && d.structure->kind == ast::StructKind::class_type)
+      out.classes.push_back(d.structure);
+  if (out.interfaces.empty()) return out;
+  for (const ast::Decl& d : effect.decls) {
+    if (d.kind != ast::DeclKind::variable) continue;
+    if (out.interface_named(d.variable->type.name)) out.interface_variables.push_back(d.variable);
+    if (out.class_named(d.variable->type.name)) out.instances.push_back(d.variable);
+  }
+  return out;
+}
+
+bool is_interface_parameter(const ClassLinkage& linkage, const ast::Variable& param) {
+  return linkage.interface_named(param.type.name) != nullptr;
+}
+
+std::string dispatcher_name(std::string_view iface, std::string_view method) {
+  return std::string(iface) + "__" + std::string(method) + "__fx";
+}
+
+std::unordered_map<uint32_t, std::string> class_linkage_spellings(const std::vector<Token>& toks,
+                                                                  const ClassLinkage& linkage,
+                                                                  const std::vector<const ast::Function*>& functions) {
+  std::unordered_map<uint32_t, std::string> out;
+  if (linkage.empty()) return out;
+  // The type each name that calls go through has: interface variables, class instances.
+  std::unordered_map<std::string_view, const ast::Struct*> globals;
+  for (const ast::Variable* v : linkage.interface_variables) {
+    globals.emplace(v->name, linkage.interface_named(v->type.name));
+    if (std::optional<uint32_t> t = type_token(toks, *v)) out.emplace(*t, "int");
+  }
+  for (const ast::Variable* v : linkage.instances) {
+    const ast::Struct* cls = linkage.class_named(v->type.name);
+    globals.emplace(v->name, cls);
+    // An instance of a class without data holds nothing to upload: left in the global
+    // uniform block, an empty struct could make it a block of zero bytes.
+    std::optional<uint32_t> t = cls->members.empty() ? type_token(toks, *v) : std::nullopt;
+    if (t) out.emplace(*t, "static " + std::string(v->type.name));
+  }
+  for (const ast::Function* f : functions) {
+    std::unordered_map<std::string_view, const ast::Struct*> names = globals;
+    for (const ast::Variable& p : f->params)
+      if (const ast::Struct* iface = linkage.interface_named(p.type.name)) {
+        names.insert_or_assign(p.name, iface);
+        if (std::optional<uint32_t> t = type_token(toks, p)) out.emplace(*t, "int");
+      }
+    const size_t last = std::min<size_t>(f->tokens.last, toks.size());
+    for (size_t i = f->tokens.first; i < last; ++i) {
+      if (!toks[i].is(TokenKind::identifier) || (i > 0 && toks[i - 1].is(TokenKind::period))) continue;
+      auto found = names.find(toks[i].text());
+      if (found == names.end()) continue;
+      size_t dot = i + 1;
+      if (dot < last && toks[dot].is(TokenKind::l_square)) dot = closing_square(toks, dot, last) + 1;
+      if (dot == 1 || dot + 2 >= last || !toks[dot].is(TokenKind::period) || !toks[dot + 1].is(TokenKind::identifier) ||
+          !toks[dot + 2].is(TokenKind::l_paren) || !has_method(*found->second, toks[dot + 1].text()))
+        continue;
+      const ast::Struct& type = *found->second;
+      // `g[1].M(a)` -> `I__M__fx(g[1], a)`: the callee goes before the name, the rest blank.
+      out[i] = dispatcher_name(type.name, toks[dot + 1].text()) + "(" + std::string(toks[i].text());
+      const bool no_arguments = dot + 3 < last && toks[dot + 3].is(TokenKind::r_paren);
+      out[dot].assign(1, ' ');
+      out[dot + 1].assign(1, ' ');
+      out[dot + 2].assign(1, no_arguments ? ' ' : ',');
+    }
+  }
+  return out;
+}
+
+std::string interface_prototypes(const std::vector<Token>& toks, const ast::Struct& iface) {
+  std::string text;
+  for (const ast::Function& m : iface.methods)
+    text += signature(toks, m, dispatcher_name(iface.name, m.name), "int instance__fx") + ";\n";
+  return text;
+}
+
+std::string class_method_wrappers(const std::vector<Token>& toks, const ast::Struct& cls) {
+  std::string text;
+  for (const ast::Function& m : cls.methods) {
+    const std::string call = "self." + std::string(m.name) + "(" + forwarded(m) + ");";
+    text += signature(toks, m, dispatcher_name(cls.name, m.name), std::string(cls.name) + " self") + " { " +
+            (m.return_type.name == "void" ? "" : "return ") + call + " }\n";
+  }
+  return text;
+}
+
+std::string interface_dispatchers(const std::vector<Token>& toks, const ClassLinkage& linkage) {
+  std::string text;
+  for (const ast::Struct* iface : linkage.interfaces) {
+    const std::vector<BindableInstance> instances = linkage.bindable(*iface);
+    for (const ast::Function& m : iface->methods) {
+      const bool returns = m.return_type.name != "void";
+      text += signature(toks, m, dispatcher_name(iface->name, m.name), "int instance__fx") + " {\n";
+      text += "  switch (instance__fx) {\n";
+      // An id out of range (an unbound variable) takes the first instance.
+      for (size_t k = instances.size(); k-- > 0;) {
+        const BindableInstance& instance = instances[k];
+        const std::string call = dispatcher_name(instance.cls->name, m.name) + "(" + instance.name +
+                                 (m.params.empty() ? "" : ", ") + forwarded(m) + ")";
+        text += k == 0 ? "  default: " : "  case " + std::to_string(k) + ": ";
+        text += returns ? "return " + call + ";\n" : call + "; return;\n";
+      }
+      text += "  }\n";
+      if (returns && instances.empty()) text += "  return (" + std::string(m.return_type.name) + ")0;\n";
+      text += "}\n";
+    }
+  }
+  return text;
+}
+
+}  // namespace fx::detail

@@ -1,0 +1,64 @@
+// fx_5_0 dynamic linkage (interfaces, classes, class instances) written as HLSL glslang takes,
+// which has no interfaces. An interface variable becomes an `int` uniform, the class-instance
+// id the application sets (FX11's SetClassInstance); each call through an interface becomes a
+// call of a dispatcher that switches over the class instances of the classes implementing
+// it; a call on a class instance passes a copy of it to a wrapper (glslang writes invalid
+// SPIR-V for a method called on a uniform). docs/fx11-parity.md has the mapping. Private to
+// runtime/compile.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "fx/ast.h"
+#include "fx/model/class_instances.h"
+
+namespace fx::detail {
+
+// The interfaces, classes and their instances of an effect.
+struct ClassLinkage {
+  std::vector<const ast::Struct*> interfaces;
+  std::vector<const ast::Struct*> classes;
+  std::vector<const ast::Variable*> interface_variables;  // globals of an interface type
+  std::vector<const ast::Variable*> instances;            // globals of a class type
+  const ast::Effect* effect = nullptr;
+
+  bool empty() const { return interfaces.empty(); }
+  const ast::Struct* interface_named(std::string_view name) const;
+  const ast::Struct* class_named(std::string_view name) const;
+  // The class instances an interface variable of `iface` can be bound to: the index is the
+  // class-instance id.
+  std::vector<BindableInstance> bindable(const ast::Struct& iface) const;
+  // The id of `instance` (a class instance variable or element, spelled `g` or `g[1]`)
+  // among those bindable to `iface`, or nullopt.
+  std::optional<int> instance_id(const ast::Struct& iface, std::string_view instance) const;
+};
+
+ClassLinkage class_linkage(const ast::Effect& effect);
+
+// Whether a function parameter is of an interface type (a uniform bound by BindInterfaces).
+bool is_interface_parameter(const ClassLinkage& linkage, const ast::Variable& param);
+
+// The spellings, by token index, that write interface-typed declarations as `int` and calls
+// through interfaces and on class instances as dispatcher and wrapper calls, keeping every
+// other token's column.
+std::unordered_map<uint32_t, std::string> class_linkage_spellings(const std::vector<Token>& toks,
+                                                                  const ClassLinkage& linkage,
+                                                                  const std::vector<const ast::Function*>& functions);
+
+// The name a call through `iface`'s method `method` is written as.
+std::string dispatcher_name(std::string_view iface, std::string_view method);
+
+// What stands in an interface's place: the prototypes of its dispatchers (defined after every
+// class instance by interface_dispatchers).
+std::string interface_prototypes(const std::vector<Token>& toks, const ast::Struct& iface);
+// A class's method wrappers, `R C__M__fx(C self, params) { return self.M(args); }`, written
+// after the class.
+std::string class_method_wrappers(const std::vector<Token>& toks, const ast::Struct& cls);
+// The dispatchers' definitions of every interface: a switch over the class-instance id.
+std::string interface_dispatchers(const std::vector<Token>& toks, const ClassLinkage& linkage);
+
+}  // namespace fx::detail
