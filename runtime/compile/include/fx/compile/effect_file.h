@@ -39,6 +39,10 @@ struct EffectFile {
   // their ranges point into end with the failed load.
   static std::unique_ptr<EffectFile> load(const std::string& path, const FrontEndOptions& options, DiagnosticSink& sink,
                                           std::string* located = nullptr);
+  // The same for effect text in memory named `name` (an effect a tool carries, such as the
+  // preview's test scene).
+  static std::unique_ptr<EffectFile> load_text(const std::string& name, std::string text,
+                                               const FrontEndOptions& options, DiagnosticSink& sink);
   // The technique named `name`, or kNoIndex.
   uint32_t find_technique(std::string_view name) const;
 };
