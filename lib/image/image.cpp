@@ -19,6 +19,23 @@ bool Image::constant() const {
   return true;
 }
 
+std::optional<std::vector<uint8_t>> Image::flat_over(std::span<const uint8_t> background, int tolerance) const {
+  auto near = [&](const uint8_t* a, const uint8_t* b) {
+    for (uint32_t c = 0; c < channels; ++c)
+      if (std::abs(int(a[c]) - int(b[c])) > tolerance) return false;
+    return true;
+  };
+  const uint8_t* first = nullptr;
+  for (size_t i = 0; i + channels <= pixels.size(); i += channels) {
+    const uint8_t* p = pixels.data() + i;
+    if (near(p, background.data())) continue;
+    if (!first) first = p;
+    else if (!near(p, first)) return std::nullopt;
+  }
+  if (!first) return std::nullopt;
+  return std::vector<uint8_t>(first, first + channels);
+}
+
 ImageF ImageF::blank(uint32_t width, uint32_t height, uint32_t channels) {
   ImageF image{width, height, channels, {}};
   image.pixels.assign(size_t(width) * height * channels, 0.0f);

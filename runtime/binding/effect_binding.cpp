@@ -290,8 +290,9 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
           const TextureInfo* tex = slot.texture_param != kNoIndex ? model.texture_of(slot.texture_param) : nullptr;
           if (!tex) {
             sink.warning("vk-texture-unresolved", pass_info.range,
-                         "pass '" + pass_info.name + "': '" + image.name +
-                             "' names no texture parameter; a white texture stands in until set_texture()");
+                         "pass '" + pass_info.name + "': '" + image.name + "' names no texture parameter; a " +
+                             stand_in_name(texture_stand_in(nullptr, image.dim, textures.preview_stand_ins())) +
+                             " stands in until set_texture()");
             slot.data = textures.resolve(model, TextureInfo{}, desc.effect_dir, image.dim, image.arrayed, sink);
           } else {
             const bool first = std::find(resolved.begin(), resolved.end(), slot.texture_param) == resolved.end();

@@ -2,6 +2,7 @@
 #include "fx/binding/effect_preview.h"
 
 #include "fx/vulkan/one_shot.h"
+#include "preview_test_scene.h"
 
 namespace fx::vk {
 
@@ -40,6 +41,8 @@ std::unique_ptr<EffectPreview> EffectPreview::create(const Context& ctx, const M
   p->index_count_ = uint32_t(mesh.indices.size());
   return p;
 }
+
+EffectPreview::EffectPreview(const Context& ctx) : ctx_(&ctx), textures_(ctx) {}
 
 EffectPreview::~EffectPreview() {
   if (ctx_) ctx_->wait_idle();

@@ -2,6 +2,7 @@
 #include "fx/binding/effect_preview.h"
 #include "fx/binding/script_runner.h"
 #include "fx/vulkan/one_shot.h"
+#include "preview_test_scene.h"
 
 namespace fx::vk {
 
@@ -27,6 +28,10 @@ bool EffectPreview::make_quad(DiagnosticSink& sink) {
 std::optional<fx::Image> EffectPreview::render_script(ScriptRunner& runner, uint32_t vertex_layout,
                                                       DiagnosticSink& sink) {
   if (!make_quad(sink)) return std::nullopt;
+  if (runner.draws_scene() && !test_scene_) {
+    test_scene_ = PreviewTestScene::create(*ctx_, *this, sink);
+    if (!test_scene_) return std::nullopt;
+  }
   auto draw = [this](VkCommandBuffer cmd, VkBuffer vertices, VkBuffer indices, uint32_t count) {
     const VkBuffer buffers[2] = {vertices, constants_.handle()};
     const VkDeviceSize offsets[2] = {0, 0};
@@ -42,6 +47,11 @@ std::optional<fx::Image> EffectPreview::render_script(ScriptRunner& runner, uint
   frame.draw_quad = [&](VkCommandBuffer cmd) {
     draw(cmd, quad_vertices_.handle(), quad_indices_.handle(), quad_index_count_);
   };
+  bool scene_drawn = true;
+  if (test_scene_)
+    frame.draw_scene = [&](VkCommandBuffer cmd, const RenderTarget& target) {
+      scene_drawn = test_scene_->draw(cmd, target, scene(), frame.draw_geometry, sink) && scene_drawn;
+    };
   frames_->begin_frame();
   bool recorded = true;
   const bool submitted = submit_and_wait(
@@ -55,7 +65,7 @@ std::optional<fx::Image> EffectPreview::render_script(ScriptRunner& runner, uint
         target_->record_readback(cmd);
       },
       sink);
-  if (!submitted || !recorded) return std::nullopt;
+  if (!submitted || !recorded || !scene_drawn) return std::nullopt;
   return target_->readback_pixels(sink);
 }
 

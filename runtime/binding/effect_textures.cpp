@@ -1,7 +1,6 @@
 // EffectTextureCache: bake/decode once, upload once, stand-ins for missing files.
 #include "fx/binding/effect_textures.h"
 
-#include <cctype>
 #include <span>
 #include <system_error>
 #include <variant>
@@ -10,13 +9,6 @@
 
 namespace fx::vk {
 namespace {
-
-bool iequals(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i)
-    if (std::toupper(static_cast<unsigned char>(a[i])) != std::toupper(static_cast<unsigned char>(b[i]))) return false;
-  return true;
-}
 
 // Generator parameters in a canonical order (the map is sorted by lower-cased name).
 std::string generator_key(const TextureInfo& t) {
@@ -29,19 +21,13 @@ std::string generator_key(const TextureInfo& t) {
   return key;
 }
 
-// A 1x1 texel that leaves the shading it feeds neutral: a normal map's "straight out of
-// the surface", white for colours and masks, a depth of 1.0 for a depth comparison (a shadow
-// map nothing is in front of). Made in the shape the shader samples.
-enum class StandIn { white, flat_normal, depth, multisampled };
-
 std::string stand_in_key(StandIn kind, ImageDim dim, bool arrayed) {
-  const char* name = kind == StandIn::flat_normal    ? "normal"
-                     : kind == StandIn::depth        ? "depth"
-                     : kind == StandIn::multisampled ? "multisampled"
-                                                     : "white";
-  return std::string("stand-in:") + name + ":" + std::to_string(int(dim)) + (arrayed ? ":array" : "");
+  return std::string("stand-in:") + stand_in_name(kind) + ":" + std::to_string(int(dim)) + (arrayed ? ":array" : "");
 }
 
+// A neutral stand-in is one texel: a normal map's "straight out of the surface", white for
+// colours and masks, a depth of 1.0 for a depth comparison (a shadow map nothing is in front
+// of). A preview stand-in is an image (texture_stand_in.h). Made in the shape the shader samples.
 EffectTextureData stand_in(StandIn kind, ImageDim dim, bool arrayed) {
   EffectTextureData d;
   d.key = stand_in_key(kind, dim, arrayed);
@@ -51,6 +37,10 @@ EffectTextureData stand_in(StandIn kind, ImageDim dim, bool arrayed) {
   d.depth = kind == StandIn::depth;
   d.multisampled = kind == StandIn::multisampled;
   if (d.depth) return d;  // uploaded by Texture::solid_depth
+  if (fx::DdsTexture texels = stand_in_texels(kind, dim); !texels.data.empty()) {
+    d.dds = std::move(texels);
+    return d;
+  }
   const uint8_t c = kind == StandIn::flat_normal ? 128 : 255;
   fx::Image image = fx::Image::blank(1, 1, 4);
   const uint8_t texel[4] = {c, c, 255, 255};
@@ -145,13 +135,11 @@ std::shared_ptr<const EffectTextureData> EffectTextureCache::resolve(const Effec
                                                                      ImageDim dim, bool arrayed, DiagnosticSink& sink,
                                                                      std::span<const std::filesystem::path> more_dirs) {
   const Parameter* param = texture.parameter < model.parameters.size() ? &model.parameters[texture.parameter] : nullptr;
-  const bool normal_map = param && (iequals(param->semantic, "NORMALMAP") || iequals(param->semantic, "NORMAL"));
-  const StandIn neutral = normal_map ? StandIn::flat_normal : StandIn::white;
+  const StandIn neutral = texture_stand_in(param, dim, preview_stand_ins_);
   const SourceRange at = texture.resource_range.valid() ? texture.resource_range : param ? param->range : SourceRange{};
   const std::string what =
       "texture file '" + texture.resource_name + "' of '" + (param ? param->name : std::string()) + "'";
-  const std::string standing_in =
-      std::string("; a neutral ") + (normal_map ? "flat normal" : "white") + " texture stands in";
+  const std::string standing_in = std::string("; a ") + stand_in_name(neutral) + " stands in";
   std::string key;
   std::filesystem::path file;
   if (!texture.generator.empty()) {
@@ -229,7 +217,7 @@ const Texture* EffectTextureCache::gpu(const EffectTextureData& data, Diagnostic
   } else if (data.multisampled) {
     const uint8_t* p = data.image->pixels.data();
     texture = Texture::solid_multisampled(*ctx_, {p[0], p[1], p[2], p[3]}, data.arrayed, sink);
-  } else if (data.stand_in) {
+  } else if (data.stand_in && data.image) {
     const uint8_t* p = data.image->pixels.data();
     texture = Texture::solid(*ctx_, {p[0], p[1], p[2], p[3]}, image_kind(data.dim), data.arrayed, sink);
   } else if (data.table) texture = Texture::from_table(*ctx_, *data.table, sink);

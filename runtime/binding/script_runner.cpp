@@ -131,6 +131,16 @@ const RenderTarget* ScriptRunner::target(const std::string& name) const {
   return it != targets_.end() ? &it->second : nullptr;
 }
 
+bool ScriptRunner::draws_scene() const {
+  const TechniqueInfo& t = model_->techniques[technique_];
+  auto has = [](const ScriptPlan& plan) {
+    return std::any_of(plan.steps.begin(), plan.steps.end(),
+                       [](const ScriptStep& s) { return s.command == ScriptCommand::script_external; });
+  };
+  return has(*t.script) ||
+         std::any_of(t.passes.begin(), t.passes.end(), [&](const PassInfo& p) { return p.script && has(*p.script); });
+}
+
 bool ScriptRunner::record(VkCommandBuffer cmd, const ScriptFrame& frame, DiagnosticSink& sink) {
   State state;
   state.cmd = cmd;
@@ -195,7 +205,7 @@ bool ScriptRunner::run(const std::vector<ScriptStep>& steps, size_t begin, size_
       case ScriptCommand::script_external:
         if (state.frame->draw_scene) {
           state.current->begin(state.cmd, ClearValues{std::nullopt, std::nullopt, 0});
-          state.frame->draw_scene(state.cmd);
+          state.frame->draw_scene(state.cmd, *state.current);
           state.current->end(state.cmd);
           if (state.current != state.frame->target)
             state.current->color().transition(state.cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);

@@ -45,15 +45,29 @@ void EffectFile::build_programs(DiagnosticSink& sink, const ShaderCompiler* shar
   programs = std::make_unique<EffectPrograms>(*units, shared ? *shared : *compiler, sources);
 }
 
-std::unique_ptr<EffectFile> EffectFile::load(const std::string& path, const FrontEndOptions& options,
-                                             DiagnosticSink& sink, std::string* located) {
-  std::unique_ptr<EffectFile> e = parse(path, options, sink);
+namespace {
+
+// The steps after the front end of a load: null, with the errors as text in `located` when
+// given, once the front end or the model reported errors.
+std::unique_ptr<EffectFile> built(std::unique_ptr<EffectFile> e, DiagnosticSink& sink, std::string* located) {
   if (sink.has_errors() || !e->build_model(sink)) {
     if (located) *located = render_text(sink.diagnostics(), e->sources);
     return nullptr;
   }
   e->build_programs(sink);
   return e;
+}
+
+}  // namespace
+
+std::unique_ptr<EffectFile> EffectFile::load(const std::string& path, const FrontEndOptions& options,
+                                             DiagnosticSink& sink, std::string* located) {
+  return built(parse(path, options, sink), sink, located);
+}
+
+std::unique_ptr<EffectFile> EffectFile::load_text(const std::string& name, std::string text,
+                                                  const FrontEndOptions& options, DiagnosticSink& sink) {
+  return built(parse_text(name, std::move(text), options, sink), sink, nullptr);
 }
 
 uint32_t EffectFile::find_technique(std::string_view name) const {

@@ -1,6 +1,7 @@
 // `fxkit render` of effects written for an engine, with nothing set up: the stand-ins
 // (bone palettes, colours, light direction and count), SV_Position as a vertex input, and
-// the warning for an image that is one flat colour.
+// the warnings for an image or an object of one flat colour, texture stand-ins that show a
+// filter, and a post effect run on the preview's test scene.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -97,12 +98,12 @@ technique T { pass P { VertexShader = compile vs_3_0 VS(); PixelShader = compile
                                  "--verbose --validation");
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* line : {"g_LightDir <- direction to the light (stand-in)",
-                           "g_MeshTexture <- neutral texture (stand-in: no ResourceName)",
+                           "g_MeshTexture <- colour test pattern (stand-in: no ResourceName)",
                            "g_LightDiffuse <- visible colour (stand-in)", "g_nNumLights <- light count (stand-in)"})
     EXPECT_NE(r.err.find(line), std::string::npos) << line << "\n" << r.err;
   ASSERT_TRUE(image);
   const uint8_t* centre = image->at(image->width / 2, image->height / 2);
-  EXPECT_GT(centre[0], 100) << "the side facing the camera is lit";
+  EXPECT_GT(std::max({centre[0], centre[1], centre[2]}), 100) << "the side facing the camera is lit";
 }
 
 // An engine's space-to-space names (Kodu's LocalToModel, WorldToCamera): the transforms
@@ -280,6 +281,80 @@ technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("'ClipFromObjectXf' is read by the shaders but left zero"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("warning: the image is constant"), std::string::npos) << r.err;
+}
+
+// A sphere drawn in one colour on the background is no preview either: the frame varies,
+// the object does not.
+TEST(FxkitRender, AnObjectInOneFlatColourIsAWarning) {
+  const std::string source = R"(
+float4x4 WorldViewProj : WORLDVIEWPROJECTION;
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProj); }
+float4 PS() : COLOR0 { return float4(1, 0, 0, 1); }
+technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)";
+  const fx::testing::CliRun flat = render("flat_object", source, "").run;
+  ASSERT_EQ(flat.status, 0) << flat.err;
+  EXPECT_NE(flat.err.find("warning: the image is one flat colour over the drawn object (255,0,0,255)"),
+            std::string::npos)
+      << flat.err;
+  EXPECT_EQ(flat.err.find("image is constant"), std::string::npos) << flat.err;
+  const std::string shaded = R"(
+float4x4 WorldViewProj : WORLDVIEWPROJECTION;
+struct V { float4 p : POSITION; float3 n : TEXCOORD0; };
+V VS(float4 p : POSITION, float3 n : NORMAL) { V o; o.p = mul(p, WorldViewProj); o.n = n; return o; }
+float4 PS(float3 n : TEXCOORD0) : COLOR0 { return float4(n * 0.5 + 0.5, 1); }
+technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)";
+  const fx::testing::CliRun varied = render("varied_object", shaded, "").run;
+  ASSERT_EQ(varied.status, 0) << varied.err;
+  EXPECT_EQ(varied.err.find("one flat colour"), std::string::npos) << varied.err;
+}
+
+// A filter of a texture no file fills (the SDK's colour inverse) shows: the stand-in is a
+// test pattern, not white, and --verbose names it.
+TEST(FxkitRender, AFilterOfATextureStandInShowsTheFilter) {
+  const auto [r, image] = render("inverse", R"(
+float4x4 WorldViewProj : WORLDVIEWPROJECTION;
+texture SceneTexture;
+sampler SceneSampler = sampler_state { Texture = <SceneTexture>; };
+struct V { float4 p : POSITION; float2 uv : TEXCOORD0; };
+V VS(float4 p : POSITION, float2 uv : TEXCOORD0) { V o; o.p = mul(p, WorldViewProj); o.uv = uv; return o; }
+float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return float4(1 - tex2D(SceneSampler, uv).rgb, 1); }
+technique ColorInverse { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)",
+                                 "--verbose --validation");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("SceneTexture <- colour test pattern (stand-in: no ResourceName)"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("one flat colour"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("image is constant"), std::string::npos) << r.err;
+  ASSERT_TRUE(image);
+}
+
+// A post effect that processes the host's scene shows it processed: the preview draws its test
+// scene for ScriptExternal, and --verbose says so.
+TEST(FxkitRender, APostEffectProcessesThePreviewsTestScene) {
+  const auto [r, image] = render("external", R"(
+float Script : STANDARDSGLOBAL < string ScriptClass = "scene"; string ScriptOrder = "postprocess"; > = 0.8;
+float4 ClearColor = {0, 0, 0, 1};
+texture ScnMap : RENDERCOLORTARGET < float2 ViewportRatio = {1, 1}; >;
+sampler ScnSamp = sampler_state { Texture = <ScnMap>; AddressU = CLAMP; AddressV = CLAMP; };
+struct Q { float4 p : POSITION; float2 uv : TEXCOORD0; };
+Q VS(float4 p : POSITION, float2 uv : TEXCOORD0) { Q o; o.p = float4(p.xy, 0, 1); o.uv = uv; return o; }
+float4 PS(float2 uv : TEXCOORD0) : COLOR0 { return float4(dot(tex2D(ScnSamp, uv).rgb, float3(0.3, 0.59, 0.11)).xxx, 1); }
+technique Grey < string Script = "RenderColorTarget0=ScnMap; ClearSetColor=ClearColor; Clear=Color; Clear=Depth; ScriptExternal=color; RenderColorTarget0=; Pass=P;"; > {
+  pass P < string Script = "Draw=Buffer;"; > { ZEnable = false; VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); }
+}
+)",
+                                 "--verbose --validation");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("ScriptExternal <- the preview's test scene (stand-in)"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("one flat colour"), std::string::npos) << r.err;
+  ASSERT_TRUE(image);
+  // Grey: the test scene's colours, each with equal channels.
+  const uint8_t* centre = image->at(image->width / 2, image->height / 2);
+  EXPECT_GT(centre[0], 20);
+  EXPECT_NEAR(centre[0], centre[1], 1);
+  EXPECT_NEAR(centre[1], centre[2], 1);
 }
 
 // The summary line's error figure says whose error it is and in what unit.

@@ -51,12 +51,14 @@ struct RenderedEffect {
   }
 };
 
-// Loads `path` and binds it for `mesh` at `size`; `technique` "" = the first that can run.
+// Loads `path` and binds it for `mesh` at `size`; `technique` "" = the first that can run;
+// `preview_stand_ins`: textures no file fills get the preview's stand-ins (texture_stand_in.h).
 inline std::unique_ptr<RenderedEffect> bind_effect(Context& ctx, const std::string& path,
                                                    const std::string& technique = "",
                                                    const std::string& mesh = "sphere", uint32_t size = 96,
                                                    std::optional<DynamicStateSet> dynamic = std::nullopt,
-                                                   VkFormat color = VK_FORMAT_R8G8B8A8_UNORM) {
+                                                   VkFormat color = VK_FORMAT_R8G8B8A8_UNORM,
+                                                   bool preview_stand_ins = false) {
   auto r = std::make_unique<RenderedEffect>();
   DiagnosticSink sink;
   FrontEndOptions options;
@@ -72,6 +74,7 @@ inline std::unique_ptr<RenderedEffect> bind_effect(Context& ctx, const std::stri
   r->preview = EffectPreview::create(ctx, *m, desc, sink);
   EXPECT_TRUE(r->preview) << describe(sink);
   if (!r->preview) return nullptr;
+  r->preview->textures().set_preview_stand_ins(preview_stand_ins);
   EffectBindingDesc bd = r->preview->binding_desc();
   bd.effect_dir = std::filesystem::path(path).parent_path();
   bd.dynamic = dynamic;

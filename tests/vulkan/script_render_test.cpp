@@ -80,6 +80,66 @@ TEST_F(ScriptRenderTest, PostEffectBlursTheSceneItDrewIntoATarget) {
     EXPECT_LE(std::abs(int(image->at(x, y)[0]) - int(image->at(x - 1, y)[0])), 255 / 7 + 8) << x;
 }
 
+// A post effect of the FX Composer kind: the host's scene (ScriptExternal) into a target, then
+// a filter of it on a full-screen quad.
+constexpr const char* kExternalEffect = R"(float4 ClearColor = {0, 0, 0, 1};
+float Script : STANDARDSGLOBAL < string ScriptClass = "scene"; string ScriptOrder = "postprocess"; string ScriptOutput = "color"; > = 0.8;
+texture ScnMap : RENDERCOLORTARGET < float2 ViewportRatio = {1, 1}; >;
+sampler ScnSamp = sampler_state { Texture = <ScnMap>; MinFilter = POINT; MagFilter = POINT; AddressU = CLAMP; AddressV = CLAMP; };
+struct QuadOut { float4 p : POSITION; float2 uv : TEXCOORD0; };
+QuadOut QuadVS(float4 p : POSITION, float2 uv : TEXCOORD0) { QuadOut o; o.p = float4(p.xy, 0, 1); o.uv = uv; return o; }
+float4 ShowPS(float2 uv : TEXCOORD0) : COLOR0 { return tex2D(ScnSamp, uv); }
+float4 InvertPS(float2 uv : TEXCOORD0) : COLOR0 { return float4(1 - tex2D(ScnSamp, uv).rgb, 1); }
+technique Show < string Script = "RenderColorTarget0=ScnMap; ClearSetColor=ClearColor; Clear=Color; Clear=Depth; ScriptExternal=color; RenderColorTarget0=; Pass=P;"; > {
+  pass P < string Script = "Draw=Buffer;"; > { ZEnable = false; VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 ShowPS(); }
+}
+technique Invert < string Script = "RenderColorTarget0=ScnMap; ClearSetColor=ClearColor; Clear=Color; Clear=Depth; ScriptExternal=color; RenderColorTarget0=; Pass=P;"; > {
+  pass P < string Script = "Draw=Buffer;"; > { ZEnable = false; VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 InvertPS(); }
+}
+)";
+
+// The frame `technique` of kExternalEffect draws, with the preview's stand-ins.
+std::optional<fx::Image> render_external(Context& ctx, const std::string& path, const std::string& technique,
+                                         uint32_t size) {
+  auto e = bind_effect(ctx, path, technique, "sphere", size, std::nullopt, VK_FORMAT_R8G8B8A8_UNORM, true);
+  if (!e) return std::nullopt;
+  DiagnosticSink sink;
+  auto runner =
+      ScriptRunner::create(ctx, *e->effect->model, *e->binding, *e->effect->params, e->technique, size, size, sink);
+  EXPECT_TRUE(runner) << describe(sink);
+  if (!runner) return std::nullopt;
+  EXPECT_TRUE(runner->draws_scene());
+  set_standard_semantics(*e->effect->params, *e->effect->model, e->preview->scene());
+  auto image = e->preview->render_script(*runner, e->layout, sink);
+  EXPECT_TRUE(image) << describe(sink);
+  EXPECT_FALSE(sink.has_errors()) << describe(sink);
+  return image;
+}
+
+// ScriptExternal in a preview draws its test scene: a lit, patterned sphere on the clear
+// colour, which the post effect then processes.
+TEST_F(ScriptRenderTest, ScriptExternalDrawsTheTestSceneThePostEffectProcesses) {
+  fx::testing::EffectFolder folder("script_external");
+  folder.write("external.fx", kExternalEffect);
+  constexpr uint32_t kSize = 48;
+  auto shown = render_external(ctx(), folder.path("external.fx"), "Show", kSize);
+  auto inverted = render_external(ctx(), folder.path("external.fx"), "Invert", kSize);
+  ASSERT_TRUE(shown && inverted);
+  // The scene: the clear colour in the corner, an object in many colours in the middle.
+  EXPECT_EQ(shown->at(0, 0)[0], 0);
+  const uint8_t background[4] = {0, 0, 0, 255};
+  EXPECT_FALSE(shown->flat_over(background, 2)) << "the scene's object is not one flat colour";
+  uint32_t drawn = 0;
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) drawn += shown->at(x, y)[0] + shown->at(x, y)[1] + shown->at(x, y)[2] > 0;
+  EXPECT_GT(drawn, kSize * kSize / 4) << "the sphere fills the middle";
+  // The post effect inverts every pixel of it.
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x)
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(int(inverted->at(x, y)[c]), 255 - int(shown->at(x, y)[c]), 1) << x << "," << y << " channel " << c;
+}
+
 // A technique without a Script gets no runner, and says so.
 TEST_F(ScriptRenderTest, TechniqueWithoutScriptHasNoRunner) {
   fx::testing::EffectFolder folder("script_none");

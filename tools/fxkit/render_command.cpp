@@ -4,7 +4,9 @@
 // renders an effect headlessly (the best Vulkan device, or FXKIT_DEVICE) on a mesh framed
 // by the camera, standard semantics filled in, and writes a PNG.
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -113,6 +115,7 @@ int run_render(const RenderArgs& args) {
     preview_desc.height = height;
     auto preview = fx::vk::EffectPreview::create(*ctx, *mesh, preview_desc, diags);
     if (!preview) return report(diags), kUsageError;
+    preview->textures().set_preview_stand_ins(true);  // textures no file fills show what the shader does
     fx::vk::EffectBindingDesc desc = preview->binding_desc();
     desc.effect_dir = std::filesystem::path(args.file).parent_path();
     desc.texture_dirs.assign(options.preprocessor.include_dirs.begin(), options.preprocessor.include_dirs.end());
@@ -178,14 +181,21 @@ int run_render(const RenderArgs& args) {
                                             diags);
       if (!script) return report(diags), kInputErrors;
       if (args.verbose) std::fprintf(stderr, "fxkit render: running the technique's DXSAS Script\n");
+      if (args.verbose && script->draws_scene())
+        std::fprintf(stderr, "fxkit render: ScriptExternal <- the preview's test scene (stand-in)\n");
     }
     // Textures with neither a file nor a generator, and no script target: the cache binds
-    // a neutral stand-in (a missing file has its own warning).
+    // a stand-in (a missing file has its own warning).
     if (args.verbose)
       for (const fx::TextureInfo& t : effect->model->textures) {
-        const std::string& name = effect->model->parameters[t.parameter].name;
-        if (t.generator.empty() && t.resource_name.empty() && !(script && script->target(name)))
-          std::fprintf(stderr, "fxkit render: %s <- neutral texture (stand-in: no ResourceName)\n", name.c_str());
+        const fx::Parameter& param = effect->model->parameters[t.parameter];
+        const fx::ImageDim dim = t.shape == fx::TextureShape::cube    ? fx::ImageDim::cube
+                                 : t.shape == fx::TextureShape::tex3d ? fx::ImageDim::dim_3d
+                                 : t.shape == fx::TextureShape::tex1d ? fx::ImageDim::dim_1d
+                                                                      : fx::ImageDim::dim_2d;
+        if (t.generator.empty() && t.resource_name.empty() && !(script && script->target(param.name)))
+          std::fprintf(stderr, "fxkit render: %s <- %s (stand-in: no ResourceName)\n", param.name.c_str(),
+                       fx::vk::stand_in_name(fx::vk::texture_stand_in(&param, dim, true)));
       }
     auto frame = [&] {
       return script ? preview->render_script(*script, layout, diags)
@@ -206,6 +216,14 @@ int run_render(const RenderArgs& args) {
       const uint8_t* p = image->pixels.data();
       std::fprintf(stderr, "fxkit render: warning: the image is constant (every pixel %u,%u,%u,%u)%s\n", p[0], p[1],
                    p[2], p[3], unbound.empty() ? "" : "; see the transforms left zero above");
+    } else {
+      // Pixels within 2 levels of the clear colour are background; the rest is the object.
+      std::array<uint8_t, 4> background{};
+      for (size_t c = 0; c < 4; ++c) background[c] = uint8_t(std::lround(preview_desc.clear[c] * 255.0f));
+      if (auto flat = image->flat_over(background, 2))
+        std::fprintf(stderr,
+                     "fxkit render: warning: the image is one flat colour over the drawn object (%u,%u,%u,%u)\n",
+                     (*flat)[0], (*flat)[1], (*flat)[2], (*flat)[3]);
     }
     if (!fx::write_png(args.out, *image, diags)) return report(diags), kUsageError;
     const fx::TechniqueInfo& t = effect->model->techniques[technique];

@@ -2,7 +2,8 @@
 //  [--timeout S] [--mesh M] [--out FILE.png]`: loads an effect, reloads it whenever it or
 // an include is saved, and prints one line per reload event (one JSON object per line with
 // --json). With --out (or --mesh) it also renders every frame headlessly through the Vulkan
-// effect binding and rewrites the PNG after the first frame of each new version.
+// effect binding (a technique's DXSAS Script run with its render targets, docs/dxsas.md, and
+// the preview's texture stand-ins) and rewrites the PNG after the first frame of each new version.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "fx/binding/effect_preview.h"
 #include "fx/binding/effect_scene.h"
 #include "fx/binding/preview_defaults.h"
+#include "fx/binding/script_runner.h"
 #include "fx/diagnostic_render.h"
 #include "fx/reload/effect_library.h"
 #include "fx/reload/reload_transaction.h"
@@ -107,6 +109,7 @@ int run_watch(const WatchArgs& args) {
         std::fprintf(stderr, "fxkit watch: %s [%s]\n", d.message.c_str(), d.id.c_str());
       return kUsageError;
     }
+    preview->textures().set_preview_stand_ins(true);  // as fxkit render: textures no file fills show
     fx::vk::EffectPreview* p = preview.get();
     backend = std::make_unique<fx::vk::ReloadBackend>(
         *ctx, preview->textures(), preview->frames(),
@@ -135,6 +138,9 @@ int run_watch(const WatchArgs& args) {
   Clock::time_point start = Clock::now();
   int events = 0;
   uint64_t written_serial = 0;  // the version whose frame is in the PNG
+  // The DXSAS Script runner of the version and technique drawn, remade when either changes.
+  std::unique_ptr<fx::vk::ScriptRunner> script;
+  std::pair<uint64_t, uint32_t> script_for{0, fx::kNoIndex};
   auto render_frame = [&] {
     auto version = effect.version();
     fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
@@ -145,7 +151,17 @@ int run_watch(const WatchArgs& args) {
     fx::vk::set_preview_defaults(*effect.params(), *version->model,
                                  fx::vk::parameters_read(*version->programs, technique));
     fx::DiagnosticSink sink;
-    auto image = preview->render(*binding, technique, 0, sink);
+    const bool scripted = bool(version->model->techniques[technique].script);
+    if (scripted && script_for != std::pair{version->serial, technique}) {
+      script.reset();
+      const glm::vec2 size = preview->scene().viewport_size;
+      script = fx::vk::ScriptRunner::create(*ctx, *version->model, *binding, *effect.params(), technique,
+                                            uint32_t(size.x), uint32_t(size.y), sink);
+      script_for = {version->serial, technique};
+    }
+    std::optional<fx::Image> image;
+    if (!scripted) image = preview->render(*binding, technique, 0, sink);
+    else if (script) image = preview->render_script(*script, 0, sink);
     for (const fx::Diagnostic& d : sink.diagnostics())
       std::fprintf(stderr, "fxkit watch: %s [%s]\n", d.message.c_str(), d.id.c_str());
     if (image && !args.out.empty() && written_serial != version->serial) {

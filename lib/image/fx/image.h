@@ -22,6 +22,11 @@ struct Image {
   bool empty() const { return width == 0 || height == 0; }
   // True when every pixel equals the first: a render that drew nothing, or one flat colour.
   bool constant() const;
+  // The colour of the drawn object when it is one flat colour: every pixel that differs from
+  // `background` (by more than `tolerance` in a channel) is within `tolerance` of the first
+  // such pixel. Nullopt when the drawn pixels vary, or when none is drawn (see constant()).
+  // `background` has `channels` bytes.
+  std::optional<std::vector<uint8_t>> flat_over(std::span<const uint8_t> background, int tolerance) const;
   size_t row_bytes() const { return size_t(width) * channels; }
   // Pointer to the first channel of pixel (x, y); no bounds check.
   uint8_t* at(uint32_t x, uint32_t y) { return pixels.data() + (size_t(y) * width + x) * channels; }

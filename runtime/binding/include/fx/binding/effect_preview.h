@@ -16,6 +16,7 @@
 namespace fx::vk {
 
 class ScriptRunner;
+class PreviewTestScene;
 
 struct EffectPreviewDesc {
   uint32_t width = 256, height = 256;
@@ -57,7 +58,8 @@ class EffectPreview {
                                   DiagnosticSink& sink);
   // One frame of a technique's DXSAS Script (the runner made for this binding and technique
   // with the preview's size): the frame cleared, then the script's steps, Draw=Geometry
-  // drawing the mesh and Draw=Buffer a full-screen quad in the same vertex layout; read back.
+  // drawing the mesh, Draw=Buffer a full-screen quad in the same vertex layout and
+  // ScriptExternal the test scene (the mesh lit and textured, preview_test_scene.h); read back.
   // Defined in effect_preview_script.cpp.
   std::optional<fx::Image> render_script(ScriptRunner& runner, uint32_t vertex_layout, DiagnosticSink& sink);
   // The same frame read back as floats, from a float color_format.
@@ -72,7 +74,7 @@ class EffectPreview {
   // Frames rendered by render().
 
  private:
-  explicit EffectPreview(const Context& ctx) : ctx_(&ctx), textures_(ctx) {}
+  explicit EffectPreview(const Context& ctx);
   // Records and submits one frame of `technique` and its readback; false on failure.
   bool draw_frame(EffectBinding& binding, uint32_t technique, uint32_t vertex_layout, DiagnosticSink& sink);
   // Records the clear, `draws` repetitions of every pass of `technique` (a mesh draw per
@@ -91,6 +93,7 @@ class EffectPreview {
   uint32_t index_count_ = 0;
   Buffer quad_vertices_, quad_indices_;
   uint32_t quad_index_count_ = 0;
+  std::unique_ptr<PreviewTestScene> test_scene_;  // made by the first script with ScriptExternal
 };
 
 // The union of the vertex shader inputs of a technique's passes (for vertex_layout()).

@@ -13,6 +13,7 @@
 #include <span>
 #include <string>
 
+#include "fx/binding/texture_stand_in.h"
 #include "fx/compile/shader_reflection.h"
 #include "fx/dds.h"
 #include "fx/image.h"
@@ -28,7 +29,7 @@ struct EffectTextureData {
   std::optional<fx::Image> image;       // PNG (and other stb) files and stand-ins
   std::optional<fx::DdsTexture> dds;    // DDS files
   std::optional<shading::Table> table;  // procedural generators
-  bool stand_in = false;                // a neutral texture for a missing file
+  bool stand_in = false;                // a stand-in for a missing file (texture_stand_in.h)
   ImageDim dim = ImageDim::dim_2d;      // stand-ins take the shape the shader samples
   bool arrayed = false;                 // ... as an array view (Texture2DArray)
   bool depth = false;                   // a depth stand-in, for sampling with depth comparison
@@ -45,7 +46,7 @@ class EffectTextureCache {
   // errors from the generator registry); a ResourceName is looked for beside the effect
   // (`effect_dir`), then in `more_dirs` (the -I folders), and read as DDS or what stb reads.
   // A file that is missing, unreadable or of another shape than the shader samples gets a
-  // stand-in (flat normal for NORMALMAP semantics, white otherwise) and the warning
+  // stand-in (texture_stand_in(), with preview_stand_ins()) and the warning
   // "vk-texture-file-missing" at the annotation; a texture with
   // neither (set by the application) gets the stand-in silently. Null only when a
   // generator fails.
@@ -63,6 +64,12 @@ class EffectTextureCache {
   // shader reads with Load(coord, sample): no file can fill one, the application renders it
   // and binds it with set_texture().
   std::shared_ptr<const EffectTextureData> multisampled_stand_in(bool arrayed);
+
+  // Stand-ins that show what a shader does (a colour test pattern, a ramp of depths, an
+  // environment: texture_stand_in.h) instead of neutral ones, for previews. Set before the
+  // first resolve(); off by default.
+  void set_preview_stand_ins(bool on) { preview_stand_ins_ = on; }
+  bool preview_stand_ins() const { return preview_stand_ins_; }
 
   // The GPU texture for `data`, uploaded on first use. Render thread only.
   const Texture* gpu(const EffectTextureData& data, DiagnosticSink& sink);
@@ -82,6 +89,7 @@ class EffectTextureCache {
   mutable std::mutex mutex_;  // guards cpu_
   std::map<std::string, std::shared_ptr<const EffectTextureData>> cpu_;
   std::map<std::string, Texture> gpu_;
+  bool preview_stand_ins_ = false;
 };
 
 }  // namespace fx::vk

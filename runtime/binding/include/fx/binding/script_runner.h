@@ -27,9 +27,9 @@ struct ScriptFrame {
   // Binds its buffers and draws a quad covering the target, positions in clip space (-1..1)
   // and TEXCOORD0 0..1 with v = 0 at the top (Draw=Buffer).
   std::function<void(VkCommandBuffer)> draw_quad;
-  // Draws the host's scene into the current target (ScriptExternal); empty leaves the
-  // target as the script cleared it.
-  std::function<void(VkCommandBuffer)> draw_scene;
+  // Draws the host's scene into `target`, the current one, which is rendering
+  // (ScriptExternal); empty leaves the target as the script cleared it.
+  std::function<void(VkCommandBuffer, const RenderTarget& target)> draw_scene;
 };
 
 class ScriptRunner {
@@ -47,6 +47,9 @@ class ScriptRunner {
   // (its colour in COLOR_ATTACHMENT_OPTIMAL, as RenderTarget::end does). False on a failed
   // apply (diagnostics in `sink`).
   bool record(VkCommandBuffer cmd, const ScriptFrame& frame, DiagnosticSink& sink);
+
+  // True when the technique's script or a pass's has ScriptExternal: it draws the host's scene.
+  bool draws_scene() const;
 
   // The render target made for texture parameter `name`, or null.
   const RenderTarget* target(const std::string& name) const;

@@ -55,6 +55,10 @@ struct EffectFile {
   // the failed load.
   static std::unique_ptr<EffectFile> load(const std::string& path, const FrontEndOptions& options, DiagnosticSink& sink,
                                           std::string* located = nullptr);
+  // The same for effect text in memory named `name` (an effect a tool carries, such as the
+  // preview's test scene).
+  static std::unique_ptr<EffectFile> load_text(const std::string& name, std::string text,
+                                               const FrontEndOptions& options, DiagnosticSink& sink);
   // The technique named `name`, or kNoIndex (after build_model).
   uint32_t find_technique(std::string_view name) const;
 };
