@@ -7,6 +7,7 @@
 #include "fx/binding/effect_scene.h"
 #include "fx/binding/effect_textures.h"
 #include "fx/binding/preview_defaults.h"
+#include "fx/compile/effect_file.h"
 #include "fx/model/class_instances.h"
 #include "fx/model/parameter_store.h"
 #include "fx/reload/reload_transaction.h"
@@ -129,9 +130,9 @@ bool Effect::set_class_instance(Param interface_variable, std::string_view insta
   const std::vector<fx::Parameter>& params = version->model->parameters;
   const uint32_t index = interface_variable.index;
   if (index < params.size() && params[index].decl &&
-      fx::find_interface(version->parsed.ast, params[index].decl->type.name)) {
+      fx::find_interface(version->file->parsed.ast, params[index].decl->type.name)) {
     const std::vector<fx::BindableInstance> instances =
-        fx::bindable_instances(version->parsed.ast, params[index].decl->type.name);
+        fx::bindable_instances(version->file->parsed.ast, params[index].decl->type.name);
     auto found = std::find_if(instances.begin(), instances.end(),
                               [&](const fx::BindableInstance& b) { return b.name == instance; });
     if (found != instances.end())

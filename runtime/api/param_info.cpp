@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "api_state.h"
+#include "fx/compile/effect_file.h"
 #include "fx/model/class_instances.h"
 #include "fx/model/parameter_store.h"
 #include "fx/reload/reload_transaction.h"
@@ -106,8 +107,8 @@ std::vector<ParamInfo> Effect::params() const {
       else info.default_value = p.default_value->floats();
     }
     info.settable = p.shader_visible;
-    if (p.decl && fx::find_interface(version->parsed.ast, p.decl->type.name))
-      for (fx::BindableInstance& instance : fx::bindable_instances(version->parsed.ast, p.decl->type.name))
+    if (p.decl && fx::find_interface(version->file->parsed.ast, p.decl->type.name))
+      for (fx::BindableInstance& instance : fx::bindable_instances(version->file->parsed.ast, p.decl->type.name))
         info.class_instances.push_back(std::move(instance.name));
     for (const fx::Annotation& a : p.annotations) info.annotations.push_back(detail::to_public(a));
     out.push_back(std::move(info));
