@@ -235,6 +235,43 @@ technique11 T {
   EXPECT_NEAR(centre[2], 128, 1);
 }
 
+// fxc's asuint(double, out uint, out uint) gives the exact bits of a double (fxkit defines the
+// overload glslang lacks): hard cases, each built from its bits or computed in double, must
+// give back those bits. The sphere is green when every case does, red otherwise.
+TEST_F(EffectRenderTest, AsuintOfADoubleGivesItsExactBits) {
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_asuint_double", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+RWStructuredBuffer<float4> Result;
+bool Same(double d, uint low, uint high) {
+  uint l, h;
+  asuint(d, l, h);
+  return l == low && h == high;
+}
+[numthreads(1, 1, 1)] void Check(uint3 id : SV_DispatchThreadID) {
+  double ten = 10.0;
+  bool ok = Same(3.0 / (ten - 8.0), 0u, 0x3FF80000u)              // 1.5
+         && Same(-1.0 / ten, 0x9999999Au, 0xBFB99999u)          // -0.1, rounded to nearest
+         && Same(0.0, 0u, 0u) && Same(asdouble(0u, 0x80000000u), 0u, 0x80000000u)
+         && Same(asdouble(0x54442D18u, 0x400921FBu), 0x54442D18u, 0x400921FBu)  // pi
+         && Same(asdouble(0xFFFFFFFFu, 0x7FEFFFFFu), 0xFFFFFFFFu, 0x7FEFFFFFu)  // largest finite
+         && Same(asdouble(0u, 0x00100000u), 0u, 0x00100000u)    // smallest normal
+         && Same(asdouble(1u, 0x3FF00000u), 1u, 0x3FF00000u)    // 1 + 2^-52
+         && Same(asdouble(0u, 0xFFF00000u), 0u, 0xFFF00000u)    // -infinity
+         && Same(asdouble(0u, 0x7FF80000u), 0u, 0x7FF80000u)    // NaN
+         && Same(asdouble(0x8800759Cu, 0x7E37E43Cu), 0x8800759Cu, 0x7E37E43Cu);  // 1e300
+  Result[0] = ok ? float4(0, 1, 0, 1) : float4(1, 0, 0, 1);
+}
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target { return Result[0]; }
+technique11 T {
+  pass Check { SetComputeShader(CompileShader(cs_5_0, Check())); }
+  pass Draw { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); }
+}
+)");
+  EXPECT_EQ(centre[0], 0);
+  EXPECT_EQ(centre[1], 255);
+}
+
 // A compute pass writes an RWTexture2D (a stand-in the size of the target, one thread per
 // pixel by default) that the pixel shader then reads at its own pixel.
 TEST_F(EffectRenderTest, ComputePassWritesAStorageImageThePixelShaderReads) {

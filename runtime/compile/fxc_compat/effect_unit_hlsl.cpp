@@ -5,6 +5,7 @@
 #include <unordered_set>
 
 #include "array_cast.h"
+#include "double_bits.h"
 #include "effect_unit_builder.h"
 #include "flat_initializer.h"
 #include "fx/ascii_case.h"
@@ -48,6 +49,11 @@ void EffectUnitBuilder::emit_hlsl() {
     if (!u_.decls_.empty()) u_.decls_.back().names.push_back(name);
     return true;
   };
+  if (detail::calls_asuint_of_a_double(toks_)) {
+    const size_t from = begin();
+    w.out() += detail::asuint_of_a_double();
+    end(from, {"asuint"}, {});
+  }
   for (const ast::Decl& d : effect_.decls) {
     switch (d.kind) {
       case ast::DeclKind::variable: {
