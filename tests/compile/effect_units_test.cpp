@@ -337,8 +337,10 @@ technique11 T {
 }
 
 // glslang crashes on a geometry shader whose input array carries SV_ClipDistance
-// (KhronosGroup/glslang#2392): that stage says why instead of reaching glslang; a geometry
-// shader that only writes it, and the vertex shader, still compile.
+// (KhronosGroup/glslang#2392). A struct member is rewritten (the rule file
+// geometry_shader_reading_clip_distances.fx); one nested deeper (here in `Inner`) makes the
+// stage say why instead of reaching glslang; a geometry shader that only writes it, and the
+// vertex shader, still compile.
 TEST(EffectUnits, GeometryInputWithClipDistanceSaysWhyInsteadOfCrashing) {
   fs::path dir = temp_dir("clip_input");
   write(dir / "clip.fx", R"(float4 g_plane;

@@ -272,6 +272,23 @@ technique11 T {
   EXPECT_EQ(centre[1], 255);
 }
 
+// A geometry shader that takes the vertex struct with its SV_ClipDistance member and passes
+// it on (glslang#2392's form, rewritten by the unit) clips: the half of the sphere below the
+// plane y = 0 is not drawn, the half above is.
+TEST_F(EffectRenderTest, GeometryShaderPassesClipDistancesOn) {
+  const std::filesystem::path file = std::filesystem::path(FXKIT_SOURCE_DIR) /
+                                     "tests/compile/data/fxc_accepts/geometry_shader_reading_clip_distances.fx";
+  auto r = bind_effect(ctx(), file.string(), "ClipThroughTheGeometryShader", "sphere", 32);
+  ASSERT_TRUE(r);
+  const size_t errors = ctx().validation_error_count();
+  auto image = r->render();
+  ASSERT_TRUE(image);
+  EXPECT_EQ(ctx().validation_error_count(), errors) << describe_messages(ctx());
+  auto red = [&](uint32_t y) { return image->pixels[(y * image->width + 16) * 4]; };
+  EXPECT_GT(red(10), 100);  // above the plane: the orange surface
+  EXPECT_LT(red(24), 60);   // below it: the clear colour
+}
+
 // A compute pass writes an RWTexture2D (a stand-in the size of the target, one thread per
 // pixel by default) that the pixel shader then reads at its own pixel.
 TEST_F(EffectRenderTest, ComputePassWritesAStorageImageThePixelShaderReads) {

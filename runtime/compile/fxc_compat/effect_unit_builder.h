@@ -72,9 +72,11 @@ class EffectUnitBuilder {
   void mark_dynamic_linkage();
 
   // glslang crashes on a geometry shader whose per-vertex input array carries
-  // SV_ClipDistance or SV_CullDistance (KhronosGroup/glslang#2392), as D3D10's
-  // FixedFuncEMU passes its vertex struct on: such a stage says why instead of being compiled.
+  // SV_ClipDistance or SV_CullDistance (KhronosGroup/glslang#2392). The plain case, as D3D10's
+  // FixedFuncEMU passes its vertex struct on, is rewritten (clip_distance_inputs.h); a stage
+  // whose distances sit deeper says why instead of being compiled.
   void mark_clip_distance_inputs();
+  std::unordered_set<const ast::Function*> clip_distance_rewritten_;
   // Whether a variable of this type (a struct's members, nested ones too) carries a clip or
   // cull distance semantic.
   bool carries_clip_distance(const ast::Variable& v, int depth) const;

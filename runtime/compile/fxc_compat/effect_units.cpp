@@ -7,6 +7,7 @@
 #include <unordered_set>
 
 #include "case_insensitive_types.h"
+#include "clip_distance_inputs.h"
 #include "effect_unit_builder.h"
 #include "flat_initializer.h"
 #include "fx/ascii_case.h"
@@ -184,6 +185,8 @@ void EffectUnitBuilder::build() {
   respelled_.merge(detail::multisample_operator_spellings(toks_));
   respelled_.merge(detail::untyped_sampler_spellings(toks_));
   respelled_.merge(detail::class_linkage_spellings(toks_, linkage_, functions_));
+  respelled_.merge(detail::clip_distance_input_spellings(
+      toks_, functions_, [&](std::string_view name) { return structure(name); }, clip_distance_rewritten_));
   respell_helper_uniforms();
   emit_hlsl();
   for (uint32_t i = 0; i < u_.decls_.size(); ++i) {
@@ -205,8 +208,7 @@ void EffectUnitBuilder::build() {
 }
 
 bool EffectUnitBuilder::carries_clip_distance(const ast::Variable& v, int depth) const {
-  const std::string semantic = ascii_lower(v.semantic);
-  if (semantic.starts_with("sv_clipdistance") || semantic.starts_with("sv_culldistance")) return true;
+  if (detail::is_clip_or_cull_distance(v.semantic)) return true;
   const ast::Struct* s = v.type.definition ? v.type.definition : structure(v.type.name);
   if (!s || depth > 8) return false;
   for (const ast::Variable& m : s->members)
@@ -218,7 +220,7 @@ void EffectUnitBuilder::mark_clip_distance_inputs() {
   auto check = [&](StageUnit& stage) {
     if (stage.kind != StageSourceKind::hlsl || stage.stage != ShaderStage::geometry) return;
     const ast::Function* f = entry_function(stage);
-    if (!f) return;
+    if (!f || clip_distance_rewritten_.count(f)) return;
     for (const ast::Variable& p : f->params)
       if (!(p.storage & (ast::kOut | ast::kUniform)) && !p.array_dims.empty() && carries_clip_distance(p, 0)) {
         invalid(stage, "geometry shader '" + std::string(f->name) +
