@@ -1,6 +1,7 @@
 // EffectBinding: effect passes -> programs, pipeline states, descriptors and uniforms.
 #include "fx/binding/effect_binding.h"
 
+#include "fx/compile/uniform_layout.h"
 #include "fx/emulation/stage_texture.h"
 
 #include <algorithm>
@@ -76,12 +77,6 @@ void make_names_unique(ProgramLayout& layout) {
     if (seen[b.name]++ > 0) b.name.append("@").append(std::to_string(b.binding));
 }
 
-// The parameter the reflected member path ("light.dir", "bones[3]") starts with.
-std::string_view root_name(std::string_view path) {
-  size_t end = path.find_first_of(".[");
-  return end == std::string_view::npos ? path : path.substr(0, end);
-}
-
 // The model sampler (and the texture it reads) behind a program image named `name`; a
 // generated shader's stage sampler (fx_stage<n>) reads the pass's texture stage n.
 void resolve_image(const EffectModel& model, const PassInfo& pass, std::string_view name,
@@ -104,13 +99,6 @@ void resolve_image(const EffectModel& model, const PassInfo& pass, std::string_v
   // GLSL combined samplers and D3D10 Texture2D objects are named after the texture.
   uint32_t p = model.find_parameter(name);
   if (p != kNoIndex && model.texture_of(p)) *texture_param = p;
-}
-
-bool stage_is_glsl(const PassProgram& program) {
-  if (!program.pass) return false;
-  for (const StageUnit& s : program.pass->stages)
-    if (s.kind == StageSourceKind::glsl) return true;
-  return false;
 }
 
 }  // namespace
@@ -211,32 +199,23 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
       pass->resources = std::make_unique<PassResources>(pass->shader);
       pass->resources->keep_sets_in(b->descriptor_sets_);
       // Uniform blocks: the store packs each under an id of its own.
-      const bool glsl = stage_is_glsl(program);
-      const auto& program_blocks = pass->shader.uniform_blocks();
-      for (uint32_t index = 0; index < program_blocks.size(); ++index) {
-        const ProgramUniformBlock& block = program_blocks[index];
+      const std::vector<UniformBlockLayout> layouts = uniform_layouts(model, program);
+      for (const ProgramUniformBlock& block : pass->shader.uniform_blocks()) {
         BlockSlot slot{next_block_id++, {}, block.size, 0};
-        std::vector<BlockMemberLayout> members;
-        if (block.reflection)
-          for (const BlockMember& m : block.reflection->members) {
-            BlockMemberLayout l{m.name,
-                                m.offset,
-                                m.size,
-                                m.array_stride,
-                                m.matrix_stride ? m.matrix_stride : 16u,
-                                MatrixPacking::column_major};
-            // An HLSL matrix keeps its declared meaning; a GLSL mat4 M * v stores HLSL's
-            // mul(v, M) transposed (column c of the GLSL matrix is row c of M).
-            Param root = params.find(root_name(m.name));
-            const Type* type = root.valid() ? params.type(root) : nullptr;
-            if (glsl) l.order = MatrixPacking::row_major;
-            else if (type) l.order = type->order;
-            members.push_back(std::move(l));
+        auto layout = std::find_if(layouts.begin(), layouts.end(),
+                                   [&](const UniformBlockLayout& l) { return l.binding == block.binding; });
+        if (layout != layouts.end()) {
+          ParamStatus status = params.bind_layout(slot.id, layout->members, block.size);
+          std::string problem = status.message;
+          if (problem.empty() && !layout->unplaced.empty()) {
+            problem = "no parameter (or a struct without member paths) for: ";
+            for (size_t k = 0; k < layout->unplaced.size(); ++k)
+              problem.append(k ? ", " : "").append(layout->unplaced[k]);
           }
-        ParamStatus status = params.bind_layout(slot.id, members, block.size);
-        if (!status.message.empty())
-          sink.warning("vk-uniform-unbound", pass_info.range,
-                       "pass '" + pass_info.name + "', block '" + block.name + "': " + status.message);
+          if (!problem.empty())
+            sink.warning("vk-uniform-unbound", pass_info.range,
+                         "pass '" + pass_info.name + "', block '" + block.name + "': " + problem);
+        }
         slot.handle = params.block(slot.id);
         pass->blocks.push_back(slot);
       }
