@@ -1,28 +1,17 @@
 // EffectBinding: effect passes -> programs, pipeline states, descriptors and uniforms.
 #include "fx/binding/effect_binding.h"
 
-#include "fx/emulation/stage_texture.h"
+#include "fx/compile/uniform_layout.h"
+#include "pass_images.h"
 
 #include <algorithm>
 #include <cstring>
 #include <map>
 #include <optional>
-#include <set>
 
 namespace fx::vk {
 
 std::atomic<int64_t> EffectBinding::live_objects_{0};
-
-// One image, sampler or combined image-sampler descriptor of a pass and what feeds it.
-struct ImageSlot {
-  std::string name;
-  DescriptorKind kind = DescriptorKind::combined_image_sampler;
-  VkSampler sampler = VK_NULL_HANDLE;
-  uint32_t texture_param = kNoIndex;               // the texture parameter it samples
-  std::shared_ptr<const EffectTextureData> data;   // the effect's own texture
-  VkFormat storage_format = VK_FORMAT_UNDEFINED;   // a storage image's stand-in format
-  std::optional<StorageImageShape> storage_shape;  // ... and its shape (none: no stand-in fits)
-};
 
 // A uniform block of a pass, packed by the parameter store (block id `id`) straight into
 // the frame's uniform ring: rewritten when a parameter in it changed or the ring slice
@@ -76,43 +65,6 @@ void make_names_unique(ProgramLayout& layout) {
     if (seen[b.name]++ > 0) b.name.append("@").append(std::to_string(b.binding));
 }
 
-// The parameter the reflected member path ("light.dir", "bones[3]") starts with.
-std::string_view root_name(std::string_view path) {
-  size_t end = path.find_first_of(".[");
-  return end == std::string_view::npos ? path : path.substr(0, end);
-}
-
-// The model sampler (and the texture it reads) behind a program image named `name`; a
-// generated shader's stage sampler (fx_stage<n>) reads the pass's texture stage n.
-void resolve_image(const EffectModel& model, const PassInfo& pass, std::string_view name,
-                   const fx::SamplerDesc** sampler, uint32_t* texture_param, fx::SamplerDesc& stage_sampler) {
-  *sampler = nullptr;
-  *texture_param = kNoIndex;
-  if (std::optional<uint32_t> stage = emulation::stage_of_sampler(name)) {
-    emulation::StageTexture t = emulation::stage_texture(pass, *stage);
-    stage_sampler = t.sampler;
-    *sampler = &stage_sampler;
-    *texture_param = t.texture;
-    return;
-  }
-  for (const SamplerInfo& s : model.samplers) {
-    if (s.name != name) continue;
-    *sampler = &s.desc;
-    *texture_param = s.texture;
-    return;
-  }
-  // GLSL combined samplers and D3D10 Texture2D objects are named after the texture.
-  uint32_t p = model.find_parameter(name);
-  if (p != kNoIndex && model.texture_of(p)) *texture_param = p;
-}
-
-bool stage_is_glsl(const PassProgram& program) {
-  if (!program.pass) return false;
-  for (const StageUnit& s : program.pass->stages)
-    if (s.kind == StageSourceKind::glsl) return true;
-  return false;
-}
-
 }  // namespace
 
 EffectBinding::EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures)
@@ -123,6 +75,59 @@ EffectBinding::~EffectBinding() {
   techniques_.clear();  // programs before the pipeline cache: nothing else depends on order
   live_objects_ -= counted_objects_;
 }
+
+// create()'s steps: each technique's passes made drawable, or the reason the technique
+// cannot run.
+struct EffectBinding::Builder {
+  EffectBinding& b;
+  const Context& ctx;
+  EffectPrograms& programs;
+  ParameterStore& params;
+  const EffectBindingDesc& desc;
+  DiagnosticSink& sink;
+  ImageSources images;
+  ImageNotes notes;
+
+  // Null when nothing can be set up (a sampler could not be created).
+  std::unique_ptr<Technique> technique(uint32_t t);
+  // Null with `reason` set when the technique cannot run, with it empty when nothing can
+  // be set up.
+  std::unique_ptr<Pass> pass(uint32_t t, uint32_t p, std::string& reason);
+  // The pass's pipeline state and ShaderProgram; false with `reason` set when they cannot be made.
+  bool program(Pass& pass, const PassInfo& info, std::string& reason);
+  // The pass's uniform blocks laid out in the store, each under a block id of its own.
+  void uniform_blocks(Pass& pass, const PassInfo& info);
+};
+
+namespace {
+
+// Why the pass cannot be drawn as compiled ("" when it can): no units, shaders that did not
+// compile, states the pass cannot run with.
+std::string pass_blocker(const PassInfo& info, const EffectPass* unit, const PassProgram* program) {
+  if (!unit) return "pass '" + info.name + "' has no shader units";
+  if (!program->ok())
+    return "pass '" + info.name + "': " +
+           (program->unsupported.empty() ? std::string("its shaders did not compile") : program->unsupported.front());
+  // Fixed-function states are generated stages' input (fx/emulation/fixed_function.h) or,
+  // beside shaders, ignored as D3D9 ignores them: only other states stop the pass.
+  auto blocking = std::find_if(info.unsupported.begin(), info.unsupported.end(), [](const UnsupportedState& u) {
+    return !u.info || u.info->lands != StateLanding::fixed_function;
+  });
+  if (blocking != info.unsupported.end()) return "pass '" + info.name + "': " + blocking->reason;
+  const StageUnit* pixel = unit->find(ShaderStage::fragment);
+  const bool generated_pixel = pixel && pixel->kind == StageSourceKind::fixed_function;  // emulates alpha test
+  // Emulation needs a discard spliced into the pixel shader's translation unit.
+  if (!generated_pixel && info.summary.alpha_test && info.summary.alpha_compare != CompareOp::always)
+    return "pass '" + info.name + "': alpha test (AlphaTestEnable) is not emulated yet";
+  return {};
+}
+
+// The first diagnostic's message, or `fallback` when there is none.
+std::string first_message(const DiagnosticSink& sink, const char* fallback) {
+  return sink.diagnostics().empty() ? std::string(fallback) : sink.diagnostics().front().message;
+}
+
+}  // namespace
 
 std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const EffectModel& model,
                                                      EffectPrograms& programs, ParameterStore& params,
@@ -136,185 +141,102 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
   b->frames_ = &frames;
   b->recorder_.emplace(ctx, *b->pipelines_, frames,
                        desc.dynamic.value_or(DynamicStateSet::from_features(ctx.features())));
-  // Block ids are unique in the process, so two bindings of one ParameterStore (say a
-  // dynamic-state and a static one) never overwrite each other's block layouts.
-  static std::atomic<uint32_t> next_block_id{0};
-  std::vector<uint32_t> resolved;  // texture parameters already resolved (report once)
-  std::set<std::string> told;      // images whose array / depth stand-in warning was given (once)
+  Builder build{*b, ctx, programs, params, desc, sink, {model, b->samplers_, textures, desc}, {}};
   for (uint32_t t = 0; t < model.techniques.size(); ++t) {
-    const TechniqueInfo& info = model.techniques[t];
-    auto tech = std::make_unique<Technique>();
-    for (uint32_t p = 0; p < info.passes.size() && tech->reason.empty(); ++p) {
-      const PassInfo& pass_info = info.passes[p];
-      const EffectPass* unit = find_pass(programs.units(), t, p);
-      if (!unit) {
-        tech->reason = "pass '" + pass_info.name + "' has no shader units";
-        break;
-      }
-      const PassProgram& program = programs.program(*unit);
-      if (!program.ok()) {
-        tech->reason =
-            "pass '" + pass_info.name + "': " +
-            (program.unsupported.empty() ? std::string("its shaders did not compile") : program.unsupported.front());
-        break;
-      }
-      // Fixed-function states are generated stages' input (fx/emulation/fixed_function.h) or,
-      // beside shaders, ignored as D3D9 ignores them: only other states stop the pass.
-      auto blocking = std::find_if(
-          pass_info.unsupported.begin(), pass_info.unsupported.end(),
-          [](const UnsupportedState& u) { return !u.info || u.info->lands != StateLanding::fixed_function; });
-      if (blocking != pass_info.unsupported.end()) {
-        tech->reason = "pass '" + pass_info.name + "': " + blocking->reason;
-        break;
-      }
-      const StageUnit* pixel = unit->find(ShaderStage::fragment);
-      const bool generated_pixel = pixel && pixel->kind == StageSourceKind::fixed_function;  // emulates alpha test
-      if (!generated_pixel && pass_info.summary.alpha_test && pass_info.summary.alpha_compare != CompareOp::always) {
-        // Emulation needs a discard spliced into the pixel shader's translation unit.
-        tech->reason = "pass '" + pass_info.name + "': alpha test (AlphaTestEnable) is not emulated yet";
-        break;
-      }
-      DiagnosticSink pass_sink;
-      auto state = to_pipeline_state(pass_info.summary, desc.target, ctx.features(), pass_sink);
-      if (!state) {
-        tech->reason =
-            "pass '" + pass_info.name +
-            "': " + (pass_sink.diagnostics().empty() ? std::string("state") : pass_sink.diagnostics().front().message);
-        break;
-      }
-      auto pass = std::make_unique<Pass>();
-      pass->program = &program;
-      if (const StageUnit* vs = unit->find(ShaderStage::vertex)) pass->vertex_shader = vs->range;
-      pass->state = *state;
-      pass->layout = program.layout;
-      make_names_unique(pass->layout);
-      std::vector<const CompiledShader*> stages;
-      for (const StageProgram& s : program.stages) stages.push_back(&s.shader);
-      auto shader = ShaderProgram::create(ctx, stages, pass->layout, desc.descriptors, pass_sink);
-      if (!shader) {
-        tech->reason =
-            "pass '" + pass_info.name + "': " +
-            (pass_sink.diagnostics().empty() ? std::string("program") : pass_sink.diagnostics().front().message);
-        break;
-      }
-      pass->shader = std::move(*shader);
-      // A tessellating pass draws patches of the hull shader's input size.
-      const uint32_t points = pass->shader.patch_control_points();
-      if (points && desc.patch_control_points && points != desc.patch_control_points) {
-        tech->reason = "pass '" + pass_info.name + "': its hull shader takes patches of " + std::to_string(points) +
-                       " control points; the geometry comes in patches of " +
-                       std::to_string(desc.patch_control_points) +
-                       (desc.patch_control_points == 3 ? " (triangle lists)" : "");
-        break;
-      }
-      pass->state = with_patches(pass->state, points);
-      pass->resources = std::make_unique<PassResources>(pass->shader);
-      pass->resources->keep_sets_in(b->descriptor_sets_);
-      // Uniform blocks: the store packs each under an id of its own.
-      const bool glsl = stage_is_glsl(program);
-      const auto& program_blocks = pass->shader.uniform_blocks();
-      for (uint32_t index = 0; index < program_blocks.size(); ++index) {
-        const ProgramUniformBlock& block = program_blocks[index];
-        BlockSlot slot{next_block_id++, {}, block.size, 0};
-        std::vector<BlockMemberLayout> members;
-        if (block.reflection)
-          for (const BlockMember& m : block.reflection->members) {
-            BlockMemberLayout l{m.name,
-                                m.offset,
-                                m.size,
-                                m.array_stride,
-                                m.matrix_stride ? m.matrix_stride : 16u,
-                                MatrixPacking::column_major};
-            // An HLSL matrix keeps its declared meaning; a GLSL mat4 M * v stores HLSL's
-            // mul(v, M) transposed (column c of the GLSL matrix is row c of M).
-            Param root = params.find(root_name(m.name));
-            const Type* type = root.valid() ? params.type(root) : nullptr;
-            if (glsl) l.order = MatrixPacking::row_major;
-            else if (type) l.order = type->order;
-            members.push_back(std::move(l));
-          }
-        ParamStatus status = params.bind_layout(slot.id, members, block.size);
-        if (!status.message.empty())
-          sink.warning("vk-uniform-unbound", pass_info.range,
-                       "pass '" + pass_info.name + "', block '" + block.name + "': " + status.message);
-        slot.handle = params.block(slot.id);
-        pass->blocks.push_back(slot);
-      }
-      pass->ring_offsets.resize(pass->blocks.size(), 0);
-      // Images and samplers: sampler states -> cached samplers, textures resolved (baked,
-      // decoded) now, uploaded at the first begin().
-      for (const ProgramImage& image : pass->shader.images()) {
-        ImageSlot slot;
-        slot.name = image.name;
-        slot.kind = image.kind;
-        if (image.kind == DescriptorKind::storage_image) {  // EffectStorage's, bound in bind_textures()
-          const uint32_t param = model.find_parameter(image.name);
-          if (param != kNoIndex) slot.storage_format = storage_image_format(model.parameters[param].type.element);
-          slot.storage_shape = storage_image_shape(image.dim, image.arrayed, image.count);
-          pass->images.push_back(std::move(slot));
-          continue;
-        }
-        const fx::SamplerDesc* sampler_desc = nullptr;
-        fx::SamplerDesc stage_sampler;
-        resolve_image(model, pass_info, image.name, &sampler_desc, &slot.texture_param, stage_sampler);
-        const bool first_mention = told.insert(image.name).second;
-        if (image.count > 1 && first_mention)
-          sink.warning("vk-image-array-first", pass_info.range,
-                       "pass '" + pass_info.name + "': '" + image.name + "' is an array of " +
-                           std::to_string(image.count) +
-                           "; every element samples its first element's texture and sampler state");
-        if (image.kind != DescriptorKind::sampled_image) {
-          SamplerKey vk_desc = sampler_desc ? to_sampler_key(*sampler_desc, pass_sink) : SamplerKey{};
-          // A shader that compares (SampleCmp, a shadow sampler) needs a comparing sampler, as
-          // D3D requires a SamplerComparisonState; one declared without ComparisonFunc compares
-          // with LessEqual.
-          if (image.shadow) vk_desc.compare_enable = 1;
-          slot.sampler = b->samplers_.get(vk_desc, sink);
-          if (!slot.sampler) return nullptr;
-        }
-        if (image.kind != DescriptorKind::sampler && image.shadow) {
-          // Vulkan compares only against depth formats: whatever the effect names (a colour
-          // file, nothing), a depth stand-in is bound until set_texture() gives a depth view.
-          if (first_mention)
-            sink.warning("vk-texture-depth-stand-in", pass_info.range,
-                         "pass '" + pass_info.name + "': '" + image.name +
-                             "' is sampled with depth comparison, which needs a depth texture; a depth of 1.0 "
-                             "(nothing in shadow) stands in" +
-                             (slot.texture_param != kNoIndex ? " until set_texture() binds a depth view" : ""));
-          slot.data = textures.depth_stand_in(image.dim, image.arrayed);
-        } else if (image.kind != DescriptorKind::sampler && image.multisampled) {
-          // No file fills a multisampled image: a white one stands in until set_texture()
-          // binds the application's multisampled view.
-          slot.data = textures.multisampled_stand_in(image.arrayed);
-        } else if (image.kind != DescriptorKind::sampler) {
-          const TextureInfo* tex = slot.texture_param != kNoIndex ? model.texture_of(slot.texture_param) : nullptr;
-          if (!tex) {
-            sink.warning("vk-texture-unresolved", pass_info.range,
-                         "pass '" + pass_info.name + "': '" + image.name + "' names no texture parameter; a " +
-                             stand_in_name(texture_stand_in(nullptr, image.dim, textures.preview_stand_ins())) +
-                             " stands in until set_texture()");
-            slot.data = textures.resolve(model, TextureInfo{}, desc.effect_dir, image.dim, image.arrayed, sink);
-          } else {
-            const bool first = std::find(resolved.begin(), resolved.end(), slot.texture_param) == resolved.end();
-            DiagnosticSink repeat;  // the same warning for every pass sampling the texture is noise
-            slot.data = textures.resolve(model, *tex, desc.effect_dir, image.dim, image.arrayed, first ? sink : repeat,
-                                         desc.texture_dirs);
-            if (first) resolved.push_back(slot.texture_param);
-          }
-          if (!slot.data) {
-            tech->reason = "pass '" + pass_info.name + "': texture '" + image.name + "' could not be made";
-            break;
-          }
-        }
-        pass->images.push_back(std::move(slot));
-      }
-      tech->passes.push_back(std::move(pass));
-    }
-    if (!tech->reason.empty()) tech->passes.clear();
+    std::unique_ptr<Technique> tech = build.technique(t);
+    if (!tech) return nullptr;
     b->techniques_.push_back(std::move(tech));
   }
   b->update_object_count();
   return b;
+}
+
+std::unique_ptr<EffectBinding::Technique> EffectBinding::Builder::technique(uint32_t t) {
+  auto tech = std::make_unique<Technique>();
+  for (uint32_t p = 0; p < images.model.techniques[t].passes.size(); ++p) {
+    std::unique_ptr<Pass> made = pass(t, p, tech->reason);
+    if (!made && tech->reason.empty()) return nullptr;
+    if (!made) {
+      tech->passes.clear();
+      break;
+    }
+    tech->passes.push_back(std::move(made));
+  }
+  return tech;
+}
+
+std::unique_ptr<EffectBinding::Pass> EffectBinding::Builder::pass(uint32_t t, uint32_t p, std::string& reason) {
+  const PassInfo& info = images.model.techniques[t].passes[p];
+  const EffectPass* unit = find_pass(programs.units(), t, p);
+  const PassProgram* compiled = unit ? &programs.program(*unit) : nullptr;
+  reason = pass_blocker(info, unit, compiled);
+  if (!reason.empty()) return nullptr;
+  auto out = std::make_unique<Pass>();
+  out->program = compiled;
+  if (const StageUnit* vs = unit->find(ShaderStage::vertex)) out->vertex_shader = vs->range;
+  if (!program(*out, info, reason)) return nullptr;
+  out->resources = std::make_unique<PassResources>(out->shader);
+  out->resources->keep_sets_in(b.descriptor_sets_);
+  uniform_blocks(*out, info);
+  // Images and samplers: sampler states -> cached samplers, textures resolved (baked,
+  // decoded) now, uploaded at the first begin().
+  if (!resolve_pass_images(images, info, out->shader, notes, out->images, reason, sink)) return nullptr;
+  return out;
+}
+
+bool EffectBinding::Builder::program(Pass& pass, const PassInfo& info, std::string& reason) {
+  DiagnosticSink pass_sink;
+  auto state = to_pipeline_state(info.summary, desc.target, ctx.features(), pass_sink);
+  if (!state) {
+    reason = "pass '" + info.name + "': " + first_message(pass_sink, "state");
+    return false;
+  }
+  pass.layout = pass.program->layout;
+  make_names_unique(pass.layout);
+  std::vector<const CompiledShader*> stages;
+  for (const StageProgram& s : pass.program->stages) stages.push_back(&s.shader);
+  auto shader = ShaderProgram::create(ctx, stages, pass.layout, desc.descriptors, pass_sink);
+  if (!shader) {
+    reason = "pass '" + info.name + "': " + first_message(pass_sink, "program");
+    return false;
+  }
+  pass.shader = std::move(*shader);
+  // A tessellating pass draws patches of the hull shader's input size.
+  const uint32_t points = pass.shader.patch_control_points();
+  if (points && desc.patch_control_points && points != desc.patch_control_points) {
+    reason = "pass '" + info.name + "': its hull shader takes patches of " + std::to_string(points) +
+             " control points; the geometry comes in patches of " + std::to_string(desc.patch_control_points) +
+             (desc.patch_control_points == 3 ? " (triangle lists)" : "");
+    return false;
+  }
+  pass.state = with_patches(*state, points);
+  return true;
+}
+
+void EffectBinding::Builder::uniform_blocks(Pass& pass, const PassInfo& info) {
+  // Block ids are unique in the process, so two bindings of one ParameterStore (say a
+  // dynamic-state and a static one) never overwrite each other's block layouts.
+  static std::atomic<uint32_t> next_block_id{0};
+  const std::vector<UniformBlockLayout> layouts = uniform_layouts(images.model, *pass.program);
+  for (const ProgramUniformBlock& block : pass.shader.uniform_blocks()) {
+    BlockSlot slot{next_block_id++, {}, block.size, 0};
+    auto layout = std::find_if(layouts.begin(), layouts.end(),
+                               [&](const UniformBlockLayout& l) { return l.binding == block.binding; });
+    if (layout != layouts.end()) {
+      ParamStatus status = params.bind_layout(slot.id, layout->members, block.size);
+      std::string problem = status.message;
+      if (problem.empty() && !layout->unplaced.empty()) {
+        problem = "no parameter (or a struct without member paths) for: ";
+        for (size_t k = 0; k < layout->unplaced.size(); ++k) problem.append(k ? ", " : "").append(layout->unplaced[k]);
+      }
+      if (!problem.empty())
+        sink.warning("vk-uniform-unbound", info.range,
+                     "pass '" + info.name + "', block '" + block.name + "': " + problem);
+    }
+    slot.handle = params.block(slot.id);
+    pass.blocks.push_back(slot);
+  }
+  pass.ring_offsets.resize(pass.blocks.size(), 0);
 }
 
 bool EffectBinding::technique_ok(uint32_t t) const {

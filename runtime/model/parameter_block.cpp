@@ -20,53 +20,6 @@ uint32_t default_element_stride(const Type& t, uint32_t matrix_stride) {
 
 }  // namespace
 
-uint32_t ParameterStore::Impl::find_path(std::string_view path, bool* implied) const {
-  size_t i = 0;
-  auto name_end = [&](size_t from) {
-    size_t e = from;
-    while (e < path.size() && path[e] != '.' && path[e] != '[') ++e;
-    return e;
-  };
-  size_t e = name_end(0);
-  auto it = by_name.find(std::string(path.substr(0, e)));
-  if (it == by_name.end()) return kNoIndex;
-  uint32_t node = it->second;
-  i = e;
-  while (i < path.size()) {
-    if (path[i] == '.' && nodes[node].type.is_array() && nodes[node].child_count > 0) {
-      node = nodes[node].first_child;
-      if (implied) *implied = true;
-    }
-    const Node& n = nodes[node];
-    if (path[i] == '[') {
-      size_t close = path.find(']', i);
-      if (close == std::string_view::npos || !n.type.is_array()) return kNoIndex;
-      uint32_t k = 0;
-      for (size_t c = i + 1; c < close; ++c) {
-        if (path[c] < '0' || path[c] > '9') return kNoIndex;
-        k = k * 10 + static_cast<uint32_t>(path[c] - '0');
-        if (k > (1u << 24)) return kNoIndex;
-      }
-      if (k >= n.child_count) return kNoIndex;
-      node = n.first_child + k;
-      i = close + 1;
-    } else if (path[i] == '.') {
-      e = name_end(i + 1);
-      std::string_view m = path.substr(i + 1, e - i - 1);
-      uint32_t found = kNoIndex;
-      if (!n.type.is_array())
-        for (uint32_t k = 0; k < n.child_count; ++k)
-          if (nodes[n.first_child + k].member == m) found = n.first_child + k;
-      if (found == kNoIndex) return kNoIndex;
-      node = found;
-      i = e;
-    } else {
-      return kNoIndex;
-    }
-  }
-  return node;
-}
-
 std::vector<uint32_t> ParameterStore::Impl::match_into(const Impl& other) const {
   std::vector<uint32_t> out(nodes.size(), kNoIndex);
   // Top levels by name and type; children follow by position (same type => same shape).
@@ -90,21 +43,23 @@ std::vector<uint32_t> ParameterStore::Impl::match_into(const Impl& other) const 
 // Words that would fall outside the member's range or the block are left out. Words are
 // visited in destination order, so each register becomes one run (a whole row-major
 // matrix with packed registers, one).
-void ParameterStore::Impl::plan_runs(const Node& n, const BlockMemberLayout& m, uint32_t block_size,
+void ParameterStore::Impl::plan_runs(const Node& top, const BlockMemberLayout& m, uint32_t block_size,
                                      std::vector<WordRun>& runs) {
-  const Type elem = n.type.without_arrays();
+  const Type& type = m.slice.type;
+  const Type elem = type.without_arrays();
   const uint32_t per = elem.component_count();
-  const uint32_t count = n.type.element_count();
+  const uint32_t count = type.element_count();
+  const uint32_t from = top.offset + m.slice.first_word;
   const uint32_t mstride = m.matrix_stride ? m.matrix_stride : 16;
   const uint32_t astride = m.array_stride ? m.array_stride : default_element_stride(elem, mstride);
   const uint64_t limit = std::min<uint64_t>(static_cast<uint64_t>(m.offset) + m.size, block_size);
   auto put = [&](uint64_t at, uint32_t word) {
     if (at + 4 > limit) return;
     const auto dst = static_cast<uint32_t>(at);
-    const uint32_t src = n.offset + word;
+    const uint32_t src = from + word;
     if (!runs.empty()) {
       WordRun& last = runs.back();
-      if (last.kind != RunKind::columns4x4 && last.pooled == n.pooled && last.dst + last.words * 4 == dst &&
+      if (last.kind != RunKind::columns4x4 && last.pooled == top.pooled && last.dst + last.words * 4 == dst &&
           src > last.src && (last.words == 1 || last.src + last.words * last.stride == src)) {
         if (last.words == 1) last.stride = src - last.src;
         last.kind = last.stride == 1 ? RunKind::copy : RunKind::gather;
@@ -112,14 +67,14 @@ void ParameterStore::Impl::plan_runs(const Node& n, const BlockMemberLayout& m, 
         return;
       }
     }
-    runs.push_back({src, dst, 1, 1, n.pooled, RunKind::copy});
+    runs.push_back({src, dst, 1, 1, top.pooled, RunKind::copy});
   };
   for (uint32_t e = 0; e < count; ++e) {
     const uint64_t base = m.offset + static_cast<uint64_t>(e) * (count > 1 ? astride : 0);
     const uint32_t first = e * per;
     const bool columns = elem.cls == TypeClass::matrix && m.order == MatrixPacking::column_major;
     if (columns && elem.rows == 4 && elem.cols == 4 && mstride == 16 && base + 64 <= limit) {
-      runs.push_back({n.offset + first, static_cast<uint32_t>(base), 16, 4, n.pooled, RunKind::columns4x4});
+      runs.push_back({from + first, static_cast<uint32_t>(base), 16, 4, top.pooled, RunKind::columns4x4});
     } else if (columns) {
       for (uint32_t c = 0; c < elem.cols; ++c)
         for (uint32_t r = 0; r < elem.rows; ++r) put(base + c * mstride + r * 4, first + r * elem.cols + c);
@@ -140,35 +95,21 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
   Impl::Block b;
   b.id = block;
   b.size = block_size;
-  std::string skipped;
   std::vector<std::pair<uint32_t, std::vector<Impl::WordRun>>> per_top;  // runs grouped by top-level node
-  std::vector<uint32_t> nodes(members.size());
-  std::vector<bool> implied(members.size(), false);
-  for (size_t k = 0; k < members.size(); ++k) {
-    bool alias = false;
-    nodes[k] = s.find_path(members[k].name, &alias);
-    implied[k] = alias;
-  }
-  for (size_t k = 0; k < members.size(); ++k) {
-    const BlockMemberLayout& m = members[k];
-    const uint32_t node = nodes[k];
-    if (node == kNoIndex || s.nodes[node].words == 0 || s.nodes[node].type.cls == TypeClass::structure) {
-      skipped += (skipped.empty() ? "" : ", ") + m.name;
-      continue;
-    }
-    // An unindexed alias of a member the layout also names by its index writes the same
-    // bytes: packed once.
-    bool packed_elsewhere = false;
-    for (size_t j = 0; j < members.size() && implied[k] && !packed_elsewhere; ++j)
-      packed_elsewhere = j != k && nodes[j] == node && (!implied[j] || j < k);
-    if (packed_elsewhere) continue;
+  for (const BlockMemberLayout& m : members) {
+    const ParameterSlice& slice = m.slice;
+    if (slice.parameter >= s.top_count ||
+        uint64_t(slice.first_word) + slice.type.component_count() > s.nodes[slice.parameter].words)
+      return fail(ParamStatus::not_found,
+                  "a member's slice lies outside the words of parameter #" + std::to_string(slice.parameter));
     if (m.offset > block_size || m.size > block_size - m.offset)
-      return fail(ParamStatus::size_mismatch,
-                  "member '" + m.name + "' lies outside the block (" + std::to_string(block_size) + " bytes)");
-    const Impl::Node& n = s.nodes[node];
-    auto group = std::find_if(per_top.begin(), per_top.end(), [&](const auto& g) { return g.first == n.top; });
-    if (group == per_top.end()) group = per_top.insert(per_top.end(), {n.top, {}});
-    Impl::plan_runs(n, m, block_size, group->second);
+      return fail(ParamStatus::size_mismatch, "member '" + s.path(slice.parameter) + "' word " +
+                                                  std::to_string(slice.first_word) + " lies outside the block (" +
+                                                  std::to_string(block_size) + " bytes)");
+    auto group =
+        std::find_if(per_top.begin(), per_top.end(), [&](const auto& g) { return g.first == slice.parameter; });
+    if (group == per_top.end()) group = per_top.insert(per_top.end(), {slice.parameter, {}});
+    Impl::plan_runs(s.nodes[slice.parameter], m, block_size, group->second);
   }
   uint32_t slot;
   if (auto it = s.block_slot.find(block); it != s.block_slot.end()) {
@@ -201,8 +142,6 @@ ParamStatus ParameterStore::bind_layout(uint32_t block, std::span<const BlockMem
   s.draw.blocks[slot] = {s.blocks[slot].packed.data(), block_size, false, false, s.draw.changes, holds};
   s.draw.hot.assign(s.top_count, {});  // `blocks` and `draw.blocks` may have moved
   s.count_holders();
-  if (!skipped.empty())
-    return fail(ParamStatus::not_found, "no parameter (or a struct without member paths) for: " + skipped);
   return {};
 }
 

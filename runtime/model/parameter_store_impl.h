@@ -150,7 +150,8 @@ struct ParameterStore::Impl {
   // Re-packs the runs of `b` whose parameter changed since they were packed; true when
   // anything was re-packed or the block was never handed out.
   bool refresh(Block& b, DrawBlock& draw);
-  static void plan_runs(const Node& n, const BlockMemberLayout& m, uint32_t block_size, std::vector<WordRun>& runs);
+  // The runs of member `m`, whose slice is of top-level node `top`.
+  static void plan_runs(const Node& top, const BlockMemberLayout& m, uint32_t block_size, std::vector<WordRun>& runs);
   // Copies runs [first, first + count) of `b` from the words into b.packed.
   [[gnu::always_inline]] inline void pack(Block& b, uint32_t first, uint32_t count) const;
   // Stores `count` floats into node `i` (all float-like components); dirties its blocks only
@@ -311,11 +312,6 @@ struct ParameterStore::Impl {
     }
   }
 
-  // The node a block member path names: "light", "light.dir", "bones[3]", "lights[1].dir".
-  // A member of an array of structs named without an index ("lights.dir", glslang's name
-  // for the dynamically indexed access it also lists per element) is element 0's, where
-  // glslang places it; `*implied` is set then.
-  uint32_t find_path(std::string_view path, bool* implied = nullptr) const;
   // Every node index of this store mapped to `other`'s node with the same path and type.
   std::vector<uint32_t> match_into(const Impl& other) const;
 

@@ -220,12 +220,169 @@ ShaderBinding shader_from(const ast::Expr& e, PassStage stage, ResolveContext& c
   return b;
 }
 
-}  // namespace
+// Whether the value names a parameter: `out` refers to it then.
+bool refers_to_parameter(const ast::Expr& value, ResolveContext& ctx, ResolvedState& out) {
+  const uint32_t p = parameter_named(value, ctx.model);
+  if (p == kNoIndex) return false;
+  out.kind = StateValueKind::parameter;
+  out.target = p;
+  return true;
+}
 
-bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveContext& ctx, ResolvedState& out,
-                   std::vector<ShaderBinding>* shaders, std::vector<UnsupportedState>* unsupported) {
+// The components of a vector written as constants (`(.5, .5, .5, .5)`, `float4(...)`);
+// nullopt, reported, when they are not constant.
+std::optional<Value> constant_components(const ast::Expr& value, const StateInfo& info, ResolveContext& ctx) {
+  auto v = fold_list(value, ctx, true);
+  if (v && v->is_numeric()) return v;
+  not_constant(ctx, value, info);
+  return std::nullopt;
+}
+
+// A number (bool, int, float state): a constant, or a parameter the application sets.
+bool resolve_number(const ast::Expr& value, const StateInfo& info, ResolveContext& ctx, ResolvedState& out) {
+  if (uint32_t p = parameter_named(value, ctx.model); p != kNoIndex && !ctx.model.parameters[p].is_static()) {
+    out.kind = StateValueKind::parameter;
+    out.target = p;
+  }
+  auto v = fold_constant(value, ctx.scope, ctx.diags, true);
+  if (!v || !v->is_numeric()) {
+    if (out.kind == StateValueKind::parameter) return true;  // the app sets it
+    not_constant(ctx, value, info);
+    return false;
+  }
+  if (out.kind != StateValueKind::parameter)
+    out.kind = info.type == StateValueType::boolean   ? StateValueKind::boolean
+               : info.type == StateValueType::integer ? StateValueKind::integer
+                                                      : StateValueKind::floating;
+  out.floating = v->number();
+  out.integer = static_cast<int64_t>(convert_component(v->number(), BaseType::uint32));
+  if (info.type == StateValueType::boolean) out.integer = v->number() != 0;
+  if (info.type == StateValueType::integer && v->number() < 0) out.integer = static_cast<int64_t>(v->number());
+  return true;
+}
+
+// A colour or float4 state: a parameter (its default until the application sets it), a
+// packed D3DCOLOR, one value for all four or up to four components.
+bool resolve_vector(const ast::Expr& value, const StateInfo& info, ResolveContext& ctx, ResolvedState& out) {
+  if (refers_to_parameter(value, ctx, out)) {
+    const Parameter& param = ctx.model.parameters[out.target];
+    if (param.default_value)
+      for (size_t i = 0; i < 4 && i < param.default_value->components.size(); ++i)
+        out.vector[i] = static_cast<float>(param.default_value->components[i]);
+    return true;
+  }
+  auto v = constant_components(value, info, ctx);
+  if (!v) return false;
+  out.kind = StateValueKind::vector;
+  if (info.type == StateValueType::color && v->components.size() == 1 &&
+      (v->type.base == BaseType::int32 || v->type.base == BaseType::uint32)) {
+    out.vector = unpack_color(static_cast<uint32_t>(static_cast<int64_t>(v->number())));
+  } else if (v->components.size() == 1) {
+    out.vector.fill(static_cast<float>(v->number()));
+  } else {
+    for (size_t i = 0; i < 4 && i < v->components.size(); ++i) out.vector[i] = static_cast<float>(v->components[i]);
+  }
+  out.constant = std::move(*v);
+  return true;
+}
+
+// A matrix, texture or sampler state: NULL or a parameter of that class.
+bool resolve_parameter_reference(const ast::Expr& value, const StateInfo& info, ResolveContext& ctx,
+                                 ResolvedState& out) {
+  if (is_null(value)) {
+    out.kind = StateValueKind::null;
+    return true;
+  }
+  uint32_t p = parameter_named(value, ctx.model);
+  if (p == kNoIndex) {
+    ctx.diags.error("bad-state-value", value.range,
+                    "'" + std::string(info.name) + "' needs a " + std::string(to_string(info.type)) +
+                        " parameter, found '" + value.text + "'");
+    return false;
+  }
+  const Type& t = ctx.model.parameters[p].type;
+  TypeClass want = info.type == StateValueType::texture   ? TypeClass::texture
+                   : info.type == StateValueType::sampler ? TypeClass::sampler
+                                                          : TypeClass::matrix;
+  if (t.cls != want && t.cls != TypeClass::error) {
+    std::string message = "'";
+    message.append(info.name).append("' needs a ").append(to_string(info.type)).append(", '");
+    message.append(ctx.model.parameters[p].name).append("' is a ").append(t.to_string());
+    ctx.diags.error("state-type-mismatch", value.range, std::move(message));
+    return false;
+  }
+  out.kind = StateValueKind::parameter;
+  out.target = p;
+  return true;
+}
+
+// A shader constant state (VertexShaderConstant4[n]): a parameter or up to four components.
+bool resolve_shader_constant(const ast::Expr& value, const StateInfo& info, ResolveContext& ctx, ResolvedState& out) {
+  if (refers_to_parameter(value, ctx, out)) return true;
+  auto v = constant_components(value, info, ctx);
+  if (!v) return false;
+  out.kind = StateValueKind::vector;
+  for (size_t i = 0; i < 4 && i < v->components.size(); ++i) out.vector[i] = static_cast<float>(v->components[i]);
+  out.constant = std::move(*v);
+  return true;
+}
+
+// A shader state: its binding, replacing an earlier one of the same stage in `shaders`.
+bool resolve_shader(const ast::Expr& value, const StateInfo& info, ResolveContext& ctx, ResolvedState& out,
+                    std::vector<ShaderBinding>* shaders) {
+  const std::optional<PassStage> stage = info.stage;
+  if (!stage) return false;
+  ShaderBinding b = shader_from(value, *stage, ctx);
+  out.kind = b.source == ShaderSource::null && is_null(value) ? StateValueKind::null : StateValueKind::shader;
+  if (shaders) {
+    auto it = std::find_if(shaders->begin(), shaders->end(), [&](const ShaderBinding& s) { return s.stage == *stage; });
+    if (it != shaders->end()) {
+      *it = std::move(b);
+      out.target = static_cast<uint32_t>(it - shaders->begin());
+    } else {
+      out.target = static_cast<uint32_t>(shaders->size());
+      shaders->push_back(std::move(b));
+    }
+  }
+  return true;
+}
+
+// A state object state (SetBlendState(b)): NULL or a state object of the kind it needs.
+bool resolve_state_object(const ast::Expr& value, const StateInfo& info, ResolveContext& ctx, ResolvedState& out) {
+  if (is_null(value)) {
+    out.kind = StateValueKind::null;
+    return true;
+  }
+  // `Blends[1]`: the element, when the array was written one `{ }` per element.
+  const bool indexed = value.kind == ast::ExprKind::index && value.args.size() == 2 && value.args[0];
+  std::string name = indexed ? std::string(value.args[0]->text) : std::string(value.text);
+  uint32_t o = kNoIndex;
+  if (indexed && value.args[1] && value.args[1]->kind == ast::ExprKind::int_literal)
+    o = ctx.model.find_state_object(name + "[" + std::to_string(static_cast<int64_t>(value.args[1]->number)) + "]");
+  if (o == kNoIndex) o = ctx.model.find_state_object(name);
+  if (o == kNoIndex) {
+    ctx.diags.error("unknown-state-object", value.range, "no state object named '" + name + "'");
+    return false;
+  }
+  const StateObjectInfo& obj = ctx.model.state_objects[o];
+  if (!info.object_kind.empty() && !iequals(to_string(obj.block), info.object_kind)) {
+    ctx.diags.error("state-type-mismatch", value.range,
+                    "'" + std::string(info.name) + "' needs a " + std::string(info.object_kind) + ", '" + name +
+                        "' is a " + std::string(to_string(obj.block)));
+    return false;
+  }
+  out.kind = StateValueKind::state_object;
+  out.target = o;
+  return true;
+}
+
+// The state an assignment sets and its index (`Texture[1]`); a fixed-function state is
+// also listed in `unsupported`. Null when the state is unknown (the checker reported it),
+// has no value, or its index is no non-negative constant.
+const StateInfo* resolve_target(const ast::StateAssignment& a, StateBlock block, ResolveContext& ctx,
+                                ResolvedState& out, std::vector<UnsupportedState>* unsupported) {
   const StateInfo* info = find_state(a.name, block);
-  if (!info || !a.value) return false;
+  if (!info || !a.value) return nullptr;
   out = ResolvedState{};
   out.info = info;
   out.range = a.range;
@@ -233,7 +390,7 @@ bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveConte
     auto i = fold_constant(*a.index, ctx.scope, ctx.diags, true);
     if (!i || !i->is_numeric() || i->number() < 0) {
       ctx.diags.error("bad-state-index", a.index->range, "state index must be a non-negative integer constant");
-      return false;
+      return nullptr;
     }
     out.index = static_cast<uint32_t>(i->number());
     out.indexed = true;
@@ -241,41 +398,33 @@ bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveConte
   if (info->lands == StateLanding::fixed_function && unsupported)
     unsupported->push_back(
         {info, out.index, a.range, "'" + std::string(info->name) + "' is " + std::string(info->reason)});
+  return info;
+}
 
+// The value expression of an assignment: in the call form (SetBlendState(b, factor, mask))
+// its first argument, the others folded into `out.call_args`. Null when a call has none.
+const ast::Expr* state_value(const ast::StateAssignment& a, ResolveContext& ctx, ResolvedState& out) {
   const ast::Expr* value = a.value;
-  // Call form: SetBlendState(b, factor, mask) -> value is args[0], the rest are call_args.
-  if (a.call_style) {
-    if (value->args.empty() || !value->args[0]) return false;
-    for (size_t i = 1; i < value->args.size(); ++i)
-      if (value->args[i])
-        if (auto v = fold_list(*value->args[i], ctx, true)) out.call_args.push_back(std::move(*v));
-    value = value->args[0];
-  }
+  if (!a.call_style) return value;
+  if (value->args.empty() || !value->args[0]) return nullptr;
+  for (size_t i = 1; i < value->args.size(); ++i)
+    if (value->args[i])
+      if (auto v = fold_list(*value->args[i], ctx, true)) out.call_args.push_back(std::move(*v));
+  return value->args[0];
+}
 
+}  // namespace
+
+bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveContext& ctx, ResolvedState& out,
+                   std::vector<ShaderBinding>* shaders, std::vector<UnsupportedState>* unsupported) {
+  const StateInfo* info = resolve_target(a, block, ctx, out, unsupported);
+  if (!info) return false;
+  const ast::Expr* value = state_value(a, ctx, out);
+  if (!value) return false;
   switch (info->type) {
     case StateValueType::boolean:
     case StateValueType::integer:
-    case StateValueType::floating: {
-      if (uint32_t p = parameter_named(*value, ctx.model); p != kNoIndex && !ctx.model.parameters[p].is_static()) {
-        out.kind = StateValueKind::parameter;
-        out.target = p;
-      }
-      auto v = fold_constant(*value, ctx.scope, ctx.diags, true);
-      if (!v || !v->is_numeric()) {
-        if (out.kind == StateValueKind::parameter) return true;  // the app sets it
-        not_constant(ctx, *value, *info);
-        return false;
-      }
-      if (out.kind != StateValueKind::parameter)
-        out.kind = info->type == StateValueType::boolean   ? StateValueKind::boolean
-                   : info->type == StateValueType::integer ? StateValueKind::integer
-                                                           : StateValueKind::floating;
-      out.floating = v->number();
-      out.integer = static_cast<int64_t>(convert_component(v->number(), BaseType::uint32));
-      if (info->type == StateValueType::boolean) out.integer = v->number() != 0;
-      if (info->type == StateValueType::integer && v->number() < 0) out.integer = static_cast<int64_t>(v->number());
-      return true;
-    }
+    case StateValueType::floating: return resolve_number(*value, *info, ctx, out);
     case StateValueType::enumeration:
     case StateValueType::flags: {
       auto v = enum_value(*value, *info, ctx);
@@ -285,124 +434,13 @@ bool resolve_state(const ast::StateAssignment& a, StateBlock block, ResolveConte
       return true;
     }
     case StateValueType::color:
-    case StateValueType::float4: {
-      if (uint32_t p = parameter_named(*value, ctx.model); p != kNoIndex) {
-        out.kind = StateValueKind::parameter;
-        out.target = p;
-        const Parameter& param = ctx.model.parameters[p];
-        if (param.default_value)
-          for (size_t i = 0; i < 4 && i < param.default_value->components.size(); ++i)
-            out.vector[i] = static_cast<float>(param.default_value->components[i]);
-        return true;
-      }
-      auto v = fold_list(*value, ctx, true);
-      if (!v || !v->is_numeric()) {
-        not_constant(ctx, *value, *info);
-        return false;
-      }
-      out.kind = StateValueKind::vector;
-      if (info->type == StateValueType::color && v->components.size() == 1 &&
-          (v->type.base == BaseType::int32 || v->type.base == BaseType::uint32)) {
-        out.vector = unpack_color(static_cast<uint32_t>(static_cast<int64_t>(v->number())));
-      } else if (v->components.size() == 1) {
-        out.vector.fill(static_cast<float>(v->number()));
-      } else {
-        for (size_t i = 0; i < 4 && i < v->components.size(); ++i) out.vector[i] = static_cast<float>(v->components[i]);
-      }
-      out.constant = std::move(*v);
-      return true;
-    }
+    case StateValueType::float4: return resolve_vector(*value, *info, ctx, out);
     case StateValueType::matrix:
     case StateValueType::texture:
-    case StateValueType::sampler: {
-      if (is_null(*value)) {
-        out.kind = StateValueKind::null;
-        return true;
-      }
-      uint32_t p = parameter_named(*value, ctx.model);
-      if (p == kNoIndex) {
-        ctx.diags.error("bad-state-value", value->range,
-                        "'" + std::string(info->name) + "' needs a " + std::string(to_string(info->type)) +
-                            " parameter, found '" + value->text + "'");
-        return false;
-      }
-      const Type& t = ctx.model.parameters[p].type;
-      TypeClass want = info->type == StateValueType::texture   ? TypeClass::texture
-                       : info->type == StateValueType::sampler ? TypeClass::sampler
-                                                               : TypeClass::matrix;
-      if (t.cls != want && t.cls != TypeClass::error) {
-        std::string message = "'";
-        message.append(info->name).append("' needs a ").append(to_string(info->type)).append(", '");
-        message.append(ctx.model.parameters[p].name).append("' is a ").append(t.to_string());
-        ctx.diags.error("state-type-mismatch", value->range, std::move(message));
-        return false;
-      }
-      out.kind = StateValueKind::parameter;
-      out.target = p;
-      return true;
-    }
-    case StateValueType::shader_constant: {
-      if (uint32_t p = parameter_named(*value, ctx.model); p != kNoIndex) {
-        out.kind = StateValueKind::parameter;
-        out.target = p;
-        return true;
-      }
-      auto v = fold_list(*value, ctx, true);
-      if (!v || !v->is_numeric()) {
-        not_constant(ctx, *value, *info);
-        return false;
-      }
-      out.kind = StateValueKind::vector;
-      for (size_t i = 0; i < 4 && i < v->components.size(); ++i) out.vector[i] = static_cast<float>(v->components[i]);
-      out.constant = std::move(*v);
-      return true;
-    }
-    case StateValueType::shader: {
-      const std::optional<PassStage> stage = info->stage;
-      if (!stage) return false;
-      ShaderBinding b = shader_from(*value, *stage, ctx);
-      out.kind = b.source == ShaderSource::null && is_null(*value) ? StateValueKind::null : StateValueKind::shader;
-      if (shaders) {
-        auto it =
-            std::find_if(shaders->begin(), shaders->end(), [&](const ShaderBinding& s) { return s.stage == *stage; });
-        if (it != shaders->end()) {
-          *it = std::move(b);
-          out.target = static_cast<uint32_t>(it - shaders->begin());
-        } else {
-          out.target = static_cast<uint32_t>(shaders->size());
-          shaders->push_back(std::move(b));
-        }
-      }
-      return true;
-    }
-    case StateValueType::state_object: {
-      if (is_null(*value)) {
-        out.kind = StateValueKind::null;
-        return true;
-      }
-      // `Blends[1]`: the element, when the array was written one `{ }` per element.
-      const bool indexed = value->kind == ast::ExprKind::index && value->args.size() == 2 && value->args[0];
-      std::string name = indexed ? std::string(value->args[0]->text) : std::string(value->text);
-      uint32_t o = kNoIndex;
-      if (indexed && value->args[1] && value->args[1]->kind == ast::ExprKind::int_literal)
-        o = ctx.model.find_state_object(name + "[" + std::to_string(static_cast<int64_t>(value->args[1]->number)) +
-                                        "]");
-      if (o == kNoIndex) o = ctx.model.find_state_object(name);
-      if (o == kNoIndex) {
-        ctx.diags.error("unknown-state-object", value->range, "no state object named '" + name + "'");
-        return false;
-      }
-      const StateObjectInfo& obj = ctx.model.state_objects[o];
-      if (!info->object_kind.empty() && !iequals(to_string(obj.block), info->object_kind)) {
-        ctx.diags.error("state-type-mismatch", value->range,
-                        "'" + std::string(info->name) + "' needs a " + std::string(info->object_kind) + ", '" + name +
-                            "' is a " + std::string(to_string(obj.block)));
-        return false;
-      }
-      out.kind = StateValueKind::state_object;
-      out.target = o;
-      return true;
-    }
+    case StateValueType::sampler: return resolve_parameter_reference(*value, *info, ctx, out);
+    case StateValueType::shader_constant: return resolve_shader_constant(*value, *info, ctx, out);
+    case StateValueType::shader: return resolve_shader(*value, *info, ctx, out, shaders);
+    case StateValueType::state_object: return resolve_state_object(*value, *info, ctx, out);
   }
   return false;
 }

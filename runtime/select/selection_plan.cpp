@@ -32,103 +32,124 @@ void widen(float lo, float hi, float fraction, float& lo_out, float& hi_out) {
   hi_out = std::isfinite(hi) ? hi + std::fabs(hi) * fraction : hi;
 }
 
+// A technique's annotations as selection reads them: a wrong type is a warning and the
+// annotation is ignored.
+struct AnnotationReader {
+  const TechniqueCandidate& c;
+  DiagnosticSink& sink;
+
+  void bad_type(std::string_view ann, const char* want) const {
+    sink.warning("selection-annotation", c.range,
+                 "annotation '" + std::string(ann) + "' of technique '" + c.name + "' must be " + want + "; ignored");
+  }
+  // The first of `names` given as a number, else `fallback`.
+  float number(std::initializer_list<std::string_view> names, float fallback) const {
+    for (std::string_view ann : names) {
+      if (!c.annotations.find(ann)) continue;
+      if (auto v = c.annotations.number(ann)) return *v;
+      bad_type(ann, "a number");
+    }
+    return fallback;
+  }
+  // The string annotation `name` ("" when absent or not a string).
+  std::string text(std::string_view name) const {
+    const AnnotationValue* v = c.annotations.find(name);
+    if (!v) return {};
+    if (const auto* s = std::get_if<std::string>(v)) return *s;
+    bad_type(name, "a string");
+    return {};
+  }
+};
+
 }  // namespace
 
 SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidates, DiagnosticSink& sink,
                                    const SelectionPlanOptions& options) {
   SelectionPlan plan;
-  const size_t n = candidates.size();
-  plan.entries_.reserve(n);
+  plan.entries_.reserve(candidates.size());
   uint64_t key = 1469598103934665603ull;  // FNV-1a over the names: stale states are ignored
-  for (size_t i = 0; i < n; ++i) {
-    const TechniqueCandidate& c = candidates[i];
-    const AnnotationMap& a = c.annotations;
-    auto bad_type = [&](std::string_view ann, const char* want) {
-      sink.warning("selection-annotation", c.range,
-                   "annotation '" + std::string(ann) + "' of technique '" + c.name + "' must be " + want + "; ignored");
-    };
-    auto number = [&](std::initializer_list<std::string_view> names, float fallback) {
-      for (std::string_view ann : names) {
-        if (!a.find(ann)) continue;
-        if (auto v = a.number(ann)) return *v;
-        bad_type(ann, "a number");
-      }
-      return fallback;
-    };
-
-    Entry e{};
-    e.dist_min = number({"MinDistance", "LodMin"}, -kInf);
-    e.dist_max = number({"MaxDistance", "LodMax"}, kInf);
-    e.size_min = number({"MinScreenSize"}, -kInf);
-    e.size_max = number({"MaxScreenSize"}, kInf);
-    for (auto [lo, hi, what] :
-         {std::tuple{e.dist_min, e.dist_max, "distance"}, std::tuple{e.size_min, e.size_max, "screen-size"}}) {
-      if (lo >= hi)
-        sink.error("selection-annotation", c.range,
-                   std::string(what) + " band of technique '" + c.name +
-                       "' is empty (minimum not below maximum); it never matches");
-    }
-    float h = number({"Hysteresis"}, options.hysteresis);
-    if (!(h >= 0.f)) h = 0.f;
-    widen(e.dist_min, e.dist_max, h, e.dist_min_h, e.dist_max_h);
-    widen(e.size_min, e.size_max, h, e.size_min_h, e.size_max_h);
-    // A technique without a measured error never passes an error budget (the budget is a
-    // promise the annotation has to back) and ranks after every measured one: its error is
-    // unknown, not zero. ErrorNotMeasured (costs.fxh) says why.
-    e.error_known = a.find("MaxError") || a.find("MaxErrorAbs");
-    e.error = number({"MaxError"}, 0.f);
-    if (!a.find("MaxError")) e.error = number({"MaxErrorAbs"}, 0.f) * 255.f;  // absolute -> LSB
-    e.cost_known = a.find("CostMs") || a.find("CostNsPerPixel") || a.find("CostNsPerVertex");
-    e.cost_ns_per_vertex = number({"CostNsPerVertex"}, 0.f);
-    e.cost_ms = number({"CostMs"}, 0.f);
-    e.cost_ns_per_pixel = number({"CostNsPerPixel"}, 0.f);
-    e.priority = 0;
-    if (a.find("Priority")) {
-      if (auto p = a.integer("Priority")) e.priority = *p;
-      else bad_type("Priority", "an int");
-    }
-    e.valid = c.valid;
-    e.fallback = kNoIndex;
-
-    std::vector<std::string> schemes;
-    if (const AnnotationValue* s = a.find("Scheme")) {
-      if (const auto* text = std::get_if<std::string>(s)) schemes = split_list(*text);
-      else bad_type("Scheme", "a string");
-    }
-    e.scheme_mask = 0;
-    for (const auto& s : schemes) {
-      auto it = std::find(plan.scheme_names_.begin(), plan.scheme_names_.end(), s);
-      size_t bit = size_t(it - plan.scheme_names_.begin());
-      if (it == plan.scheme_names_.end()) {
-        if (plan.scheme_names_.size() == kMaxSchemes) {
-          sink.error("selection-annotation", c.range, "more than 63 distinct schemes; scheme '" + s + "' ignored");
-          continue;
-        }
-        plan.scheme_names_.push_back(s);
-      }
-      e.scheme_mask |= uint64_t(1) << bit;
-    }
-
-    std::string invalid;
-    for (const auto& r : c.reasons) invalid += (invalid.empty() ? "" : "; ") + r;
-    plan.entries_.push_back(e);
-    plan.names_.push_back(c.name);
-    plan.schemes_.push_back(std::move(schemes));
-    plan.invalid_reasons_.push_back(std::move(invalid));
-    std::string unmeasured;
-    if (const AnnotationValue* r = a.find("ErrorNotMeasured")) {
-      if (const auto* text = std::get_if<std::string>(r)) unmeasured = *text;
-      else bad_type("ErrorNotMeasured", "a string");
-    }
-    plan.unmeasured_reasons_.push_back(std::move(unmeasured));
+  for (const TechniqueCandidate& c : candidates) {
+    plan.add_candidate(c, options.hysteresis, sink);
     for (char ch : c.name + '\n') key = (key ^ uint8_t(ch)) * 1099511628211ull;
   }
   plan.key_ = key ? key : 1;
+  plan.resolve_fallbacks(candidates, options.effect_fallback, sink);
+  plan.cut_fallback_cycles(candidates, sink);
+  plan.rank(candidates);
+  return plan;
+}
 
-  // Fallback names resolve after every candidate is known (a fallback may come later).
-  std::vector<std::string_view> name_views(plan.names_.begin(), plan.names_.end());
+void SelectionPlan::add_candidate(const TechniqueCandidate& c, float hysteresis, DiagnosticSink& sink) {
+  const AnnotationMap& a = c.annotations;
+  const AnnotationReader read{c, sink};
+  Entry e{};
+  e.dist_min = read.number({"MinDistance", "LodMin"}, -kInf);
+  e.dist_max = read.number({"MaxDistance", "LodMax"}, kInf);
+  e.size_min = read.number({"MinScreenSize"}, -kInf);
+  e.size_max = read.number({"MaxScreenSize"}, kInf);
+  for (auto [lo, hi, what] :
+       {std::tuple{e.dist_min, e.dist_max, "distance"}, std::tuple{e.size_min, e.size_max, "screen-size"}}) {
+    if (lo >= hi)
+      sink.error("selection-annotation", c.range,
+                 std::string(what) + " band of technique '" + c.name +
+                     "' is empty (minimum not below maximum); it never matches");
+  }
+  float h = read.number({"Hysteresis"}, hysteresis);
+  if (!(h >= 0.f)) h = 0.f;
+  widen(e.dist_min, e.dist_max, h, e.dist_min_h, e.dist_max_h);
+  widen(e.size_min, e.size_max, h, e.size_min_h, e.size_max_h);
+  // A technique without a measured error never passes an error budget (the budget is a
+  // promise the annotation has to back) and ranks after every measured one: its error is
+  // unknown, not zero. ErrorNotMeasured (costs.fxh) says why.
+  e.error_known = a.find("MaxError") || a.find("MaxErrorAbs");
+  e.error = read.number({"MaxError"}, 0.f);
+  if (!a.find("MaxError")) e.error = read.number({"MaxErrorAbs"}, 0.f) * 255.f;  // absolute -> LSB
+  e.cost_known = a.find("CostMs") || a.find("CostNsPerPixel") || a.find("CostNsPerVertex");
+  e.cost_ns_per_vertex = read.number({"CostNsPerVertex"}, 0.f);
+  e.cost_ms = read.number({"CostMs"}, 0.f);
+  e.cost_ns_per_pixel = read.number({"CostNsPerPixel"}, 0.f);
+  e.priority = 0;
+  if (a.find("Priority")) {
+    if (auto p = a.integer("Priority")) e.priority = *p;
+    else read.bad_type("Priority", "an int");
+  }
+  e.valid = c.valid;
+  e.fallback = kNoIndex;
+  std::vector<std::string> schemes = split_list(read.text("Scheme"));
+  e.scheme_mask = scheme_mask(schemes, c, sink);
+  std::string invalid;
+  for (const auto& r : c.reasons) invalid.append(invalid.empty() ? "" : "; ").append(r);
+  entries_.push_back(e);
+  names_.push_back(c.name);
+  schemes_.push_back(std::move(schemes));
+  invalid_reasons_.push_back(std::move(invalid));
+  unmeasured_reasons_.push_back(read.text("ErrorNotMeasured"));
+}
+
+uint64_t SelectionPlan::scheme_mask(const std::vector<std::string>& schemes, const TechniqueCandidate& c,
+                                    DiagnosticSink& sink) {
+  uint64_t mask = 0;
+  for (const auto& s : schemes) {
+    auto it = std::find(scheme_names_.begin(), scheme_names_.end(), s);
+    size_t bit = size_t(it - scheme_names_.begin());
+    if (it == scheme_names_.end()) {
+      if (scheme_names_.size() == kMaxSchemes) {
+        sink.error("selection-annotation", c.range, "more than 63 distinct schemes; scheme '" + s + "' ignored");
+        continue;
+      }
+      scheme_names_.push_back(s);
+    }
+    mask |= uint64_t(1) << bit;
+  }
+  return mask;
+}
+
+// Fallback names resolve after every candidate is known (a fallback may come later).
+void SelectionPlan::resolve_fallbacks(std::span<const TechniqueCandidate> candidates, std::string_view effect_fallback,
+                                      DiagnosticSink& sink) {
+  std::vector<std::string_view> name_views(names_.begin(), names_.end());
   auto resolve = [&](std::string_view target, const TechniqueCandidate* from) -> uint32_t {
-    if (auto idx = plan.index_of(target)) return *idx;
+    if (auto idx = index_of(target)) return *idx;
     std::string message = "fallback technique '" + std::string(target) + "' does not exist";
     if (from) message = "technique '" + from->name + "': " + message;
     std::string guess = closest_match(target, name_views);
@@ -136,18 +157,19 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
     sink.error("unknown-fallback", from ? from->range : SourceRange{}, message);
     return kNoIndex;
   };
-  for (size_t i = 0; i < n; ++i) {
+  for (size_t i = 0; i < candidates.size(); ++i) {
     const AnnotationValue* f = candidates[i].annotations.find("Fallback");
     if (!f) continue;
-    if (const auto* target = std::get_if<std::string>(f)) plan.entries_[i].fallback = resolve(*target, &candidates[i]);
-    else
-      sink.warning("selection-annotation", candidates[i].range,
-                   "annotation 'Fallback' of technique '" + candidates[i].name + "' must be a string; ignored");
+    if (const auto* target = std::get_if<std::string>(f)) entries_[i].fallback = resolve(*target, &candidates[i]);
+    else AnnotationReader{candidates[i], sink}.bad_type("Fallback", "a string");
   }
-  if (!options.effect_fallback.empty()) plan.effect_fallback_ = resolve(options.effect_fallback, nullptr);
+  if (!effect_fallback.empty()) effect_fallback_ = resolve(effect_fallback, nullptr);
+}
 
-  // Cycle detection: walk each chain once, colouring nodes; a link into a node on the
-  // current walk closes a cycle and is cut.
+// Walks each chain once, colouring nodes; a link into a node on the current walk closes a
+// cycle and is cut.
+void SelectionPlan::cut_fallback_cycles(std::span<const TechniqueCandidate> candidates, DiagnosticSink& sink) {
+  const size_t n = candidates.size();
   std::vector<uint8_t> colour(n, 0);  // 0 new, 1 on the current walk, 2 finished
   for (size_t start = 0; start < n; ++start) {
     std::vector<uint32_t> walk;
@@ -155,40 +177,42 @@ SelectionPlan SelectionPlan::build(std::span<const TechniqueCandidate> candidate
     while (i != kNoIndex && colour[i] == 0) {
       colour[i] = 1;
       walk.push_back(i);
-      uint32_t next = plan.entries_[i].fallback;
+      uint32_t next = entries_[i].fallback;
       if (next != kNoIndex && colour[next] == 1) {
         std::string path;
         auto from = std::find(walk.begin(), walk.end(), next);
-        for (auto it = from; it != walk.end(); ++it) path += "'" + plan.names_[*it] + "' -> ";
-        path += "'" + plan.names_[next] + "'";
+        for (auto it = from; it != walk.end(); ++it) path += "'" + names_[*it] + "' -> ";
+        path += "'" + names_[next] + "'";
         sink.error("fallback-cycle", candidates[i].range,
-                   "fallback cycle " + path + "; the link from '" + plan.names_[i] + "' is ignored");
-        plan.entries_[i].fallback = kNoIndex;
+                   "fallback cycle " + path + "; the link from '" + names_[i] + "' is ignored");
+        entries_[i].fallback = kNoIndex;
         next = kNoIndex;
       }
       i = next;
     }
     for (uint32_t w : walk) colour[w] = 2;
   }
+}
 
-  // Errors compare only within a substitute group (the same reference model); the groups
-  // keep the order in which the effect declares them.
+// Errors compare only within a substitute group (the same reference model); the groups
+// keep the order in which the effect declares them.
+void SelectionPlan::rank(std::span<const TechniqueCandidate> candidates) {
+  const size_t n = candidates.size();
   std::vector<std::string> groups(n);
   for (size_t i = 0; i < n; ++i) {
     if (const AnnotationValue* g = candidates[i].annotations.find("Substitutes"))
       if (const auto* text = std::get_if<std::string>(g)) groups[i] = *text;
-    plan.entries_[i].group = uint32_t(std::find(groups.begin(), groups.begin() + i + 1, groups[i]) - groups.begin());
+    entries_[i].group = uint32_t(std::find(groups.begin(), groups.begin() + i + 1, groups[i]) - groups.begin());
   }
-  plan.order_.resize(n);
-  for (size_t i = 0; i < n; ++i) plan.order_[i] = uint32_t(i);
-  std::stable_sort(plan.order_.begin(), plan.order_.end(), [&](uint32_t x, uint32_t y) {
-    const Entry &a = plan.entries_[x], &b = plan.entries_[y];
+  order_.resize(n);
+  for (size_t i = 0; i < n; ++i) order_[i] = uint32_t(i);
+  std::stable_sort(order_.begin(), order_.end(), [&](uint32_t x, uint32_t y) {
+    const Entry &a = entries_[x], &b = entries_[y];
     if (a.error_known != b.error_known) return a.error_known;
     if (a.error_known && a.group != b.group) return a.group < b.group;
     if (a.error != b.error) return a.error < b.error;
     return a.priority > b.priority;
   });
-  return plan;
 }
 
 SelectionQuery SelectionPlan::query(const SelectionCriteria& c) const {

@@ -1,11 +1,15 @@
 // Parses effect text and builds its model, keeping everything the model points into alive.
 #pragma once
+#include <gtest/gtest.h>
+
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "fx/diagnostic_render.h"
 #include "fx/frontend.h"
 #include "fx/model/effect_model.h"
+#include "fx/model/parameter_store.h"
 
 namespace fx::test {
 
@@ -35,6 +39,14 @@ inline const Parameter& param(const Built& b, std::string_view name) {
   static const Parameter none;
   uint32_t i = b.model.find_parameter(name);
   return i == kNoIndex ? none : b.model.parameters[i];
+}
+
+// A block member holding the words `path` names (a failed expectation when it names none).
+inline BlockMemberLayout placed(const EffectModel& model, std::string_view path, uint32_t offset, uint32_t size,
+                                uint32_t array_stride, uint32_t matrix_stride, MatrixPacking order) {
+  std::optional<ParameterSlice> slice = find_slice(model, path);
+  EXPECT_TRUE(slice) << path;
+  return {slice.value_or(ParameterSlice{}), offset, size, array_stride, matrix_stride, order};
 }
 
 }  // namespace fx::test

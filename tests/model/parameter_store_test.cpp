@@ -153,10 +153,10 @@ TEST(ParameterStore, MatrixPackingFollowsD3D) {
   ASSERT_TRUE(store.get_matrix(store.element(store.find("ms"), 1), back));
   EXPECT_EQ(back, m);
   const BlockMemberLayout layout[] = {
-      {"cm", 0, 64, 0, 16, MatrixPacking::column_major},
-      {"rm", 64, 64, 0, 16, MatrixPacking::row_major},
-      {"ms", 128, 128, 64, 16, MatrixPacking::column_major},
-      {"v", 256, 12, 0, 16, MatrixPacking::column_major},
+      test::placed(b->model, "cm", 0, 64, 0, 16, MatrixPacking::column_major),
+      test::placed(b->model, "rm", 64, 64, 0, 16, MatrixPacking::row_major),
+      test::placed(b->model, "ms", 128, 128, 64, 16, MatrixPacking::column_major),
+      test::placed(b->model, "v", 256, 12, 0, 16, MatrixPacking::column_major),
   };
   ASSERT_TRUE(store.bind_layout(0, layout, 272));
   std::vector<uint8_t> bytes(272, 0xCD);
@@ -193,17 +193,17 @@ TEST(ParameterStore, MatrixPackingFollowsD3D) {
   EXPECT_EQ(larger[272], 0xCD) << "bytes past the block size are left alone";
   std::vector<uint8_t> small(100);
   EXPECT_EQ(store.write_block(0, small).code, ParamStatus::size_mismatch);
-  const BlockMemberLayout outside[] = {{"v", 300, 12, 0, 16, MatrixPacking::column_major}};
+  const BlockMemberLayout outside[] = {test::placed(b->model, "v", 300, 12, 0, 16, MatrixPacking::column_major)};
   EXPECT_EQ(store.bind_layout(1, outside, 272).code, ParamStatus::size_mismatch);
 }
 
 TEST(ParameterStore, DirtyTrackingPerBlock) {
   auto b = test::build("float4 a; float4 c; struct S { float3 p; float w; }; S s;");
   ParameterStore store(b->model);
-  const BlockMemberLayout b0[] = {{"a", 0, 16, 0, 16, MatrixPacking::column_major}};
-  const BlockMemberLayout b1[] = {{"c", 0, 16, 0, 16, MatrixPacking::column_major},
-                                  {"s.p", 16, 12, 0, 16, MatrixPacking::column_major},
-                                  {"s.w", 28, 4, 0, 16, MatrixPacking::column_major}};
+  const BlockMemberLayout b0[] = {test::placed(b->model, "a", 0, 16, 0, 16, MatrixPacking::column_major)};
+  const BlockMemberLayout b1[] = {test::placed(b->model, "c", 0, 16, 0, 16, MatrixPacking::column_major),
+                                  test::placed(b->model, "s.p", 16, 12, 0, 16, MatrixPacking::column_major),
+                                  test::placed(b->model, "s.w", 28, 4, 0, 16, MatrixPacking::column_major)};
   ASSERT_TRUE(store.bind_layout(0, b0, 16));
   ASSERT_TRUE(store.bind_layout(1, b1, 32));
   EXPECT_TRUE(store.dirty(0));
@@ -226,8 +226,10 @@ TEST(ParameterStore, DirtyTrackingPerBlock) {
   ASSERT_TRUE(store.write_block(0, bytes));
   ASSERT_TRUE(store.set(store.find("a"), std::span<const float>(a)));
   EXPECT_FALSE(store.dirty(0)) << "setting the value the parameter holds changes nothing";
-  const BlockMemberLayout unknown[] = {{"zz", 0, 4, 0, 16, MatrixPacking::column_major}};
-  EXPECT_EQ(store.bind_layout(2, unknown, 4).code, ParamStatus::not_found);
+  EXPECT_FALSE(find_slice(b->model, "zz")) << "a path naming no parameter has no slice";
+  EXPECT_FALSE(find_slice(b->model, "s")) << "nor has a struct: its members are laid out one by one";
+  const BlockMemberLayout past_the_words[] = {{{1, 4, make_numeric(BaseType::float32)}, 0, 4, 0, 16}};
+  EXPECT_EQ(store.bind_layout(2, past_the_words, 4).code, ParamStatus::not_found);
 }
 
 // Members of an array of structs and of a struct inside a struct are bound by their paths;
@@ -241,14 +243,14 @@ TEST(ParameterStore, StructArrayMembersAndUnindexedAliasesAreBound) {
   ASSERT_FALSE(b->diags.has_errors()) << b->text();
   ParameterStore store(b->model);
   const BlockMemberLayout layout[] = {
-      {"lights.color", 16, 16, 0, 16, MatrixPacking::column_major},
-      {"lights[0].dir", 0, 12, 0, 16, MatrixPacking::column_major},
-      {"lights[0].color", 16, 16, 0, 16, MatrixPacking::column_major},
-      {"lights[1].dir", 32, 12, 0, 16, MatrixPacking::column_major},
-      {"lights[1].color", 48, 16, 0, 16, MatrixPacking::column_major},
-      {"rig.key.dir", 64, 12, 0, 16, MatrixPacking::column_major},
-      {"rig.key.color", 80, 16, 0, 16, MatrixPacking::column_major},
-      {"rig.scale", 96, 20, 16, 16, MatrixPacking::column_major},
+      test::placed(b->model, "lights.color", 16, 16, 0, 16, MatrixPacking::column_major),
+      test::placed(b->model, "lights[0].dir", 0, 12, 0, 16, MatrixPacking::column_major),
+      test::placed(b->model, "lights[0].color", 16, 16, 0, 16, MatrixPacking::column_major),
+      test::placed(b->model, "lights[1].dir", 32, 12, 0, 16, MatrixPacking::column_major),
+      test::placed(b->model, "lights[1].color", 48, 16, 0, 16, MatrixPacking::column_major),
+      test::placed(b->model, "rig.key.dir", 64, 12, 0, 16, MatrixPacking::column_major),
+      test::placed(b->model, "rig.key.color", 80, 16, 0, 16, MatrixPacking::column_major),
+      test::placed(b->model, "rig.scale", 96, 20, 16, 16, MatrixPacking::column_major),
   };
   ParamStatus status = store.bind_layout(0, layout, 128);
   EXPECT_TRUE(status) << status.message;
@@ -270,7 +272,7 @@ TEST(ParameterStore, StructArrayMembersAndUnindexedAliasesAreBound) {
   ASSERT_TRUE(store.write_block(0, bytes));
   EXPECT_EQ(at(16), 0.5f);
   // The alias alone: element 0's member.
-  const BlockMemberLayout alone[] = {{"lights.color", 0, 16, 0, 16, MatrixPacking::column_major}};
+  const BlockMemberLayout alone[] = {test::placed(b->model, "lights.color", 0, 16, 0, 16, MatrixPacking::column_major)};
   status = store.bind_layout(1, alone, 16);
   EXPECT_TRUE(status) << status.message;
   std::vector<uint8_t> one(16);
@@ -286,10 +288,10 @@ TEST(ParameterStore, StructArrayMembersAndUnindexedAliasesAreBound) {
 TEST(ParameterStore, UpdateBlockThroughHandle) {
   auto b = test::build("float4x4 World; float4x4 Wvp; float4 a; float c; float e[20];");
   ParameterStore store(b->model);
-  const BlockMemberLayout layout[] = {{"World", 0, 64, 0, 16, MatrixPacking::column_major},
-                                      {"Wvp", 64, 64, 0, 16, MatrixPacking::row_major},
-                                      {"a", 128, 16, 0, 16, MatrixPacking::column_major},
-                                      {"c", 144, 4, 0, 16, MatrixPacking::column_major}};
+  const BlockMemberLayout layout[] = {test::placed(b->model, "World", 0, 64, 0, 16, MatrixPacking::column_major),
+                                      test::placed(b->model, "Wvp", 64, 64, 0, 16, MatrixPacking::row_major),
+                                      test::placed(b->model, "a", 128, 16, 0, 16, MatrixPacking::column_major),
+                                      test::placed(b->model, "c", 144, 4, 0, 16, MatrixPacking::column_major)};
   ASSERT_TRUE(store.bind_layout(7, layout, 160));
   EXPECT_FALSE(store.block(8).valid());
   const BlockHandle h = store.block(7);
@@ -356,9 +358,9 @@ TEST(ParameterStore, UpdateBlockThroughHandle) {
 TEST(ParameterStore, MovedStoreKeepsItsBlocks) {
   auto b = test::build("float4x4 World; float4 a;");
   ParameterStore first(b->model);
-  const BlockMemberLayout object[] = {{"World", 0, 64, 0, 16, MatrixPacking::column_major}};
-  const BlockMemberLayout material[] = {{"World", 0, 64, 0, 16, MatrixPacking::row_major},
-                                        {"a", 64, 16, 0, 16, MatrixPacking::column_major}};
+  const BlockMemberLayout object[] = {test::placed(b->model, "World", 0, 64, 0, 16, MatrixPacking::column_major)};
+  const BlockMemberLayout material[] = {test::placed(b->model, "World", 0, 64, 0, 16, MatrixPacking::row_major),
+                                        test::placed(b->model, "a", 64, 16, 0, 16, MatrixPacking::column_major)};
   ASSERT_TRUE(first.bind_layout(0, object, 64));
   ASSERT_TRUE(first.bind_layout(1, material, 80));
   ParameterStore store(std::move(first));
@@ -406,9 +408,9 @@ TEST(ParameterStore, BlockPassesOverChangesItDoesNotHold) {
   const Param world = store.find("World"), tint = store.find("tint"), far = store.find("far");
   ASSERT_EQ(world.index, 0u);
   ASSERT_EQ(tint.index, 64u);
-  const BlockMemberLayout object[] = {{"World", 0, 64, 0, 16, MatrixPacking::column_major}};
-  const BlockMemberLayout material[] = {{"far", 0, 16, 0, 16, MatrixPacking::column_major}};
-  const BlockMemberLayout shared_bit[] = {{"tint", 0, 16, 0, 16, MatrixPacking::column_major}};
+  const BlockMemberLayout object[] = {test::placed(b->model, "World", 0, 64, 0, 16, MatrixPacking::column_major)};
+  const BlockMemberLayout material[] = {test::placed(b->model, "far", 0, 16, 0, 16, MatrixPacking::column_major)};
+  const BlockMemberLayout shared_bit[] = {test::placed(b->model, "tint", 0, 16, 0, 16, MatrixPacking::column_major)};
   ASSERT_TRUE(store.bind_layout(0, object, 64));
   ASSERT_TRUE(store.bind_layout(1, material, 16));
   ASSERT_TRUE(store.bind_layout(2, shared_bit, 16));
@@ -450,12 +452,12 @@ TEST(ParameterStore, BlockPassesOverChangesItDoesNotHold) {
 TEST(ParameterStore, SetMatrixPacksBoundMatricesInPlace) {
   auto b = test::build("float4x4 World; float4x4 Wvp; float c; float e[20];");
   ParameterStore direct(b->model), logged(b->model);
-  const BlockMemberLayout one[] = {{"World", 0, 64, 0, 16, MatrixPacking::column_major},
-                                   {"Wvp", 64, 64, 0, 16, MatrixPacking::row_major},
-                                   {"c", 128, 4, 0, 16, MatrixPacking::column_major}};
-  const BlockMemberLayout two[] = {{"c", 0, 4, 0, 16, MatrixPacking::column_major},
-                                   {"World", 16, 64, 0, 16, MatrixPacking::row_major}};
-  const BlockMemberLayout strided[] = {{"World", 0, 128, 0, 32, MatrixPacking::column_major}};
+  const BlockMemberLayout one[] = {test::placed(b->model, "World", 0, 64, 0, 16, MatrixPacking::column_major),
+                                   test::placed(b->model, "Wvp", 64, 64, 0, 16, MatrixPacking::row_major),
+                                   test::placed(b->model, "c", 128, 4, 0, 16, MatrixPacking::column_major)};
+  const BlockMemberLayout two[] = {test::placed(b->model, "c", 0, 4, 0, 16, MatrixPacking::column_major),
+                                   test::placed(b->model, "World", 16, 64, 0, 16, MatrixPacking::row_major)};
+  const BlockMemberLayout strided[] = {test::placed(b->model, "World", 0, 128, 0, 32, MatrixPacking::column_major)};
   for (ParameterStore* s : {&direct, &logged}) {
     ASSERT_TRUE(s->bind_layout(1, one, 144));
     ASSERT_TRUE(s->bind_layout(2, two, 80));
@@ -519,14 +521,14 @@ TEST(ParameterStore, SetMatrixPacksBoundMatricesInPlace) {
 // handed out last.
 TEST(ParameterStore, SetMatrixAgreesWithSetUnderRandomOperations) {
   auto b = test::build("float4x4 World; float4x4 Wvp; float c; float e[20];");
-  const BlockMemberLayout one[] = {{"World", 0, 64, 0, 16, MatrixPacking::column_major},
-                                   {"Wvp", 64, 64, 0, 16, MatrixPacking::row_major},
-                                   {"c", 128, 4, 0, 16, MatrixPacking::column_major}};
-  const BlockMemberLayout two[] = {{"c", 0, 4, 0, 16, MatrixPacking::column_major},
-                                   {"World", 16, 64, 0, 16, MatrixPacking::row_major}};
-  const BlockMemberLayout three[] = {{"Wvp", 0, 64, 0, 16, MatrixPacking::column_major}};
-  const BlockMemberLayout four[] = {{"e", 0, 320, 16, 16, MatrixPacking::column_major},
-                                    {"World", 320, 64, 0, 16, MatrixPacking::column_major}};
+  const BlockMemberLayout one[] = {test::placed(b->model, "World", 0, 64, 0, 16, MatrixPacking::column_major),
+                                   test::placed(b->model, "Wvp", 64, 64, 0, 16, MatrixPacking::row_major),
+                                   test::placed(b->model, "c", 128, 4, 0, 16, MatrixPacking::column_major)};
+  const BlockMemberLayout two[] = {test::placed(b->model, "c", 0, 4, 0, 16, MatrixPacking::column_major),
+                                   test::placed(b->model, "World", 16, 64, 0, 16, MatrixPacking::row_major)};
+  const BlockMemberLayout three[] = {test::placed(b->model, "Wvp", 0, 64, 0, 16, MatrixPacking::column_major)};
+  const BlockMemberLayout four[] = {test::placed(b->model, "e", 0, 320, 16, 16, MatrixPacking::column_major),
+                                    test::placed(b->model, "World", 320, 64, 0, 16, MatrixPacking::column_major)};
   const std::pair<std::span<const BlockMemberLayout>, uint32_t> layouts[] = {
       {one, 144}, {two, 80}, {three, 64}, {four, 384}};
   for (uint32_t seed = 1; seed <= 200; ++seed) {
@@ -589,8 +591,8 @@ TEST(ParameterStore, SetMatrixAgreesWithSetUnderRandomOperations) {
 TEST(ParameterStore, SetMatrixReachesABlockThatRepacksIt) {
   auto b = test::build("float4x4 World; float c;");
   ParameterStore direct(b->model), logged(b->model);
-  const BlockMemberLayout whole[] = {{"World", 0, 64, 0, 16, MatrixPacking::column_major}};
-  const BlockMemberLayout apart[] = {{"World", 0, 128, 0, 32, MatrixPacking::column_major}};
+  const BlockMemberLayout whole[] = {test::placed(b->model, "World", 0, 64, 0, 16, MatrixPacking::column_major)};
+  const BlockMemberLayout apart[] = {test::placed(b->model, "World", 0, 128, 0, 32, MatrixPacking::column_major)};
   for (ParameterStore* s : {&direct, &logged}) {
     ASSERT_TRUE(s->bind_layout(1, whole, 64));
     ASSERT_TRUE(s->bind_layout(2, apart, 128));
@@ -619,8 +621,8 @@ TEST(ParameterStore, SetMatrixReachesABlockThatRepacksIt) {
 TEST(ParameterStore, SetMatrixTakesColumnMajorInput) {
   auto b = test::build("float4x4 World; float4x4 Wvp;");
   ParameterStore cols(b->model), rows(b->model);
-  const BlockMemberLayout layout[] = {{"World", 0, 64, 0, 16, MatrixPacking::column_major},
-                                      {"Wvp", 64, 64, 0, 16, MatrixPacking::row_major}};
+  const BlockMemberLayout layout[] = {test::placed(b->model, "World", 0, 64, 0, 16, MatrixPacking::column_major),
+                                      test::placed(b->model, "Wvp", 64, 64, 0, 16, MatrixPacking::row_major)};
   for (ParameterStore* s : {&cols, &rows}) ASSERT_TRUE(s->bind_layout(1, layout, 128));
   const Param world = cols.find("World"), wvp = cols.find("Wvp");
   float m[16], mt[16];
@@ -652,9 +654,9 @@ TEST(ParameterStore, SetMatrixTakesColumnMajorInput) {
 TEST(ParameterStore, MatrixWrittenInPlaceIsTheOneValue) {
   auto b = test::build("float4x4 World; float Gloss;");
   ParameterStore s(b->model);
-  const BlockMemberLayout columns[] = {{"World", 0, 64, 0, 16, MatrixPacking::column_major}};
-  const BlockMemberLayout rows[] = {{"World", 16, 64, 0, 16, MatrixPacking::row_major},
-                                    {"Gloss", 0, 4, 0, 16, MatrixPacking::column_major}};
+  const BlockMemberLayout columns[] = {test::placed(b->model, "World", 0, 64, 0, 16, MatrixPacking::column_major)};
+  const BlockMemberLayout rows[] = {test::placed(b->model, "World", 16, 64, 0, 16, MatrixPacking::row_major),
+                                    test::placed(b->model, "Gloss", 0, 4, 0, 16, MatrixPacking::column_major)};
   ASSERT_TRUE(s.bind_layout(1, columns, 64));
   const Param world = s.find("World"), gloss = s.find("Gloss");
   float a[16], c[16], back[16];
@@ -714,7 +716,7 @@ TEST(ParameterStore, SharedPool) {
   float t = 0;
   ASSERT_TRUE(b.get(b.find("Time"), t));
   EXPECT_EQ(t, 1.0f) << "the first store to declare a shared parameter sets its default";
-  const BlockMemberLayout layout[] = {{"Time", 0, 4, 0, 16, MatrixPacking::column_major}};
+  const BlockMemberLayout layout[] = {test::placed(two->model, "Time", 0, 4, 0, 16, MatrixPacking::column_major)};
   ASSERT_TRUE(b.bind_layout(0, layout, 16));
   std::vector<uint8_t> bytes(16);
   ASSERT_TRUE(b.write_block(0, bytes));

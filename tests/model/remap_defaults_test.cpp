@@ -87,8 +87,8 @@ TEST(RemapDefaults, MatricesSetPerObjectAreTheApplications) {
   const std::string identity = "{1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1}", twice = "{2,0,0,0, 0,2,0,0, 0,0,2,0, 0,0,0,1}";
   auto v1 = test::build("float4x4 World = " + identity + "; float4x4 View = " + identity + ";");
   auto v2 = test::build("float4x4 World = " + twice + "; float4x4 View = " + twice + ";");
-  const BlockMemberLayout layout[] = {{"World", 0, 64, 0, 16, MatrixPacking::column_major},
-                                      {"View", 64, 64, 0, 16, MatrixPacking::column_major}};
+  const BlockMemberLayout layout[] = {test::placed(v1->model, "World", 0, 64, 0, 16, MatrixPacking::column_major),
+                                      test::placed(v1->model, "View", 64, 64, 0, 16, MatrixPacking::column_major)};
   ParameterStore s1(v1->model), s2(v1->model);
   ASSERT_TRUE(s2.bind_layout(0, layout, 128));  // as a backend binds before the swap
   EXPECT_EQ(remap(s1, s2), Names{});
@@ -140,7 +140,7 @@ TEST(RemapDefaults, MatricesSetPerObjectAreTheApplications) {
 TEST(RemapDefaults, AMatrixWrittenInPlaceInTheNewStoreKeepsItsNewestValue) {
   auto b = test::build("float4x4 World; float c;");
   ParameterStore old_store(b->model), next(b->model);
-  const BlockMemberLayout whole[] = {{"World", 0, 64, 0, 16, MatrixPacking::column_major}};
+  const BlockMemberLayout whole[] = {test::placed(b->model, "World", 0, 64, 0, 16, MatrixPacking::column_major)};
   ASSERT_TRUE(next.bind_layout(1, whole, 64));
   const Param world = next.find("World");
   float x[16], y[16];

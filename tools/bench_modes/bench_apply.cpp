@@ -20,6 +20,7 @@
 #include "bench.h"
 #include "fx/binding/effect_preview.h"
 #include "fx/compile/effect_file.h"
+#include "fx/compile/uniform_layout.h"
 #include "fx/vulkan/one_shot.h"
 #include "fxkit/fxkit.h"
 
@@ -70,9 +71,6 @@ struct RawPass {
   };
   std::vector<Block> blocks;
 };
-
-// The parameter a reflected member path ("light.dir", "bones[3]") starts with.
-std::string_view root_name(std::string_view path) { return path.substr(0, path.find_first_of(".[")); }
 
 void report(const fx::DiagnosticSink& sink) {
   for (const fx::Diagnostic& d : sink.diagnostics())
@@ -235,8 +233,17 @@ int bench_apply(const BenchArgs& args) {
       fx::ParameterStore values(*G.effect->model);
       fx::remap(*G.effect->params, values);
       uint32_t block_id = 0;
+      const uint32_t world = G.effect->model->find_parameter("World");
+      const uint32_t wvp = G.effect->model->find_parameter("WorldViewProjection");
       for (uint32_t p = 0; p < G.binding->pass_count(G.technique); ++p) {
         RawPass rp{};
+        const auto& units = G.effect->units->passes();
+        auto unit = std::find_if(units.begin(), units.end(), [&](const fx::EffectPass& u) {
+          return u.technique_index == G.technique && u.pass_index == p;
+        });
+        if (unit == units.end()) return std::fprintf(stderr, "fxkit bench apply: a pass has no units\n"), kUsageError;
+        const std::vector<fx::UniformBlockLayout> layouts =
+            fx::uniform_layouts(*G.effect->model, G.effect->programs->program(*unit));
         const fx::vk::ShaderProgram* program = nullptr;
         if (!G.binding->pass_objects(G.technique, p, formats, G.layout, rp.pipeline, program, sink))
           return report(sink), kInputErrors;
@@ -255,19 +262,18 @@ int bench_apply(const BenchArgs& args) {
           RawPass::Block block{};
           block.size = b.size;
           block.bytes.assign(b.size, 0);
-          std::vector<fx::BlockMemberLayout> members;
-          for (const fx::BlockMember& m : b.reflection->members) {
-            const fxkit::Param root = values.find(root_name(m.name));
-            const fx::Type* type = root.valid() ? values.type(root) : nullptr;
-            const fx::MatrixPacking order = type ? type->order : fx::MatrixPacking::column_major;
-            members.push_back(
-                {m.name, m.offset, m.size, m.array_stride, m.matrix_stride ? m.matrix_stride : 16u, order});
-            if (m.name == "World")
-              block.world = m.offset, block.world_columns = order == fx::MatrixPacking::column_major;
-            if (m.name == "WorldViewProjection")
-              block.wvp = m.offset, block.wvp_columns = order == fx::MatrixPacking::column_major;
+          auto layout = std::find_if(layouts.begin(), layouts.end(),
+                                     [&](const fx::UniformBlockLayout& l) { return l.binding == b.binding; });
+          if (layout == layouts.end())
+            return std::fprintf(stderr, "fxkit bench apply: a block is not laid out\n"), kUsageError;
+          for (const fx::BlockMemberLayout& m : layout->members) {
+            const bool whole = m.slice.first_word == 0;
+            if (whole && m.slice.parameter == world)
+              block.world = m.offset, block.world_columns = m.order == fx::MatrixPacking::column_major;
+            if (whole && m.slice.parameter == wvp)
+              block.wvp = m.offset, block.wvp_columns = m.order == fx::MatrixPacking::column_major;
           }
-          values.bind_layout(block_id, members, b.size);
+          values.bind_layout(block_id, layout->members, b.size);
           values.write_block(block_id++, block.bytes);
           rp.blocks.push_back(std::move(block));
           buffers.push_back({ring->handle(), 0, b.size});

@@ -154,6 +154,7 @@ class EffectBinding {
  private:
   struct Pass;
   struct Technique;
+  struct Builder;  // create()'s steps
   EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures);
   bool bind_textures(DiagnosticSink& sink);
   // Writes the pass's changed uniform blocks into the frame's ring (pass.ring_offsets);

@@ -18,6 +18,7 @@
 #include "fx/model/effect_model.h"
 #include "fx/model/matrix_order.h"
 #include "fx/model/param.h"
+#include "fx/model/parameter_slice.h"
 
 namespace fx {
 
@@ -38,9 +39,10 @@ struct ParamStatus {
   explicit operator bool() const { return code == ok; }
 };
 
-// Placement of one parameter (or member path `light.dir`, `bones[3]`) in a uniform block.
+// Placement of one parameter (or struct member, array element) in a uniform block:
+// fx/compile/uniform_layout.h lays a linked program's blocks out so.
 struct BlockMemberLayout {
-  std::string name;
+  ParameterSlice slice;                               // the words it holds (find_slice)
   uint32_t offset = 0;                                // bytes
   uint32_t size = 0;                                  // bytes, arrays included
   uint32_t array_stride = 0;                          // bytes between array elements (0: not an array)
@@ -129,7 +131,7 @@ class ParameterStore {
   ParamStatus reset(Param p);
 
   // Uniform blocks (ids chosen by the caller, e.g. reflection's block index). A member
-  // name that names no parameter is skipped and listed in the result's message.
+  // whose slice lies outside its parameter's words or the block fails the whole layout.
   ParamStatus bind_layout(uint32_t block, std::span<const BlockMemberLayout> members, uint32_t block_size);
   // The bound block `block` as a handle for per-draw calls (no id lookup); invalid when
   // the id has no layout. It stays valid for the store's life (a rebind keeps it).

@@ -134,6 +134,14 @@ class SelectionPlan {
   uint32_t first_survivor(const SelectionQuery& q, uint32_t last) const;
   uint32_t choose(const SelectionQuery& q, uint32_t last, SelectionRoute* route, uint32_t* chain_start) const;
   std::string reason(uint32_t index, const SelectionQuery& q, bool widened, uint32_t chosen) const;
+  // build()'s steps: each candidate's annotations read into an entry, fallback names
+  // resolved, fallback cycles cut, the rank order.
+  void add_candidate(const TechniqueCandidate& c, float hysteresis, DiagnosticSink& sink);
+  uint64_t scheme_mask(const std::vector<std::string>& schemes, const TechniqueCandidate& c, DiagnosticSink& sink);
+  void resolve_fallbacks(std::span<const TechniqueCandidate> candidates, std::string_view effect_fallback,
+                         DiagnosticSink& sink);
+  void cut_fallback_cycles(std::span<const TechniqueCandidate> candidates, DiagnosticSink& sink);
+  void rank(std::span<const TechniqueCandidate> candidates);
 
   std::vector<Entry> entries_;
   std::vector<uint32_t> order_;
