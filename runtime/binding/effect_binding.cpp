@@ -194,6 +194,10 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
             "': " + (pass_sink.diagnostics().empty() ? std::string("state") : pass_sink.diagnostics().front().message);
         break;
       }
+      if (program.stream_output && !program.stream_output->unsupported.empty()) {
+        tech->reason = "pass '" + pass_info.name + "': " + program.stream_output->unsupported;
+        break;
+      }
       if (program.stream_output && !ctx.features().transform_feedback) {
         tech->reason = "pass '" + pass_info.name +
                        "': stream output (ConstructGSWithSO) needs VK_EXT_transform_feedback with transform feedback "

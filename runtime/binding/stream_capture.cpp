@@ -54,12 +54,13 @@ std::optional<StreamCapture> StreamCapture::create(const Context& ctx, const Str
   for (uint32_t slot = 0; slot < c.used_; ++slot) {
     // A slot below the last one the declaration writes is bound too (bindings are a range).
     const VkDeviceSize bytes = std::max<VkDeviceSize>(VkDeviceSize(layout.strides[slot]) * vertices, 16);
-    auto buffer = Buffer::create(ctx,
-                                 {bytes,
-                                  VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
-                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                  MemoryUsage::device_local, "fxkit stream output"},
-                                 sink);
+    auto buffer =
+        Buffer::create(ctx,
+                       {bytes,
+                        VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                        MemoryUsage::device_local, "fxkit stream output"},
+                       sink);
     auto counter = Buffer::create(ctx,
                                   {4,
                                    VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_COUNTER_BUFFER_BIT_EXT |

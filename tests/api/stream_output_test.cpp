@@ -127,9 +127,8 @@ TEST_F(StreamOutputTest, CapturesTheTrianglesTheGeometryShaderEmits) {
   ASSERT_FALSE(words.empty());
   EXPECT_EQ(byte_count(words), 6u * 28u) << "two triangles of three vertices";
   const float expected[6][7] = {
-      {-1, -1, 0.5f, 1, 1, 0.5f, 0.25f},        {3, -1, 0.5f, 1, 1, 0.5f, 0.25f},
-      {-1, 3, 0.5f, 1, 1, 0.5f, 0.25f},         {-1, -1, 0.25f, 1, 0, 0, 1},
-      {-0.8f, -1, 0.25f, 1, 0, 0, 1},           {-1, -0.8f, 0.25f, 1, 0, 0, 1},
+      {-1, -1, 0.5f, 1, 1, 0.5f, 0.25f}, {3, -1, 0.5f, 1, 1, 0.5f, 0.25f}, {-1, 3, 0.5f, 1, 1, 0.5f, 0.25f},
+      {-1, -1, 0.25f, 1, 0, 0, 1},       {-0.8f, -1, 0.25f, 1, 0, 0, 1},   {-1, -0.8f, 0.25f, 1, 0, 0, 1},
   };
   for (size_t v = 0; v < 6; ++v)
     for (size_t c = 0; c < 7; ++c)
@@ -232,16 +231,21 @@ technique11 Stream2 {
   EXPECT_FALSE(refused.ok());
   const std::string messages = text(refused.messages());
   EXPECT_NE(messages.find("so_refused.fx:5:97: error: 'NORMAL' is captured whole"), std::string::npos) << messages;
-  EXPECT_NE(messages.find("so_refused.fx:6:98: error: the vertex shader writes no output 'TANGENT'"),
-            std::string::npos)
+  EXPECT_NE(messages.find("so_refused.fx:6:98: error: the vertex shader writes no output 'TANGENT'"), std::string::npos)
       << messages;
-  EXPECT_NE(messages.find("so_refused.fx:8:30: error: rasterized stream 2"), std::string::npos) << messages;
   EXPECT_NE(messages.find("[unsupported-stream-output-decl]"), std::string::npos) << messages;
+  // A rasterized stream past 0 compiles, as fxc compiles it, and cannot run.
+  EXPECT_NE(messages.find("so_refused.fx:8:30: warning: rasterized stream 2"), std::string::npos) << messages;
 
   fxkit::Effect whole = device_->load(write_effect("so_whole.fx", std::string(kShader) + R"(
 technique11 Whole { pass P { SetGeometryShader(ConstructGSWithSO(CompileShader(vs_5_0, VS()), "NORMAL; POSITION.")); } }
+technique11 Stream1 {
+  pass P { SetGeometryShader(ConstructGSWithSO(CompileShader(vs_5_0, VS()), "POSITION", "1:NORMAL", NULL, NULL, 0)); }
+}
 )"));
   ASSERT_TRUE(whole.ok()) << text(whole.messages());
+  const std::string stream1 = whole.technique("Stream1").reason();
+  EXPECT_NE(stream1.find("stream 1's declaration: the shader writes stream 0 only"), std::string::npos) << stream1;
   fxkit::Technique technique = whole.technique("Whole");
   ASSERT_TRUE(technique.valid()) << technique.reason();
   EXPECT_EQ(technique.stream_output_buffer(0).stride, 28u) << "NORMAL unmasked is its 3 components";

@@ -49,14 +49,15 @@ std::optional<StreamOutputLayout> capture_stream_output(CompiledShader& shader, 
   constexpr const char* kId = "unsupported-stream-output-decl";
   const std::string stage = to_string(shader.reflection.stage);
   bool ok = true;
-  if (decl.rasterized_stream > 0) {
-    sink.error(kId, decl.range,
-               "rasterized stream " + std::to_string(decl.rasterized_stream) +
-                   ": the shader writes stream 0 only (glslang's HLSL front end has one output stream); "
-                   "rasterize stream 0 or none (-1)");
-    ok = false;
-  }
   StreamOutputLayout layout;
+  // What glslang cannot write: the pass compiles (fxc accepts it) and is refused at run time.
+  const auto one_stream = [&](SourceRange range, const std::string& what) {
+    const std::string message =
+        what + ": the shader writes stream 0 only (glslang's HLSL front end has one output stream)";
+    sink.warning("unsupported-stream-output-stream", range, message);
+    if (layout.unsupported.empty()) layout.unsupported = message, layout.unsupported_range = range;
+  };
+  if (decl.rasterized_stream > 0) one_stream(decl.range, "rasterized stream " + std::to_string(decl.rasterized_stream));
   layout.rasterized = decl.rasterized_stream >= 0;
   std::array<uint32_t, kStreamOutSlots> offsets{};
   std::array<bool, kStreamOutSlots> used{};
@@ -65,10 +66,7 @@ std::optional<StreamOutputLayout> capture_stream_output(CompiledShader& shader, 
     const StreamOutEntry& e = item.entry;
     used[e.slot] = true;
     if (item.stream != 0) {
-      sink.error(kId, item.range,
-                 "stream " + std::to_string(item.stream) +
-                     ": the shader writes stream 0 only (glslang's HLSL front end has one output stream)");
-      ok = false;
+      one_stream(item.range, "stream " + std::to_string(item.stream) + "'s declaration");
       continue;
     }
     if (e.semantic.empty()) {  // $SKIP: a gap the capture leaves as it was

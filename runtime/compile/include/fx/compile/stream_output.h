@@ -48,14 +48,20 @@ struct StreamOutputLayout {
   std::vector<CapturedOutput> outputs;
   std::array<uint32_t, kStreamOutSlots> strides{};  // bytes per vertex of each buffer; 0: unused
   bool rasterized = true;  // false: rasterized stream -1, the pass draws nothing while capturing
+  // Why the pass cannot run as declared ("" when it can): a declaration for a stream other
+  // than 0, or a rasterized stream other than 0 or -1, which glslang cannot write; where.
+  std::string unsupported;
+  SourceRange unsupported_range;
 };
 
 // Decorates the outputs of `shader` (the last stage before rasterization, after
 // link_program) that `decl` captures: XfbBuffer, XfbStride and Offset on each, the Xfb
 // execution mode. Vulkan captures whole output variables, so an entry's mask must be all of
-// its output's components ("NORMAL.xyz" or "NORMAL" of a float3); a narrower mask, an output
-// the stage does not write, a stream other than 0 and a rasterized stream other than 0 or -1
-// are located errors ("unsupported-stream-output-decl") and nothing is returned.
+// its output's components ("NORMAL.xyz" or "NORMAL" of a float3); a narrower mask and an
+// output the stage does not write are located errors ("unsupported-stream-output-decl") and
+// nothing is returned. A stream other than 0 and a rasterized stream other than 0 or -1 (fxc
+// accepts them; glslang writes one stream) are warnings ("unsupported-stream-output-stream")
+// and the layout's `unsupported`: the pass compiles and is refused at run time.
 std::optional<StreamOutputLayout> capture_stream_output(CompiledShader& shader, const StreamOutputDecl& decl,
                                                         DiagnosticSink& sink);
 
