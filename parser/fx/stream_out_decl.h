@@ -6,6 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include "fx/source_manager.h"
+
 namespace fx {
 
 // One entry "[slot:] SEMANTIC[index][.mask]"; "$SKIP[.mask]" is a gap of that many components.
@@ -15,6 +17,7 @@ struct StreamOutEntry {
   uint32_t semantic_index = 0;      // TEXCOORD3 -> 3
   uint32_t start_component = 0;     // .yz -> 1
   uint32_t component_count = 4;     // .yz -> 2; no mask: 4
+  bool masked = false;              // a mask is written (no mask: every component of the output)
   uint32_t offset = 0, length = 0;  // where the entry is written in the declaration text
 };
 
@@ -38,5 +41,11 @@ struct StreamOutDecl {
 // ignored, a mask a run of "xyzw" or "rgba", a slot digits before ':'. Every malformed entry
 // is a problem; the entries that parse are kept.
 StreamOutDecl parse_stream_out_decl(std::string_view text);
+
+// Where characters [offset, offset + length) of the declaration `text` are in the source:
+// inside the string literal at `literal` when it is written as one plain string, else the
+// whole literal (a macro, a concatenation).
+SourceRange stream_out_text_range(const SourceManager& sm, SourceRange literal, std::string_view text, uint32_t offset,
+                                  uint32_t length);
 
 }  // namespace fx

@@ -529,18 +529,8 @@ void Checker::check_stream_out(const ast::Expr& construct) {
     }
     if (arg->kind != ast::ExprKind::string_literal) continue;
     const std::string_view text = arg->text;
-    // A problem's place inside the literal when the literal is written as one plain string.
-    const std::string_view written = arg->range.valid() && !sm_.is_expansion(arg->range.begin)
-                                         ? sm_.text_at(arg->range.begin).substr(0, text.size() + 2)
-                                         : std::string_view();
-    const bool plain = written.size() == text.size() + 2 && written.front() == '"' &&
-                       written.substr(1, text.size()) == text && written.back() == '"';
     for (const StreamOutProblem& p : parse_stream_out_decl(text).problems) {
-      SourceRange at = arg->range;
-      if (plain) {
-        at.begin = arg->range.begin.offset(1 + p.offset);
-        at.end = at.begin.offset(std::max(1u, p.length));
-      }
+      const SourceRange at = stream_out_text_range(sm_, arg->range, text, p.offset, p.length);
       diags_.error("bad-stream-out-decl", at, "stream-output declaration: " + p.message);
     }
   }

@@ -86,11 +86,26 @@ void parse_entry(std::string_view text, uint32_t offset, StreamOutDecl& decl) {
     }
     e.start_component = uint32_t(start);
     e.component_count = uint32_t(mask.size());
+    e.masked = text.size() > at + 1;
   }
   decl.entries.push_back(std::move(e));
 }
 
 }  // namespace
+
+SourceRange stream_out_text_range(const SourceManager& sm, SourceRange literal, std::string_view text, uint32_t offset,
+                                  uint32_t length) {
+  const std::string_view written = literal.valid() && !sm.is_expansion(literal.begin)
+                                       ? sm.text_at(literal.begin).substr(0, text.size() + 2)
+                                       : std::string_view();
+  const bool plain = written.size() == text.size() + 2 && written.front() == '"' &&
+                     written.substr(1, text.size()) == text && written.back() == '"';
+  if (!plain) return literal;
+  SourceRange at = literal;
+  at.begin = literal.begin.offset(1 + offset);
+  at.end = at.begin.offset(std::max(1u, length));
+  return at;
+}
 
 uint32_t StreamOutDecl::stride(uint32_t slot) const {
   uint32_t bytes = 0;

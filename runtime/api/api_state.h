@@ -67,6 +67,7 @@ struct EffectState {
   fx::vk::EffectBinding* recording = nullptr;
   PassApply pass_apply{&fx::vk::EffectBinding::apply_layout0, nullptr, &sink};
   std::shared_ptr<const fx::EffectVersion> recording_version;
+  fx::vk::EffectBinding* capturing = nullptr;  // begin_capture()'s, until end_capture()
   // The binding of the version of serial `binding_serial` (0: none looked up yet).
   fx::vk::EffectBinding* binding = nullptr;
   uint64_t binding_serial = 0;

@@ -94,6 +94,8 @@ std::unique_ptr<detail::DeviceState> make_state(fx::vk::Context ctx, const Devic
   desc.formats = s->formats;
   desc.binding.target = detail::pass_target(options.target);
   if (!options.dynamic_state) desc.binding.dynamic = fx::vk::DynamicStateSet::none();
+  if (options.target.extent.width && options.target.extent.height)
+    desc.binding.storage_image_extent = options.target.extent;
   const uint32_t defaults = options.target.default_attribute_binding;
   desc.vertex_layout = [layout = options.target.vertex_layout, defaults](std::span<const fx::InterfaceVariable> in) {
     return defaults == Target::kNoBinding ? layout : fx::vk::with_default_attributes(layout, in, defaults);

@@ -156,6 +156,48 @@ bool Technique::dispatch_compute_passes(VkCommandBuffer cmd, uint32_t width, uin
   return ok;
 }
 
+bool Technique::stream_output_pass(uint32_t pass) const {
+  auto version = effect_ ? effect_->handle.version() : nullptr;
+  const fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
+  return binding && binding->stream_output_pass(resolve(*effect_, *version, name_), pass);
+}
+
+bool Technique::begin_capture(VkCommandBuffer cmd, uint32_t pass) {
+  uint32_t t = 0;
+  fx::vk::EffectBinding* binding =
+      effect_ ? dispatch_binding(*effect_, name_, resolved_serial_, resolved_, passes_, t) : nullptr;
+  if (!binding) return false;
+  const bool ok = binding->begin_capture(cmd, t, pass, 0, effect_->sink);
+  if (ok && effect_->default_attributes) {
+    const VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(cmd, effect_->default_binding, 1, &effect_->default_attributes, &offset);
+  }
+  if (ok) effect_->capturing = binding;
+  if (!effect_->sink.diagnostics().empty()) effect_->keep_problems();
+  return ok;
+}
+
+void Technique::end_capture() {
+  if (!effect_ || !effect_->capturing) return;
+  effect_->capturing->end_capture();
+  effect_->capturing = nullptr;
+}
+
+bool Technique::draw_stream_output(VkCommandBuffer cmd, uint32_t pass, uint32_t stream_output_pass) {
+  if (!effect_ || !effect_->recording) return false;
+  const bool ok = effect_->recording->draw_stream_output(cmd, pass, stream_output_pass, effect_->sink);
+  if (!effect_->sink.diagnostics().empty()) effect_->keep_problems();
+  return ok;
+}
+
+StreamOutputBuffer Technique::stream_output_buffer(uint32_t pass, uint32_t slot) const {
+  auto version = effect_ ? effect_->handle.version() : nullptr;
+  const fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
+  if (!binding) return {};
+  auto b = binding->stream_output_buffer(resolve(*effect_, *version, name_), pass, slot);
+  return b ? StreamOutputBuffer{b->buffer, b->counter, b->size, b->stride} : StreamOutputBuffer{};
+}
+
 void Technique::end() {
   if (!effect_) return;
   if (effect_->recording) effect_->recording->end();

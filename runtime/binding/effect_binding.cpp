@@ -39,6 +39,10 @@ struct EffectBinding::Pass {
   // binding, so apply() looks the key up once per layout and format change, not per call.
   RenderingFormats pipeline_formats;
   std::vector<VkPipeline> pipelines;
+  // A stream-output pass: its buffers, and the vertex layout id (add_vertex_layout) of the
+  // vertices they hold, registered at the first draw_stream_output().
+  std::optional<StreamCapture> capture;
+  uint32_t capture_layout = kNoIndex;
 
   ~Pass() { resources.reset(); }  // declared first for apply(), it must not outlive the program
 };
@@ -63,6 +67,14 @@ void make_names_unique(ProgramLayout& layout) {
   std::map<std::string, int> seen;
   for (ProgramBinding& b : layout.bindings)
     if (seen[b.name]++ > 0) b.name.append("@").append(std::to_string(b.binding));
+}
+
+// `int StreamOutVertices = N;` on a stream-output pass: the vertices each buffer holds.
+uint32_t stream_out_vertices(const PassInfo& pass) {
+  for (const Annotation& a : pass.annotations)
+    if (a.name == "StreamOutVertices" && a.value.is_numeric() && a.value.number() >= 1)
+      return uint32_t(std::min(a.value.number(), double(1u << 24)));
+  return StreamCapture::kDefaultVertices;
 }
 
 }  // namespace
@@ -190,6 +202,26 @@ bool EffectBinding::Builder::program(Pass& pass, const PassInfo& info, std::stri
   if (!state) {
     reason = "pass '" + info.name + "': " + first_message(pass_sink, "state");
     return false;
+  }
+  if (const auto& so = pass.program->stream_output) {
+    if (!so->unsupported.empty()) {
+      reason = "pass '" + info.name + "': " + so->unsupported;
+      return false;
+    }
+    if (!ctx.features().transform_feedback) {
+      reason = "pass '" + info.name +
+               "': stream output (ConstructGSWithSO) needs VK_EXT_transform_feedback with transform feedback "
+               "draws, not enabled on " +
+               ctx.info().name;
+      return false;
+    }
+    pass.capture = StreamCapture::create(ctx, *so, stream_out_vertices(info), pass_sink);
+    if (!pass.capture) {
+      reason = "pass '" + info.name + "': " + pass_sink.diagnostics().back().message;
+      return false;
+    }
+    // Captured with nothing rasterized: fxkit's capture rendering has no attachments.
+    state->rasterizer_discard = 1;
   }
   pass.layout = pass.program->layout;
   make_names_unique(pass.layout);
@@ -382,8 +414,10 @@ bool EffectBinding::warm(uint32_t technique, const RenderingFormats& formats, ui
     return false;
   }
   bool ok = true;
-  for (auto& pass : techniques_[technique]->passes) {
-    if (pass->shader.compute_pipeline()) continue;  // made with its program
+  for (uint32_t p = 0; p < pass_count(technique); ++p) {
+    // Made with its program, captured, or drawing captured vertices (the layout is the capture's).
+    const auto& pass = techniques_[technique]->passes[p];
+    if (pass->shader.compute_pipeline() || pass->capture || stream_output_source(technique, p) != kNoIndex) continue;
     const VertexInput* input = vertex_input(*pass, vertex_layout, sink);
     ok = input && pipelines_->get(pass->shader, pass->state, *input, formats, recorder_->dynamic(), sink) && ok;
   }
@@ -478,6 +512,11 @@ bool EffectBinding::apply_pass(Pass& pass, uint32_t vertex_layout, DiagnosticSin
     sink.error("vk-pass-compute", {}, "a compute pass is dispatched (dispatch()), outside begin()/end(), not applied");
     return false;
   }
+  if (pass.capture) {
+    sink.error("vk-pass-stream-output", {},
+               "a stream-output pass is captured (begin_capture()), outside begin()/end(), not applied");
+    return false;
+  }
   const VertexInput* input = vertex_input(pass, vertex_layout, sink);
   if (!input) return false;
   if (!(pass.pipeline_formats == formats_)) {
@@ -517,6 +556,15 @@ bool EffectBinding::pass_objects(uint32_t technique, uint32_t pass_index, const 
   return pipeline != VK_NULL_HANDLE;
 }
 
+bool EffectBinding::no_pass_that_runs(uint32_t technique, uint32_t pass, std::string_view kind,
+                                      DiagnosticSink& sink) const {
+  sink.error("vk-pass-unknown", {},
+             "pass " + std::to_string(pass) + " of technique " + std::to_string(technique) + " is no " +
+                 std::string(kind) + " pass that can run" +
+                 (technique_ok(technique) ? "" : " (" + technique_reason(technique) + ")"));
+  return false;
+}
+
 bool EffectBinding::compute_pass(uint32_t technique, uint32_t pass) const {
   return technique_ok(technique) && pass < techniques_[technique]->passes.size() &&
          techniques_[technique]->passes[pass]->shader.compute_pipeline() != VK_NULL_HANDLE;
@@ -544,13 +592,7 @@ bool EffectBinding::dispatch(VkCommandBuffer cmd, uint32_t technique, uint32_t p
     sink.error("vk-pass-compute", {}, "dispatch() between begin() and end(): compute runs outside rendering");
     return false;
   }
-  if (!compute_pass(technique, pass_index)) {
-    sink.error("vk-pass-unknown", {},
-               "pass " + std::to_string(pass_index) + " of technique " + std::to_string(technique) +
-                   " is no compute pass that can run" +
-                   (technique_ok(technique) ? "" : " (" + technique_reason(technique) + ")"));
-    return false;
-  }
+  if (!compute_pass(technique, pass_index)) return no_pass_that_runs(technique, pass_index, "compute", sink);
   if (textures_pending_ && !bind_textures(sink)) return false;
   Pass& pass = *techniques_[technique]->passes[pass_index];
   bool moved = false;
@@ -568,6 +610,93 @@ bool EffectBinding::dispatch_compute_passes(VkCommandBuffer cmd, uint32_t techni
     if (compute_pass(technique, p) && !dispatch(cmd, technique, p, dispatch_groups(technique, p, width, height), sink))
       return false;
   return true;
+}
+
+bool EffectBinding::stream_output_pass(uint32_t technique, uint32_t pass) const {
+  return technique_ok(technique) && pass < techniques_[technique]->passes.size() &&
+         techniques_[technique]->passes[pass]->capture.has_value();
+}
+
+bool EffectBinding::begin_capture(VkCommandBuffer cmd, uint32_t technique, uint32_t pass_index, uint32_t vertex_layout,
+                                  DiagnosticSink& sink) {
+  if (active_ || capturing_) {
+    sink.error("vk-pass-stream-output", {},
+               "begin_capture() between begin() and end() or during another capture: it runs outside rendering");
+    return false;
+  }
+  if (!stream_output_pass(technique, pass_index))
+    return no_pass_that_runs(technique, pass_index, "stream-output", sink);
+  if (textures_pending_ && !bind_textures(sink)) return false;
+  Pass& pass = *techniques_[technique]->passes[pass_index];
+  const VertexInput* input = vertex_input(pass, vertex_layout, sink);
+  bool moved = false;
+  if (!input || !write_blocks(pass, moved, sink)) return false;
+  const RenderingFormats none;  // the capture's rendering has no attachments
+  const VkPipeline pipeline = pipelines_->get(pass.shader, pass.state, *input, none, recorder_->dynamic(), sink);
+  if (!pipeline) return false;
+  update_object_count();
+  pass.capture->begin_rendering(cmd);
+  recorder_->begin(cmd, none, VkViewport{0, 0, 1, 1, 0, 1}, VkRect2D{{0, 0}, {1, 1}});
+  PassDesc desc{&pass.shader, pass.state, input, pass.resources.get(), pipeline, pass.ring_offsets};
+  if (!recorder_->apply(desc, sink)) {
+    recorder_->end();
+    vkCmdEndRendering(cmd);
+    return false;
+  }
+  pass.capture->begin(cmd);
+  capturing_ = &pass;
+  capture_cmd_ = cmd;
+  return true;
+}
+
+void EffectBinding::end_capture() {
+  if (!capturing_) return;
+  capturing_->capture->end(capture_cmd_);
+  recorder_->end();
+  capturing_ = nullptr;
+}
+
+bool EffectBinding::draw_stream_output(VkCommandBuffer cmd, uint32_t pass_index, uint32_t stream_output_pass_index,
+                                       DiagnosticSink& sink) {
+  if (!active_ || stream_output_pass_index >= active_->passes.size() ||
+      !active_->passes[stream_output_pass_index]->capture) {
+    sink.error("vk-pass-unknown", {},
+               "draw_stream_output() outside begin()/end(), or pass " + std::to_string(stream_output_pass_index) +
+                   " of the begun technique is no stream-output pass");
+    return false;
+  }
+  Pass& source = *active_->passes[stream_output_pass_index];
+  if (source.capture_layout == kNoIndex) source.capture_layout = add_vertex_layout(source.capture->vertex_layout());
+  if (!apply(pass_index, source.capture_layout, sink)) return false;
+  source.capture->draw(cmd);
+  return true;
+}
+
+std::optional<StreamOutputBuffer> EffectBinding::stream_output_buffer(uint32_t technique, uint32_t pass,
+                                                                      uint32_t slot) const {
+  if (!stream_output_pass(technique, pass)) return std::nullopt;
+  StreamOutputBuffer b = techniques_[technique]->passes[pass]->capture->buffer(slot);
+  if (!b.buffer) return std::nullopt;
+  return b;
+}
+
+bool EffectBinding::capture_stream_output_passes(VkCommandBuffer cmd, uint32_t technique, uint32_t vertex_layout,
+                                                 const std::function<void(VkCommandBuffer)>& draw,
+                                                 DiagnosticSink& sink) {
+  for (uint32_t p = 0; p < pass_count(technique); ++p) {
+    if (!stream_output_pass(technique, p)) continue;
+    if (!begin_capture(cmd, technique, p, vertex_layout, sink)) return false;
+    draw(cmd);
+    end_capture();
+  }
+  return true;
+}
+
+uint32_t EffectBinding::stream_output_source(uint32_t technique, uint32_t pass) const {
+  uint32_t source = kNoIndex;
+  for (uint32_t p = 0; p < pass && p < pass_count(technique); ++p)
+    if (stream_output_pass(technique, p)) source = p;
+  return source;
 }
 
 void EffectBinding::end() {

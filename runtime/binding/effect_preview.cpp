@@ -111,18 +111,37 @@ bool EffectPreview::record_passes(VkCommandBuffer cmd, EffectBinding& binding, u
   const VkViewport viewport{0.0f, float(desc_.height), float(desc_.width), -float(desc_.height), 0.0f, 1.0f};
   // The technique's compute passes first, outside rendering ("simulate, then draw").
   bool recorded = binding.dispatch_compute_passes(cmd, technique, desc_.width, desc_.height, sink);
+  const auto bind_mesh = [&](VkCommandBuffer c) {
+    const VkBuffer buffers[2] = {vertices_.handle(), constants_.handle()};
+    const VkDeviceSize offsets[2] = {0, 0};
+    vkCmdBindVertexBuffers(c, 0, 2, buffers, offsets);
+    vkCmdBindIndexBuffer(c, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+  };
+  // Then its stream-output passes capture the mesh, also outside rendering; the passes after
+  // one draw what it captured (DrawAuto) instead of the mesh.
+  recorded = recorded && binding.capture_stream_output_passes(
+                             cmd, technique, vertex_layout,
+                             [&](VkCommandBuffer c) {
+                               bind_mesh(c);
+                               vkCmdDrawIndexed(c, index_count_, 1, 0, 0, 0);
+                             },
+                             sink);
   ClearValues clear;
   clear.color = desc_.clear;
   target_->begin(cmd, clear);
   recorded = recorded && binding.begin(cmd, technique, formats(), viewport, scissor, sink);
   if (recorded) {
-    const VkBuffer buffers[2] = {vertices_.handle(), constants_.handle()};
-    const VkDeviceSize offsets[2] = {0, 0};
-    vkCmdBindVertexBuffers(cmd, 0, 2, buffers, offsets);
-    vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+    bool mesh_bound = false;  // a draw of captured vertices binds vertex buffer 0 to them
     for (uint32_t d = 0; d < draws && recorded; ++d) {
       for (uint32_t p = 0; p < binding.pass_count(technique) && recorded; ++p) {
-        if (binding.compute_pass(technique, p)) continue;
+        if (binding.compute_pass(technique, p) || binding.stream_output_pass(technique, p)) continue;
+        if (const uint32_t source = binding.stream_output_source(technique, p); source != kNoIndex) {
+          recorded = binding.draw_stream_output(cmd, p, source, sink);
+          mesh_bound = false;
+          continue;
+        }
+        if (!mesh_bound) bind_mesh(cmd);
+        mesh_bound = true;
         recorded = binding.apply(p, vertex_layout, sink);
         if (recorded) vkCmdDrawIndexed(cmd, index_count_, 1, 0, 0, 0);
       }

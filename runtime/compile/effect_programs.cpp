@@ -151,7 +151,18 @@ const PassProgram& EffectPrograms::program(const EffectPass& pass) {
     std::vector<CompiledShader*> shaders;
     for (StageProgram& s : p.stages) shaders.push_back(&s.shader);
     DiagnosticSink sink;
-    p.layout = link_program(shaders, sink);
+    // ConstructGSWithSO: the outputs it captures stay linked, read by the pixel shader or not.
+    auto so = std::find_if(pass.stages.begin(), pass.stages.end(),
+                           [](const StageUnit& s) { return s.stream_output.has_value(); });
+    std::vector<std::string> captured;
+    if (so != pass.stages.end())
+      for (const StreamOutputEntry& e : so->stream_output->entries)
+        if (!e.entry.semantic.empty())
+          captured.push_back(canonical_semantic(e.entry.semantic + std::to_string(e.entry.semantic_index)));
+    p.layout = link_program(shaders, sink, captured);
+    if (so != pass.stages.end())
+      for (StageProgram& s : p.stages)
+        if (s.stage == so->stage) p.stream_output = capture_stream_output(s.shader, *so->stream_output, sink);
     p.diagnostics = sink.diagnostics();
     p.compiled = !sink.has_errors();
     p.link_ms = ms_since(start);

@@ -170,6 +170,7 @@ ShaderBinding shader_from(const ast::Expr& e, PassStage stage, ResolveContext& c
       if ((iequals(e.text, "ConstructGSWithSO") || iequals(e.text, "BindInterfaces")) && !e.args.empty() && e.args[0]) {
         ShaderBinding inner = shader_from(*e.args[0], stage, ctx, depth + 1);
         inner.range = e.range;
+        inner.stream_output = inner.stream_output || iequals(e.text, "ConstructGSWithSO");
         return inner;
       }
       // D3D10 pass call form: SetPixelShader(x).

@@ -100,6 +100,11 @@ PassProgramCheck check_pass_program(EffectPrograms& programs, uint32_t technique
                                    "program does not link: " + d.message));
     }
   if (!all_ok) return out;
+  // Stream output fxkit cannot capture on Vulkan (a second stream): the pass compiles, as fxc
+  // compiles it, and cannot run.
+  if (const auto& so = program.stream_output;
+      caps.generation == CapsGeneration::vulkan && so && !so->unsupported.empty())
+    out.reasons.push_back(reason("unsupported-stream-output", so->unsupported_range, so->unsupported));
 
   auto limit = [&](std::string_view name, uint32_t need, SourceRange range, const std::string& what) {
     if (std::string why = unmet_limit(caps, name, need); !why.empty())

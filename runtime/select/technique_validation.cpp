@@ -16,6 +16,8 @@
 namespace fx {
 namespace {
 
+constexpr std::string_view kTransformFeedbackExtension = "VK_EXT_transform_feedback";
+
 std::string caps_name(const DeviceCaps& caps) { return caps.name.empty() ? "this device" : caps.name; }
 
 // "ColorOp[0]" for indexed rows, "AlphaTestEnable" otherwise.
@@ -302,6 +304,7 @@ class TechniqueValidator {
       if (!has(PassStage::pixel)) note_emulation("emulated: fixed-function texture stages as generated HLSL");
     }
     check_vertex_shader(technique, pass);
+    check_stream_output(pass);
     const ShaderBinding* pixel = pass.shader(PassStage::pixel);
     const bool pixel_shader = pixel && pixel->source != ShaderSource::null;
     for (const ResolvedState& s : pass.states) {
@@ -359,6 +362,19 @@ class TechniqueValidator {
                      std::string("pass sets a ") + stage_noun(s) + " but no vertex shader, which drawing needs");
         return;
       }
+  }
+
+  // ConstructGSWithSO: the stream is captured with VK_EXT_transform_feedback (its transformFeedback
+  // feature enabled, its vertices drawable by byte count); a Direct3D 10/11 profile has it.
+  void check_stream_output(const PassInfo& pass) {
+    if (!caps_.vulkan.present) return;
+    const auto& extensions = caps_.vulkan.extensions;
+    if (std::find(extensions.begin(), extensions.end(), kTransformFeedbackExtension) != extensions.end()) return;
+    for (const ShaderBinding& b : pass.shaders)
+      if (b.stream_output && b.source != ShaderSource::null)
+        reasons_.add("unsupported-stream-output", b.range,
+                     "stream output (ConstructGSWithSO) needs " + std::string(kTransformFeedbackExtension) +
+                         " with transform feedback draws, not enabled on " + caps_name(caps_));
   }
 
   // The technique's `Requires`: located at the annotation. A need the passes already

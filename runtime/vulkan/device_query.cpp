@@ -12,6 +12,7 @@ namespace {
 constexpr const char* kPushDescriptor = VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME;
 constexpr const char* kEds2 = VK_EXT_EXTENDED_DYNAMIC_STATE_2_EXTENSION_NAME;
 constexpr const char* kEds3 = VK_EXT_EXTENDED_DYNAMIC_STATE_3_EXTENSION_NAME;
+constexpr const char* kTransformFeedback = VK_EXT_TRANSFORM_FEEDBACK_EXTENSION_NAME;
 
 // One table maps the Vulkan EDS3 feature bits to ours, both ways.
 struct Eds3Field {
@@ -61,8 +62,10 @@ constexpr Eds3Field kEds3Fields[] = {
 // The extended dynamic state commands are core in Vulkan 1.3, which the 1.3 struct stands for.
 DeviceFeatures features_from(const VkPhysicalDeviceFeatures& core, const VkPhysicalDeviceVulkan13Features* f13,
                              const VkPhysicalDeviceExtendedDynamicState2FeaturesEXT* eds2,
-                             const VkPhysicalDeviceExtendedDynamicState3FeaturesEXT* eds3, bool push_descriptor) {
+                             const VkPhysicalDeviceExtendedDynamicState3FeaturesEXT* eds3, bool push_descriptor,
+                             const VkPhysicalDeviceTransformFeedbackFeaturesEXT* xfb) {
   DeviceFeatures f;
+  f.transform_feedback = xfb && xfb->transformFeedback;
   f.dynamic_rendering = f13 && f13->dynamicRendering;
   f.synchronization2 = f13 && f13->synchronization2;
   f.maintenance4 = f13 && f13->maintenance4;
@@ -134,6 +137,7 @@ DeviceSupport query_device(VkPhysicalDevice physical_device, uint32_t index) {
   const bool has_push = s.has_extension(kPushDescriptor);
   const bool has_eds2 = s.has_extension(kEds2);
   const bool has_eds3 = s.has_extension(kEds3);
+  const bool has_xfb = s.has_extension(kTransformFeedback);
 
   VkPhysicalDeviceVulkan11Properties p11 =
       structure<VkPhysicalDeviceVulkan11Properties>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_PROPERTIES);
@@ -146,10 +150,17 @@ DeviceSupport query_device(VkPhysicalDevice physical_device, uint32_t index) {
     push_props.pNext = props2.pNext;
     props2.pNext = &push_props;
   }
+  VkPhysicalDeviceTransformFeedbackPropertiesEXT xfb_props = structure<VkPhysicalDeviceTransformFeedbackPropertiesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_PROPERTIES_EXT);
+  if (has_xfb) {
+    xfb_props.pNext = props2.pNext;
+    props2.pNext = &xfb_props;
+  }
   vkGetPhysicalDeviceProperties2(physical_device, &props2);
   if (props.apiVersion >= VK_API_VERSION_1_2)
     std::copy(std::begin(p11.deviceUUID), std::end(p11.deviceUUID), s.info.uuid.begin());
   if (has_push) s.info.push_descriptor_max = push_props.maxPushDescriptors;
+  if (has_xfb) s.info.transform_feedback_stride_max = xfb_props.maxTransformFeedbackBufferDataStride;
 
   VkPhysicalDeviceVulkan13Features f13 =
       structure<VkPhysicalDeviceVulkan13Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
@@ -157,6 +168,8 @@ DeviceSupport query_device(VkPhysicalDevice physical_device, uint32_t index) {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_2_FEATURES_EXT);
   VkPhysicalDeviceExtendedDynamicState3FeaturesEXT f_eds3 = structure<VkPhysicalDeviceExtendedDynamicState3FeaturesEXT>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_3_FEATURES_EXT);
+  VkPhysicalDeviceTransformFeedbackFeaturesEXT f_xfb = structure<VkPhysicalDeviceTransformFeedbackFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_FEATURES_EXT);
   VkPhysicalDeviceFeatures2 f2 = structure<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
   void** tail = &f2.pNext;
   auto link = [&tail](auto& s) {
@@ -166,10 +179,13 @@ DeviceSupport query_device(VkPhysicalDevice physical_device, uint32_t index) {
   if (v13) link(f13);
   if (has_eds2) link(f_eds2);
   if (has_eds3) link(f_eds3);
+  if (has_xfb) link(f_xfb);
   vkGetPhysicalDeviceFeatures2(physical_device, &f2);
 
+  // Stream output needs the captured vertices drawable by their byte count (DrawAuto).
+  const bool xfb = has_xfb && xfb_props.transformFeedbackDraw;
   s.features = features_from(f2.features, v13 ? &f13 : nullptr, has_eds2 ? &f_eds2 : nullptr,
-                             has_eds3 ? &f_eds3 : nullptr, has_push);
+                             has_eds3 ? &f_eds3 : nullptr, has_push, xfb ? &f_xfb : nullptr);
 
   vkGetPhysicalDeviceQueueFamilyProperties(physical_device, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
@@ -229,6 +245,12 @@ FeatureChain::FeatureChain(const DeviceSupport& supported) {
     *tail = &eds3;
     tail = &eds3.pNext;
   }
+  if (f.transform_feedback) {
+    xfb.transformFeedback = VK_TRUE;
+    extensions.push_back(kTransformFeedback);
+    *tail = &xfb;
+    tail = &xfb.pNext;
+  }
 }
 
 DeviceFunctions load_device_functions(VkInstance instance, VkDevice device, const DeviceFeatures& f, bool debug_utils) {
@@ -254,6 +276,12 @@ DeviceFunctions load_device_functions(VkInstance instance, VkDevice device, cons
   if (e.provoking_vertex_mode) load(fn.set_provoking_vertex_mode, "vkCmdSetProvokingVertexModeEXT");
   if (e.line_rasterization_mode) load(fn.set_line_rasterization_mode, "vkCmdSetLineRasterizationModeEXT");
   if (e.tessellation_domain_origin) load(fn.set_tessellation_domain_origin, "vkCmdSetTessellationDomainOriginEXT");
+  if (f.transform_feedback) {
+    load(fn.bind_transform_feedback_buffers, "vkCmdBindTransformFeedbackBuffersEXT");
+    load(fn.begin_transform_feedback, "vkCmdBeginTransformFeedbackEXT");
+    load(fn.end_transform_feedback, "vkCmdEndTransformFeedbackEXT");
+    load(fn.draw_indirect_byte_count, "vkCmdDrawIndirectByteCountEXT");
+  }
   if (debug_utils && instance)
     fn.set_object_name = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
         vkGetInstanceProcAddr(instance, "vkSetDebugUtilsObjectNameEXT"));
@@ -273,6 +301,7 @@ DeviceFeatures enabled_features(VkPhysicalDevice physical_device, const VkDevice
   VkPhysicalDeviceVulkan13Features f13{};
   const VkPhysicalDeviceExtendedDynamicState2FeaturesEXT* eds2 = nullptr;
   const VkPhysicalDeviceExtendedDynamicState3FeaturesEXT* eds3 = nullptr;
+  const VkPhysicalDeviceTransformFeedbackFeaturesEXT* xfb = nullptr;
   for (auto* next = static_cast<const VkBaseInStructure*>(created_with.pNext); next; next = next->pNext) {
     switch (next->sType) {
       case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2:
@@ -302,11 +331,16 @@ DeviceFeatures enabled_features(VkPhysicalDevice physical_device, const VkDevice
       case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_3_FEATURES_EXT:
         if (enabled(kEds3)) eds3 = reinterpret_cast<const VkPhysicalDeviceExtendedDynamicState3FeaturesEXT*>(next);
         break;
+      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_FEATURES_EXT:
+        // Drawable by byte count only where the device says so (query_device).
+        if (enabled(kTransformFeedback) && support.features.transform_feedback)
+          xfb = reinterpret_cast<const VkPhysicalDeviceTransformFeedbackFeaturesEXT*>(next);
+        break;
       default: break;
     }
   }
   const bool v13 = support.info.api_version >= VK_API_VERSION_1_3;
-  return features_from(core, v13 ? &f13 : nullptr, eds2, eds3, enabled(kPushDescriptor));
+  return features_from(core, v13 ? &f13 : nullptr, eds2, eds3, enabled(kPushDescriptor), xfb);
 }
 
 }  // namespace fx::vk

@@ -36,6 +36,8 @@ struct FeatureChain {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_2_FEATURES_EXT);
   VkPhysicalDeviceExtendedDynamicState3FeaturesEXT eds3 = structure<VkPhysicalDeviceExtendedDynamicState3FeaturesEXT>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_3_FEATURES_EXT);
+  VkPhysicalDeviceTransformFeedbackFeaturesEXT xfb = structure<VkPhysicalDeviceTransformFeedbackFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_FEATURES_EXT);
   std::vector<const char*> extensions;  // to enable, pointing into the DeviceSupport
   DeviceFeatures enabled;
 };

@@ -45,7 +45,7 @@ uint32_t DynamicStateSet::bits() const {
   return b;
 }
 
-uint32_t DynamicStateSet::dynamic_state_list(VkDynamicState* out, uint32_t, bool patches) const {
+uint32_t DynamicStateSet::dynamic_state_list(VkDynamicState* out, uint32_t attachment_count, bool patches) const {
   uint32_t n = 0;
   out[n++] = VK_DYNAMIC_STATE_VIEWPORT;
   out[n++] = VK_DYNAMIC_STATE_SCISSOR;
@@ -68,9 +68,10 @@ uint32_t DynamicStateSet::dynamic_state_list(VkDynamicState* out, uint32_t, bool
   if (depth_clamp) out[n++] = VK_DYNAMIC_STATE_DEPTH_CLAMP_ENABLE_EXT;
   if (sample_mask) out[n++] = VK_DYNAMIC_STATE_SAMPLE_MASK_EXT;
   if (alpha_to_coverage) out[n++] = VK_DYNAMIC_STATE_ALPHA_TO_COVERAGE_ENABLE_EXT;
-  if (color_blend_enable) out[n++] = VK_DYNAMIC_STATE_COLOR_BLEND_ENABLE_EXT;
-  if (color_blend_equation) out[n++] = VK_DYNAMIC_STATE_COLOR_BLEND_EQUATION_EXT;
-  if (color_write_mask) out[n++] = VK_DYNAMIC_STATE_COLOR_WRITE_MASK_EXT;
+  // With no colour attachment (a stream-output capture) there is nothing to set them for.
+  if (color_blend_enable && attachment_count) out[n++] = VK_DYNAMIC_STATE_COLOR_BLEND_ENABLE_EXT;
+  if (color_blend_equation && attachment_count) out[n++] = VK_DYNAMIC_STATE_COLOR_BLEND_EQUATION_EXT;
+  if (color_write_mask && attachment_count) out[n++] = VK_DYNAMIC_STATE_COLOR_WRITE_MASK_EXT;
   return n;
 }
 

@@ -879,6 +879,31 @@ technique11 T {
   EXPECT_EQ(centre[2], 255);
 }
 
+// A storage image nothing is bound to gets a stand-in the size of the Target's extent (so a
+// compute pass with one thread per pixel covers the image), 256 x 256 when it gives none.
+TEST_F(PublicApiTest, StorageImageStandInsTakeTheTargetsExtent) {
+  for (const auto& [extent, expected] : {std::pair{VkExtent2D{32, 16}, std::array<int, 2>{128, 64}},
+                                         std::pair{VkExtent2D{0, 0}, std::array<int, 2>{255, 255}}}) {
+    fxkit::DeviceOptions o = options();
+    o.target.extent = extent;
+    Rig r = rig(o);
+    ASSERT_TRUE(r) << text(r.errors);
+    fxkit::Effect effect = r.device->load(write_effect("api_storage_extent.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+RWTexture2D<float4> Canvas;
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target { uint w, h; Canvas.GetDimensions(w, h); return float4(w / 64.0, h / 64.0, 0, 1); }
+technique11 T { pass Draw { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)"));
+    ASSERT_TRUE(effect.ok()) << text(effect.messages());
+    effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+    fxkit::Technique technique = effect.technique("T");
+    const std::array<uint8_t, 3> centre = draw(*r.device, technique, *r.mesh, *r.image);
+    EXPECT_NEAR(centre[0], expected[0], 1) << extent.width;
+    EXPECT_NEAR(centre[1], expected[1], 1) << extent.height;
+  }
+}
+
 // An AppendStructuredBuffer and a ConsumeStructuredBuffer on one application buffer and one
 // counter (glslang's "name@count" buffer), as FX11 binds one UAV to both: a compute pass
 // appends four items, the next consumes two into an RWStructuredBuffer, and the draw shows

@@ -38,24 +38,13 @@ size_t outputs_not_consumed(const Context& ctx) {
 
 TEST_F(VulkanTest, AWrappedDeviceWithoutMaintenance4DrawsWithoutOutputNotConsumed) {
   // The engine's device: this physical device, dynamic rendering and nothing else.
-  const float priority = 1.0f;
-  VkDeviceQueueCreateInfo queue_info{};
-  queue_info.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
-  queue_info.queueFamilyIndex = ctx().queue_family();
-  queue_info.queueCount = 1;
-  queue_info.pQueuePriorities = &priority;
   VkPhysicalDeviceVulkan13Features v13{};
   v13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
   v13.dynamicRendering = VK_TRUE;
   VkDeviceCreateInfo created{};
-  created.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
   created.pNext = &v13;
-  created.queueCreateInfoCount = 1;
-  created.pQueueCreateInfos = &queue_info;
-  VkDevice device = VK_NULL_HANDLE;
-  ASSERT_EQ(vkCreateDevice(ctx().physical_device(), &created, nullptr, &device), VK_SUCCESS);
-  VkQueue queue = VK_NULL_HANDLE;
-  vkGetDeviceQueue(device, ctx().queue_family(), 0, &queue);
+  const auto [device, queue] = create_engine_device(ctx(), created);
+  ASSERT_TRUE(device);
 
   std::string problems;
   uint8_t centre_green = 0;

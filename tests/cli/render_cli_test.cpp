@@ -372,3 +372,41 @@ technique T < float MaxError = 180; > { pass P { VertexShader = compile vs_2_0 V
 }
 
 }  // namespace
+
+// The D3D10 particle pattern: a stream-output pass captures the mesh's triangles (here moved
+// to clip space and coloured by the geometry shader), and the pass after it draws what was
+// captured (DrawAuto) instead of the mesh.
+TEST(FxkitRender, AStreamOutputPassCapturesWhatTheNextPassDraws) {
+  const auto [r, image] = render("stream_output", R"(
+float4x4 WorldViewProj : WORLDVIEWPROJECTION;
+struct V { float4 pos : POSITION; };
+struct P { float4 pos : POSITION; float3 colour : COLOR0; };
+V VS(float4 p : POSITION) { V o; o.pos = mul(p, WorldViewProj); return o; }
+[maxvertexcount(3)] void GS(triangle V v[3], inout TriangleStream<P> stream) {
+  for (int i = 0; i < 3; ++i) { P p; p.pos = v[i].pos; p.colour = float3(0.25, 0.75, 0.5); stream.Append(p); }
+}
+struct Pixel { float4 pos : SV_Position; float3 colour : COLOR0; };
+Pixel Show(P p) { Pixel o; o.pos = p.pos; o.colour = p.colour; return o; }
+float4 PS(Pixel p) : SV_Target { return float4(p.colour, 1); }
+technique10 Particles {
+  pass Capture < int StreamOutVertices = 65536; > {
+    SetVertexShader(CompileShader(vs_4_0, VS()));
+    SetGeometryShader(ConstructGSWithSO(CompileShader(gs_4_0, GS()), "POSITION.xyzw; COLOR0.xyz"));
+    SetPixelShader(NULL);
+  }
+  pass Draw {
+    SetVertexShader(CompileShader(vs_4_0, Show()));
+    SetGeometryShader(NULL);
+    SetPixelShader(CompileShader(ps_4_0, PS()));
+  }
+}
+)",
+                                 "--validation --size 64x64");
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_TRUE(image);
+  EXPECT_FALSE(image->constant()) << "the captured sphere is drawn over the background";
+  const size_t centre = (size_t(32) * 64 + 32) * 4;
+  EXPECT_NEAR(image->pixels.at(centre), 64, 1);
+  EXPECT_NEAR(image->pixels.at(centre + 1), 191, 1);
+  EXPECT_NEAR(image->pixels.at(centre + 2), 128, 1);
+}

@@ -247,6 +247,34 @@ technique T < string Scheme = "preview"; > { pass P { VertexShader = compile vs_
   fs::remove(file);
 }
 
+// An fx_5_0 interface variable lists the class instances it can be bound to, in id order (as
+// ParamInfo::class_instances and Effect::set_class_instance take them); others list none.
+TEST(FxkitInfo, InterfaceVariablesListTheirClassInstances) {
+  const std::string file =
+      (fs::path(::testing::TempDir()) / ("info_classes_" + std::to_string(::getpid()) + ".fx")).string();
+  std::ofstream(file) << R"(interface iLight { float3 Illuminate(float3 n); };
+class cSun : iLight { float3 colour; float3 Illuminate(float3 n) { return colour * n.y; } };
+class cSky : iLight { float3 Illuminate(float3 n) { return n; } };
+cSun g_sun;
+cSky g_skies[2];
+iLight g_light;
+float4 VS(float4 p : POSITION) : SV_Position { return p; }
+float4 PS(float4 p : SV_Position) : SV_Target { return float4(g_light.Illuminate(p.xyz), 1); }
+technique11 T { pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)";
+  CliRun info = run("info --json " + file);
+  ASSERT_EQ(info.exit_code, 0) << info.out;
+  const json i = json::parse(info.out);
+  auto instances = [&](const std::string& name) {
+    for (const json& p : i["parameters"])
+      if (p["name"] == name) return p["class_instances"];
+    return json();
+  };
+  EXPECT_EQ(instances("g_light"), json({"g_sun", "g_skies[0]", "g_skies[1]"})) << info.out;
+  EXPECT_EQ(instances("g_sun"), json::array());
+  fs::remove(file);
+}
+
 TEST(FxkitInfo, ExitCodes) {
   EXPECT_EQ(run("info --json /nonexistent.fx").exit_code, 2);
   fs::path bad = fs::temp_directory_path() / ("fxkit_cli_bad_" + std::to_string(::getpid()) + ".fx");

@@ -23,7 +23,10 @@ TEST(StreamOutDecl, EntriesSlotsIndicesMasksAndGaps) {
   EXPECT_EQ(d.entries[2].semantic, "") << "a gap";
   EXPECT_EQ(d.entries[2].component_count, 1u);
   EXPECT_EQ(d.entries[3].component_count, 4u) << "no mask: every component";
+  EXPECT_FALSE(d.entries[3].masked);
+  EXPECT_TRUE(d.entries[0].masked);
   EXPECT_EQ(d.entries[4].component_count, 4u);
+  EXPECT_FALSE(parse_stream_out_decl("POSITION.").entries.at(0).masked) << "an empty mask is every component";
   EXPECT_EQ(d.stride(0), 4u * (3 + 1 + 4 + 4));
   EXPECT_EQ(d.stride(1), 8u);
   EXPECT_EQ(d.stride(2), 0u);

@@ -483,3 +483,35 @@ TEST(TechniqueValidation, ValidateTechniqueOnAModelAndItsAnnotations) {
 }
 
 }  // namespace
+
+// Stream output needs VK_EXT_transform_feedback on a Vulkan device: without it the technique
+// is refused at ConstructGSWithSO (also for a vertex shader handed to it); a Direct3D 10/11
+// profile describes hardware that has it.
+TEST(TechniqueValidation, StreamOutputNeedsTransformFeedback) {
+  auto l = parse(R"(struct V { float4 pos : POSITION; };
+V VS(V v) { return v; }
+[maxvertexcount(1)] void GS(point V v[1], inout PointStream<V> s) { s.Append(v[0]); }
+technique10 particles { pass p0 {
+  SetVertexShader(CompileShader(vs_4_0, VS()));
+  SetGeometryShader(ConstructGSWithSO(CompileShader(gs_4_0, GS()), "POSITION.xyzw"));
+} }
+technique11 vertices { pass p0 { SetGeometryShader(ConstructGSWithSO(CompileShader(vs_5_0, VS()), "POSITION")); } }
+)");
+  fx::DeviceCaps device = caps("modern");
+  device.name = "gpu";
+  device.vulkan.present = true;
+  auto v = validate(*l, device, /*compile=*/false);
+  ASSERT_EQ(v.size(), 2u);
+  for (const auto& t : v) {
+    ASSERT_EQ(t.reasons.size(), 1u) << all(*l, t);
+    EXPECT_EQ(t.reasons[0].id, "unsupported-stream-output");
+    EXPECT_EQ(t.reasons[0].message,
+              "stream output (ConstructGSWithSO) needs VK_EXT_transform_feedback with transform feedback draws, "
+              "not enabled on gpu");
+  }
+  EXPECT_EQ(line_of(*l, v[0].reasons[0]), 6u);
+  EXPECT_EQ(line_of(*l, v[1].reasons[0]), 8u);
+  device.vulkan.extensions = {"VK_EXT_transform_feedback"};
+  for (const auto& t : validate(*l, device, /*compile=*/false)) EXPECT_TRUE(t.valid) << all(*l, t);
+  for (const auto& t : validate(*l, caps("modern"), /*compile=*/false)) EXPECT_TRUE(t.valid) << all(*l, t);
+}

@@ -112,6 +112,30 @@ inline void expect_golden(const fx::Image& image, const std::string& name) {
                                     << diff.first_y;
 }
 
+// An engine's own device on `ctx`'s physical device with one graphics queue, created from
+// `created` (the caller's feature chain and features, kept for fxkit::Device::create to read).
+struct EngineDevice {
+  VkDevice device = VK_NULL_HANDLE;
+  VkQueue queue = VK_NULL_HANDLE;
+};
+inline EngineDevice create_engine_device(const Context& ctx, VkDeviceCreateInfo& created) {
+  const float priority = 1.0f;
+  VkDeviceQueueCreateInfo queue_info{};
+  queue_info.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
+  queue_info.queueFamilyIndex = ctx.queue_family();
+  queue_info.queueCount = 1;
+  queue_info.pQueuePriorities = &priority;
+  created.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+  created.queueCreateInfoCount = 1;
+  created.pQueueCreateInfos = &queue_info;
+  EngineDevice d;
+  if (vkCreateDevice(ctx.physical_device(), &created, nullptr, &d.device) == VK_SUCCESS)
+    vkGetDeviceQueue(d.device, ctx.queue_family(), 0, &d.queue);
+  created.queueCreateInfoCount = 0;  // queue_info goes out of scope
+  created.pQueueCreateInfos = nullptr;
+  return d;
+}
+
 // Writes `text` to a fresh file under the test temp dir and returns its path.
 inline std::string write_effect(const std::string& name, const std::string& text) {
   auto dir = std::filesystem::temp_directory_path() / ("fxkit_effect_tests_" + std::to_string(::getpid()));

@@ -13,6 +13,7 @@
 #include "fx/compile/effect_programs.h"
 #include "fx/compile/spirv_cache.h"
 #include "fx/diagnostic_render.h"
+#include "fx/model/class_instances.h"
 #include "fx/model/effect_model.h"
 #include "fx/state_table.h"
 
@@ -159,9 +160,11 @@ std::vector<Placement> find_placements(const std::vector<const fx::PassProgram*>
   return out;
 }
 
-// `model`: the effect model's parameter for `v` (its folded default), or null.
+// `model`: the effect model's parameter for `v` (its folded default), or null; `ast` the
+// effect it is declared in (an interface variable's class instances).
 json parameter_json(const fx::ast::Variable& v, const std::string& cbuffer, const fx::SourceManager& sm,
-                    const std::vector<const fx::PassProgram*>& programs, const fx::Parameter* model) {
+                    const std::vector<const fx::PassProgram*>& programs, const fx::Parameter* model,
+                    const fx::ast::Effect& ast) {
   json dims = json::array();
   for (const fx::ast::ExprPtr& d : v.array_dims) dims.push_back(d ? fx::spell_expression(*d) : "");
   json j = {{"name", v.name},
@@ -187,6 +190,11 @@ json parameter_json(const fx::ast::Variable& v, const std::string& cbuffer, cons
   for (const Placement& p : placements)
     all.push_back({{"stage", p.stage}, {"block", p.block}, {"offset", p.offset}, {"size", p.size}});
   j["placements"] = std::move(all);
+  json instances = json::array();  // what an interface variable can be bound to (SetClassInstance)
+  if (fx::find_interface(ast, v.type.name))
+    for (const fx::BindableInstance& instance : fx::bindable_instances(ast, v.type.name))
+      instances.push_back(instance.name);
+  j["class_instances"] = std::move(instances);
   return j;
 }
 
@@ -282,11 +290,11 @@ int run_info(const InfoArgs& args) {
         }
         samplers.push_back(std::move(j));
       } else {
-        parameters.push_back(parameter_json(v, "", sm, compiled, model_parameter(v)));
+        parameters.push_back(parameter_json(v, "", sm, compiled, model_parameter(v), parsed.ast));
       }
     } else if (d.kind == fx::ast::DeclKind::constant_buffer) {
       for (const fx::ast::Variable& m : d.constant_buffer->members)
-        parameters.push_back(parameter_json(m, d.constant_buffer->name, sm, compiled, model_parameter(m)));
+        parameters.push_back(parameter_json(m, d.constant_buffer->name, sm, compiled, model_parameter(m), parsed.ast));
     } else if (d.kind == fx::ast::DeclKind::state_object && lower(d.state_object->kind).rfind("sampler", 0) == 0) {
       const fx::ast::StateObject& so = *d.state_object;
       samplers.push_back({{"name", so.name},

@@ -229,14 +229,23 @@ int main(int argc, char** argv) {
     if (const auto ms = timer.begin(frame.cmd, frame.slot); !ms.empty()) ui.pass_ms = ms;
     // The technique's compute passes first, outside rendering, as fxkit render runs them.
     technique.dispatch_compute_passes(frame.cmd, area.extent.width, area.extent.height);
+    // Then its stream-output passes capture the mesh, also outside rendering.
+    for (uint32_t pass = 0; pass < technique.pass_count(); ++pass)
+      if (technique.stream_output_pass(pass) && technique.begin_capture(frame.cmd, pass)) {
+        mesh->draw(frame.cmd);
+        technique.end_capture();
+      }
     const float clear[4] = {0.18f, 0.2f, 0.24f, 1.f};
     window->begin_scene(frame, clear);
     const VkViewport viewport{
         float(area.offset.x), float(area.extent.height), float(area.extent.width), -float(area.extent.height), 0, 1};
     if (technique.begin(frame.cmd, viewport, area)) {
+      uint32_t captured = UINT32_MAX;  // the stream-output pass the passes after it draw (DrawAuto)
       for (uint32_t pass = 0; pass < technique.pass_count(); ++pass) {
         timer.mark(frame.cmd);
-        if (!technique.compute_pass(pass) && technique.apply(pass)) mesh->draw(frame.cmd);
+        if (technique.stream_output_pass(pass)) captured = pass;
+        else if (captured != UINT32_MAX) technique.draw_stream_output(frame.cmd, pass, captured);
+        else if (!technique.compute_pass(pass) && technique.apply(pass)) mesh->draw(frame.cmd);
         timer.mark(frame.cmd);
       }
     }

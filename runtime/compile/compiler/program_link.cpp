@@ -74,15 +74,6 @@ void apply_binding(ShaderReflection& r, const StageResource& res, uint32_t bindi
       if (i.name == res.name && i.set == res.set && i.binding == res.binding) i.set = 0, i.binding = binding;
 }
 
-// "TEXCOORD" and "TEXCOORD0" name the same D3D register, and so does D3D9's
-// "TEXCOORD0_centroid" (the same register, interpolated at the centroid).
-std::string canonical_semantic(std::string s) {
-  constexpr std::string_view kCentroid = "_CENTROID";
-  if (s.size() > kCentroid.size() && s.ends_with(kCentroid)) s.resize(s.size() - kCentroid.size());
-  if (!s.empty() && !std::isdigit(static_cast<unsigned char>(s.back()))) s += '0';
-  return s;
-}
-
 // A consumer that skipped legalization loads every input it declares, used or not, and
 // Vulkan rejects a loaded input no stage before writes (D3D code often declares one: the
 // vertex shader's output struct, POSITION included, as the pixel shader's input). When the
@@ -136,9 +127,13 @@ void pad_narrow_outputs(CompiledShader& producer, const CompiledShader& consumer
 // The outputs of the stage before the pixel shader that it does not declare: Direct3D ignores
 // them, Vulkan without maintenance4 warns about each (Shader-OutputNotConsumed), so they go.
 // Every declared input stays written, read or not.
-void remove_unconsumed_outputs(CompiledShader& producer, const CompiledShader& consumer) {
+void remove_unconsumed_outputs(CompiledShader& producer, const CompiledShader& consumer,
+                               std::span<const std::string> captured) {
   std::set<uint32_t> consumed;
   for (const InterfaceVariable& in : consumer.reflection.inputs) consumed.insert(in.location);
+  for (const InterfaceVariable& out : producer.reflection.outputs)  // stream output keeps them
+    if (std::find(captured.begin(), captured.end(), canonical_semantic(out.semantic)) != captured.end())
+      consumed.insert(out.location);
   if (std::all_of(producer.reflection.outputs.begin(), producer.reflection.outputs.end(),
                   [&](const InterfaceVariable& out) { return consumed.count(out.location) > 0; }))
     return;
@@ -147,7 +142,8 @@ void remove_unconsumed_outputs(CompiledShader& producer, const CompiledShader& c
                 [&](const InterfaceVariable& out) { return consumed.count(out.location) == 0; });
 }
 
-void link_varyings(CompiledShader& producer, CompiledShader& consumer, DiagnosticSink& sink) {
+void link_varyings(CompiledShader& producer, CompiledShader& consumer, std::span<const std::string> captured,
+                   DiagnosticSink& sink) {
   std::map<std::string, uint32_t> location_of;  // canonical semantic -> new location
   std::map<uint32_t, uint32_t> out_remap, in_remap;
   auto has_semantic = [](const InterfaceVariable& v) { return !v.semantic.empty(); };
@@ -177,11 +173,19 @@ void link_varyings(CompiledShader& producer, CompiledShader& consumer, Diagnosti
   spirv::remap_locations(consumer.spirv, spirv::Interface::input, in_remap);
   if (consumer.reflection.stage == ShaderStage::fragment) {
     pad_narrow_outputs(producer, consumer);
-    remove_unconsumed_outputs(producer, consumer);
+    remove_unconsumed_outputs(producer, consumer, captured);
   }
 }
 
 }  // namespace
+
+std::string canonical_semantic(std::string s) {
+  for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+  constexpr std::string_view kCentroid = "_CENTROID";
+  if (s.size() > kCentroid.size() && s.ends_with(kCentroid)) s.resize(s.size() - kCentroid.size());
+  if (!s.empty() && !std::isdigit(static_cast<unsigned char>(s.back()))) s += '0';
+  return s;
+}
 
 const ProgramBinding* ProgramLayout::find(std::string_view name) const {
   for (const ProgramBinding& b : bindings)
@@ -189,7 +193,8 @@ const ProgramBinding* ProgramLayout::find(std::string_view name) const {
   return nullptr;
 }
 
-ProgramLayout link_program(const std::vector<CompiledShader*>& input, DiagnosticSink& sink) {
+ProgramLayout link_program(const std::vector<CompiledShader*>& input, DiagnosticSink& sink,
+                           std::span<const std::string> captured) {
   std::vector<CompiledShader*> stages;
   for (CompiledShader* s : input)
     if (s && s->ok) stages.push_back(s);
@@ -222,7 +227,7 @@ ProgramLayout link_program(const std::vector<CompiledShader*>& input, Diagnostic
   }
   for (size_t i = 0; i + 1 < stages.size(); ++i)
     if (stages[i]->reflection.stage != ShaderStage::compute && stages[i + 1]->reflection.stage != ShaderStage::compute)
-      link_varyings(*stages[i], *stages[i + 1], sink);
+      link_varyings(*stages[i], *stages[i + 1], captured, sink);
   return layout;
 }
 

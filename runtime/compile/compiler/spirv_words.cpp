@@ -414,6 +414,49 @@ bool pad_output(std::vector<uint32_t>& w, uint32_t location, uint32_t first, uin
   return true;
 }
 
+bool decorate_transform_feedback(std::vector<uint32_t>& w, const std::vector<XfbOutput>& outputs) {
+  constexpr uint32_t kOpCapability = 17, kOpEntryPoint = 15, kOpExecutionMode = 16, kCapabilityTransformFeedback = 53,
+                     kExecutionModeXfb = 11, kDecorationOffset = 35, kDecorationXfbBuffer = 36,
+                     kDecorationXfbStride = 37;
+  const InterfaceVariables v = interface_variables(w, Interface::output);
+  std::set<uint32_t> outputs_declared;
+  size_t capability_at = 0, entry_at = 0, first_type_at = 0;
+  uint32_t position = 0;
+  bool ok = for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t n) {
+    if (op == kOpCapability && !capability_at) capability_at = i;
+    if (op == kOpEntryPoint && !entry_at && n >= 3) entry_at = i;
+    if (op >= 19 && op <= 39 && !first_type_at) first_type_at = i;  // OpTypeVoid .. OpTypeForwardPointer
+    if (op == kOpVariable && n >= 4 && w[i + 3] == kStorageOutput) outputs_declared.insert(w[i + 2]);
+  });
+  if (!ok || !capability_at || !entry_at || !first_type_at) return false;
+  for_each_instruction(w, [&](size_t i, uint32_t op, uint32_t n) {
+    if (op == kOpDecorate && n == 4 && w[i + 2] == kDecorationBuiltIn && w[i + 3] == kBuiltInPosition &&
+        outputs_declared.count(w[i + 1]))
+      position = w[i + 1];
+  });
+  std::vector<uint32_t> decorations;
+  for (const XfbOutput& out : outputs) {
+    uint32_t variable = 0;
+    if (!out.location) variable = position;
+    for (const auto& [id, location] : v.location_of)
+      if (out.location && location == *out.location) variable = id;
+    if (!variable) return false;
+    for (auto [decoration, value] :
+         {std::pair{kDecorationXfbBuffer, out.buffer}, std::pair{kDecorationXfbStride, out.stride},
+          std::pair{kDecorationOffset, out.offset}})
+      decorations.insert(decorations.end(), {4u << 16 | kOpDecorate, variable, decoration, value});
+  }
+  // From the back, so the earlier offsets stay valid: decorations before the first type, the
+  // execution mode after the entry point, the capability beside the first.
+  w.insert(w.begin() + long(first_type_at), decorations.begin(), decorations.end());
+  const uint32_t entry = w[entry_at + 2];
+  const std::initializer_list<uint32_t> mode = {3u << 16 | kOpExecutionMode, entry, kExecutionModeXfb};
+  w.insert(w.begin() + long(entry_at + (w[entry_at] >> 16)), mode);
+  const std::initializer_list<uint32_t> capability = {2u << 16 | kOpCapability, kCapabilityTransformFeedback};
+  w.insert(w.begin() + long(capability_at), capability);
+  return true;
+}
+
 std::set<SetBinding> depth_compared_bindings(const std::vector<uint32_t>& w) {
   constexpr uint32_t kOpLoad = 61, kOpAccessChain = 65, kOpInBoundsAccessChain = 66, kOpCopyObject = 83,
                      kOpSampledImage = 86;

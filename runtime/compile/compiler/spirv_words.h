@@ -76,6 +76,18 @@ enum class Scalar { float32, int32, uint32 };
 // vertex, tessellation evaluation or geometry shader.
 bool pad_output(std::vector<uint32_t>& words, uint32_t location, uint32_t first, uint32_t count, Scalar scalar);
 
+// One output variable transform feedback captures: the one at `location`, or with no location
+// the standalone BuiltIn Position variable (an HLSL SV_Position output).
+struct XfbOutput {
+  std::optional<uint32_t> location;
+  uint32_t buffer = 0, offset = 0, stride = 0;
+};
+
+// Decorates each of `outputs` with XfbBuffer, XfbStride and Offset, and gives the entry point
+// the Xfb execution mode (and the module the TransformFeedback capability). False, with
+// `words` unchanged, when an output is not a variable of its own (a member of a block).
+bool decorate_transform_feedback(std::vector<uint32_t>& words, const std::vector<XfbOutput>& outputs);
+
 // (set, binding) pair of a descriptor.
 using SetBinding = std::pair<uint32_t, uint32_t>;
 // Rewrites DescriptorSet/Binding decorations of every variable whose current pair is a key

@@ -311,9 +311,13 @@ bool EffectUnitBuilder::resolve(const ast::Expr& e, StageUnit& stage, int depth)
         bound_interfaces_ = std::move(outer);
         return resolved;
       }
-      // ConstructGSWithSO(shader, ...), SetXShader(shader).
-      if ((iequals(e.text, "ConstructGSWithSO") || stage_of_state(e.text)) && !e.args.empty() && e.args[0])
+      // ConstructGSWithSO(shader, declarations...): the stage's output stream is captured.
+      if (iequals(e.text, "ConstructGSWithSO") && !e.args.empty() && e.args[0]) {
+        stage.stream_output = stream_output_decl(e, sm_);
         return resolve(*e.args[0], stage, depth + 1);
+      }
+      // SetXShader(shader).
+      if (stage_of_state(e.text) && !e.args.empty() && e.args[0]) return resolve(*e.args[0], stage, depth + 1);
       return invalid(stage, "'" + e.text + "(...)' does not name a shader");
     }
     case ast::ExprKind::identifier:

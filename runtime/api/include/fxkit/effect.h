@@ -117,6 +117,15 @@ struct ParamInfo {
 // uploads. The Vulkan layer's own type (fx/vulkan/apply_stats.h).
 using ApplyStats = fx::vk::ApplyStats;
 
+// An output buffer of a stream-output pass (ConstructGSWithSO) and its byte counter, to bind
+// elsewhere (a vertex or storage buffer; the counter as an indirect byte count).
+struct StreamOutputBuffer {
+  VkBuffer buffer = VK_NULL_HANDLE;   // vertex, storage, transform feedback and transfer source usage
+  VkBuffer counter = VK_NULL_HANDLE;  // 4 bytes: how many bytes the last capture wrote
+  VkDeviceSize size = 0;              // bytes
+  uint32_t stride = 0;                // bytes per vertex, as the declaration lays them out
+};
+
 // Whether a technique can be drawn on this device, and why not.
 struct TechniqueInfo {
   std::string name{};
@@ -178,6 +187,23 @@ class Technique {
   // else one thread per pixel of a `width` x `height` target. Outside rendering and
   // begin()/end(); the draw loop then skips the compute passes. True when there are none.
   bool dispatch_compute_passes(VkCommandBuffer cmd, uint32_t width, uint32_t height);
+
+  // Whether pass `pass` captures its output stream (ConstructGSWithSO): begin_capture() it,
+  // not apply(). The device needs VK_EXT_transform_feedback (reason() says so otherwise).
+  bool stream_output_pass(uint32_t pass) const;
+  // Starts capturing stream-output pass `pass` into its buffers, outside the application's
+  // rendering and outside begin()/end() (the capture runs in a rendering of its own, with
+  // nothing rasterized). The application then binds and draws its geometry (the Target's
+  // vertex layout) into `cmd` and calls end_capture(), which records the barrier after
+  // which later draws read what was captured. False, with the reason in messages(), when
+  // it is no stream-output pass.
+  bool begin_capture(VkCommandBuffer cmd, uint32_t pass);
+  void end_capture();
+  // Between begin() and end(): applies pass `pass` and draws every vertex stream-output pass
+  // `stream_output_pass` captured last, however many that was (Direct3D's DrawAuto).
+  bool draw_stream_output(VkCommandBuffer cmd, uint32_t pass, uint32_t stream_output_pass);
+  // Output buffer `slot` of stream-output pass `pass` ({} when it has none).
+  StreamOutputBuffer stream_output_buffer(uint32_t pass, uint32_t slot = 0) const;
 
  private:
   friend class Effect;

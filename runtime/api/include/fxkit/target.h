@@ -48,6 +48,9 @@ struct Target {
   static constexpr uint32_t kNoBinding = 0xFFFFFFFFu;
   Winding front_faces = Winding::unset;  // required
   YFlip y_flip = YFlip::unset;           // required
+  // The size of the images drawn into: the storage images nothing else is bound to
+  // (RWTexture2D stand-ins, one compute thread per pixel) are made this size. 0 x 0: 256 x 256.
+  VkExtent2D extent{0, 0};
 };
 
 }  // namespace fxkit

@@ -17,5 +17,8 @@ float4 PS(G g) : SV_Target { return g.c; }
 technique11 T {
   pass A { SetVertexShader(CompileShader(vs_5_0, VS())); SetGeometryShader(CompileShader(gs_5_0, GS())); SetPixelShader(CompileShader(ps_5_0, PS())); }
   pass B { SetVertexShader(CompileShader(vs_5_0, VS())); SetGeometryShader(ConstructGSWithSO(CompileShader(gs_5_0, GSI()), "SV_POSITION.xyzw", NULL, NULL, NULL, 0)); SetPixelShader(NULL); }
+}
+// Two streams compile; glslang writes one, so on a device the technique is refused.
+technique11 TwoStreams {
   pass C { SetVertexShader(CompileShader(vs_5_0, VS())); SetGeometryShader(ConstructGSWithSO(CompileShader(gs_5_0, GS2()), "0:SV_POSITION.xyzw", "1:COLOR.xyzw", NULL, NULL, 0)); SetPixelShader(NULL); }
 }

@@ -15,6 +15,7 @@
 #include <array>
 #include <atomic>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,6 +26,7 @@
 #include "fx/binding/effect_textures.h"
 #include "fx/binding/pass_recorder.h"
 #include "fx/binding/pass_state_mapping.h"
+#include "fx/binding/stream_capture.h"
 #include "fx/compile/effect_programs.h"
 #include "fx/model/effect_model.h"
 #include "fx/model/parameter_store.h"
@@ -115,6 +117,37 @@ class EffectBinding {
   bool dispatch_compute_passes(VkCommandBuffer cmd, uint32_t technique, uint32_t width, uint32_t height,
                                DiagnosticSink& sink);
 
+  // Whether pass `pass` of `technique` captures its output stream (ConstructGSWithSO):
+  // begin_capture() it, not apply().
+  bool stream_output_pass(uint32_t technique, uint32_t pass) const;
+  // Starts capturing stream-output pass `pass` of `technique` into its buffers (created with
+  // the binding: `int StreamOutVertices` on the pass, else StreamCapture::kDefaultVertices
+  // vertices each), outside the application's rendering and outside begin()/end(): records a
+  // barrier after earlier reads of the buffers, a rendering of its own with no attachments,
+  // the pass (rasterizer discard: nothing is drawn) for geometry of `vertex_layout`, and
+  // begins transform feedback. The application then draws its geometry (the particles of
+  // last frame, the seed points) into `cmd` and calls end_capture().
+  bool begin_capture(VkCommandBuffer cmd, uint32_t technique, uint32_t pass, uint32_t vertex_layout,
+                     DiagnosticSink& sink);
+  // Ends the capture: the counters take the bytes captured, and a barrier makes the vertices
+  // visible to the draws, shaders and copies recorded after it.
+  void end_capture();
+  // Between begin() and end(): applies pass `pass` of the begun technique for the vertices
+  // stream-output pass `stream_output_pass` captured last, binds them (vertex buffer 0) and
+  // draws them all, however many the capture wrote (Direct3D's DrawAuto).
+  bool draw_stream_output(VkCommandBuffer cmd, uint32_t pass, uint32_t stream_output_pass, DiagnosticSink& sink);
+  // Output buffer `slot` of stream-output pass `pass` and its counter, to bind elsewhere;
+  // nullopt when the pass writes no such slot.
+  std::optional<StreamOutputBuffer> stream_output_buffer(uint32_t technique, uint32_t pass, uint32_t slot = 0) const;
+  // Captures every stream-output pass of `technique`, in pass order, each with `draw`
+  // recording the geometry (of `vertex_layout`): what a preview does before it draws. True
+  // when there are none.
+  bool capture_stream_output_passes(VkCommandBuffer cmd, uint32_t technique, uint32_t vertex_layout,
+                                    const std::function<void(VkCommandBuffer)>& draw, DiagnosticSink& sink);
+  // The stream-output pass before pass `pass` whose vertices a preview draws with it (the
+  // last one before it; the D3D10 particle pattern), or kNoIndex.
+  uint32_t stream_output_source(uint32_t technique, uint32_t pass) const;
+
   // Creates the technique's pipelines for these formats and layout now (instead of at the
   // first apply). False with diagnostics if one cannot be made.
   bool warm(uint32_t technique, const RenderingFormats& formats, uint32_t vertex_layout, DiagnosticSink& sink);
@@ -167,6 +200,9 @@ class EffectBinding {
   // apply()'s body, inline in both apply() and apply_layout0().
   bool apply_inline(uint32_t pass, uint32_t vertex_layout, DiagnosticSink& sink);
   const VertexInput* vertex_input(Pass& pass, uint32_t layout, DiagnosticSink& sink);
+  // "vk-pass-unknown" for a dispatch() or begin_capture() of a pass that is no `kind` pass
+  // that can run; false.
+  bool no_pass_that_runs(uint32_t technique, uint32_t pass, std::string_view kind, DiagnosticSink& sink) const;
   void update_object_count();
 
   // What apply() reads, once per object, first: with the recorder's own first fields, in
@@ -188,7 +224,9 @@ class EffectBinding {
   EffectStorage storage_;
   VkExtent2D storage_extent_{};
   bool textures_pending_ = true;
-  RenderingFormats formats_;  // of the begun technique
+  RenderingFormats formats_;   // of the begun technique
+  Pass* capturing_ = nullptr;  // the pass begin_capture() began, until end_capture()
+  VkCommandBuffer capture_cmd_ = VK_NULL_HANDLE;
   int64_t counted_objects_ = 0;
   static std::atomic<int64_t> live_objects_;
 };

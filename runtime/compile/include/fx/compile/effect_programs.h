@@ -38,6 +38,9 @@ struct PassProgram {
   // Why the pass cannot run as written: assembly stages, fixed-function stages, invalid
   // shader references. The legacy path may emulate some of them.
   std::vector<std::string> unsupported;
+  // ConstructGSWithSO: what its stage captures into which output buffer (set when the
+  // capture could be patched in; an entry it cannot capture is a link error).
+  std::optional<StreamOutputLayout> stream_output;
   bool compiled = false;  // every stage with a unit compiled and linked
   double link_ms = 0;     // link_program time
 

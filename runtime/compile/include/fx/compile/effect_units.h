@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fx/ast.h"
+#include "fx/compile/stream_output.h"
 #include "fx/compile/translation_unit.h"
 #include "fx/diagnostic.h"
 #include "fx/source_manager.h"
@@ -44,6 +45,8 @@ struct StageUnit {
   std::string translated;
   std::string emulation;
   SourceRange range;  // the state assignment naming the shader
+  // ConstructGSWithSO's declarations: the stage's output stream is captured (stream_output.h).
+  std::optional<StreamOutputDecl> stream_output;
   // A shader array indexed in the pass (`VertexShader = (VSArray[VSIndices[ShaderIndex]]);`,
   // as the XNA stock effects choose their shader permutations): every element in order, and
   // which one the index selects with the parameters' initial values. The stage's own fields

@@ -2,6 +2,7 @@
 // and D3D-style varying matching by semantic.
 #pragma once
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -47,7 +48,13 @@ struct ProgramLayout {
 //    stage writes is a warning ("shader-varying-unwritten") and gets a location past the
 //    outputs. A pixel shader input wider than the output it reads (float4 from a float2)
 //    gets the missing components written by the stage before: 0, and 1 in w, as Direct3D pads.
+// The outputs whose canonical semantics are `captured` (stream output) stay, read or not.
 // Stages must be ok() and listed once each; their order in `stages` does not matter.
-ProgramLayout link_program(const std::vector<CompiledShader*>& stages, DiagnosticSink& sink);
+ProgramLayout link_program(const std::vector<CompiledShader*>& stages, DiagnosticSink& sink,
+                           std::span<const std::string> captured = {});
+
+// A semantic as Direct3D links it: upper case, "TEXCOORD" and "TEXCOORD0" the same register,
+// and so D3D9's "TEXCOORD0_centroid" (the same register, interpolated at the centroid).
+std::string canonical_semantic(std::string semantic);
 
 }  // namespace fx

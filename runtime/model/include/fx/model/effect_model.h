@@ -95,6 +95,7 @@ struct ShaderBinding {
   std::vector<std::string> glsl_blocks;  // GLSL block names, in order
   ast::TokenSpan asm_code, decl_code;    // asm { } and decl { } tokens
   std::string variable;                  // the shader variable it came through ("" if inline)
+  bool stream_output = false;            // given to ConstructGSWithSO: its output stream is captured
   SourceRange range;
 };
 

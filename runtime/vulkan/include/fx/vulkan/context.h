@@ -84,6 +84,9 @@ struct DeviceFeatures {
   // Vulkan 1.3 maintenance4: among others, a vertex output the next stage does not read is
   // well defined (Direct3D links stages by semantic), so the layer does not warn about it.
   bool maintenance4 = false;
+  // VK_EXT_transform_feedback with its transformFeedback feature (and transformFeedbackDraw,
+  // so captured vertices can be drawn by their byte count): stream output, docs/rendering.md.
+  bool transform_feedback = false;
   // The core features SPIR-V capabilities need (fx/vulkan/shader_capabilities.h: clip and
   // cull distances, 64-bit floats, sample-rate shading, ...) that are enabled, named as
   // VkPhysicalDeviceFeatures names them; sorted.
@@ -102,6 +105,8 @@ struct DeviceInfo {
   uint32_t index = 0;  // position in vkEnumeratePhysicalDevices
   VkPhysicalDeviceLimits limits{};
   uint32_t push_descriptor_max = 0;  // maxPushDescriptors (0 without the extension)
+  // maxTransformFeedbackBufferDataStride (0 without VK_EXT_transform_feedback).
+  uint32_t transform_feedback_stride_max = 0;
 };
 
 // Entry points that are not core Vulkan 1.3, loaded per device; null when unavailable.
@@ -123,6 +128,10 @@ struct DeviceFunctions {
   PFN_vkCmdSetProvokingVertexModeEXT set_provoking_vertex_mode = nullptr;
   PFN_vkCmdSetLineRasterizationModeEXT set_line_rasterization_mode = nullptr;
   PFN_vkCmdSetTessellationDomainOriginEXT set_tessellation_domain_origin = nullptr;
+  PFN_vkCmdBindTransformFeedbackBuffersEXT bind_transform_feedback_buffers = nullptr;
+  PFN_vkCmdBeginTransformFeedbackEXT begin_transform_feedback = nullptr;
+  PFN_vkCmdEndTransformFeedbackEXT end_transform_feedback = nullptr;
+  PFN_vkCmdDrawIndirectByteCountEXT draw_indirect_byte_count = nullptr;
   PFN_vkSetDebugUtilsObjectNameEXT set_object_name = nullptr;  // only with validation
 };
 
