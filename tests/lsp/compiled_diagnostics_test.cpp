@@ -149,4 +149,26 @@ TEST_F(CompiledDiagnosticsTest, TechniqueValidityPerCapsProfileAsCodeLenses) {
   EXPECT_EQ(lenses[0]["command"]["title"].get<std::string>().rfind("valid on none", 0), 0u) << lenses.dump(1);
 }
 
+// The compile reads what the editor holds, as the front end does: an include open with
+// unsaved text is compiled in place of the file on disk (the snapshot built through
+// fx::EffectFile with the open buffers as its file loader).
+TEST_F(CompiledDiagnosticsTest, TheCompileReadsIncludesFromTheOpenBuffers) {
+  const std::string effect =
+      "#include \"tint.fxh\"\n"
+      "float4 PS(float4 c : COLOR0) : COLOR { return float4(tint(c.rgb), 1); }\n"
+      "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+  folder_.write("tint.fxh", "float3 tint(float3 c) { return c * 0.5; }\n");
+  folder_.write("lit.fx", effect);
+  const std::string lit = folder_.path("lit.fx");
+  session_.open(folder_.path("tint.fxh"), "float3 tint(float3 c) { return float3(c.xy); }\n");
+  session_.open(lit, effect);
+  EXPECT_TRUE(session_.diagnostics(lit).empty());  // the front end and semantic model see no problem
+  events_.wait_ready(2);                           // the header's compile and the effect's
+  const json d = session_.diagnostics(lit);
+  ASSERT_EQ(d.size(), 1u) << d.dump(1);
+  EXPECT_EQ(d[0]["range"]["start"]["line"], 0);  // on the #include line
+  EXPECT_EQ(d[0]["message"].get<std::string>().rfind("in included file tint.fxh: ", 0), 0u) << d.dump(1);
+  EXPECT_EQ(d[0]["relatedInformation"][0]["location"]["uri"], fx::tools::lsp::path_to_uri(folder_.path("tint.fxh")));
+}
+
 }  // namespace

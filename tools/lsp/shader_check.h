@@ -3,8 +3,9 @@
 // array element, each diagnostic once with "also reported for" notes), with glslang in
 // compile worker processes so a compiler crash costs one result, not the editor's server;
 // and each technique validated on the configured caps profiles as `fxkit select` validates
-// it, as a code lens. Runtime builds only (FXKIT_VULKAN); CompileScheduler runs it off the
-// request thread.
+// it, as a code lens. The snapshot is built through fx::EffectFile, as check and hot reload
+// build an effect, with its includes read from the open documents. Runtime builds only
+// (FXKIT_VULKAN); CompileScheduler runs it off the request thread.
 #pragma once
 #include <memory>
 #include <string>
