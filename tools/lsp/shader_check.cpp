@@ -15,13 +15,15 @@ namespace fx::tools::lsp {
 namespace {
 
 // "valid on dx9, modern; dx8: ps_2_0 not supported" per technique, from validating it on
-// each profile; unknown profile names are left out.
+// each profile (unknown profile names are left out), with the command that shows every
+// reason of every profile.
 json technique_lenses(fx::EffectFile& effect, const DocumentPlaces& places, const std::vector<std::string>& profiles) {
   fx::DiagnosticSink model_sink;  // the front end reported what the model would repeat
   effect.build_model(model_sink);
   struct Lens {
+    std::string technique;
     fx::SourceRange range;
-    std::string valid, invalid;
+    std::string valid, invalid, details;
   };
   std::vector<Lens> lenses;
   for (const std::string& profile : profiles) {
@@ -31,10 +33,12 @@ json technique_lenses(fx::EffectFile& effect, const DocumentPlaces& places, cons
     const std::vector<fx::TechniqueValidation> techniques =
         fx::validate_techniques(*effect.model, *caps, {.programs = effect.programs.get()});
     if (lenses.empty())
-      for (const fx::TechniqueValidation& t : techniques) lenses.push_back({t.range, "", ""});
+      for (const fx::TechniqueValidation& t : techniques) lenses.push_back({t.name, t.range, "", "", ""});
     for (size_t i = 0; i < techniques.size() && i < lenses.size(); ++i) {
       const fx::TechniqueValidation& t = techniques[i];
       Lens& l = lenses[i];
+      l.details += "\n" + profile + ": " + (t.valid ? "valid" : "invalid");
+      for (const fx::Diagnostic& reason : t.reasons) l.details += "\n  " + reason.message;
       if (t.valid) l.valid += (l.valid.empty() ? "" : ", ") + profile;
       else l.invalid += "; " + profile + ": " + (t.reasons.empty() ? "invalid" : t.reasons.front().message);
     }
@@ -44,8 +48,9 @@ json technique_lenses(fx::EffectFile& effect, const DocumentPlaces& places, cons
     if (!l.range.begin.valid() || !places.in_document(l.range.begin)) continue;
     std::string title = l.valid.empty() ? "valid on none" : "valid on " + l.valid;
     title += l.invalid;
+    const json details = {{"technique", l.technique}, {"message", "technique '" + l.technique + "'" + l.details}};
     out.push_back({{"range", places.range_json({l.range.begin, l.range.begin})},
-                   {"command", {{"title", title}, {"command", ""}}}});
+                   {"command", {{"title", title}, {"command", kTechniqueValidityCommand}, {"arguments", {details}}}}});
   }
   return out;
 }

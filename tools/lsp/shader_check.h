@@ -29,9 +29,9 @@ class ShaderCheck {
   ~ShaderCheck();
 
   // The snapshot's compiled-shader diagnostics as LSP Diagnostics of its document, and a
-  // code lens per technique ("valid on dx9, modern; dx8: <first reason>"); nothing when the
-  // front end or the semantic model finds errors (glslang would only repeat them).
-  // Thread-safe.
+  // code lens per technique ("valid on dx9, modern; dx8: <first reason>", whose command
+  // kTechniqueValidityCommand shows every reason); nothing when the front end or the
+  // semantic model finds errors (glslang would only repeat them). Thread-safe.
   CompileFindings check(const CompileSnapshot& snapshot) const;
 
  private:
