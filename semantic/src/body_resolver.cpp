@@ -152,11 +152,22 @@ void BodyResolver::run() {
         ternaries = 0;
         statement_start = parens_ == 0;
         break;
-      case TokenKind::l_paren:
+      case TokenKind::l_paren: {
         ++parens_;
-        statement_start = i > first_ && tokens_[i - 1].is_identifier("for");
+        const bool is_for = i > first_ && tokens_[i - 1].is_identifier("for");
+        statement_start = is_for;
+        control_parens_.push_back(
+            is_for || (i > first_ && (tokens_[i - 1].is_identifier("if") || tokens_[i - 1].is_identifier("while") ||
+                                      tokens_[i - 1].is_identifier("switch"))));
         break;
-      case TokenKind::r_paren: parens_ = std::max(0, parens_ - 1); break;
+      }
+      case TokenKind::r_paren:
+        parens_ = std::max(0, parens_ - 1);
+        if (!control_parens_.empty()) {
+          statement_start = control_parens_.back();  // `for (...) [unroll] for (...)`: a statement follows
+          control_parens_.pop_back();
+        }
+        break;
       case TokenKind::l_square:
         if (at_start && i + 1 < last_ && tokens_[i + 1].is(TokenKind::identifier) &&
             one_of(kAttributes, tokens_[i + 1].text())) {
@@ -367,12 +378,20 @@ void BodyResolver::declare_local(uint32_t name_token, const ShaderType& type, ui
 const Symbol* BodyResolver::lookup(std::string_view name) const {
   for (auto it = scope_.rbegin(); it != scope_.rend(); ++it)
     if ((*it)->name == name) return *it;
-  if (owner_) {
-    if (const Symbol* m = model_.member(*owner_, name)) return m;
-    for (const ast::Function& method : owner_->methods)
-      if (method.name == name) return model_.function_symbols_.at(&method);
-  }
+  if (owner_)
+    if (const Symbol* m = class_member(*owner_, name, 0)) return m;
   return model_.global(name);
+}
+
+const Symbol* BodyResolver::class_member(const ast::Struct& c, std::string_view name, int depth) const {
+  if (const Symbol* m = model_.member(c, name)) return m;
+  for (const ast::Function& method : c.methods)
+    if (method.name == name) return model_.function_symbols_.at(&method);
+  if (depth > 16) return nullptr;        // a cycle of bases: reported by the compiler, not here
+  for (const ast::Text& base : c.bases)  // `class Rough : Base`: Base's members too
+    if (const Symbol* b = model_.global(base); b && b->kind == SymbolKind::structure && b->structure)
+      if (const Symbol* m = class_member(*b->structure, name, depth + 1)) return m;
+  return nullptr;
 }
 
 void BodyResolver::add_reference(uint32_t i, const Symbol* symbol, const ShaderType& type) {

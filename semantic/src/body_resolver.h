@@ -38,6 +38,7 @@ class BodyResolver {
   bool skip_annotations_of(uint32_t name_token);
   bool is_type_name(std::string_view name) const;
   const Symbol* lookup(std::string_view name) const;
+  const Symbol* class_member(const ast::Struct& c, std::string_view name, int depth) const;  // or of its bases
   void open_scope();
   void close_scope(uint32_t at);
   void resolve_identifier(uint32_t i);
@@ -60,6 +61,7 @@ class BodyResolver {
   Declaration declaration_;
   uint32_t annotations_first_ = 0, annotations_end_ = 0;  // a declarator's `< ... >`, skipped
   int parens_ = 0;
+  std::vector<bool> control_parens_;  // per open `(`: it opened a for/if/while/switch header
 };
 
 }  // namespace fx::semantic

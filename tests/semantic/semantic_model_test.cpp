@@ -187,4 +187,31 @@ TEST(SemanticModel, LocalsWithAnnotationBlocksAreDeclarations) {
   EXPECT_EQ(front_end, std::vector<std::string>{"annotation-on-local"});
 }
 
+TEST(SemanticModel, AttributesAfterAControlHeaderAndBaseClassMembers) {
+  // From the widened corpus: `[unroll]` on a loop that is the body of another loop, a
+  // method reading a member its class inherits (fxc takes both), hull-shader intrinsics.
+  auto m = fxtest::model_of(R"(class Base { int power; };
+class Rough : Base { int Power() { return power; } };
+Rough g_rough;
+float4 PS(float4 c : COLOR0) : COLOR {
+  int x, y;
+  [unroll]
+  for (x = 0; x < 2; x++)
+    [unroll]
+    for (y = 0; y < 2; y++)
+      c += x * y;
+  if (c.x > 0) [branch] if (c.y > 0) c *= 2;
+  return c * g_rough.Power();
+}
+)");
+  EXPECT_TRUE(m->model->diagnostics().empty()) << m->model->diagnostics()[0].message;
+  const auto* power = m->reference("power", 1);
+  ASSERT_NE(power, nullptr);
+  ASSERT_NE(power->symbol, nullptr);
+  EXPECT_EQ(power->symbol->kind, SymbolKind::member);
+  EXPECT_EQ(power->symbol->container, "Base");
+  for (const char* hull : {"ProcessTriTessFactorsMax", "ProcessQuadTessFactorsAvg", "ProcessIsolineTessFactors"})
+    EXPECT_NE(fx::semantic::find_intrinsic(hull), nullptr) << hull;
+}
+
 }  // namespace
