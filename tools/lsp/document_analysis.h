@@ -53,13 +53,16 @@ class DocumentAnalysis : public DocumentPlaces {
   std::optional<uint32_t> token_before(Position p) const;
   // A macro defined in the effect's files under `name`, or nullptr (the last definition).
   const MacroDefinition* macro(std::string_view name) const;
+  // Builds the index of the document's tokens by position that token_at and token_before
+  // read (once; they build it on first use otherwise). The server builds it right after
+  // publishing diagnostics, so the first request after an edit does not wait for it.
+  void index_tokens() const;
 
  private:
   struct TokenPlace {
     uint32_t line, character, length;  // LSP line and UTF-16 column; length in UTF-16 units
     uint32_t token;
   };
-  void index_tokens() const;
   void find_macros();
 
   int64_t version_ = 0;

@@ -314,6 +314,7 @@ void LanguageServer::publish_pending() {
       schedule_compile(d);
     }
     publish(uri, d);
+    d.analysis->index_tokens();  // after the publication: hover and definition then find it built
   }
   if (!compiled.empty() && refresh_lenses_)
     send_({{"jsonrpc", "2.0"},
