@@ -2,6 +2,7 @@
 #include "fx/compile/effect_file.h"
 
 #include "fx/diagnostic_render.h"
+#include "fx/semantic_model.h"
 
 namespace fx {
 
@@ -12,12 +13,23 @@ EffectUnitOptions effect_unit_options(const FrontEndOptions& options) {
   return unit_options;
 }
 
+namespace {
+
+// The semantic model of the front end's result: its unknown-identifier and unknown-member
+// findings beside the front end's, so check, loads, reloads and the editor report alike.
+void model_shader_code(const EffectFile& e, DiagnosticSink& sink) {
+  semantic::SemanticModel(e.parsed.ast, e.sources).report(sink);
+}
+
+}  // namespace
+
 std::unique_ptr<EffectFile> EffectFile::parse(const std::string& path, const FrontEndOptions& options,
                                               DiagnosticSink& sink) {
   auto e = std::make_unique<EffectFile>();
   e->path = path;
   e->options = options;
   e->parsed = parse_effect_file(path, e->sources, sink, options);
+  model_shader_code(*e, sink);
   return e;
 }
 
@@ -27,6 +39,7 @@ std::unique_ptr<EffectFile> EffectFile::parse_text(const std::string& path, std:
   e->path = path;
   e->options = options;
   e->parsed = parse_effect_text(path, std::move(text), e->sources, sink, options);
+  model_shader_code(*e, sink);
   return e;
 }
 

@@ -125,6 +125,10 @@ void BodyResolver::run() {
   bool statement_start = true, after_case = false, skip_semantic = false;
   int ternaries = 0;
   for (uint32_t i = first_; i < last_; ++i) {
+    if (i == annotations_first_ && annotations_end_ > i) {
+      i = annotations_end_ - 1;  // annotation names and values are no identifiers of the code
+      continue;
+    }
     const Token& t = tokens_[i];
     const bool at_start = statement_start;
     statement_start = false;
@@ -148,11 +152,22 @@ void BodyResolver::run() {
         ternaries = 0;
         statement_start = parens_ == 0;
         break;
-      case TokenKind::l_paren:
+      case TokenKind::l_paren: {
         ++parens_;
-        statement_start = i > first_ && tokens_[i - 1].is_identifier("for");
+        const bool is_for = i > first_ && tokens_[i - 1].is_identifier("for");
+        statement_start = is_for;
+        control_parens_.push_back(
+            is_for || (i > first_ && (tokens_[i - 1].is_identifier("if") || tokens_[i - 1].is_identifier("while") ||
+                                      tokens_[i - 1].is_identifier("switch"))));
         break;
-      case TokenKind::r_paren: parens_ = std::max(0, parens_ - 1); break;
+      }
+      case TokenKind::r_paren:
+        parens_ = std::max(0, parens_ - 1);
+        if (!control_parens_.empty()) {
+          statement_start = control_parens_.back();  // `for (...) [unroll] for (...)`: a statement follows
+          control_parens_.pop_back();
+        }
+        break;
       case TokenKind::l_square:
         if (at_start && i + 1 < last_ && tokens_[i + 1].is(TokenKind::identifier) &&
             one_of(kAttributes, tokens_[i + 1].text())) {
@@ -189,8 +204,9 @@ void BodyResolver::run() {
         if (declaration_.active && parens_ == declaration_.parens && declaration_.braces == 0 && i + 2 < last_ &&
             tokens_[i + 1].is(TokenKind::identifier)) {
           const TokenKind next = tokens_[i + 2].kind;
-          if (next == TokenKind::equal || next == TokenKind::comma || next == TokenKind::semi ||
-              next == TokenKind::l_square || next == TokenKind::colon) {
+          if ((next == TokenKind::equal || next == TokenKind::comma || next == TokenKind::semi ||
+               next == TokenKind::l_square || next == TokenKind::colon || next == TokenKind::less) &&
+              skip_annotations_of(i + 1)) {
             ++i;
             ShaderType type = declaration_.type;
             type.array_rank += array_rank_after(i + 1);
@@ -256,17 +272,46 @@ uint32_t BodyResolver::skip_template_arguments(uint32_t i) const {
   return i;
 }
 
-uint32_t BodyResolver::array_rank_after(uint32_t i) const {
-  uint32_t rank = 0;
+uint32_t BodyResolver::after_annotations(uint32_t i) const {
+  // i is at `<`; returns the token after the matching `>` (or i when there is none). An
+  // annotation block holds `type name = value;` entries, so `;` does not end it.
+  for (uint32_t k = i + 1; k < last_; ++k) {
+    const TokenKind kind = tokens_[k].kind;
+    if (kind == TokenKind::greater) return k + 1;
+    if (kind == TokenKind::less || kind == TokenKind::l_brace || kind == TokenKind::r_brace) return i;
+  }
+  return i;
+}
+
+bool BodyResolver::skip_annotations_of(uint32_t name_token) {
+  // `float var < > = 0;`: annotations after a declarator's name and array sizes (fxc takes
+  // an empty block on a local; the front end reports a non-empty one). False when a `<`
+  // follows that opens no block: then the words are no declaration.
+  const uint32_t at = after_array_sizes(name_token + 1, nullptr);
+  if (at >= last_ || !tokens_[at].is(TokenKind::less)) return true;
+  const uint32_t end = after_annotations(at);
+  if (end == at) return false;
+  annotations_first_ = at;
+  annotations_end_ = end;
+  return true;
+}
+
+uint32_t BodyResolver::after_array_sizes(uint32_t i, uint32_t* rank) const {
   while (i < last_ && tokens_[i].is(TokenKind::l_square)) {
     int depth = 0;
     for (; i < last_; ++i) {
       if (tokens_[i].is(TokenKind::l_square)) ++depth;
       if (tokens_[i].is(TokenKind::r_square) && --depth == 0) break;
     }
-    ++rank;
+    if (rank) ++*rank;
     ++i;
   }
+  return i;
+}
+
+uint32_t BodyResolver::array_rank_after(uint32_t i) const {
+  uint32_t rank = 0;
+  after_array_sizes(i, &rank);
   return rank;
 }
 
@@ -288,8 +333,9 @@ bool BodyResolver::try_declaration(uint32_t& i) {
   if (k + 1 >= last_ || !tokens_[k].is(TokenKind::identifier) || one_of(kKeywords, tokens_[k].text())) return false;
   const TokenKind next = tokens_[k + 1].kind;
   if (next != TokenKind::equal && next != TokenKind::semi && next != TokenKind::comma && next != TokenKind::l_square &&
-      next != TokenKind::colon)
+      next != TokenKind::colon && next != TokenKind::less)
     return false;
+  if (!skip_annotations_of(k)) return false;
   if (!known_type) modelled_ = false;
   ShaderType type;
   if (templated) {
@@ -332,12 +378,20 @@ void BodyResolver::declare_local(uint32_t name_token, const ShaderType& type, ui
 const Symbol* BodyResolver::lookup(std::string_view name) const {
   for (auto it = scope_.rbegin(); it != scope_.rend(); ++it)
     if ((*it)->name == name) return *it;
-  if (owner_) {
-    if (const Symbol* m = model_.member(*owner_, name)) return m;
-    for (const ast::Function& method : owner_->methods)
-      if (method.name == name) return model_.function_symbols_.at(&method);
-  }
+  if (owner_)
+    if (const Symbol* m = class_member(*owner_, name, 0)) return m;
   return model_.global(name);
+}
+
+const Symbol* BodyResolver::class_member(const ast::Struct& c, std::string_view name, int depth) const {
+  if (const Symbol* m = model_.member(c, name)) return m;
+  for (const ast::Function& method : c.methods)
+    if (method.name == name) return model_.function_symbols_.at(&method);
+  if (depth > 16) return nullptr;        // a cycle of bases: reported by the compiler, not here
+  for (const ast::Text& base : c.bases)  // `class Rough : Base`: Base's members too
+    if (const Symbol* b = model_.global(base); b && b->kind == SymbolKind::structure && b->structure)
+      if (const Symbol* m = class_member(*b->structure, name, depth + 1)) return m;
+  return nullptr;
 }
 
 void BodyResolver::add_reference(uint32_t i, const Symbol* symbol, const ShaderType& type) {

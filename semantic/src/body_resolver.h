@@ -31,10 +31,14 @@ class BodyResolver {
   void declare_parameters();
   bool try_declaration(uint32_t& i);
   void declare_local(uint32_t name_token, const ShaderType& type, uint32_t type_first);
+  uint32_t after_array_sizes(uint32_t i, uint32_t* rank) const;  // i at `[`: the token after the sizes
   uint32_t array_rank_after(uint32_t i) const;
   uint32_t skip_template_arguments(uint32_t i) const;
+  uint32_t after_annotations(uint32_t i) const;
+  bool skip_annotations_of(uint32_t name_token);
   bool is_type_name(std::string_view name) const;
   const Symbol* lookup(std::string_view name) const;
+  const Symbol* class_member(const ast::Struct& c, std::string_view name, int depth) const;  // or of its bases
   void open_scope();
   void close_scope(uint32_t at);
   void resolve_identifier(uint32_t i);
@@ -55,7 +59,9 @@ class BodyResolver {
   std::unordered_map<uint32_t, ShaderType> typed_;  // token (identifier or `]`) -> value type
   std::vector<uint32_t> brackets_;                  // open `[`
   Declaration declaration_;
+  uint32_t annotations_first_ = 0, annotations_end_ = 0;  // a declarator's `< ... >`, skipped
   int parens_ = 0;
+  std::vector<bool> control_parens_;  // per open `(`: it opened a for/if/while/switch header
 };
 
 }  // namespace fx::semantic

@@ -35,6 +35,45 @@ constexpr Intrinsic kIntrinsics[] = {
     {"InterlockedMin", "void InterlockedMin(inout R dest, T value [, out T original])", "Atomic minimum."},
     {"InterlockedOr", "void InterlockedOr(inout R dest, T value [, out T original])", "Atomic or."},
     {"InterlockedXor", "void InterlockedXor(inout R dest, T value [, out T original])", "Atomic xor."},
+    {"Process2DQuadTessFactorsAvg",
+     "void Process2DQuadTessFactorsAvg(float4 edges, float2 inside_scale, out float4 rounded_edges, out float2 "
+     "rounded_inside, out float2 unrounded_inside)",
+     "Hull shader: rounded quad tessellation factors, insides from the average per axis."},
+    {"Process2DQuadTessFactorsMax",
+     "void Process2DQuadTessFactorsMax(float4 edges, float2 inside_scale, out float4 rounded_edges, out float2 "
+     "rounded_inside, out float2 unrounded_inside)",
+     "Hull shader: rounded quad tessellation factors, insides from the maximum per axis."},
+    {"Process2DQuadTessFactorsMin",
+     "void Process2DQuadTessFactorsMin(float4 edges, float2 inside_scale, out float4 rounded_edges, out float2 "
+     "rounded_inside, out float2 unrounded_inside)",
+     "Hull shader: rounded quad tessellation factors, insides from the minimum per axis."},
+    {"ProcessIsolineTessFactors",
+     "void ProcessIsolineTessFactors(float detail, float density, out float rounded_detail, out float rounded_density)",
+     "Hull shader: rounded isoline tessellation factors."},
+    {"ProcessQuadTessFactorsAvg",
+     "void ProcessQuadTessFactorsAvg(float4 edges, float inside_scale, out float4 rounded_edges, out float2 "
+     "rounded_inside, out float2 unrounded_inside)",
+     "Hull shader: rounded quad tessellation factors, insides from the edges' average."},
+    {"ProcessQuadTessFactorsMax",
+     "void ProcessQuadTessFactorsMax(float4 edges, float inside_scale, out float4 rounded_edges, out float2 "
+     "rounded_inside, out float2 unrounded_inside)",
+     "Hull shader: rounded quad tessellation factors, insides from the edges' maximum."},
+    {"ProcessQuadTessFactorsMin",
+     "void ProcessQuadTessFactorsMin(float4 edges, float inside_scale, out float4 rounded_edges, out float2 "
+     "rounded_inside, out float2 unrounded_inside)",
+     "Hull shader: rounded quad tessellation factors, insides from the edges' minimum."},
+    {"ProcessTriTessFactorsAvg",
+     "void ProcessTriTessFactorsAvg(float3 edges, float inside_scale, out float3 rounded_edges, out float "
+     "rounded_inside, out float unrounded_inside)",
+     "Hull shader: rounded triangle tessellation factors, inside from the edges' average."},
+    {"ProcessTriTessFactorsMax",
+     "void ProcessTriTessFactorsMax(float3 edges, float inside_scale, out float3 rounded_edges, out float "
+     "rounded_inside, out float unrounded_inside)",
+     "Hull shader: rounded triangle tessellation factors, inside from the edges' maximum."},
+    {"ProcessTriTessFactorsMin",
+     "void ProcessTriTessFactorsMin(float3 edges, float inside_scale, out float3 rounded_edges, out float "
+     "rounded_inside, out float unrounded_inside)",
+     "Hull shader: rounded triangle tessellation factors, inside from the edges' minimum."},
     {"abort", "void abort()", "Ends the shader's invocation."},
     {"abs", "T abs(T x)", "Absolute value, per component."},
     {"acos", "T acos(T x)", "Arccosine, per component."},

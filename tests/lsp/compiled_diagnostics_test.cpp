@@ -47,7 +47,7 @@ class CompiledDiagnosticsTest : public ::testing::Test {
     check_ = std::make_unique<fx::tools::lsp::ShaderCheck>(fx::CompileWorkers::start({.workers = 1}, error));
     EXPECT_EQ(error, "");
     folder_.write("main.fx", kEffect);
-    session_.initialize(
+    initialized_ = session_.initialize(
         {}, folder_.path(),
         {{"window", {{"workDoneProgress", true}}}, {"workspace", {{"codeLens", {{"refreshSupport", true}}}}}});
   }
@@ -65,6 +65,7 @@ class CompiledDiagnosticsTest : public ::testing::Test {
                               },
                               std::chrono::milliseconds(0), [this] { events_.ready(); }};
   LspSession session_{&scheduler_};
+  json initialized_;  // the server's reply to initialize
 };
 
 TEST_F(CompiledDiagnosticsTest, ShaderErrorAppearsAfterTheCompileAndGoesAfterTheFix) {
@@ -147,6 +148,60 @@ TEST_F(CompiledDiagnosticsTest, TechniqueValidityPerCapsProfileAsCodeLenses) {
   lenses = session_.request("textDocument/codeLens", document)["result"];
   ASSERT_EQ(lenses.size(), 2u) << lenses.dump(1);
   EXPECT_EQ(lenses[0]["command"]["title"].get<std::string>().rfind("valid on none", 0), 0u) << lenses.dump(1);
+}
+
+// A lens's command is one the server announces and runs: VS Code and Neovim run a clicked
+// lens's command through workspace/executeCommand, and the server shows every caps
+// profile's verdict with all its reasons.
+TEST_F(CompiledDiagnosticsTest, ATechniqueLensCommandShowsEveryProfilesReasons) {
+  EXPECT_EQ(initialized_["result"]["capabilities"]["executeCommandProvider"]["commands"],
+            json::array({fx::tools::lsp::kTechniqueValidityCommand}))
+      << initialized_.dump(1);
+  session_.open(main(), kEffect);
+  session_.diagnostics(main());
+  events_.wait_ready(1);
+  session_.diagnostics(main());
+  const json document = {{"textDocument", {{"uri", fx::tools::lsp::path_to_uri(main())}}}};
+  const json lenses = session_.request("textDocument/codeLens", document)["result"];
+  ASSERT_EQ(lenses.size(), 2u) << lenses.dump(1);
+  const json& command = lenses[0]["command"];
+  EXPECT_EQ(command["command"], fx::tools::lsp::kTechniqueValidityCommand);
+  const size_t before = session_.sent().size();
+  const json reply = session_.request("workspace/executeCommand",
+                                      {{"command", command["command"]}, {"arguments", command["arguments"]}});
+  EXPECT_TRUE(reply.contains("result") && reply["result"].is_null()) << reply.dump(1);
+  std::string shown;
+  for (size_t i = before; i < session_.sent().size(); ++i)
+    if (session_.sent()[i].value("method", "") == "window/showMessage")
+      shown = session_.sent()[i]["params"]["message"].get<std::string>();
+  EXPECT_EQ(shown.rfind("technique 'Main'\n", 0), 0u) << shown;
+  EXPECT_NE(shown.find("\ndx9: valid\n"), std::string::npos) << shown;
+  EXPECT_NE(shown.find("\ndx8: invalid\n  vs_2_0 not supported on dx8"), std::string::npos) << shown;
+  EXPECT_NE(shown.find("\nmodern: valid"), std::string::npos) << shown;
+  const json unknown = session_.request("workspace/executeCommand", {{"command", "fxkit.noSuchCommand"}});
+  EXPECT_EQ(unknown["error"]["code"], -32602) << unknown.dump(1);
+}
+
+// The compile reads what the editor holds, as the front end does: an include open with
+// unsaved text is compiled in place of the file on disk (the snapshot built through
+// fx::EffectFile with the open buffers as its file loader).
+TEST_F(CompiledDiagnosticsTest, TheCompileReadsIncludesFromTheOpenBuffers) {
+  const std::string effect =
+      "#include \"tint.fxh\"\n"
+      "float4 PS(float4 c : COLOR0) : COLOR { return float4(tint(c.rgb), 1); }\n"
+      "technique T { pass P { PixelShader = compile ps_2_0 PS(); } }\n";
+  folder_.write("tint.fxh", "float3 tint(float3 c) { return c * 0.5; }\n");
+  folder_.write("lit.fx", effect);
+  const std::string lit = folder_.path("lit.fx");
+  session_.open(folder_.path("tint.fxh"), "float3 tint(float3 c) { return float3(c.xy); }\n");
+  session_.open(lit, effect);
+  EXPECT_TRUE(session_.diagnostics(lit).empty());  // the front end and semantic model see no problem
+  events_.wait_ready(2);                           // the header's compile and the effect's
+  const json d = session_.diagnostics(lit);
+  ASSERT_EQ(d.size(), 1u) << d.dump(1);
+  EXPECT_EQ(d[0]["range"]["start"]["line"], 0);  // on the #include line
+  EXPECT_EQ(d[0]["message"].get<std::string>().rfind("in included file tint.fxh: ", 0), 0u) << d.dump(1);
+  EXPECT_EQ(d[0]["relatedInformation"][0]["location"]["uri"], fx::tools::lsp::path_to_uri(folder_.path("tint.fxh")));
 }
 
 }  // namespace

@@ -102,8 +102,21 @@ TEST_F(EffectLibraryTest, BrokenEditKeepsTheLastGoodEffectThenTheFixApplies) {
   ASSERT_TRUE(e.params()->get(gloss, value));
   EXPECT_EQ(value, 0.75f);
 
+  // An unknown name in shader code is the semantic model's finding, as `fxkit check` and
+  // the editor report it (with its did-you-mean), before glslang runs.
+  save_truncate_write(dir / "a.fx", effect_text("1, 0.5, 0.25, 1", "float Bad() { return Glos; }\n"));
+  events = next_events(lib);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, ReloadEventKind::failed);
+  text = render_text(events[0].diagnostics, *events[0].sources);
+  EXPECT_NE(text.find("a.fx:4:22: error: use of undeclared identifier 'Glos'; did you mean 'Gloss'? "
+                      "[unknown-identifier]"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(e.version(), good);
+
   // A glslang error inside a shader function points into the .fx file the same way.
-  save_truncate_write(dir / "a.fx", effect_text("1, 0.5, 0.25, 1", "float Bad() { return undefined_name; }\n"));
+  save_truncate_write(dir / "a.fx", effect_text("1, 0.5, 0.25, 1", "float Bad() { return float3(1, 2).x; }\n"));
   events = next_events(lib);
   ASSERT_EQ(events.size(), 1u);
   EXPECT_EQ(events[0].kind, ReloadEventKind::failed);

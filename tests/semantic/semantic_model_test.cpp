@@ -163,4 +163,55 @@ float4 PS(float2 uv : TEXCOORD0) : SV_Target {
   EXPECT_EQ(m->model->global("tex")->type.kind, TypeClass::object);
 }
 
+TEST(SemanticModel, LocalsWithAnnotationBlocksAreDeclarations) {
+  // fxc takes an empty annotation block on a local (vkd3d's effect-annotations tests); the
+  // front end reports a non-empty one, and its entries are no identifiers of the code.
+  auto m = fxtest::model_of(R"(float4 PS(float4 c : COLOR0) : COLOR {
+  float var < > = 0;
+  float pair[2] < >, other < > = 1;
+  float named < int a = 1; > = 2;
+  return c * var * pair[0] * other * named;
+}
+)");
+  EXPECT_TRUE(m->model->diagnostics().empty()) << m->model->diagnostics()[0].message;
+  for (const char* name : {"var", "pair", "other", "named"}) {
+    const auto* use = m->reference(name, 1);
+    ASSERT_NE(use, nullptr) << name;
+    ASSERT_NE(use->symbol, nullptr) << name;
+    EXPECT_EQ(use->symbol->kind, SymbolKind::local) << name;
+  }
+  EXPECT_EQ(m->reference("pair", 1)->symbol->type.array_rank, 1u);
+  EXPECT_EQ(m->reference("a"), nullptr);
+  std::vector<std::string> front_end;
+  for (const fx::Diagnostic& d : m->front_end.diagnostics()) front_end.push_back(d.id);
+  EXPECT_EQ(front_end, std::vector<std::string>{"annotation-on-local"});
+}
+
+TEST(SemanticModel, AttributesAfterAControlHeaderAndBaseClassMembers) {
+  // From the widened corpus: `[unroll]` on a loop that is the body of another loop, a
+  // method reading a member its class inherits (fxc takes both), hull-shader intrinsics.
+  auto m = fxtest::model_of(R"(class Base { int power; };
+class Rough : Base { int Power() { return power; } };
+Rough g_rough;
+float4 PS(float4 c : COLOR0) : COLOR {
+  int x, y;
+  [unroll]
+  for (x = 0; x < 2; x++)
+    [unroll]
+    for (y = 0; y < 2; y++)
+      c += x * y;
+  if (c.x > 0) [branch] if (c.y > 0) c *= 2;
+  return c * g_rough.Power();
+}
+)");
+  EXPECT_TRUE(m->model->diagnostics().empty()) << m->model->diagnostics()[0].message;
+  const auto* power = m->reference("power", 1);
+  ASSERT_NE(power, nullptr);
+  ASSERT_NE(power->symbol, nullptr);
+  EXPECT_EQ(power->symbol->kind, SymbolKind::member);
+  EXPECT_EQ(power->symbol->container, "Base");
+  for (const char* hull : {"ProcessTriTessFactorsMax", "ProcessQuadTessFactorsAvg", "ProcessIsolineTessFactors"})
+    EXPECT_NE(fx::semantic::find_intrinsic(hull), nullptr) << hull;
+}
+
 }  // namespace

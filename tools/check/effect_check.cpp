@@ -13,6 +13,8 @@
 #include "fx/compile/effect_programs.h"
 #include "fx/model/effect_model.h"
 #include "fx/select/technique_validation.h"
+#else
+#include "fx/semantic_model.h"
 #endif
 
 namespace fx::tools {
@@ -97,6 +99,7 @@ EffectCheck check_effect(const std::string& file, const EffectCheckSettings& set
 #else
   fx::SourceManager sm;
   const fx::ParsedEffect parsed = fx::parse_effect_file(file, sm, diags, settings.front_end);
+  fx::semantic::SemanticModel(parsed.ast, sm).report(diags);  // as EffectFile::parse does
 #endif
   out.files = parsed.files;
   if (out.files.empty()) out.files.push_back(file);

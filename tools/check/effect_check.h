@@ -1,6 +1,6 @@
-// One effect checked as `fxkit check` checks it: the front end and, unless syntax-only,
-// every shader compiled (each pass stage of each technique and every element of the shader
-// arrays passes index). The result is rendered and self-contained, so results made on
+// One effect checked as `fxkit check` checks it: the front end (and semantic model) and,
+// unless syntax-only, every shader compiled (each pass stage of each technique and every
+// element of the shader arrays passes index). The result is rendered and self-contained, so results made on
 // several threads, or read back from the cache, print alike.
 #pragma once
 #include <functional>

@@ -31,6 +31,11 @@ struct CompileSnapshot {
   std::map<std::string, std::string> open;  // paths to the texts of the open documents
 };
 
+// The command of a technique validity lens: its argument is an object with the
+// technique's name and a message giving its validity and every reason per caps profile,
+// which the server shows (workspace/executeCommand, window/showMessage).
+inline constexpr const char* kTechniqueValidityCommand = "fxkit.showTechniqueValidity";
+
 // What a compile found: LSP Diagnostics, and CodeLenses (technique validity).
 struct CompileFindings {
   json diagnostics = json::array();

@@ -8,17 +8,9 @@ namespace fx::tools::lsp {
 
 DocumentAnalysis::DocumentAnalysis(const TextDocument& document, const WorkspaceConfig& config,
                                    const std::map<std::string, std::string>& open)
-    : path_(document.path), version_(document.version) {
-  fx::FrontEndOptions options = config.front_end_options();
-  fx::FileLoader disk = fx::disk_file_loader();
-  options.preprocessor.loader = [&open, disk](const std::string& path) -> std::optional<std::string> {
-    if (auto it = open.find(path); it != open.end()) return it->second;
-    return disk(path);
-  };
-  options.preprocessor.lister = fx::disk_directory_lister();
-  // A header (an include library) needs no technique of its own.
-  options.check.require_technique = path_.ends_with(".fx");
-  parsed_ = fx::parse_effect_text(path_, document.text, sm_, diags_, options);
+    : DocumentPlaces(sm_, document.path), version_(document.version) {
+  // The front end and the semantic model, as fx::EffectFile::parse runs them.
+  parsed_ = fx::parse_effect_text(path(), document.text, sm_, diags_, config.document_options(path(), open));
   model_ = std::make_unique<fx::semantic::SemanticModel>(parsed_.ast, sm_);
   model_->report(diags_);
   find_macros();
@@ -50,41 +42,6 @@ void DocumentAnalysis::find_macros() {
   }
 }
 
-std::string DocumentAnalysis::file_of(fx::SourceLocation loc) const {
-  return std::string(sm_.physical(sm_.file_location(loc)).file);
-}
-
-Position DocumentAnalysis::position_of(fx::SourceLocation loc) const {
-  const fx::SourceLocation file = sm_.file_location(loc);
-  const fx::PresumedLocation p = sm_.physical(file);
-  if (!p.valid()) return {};
-  return {p.line - 1, utf16_length(sm_.line_text(file), p.column - 1)};
-}
-
-json DocumentAnalysis::range_json(fx::SourceRange range) const {
-  const Position begin = position_of(range.begin);
-  Position end = begin;
-  if (range.end.valid() && sm_.buffer_of(sm_.file_location(range.end)) == sm_.buffer_of(sm_.file_location(range.begin)))
-    end = position_of(range.end);
-  if (end.line < begin.line || (end.line == begin.line && end.character < begin.character)) end = begin;
-  return {{"start", {{"line", begin.line}, {"character", begin.character}}},
-          {"end", {{"line", end.line}, {"character", end.character}}}};
-}
-
-json DocumentAnalysis::location_json(fx::SourceRange range) const {
-  return {{"uri", path_to_uri(file_of(range.begin))}, {"range", range_json(range)}};
-}
-
-std::string_view DocumentAnalysis::text_of(fx::SourceRange range) const {
-  const fx::SourceLocation b = sm_.file_location(range.begin), e = sm_.file_location(range.end);
-  const fx::BufferId buffer = sm_.buffer_of(b);
-  if (!b.valid() || !e.valid() || buffer != sm_.buffer_of(e)) return {};
-  const uint32_t from = sm_.offset_in_buffer(b), to = sm_.offset_in_buffer(e);
-  const std::string_view text = sm_.buffer_text(buffer);
-  if (to < from || to > text.size()) return {};
-  return text.substr(from, to - from);
-}
-
 const MacroDefinition* DocumentAnalysis::macro(std::string_view name) const {
   for (auto it = macros_.rbegin(); it != macros_.rend(); ++it)
     if (it->name == name) return &*it;
@@ -109,7 +66,7 @@ void DocumentAnalysis::index_tokens() const {
     const fx::BufferId buffer = sm_.buffer_of(t.loc);
     if (others.count(buffer)) continue;
     if (!mine.count(buffer)) {
-      if (sm_.buffer_name(buffer) != path_) {
+      if (sm_.buffer_name(buffer) != path()) {
         others.insert(buffer);
         continue;
       }

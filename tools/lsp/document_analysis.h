@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "document_places.h"
 #include "fx/frontend.h"
 #include "fx/semantic_model.h"
 #include "text_document.h"
@@ -28,15 +29,14 @@ struct MacroDefinition {
   fx::SourceLocation at;
 };
 
-class DocumentAnalysis {
+// The places of its locations (DocumentPlaces) are those of its own sources.
+class DocumentAnalysis : public DocumentPlaces {
  public:
   // Analyzes `document`; `open` maps paths to the texts of every open document.
   DocumentAnalysis(const TextDocument& document, const WorkspaceConfig& config,
                    const std::map<std::string, std::string>& open);
 
-  const std::string& path() const { return path_; }
   int64_t version() const { return version_; }
-  const fx::SourceManager& sources() const { return sm_; }
   const fx::ParsedEffect& parsed() const { return parsed_; }
   const fx::semantic::SemanticModel& model() const { return *model_; }
   // The front end's diagnostics followed by the semantic model's.
@@ -51,30 +51,22 @@ class DocumentAnalysis {
   const fx::semantic::Symbol* symbol_at(Position p) const;
   // The last token of the document that starts before `p`.
   std::optional<uint32_t> token_before(Position p) const;
-  // LSP position and range of a location (its file location, for macro expansions).
-  Position position_of(fx::SourceLocation loc) const;
-  json range_json(fx::SourceRange range) const;
-  // An LSP Location: uri and range.
-  json location_json(fx::SourceRange range) const;
-  // The file a location is in (after following macro expansions to the invocation).
-  std::string file_of(fx::SourceLocation loc) const;
-  bool in_document(fx::SourceLocation loc) const { return file_of(loc) == path_; }
-  // The source text of a range within one file ("" when it spans files).
-  std::string_view text_of(fx::SourceRange range) const;
   // A macro defined in the effect's files under `name`, or nullptr (the last definition).
   const MacroDefinition* macro(std::string_view name) const;
+  // Builds the index of the document's tokens by position that token_at and token_before
+  // read (once; they build it on first use otherwise). The server builds it right after
+  // publishing diagnostics, so the first request after an edit does not wait for it.
+  void index_tokens() const;
 
  private:
   struct TokenPlace {
     uint32_t line, character, length;  // LSP line and UTF-16 column; length in UTF-16 units
     uint32_t token;
   };
-  void index_tokens() const;
   void find_macros();
 
-  std::string path_;
   int64_t version_ = 0;
-  fx::SourceManager sm_;
+  fx::SourceManager sm_;  // the base refers to it: it must not move
   fx::DiagnosticSink diags_;
   fx::ParsedEffect parsed_;
   std::unique_ptr<fx::semantic::SemanticModel> model_;

@@ -16,7 +16,7 @@ int lsp_severity(fx::Severity s) {
   return 1;
 }
 
-json related(const DocumentAnalysis& a, fx::SourceLocation at, const std::string& message) {
+json related(const DocumentPlaces& a, fx::SourceLocation at, const std::string& message) {
   return {{"location", a.location_json({at, at})}, {"message", message}};
 }
 
@@ -24,7 +24,7 @@ json related(const DocumentAnalysis& a, fx::SourceLocation at, const std::string
 
 json document_diagnostics(const DocumentAnalysis& a) { return document_diagnostics(a, a.diagnostics()); }
 
-json document_diagnostics(const DocumentAnalysis& a, const std::vector<fx::Diagnostic>& diagnostics) {
+json document_diagnostics(const DocumentPlaces& a, const std::vector<fx::Diagnostic>& diagnostics) {
   json out = json::array();
   const fx::SourceManager& sm = a.sources();
   for (const fx::Diagnostic& d : diagnostics) {

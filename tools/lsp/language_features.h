@@ -12,8 +12,8 @@ namespace fx::tools::lsp {
 // The analysis's diagnostics as LSP Diagnostics of `document`: those in included files sit
 // on the `#include` line that brings them in, with the include stack as related information.
 json document_diagnostics(const DocumentAnalysis& analysis);
-// Other diagnostics placed in the analysis's sources (the compiled shaders'), alike.
-json document_diagnostics(const DocumentAnalysis& analysis, const std::vector<fx::Diagnostic>& diagnostics);
+// Other diagnostics (the compiled shaders'), placed in the sources that reported them, alike.
+json document_diagnostics(const DocumentPlaces& places, const std::vector<fx::Diagnostic>& diagnostics);
 // Hover: a declaration with its type, semantic, default and annotations; a state with its
 // allowed values and Vulkan mapping; an intrinsic's signature; a macro's definition.
 json hover(const DocumentAnalysis& analysis, const TextDocument& document, Position at);

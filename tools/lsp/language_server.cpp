@@ -99,6 +99,8 @@ void LanguageServer::request(const std::string& method, const json& id, const js
   } else if (method == "textDocument/codeLens") {
     // Technique validity comes with the compile: none while the text has changed since.
     reply(id, analyzed(params).first->code_lenses);
+  } else if (method == "workspace/executeCommand") {
+    execute_command(id, params);
   } else if (method == "textDocument/documentSymbol") {
     reply(id, document_symbols(*analyzed(params).second));
   } else if (method == "textDocument/completion") {
@@ -147,8 +149,21 @@ json LanguageServer::initialize(const json& params) {
             {"codeActionProvider", {{"codeActionKinds", {"quickfix"}}}},
             {"documentSymbolProvider", true},
             {"codeLensProvider", {{"resolveProvider", false}}},
+            {"executeCommandProvider", {{"commands", {kTechniqueValidityCommand}}}},
             {"completionProvider", {{"triggerCharacters", {".", "="}}}}}},
           {"serverInfo", {{"name", "fxkit"}}}};
+}
+
+void LanguageServer::execute_command(const json& id, const json& params) {
+  const std::string command = params.at("command").get<std::string>();
+  if (command != kTechniqueValidityCommand) {
+    reply_error(id, kInvalidParams, "fxkit lsp has no command " + command);
+    return;
+  }
+  // A technique validity lens clicked: every profile's verdict and reasons, as a message.
+  const std::string message = params.at("arguments").at(0).at("message").get<std::string>();
+  send_({{"jsonrpc", "2.0"}, {"method", "window/showMessage"}, {"params", {{"type", 3}, {"message", message}}}});
+  reply(id, nullptr);
 }
 
 void LanguageServer::configure() {
@@ -299,6 +314,7 @@ void LanguageServer::publish_pending() {
       schedule_compile(d);
     }
     publish(uri, d);
+    d.analysis->index_tokens();  // after the publication: hover and definition then find it built
   }
   if (!compiled.empty() && refresh_lenses_)
     send_({{"jsonrpc", "2.0"},

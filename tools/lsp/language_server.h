@@ -57,6 +57,7 @@ class LanguageServer {
   void request(const std::string& method, const json& id, const json& params);
   void notification(const std::string& method, const json& params);
   json initialize(const json& params);
+  void execute_command(const json& id, const json& params);  // workspace/executeCommand
   void configure();
   void did_open(const json& params);
   void did_change(const json& params);

@@ -4,11 +4,8 @@
 #include "effect_check.h"
 #include "fx/compile/compile_workers.h"
 #include "fx/compile/effect_file.h"
-#include "fx/compile/effect_programs.h"
-#include "fx/compile/effect_units.h"
 #include "fx/compile/shader_compiler.h"
 #include "fx/compile/spirv_cache.h"
-#include "fx/model/effect_model.h"
 #include "fx/select/caps_sources.h"
 #include "fx/select/technique_validation.h"
 #include "fx/shown_once.h"
@@ -18,14 +15,15 @@ namespace fx::tools::lsp {
 namespace {
 
 // "valid on dx9, modern; dx8: ps_2_0 not supported" per technique, from validating it on
-// each profile; unknown profile names are left out.
-json technique_lenses(const DocumentAnalysis& a, const std::vector<std::string>& profiles,
-                      fx::EffectPrograms& programs) {
+// each profile (unknown profile names are left out), with the command that shows every
+// reason of every profile.
+json technique_lenses(fx::EffectFile& effect, const DocumentPlaces& places, const std::vector<std::string>& profiles) {
   fx::DiagnosticSink model_sink;  // the front end reported what the model would repeat
-  const fx::EffectModel model = fx::build_effect_model(a.parsed(), a.sources(), model_sink);
+  effect.build_model(model_sink);
   struct Lens {
+    std::string technique;
     fx::SourceRange range;
-    std::string valid, invalid;
+    std::string valid, invalid, details;
   };
   std::vector<Lens> lenses;
   for (const std::string& profile : profiles) {
@@ -33,22 +31,26 @@ json technique_lenses(const DocumentAnalysis& a, const std::vector<std::string>&
     const std::optional<fx::DeviceCaps> caps = fx::load_caps_profile(profile, ignored);
     if (!caps) continue;
     const std::vector<fx::TechniqueValidation> techniques =
-        fx::validate_techniques(model, *caps, {.programs = &programs});
+        fx::validate_techniques(*effect.model, *caps, {.programs = effect.programs.get()});
     if (lenses.empty())
-      for (const fx::TechniqueValidation& t : techniques) lenses.push_back({t.range, "", ""});
+      for (const fx::TechniqueValidation& t : techniques) lenses.push_back({t.name, t.range, "", "", ""});
     for (size_t i = 0; i < techniques.size() && i < lenses.size(); ++i) {
       const fx::TechniqueValidation& t = techniques[i];
-      if (t.valid) lenses[i].valid += (lenses[i].valid.empty() ? "" : ", ") + profile;
-      else lenses[i].invalid += "; " + profile + ": " + (t.reasons.empty() ? "invalid" : t.reasons.front().message);
+      Lens& l = lenses[i];
+      l.details += "\n" + profile + ": " + (t.valid ? "valid" : "invalid");
+      for (const fx::Diagnostic& reason : t.reasons) l.details += "\n  " + reason.message;
+      if (t.valid) l.valid += (l.valid.empty() ? "" : ", ") + profile;
+      else l.invalid += "; " + profile + ": " + (t.reasons.empty() ? "invalid" : t.reasons.front().message);
     }
   }
   json out = json::array();
   for (const Lens& l : lenses) {
-    if (!l.range.begin.valid() || !a.in_document(l.range.begin)) continue;
+    if (!l.range.begin.valid() || !places.in_document(l.range.begin)) continue;
     std::string title = l.valid.empty() ? "valid on none" : "valid on " + l.valid;
     title += l.invalid;
-    out.push_back(
-        {{"range", a.range_json({l.range.begin, l.range.begin})}, {"command", {{"title", title}, {"command", ""}}}});
+    const json details = {{"technique", l.technique}, {"message", "technique '" + l.technique + "'" + l.details}};
+    out.push_back({{"range", places.range_json({l.range.begin, l.range.begin})},
+                   {"command", {{"title", title}, {"command", kTechniqueValidityCommand}, {"arguments", {details}}}}});
   }
   return out;
 }
@@ -63,22 +65,22 @@ ShaderCheck::ShaderCheck(std::unique_ptr<fx::CompileWorkers> workers)
 ShaderCheck::~ShaderCheck() = default;
 
 CompileFindings ShaderCheck::check(const CompileSnapshot& snapshot) const {
-  const DocumentAnalysis analysis(snapshot.document, snapshot.config, snapshot.open);
-  for (const fx::Diagnostic& d : analysis.diagnostics())
-    if (d.severity >= fx::Severity::error) return {};
+  // The effect built as every consumer builds it, reading the open documents' buffers.
+  const std::string& path = snapshot.document.path;
   EffectCheckSettings settings;
-  settings.front_end = snapshot.config.front_end_options();
+  settings.front_end = snapshot.config.document_options(path, snapshot.open);
   settings.compiler = compiler_.get();
-  // The snapshot's own parse (its open include buffers) split into units as EffectFile
-  // splits a file, with the same unit options.
+  fx::DiagnosticSink front_end;  // the analysis published these already
+  std::unique_ptr<fx::EffectFile> effect =
+      fx::EffectFile::parse_text(path, snapshot.document.text, settings.front_end, front_end);
+  if (front_end.has_errors()) return {};
   fx::DiagnosticSink units_sink;
-  fx::EffectUnits units(analysis.parsed().ast, analysis.sources(), units_sink,
-                        fx::effect_unit_options(settings.front_end));
-  fx::EffectPrograms programs(units, *compiler_, analysis.sources());
+  effect->build_programs(units_sink, compiler_.get());
   fx::ShownOnce shown;
-  check_shaders(units, programs, settings, units_sink, shown);
-  return {document_diagnostics(analysis, shown.diagnostics()),
-          technique_lenses(analysis, snapshot.config.validation_profiles(), programs)};
+  check_shaders(*effect->units, *effect->programs, settings, units_sink, shown);
+  const DocumentPlaces places(effect->sources, path);
+  return {document_diagnostics(places, shown.diagnostics()),
+          technique_lenses(*effect, places, snapshot.config.validation_profiles())};
 }
 
 }  // namespace fx::tools::lsp

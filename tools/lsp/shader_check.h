@@ -3,8 +3,9 @@
 // array element, each diagnostic once with "also reported for" notes), with glslang in
 // compile worker processes so a compiler crash costs one result, not the editor's server;
 // and each technique validated on the configured caps profiles as `fxkit select` validates
-// it, as a code lens. Runtime builds only (FXKIT_VULKAN); CompileScheduler runs it off the
-// request thread.
+// it, as a code lens. The snapshot is built through fx::EffectFile, as check and hot reload
+// build an effect, with its includes read from the open documents. Runtime builds only
+// (FXKIT_VULKAN); CompileScheduler runs it off the request thread.
 #pragma once
 #include <memory>
 #include <string>
@@ -28,9 +29,9 @@ class ShaderCheck {
   ~ShaderCheck();
 
   // The snapshot's compiled-shader diagnostics as LSP Diagnostics of its document, and a
-  // code lens per technique ("valid on dx9, modern; dx8: <first reason>"); nothing when the
-  // front end or the semantic model finds errors (glslang would only repeat them).
-  // Thread-safe.
+  // code lens per technique ("valid on dx9, modern; dx8: <first reason>", whose command
+  // kTechniqueValidityCommand shows every reason); nothing when the front end or the
+  // semantic model finds errors (glslang would only repeat them). Thread-safe.
   CompileFindings check(const CompileSnapshot& snapshot) const;
 
  private:

@@ -41,11 +41,19 @@ std::vector<std::string> WorkspaceConfig::validation_profiles() const {
   return caps_profiles;
 }
 
-fx::FrontEndOptions WorkspaceConfig::front_end_options() const {
+fx::FrontEndOptions WorkspaceConfig::document_options(const std::string& path,
+                                                      const std::map<std::string, std::string>& open) const {
   fx::FrontEndOptions options;
   options.preprocessor.include_dirs = include_dirs;
   for (const std::string& d : defines) options.preprocessor.defines.push_back(fx::parse_define(d));
   options.check.profile = fx::parse_effect_profile(profile).value_or(fx::EffectProfile::automatic);
+  fx::FileLoader disk = fx::disk_file_loader();
+  options.preprocessor.loader = [&open, disk](const std::string& file) -> std::optional<std::string> {
+    if (auto it = open.find(file); it != open.end()) return it->second;
+    return disk(file);
+  };
+  options.preprocessor.lister = fx::disk_directory_lister();
+  options.check.require_technique = path.ends_with(".fx");  // an include library needs none
   return options;
 }
 

@@ -2,6 +2,7 @@
 // effect profile, from the client's initializationOptions or settings and from a
 // `fxkit.json` at the workspace root (docs/editor.md).
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,11 @@ struct WorkspaceConfig {
   // "capsProfiles": [..]}`;
   // relative folders are taken against `root`. A malformed entry adds a line to `problems`.
   void merge(const nlohmann::json& settings, const std::string& root, std::vector<std::string>& problems);
-  fx::FrontEndOptions front_end_options() const;
+  // The front end's options for the document at `path` as the editor holds the workspace:
+  // included files are read from `open` (paths to the texts of the open documents, which
+  // must outlive the options) first and from disk otherwise; a header (not `.fx`) needs no
+  // technique of its own.
+  fx::FrontEndOptions document_options(const std::string& path, const std::map<std::string, std::string>& open) const;
 };
 
 // The configuration file at the root of a workspace.

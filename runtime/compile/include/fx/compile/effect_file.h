@@ -1,9 +1,9 @@
-// fx::EffectFile: one effect built the way every consumer builds it: the front end, then
-// on request the effect model with its parameter store, and the translation units (with
-// the unit options the front-end options imply) with their programs, compiled lazily or
-// all at once. `fxkit check`, `compile`, `info`, `select` and `render`, technique
-// validation, hot reload (one EffectFile per version, fx/reload) and the benches run
-// these steps and differ only in where they stop and what they print.
+// fx::EffectFile: one effect built the way every consumer builds it: the front end (with
+// the semantic model's findings), then on request the effect model with its parameters,
+// and the translation units (with the unit options the front-end options imply) with their
+// programs, compiled lazily or all at once. `fxkit check`, `compile`, `info`, `select`,
+// `render` and `lsp`, technique validation, hot reload (one EffectFile per version) and
+// the benches run these steps and differ only in where they stop and what they print.
 #pragma once
 #include <memory>
 #include <string>
@@ -36,8 +36,8 @@ struct EffectFile {
   std::unique_ptr<ShaderCompiler> compiler;  // the own compiler, when build_programs was given none
   std::unique_ptr<EffectPrograms> programs;  // after build_programs
 
-  // The front end on the file at `path` (or on `text` named `path`); its diagnostics go to
-  // `sink`, and `parsed.ok` says whether it reported errors.
+  // The front end and the semantic model on the file at `path` (or on `text` named `path`;
+  // includes read by options.preprocessor.loader) into `sink`; parsed.ok: no front-end error.
   static std::unique_ptr<EffectFile> parse(const std::string& path, const FrontEndOptions& options,
                                            DiagnosticSink& sink);
   static std::unique_ptr<EffectFile> parse_text(const std::string& path, std::string text,
