@@ -52,9 +52,8 @@ bool rewrite(const std::vector<Token>& toks, const ast::Function& f, const ast::
   std::vector<const ast::Variable*> kept, distances;
   for (const ast::Variable& m : s.members) {
     if (nests_distance(m, structure, 0)) return false;
-    const bool shared = std::count_if(s.members.begin(), s.members.end(), [&](const ast::Variable& o) {
-                          return o.tokens.first == m.tokens.first;
-                        }) > 1;
+    const bool shared = std::count_if(s.members.begin(), s.members.end(),
+                                      [&](const ast::Variable& o) { return o.tokens.first == m.tokens.first; }) > 1;
     if (is_clip_or_cull_distance(m.semantic)) {
       if (shared || !m.array_dims.empty()) return false;
       distances.push_back(&m);
@@ -85,9 +84,8 @@ bool rewrite(const std::vector<Token>& toks, const ast::Function& f, const ast::
     if (i != p.tokens.first) out[i] = " ";
   }
   for (const ast::Variable* m : distances)
-    param += ", in " + spelled(toks, m->tokens.first, find_name(toks, m->tokens, m->name)) + " " +
-             std::string(p.name) + "_" + std::string(m->name) + std::string(kSuffix) + "[" + count +
-             "] : " + std::string(m->semantic);
+    param += ", in " + spelled(toks, m->tokens.first, find_name(toks, m->tokens, m->name)) + " " + std::string(p.name) +
+             "_" + std::string(m->name) + std::string(kSuffix) + "[" + count + "] : " + std::string(m->semantic);
   out[p.tokens.first] = param;
 
   // The body first rebuilds the array the code reads.
@@ -113,8 +111,8 @@ bool is_clip_or_cull_distance(std::string_view semantic) {
 }
 
 std::unordered_map<uint32_t, std::string> clip_distance_input_spellings(
-    const std::vector<Token>& toks, const std::vector<const ast::Function*>& functions,
-    const StructLookup& structure, std::unordered_set<const ast::Function*>& rewritten) {
+    const std::vector<Token>& toks, const std::vector<const ast::Function*>& functions, const StructLookup& structure,
+    std::unordered_set<const ast::Function*>& rewritten) {
   std::unordered_map<uint32_t, std::string> out;
   for (const ast::Function* f : functions) {
     if (f->body.empty() || std::none_of(f->params.begin(), f->params.end(), is_stream)) continue;
