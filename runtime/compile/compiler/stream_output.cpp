@@ -50,12 +50,15 @@ std::optional<StreamOutputLayout> capture_stream_output(CompiledShader& shader, 
   const std::string stage = to_string(shader.reflection.stage);
   bool ok = true;
   StreamOutputLayout layout;
-  // What glslang cannot write: the pass compiles (fxc accepts it) and is refused at run time.
-  const auto one_stream = [&](SourceRange range, const std::string& what) {
-    const std::string message =
-        what + ": the shader writes stream 0 only (glslang's HLSL front end has one output stream)";
-    sink.warning("unsupported-stream-output-stream", range, message);
+  // What Vulkan or glslang cannot capture as declared: the pass compiles (fxc accepts it) and
+  // is refused at run time.
+  const auto refuse = [&](const char* id, SourceRange range, const std::string& message) {
+    sink.warning(id, range, message);
     if (layout.unsupported.empty()) layout.unsupported = message, layout.unsupported_range = range;
+  };
+  const auto one_stream = [&](SourceRange range, const std::string& what) {
+    refuse("unsupported-stream-output-stream", range,
+           what + ": the shader writes stream 0 only (glslang's HLSL front end has one output stream)");
   };
   if (decl.rasterized_stream > 0) one_stream(decl.range, "rasterized stream " + std::to_string(decl.rasterized_stream));
   layout.rasterized = decl.rasterized_stream >= 0;
@@ -99,11 +102,11 @@ std::optional<StreamOutputLayout> capture_stream_output(CompiledShader& shader, 
       continue;
     }
     if (e.masked && (e.start_component != 0 || e.component_count != components)) {
-      sink.error(kId, item.range,
-                 "'" + name + "' is captured whole: Vulkan captures output variables, not components, and this " +
-                     "mask names " + std::to_string(e.component_count) + " of its " + std::to_string(components) +
-                     " components from the " + std::to_string(e.start_component) + "th; write all of them (or none)");
-      ok = false;
+      refuse("unsupported-stream-output-mask", item.range,
+             "'" + name + "' is captured whole: Vulkan captures output variables, not components, and this " +
+                 "mask names " + std::to_string(e.component_count) + " of its " + std::to_string(components) +
+                 " components, starting at component " + std::to_string(e.start_component) +
+                 "; write all of them (or none)");
       continue;
     }
     layout.outputs.push_back({name, e.slot, offsets[e.slot], components, scalar});
