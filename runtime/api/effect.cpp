@@ -140,9 +140,10 @@ bool Effect::set_class_instance(Param interface_variable, std::string_view insta
                   store->set(interface_variable, static_cast<int32_t>(found - instances.begin())));
   }
   const std::string name = index < params.size() ? params[index].name : std::string("the parameter");
-  return kept(*state_, interface_variable,
-              {fx::ParamStatus::not_found,
-               "'" + std::string(instance) + "' is not a class instance that '" + name + "' can be bound to"});
+  return kept(
+      *state_, interface_variable,
+      {fx::ParamStatus::not_found,
+       std::string("'").append(instance).append("' is not a class instance that '") + name + "' can be bound to"});
 }
 bool Effect::set(Param p, bool value) {
   fx::ParameterStore* store = state_ ? state_->store : nullptr;

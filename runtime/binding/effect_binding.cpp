@@ -1,6 +1,8 @@
 // EffectBinding: effect passes -> programs, pipeline states, descriptors and uniforms.
 #include "fx/binding/effect_binding.h"
 
+#include "fx/binding/storage_picture.h"
+
 #include "fx/compile/uniform_layout.h"
 #include "pass_images.h"
 
@@ -351,19 +353,34 @@ bool EffectBinding::set_texel_buffer(std::string_view name, VkBufferView view, D
   return false;
 }
 
+bool EffectBinding::written_by_a_pass(std::string_view name) const {
+  for (const auto& tech : techniques_)
+    for (const auto& pass : tech->passes) {
+      for (const ProgramStorageBuffer& b : pass->shader.storage_buffers())
+        if (b.name == name && b.written) return true;
+      for (const ProgramTexelBuffer& t : pass->shader.texel_buffers())
+        if (t.name == name && t.kind == DescriptorKind::storage_texel_buffer) return true;
+    }
+  return false;
+}
+
 bool EffectBinding::bind_textures(DiagnosticSink& sink) {
+  // Previews fill the buffers no pass writes with a pattern, so what reads them varies.
+  const bool preview = textures_->preview_stand_ins();
   for (auto& tech : techniques_)
     for (auto& pass : tech->passes) {
       pass->resources->rewrite_sets();  // set_texture's view may have another's handle
       for (const ProgramStorageBuffer& b : pass->shader.storage_buffers()) {
-        std::optional<VkDescriptorBufferInfo> info = storage_.buffer(b.name, sink);
+        const StandInFill fill{preview && !written_by_a_pass(b.name), b.element};
+        std::optional<VkDescriptorBufferInfo> info = storage_.buffer(b.name, sink, fill);
         if (!info || !pass->resources->bind_buffer(b.name, info->buffer, info->offset, info->range, sink)) return false;
       }
       for (const ProgramTexelBuffer& t : pass->shader.texel_buffers()) {
         const uint32_t param = model_->find_parameter(t.name);
         const VkFormat format =
             param != kNoIndex ? storage_image_format(model_->parameters[param].type.element) : VK_FORMAT_UNDEFINED;
-        const VkBufferView view = storage_.texel_view(t.name, format, sink);
+        const StandInFill fill{preview && !written_by_a_pass(t.name), storage_format_scalar(format)};
+        const VkBufferView view = storage_.texel_view(t.name, format, sink, fill);
         if (!view || !pass->resources->bind_texel_buffer(t.name, view, sink)) return false;
       }
       for (ImageSlot& slot : pass->images) {
@@ -610,6 +627,33 @@ bool EffectBinding::dispatch_compute_passes(VkCommandBuffer cmd, uint32_t techni
     if (compute_pass(technique, p) && !dispatch(cmd, technique, p, dispatch_groups(technique, p, width, height), sink))
       return false;
   return true;
+}
+
+bool EffectBinding::computes_only(uint32_t technique) const {
+  if (!technique_ok(technique) || pass_count(technique) == 0) return false;
+  for (uint32_t p = 0; p < pass_count(technique); ++p)
+    if (!compute_pass(technique, p)) return false;
+  return true;
+}
+
+std::optional<EffectBinding::ComputeOutput> EffectBinding::compute_output(uint32_t technique, DiagnosticSink& sink) {
+  if (!technique_ok(technique)) return std::nullopt;
+  constexpr uint32_t kWordsPerRow = 64;
+  for (const auto& pass : techniques_[technique]->passes) {
+    if (!pass->shader.compute_pipeline()) continue;
+    for (const ImageSlot& slot : pass->images)
+      if (slot.kind == DescriptorKind::storage_image)
+        if (std::optional<StorageTexels> texels = storage_.read_image(slot.name, sink))
+          return ComputeOutput{slot.name, false, texel_picture(*texels)};
+  }
+  for (const auto& pass : techniques_[technique]->passes) {
+    if (!pass->shader.compute_pipeline()) continue;
+    for (const ProgramStorageBuffer& b : pass->shader.storage_buffers())
+      if (b.written)
+        if (std::optional<std::vector<uint32_t>> words = storage_.read_buffer(b.name))
+          return ComputeOutput{b.name, true, buffer_picture(*words, b.element, kWordsPerRow)};
+  }
+  return std::nullopt;
 }
 
 bool EffectBinding::stream_output_pass(uint32_t technique, uint32_t pass) const {

@@ -201,7 +201,11 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx, const std
       ProgramStorageBuffer buffer{b.name, b.binding, 0, false};
       for (const CompiledShader* s : ordered)
         for (const UniformBlock& u : s->reflection.storage_blocks)
-          if (u.binding == b.binding) buffer.size = std::max(buffer.size, u.size), buffer.written |= u.written;
+          if (u.binding == b.binding) {
+            buffer.size = std::max(buffer.size, u.size);
+            buffer.written |= u.written;
+            if (buffer.element == ScalarKind::other && !u.members.empty()) buffer.element = u.members[0].type.scalar;
+          }
       p.storage_buffers_.push_back(buffer);
     } else if (b.kind == DescriptorKind::uniform_texel_buffer || b.kind == DescriptorKind::storage_texel_buffer) {
       p.texel_buffers_.push_back({b.name, b.kind, b.binding});

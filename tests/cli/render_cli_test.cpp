@@ -1,7 +1,8 @@
 // `fxkit render` of effects written for an engine, with nothing set up: the stand-ins
 // (bone palettes, colours, light direction and count), SV_Position as a vertex input, and
 // the warnings for an image or an object of one flat colour, texture stand-ins that show a
-// filter, and a post effect run on the preview's test scene.
+// filter, a post effect run on the preview's test scene, and what a technique that only
+// computes wrote.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -409,4 +410,23 @@ technique10 Particles {
   EXPECT_NEAR(image->pixels.at(centre), 64, 1);
   EXPECT_NEAR(image->pixels.at(centre + 1), 191, 1);
   EXPECT_NEAR(image->pixels.at(centre + 2), 128, 1);
+}
+
+// A technique that only computes draws nothing: the PNG is what it wrote, here the buffer it
+// fills from one it only reads (a pattern stands in for that one), and it is no constant image.
+TEST(FxkitRender, AComputeOnlyTechniqueShowsTheBufferItWrote) {
+  const auto [r, image] = render("compute_only", R"(StructuredBuffer<float3> Positions;
+RWStructuredBuffer<float> Distances;
+[numthreads(64, 1, 1)] void Measure(uint3 id : SV_DispatchThreadID) { Distances[id.x] = length(Positions[id.x]); }
+technique11 Falloff { pass P < int3 Dispatch = {4, 1, 1}; > { SetComputeShader(CompileShader(cs_5_0, Measure())); } }
+)",
+                                 "--verbose --validation");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("Positions <- a pattern (stand-in: a buffer no pass writes)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the image is the words its compute passes wrote to buffer 'Distances'"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("image is constant"), std::string::npos) << r.err;
+  ASSERT_TRUE(image);
+  EXPECT_EQ(image->width, 64u);
+  EXPECT_FALSE(image->constant());
 }

@@ -46,8 +46,9 @@ class StandInRenderTest : public VulkanTest {
     auto e = bind_effect(ctx(), folder_.path("sampling.fx"), technique, "sphere", kSize, std::nullopt,
                          VK_FORMAT_R8G8B8A8_UNORM, preview);
     if (!e) return {};
-    if (!param.empty())
+    if (!param.empty()) {
       EXPECT_TRUE(e->effect->params->set(e->effect->params->find(param), std::span<const float>(value)));
+    }
     auto image = e->render();
     if (!image) return {};
     const uint8_t* p = image->at(kSize / 2, kSize / 2);

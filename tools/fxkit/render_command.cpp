@@ -210,13 +210,32 @@ int run_render(const RenderArgs& args) {
       image = frame();
       ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
+    // A technique that draws nothing shows what its compute passes wrote.
+    const bool computes_only = binding->computes_only(technique);
+    std::optional<fx::vk::EffectBinding::ComputeOutput> computed;
+    if (image && computes_only) {
+      ctx->wait_idle();
+      computed = binding->compute_output(technique, diags);
+      if (computed) image = computed->picture;
+    }
+    if (args.verbose)
+      for (const std::string& name : binding->storage().patterned())
+        std::fprintf(stderr, "fxkit render: %s <- a pattern (stand-in: a buffer no pass writes)\n", name.c_str());
     report(diags);
     if (!image) return kInputErrors;
+    if (computes_only) {
+      const std::string shown =
+          !computed          ? "the clear colour (its compute passes write no stand-in fxkit can read back)"
+          : computed->buffer ? "the words its compute passes wrote to buffer '" + computed->name +
+                                   "', 64 a row, grey from the smallest to the largest"
+                             : "the texels its compute passes wrote to image '" + computed->name + "'";
+      std::fprintf(stderr, "fxkit render: the technique draws nothing: the image is %s\n", shown.c_str());
+    }
     if (image->constant()) {
       const uint8_t* p = image->pixels.data();
       std::fprintf(stderr, "fxkit render: warning: the image is constant (every pixel %u,%u,%u,%u)%s\n", p[0], p[1],
                    p[2], p[3], unbound.empty() ? "" : "; see the transforms left zero above");
-    } else {
+    } else if (!computes_only) {
       // Pixels within 2 levels of the clear colour are background; the rest is the object.
       std::array<uint8_t, 4> background{};
       for (size_t c = 0; c < 4; ++c) background[c] = uint8_t(std::lround(preview_desc.clear[c] * 255.0f));

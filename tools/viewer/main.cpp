@@ -160,6 +160,8 @@ int main(int argc, char** argv) {
   options.target.default_attribute_binding = 1;                    // inputs the mesh lacks read (0, 0, 0, 1), as in D3D
   options.target.front_faces = fxkit::Winding::counter_clockwise;  // as the built-in meshes
   options.target.y_flip = fxkit::YFlip::negative_viewport;
+  // RWTexture2D stand-ins (one compute thread per pixel) the size of the window as opened.
+  options.target.extent = {uint32_t(opt.width), uint32_t(opt.height)};
   std::vector<fxkit::Message> errors;
   auto device = fxkit::Device::create({window->instance(), window->physical_device(), window->device(), window->queue(),
                                        window->queue_family(), window->created_with()},

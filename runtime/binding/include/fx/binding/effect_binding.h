@@ -28,6 +28,7 @@
 #include "fx/binding/pass_state_mapping.h"
 #include "fx/binding/stream_capture.h"
 #include "fx/compile/effect_programs.h"
+#include "fx/image.h"
 #include "fx/model/effect_model.h"
 #include "fx/model/parameter_store.h"
 #include "fx/vulkan/sampler_cache.h"
@@ -116,6 +117,20 @@ class EffectBinding {
   // draws the technique's other passes ("simulate, then draw"). True when it has none.
   bool dispatch_compute_passes(VkCommandBuffer cmd, uint32_t technique, uint32_t width, uint32_t height,
                                DiagnosticSink& sink);
+  // Whether every pass of `technique` is a compute pass: it draws nothing.
+  bool computes_only(uint32_t technique) const;
+  // What a preview of such a technique shows: a picture (fx/binding/storage_picture.h) of
+  // the first storage image its compute passes bind, else of the first storage buffer they
+  // write, read back from the stand-in once the device has finished the passes. nullopt when
+  // they write no stand-in (the application's resources, or nothing at all).
+  struct ComputeOutput {
+    std::string name;     // the storage image or buffer
+    bool buffer = false;  // a buffer's words (else an image's texels)
+    fx::Image picture;
+  };
+  std::optional<ComputeOutput> compute_output(uint32_t technique, DiagnosticSink& sink);
+  // The storage buffers, images and texel buffers bound so far, and their stand-ins.
+  const EffectStorage& storage() const { return storage_; }
 
   // Whether pass `pass` of `technique` captures its output stream (ConstructGSWithSO):
   // begin_capture() it, not apply().
@@ -190,6 +205,9 @@ class EffectBinding {
   struct Builder;  // create()'s steps
   EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures);
   bool bind_textures(DiagnosticSink& sink);
+  // Whether some pass writes the storage or texel buffer `name` (a stand-in it only reads
+  // may hold a preview pattern).
+  bool written_by_a_pass(std::string_view name) const;
   // Writes the pass's changed uniform blocks into the frame's ring (pass.ring_offsets);
   // `moved` is set when one went to a new offset.
   bool write_blocks(Pass& pass, bool& moved, DiagnosticSink& sink);

@@ -50,6 +50,9 @@ struct ProgramStorageBuffer {
   uint32_t binding = 0;
   uint32_t size = 0;     // bytes before any runtime-sized array (the fixed part of the block)
   bool written = false;  // some stage writes it (an RW, Append or Consume buffer, a counter)
+  // The scalar of its first member (a StructuredBuffer<float3>'s float, a struct's first
+  // field's): how a preview fills a stand-in it only reads, and pictures what a pass wrote.
+  ScalarKind element = ScalarKind::other;
 };
 
 // One texel buffer of the program (set 0): Buffer<T> (uniform) or RWBuffer<T> (storage).
