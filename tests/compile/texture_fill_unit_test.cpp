@@ -82,5 +82,26 @@ float4 Paint(float2 p : POSITION) : COLOR {
   EXPECT_NE(text.find("undeclared_name"), std::string::npos) << text;
 }
 
+// tx_1_0's noise() (glslang 12 crashes on a call to `noise`) is fxkit's gradient noise in a
+// texture shader's unit; a pass stage that calls it gets an error at the call, not a crash.
+TEST(TextureFillUnit, NoiseIsDefinedForTextureShadersAndAnErrorElsewhere) {
+  auto b = build(R"(texture Clouds < string function = "MakeClouds"; >;
+float4 MakeClouds(float2 p : POSITION) : COLOR { return noise(p * 8) * 0.5 + 0.5 + noise(float3(p, 1)) * 0; }
+float4 PS(float2 uv : TEXCOORD0) : COLOR { return noise(uv); }
+technique T { pass P { PixelShader = compile ps_3_0 PS(); } }
+)");
+  ASSERT_FALSE(b->diags.has_errors()) << render_text(b->diags.diagnostics(), b->sm);
+  const PassProgram& fill = b->programs->texture_fill(b->shader("Clouds"));
+  EXPECT_TRUE(fill.compiled) << render_text(fill.stages[0].diagnostics, b->sm) << fill.stages[0].unit.source;
+  const PassProgram* pass = b->programs->program("T", "P");
+  ASSERT_TRUE(pass);
+  const StageProgram* pixel = pass->find(ShaderStage::fragment);
+  ASSERT_TRUE(pixel);
+  EXPECT_FALSE(pixel->shader.ok);
+  const std::string text = render_text(pixel->diagnostics, b->sm);
+  EXPECT_NE(text.find("fill.fx:3:"), std::string::npos) << text;
+  EXPECT_NE(text.find("noise__tx_1_0"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace fx

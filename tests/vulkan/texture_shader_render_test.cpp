@@ -4,6 +4,7 @@
 // cage.fx makes it, the effect's globals at their values, a volume and a cube.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -128,6 +129,29 @@ float4 PS(float2 uv : TEXCOORD0) : COLOR {
   ASSERT_TRUE(image);
   expect_near(pixel(*image, 8, 16), {255, 96, 96, 255}, "+X face, texel (2, 2)");
   expect_near(pixel(*image, 24, 16), {159, 0, 96, 255}, "-Y face, texel (2, 2)");
+}
+
+// tx_1_0's noise(): 0 at lattice points (red: 128 everywhere), varying between them (green),
+// within -1..1.
+TEST_F(TextureShaderRenderTest, NoiseIsZeroAtLatticePointsAndVariesBetweenThem) {
+  const std::string text = full_screen(R"(
+texture Clouds < string function = "MakeClouds"; int width = 32; int height = 32; >;
+sampler2D CloudSampler = sampler_state { Texture = <Clouds>; MinFilter = Point; MagFilter = Point; };
+float4 MakeClouds(float2 p : POSITION) : COLOR {
+  return float4(noise(floor(p * 4)), noise(p * 4), 0, 0) * 0.5 + 0.5; }
+float4 PS(float2 uv : TEXCOORD0) : COLOR { return tex2D(CloudSampler, uv); }
+)");
+  auto image = draw("noise.fx", text);
+  ASSERT_TRUE(image);
+  int lowest = 255, highest = 0;
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      const std::array<int, 4> p = pixel(*image, x, y);
+      EXPECT_NEAR(p[0], 128, 1) << x << "," << y;
+      lowest = std::min(lowest, p[1]);
+      highest = std::max(highest, p[1]);
+    }
+  EXPECT_GT(highest - lowest, 60) << "noise varies between lattice points";
 }
 
 // A function that cannot run as a compute shader (it samples a texture) leaves the stand-in

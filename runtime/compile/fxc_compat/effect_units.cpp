@@ -13,6 +13,7 @@
 #include "fx/ascii_case.h"
 #include "fx/state_table.h"
 #include "multisample_operator.h"
+#include "texture_noise.h"
 #include "untyped_sampler.h"
 
 namespace fx {
@@ -183,6 +184,7 @@ void EffectUnitBuilder::build() {
   respelled_ = detail::flat_initializer_spellings(toks_);
   respelled_.merge(detail::case_insensitive_type_spellings(toks_, u_.symbols_));
   respelled_.merge(detail::multisample_operator_spellings(toks_));
+  respelled_.merge(detail::texture_noise_spellings(toks_, functions_));
   respelled_.merge(detail::untyped_sampler_spellings(toks_));
   respelled_.merge(detail::class_linkage_spellings(toks_, linkage_, functions_));
   respelled_.merge(detail::clip_distance_input_spellings(
@@ -405,6 +407,8 @@ std::optional<TranslationUnit> EffectUnits::compute_unit(std::string_view functi
   u.entry_point = std::string(entry);
   u.name = name_;
   u.source = hlsl_code_for(function);
+  // tx_1_0's noise(), which the effect's code calls by this name (texture_noise.h).
+  if (u.source.find(detail::kTextureNoise) != std::string::npos) u.source.insert(0, detail::texture_noise_definition());
   u.source += entry_text;
   return u;
 }

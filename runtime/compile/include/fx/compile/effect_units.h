@@ -110,8 +110,9 @@ class EffectUnits {
   std::string hlsl_code_for(std::string_view entry) const;
   // A compute unit: what `function` reaches (as hlsl_code_for) followed by `entry_text`, a
   // generated entry point named `entry` that calls it (a texture shader's fill,
-  // fx/compile/texture_fill_unit.h). nullopt when the effect defines no function `function`
-  // or its front end failed.
+  // fx/compile/texture_fill_unit.h), with the definition of tx_1_0's noise() when the code
+  // calls it (glslang has none). nullopt when the effect defines no function `function` or
+  // its front end failed.
   std::optional<TranslationUnit> compute_unit(std::string_view function, std::string_view entry,
                                               std::string_view entry_text) const;
   // The functions no stage of any pass reaches, and what they reach, compiled once per
