@@ -63,7 +63,7 @@ std::string first_error(const std::vector<Diagnostic>& diagnostics, const char* 
   return fallback;
 }
 
-// A descriptor pool holding one set of `program`'s layout, destroyed with it.
+// A descriptor pool for the one set of a fill, destroyed with it.
 struct OneSetPool {
   VkDevice device = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
@@ -128,7 +128,6 @@ uint32_t TextureFills::add(const EffectModel& model, uint32_t texture, ImageDim 
                      first_error(made.diagnostics(), "no reason given") + ")" + standing_in);
     return kNoIndex;
   }
-  fill->program = &program;
   fill->compute = std::move(*compute);
   // The globals it reads, laid out over the parameters as a pass's are.
   const std::vector<UniformBlockLayout> layouts = uniform_layouts(model, program);
