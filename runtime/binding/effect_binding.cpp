@@ -82,7 +82,12 @@ uint32_t stream_out_vertices(const PassInfo& pass) {
 }  // namespace
 
 EffectBinding::EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures)
-    : params_(&params), textures_(&textures), samplers_(ctx), descriptor_sets_(ctx), storage_(ctx) {}
+    : params_(&params),
+      textures_(&textures),
+      samplers_(ctx),
+      descriptor_sets_(ctx),
+      storage_(ctx),
+      fills_(ctx, params) {}
 
 EffectBinding::~EffectBinding() {
   recorder_.reset();    // declared first for apply(), it must not outlive what it references
@@ -155,7 +160,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
   b->frames_ = &frames;
   b->recorder_.emplace(ctx, *b->pipelines_, frames,
                        desc.dynamic.value_or(DynamicStateSet::from_features(ctx.features())));
-  Builder build{*b, ctx, programs, params, desc, sink, {model, b->samplers_, textures, desc}, {}};
+  Builder build{*b, ctx, programs, params, desc, sink, {model, b->samplers_, textures, desc, b->fills_, programs}, {}};
   for (uint32_t t = 0; t < model.techniques.size(); ++t) {
     std::unique_ptr<Technique> tech = build.technique(t);
     if (!tech) return nullptr;
@@ -248,12 +253,9 @@ bool EffectBinding::Builder::program(Pass& pass, const PassInfo& info, std::stri
 }
 
 void EffectBinding::Builder::uniform_blocks(Pass& pass, const PassInfo& info) {
-  // Block ids are unique in the process, so two bindings of one ParameterStore (say a
-  // dynamic-state and a static one) never overwrite each other's block layouts.
-  static std::atomic<uint32_t> next_block_id{0};
   const std::vector<UniformBlockLayout> layouts = uniform_layouts(images.model, *pass.program);
   for (const ProgramUniformBlock& block : pass.shader.uniform_blocks()) {
-    BlockSlot slot{next_block_id++, {}, block.size, 0};
+    BlockSlot slot{unique_uniform_block_id(), {}, block.size, 0};
     auto layout = std::find_if(layouts.begin(), layouts.end(),
                                [&](const UniformBlockLayout& l) { return l.binding == block.binding; });
     if (layout != layouts.end()) {
@@ -400,6 +402,7 @@ bool EffectBinding::bind_textures(DiagnosticSink& sink) {
         const Texture* texture = nullptr;
         for (const auto& [param, app] : app_textures_)
           if (param == slot.texture_param) texture = &app;
+        if (!texture && slot.fill != kNoIndex) texture = fills_.texture(slot.fill, sink);
         if (!texture) texture = textures_->gpu(*slot.data, sink);
         if (!texture || !pass->resources->bind(slot.name, *texture, slot.sampler, sink)) return false;
       }

@@ -115,6 +115,9 @@ bool resolve_pass_images(const ImageSources& from, const PassInfo& pass, const S
         reason = "pass '" + pass.name + "': texture '" + image.name + "' could not be made";
         return false;
       }
+      // A texture shader's texture replaces the stand-in (slot.data) when its fill runs.
+      if (slot.texture_param != kNoIndex && !image.shadow && !image.multisampled)
+        slot.fill = from.fills.add(from.model, slot.texture_param, image.dim, image.arrayed, from.programs, sink);
     }
     out.push_back(std::move(slot));
   }

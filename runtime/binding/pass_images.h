@@ -11,6 +11,7 @@
 
 #include "fx/binding/effect_binding.h"
 #include "fx/binding/shader_program.h"
+#include "fx/binding/texture_fills.h"
 
 namespace fx::vk {
 
@@ -23,6 +24,7 @@ struct ImageSlot {
   std::shared_ptr<const EffectTextureData> data;   // the effect's own texture
   VkFormat storage_format = VK_FORMAT_UNDEFINED;   // a storage image's stand-in format
   std::optional<StorageImageShape> storage_shape;  // ... and its shape (none: no stand-in fits)
+  uint32_t fill = kNoIndex;                        // the TextureFills fill of its texture shader
 };
 
 // What the passes of one binding have said already: each texture's problems and each
@@ -38,6 +40,8 @@ struct ImageSources {
   SamplerCache& samplers;
   EffectTextureCache& textures;
   const EffectBindingDesc& desc;
+  TextureFills& fills;  // the binding's texture shaders
+  EffectPrograms& programs;
 };
 
 // The slots of `shader`'s images for the pass `pass`, storage images left to EffectStorage

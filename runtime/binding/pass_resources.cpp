@@ -1,10 +1,16 @@
 // PassResources: uniform shadows with change detection and image bindings.
 #include "fx/binding/pass_resources.h"
 
+#include <atomic>
 #include <cstring>
 #include <string>
 
 namespace fx::vk {
+
+uint32_t unique_uniform_block_id() {
+  static std::atomic<uint32_t> next{0};
+  return next++;
+}
 
 PassResources::PassResources(const ShaderProgram& program) : program_(&program) {
   for (const ProgramUniformBlock& b : program.uniform_blocks())

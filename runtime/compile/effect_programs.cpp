@@ -5,6 +5,7 @@
 #include <unordered_set>
 
 #include "fx/compile/spirv_cache.h"
+#include "fx/compile/texture_fill_unit.h"
 #include "fx/worker_pool.h"
 #include "shader_diagnostics.h"
 
@@ -119,6 +120,32 @@ const StageProgram* EffectPrograms::uncalled_check() {
   if (!check) return nullptr;
   if (!check_) check_ = std::make_unique<StageProgram>(compile_stage(*check, *units_.unit(*check)));
   return check_.get();
+}
+
+const PassProgram& EffectPrograms::texture_fill(const TextureShader& shader) {
+  std::optional<TranslationUnit> unit = texture_fill_unit(units_, shader, sm_);
+  std::string key = unit ? spirv_cache_key(*unit, compiler_.options()).hex() : "no function:" + shader.function;
+  std::unique_ptr<PassProgram>& slot = fills_[key];
+  if (slot) return *slot;
+  slot = std::make_unique<PassProgram>();
+  PassProgram& p = *slot;
+  if (!unit) return p;
+  StageUnit stage;
+  stage.stage = ShaderStage::compute;
+  stage.profile = unit->profile;
+  stage.function = shader.function;
+  stage.entry_point = unit->entry_point;
+  stage.range = shader.range;
+  p.stages.push_back(compile_stage(stage, std::move(*unit)));
+  if (!p.stages.back().shader.ok) return p;
+  Clock::time_point start = Clock::now();
+  DiagnosticSink sink;
+  p.layout = link_program({&p.stages.back().shader}, sink, {});
+  p.diagnostics = sink.diagnostics();
+  p.compiled = !sink.has_errors();
+  p.link_ms = ms_since(start);
+  stats_.link_ms += p.link_ms;
+  return p;
 }
 
 const PassProgram& EffectPrograms::program(const EffectPass& pass) {

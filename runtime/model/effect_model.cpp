@@ -98,6 +98,8 @@ class Builder {
         case ast::DeclKind::directive: break;
       }
     }
+    // After every sampler: a `texture` takes the shape of the sampler that reads it.
+    for (TextureInfo& t : model_.textures) t.shader = texture_shader(model_, model_.parameters[t.parameter], diags_);
     plan_scripts(model_, diags_);
     return std::move(model_);
   }

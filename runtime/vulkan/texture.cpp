@@ -5,6 +5,7 @@
 #include <cstring>
 #include <vector>
 
+#include "fx/vulkan/barrier.h"
 #include "fx/vulkan/buffer.h"
 #include "fx/vulkan/one_shot.h"
 
@@ -47,6 +48,26 @@ bool check_image(const fx::Image& image, DiagnosticSink& sink) {
 std::optional<Texture> Texture::upload(const Context& ctx, const ImageDesc& desc, const uint8_t* bytes,
                                        size_t byte_count, DiagnosticSink& sink,
                                        std::span<const VkBufferImageCopy> regions) {
+  std::optional<Buffer> staging =
+      Buffer::create(ctx, {byte_count, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::upload, "texture staging"}, sink);
+  if (!staging || !staging->write(bytes, byte_count)) return std::nullopt;
+  return copied(ctx, desc, staging->handle(), {}, sink, regions);
+}
+
+std::optional<Texture> Texture::from_device_texels(const Context& ctx, const ImageDesc& desc, VkBuffer texels,
+                                                   const std::function<void(VkCommandBuffer)>& produce,
+                                                   DiagnosticSink& sink) {
+  const auto produced = [&](VkCommandBuffer cmd) {
+    produce(cmd);
+    memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                   VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+  };
+  return copied(ctx, desc, texels, produced, sink);
+}
+
+std::optional<Texture> Texture::copied(const Context& ctx, const ImageDesc& desc, VkBuffer source,
+                                       const std::function<void(VkCommandBuffer)>& before, DiagnosticSink& sink,
+                                       std::span<const VkBufferImageCopy> regions) {
   // Depth textures are compared, not filtered: sampling them is enough.
   const bool depth = is_depth_format(desc.format);
   if (!ctx.supports_format(desc.format, VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
@@ -58,13 +79,11 @@ std::optional<Texture> Texture::upload(const Context& ctx, const ImageDesc& desc
   }
   std::optional<GpuImage> image = GpuImage::create(ctx, desc, sink);
   if (!image) return std::nullopt;
-  std::optional<Buffer> staging =
-      Buffer::create(ctx, {byte_count, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::upload, "texture staging"}, sink);
-  if (!staging || !staging->write(bytes, byte_count)) return std::nullopt;
   GpuImage& img = *image;
   const bool ok = submit_and_wait(
       ctx,
       [&](VkCommandBuffer cmd) {
+        if (before) before(cmd);
         img.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
         VkBufferImageCopy copy{};
         copy.imageSubresource = {
@@ -72,7 +91,7 @@ std::optional<Texture> Texture::upload(const Context& ctx, const ImageDesc& desc
             img.desc().array_layers};
         copy.imageExtent = img.extent();
         if (regions.empty()) regions = {&copy, 1};
-        vkCmdCopyBufferToImage(cmd, staging->handle(), img.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+        vkCmdCopyBufferToImage(cmd, source, img.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                                uint32_t(regions.size()), regions.data());
         img.transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
       },

@@ -47,8 +47,8 @@ struct ReloadHarness {
   EffectHandle effect;
   uint64_t frame = 0;
 
-  ReloadHarness(Context& ctx, const std::string& name) {
-    path = write_effect(name, effect_text(0.85f));
+  ReloadHarness(Context& ctx, const std::string& name, const std::string& text = effect_text(0.85f)) {
+    path = write_effect(name, text);
     DiagnosticSink sink;
     auto mesh = make_mesh("sphere", sink);
     EffectPreviewDesc desc;
@@ -159,6 +159,44 @@ TEST_F(EffectReloadTest, ReloadsDuringRenderedFramesDropNothingAndLeakNothing) {
   EXPECT_EQ(EffectBinding::live_vulkan_objects(), baseline_objects);
   EXPECT_EQ(h.preview->textures().gpu_count(), baseline_textures);
   EXPECT_EQ(EffectVersion::live_count(), baseline_versions);
+}
+
+// A sphere in one colour: a texture shader's texel, which `colour` (HLSL) gives; `broken`
+// leaves the function unfinished.
+std::string texture_shader_text(const std::string& colour, bool broken = false) {
+  return R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+texture Fill < string function = "Paint"; int width = 4; int height = 4; >;
+sampler2D FillSampler = sampler_state { Texture = <Fill>; };
+float4 Paint(float2 p : POSITION) : COLOR { return )" +
+         colour + (broken ? "" : "; }") + R"(
+float4 VS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
+float4 PS() : COLOR0 { return tex2D(FillSampler, float2(0.5, 0.5)); }
+technique painted { pass p0 { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)";
+}
+
+// A reloaded version fills its texture anew: an edited texture shader changes the picture; a
+// broken one keeps the last good picture.
+TEST_F(EffectReloadTest, AnEditedTextureShaderRefillsItsTexture) {
+  ReloadHarness h(ctx(), "reload_texture_shader.fx", texture_shader_text("float4(1, 0, 0, 1)"));
+  auto centre = [](const fx::Image& image) {
+    const uint8_t* p = image.at(image.width / 2, image.height / 2);
+    return std::array<int, 3>{p[0], p[1], p[2]};
+  };
+  auto red = h.frame_once();
+  ASSERT_TRUE(red);
+  EXPECT_EQ(centre(*red), (std::array<int, 3>{255, 0, 0}));
+  h.edit(texture_shader_text("float4(0, 0, 1, 1)"));
+  EXPECT_EQ(h.frames_until_event().kind, ReloadEventKind::reloaded);
+  auto blue = h.frame_once();
+  ASSERT_TRUE(blue);
+  EXPECT_EQ(centre(*blue), (std::array<int, 3>{0, 0, 255}));
+  h.edit(texture_shader_text("float4(0, 1, 0, 1)", /*broken=*/true));
+  EXPECT_EQ(h.frames_until_event().kind, ReloadEventKind::failed);
+  auto kept = h.frame_once();
+  ASSERT_TRUE(kept);
+  EXPECT_EQ(centre(*kept), (std::array<int, 3>{0, 0, 255}));
 }
 
 }  // namespace

@@ -52,15 +52,15 @@ struct RenderedEffect {
 };
 
 // Loads `path` and binds it for `mesh` at `size`; `technique` "" = the first that can run;
-// `preview_stand_ins`: textures no file fills get the preview's stand-ins (texture_stand_in.h).
-inline std::unique_ptr<RenderedEffect> bind_effect(Context& ctx, const std::string& path,
-                                                   const std::string& technique = "",
-                                                   const std::string& mesh = "sphere", uint32_t size = 96,
-                                                   std::optional<DynamicStateSet> dynamic = std::nullopt,
-                                                   VkFormat color = VK_FORMAT_R8G8B8A8_UNORM,
-                                                   bool preview_stand_ins = false) {
+// `preview_stand_ins`: textures no file fills get the preview's stand-ins (texture_stand_in.h);
+// `diagnostics`: where loading and binding's diagnostics go (dropped when null).
+inline std::unique_ptr<RenderedEffect> bind_effect(
+    Context& ctx, const std::string& path, const std::string& technique = "", const std::string& mesh = "sphere",
+    uint32_t size = 96, std::optional<DynamicStateSet> dynamic = std::nullopt,
+    VkFormat color = VK_FORMAT_R8G8B8A8_UNORM, bool preview_stand_ins = false, DiagnosticSink* diagnostics = nullptr) {
   auto r = std::make_unique<RenderedEffect>();
-  DiagnosticSink sink;
+  DiagnosticSink local;
+  DiagnosticSink& sink = diagnostics ? *diagnostics : local;
   FrontEndOptions options;
   options.preprocessor.include_dirs = {effects_dir()};
   r->effect = EffectFile::load(path, options, sink);

@@ -62,7 +62,7 @@ std::vector<fx::Diagnostic> script_diagnostics(const fx::DiagnosticSink& model) 
 // are not a defect of the effect (`fxkit compile` lists them, as it is asked for SPIR-V). A
 // stage fxkit cannot run at all is an error.
 void check_shaders(const fx::EffectUnits& units, fx::EffectPrograms& programs, const EffectCheckSettings& settings,
-                   fx::DiagnosticSink& diags, fx::ShownOnce& shown) {
+                   fx::DiagnosticSink& diags, fx::ShownOnce& shown, const fx::EffectModel* model) {
   if (settings.executor) programs.compile_all(*settings.executor, true);
   shown.add(diags.diagnostics(), "");
   for (const fx::EffectPass& pass : units.passes()) {
@@ -83,6 +83,14 @@ void check_shaders(const fx::EffectUnits& units, fx::EffectPrograms& programs, c
       shown.add(located.diagnostics(), "");
     }
     shown.add(program.diagnostics, name);
+  }
+  if (!model) return;
+  for (const fx::TextureInfo& t : model->textures) {
+    if (!t.shader) continue;
+    const fx::PassProgram& fill = programs.texture_fill(*t.shader);
+    const std::string name = "texture shader of " + model->parameters[t.parameter].name;
+    for (const fx::StageProgram& s : fill.stages) shown.add(s.diagnostics, name);
+    shown.add(fill.diagnostics, name);
   }
 }
 #endif
@@ -124,7 +132,7 @@ EffectCheck check_effect(const std::string& file, const EffectCheckSettings& set
   // The shaders of an effect whose front end failed would only repeat its errors.
   if (settings.compile && settings.compiler && !diags.has_errors()) {
     effect->build_programs(diags, settings.compiler);
-    check_shaders(*effect->units, *effect->programs, settings, diags, shown);
+    check_shaders(*effect->units, *effect->programs, settings, diags, shown, effect->model.get());
   } else shown.add(diags.diagnostics(), "");
   if (parsed.ok) shown.add(script_diagnostics(model_diags), "");
   if (settings.caps && parsed.ok) {

@@ -14,6 +14,7 @@
 namespace fx {
 class EffectPrograms;
 class EffectUnits;
+struct EffectModel;
 class ShownOnce;
 class TaskExecutor;
 class ShaderCompiler;
@@ -55,9 +56,10 @@ EffectCheck check_effect(const std::string& file, const EffectCheckSettings& set
 // Runtime builds: what compiling every shader of an effect's units reports (through its
 // programs), added to `shown` after what `diags` holds, each diagnostic once with "also
 // reported for" notes. check_effect runs it on its EffectFile; the language server on the
-// units of its document snapshot, and publishes the same.
+// units of its document snapshot, and publishes the same. With `model`, the compute units of
+// its texture shaders too (docs/effect-model.md "Texture shaders").
 void check_shaders(const fx::EffectUnits& units, fx::EffectPrograms& programs, const EffectCheckSettings& settings,
-                   fx::DiagnosticSink& diags, fx::ShownOnce& shown);
+                   fx::DiagnosticSink& diags, fx::ShownOnce& shown, const fx::EffectModel* model = nullptr);
 
 // Every file checked into results[i] on settings.executor (files and, within them, stages
 // in parallel; in turn without one), each looked up in and stored to `cache` when given

@@ -185,10 +185,19 @@ int run_render(const RenderArgs& args) {
         std::fprintf(stderr, "fxkit render: ScriptExternal <- the preview's test scene (stand-in)\n");
     }
     // Textures with neither a file nor a generator, and no script target: the cache binds
-    // a stand-in (a missing file has its own warning).
+    // a stand-in (a missing file has its own warning). A texture shader fills its texture
+    // (a fill that fails has its own warning).
     if (args.verbose)
       for (const fx::TextureInfo& t : effect->model->textures) {
         const fx::Parameter& param = effect->model->parameters[t.parameter];
+        if (t.shader) {
+          std::fprintf(stderr, "fxkit render: %s <- texture shader '%s' (%ux%u%s)\n", param.name.c_str(),
+                       t.shader->function.c_str(), t.shader->width, t.shader->height,
+                       t.shader->shape == fx::TextureShape::tex3d  ? ("x" + std::to_string(t.shader->depth)).c_str()
+                       : t.shader->shape == fx::TextureShape::cube ? " cube"
+                                                                   : "");
+          continue;
+        }
         const fx::ImageDim dim = t.shape == fx::TextureShape::cube    ? fx::ImageDim::cube
                                  : t.shape == fx::TextureShape::tex3d ? fx::ImageDim::dim_3d
                                  : t.shape == fx::TextureShape::tex1d ? fx::ImageDim::dim_1d

@@ -13,6 +13,7 @@
 #include "fx/ascii_case.h"
 #include "fx/state_table.h"
 #include "multisample_operator.h"
+#include "texture_noise.h"
 #include "untyped_sampler.h"
 
 namespace fx {
@@ -183,6 +184,7 @@ void EffectUnitBuilder::build() {
   respelled_ = detail::flat_initializer_spellings(toks_);
   respelled_.merge(detail::case_insensitive_type_spellings(toks_, u_.symbols_));
   respelled_.merge(detail::multisample_operator_spellings(toks_));
+  respelled_.merge(detail::texture_noise_spellings(toks_, functions_));
   respelled_.merge(detail::untyped_sampler_spellings(toks_));
   respelled_.merge(detail::class_linkage_spellings(toks_, linkage_, functions_));
   respelled_.merge(detail::clip_distance_input_spellings(
@@ -204,6 +206,7 @@ void EffectUnitBuilder::build() {
       if (stage.kind != StageSourceKind::invalid) invalid(stage, "the effect has front-end errors");
     });
     u_.check_.reset();
+    u_.front_end_failed_ = true;
   }
 }
 
@@ -283,6 +286,15 @@ void EffectUnitBuilder::mark_uncalled_functions() {
   };
   for_each_stage(add);
   if (!first) return;  // nothing compiles: no unit to check the functions in
+  // A texture shader (`string function = "F"` on a texture) and what it reaches compile in its
+  // own fill unit (fx/compile/texture_fill_unit.h), whose errors leave the texture a stand-in:
+  // D3DX compiles it apart from the passes too (tx_1_0), so they do not fail the passes.
+  for (const ast::Variable* v : variables_)
+    if (v->type.name.size() >= 7 && iequals(v->type.name.substr(0, 7), "texture"))
+      for (const ast::Annotation& a : v->annotations)
+        if (iequals(a.name, "function") && a.value && a.value->kind == ast::ExprKind::string_literal &&
+            seen.insert(a.value->text).second)
+          entries.push_back(a.value->text);
   std::vector<bool> reached(u_.decls_.size(), false);
   for (uint32_t i : u_.reached_from(entries)) reached[i] = true;
   const ast::Function* located = nullptr;
@@ -384,6 +396,22 @@ std::string EffectUnits::code_for(const std::vector<uint32_t>& reached, std::str
 }
 
 std::string EffectUnits::hlsl_code_for(std::string_view entry) const { return code_for(reached_from({entry}), entry); }
+
+std::optional<TranslationUnit> EffectUnits::compute_unit(std::string_view function, std::string_view entry,
+                                                         std::string_view entry_text) const {
+  if (front_end_failed_ || !decls_by_name_.count(function)) return std::nullopt;
+  TranslationUnit u;
+  u.stage = ShaderStage::compute;
+  u.language = ShaderLanguage::hlsl;
+  u.profile = "cs_5_0";
+  u.entry_point = std::string(entry);
+  u.name = name_;
+  u.source = hlsl_code_for(function);
+  // tx_1_0's noise(), which the effect's code calls by this name (texture_noise.h).
+  if (u.source.find(detail::kTextureNoise) != std::string::npos) u.source.insert(0, detail::texture_noise_definition());
+  u.source += entry_text;
+  return u;
+}
 
 std::optional<TranslationUnit> EffectUnits::unit(const StageUnit& stage) const {
   TranslationUnit u;

@@ -27,6 +27,7 @@
 #include "fx/binding/pass_recorder.h"
 #include "fx/binding/pass_state_mapping.h"
 #include "fx/binding/stream_capture.h"
+#include "fx/binding/texture_fills.h"
 #include "fx/compile/effect_programs.h"
 #include "fx/image.h"
 #include "fx/model/effect_model.h"
@@ -240,6 +241,7 @@ class EffectBinding {
   std::vector<VertexLayout> layouts_;
   std::vector<std::pair<uint32_t, Texture>> app_textures_;  // texture parameter -> app view
   EffectStorage storage_;
+  TextureFills fills_;  // textures the effect's texture shaders fill, at the first bind
   VkExtent2D storage_extent_{};
   bool textures_pending_ = true;
   RenderingFormats formats_;   // of the begun technique

@@ -13,6 +13,11 @@
 
 namespace fx::vk {
 
+// A uniform block id (ParameterStore::bind_layout) no other block of the process has, so two
+// bindings of one store (a dynamic-state and a static one, a pass and a texture shader)
+// never overwrite each other's block layouts.
+uint32_t unique_uniform_block_id();
+
 class PassResources {
  public:
   // Blocks start zero-filled and dirty; images unbound. `program` must outlive this.

@@ -13,6 +13,7 @@
 #include "fx/compile/program_link.h"
 #include "fx/compile/shader_compiler.h"
 #include "fx/diagnostic.h"
+#include "fx/model/texture_shader.h"
 #include "fx/source_manager.h"
 
 namespace fx {
@@ -85,6 +86,12 @@ class EffectPrograms {
   // nullptr when every function is reached. program() calls it for every pass with an HLSL
   // stage: its errors fail those passes, as fxc fails the effect.
   const StageProgram* uncalled_check();
+  // The program that fills a texture shader's texture (fx/compile/texture_fill_unit.h): one
+  // compute stage, compiled as pass stages are (cache, workers, diagnostics located in the
+  // effect) and linked; once per distinct unit. Not `compiled` when the function does not
+  // compile as a compute shader (the stage's diagnostics say why) or the effect has no such
+  // function (no stage).
+  const PassProgram& texture_fill(const TextureShader& shader);
   // Whether `pass` has been compiled already (no compile happens).
   bool is_compiled(const EffectPass& pass) const;
 
@@ -107,7 +114,8 @@ class EffectPrograms {
   // as its own compile (they count as compiled, not reused).
   std::unordered_map<std::string, CompiledShader> compiled_ahead_;
   EffectProgramStats stats_;
-  std::unique_ptr<StageProgram> check_;  // uncalled_check(), once compiled
+  std::unique_ptr<StageProgram> check_;                                  // uncalled_check(), once compiled
+  std::unordered_map<std::string, std::unique_ptr<PassProgram>> fills_;  // texture_fill(), by unit key
 };
 
 }  // namespace fx

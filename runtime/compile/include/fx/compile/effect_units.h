@@ -108,12 +108,20 @@ class EffectUnits {
   // shader's stream Append, a derivative in a vertex shader), and its errors are not this
   // stage's.
   std::string hlsl_code_for(std::string_view entry) const;
+  // A compute unit: what `function` reaches (as hlsl_code_for) followed by `entry_text`, a
+  // generated entry point named `entry` that calls it (a texture shader's fill,
+  // fx/compile/texture_fill_unit.h), with the definition of tx_1_0's noise() when the code
+  // calls it (glslang has none). nullopt when the effect defines no function `function` or
+  // its front end failed.
+  std::optional<TranslationUnit> compute_unit(std::string_view function, std::string_view entry,
+                                              std::string_view entry_text) const;
   // The functions no stage of any pass reaches, and what they reach, compiled once per
   // effect as a fragment unit of their own so their errors are still reported (fxc rejects
   // an effect for an error in any function); nullptr when every function is reached (or the
   // effect has no HLSL stage). Functions with a stream or patch parameter or an interface
-  // are not in it (they compile only as their stage's entry). EffectPrograms compiles it with
-  // the first pass that has an HLSL stage; its errors fail every such pass.
+  // are not in it (they compile only as their stage's entry), nor texture shaders (a
+  // texture's `string function`) and what only they reach (they compile in their fill unit). EffectPrograms compiles it
+  // with the first pass that has an HLSL stage; its errors fail every such pass.
   const StageUnit* uncalled_check() const { return check_ ? &*check_ : nullptr; }
   // The names the effect declares at file scope (variables, functions, types, cbuffer
   // members), for "did you mean" on an unknown name in shader code.
@@ -173,7 +181,8 @@ class EffectUnits {
   };
   std::vector<Wrapper> wrappers_;
   EffectUnitOptions options_;
-  std::string name_;  // the effect's file name (unit names)
+  std::string name_;               // the effect's file name (unit names)
+  bool front_end_failed_ = false;  // no unit reaches glslang
 
   friend class EffectUnitBuilder;
 };

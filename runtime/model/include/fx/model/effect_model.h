@@ -17,6 +17,7 @@
 #include "fx/frontend.h"
 #include "fx/model/dxsas_script.h"
 #include "fx/model/pass_state.h"
+#include "fx/model/texture_shader.h"
 #include "fx/model/type.h"
 #include "fx/model/value.h"
 #include "fx/no_index.h"
@@ -57,7 +58,7 @@ struct Parameter {
   const ast::Variable* decl = nullptr;  // into the ParsedEffect the model was built from
 };
 
-// A texture parameter: a file, a procedural table, or set by the app.
+// A texture parameter: a file, a procedural table, a texture shader, or set by the app.
 struct TextureInfo {
   uint32_t parameter = kNoIndex;
   TextureShape shape = TextureShape::any;
@@ -66,6 +67,7 @@ struct TextureInfo {
   std::string generator;                      // `string Generator = "strand"` ("" if none)
   shading::GeneratorParams generator_params;  // every numeric/string annotation but Generator
   SourceRange generator_range;                // the Generator annotation
+  std::optional<TextureShader> shader;        // `string function = "Fill"` (fx/model/texture_shader.h)
 };
 
 // A sampler: a D3D9 `sampler2D s = sampler_state {...}` parameter or a D3D10

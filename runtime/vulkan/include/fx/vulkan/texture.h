@@ -5,6 +5,7 @@
 #include <vulkan/vulkan.h>
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <span>
 
@@ -38,6 +39,13 @@ class Texture {
   // formats report "vk-format-unsupported". `array_view` views a single layer as an array.
   static std::optional<Texture> from_dds(const Context& ctx, const fx::DdsTexture& dds, bool array_view,
                                          DiagnosticSink& sink);
+  // A texture whose texels the commands `produce` records write into `texels` (a buffer with
+  // TRANSFER_SRC usage, tightly packed in `desc.format`, row after row, layer after layer or
+  // slice after slice): a compute shader's output, copied into the image in the same
+  // submission, after a barrier from compute writes to the copy. Mip level 0 only.
+  static std::optional<Texture> from_device_texels(const Context& ctx, const ImageDesc& desc, VkBuffer texels,
+                                                   const std::function<void(VkCommandBuffer)>& produce,
+                                                   DiagnosticSink& sink);
   // Whether from_dds can make `dds` on this device (any thread: a format query only).
   static bool can_sample_dds(const Context& ctx, const fx::DdsTexture& dds);
   // A one-texel texture of one colour in the shape a shader samples (1D, 2D, 3D, cube; as an
@@ -72,6 +80,11 @@ class Texture {
   // Creates the image and copies `bytes` into it: into every layer of mip 0, or by `regions`.
   static std::optional<Texture> upload(const Context& ctx, const ImageDesc& desc, const uint8_t* bytes,
                                        size_t byte_count, DiagnosticSink& sink,
+                                       std::span<const VkBufferImageCopy> regions = {});
+  // Creates the image and, in one blocking submission, records `before` (when set) and copies
+  // `source` into it, as upload() says, leaving it in SHADER_READ_ONLY_OPTIMAL.
+  static std::optional<Texture> copied(const Context& ctx, const ImageDesc& desc, VkBuffer source,
+                                       const std::function<void(VkCommandBuffer)>& before, DiagnosticSink& sink,
                                        std::span<const VkBufferImageCopy> regions = {});
   GpuImage owned_;
   VkImageView borrowed_view_ = VK_NULL_HANDLE;
