@@ -13,11 +13,13 @@
 namespace fx::vk {
 namespace {
 
-// Whether a stand-in filled as `fill` says holds anything but zeros.
-bool holds_pattern(StandInFill fill) {
-  return fill.pattern && (fill.element == ScalarKind::float32 || fill.element == ScalarKind::int32 ||
-                          fill.element == ScalarKind::uint32);
+// Whether stand_in_pattern gives `element` anything but zeros.
+bool patterned_kind(ScalarKind element) {
+  return element == ScalarKind::float32 || element == ScalarKind::int32 || element == ScalarKind::uint32;
 }
+
+// Whether a stand-in filled as `fill` says holds anything but zeros.
+bool holds_pattern(StandInFill fill) { return fill.pattern && patterned_kind(fill.element); }
 
 }  // namespace
 
@@ -51,13 +53,12 @@ void EffectStorage::set_texel_view(std::string_view name, VkBufferView view) { t
 
 std::vector<uint32_t> stand_in_pattern(ScalarKind element, size_t words) {
   std::vector<uint32_t> out(words, 0);
-  const bool floats = element == ScalarKind::float32,
-             integers = element == ScalarKind::int32 || element == ScalarKind::uint32;
+  if (!patterned_kind(element)) return out;
   for (size_t i = 0; i < words; ++i) {
-    if (floats) {
+    if (element == ScalarKind::float32) {
       const double golden = double(i) * 0.6180339887498949;
       out[i] = std::bit_cast<uint32_t>(float(2.0 * (golden - std::floor(golden)) - 1.0));
-    } else if (integers) {
+    } else {
       out[i] = uint32_t(i % 64);
     }
   }
