@@ -27,7 +27,7 @@ std::optional<PipelineState> to_pipeline_state(const PassStateSummary& p, const 
   s.depth_bias_constant =
       p.depth_bias_normalized ? float(std::ldexp(double(p.depth_bias), int(target.depth_bits))) : p.depth_bias;
   s.depth_bias_slope = p.depth_bias_slope;
-  s.depth_bias_clamp = features.depth_clamp ? p.depth_bias_clamp : 0.0f;
+  s.depth_bias_clamp = features.depth_bias_clamp ? p.depth_bias_clamp : 0.0f;
   s.depth_bias_enable = s.depth_bias_constant != 0 || s.depth_bias_slope != 0;
   // DepthClipEnable = FALSE: clamping depth instead of clipping is the Vulkan equivalent.
   s.depth_clamp = !p.depth_clip && features.depth_clamp;

@@ -79,6 +79,7 @@ DeviceFeatures features_from(const VkPhysicalDeviceFeatures& core, const VkPhysi
   f.sampler_anisotropy = core.samplerAnisotropy;
   f.fill_mode_non_solid = core.fillModeNonSolid;
   f.depth_clamp = core.depthClamp;
+  f.depth_bias_clamp = core.depthBiasClamp;
   f.independent_blend = core.independentBlend;
   f.geometry_shader = core.geometryShader;
   f.tessellation_shader = core.tessellationShader;
@@ -207,6 +208,7 @@ FeatureChain::FeatureChain(const DeviceSupport& supported) {
   core.samplerAnisotropy = f.sampler_anisotropy;
   core.fillModeNonSolid = f.fill_mode_non_solid;
   core.depthClamp = f.depth_clamp;
+  core.depthBiasClamp = f.depth_bias_clamp;
   core.independentBlend = f.independent_blend;
   core.geometryShader = f.geometry_shader;
   core.tessellationShader = f.tessellation_shader;

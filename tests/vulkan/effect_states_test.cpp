@@ -106,6 +106,46 @@ technique off { pass p0 { )" SHADERS("float4(1, 0, 0, 1)") R"( } pass p1 { ZEnab
   EXPECT_EQ(centre(*off)[2], 255);    // no depth test at all
 }
 
+// DepthBiasClamp reaches the device (it needs the depthBiasClamp feature, which fxkit
+// enables where the device has it). The second quad is drawn 0.001 behind the first; a bias
+// of -10^6 units (at least -0.0019 of the depth range wherever the quad lies beyond 1/32)
+// pulls it in front, and the same bias clamped to -0.0001 leaves it behind.
+TEST_F(EffectStatesTest, DepthBiasClampLimitsTheBias) {
+  if (!ctx().features().depth_bias_clamp) GTEST_SKIP() << "the device has no depthBiasClamp";
+  auto r = bind_text(ctx(), "bias_clamp.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float4 VS(float4 p : POSITION, uniform float behind) : SV_Position {
+  float4 o = mul(p, WorldViewProjection);
+  o.z += behind * o.w;
+  return o;
+}
+float4 Solid(uniform float4 c) : SV_Target { return c; }
+RasterizerState Plain { CullMode = None; };
+RasterizerState Pulled { CullMode = None; DepthBias = -1000000; };
+RasterizerState PulledClamped { CullMode = None; DepthBias = -1000000; DepthBiasClamp = -0.0001; };
+#define FIRST SetRasterizerState(Plain); SetVertexShader(CompileShader(vs_4_0, VS(0))); \
+  SetPixelShader(CompileShader(ps_4_0, Solid(float4(1, 0, 0, 1))));
+#define SECOND(state) SetRasterizerState(state); SetVertexShader(CompileShader(vs_4_0, VS(0.001))); \
+  SetPixelShader(CompileShader(ps_4_0, Solid(float4(0, 0, 1, 1))));
+technique10 pulled { pass p0 { FIRST } pass p1 { SECOND(Pulled) } }
+technique10 clamped { pass p0 { FIRST } pass p1 { SECOND(PulledClamped) } }
+technique10 unbiased { pass p0 { FIRST } pass p1 { SECOND(Plain) } }
+)",
+                     "pulled");
+  ASSERT_TRUE(r);
+  const size_t errors = ctx().validation_error_count();
+  auto pulled = r->render();
+  r->technique = r->effect->find_technique("clamped");
+  auto clamped = r->render();
+  r->technique = r->effect->find_technique("unbiased");
+  auto unbiased = r->render();
+  ASSERT_TRUE(pulled && clamped && unbiased);
+  EXPECT_EQ(ctx().validation_error_count(), errors) << describe_messages(ctx());
+  EXPECT_EQ(centre(*unbiased)[0], 255);  // behind: the first quad stays
+  EXPECT_EQ(centre(*pulled)[2], 255);    // the bias brings the second in front
+  EXPECT_EQ(centre(*clamped)[0], 255);   // the clamped bias does not
+}
+
 TEST_F(EffectStatesTest, StencilWrittenByOnePassMasksTheNext) {
   const std::string mark =
       R"(pass mark { StencilEnable = true; StencilFunc = Always; StencilPass = Replace; StencilRef = 1; ColorWriteEnable = 0; )" SHADERS(

@@ -93,6 +93,18 @@ TEST(PassStateMapping, MissingFeaturesAreReasons) {
   EXPECT_TRUE(to_pipeline_state(mrt, {.color_attachment_count = 2}, f, sink));
 }
 
+// DepthBiasClamp needs depthBiasClamp (not depthClamp); without it Vulkan takes 0, no clamp.
+TEST(PassStateMapping, ABiasClampNeedsTheDepthBiasClampFeature) {
+  PassStateSummary p;
+  p.depth_bias = 100, p.depth_bias_normalized = false, p.depth_bias_clamp = 0.25f;
+  DiagnosticSink sink;
+  DeviceFeatures f;
+  f.depth_clamp = true;
+  EXPECT_EQ(to_pipeline_state(p, {}, f, sink)->depth_bias_clamp, 0.0f);
+  f.depth_bias_clamp = true;
+  EXPECT_EQ(to_pipeline_state(p, {}, f, sink)->depth_bias_clamp, 0.25f);
+}
+
 TEST(PassStateMapping, Samplers) {
   fx::SamplerDesc m;
   m.address = {AddressMode3::clamp_to_border, AddressMode3::mirrored_repeat, AddressMode3::clamp_to_edge};

@@ -71,6 +71,7 @@ struct DeviceFeatures {
   bool sampler_anisotropy = false;
   bool fill_mode_non_solid = false;  // wireframe / point fill modes
   bool depth_clamp = false;
+  bool depth_bias_clamp = false;  // DepthBiasClamp != 0; without it the bias is unclamped
   bool independent_blend = false;
   bool geometry_shader = false;
   bool tessellation_shader = false;
