@@ -136,6 +136,12 @@ bool Technique::compute_pass(uint32_t pass) const {
   return binding && binding->compute_pass(resolve(*effect_, *version, name_), pass);
 }
 
+bool Technique::draw_pass(uint32_t pass) const {
+  auto version = effect_ ? effect_->handle.version() : nullptr;
+  const fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
+  return binding && binding->draw_pass(resolve(*effect_, *version, name_), pass);
+}
+
 bool Technique::dispatch(VkCommandBuffer cmd, uint32_t pass, uint32_t x, uint32_t y, uint32_t z) {
   uint32_t t = 0;
   fx::vk::EffectBinding* binding =

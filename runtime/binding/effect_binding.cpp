@@ -45,6 +45,16 @@ struct EffectBinding::Pass {
   // vertices they hold, registered at the first draw_stream_output().
   std::optional<StreamCapture> capture;
   uint32_t capture_layout = kNoIndex;
+  // A pass that sets a compute shader beside graphics shaders (FX11's Apply binds both; a
+  // draw runs the graphics stages, a dispatch the compute shader): its compute half, with
+  // the same program layout and a ShaderProgram of the compute stage alone.
+  std::unique_ptr<Pass> compute;
+
+  // This pass, or its compute half when it has one: what dispatch() runs (null: neither).
+  Pass* dispatched() {
+    if (compute) return compute.get();
+    return shader.compute_pipeline() ? this : nullptr;
+  }
 
   ~Pass() { resources.reset(); }  // declared first for apply(), it must not outlive the program
 };
@@ -70,6 +80,17 @@ void make_names_unique(ProgramLayout& layout) {
   for (ProgramBinding& b : layout.bindings)
     if (seen[b.name]++ > 0) b.name.append("@").append(std::to_string(b.binding));
 }
+
+// The bindings of `layout` that a stage of `stage_mask` uses: a pass's graphics stages and
+// its compute shader each get a descriptor layout of their own resources.
+ProgramLayout used_by(const ProgramLayout& layout, uint32_t stage_mask) {
+  ProgramLayout out;
+  for (const ProgramBinding& b : layout.bindings)
+    if (b.stage_mask & stage_mask) out.bindings.push_back(b);
+  return out;
+}
+
+constexpr uint32_t kComputeStage = 1u << uint32_t(ShaderStage::compute);
 
 // `int StreamOutVertices = N;` on a stream-output pass: the vertices each buffer holds.
 uint32_t stream_out_vertices(const PassInfo& pass) {
@@ -116,7 +137,28 @@ struct EffectBinding::Builder {
   bool program(Pass& pass, const PassInfo& info, std::string& reason);
   // The pass's uniform blocks laid out in the store, each under a block id of its own.
   void uniform_blocks(Pass& pass, const PassInfo& info);
+  // The compute half of a pass that also draws: `pass.compute` made from `stage`.
+  bool compute_half(Pass& pass, const PassInfo& info, const CompiledShader& stage, std::string& reason);
 };
+
+// Whether `holds` holds for some pass of some technique or the compute half of one, tried
+// in order up to the first that does.
+template <class Techniques, class Predicate>
+bool any_pass(Techniques& techniques, Predicate holds) {
+  for (auto& tech : techniques)
+    for (auto& pass : tech->passes)
+      if (holds(*pass) || (pass->compute && holds(*pass->compute))) return true;
+  return false;
+}
+
+// Visits every pass of every technique and the compute half of one that has it.
+template <class Techniques, class Visit>
+void for_each_pass(Techniques& techniques, Visit visit) {
+  any_pass(techniques, [&](auto& pass) {
+    visit(pass);
+    return false;
+  });
+}
 
 namespace {
 
@@ -166,6 +208,7 @@ std::unique_ptr<EffectBinding> EffectBinding::create(const Context& ctx, const E
     if (!tech) return nullptr;
     b->techniques_.push_back(std::move(tech));
   }
+  b->find_written_buffers();
   b->update_object_count();
   return b;
 }
@@ -200,6 +243,12 @@ std::unique_ptr<EffectBinding::Pass> EffectBinding::Builder::pass(uint32_t t, ui
   // Images and samplers: sampler states -> cached samplers, textures resolved (baked,
   // decoded) now, uploaded at the first begin().
   if (!resolve_pass_images(images, info, out->shader, notes, out->images, reason, sink)) return nullptr;
+  if (Pass* half = out->compute.get()) {
+    half->resources = std::make_unique<PassResources>(half->shader);
+    half->resources->keep_sets_in(b.descriptor_sets_);
+    uniform_blocks(*half, info);
+    if (!resolve_pass_images(images, info, half->shader, notes, half->images, reason, sink)) return nullptr;
+  }
   return out;
 }
 
@@ -233,7 +282,14 @@ bool EffectBinding::Builder::program(Pass& pass, const PassInfo& info, std::stri
   pass.layout = pass.program->layout;
   make_names_unique(pass.layout);
   std::vector<const CompiledShader*> stages;
-  for (const StageProgram& s : pass.program->stages) stages.push_back(&s.shader);
+  const CompiledShader* compute = nullptr;
+  for (const StageProgram& s : pass.program->stages)
+    (s.shader.reflection.stage == ShaderStage::compute ? compute : stages.emplace_back()) = &s.shader;
+  if (compute && stages.empty()) stages.push_back(compute);
+  else if (compute) {
+    if (!compute_half(pass, info, *compute, reason)) return false;
+    pass.layout = used_by(pass.layout, ~kComputeStage);
+  }
   auto shader = ShaderProgram::create(ctx, stages, pass.layout, desc.descriptors, pass_sink);
   if (!shader) {
     reason = "pass '" + info.name + "': " + first_message(pass_sink, "program");
@@ -249,6 +305,22 @@ bool EffectBinding::Builder::program(Pass& pass, const PassInfo& info, std::stri
     return false;
   }
   pass.state = with_patches(*state, points);
+  return true;
+}
+
+bool EffectBinding::Builder::compute_half(Pass& pass, const PassInfo& info, const CompiledShader& stage,
+                                          std::string& reason) {
+  auto half = std::make_unique<Pass>();
+  half->program = pass.program;
+  half->layout = used_by(pass.layout, kComputeStage);
+  DiagnosticSink made;
+  auto shader = ShaderProgram::create(ctx, {&stage}, half->layout, desc.descriptors, made);
+  if (!shader) {
+    reason = "pass '" + info.name + "', its compute shader: " + first_message(made, "program");
+    return false;
+  }
+  half->shader = std::move(*shader);
+  pass.compute = std::move(half);
   return true;
 }
 
@@ -315,99 +387,110 @@ bool EffectBinding::set_texture(std::string_view texture, VkImageView view, VkIm
   return true;
 }
 
+namespace {
+
+// Whether some pass of `techniques` lists a resource named `name` in `(pass.shader.*list)()`
+// (with `kind` among them, when given); "vk-resource-unknown" when none does.
+template <class Techniques, class List>
+bool some_pass_uses(Techniques& techniques, List list, std::string_view name, std::string_view what,
+                    DiagnosticSink& sink, std::optional<DescriptorKind> kind = std::nullopt) {
+  const bool used = any_pass(techniques, [&](const auto& pass) {
+    return std::ranges::any_of((pass.shader.*list)(), [&](const auto& r) {
+      if constexpr (requires { r.kind; })
+        if (kind && r.kind != *kind) return false;
+      return r.name == name;
+    });
+  });
+  if (!used)
+    sink.error("vk-resource-unknown", {},
+               "no pass of the effect uses a " + std::string(what) + " '" + std::string(name) + "'");
+  return used;
+}
+
+}  // namespace
+
 bool EffectBinding::set_buffer(std::string_view name, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range,
                                DiagnosticSink& sink) {
-  for (const auto& tech : techniques_)
-    for (const auto& pass : tech->passes)
-      for (const ProgramStorageBuffer& b : pass->shader.storage_buffers())
-        if (b.name == name) {
-          storage_.set_buffer(name, buffer, offset, range);
-          textures_pending_ = true;
-          return true;
-        }
-  sink.error("vk-resource-unknown", {}, "no pass of the effect uses a storage buffer '" + std::string(name) + "'");
-  return false;
+  if (!some_pass_uses(techniques_, &ShaderProgram::storage_buffers, name, "storage buffer", sink)) return false;
+  storage_.set_buffer(name, buffer, offset, range);
+  textures_pending_ = true;
+  return true;
 }
 
 bool EffectBinding::set_storage_image(std::string_view name, VkImageView view, DiagnosticSink& sink) {
-  for (const auto& tech : techniques_)
-    for (const auto& pass : tech->passes)
-      for (const ProgramImage& image : pass->shader.images())
-        if (image.kind == DescriptorKind::storage_image && image.name == name) {
-          storage_.set_image(name, view);
-          textures_pending_ = true;
-          return true;
-        }
-  sink.error("vk-resource-unknown", {}, "no pass of the effect uses a storage image '" + std::string(name) + "'");
-  return false;
+  if (!some_pass_uses(techniques_, &ShaderProgram::images, name, "storage image", sink, DescriptorKind::storage_image))
+    return false;
+  storage_.set_image(name, view);
+  textures_pending_ = true;
+  return true;
 }
 
 bool EffectBinding::set_texel_buffer(std::string_view name, VkBufferView view, DiagnosticSink& sink) {
-  for (const auto& tech : techniques_)
-    for (const auto& pass : tech->passes)
-      for (const ProgramTexelBuffer& t : pass->shader.texel_buffers())
-        if (t.name == name) {
-          storage_.set_texel_view(name, view);
-          textures_pending_ = true;
-          return true;
-        }
-  sink.error("vk-resource-unknown", {}, "no pass of the effect uses a texel buffer '" + std::string(name) + "'");
-  return false;
+  if (!some_pass_uses(techniques_, &ShaderProgram::texel_buffers, name, "texel buffer", sink)) return false;
+  storage_.set_texel_view(name, view);
+  textures_pending_ = true;
+  return true;
+}
+
+void EffectBinding::find_written_buffers() {
+  for_each_pass(techniques_, [&](const Pass& pass) {
+    for (const ProgramStorageBuffer& b : pass.shader.storage_buffers())
+      if (b.written) written_.push_back(b.name);
+    for (const ProgramTexelBuffer& t : pass.shader.texel_buffers())
+      if (t.kind == DescriptorKind::storage_texel_buffer) written_.push_back(t.name);
+  });
+  std::sort(written_.begin(), written_.end());
+  written_.erase(std::unique(written_.begin(), written_.end()), written_.end());
 }
 
 bool EffectBinding::written_by_a_pass(std::string_view name) const {
-  for (const auto& tech : techniques_)
-    for (const auto& pass : tech->passes) {
-      for (const ProgramStorageBuffer& b : pass->shader.storage_buffers())
-        if (b.name == name && b.written) return true;
-      for (const ProgramTexelBuffer& t : pass->shader.texel_buffers())
-        if (t.name == name && t.kind == DescriptorKind::storage_texel_buffer) return true;
-    }
-  return false;
+  return std::binary_search(written_.begin(), written_.end(), name, std::less<>());
 }
 
 bool EffectBinding::bind_textures(DiagnosticSink& sink) {
   // Previews fill the buffers no pass writes with a pattern, so what reads them varies.
   const bool preview = textures_->preview_stand_ins();
-  for (auto& tech : techniques_)
-    for (auto& pass : tech->passes) {
-      pass->resources->rewrite_sets();  // set_texture's view may have another's handle
-      for (const ProgramStorageBuffer& b : pass->shader.storage_buffers()) {
-        const StandInFill fill{preview && !written_by_a_pass(b.name), b.element};
-        std::optional<VkDescriptorBufferInfo> info = storage_.buffer(b.name, sink, fill);
-        if (!info || !pass->resources->bind_buffer(b.name, info->buffer, info->offset, info->range, sink)) return false;
-      }
-      for (const ProgramTexelBuffer& t : pass->shader.texel_buffers()) {
-        const uint32_t param = model_->find_parameter(t.name);
-        const VkFormat format =
-            param != kNoIndex ? storage_image_format(model_->parameters[param].type.element) : VK_FORMAT_UNDEFINED;
-        const StandInFill fill{preview && !written_by_a_pass(t.name), storage_format_scalar(format)};
-        const VkBufferView view = storage_.texel_view(t.name, format, sink, fill);
-        if (!view || !pass->resources->bind_texel_buffer(t.name, view, sink)) return false;
-      }
-      for (ImageSlot& slot : pass->images) {
-        if (slot.kind == DescriptorKind::storage_image) {
-          const VkImageView view =
-              storage_.image(slot.name, slot.storage_format, slot.storage_shape, storage_extent_, sink);
-          const ImageKind kind = slot.storage_shape ? slot.storage_shape->kind : ImageKind::image2d;
-          if (!view || !pass->resources->bind(slot.name, Texture::wrap(view, VK_IMAGE_LAYOUT_GENERAL, kind),
-                                              VK_NULL_HANDLE, sink))
-            return false;
-          continue;
-        }
-        if (slot.kind == DescriptorKind::sampler) {
-          if (!pass->resources->bind_sampler(slot.name, slot.sampler, sink)) return false;
-          continue;
-        }
-        const Texture* texture = nullptr;
-        for (const auto& [param, app] : app_textures_)
-          if (param == slot.texture_param) texture = &app;
-        if (!texture && slot.fill != kNoIndex) texture = fills_.texture(slot.fill, sink);
-        if (!texture) texture = textures_->gpu(*slot.data, sink);
-        if (!texture || !pass->resources->bind(slot.name, *texture, slot.sampler, sink)) return false;
-      }
-    }
+  if (any_pass(techniques_, [&](Pass& pass) { return !bind_pass_resources(pass, preview, sink); })) return false;
   textures_pending_ = false;
+  return true;
+}
+
+bool EffectBinding::bind_pass_resources(Pass& pass, bool preview, DiagnosticSink& sink) {
+  pass.resources->rewrite_sets();  // set_texture's view may have another's handle
+  for (const ProgramStorageBuffer& b : pass.shader.storage_buffers()) {
+    const StandInFill fill{preview && !written_by_a_pass(b.name), b.element};
+    std::optional<VkDescriptorBufferInfo> info = storage_.buffer(b.name, sink, fill);
+    if (!info || !pass.resources->bind_buffer(b.name, info->buffer, info->offset, info->range, sink)) return false;
+  }
+  for (const ProgramTexelBuffer& t : pass.shader.texel_buffers()) {
+    const uint32_t param = model_->find_parameter(t.name);
+    const VkFormat format =
+        param != kNoIndex ? storage_image_format(model_->parameters[param].type.element) : VK_FORMAT_UNDEFINED;
+    const StandInFill fill{preview && !written_by_a_pass(t.name), storage_format_scalar(format)};
+    const VkBufferView view = storage_.texel_view(t.name, format, sink, fill);
+    if (!view || !pass.resources->bind_texel_buffer(t.name, view, sink)) return false;
+  }
+  for (ImageSlot& slot : pass.images) {
+    if (slot.kind == DescriptorKind::storage_image) {
+      const VkImageView view =
+          storage_.image(slot.name, slot.storage_format, slot.storage_shape, storage_extent_, sink);
+      const ImageKind kind = slot.storage_shape ? slot.storage_shape->kind : ImageKind::image2d;
+      if (!view ||
+          !pass.resources->bind(slot.name, Texture::wrap(view, VK_IMAGE_LAYOUT_GENERAL, kind), VK_NULL_HANDLE, sink))
+        return false;
+      continue;
+    }
+    if (slot.kind == DescriptorKind::sampler) {
+      if (!pass.resources->bind_sampler(slot.name, slot.sampler, sink)) return false;
+      continue;
+    }
+    const Texture* texture = nullptr;
+    for (const auto& [param, app] : app_textures_)
+      if (param == slot.texture_param) texture = &app;
+    if (!texture && slot.fill != kNoIndex) texture = fills_.texture(slot.fill, sink);
+    if (!texture) texture = textures_->gpu(*slot.data, sink);
+    if (!texture || !pass.resources->bind(slot.name, *texture, slot.sampler, sink)) return false;
+  }
   return true;
 }
 
@@ -587,7 +670,12 @@ bool EffectBinding::no_pass_that_runs(uint32_t technique, uint32_t pass, std::st
 
 bool EffectBinding::compute_pass(uint32_t technique, uint32_t pass) const {
   return technique_ok(technique) && pass < techniques_[technique]->passes.size() &&
-         techniques_[technique]->passes[pass]->shader.compute_pipeline() != VK_NULL_HANDLE;
+         techniques_[technique]->passes[pass]->dispatched();
+}
+
+bool EffectBinding::draw_pass(uint32_t technique, uint32_t pass) const {
+  return technique_ok(technique) && pass < techniques_[technique]->passes.size() &&
+         !techniques_[technique]->passes[pass]->shader.compute_pipeline();
 }
 
 std::array<uint32_t, 3> EffectBinding::dispatch_groups(uint32_t technique, uint32_t pass, uint32_t width,
@@ -600,7 +688,7 @@ std::array<uint32_t, 3> EffectBinding::dispatch_groups(uint32_t technique, uint3
         groups[d] = uint32_t(std::clamp(a.value.components[d], 1.0, 65535.0));
       return groups;
     }
-  const uint32_t* local = techniques_[technique]->passes[pass]->shader.local_size();
+  const uint32_t* local = techniques_[technique]->passes[pass]->dispatched()->shader.local_size();
   groups[0] = (std::max(width, 1u) + local[0] - 1) / local[0];
   groups[1] = (std::max(height, 1u) + local[1] - 1) / local[1];
   return groups;
@@ -614,7 +702,7 @@ bool EffectBinding::dispatch(VkCommandBuffer cmd, uint32_t technique, uint32_t p
   }
   if (!compute_pass(technique, pass_index)) return no_pass_that_runs(technique, pass_index, "compute", sink);
   if (textures_pending_ && !bind_textures(sink)) return false;
-  Pass& pass = *techniques_[technique]->passes[pass_index];
+  Pass& pass = *techniques_[technique]->passes[pass_index]->dispatched();
   bool moved = false;
   if (!write_blocks(pass, moved, sink)) return false;
   PassDesc desc{&pass.shader, pass.state, nullptr, pass.resources.get(), VK_NULL_HANDLE, pass.ring_offsets};
@@ -635,22 +723,24 @@ bool EffectBinding::dispatch_compute_passes(VkCommandBuffer cmd, uint32_t techni
 bool EffectBinding::computes_only(uint32_t technique) const {
   if (!technique_ok(technique) || pass_count(technique) == 0) return false;
   for (uint32_t p = 0; p < pass_count(technique); ++p)
-    if (!compute_pass(technique, p)) return false;
+    if (draw_pass(technique, p)) return false;
   return true;
 }
 
 std::optional<EffectBinding::ComputeOutput> EffectBinding::compute_output(uint32_t technique, DiagnosticSink& sink) {
   if (!technique_ok(technique)) return std::nullopt;
   constexpr uint32_t kWordsPerRow = 64;
-  for (const auto& pass : techniques_[technique]->passes) {
-    if (!pass->shader.compute_pipeline()) continue;
+  for (const auto& drawn : techniques_[technique]->passes) {
+    const Pass* pass = drawn->dispatched();
+    if (!pass) continue;
     for (const ImageSlot& slot : pass->images)
       if (slot.kind == DescriptorKind::storage_image)
         if (std::optional<StorageTexels> texels = storage_.read_image(slot.name, sink))
           return ComputeOutput{slot.name, false, texel_picture(*texels)};
   }
-  for (const auto& pass : techniques_[technique]->passes) {
-    if (!pass->shader.compute_pipeline()) continue;
+  for (const auto& drawn : techniques_[technique]->passes) {
+    const Pass* pass = drawn->dispatched();
+    if (!pass) continue;
     for (const ProgramStorageBuffer& b : pass->shader.storage_buffers())
       if (b.written)
         if (std::optional<std::vector<uint32_t>> words = storage_.read_buffer(b.name))
@@ -757,9 +847,9 @@ size_t EffectBinding::pipeline_count() const { return pipelines_->size(); }
 void EffectBinding::update_object_count() {
   // + the VkPipelineCache and the descriptor pools of the kept sets
   int64_t owned = 1 + int64_t(pipelines_->size()) + int64_t(samplers_.size()) + int64_t(descriptor_sets_.pool_count());
-  for (const auto& tech : techniques_)
-    for (const auto& pass : tech->passes)
-      owned += int64_t(pass->shader.stage_infos().size()) + 2;  // modules, set and pipeline layout
+  for_each_pass(techniques_, [&](const Pass& pass) {
+    owned += int64_t(pass.shader.stage_infos().size()) + 2;  // modules, set and pipeline layout
+  });
   live_objects_ += owned - counted_objects_;
   counted_objects_ = owned;
 }

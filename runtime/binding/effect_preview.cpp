@@ -134,7 +134,7 @@ bool EffectPreview::record_passes(VkCommandBuffer cmd, EffectBinding& binding, u
     bool mesh_bound = false;  // a draw of captured vertices binds vertex buffer 0 to them
     for (uint32_t d = 0; d < draws && recorded; ++d) {
       for (uint32_t p = 0; p < binding.pass_count(technique) && recorded; ++p) {
-        if (binding.compute_pass(technique, p) || binding.stream_output_pass(technique, p)) continue;
+        if (!binding.draw_pass(technique, p) || binding.stream_output_pass(technique, p)) continue;
         if (const uint32_t source = binding.stream_output_source(technique, p); source != kNoIndex) {
           recorded = binding.draw_stream_output(cmd, p, source, sink);
           mesh_bound = false;

@@ -821,6 +821,58 @@ technique one { pass p0 { CullMode = None; VertexShader = compile vs_2_0 VS(); P
   EXPECT_EQ(ctx().validation_error_count(), 0u) << describe_messages(ctx());
 }
 
+// FX11's Apply binds every shader a pass sets: a pass with a compute shader beside its vertex
+// and pixel shaders is dispatched (its compute shader) and applied (its graphics stages). The
+// draw reads the buffer the same pass's dispatch wrote; each half has only its own resources.
+TEST_F(PublicApiTest, APassWithComputeAndGraphicsShadersIsDispatchedAndApplied) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  fxkit::Effect effect = r.device->load(write_effect("api_compute_beside_graphics.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float Green = 0.5;
+RWStructuredBuffer<float4> Colors;
+StructuredBuffer<float4> Read;
+[numthreads(2, 1, 1)] void Simulate(uint3 id : SV_DispatchThreadID) { Colors[id.x] = float4(0.5 * id.x, 0.25, 1, 1); }
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target { return float4(Read[1].x, Green, Read[1].z, 1); }
+technique11 T { pass P {
+  SetVertexShader(CompileShader(vs_5_0, VS()));
+  SetPixelShader(CompileShader(ps_5_0, PS()));
+  SetComputeShader(CompileShader(cs_5_0, Simulate()));
+} }
+)"));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  fx::DiagnosticSink sink;
+  auto buffer = fx::vk::Buffer::create(
+      ctx(), {32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, fx::vk::MemoryUsage::readback, "test colours"}, sink);
+  ASSERT_TRUE(buffer);
+  EXPECT_TRUE(effect.set_buffer("Colors", buffer->handle()));
+  EXPECT_TRUE(effect.set_buffer("Read", buffer->handle()));
+  fxkit::Technique technique = effect.technique("T");
+  ASSERT_TRUE(technique.valid()) << technique.reason();
+  EXPECT_TRUE(technique.compute_pass(0));
+  EXPECT_TRUE(technique.draw_pass(0));
+
+  r.device->begin_frame();
+  bool dispatched = false, drawn = false;
+  ASSERT_TRUE(r.device->submit([&](VkCommandBuffer cmd) {
+    dispatched = technique.dispatch(cmd, 0, 1);
+    r.image->begin(cmd);
+    if (technique.begin(cmd, r.image->viewport(), r.image->scissor()) && technique.apply(0))
+      r.mesh->draw(cmd), drawn = true;
+    technique.end();
+    r.image->end(cmd);
+  }));
+  EXPECT_TRUE(dispatched) << text(effect.messages());
+  EXPECT_TRUE(drawn) << text(effect.messages());
+  const std::array<uint8_t, 3> centre = r.centre();
+  EXPECT_NEAR(centre[0], 128, 1);  // Read[1] = (0.5, 0.25, 1), written by the dispatch
+  EXPECT_NEAR(centre[1], 128, 1);  // Green, the pixel shader's uniform
+  EXPECT_EQ(centre[2], 255);
+  EXPECT_EQ(ctx().validation_error_count(), 0u) << describe_messages(ctx());
+}
+
 // FX11's "simulate, then draw" through the public API: the application's buffer is bound to
 // the compute pass's RWStructuredBuffer and to the draw's StructuredBuffer (one buffer, two
 // views, as an engine binds a UAV and an SRV of it); the compute pass is dispatched before
@@ -853,6 +905,8 @@ technique11 T {
   ASSERT_TRUE(technique.valid()) << technique.reason();
   EXPECT_TRUE(technique.compute_pass(0));
   EXPECT_FALSE(technique.compute_pass(1));
+  EXPECT_FALSE(technique.draw_pass(0));
+  EXPECT_TRUE(technique.draw_pass(1));
 
   r.device->begin_frame();
   bool dispatched = false, refused = false, drawn = false;

@@ -235,6 +235,26 @@ technique11 T {
   EXPECT_NEAR(centre[2], 128, 1);
 }
 
+// A pass that sets a compute shader beside its vertex and pixel shaders (FX11 binds all three
+// at Apply): a preview dispatches it before it draws the pass, as it does a compute pass.
+TEST_F(EffectRenderTest, APassWithComputeBesideGraphicsShadersDispatchesThenDraws) {
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_compute_beside_graphics", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+RWStructuredBuffer<float4> Colors;
+[numthreads(4, 1, 1)] void Simulate(uint3 id : SV_DispatchThreadID) { Colors[id.x] = float4(0.25 * id.x, 1, 0.5, 1); }
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target { return Colors[2]; }
+technique11 T { pass P < int3 Dispatch = {1, 1, 1}; > {
+  SetVertexShader(CompileShader(vs_5_0, VS()));
+  SetPixelShader(CompileShader(ps_5_0, PS()));
+  SetComputeShader(CompileShader(cs_5_0, Simulate()));
+} }
+)");
+  EXPECT_NEAR(centre[0], 128, 1);  // element 2 of the 4 the dispatch wrote
+  EXPECT_EQ(centre[1], 255);
+  EXPECT_NEAR(centre[2], 128, 1);
+}
+
 // fxc's asuint(double, out uint, out uint) gives the exact bits of a double (fxkit defines the
 // overload glslang lacks): hard cases, each built from its bits or computed in double, must
 // give back those bits. The sphere is green when every case does, red otherwise.

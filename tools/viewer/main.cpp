@@ -247,7 +247,7 @@ int main(int argc, char** argv) {
         timer.mark(frame.cmd);
         if (technique.stream_output_pass(pass)) captured = pass;
         else if (captured != UINT32_MAX) technique.draw_stream_output(frame.cmd, pass, captured);
-        else if (!technique.compute_pass(pass) && technique.apply(pass)) mesh->draw(frame.cmd);
+        else if (technique.draw_pass(pass) && technique.apply(pass)) mesh->draw(frame.cmd);
         timer.mark(frame.cmd);
       }
     }

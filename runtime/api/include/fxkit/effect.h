@@ -174,8 +174,12 @@ class Technique {
   }
   // Ends the recording; the next begin() assumes nothing is bound.
   void end();
-  // Whether pass `pass` runs a compute shader (SetComputeShader): dispatch() it, not apply().
+  // Whether pass `pass` runs a compute shader (SetComputeShader): dispatch() it.
   bool compute_pass(uint32_t pass) const;
+  // Whether pass `pass` has graphics shaders: apply() it (a stream-output pass is captured).
+  // A pass that sets a compute shader beside them, as FX11 allows, is both: dispatch() runs
+  // its compute shader, apply() its graphics stages.
+  bool draw_pass(uint32_t pass) const;
   // Records compute pass `pass` into `cmd` with x * y * z workgroups, outside the
   // application's rendering and outside begin()/end(), followed by the barrier that makes
   // its buffer and image writes visible to every draw and dispatch recorded after it

@@ -101,8 +101,12 @@ class EffectBinding {
   // The application's buffer view for the texel buffer `name` (Buffer<T>, RWBuffer<T>),
   // instead of a view of a zeroed stand-in in the element's format.
   bool set_texel_buffer(std::string_view name, VkBufferView view, DiagnosticSink& sink);
-  // Whether pass `pass` of `technique` runs a compute shader (dispatch() it; apply() refuses).
+  // Whether pass `pass` of `technique` runs a compute shader: dispatch() it.
   bool compute_pass(uint32_t technique, uint32_t pass) const;
+  // Whether pass `pass` has graphics shaders: apply() draws with it (begin_capture() for a
+  // stream-output pass). A pass that sets a compute shader beside them (FX11 binds both at
+  // Apply, then the application draws or dispatches) is a compute pass and a draw pass.
+  bool draw_pass(uint32_t technique, uint32_t pass) const;
   // The workgroup counts a preview dispatches compute pass `pass` with: the pass's
   // `Dispatch` annotation (`int3 Dispatch = {64, 1, 1};`, missing counts 1), else one thread
   // per pixel of a `width` x `height` target (ceil(width / numthreads.x), ceil(height /
@@ -206,6 +210,10 @@ class EffectBinding {
   struct Builder;  // create()'s steps
   EffectBinding(const Context& ctx, ParameterStore& params, EffectTextureCache& textures);
   bool bind_textures(DiagnosticSink& sink);
+  // bind_textures() for one pass (or compute half); `preview` fills unwritten buffers.
+  bool bind_pass_resources(Pass& pass, bool preview, DiagnosticSink& sink);
+  // The storage and texel buffers some pass writes (written_), sorted: made once by create().
+  void find_written_buffers();
   // Whether some pass writes the storage or texel buffer `name` (a stand-in it only reads
   // may hold a preview pattern).
   bool written_by_a_pass(std::string_view name) const;
@@ -243,6 +251,7 @@ class EffectBinding {
   EffectStorage storage_;
   TextureFills fills_;  // textures the effect's texture shaders fill, at the first bind
   VkExtent2D storage_extent_{};
+  std::vector<std::string> written_;  // find_written_buffers()
   bool textures_pending_ = true;
   RenderingFormats formats_;   // of the begun technique
   Pass* capturing_ = nullptr;  // the pass begin_capture() began, until end_capture()
