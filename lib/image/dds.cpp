@@ -113,7 +113,9 @@ uint32_t mip_extent(uint32_t size, uint32_t mip) { return std::max(1u, size >> m
 
 std::optional<DxgiFormatInfo> dxgi_format_info(uint32_t format) {
   switch (DxgiFormat(format)) {
-    case DxgiFormat::r32g32b32a32_float: return DxgiFormatInfo{false, 16};
+    case DxgiFormat::r32g32b32a32_float:
+    case DxgiFormat::r32g32b32a32_uint:
+    case DxgiFormat::r32g32b32a32_sint: return DxgiFormatInfo{false, 16};
     case DxgiFormat::r16g16b16a16_float:
     case DxgiFormat::r16g16b16a16_unorm:
     case DxgiFormat::r32g32_float: return DxgiFormatInfo{false, 8};

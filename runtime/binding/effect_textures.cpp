@@ -196,6 +196,13 @@ std::shared_ptr<const EffectTextureData> EffectTextureCache::multisampled_stand_
   return keep(stand_in(StandIn::multisampled, ImageDim::dim_2d, arrayed));
 }
 
+std::shared_ptr<const EffectTextureData> EffectTextureCache::integer_stand_in(ScalarKind sampled, ImageDim dim,
+                                                                              bool arrayed) {
+  const StandIn kind = sampled == ScalarKind::int32 ? StandIn::signed_zero : StandIn::unsigned_zero;
+  if (auto hit = cached(stand_in_key(kind, dim, arrayed))) return hit;
+  return keep(stand_in(kind, dim, arrayed));
+}
+
 std::shared_ptr<const EffectTextureData> EffectTextureCache::cached(const std::string& key) const {
   std::lock_guard<std::mutex> lock(mutex_);
   auto it = cpu_.find(key);

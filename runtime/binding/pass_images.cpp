@@ -63,6 +63,8 @@ std::shared_ptr<const EffectTextureData> image_data(const ImageSources& from, co
   // No file fills a multisampled image: a white one stands in until set_texture() binds
   // the application's multisampled view.
   if (image.multisampled) return textures.multisampled_stand_in(image.arrayed);
+  // Texture2D<int> and <uint> need an integer view: zeros until set_texture() binds one.
+  if (image.sampled != ScalarKind::float32) return textures.integer_stand_in(image.sampled, image.dim, image.arrayed);
   const TextureInfo* tex = texture_param != kNoIndex ? from.model.texture_of(texture_param) : nullptr;
   if (!tex) {
     sink.warning("vk-texture-unresolved", pass.range,
@@ -116,7 +118,8 @@ bool resolve_pass_images(const ImageSources& from, const PassInfo& pass, const S
         return false;
       }
       // A texture shader's texture replaces the stand-in (slot.data) when its fill runs.
-      if (slot.texture_param != kNoIndex && !image.shadow && !image.multisampled)
+      if (slot.texture_param != kNoIndex && !image.shadow && !image.multisampled &&
+          image.sampled == ScalarKind::float32)
         slot.fill = from.fills.add(from.model, slot.texture_param, image.dim, image.arrayed, from.programs, sink);
     }
     out.push_back(std::move(slot));

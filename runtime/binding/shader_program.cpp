@@ -215,7 +215,7 @@ std::optional<ShaderProgram> ShaderProgram::create(const Context& ctx, const std
         for (const ImageBinding& i : s->reflection.images)
           if (i.binding == b.binding)
             image.dim = i.dim, image.arrayed = i.arrayed, image.shadow |= i.shadow,
-            image.multisampled |= i.multisampled;
+            image.multisampled |= i.multisampled, image.sampled = i.sampled;
       p.images_.push_back(image);
     }
   }

@@ -72,6 +72,23 @@ Rgb environment(const std::array<float, 3>& d) {
   return mix(base, hue(compass), 0.25f * (1.0f - std::abs(d[1])));  // none at the poles
 }
 
+// One texel (a face each for a cube) of four 32-bit zeros, in the shape `dim`.
+fx::DdsTexture integer_zeros(fx::DxgiFormat format, ImageDim dim) {
+  fx::DdsTexture t;
+  t.format = format;
+  t.width = t.height = t.depth = 1;
+  t.shape = dim == ImageDim::dim_1d   ? fx::DdsShape::texture1d
+            : dim == ImageDim::dim_3d ? fx::DdsShape::volume
+            : dim == ImageDim::cube   ? fx::DdsShape::cube
+                                      : fx::DdsShape::texture2d;
+  if (dim == ImageDim::cube) t.layers = 6;
+  constexpr uint64_t kTexel = 16;
+  t.data.assign(kTexel * t.layers, 0);
+  for (uint32_t layer = 0; layer < t.layers; ++layer)
+    t.subresources.push_back({layer, 0, 1, 1, 1, layer * kTexel, kTexel});
+  return t;
+}
+
 }  // namespace
 
 StandIn texture_stand_in(const Parameter* param, ImageDim dim, bool preview) {
@@ -99,11 +116,15 @@ const char* stand_in_name(StandIn kind) {
     case StandIn::test_pattern: return "colour test pattern";
     case StandIn::depth_ramp: return "ramp of depths";
     case StandIn::environment: return "sky-and-ground environment";
+    case StandIn::signed_zero: return "zero signed-integer texture";
+    case StandIn::unsigned_zero: return "zero unsigned-integer texture";
     default: return "white texture";
   }
 }
 
 fx::DdsTexture stand_in_texels(StandIn kind, ImageDim dim) {
+  if (kind == StandIn::signed_zero) return integer_zeros(fx::DxgiFormat::r32g32b32a32_sint, dim);
+  if (kind == StandIn::unsigned_zero) return integer_zeros(fx::DxgiFormat::r32g32b32a32_uint, dim);
   fx::DdsTexture t;
   if (kind != StandIn::test_pattern && kind != StandIn::depth_ramp && kind != StandIn::environment) return t;
   t.format = fx::DxgiFormat::r8g8b8a8_unorm;

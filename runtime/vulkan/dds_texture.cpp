@@ -9,6 +9,8 @@ namespace {
 VkFormat vk_format(DxgiFormat f) {
   switch (f) {
     case DxgiFormat::r32g32b32a32_float: return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case DxgiFormat::r32g32b32a32_uint: return VK_FORMAT_R32G32B32A32_UINT;
+    case DxgiFormat::r32g32b32a32_sint: return VK_FORMAT_R32G32B32A32_SINT;
     case DxgiFormat::r16g16b16a16_float: return VK_FORMAT_R16G16B16A16_SFLOAT;
     case DxgiFormat::r16g16b16a16_unorm: return VK_FORMAT_R16G16B16A16_UNORM;
     case DxgiFormat::r32g32_float: return VK_FORMAT_R32G32_SFLOAT;

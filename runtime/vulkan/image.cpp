@@ -32,6 +32,10 @@ bool is_depth_format(VkFormat format) {
   }
 }
 
+bool is_integer_format(VkFormat format) {
+  return format == VK_FORMAT_R32G32B32A32_UINT || format == VK_FORMAT_R32G32B32A32_SINT;
+}
+
 bool has_stencil(VkFormat format) {
   return format == VK_FORMAT_S8_UINT || format == VK_FORMAT_D16_UNORM_S8_UINT ||
          format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT;

@@ -68,13 +68,14 @@ std::optional<Texture> Texture::from_device_texels(const Context& ctx, const Ima
 std::optional<Texture> Texture::copied(const Context& ctx, const ImageDesc& desc, VkBuffer source,
                                        const std::function<void(VkCommandBuffer)>& before, DiagnosticSink& sink,
                                        std::span<const VkBufferImageCopy> regions) {
-  // Depth textures are compared, not filtered: sampling them is enough.
+  // Depth textures are compared and integer ones loaded, not filtered: sampling them is enough.
   const bool depth = is_depth_format(desc.format);
+  const bool filtered = !depth && !is_integer_format(desc.format);
   if (!ctx.supports_format(desc.format, VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
-                                            (depth ? 0 : VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))) {
+                                            (filtered ? VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT : 0))) {
     sink.error("vk-format-unsupported", {},
                "the device cannot sample format " + std::to_string(int(desc.format)) +
-                   (depth ? "" : " with linear filtering"));
+                   (filtered ? " with linear filtering" : ""));
     return std::nullopt;
   }
   std::optional<GpuImage> image = GpuImage::create(ctx, desc, sink);

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "compile_test_util.h"
 #include "fx/compile/spirv_cache.h"
@@ -99,6 +100,38 @@ TEST(SpirvCache, DiskEntriesSurviveAProcessAndRoundTripReflection) {
   }
   ASSERT_EQ(loaded.reflection.inputs.size(), 2u);
   EXPECT_EQ(loaded.reflection.inputs[1].semantic, "TEXCOORD0");
+  std::filesystem::remove_all(dir);
+}
+
+// What a texture read returns (Texture2D<uint>, <int>, <float4>) is reflected and kept in
+// the disk entry: the binding needs it to give integer textures integer views.
+TEST(SpirvCache, TheSampledTypeOfTexturesRoundTrips) {
+  std::filesystem::path dir = fresh_dir("sampled");
+  const char* source = R"(Texture2D<uint> Counts; Texture2D<int2> Offsets; Texture2D Colour;
+float4 PS(float4 p : SV_Position) : SV_Target {
+  return Colour.Load(int3(0, 0, 0)) + float(Counts.Load(int3(0, 0, 0)) + Offsets.Load(int3(0, 0, 0)).y);
+}
+)";
+  TranslationUnit u = test::unit(source, ShaderStage::fragment, "PS", "ps_5_0");
+  auto kinds = [](const CompiledShader& s) {
+    std::map<std::string, ScalarKind> out;
+    for (const ImageBinding& i : s.reflection.images) out[i.name] = i.sampled;
+    return out;
+  };
+  const std::map<std::string, ScalarKind> expected = {
+      {"Counts", ScalarKind::uint32}, {"Offsets", ScalarKind::int32}, {"Colour", ScalarKind::float32}};
+  {
+    SpirvCache cache(dir);
+    ShaderCompiler compiler({}, &cache);
+    CompiledShader original = compiler.compile(u);
+    ASSERT_TRUE(original.ok) << original.info_log;
+    EXPECT_EQ(kinds(original), expected);
+  }
+  SpirvCache cache(dir);
+  ShaderCompiler compiler({}, &cache);
+  CompiledShader loaded = compiler.compile(u);
+  EXPECT_TRUE(loaded.from_cache);
+  EXPECT_EQ(kinds(loaded), expected);
   std::filesystem::remove_all(dir);
 }
 

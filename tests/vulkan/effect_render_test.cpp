@@ -400,6 +400,28 @@ technique10 T { pass P { SetVertexShader(CompileShader(vs_4_0, VS())); SetPixelS
   EXPECT_NEAR(centre[0], 191, 2);  // white * 0.5 + white * 0.25
 }
 
+// Texture2D<uint> and <int> read with Load need views of integer formats (a float stand-in is
+// VUID-07753): zeros stand in, as Direct3D 11 reads zeros from an unbound view, in every shape.
+TEST_F(EffectRenderTest, IntegerTexturesReadZerosFromIntegerStandIns) {
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_integer_textures", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+Texture2D<uint> Counts;
+Texture2DArray<int4> Offsets;
+Texture3D<uint2> Cells;
+Texture1D<int> Row;
+float4 VS(float4 p : POSITION) : SV_Position { return mul(p, WorldViewProjection); }
+float4 PS() : SV_Target {
+  uint n = Counts.Load(int3(0, 0, 0)) + Cells.Load(int4(0, 0, 0, 0)).y;
+  int m = Offsets.Load(int4(0, 0, 0, 0)).w + Row.Load(int2(0, 0));
+  return float4(n == 0 ? 1 : 0, m == 0 ? 1 : 0, 0.5, 1);
+}
+technique11 T { pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)");
+  EXPECT_EQ(centre[0], 255);
+  EXPECT_EQ(centre[1], 255);
+  EXPECT_NEAR(centre[2], 128, 1);
+}
+
 // Defaults of cbuffer members inside arrays of structs and structs inside structs reach the
 // shader: an array inside a struct has std140's 16-byte stride (glslang's reflection said 4,
 // so scale[1] read 0).

@@ -20,6 +20,8 @@ namespace fx {
 // equivalent of (24-bit RGB, luminance, BGRX, A8) are expanded to r8g8b8a8_unorm on read.
 enum class DxgiFormat : uint32_t {
   r32g32b32a32_float = 2,
+  r32g32b32a32_uint = 3,
+  r32g32b32a32_sint = 4,
   r16g16b16a16_float = 10,
   r16g16b16a16_unorm = 11,
   r32g32_float = 16,

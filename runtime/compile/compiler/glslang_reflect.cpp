@@ -169,6 +169,9 @@ ShaderReflection reflect_program(const glslang::TProgram& program, EShLanguage s
     img.arrayed = s.isArrayed();
     img.shadow = s.isShadow();
     img.multisampled = s.isMultiSample();
+    img.sampled = s.type == glslang::EbtInt    ? ScalarKind::int32
+                  : s.type == glslang::EbtUint ? ScalarKind::uint32
+                                               : ScalarKind::float32;
     img.set = set_of(*t);
     img.binding = binding_of(*t);
     if (t->isArray() && t->isSizedArray()) img.array_size = static_cast<uint32_t>(t->getOuterArraySize());

@@ -79,7 +79,8 @@ std::string write_shader_metadata(const CompiledShader& s) {
                       {"set", i.set},
                       {"binding", i.binding},
                       {"array", i.array_size},
-                      {"multisampled", i.multisampled}});
+                      {"multisampled", i.multisampled},
+                      {"sampled", static_cast<int>(i.sampled)}});
   auto interface = [](const std::vector<InterfaceVariable>& vars) {
     json a = json::array();
     for (const InterfaceVariable& v : vars)
@@ -136,7 +137,8 @@ bool read_shader_metadata(std::string_view text, CompiledShader& s) {
       r.images.push_back({i.at("name").get<std::string>(), static_cast<ImageBinding::Kind>(i.at("kind").get<int>()),
                           static_cast<ImageDim>(i.at("dim").get<int>()), i.at("arrayed").get<bool>(),
                           i.at("shadow").get<bool>(), i.at("set").get<uint32_t>(), i.at("binding").get<uint32_t>(),
-                          i.at("array").get<uint32_t>(), i.at("multisampled").get<bool>()});
+                          i.at("array").get<uint32_t>(), i.at("multisampled").get<bool>(),
+                          static_cast<ScalarKind>(i.at("sampled").get<int>())});
     for (auto [key, list] : {std::pair{"inputs", &r.inputs}, std::pair{"outputs", &r.outputs}})
       for (const json& v : j.at(key))
         list->push_back({v.at("name").get<std::string>(), v.at("location").get<uint32_t>(), type_from(v.at("type")),

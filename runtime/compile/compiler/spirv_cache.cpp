@@ -19,7 +19,7 @@ namespace {
 // On-disk entry: header, SPIR-V words, then the metadata JSON (entry point, reflection,
 // messages). The format version changes whenever the layout or the JSON schema does.
 constexpr char kMagic[8] = {'F', 'X', 'S', 'P', 'I', 'R', 'V', '\0'};
-constexpr uint32_t kFormatVersion = 4;
+constexpr uint32_t kFormatVersion = 5;
 
 struct FileHeader {
   char magic[8];

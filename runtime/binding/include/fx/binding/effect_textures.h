@@ -64,6 +64,9 @@ class EffectTextureCache {
   // shader reads with Load(coord, sample): no file can fill one, the application renders it
   // and binds it with set_texture().
   std::shared_ptr<const EffectTextureData> multisampled_stand_in(bool arrayed);
+  // Zeros for a Texture2D<int> or <uint> (`sampled` int32 or uint32) read with Load: its view
+  // must be of an integer format, which no colour file or stand-in is.
+  std::shared_ptr<const EffectTextureData> integer_stand_in(ScalarKind sampled, ImageDim dim, bool arrayed);
 
   // Stand-ins that show what a shader does (a colour test pattern, a ramp of depths, an
   // environment: texture_stand_in.h) instead of neutral ones, for previews. Set before the

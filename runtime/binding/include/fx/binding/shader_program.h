@@ -38,9 +38,10 @@ struct ProgramImage {
   ImageDim dim = ImageDim::dim_2d;
   uint32_t binding = 0;
   uint32_t count = 1;
-  bool arrayed = false;       // Texture2DArray, TextureCubeArray, Texture1DArray
-  bool shadow = false;        // sampled with depth comparison (SamplerComparisonState, sampler2DShadow)
-  bool multisampled = false;  // Texture2DMS, Texture2DMSArray: needs an image of more than one sample
+  bool arrayed = false;                      // Texture2DArray, TextureCubeArray, Texture1DArray
+  bool shadow = false;                       // sampled with depth comparison (SamplerComparisonState, sampler2DShadow)
+  bool multisampled = false;                 // Texture2DMS, Texture2DMSArray: needs an image of more than one sample
+  ScalarKind sampled = ScalarKind::float32;  // int32/uint32: Texture2D<int>/<uint> need an integer view
 };
 
 // One storage buffer of the program (set 0): a (RW/Append/Consume)StructuredBuffer,

@@ -11,7 +11,19 @@ namespace fx::vk {
 // Neutral stand-ins (white, flat_normal, depth, multisampled) are one texel that leaves the
 // shading it feeds as if the texture were absent; preview ones (test_pattern, depth_ramp,
 // environment) vary, so that a filter, a lookup or a reflection of them shows.
-enum class StandIn { white, flat_normal, depth, multisampled, test_pattern, depth_ramp, environment };
+// signed_zero and unsigned_zero: for Texture2D<int> and <uint>, which need an integer view;
+// zero is what Direct3D 11 reads from an unbound shader resource view.
+enum class StandIn {
+  white,
+  flat_normal,
+  depth,
+  multisampled,
+  test_pattern,
+  depth_ramp,
+  environment,
+  signed_zero,
+  unsigned_zero
+};
 
 // The stand-in for texture parameter `param` (null: no parameter) sampled as `dim`: a flat
 // normal for a normal or bump map (semantic NORMALMAP or NORMAL, or "normal" or "bump" in its
@@ -30,7 +42,7 @@ const char* stand_in_name(StandIn kind);
 // through the centre); its 3D slices fade towards white with depth. The depth ramp is grey from
 // 0 at the top left corner to 1 at the bottom right. The environment is a blue sky above a warm
 // horizon and a brown ground, tinted by the compass direction so that a turned reflection shows.
-// Empty for a neutral kind.
+// The integer kinds are one texel (six for a cube) of four 32-bit zeros. Empty for a neutral kind.
 fx::DdsTexture stand_in_texels(StandIn kind, ImageDim dim);
 
 }  // namespace fx::vk

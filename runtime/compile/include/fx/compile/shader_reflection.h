@@ -58,6 +58,9 @@ struct ImageBinding {
   uint32_t set = 0, binding = 0;
   uint32_t array_size = 0;    // descriptor count of an array of textures; 0 when not an array
   bool multisampled = false;  // Texture2DMS, Texture2DMSArray (SPIR-V OpTypeImage MS=1)
+  // What a read returns: float32, or int32/uint32 for Texture2D<int>/<uint> (the view's
+  // format must be of the same numeric type).
+  ScalarKind sampled = ScalarKind::float32;
 };
 
 // A stage input or output (vertex attributes are the vertex stage's inputs), with its HLSL

@@ -29,6 +29,8 @@ uint32_t full_mip_count(uint32_t width, uint32_t height, uint32_t depth = 1);
 // Aspect bits of a format (color, depth, depth|stencil, stencil).
 VkImageAspectFlags format_aspect(VkFormat format);
 bool is_depth_format(VkFormat format);
+// The 32-bit integer colour formats fxkit uploads (R32G32B32A32_UINT / SINT): read, not filtered.
+bool is_integer_format(VkFormat format);
 bool has_stencil(VkFormat format);
 // Bits of a depth format's depth (16, 24 or 32); 24 for formats without depth.
 uint32_t depth_bits(VkFormat format);
