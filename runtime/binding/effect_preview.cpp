@@ -52,7 +52,8 @@ RenderingFormats EffectPreview::formats() const { return target_->formats(); }
 
 EffectBindingDesc EffectPreview::binding_desc() const {
   EffectBindingDesc d;
-  d.target.color_attachment_count = 1;
+  // Every render target's blend state: a script may draw into several (RenderColorTarget1..3).
+  d.target.color_attachment_count = kMaxColorAttachments;
   d.target.depth_bits = depth_bits(target_->formats().depth);
   // render() flips Y with a negative viewport height; the meshes are counter-clockwise
   // from outside (fx/mesh.h).

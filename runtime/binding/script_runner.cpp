@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
+#include <vector>
 
 #include "fx/ascii_case.h"
 
@@ -71,12 +73,42 @@ struct ScriptRunner::State {
   VkCommandBuffer cmd = VK_NULL_HANDLE;
   const ScriptFrame* frame = nullptr;
   RenderTarget* current = nullptr;
+  // RenderColorTarget1..3: drawn into beside `current` (multiple render targets).
+  std::array<RenderTarget*, kMaxColorAttachments - 1> more{};
   std::array<float, 4> clear_color{0, 0, 0, 0};
   float clear_depth = 1.0f;
   uint32_t clear_stencil = 0;
   uint32_t pass = kNoIndex;     // the pass whose script runs (its Draw= draws it)
   std::vector<uint32_t> loops;  // the index of each open loop, innermost last
-  bool multiple_targets_said = false;
+  bool smaller_target_said = false;
+
+  // The targets bound beside `current`, in slot order up to the first unbound slot, as
+  // Direct3D 9 binds them; one smaller than `current` (Vulkan renders the attachments over
+  // one area) is left out with a warning.
+  std::vector<RenderTarget*> more_targets(const ScriptStep& step, DiagnosticSink& sink) {
+    std::vector<RenderTarget*> out;
+    for (RenderTarget* t : more) {
+      if (!t || t == current || std::find(out.begin(), out.end(), t) != out.end()) break;
+      if (t->width() >= current->width() && t->height() >= current->height()) {
+        out.push_back(t);
+        continue;
+      }
+      if (!smaller_target_said)
+        sink.warning("vk-script-target", step.range,
+                     "a render target bound beside RenderColorTarget0 is smaller than it (" +
+                         std::to_string(t->width()) + "x" + std::to_string(t->height()) + " against " +
+                         std::to_string(current->width()) + "x" + std::to_string(current->height()) +
+                         "): it is not drawn into");
+      smaller_target_said = true;
+    }
+    return out;
+  }
+
+  // After rendering into them: the script's targets are sampled by later passes.
+  void to_shader_read(std::span<RenderTarget* const> drawn) {
+    if (current != frame->target) current->color().transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    for (RenderTarget* t : drawn) t->color().transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  }
 };
 
 std::unique_ptr<ScriptRunner> ScriptRunner::create(const Context& ctx, const EffectModel& model, EffectBinding& binding,
@@ -163,17 +195,12 @@ bool ScriptRunner::run(const std::vector<ScriptStep>& steps, size_t begin, size_
     const ScriptStep& step = steps[i];
     const Param param = step.parameter != kNoIndex ? params_->find(model_->parameters[step.parameter].name) : Param{};
     switch (step.command) {
-      case ScriptCommand::render_color_target:
-        if (step.slot != 0) {
-          if (!state.multiple_targets_said)
-            sink.warning("vk-script-unsupported", step.range,
-                         "RenderColorTarget" + std::to_string(step.slot) +
-                             ": fxkit draws into one colour target (RenderColorTarget0); this one is skipped");
-          state.multiple_targets_said = true;
-          break;
-        }
-        state.current = step.parameter == kNoIndex ? state.frame->target : &targets_.at(step.parameter);
+      case ScriptCommand::render_color_target: {
+        RenderTarget* target = step.parameter == kNoIndex ? nullptr : &targets_.at(step.parameter);
+        if (step.slot == 0) state.current = target ? target : state.frame->target;
+        else if (step.slot < kMaxColorAttachments) state.more[step.slot - 1] = target;
         break;
+      }
       case ScriptCommand::render_depth_stencil_target: break;  // each colour target has its own depth
       case ScriptCommand::clear_set_color: {
         std::array<float, 4> c{0, 0, 0, 1};
@@ -190,25 +217,25 @@ bool ScriptRunner::run(const std::vector<ScriptStep>& steps, size_t begin, size_
         ClearValues clear{std::nullopt, std::nullopt, state.clear_stencil};
         if (step.clear == ScriptClear::color) clear.color = state.clear_color;
         else clear.depth = state.clear_depth;  // depth and stencil clear together
-        state.current->begin(state.cmd, clear);
+        // Direct3D 9 clears every bound render target.
+        const std::vector<RenderTarget*> more = state.more_targets(step, sink);
+        state.current->begin(state.cmd, clear, more);
         state.current->end(state.cmd);
-        if (state.current != state.frame->target)
-          state.current->color().transition(state.cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        state.to_shader_read(more);
         break;
       }
       case ScriptCommand::pass:
-        if (!draw_pass(step.pass, state, sink)) return false;
+        if (!draw_pass(step, state, sink)) return false;
         break;
       case ScriptCommand::draw:
-        if (state.pass != kNoIndex && !draw(step.draw, state.pass, state, sink)) return false;
+        if (state.pass != kNoIndex && !draw(step, step.draw, state.pass, state, sink)) return false;
         break;
       case ScriptCommand::script_external:
         if (state.frame->draw_scene) {
           state.current->begin(state.cmd, ClearValues{std::nullopt, std::nullopt, 0});
           state.frame->draw_scene(state.cmd, *state.current);
           state.current->end(state.cmd);
-          if (state.current != state.frame->target)
-            state.current->color().transition(state.cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+          state.to_shader_read({});
         }
         break;
       case ScriptCommand::loop_by_count:
@@ -240,23 +267,26 @@ bool ScriptRunner::run(const std::vector<ScriptStep>& steps, size_t begin, size_
   return true;
 }
 
-bool ScriptRunner::draw_pass(uint32_t pass, State& state, DiagnosticSink& sink) {
+bool ScriptRunner::draw_pass(const ScriptStep& step, State& state, DiagnosticSink& sink) {
   const uint32_t outer = state.pass;
+  const uint32_t pass = step.pass;
   state.pass = pass;
   const PassInfo& info = model_->techniques[technique_].passes[pass];
   const bool ok = info.script ? run(info.script->steps, 0, info.script->steps.size(), state, sink)
-                              : draw(ScriptDraw::geometry, pass, state, sink);
+                              : draw(step, ScriptDraw::geometry, pass, state, sink);
   state.pass = outer;
   return ok;
 }
 
-bool ScriptRunner::draw(ScriptDraw what, uint32_t pass, State& state, DiagnosticSink& sink) {
+bool ScriptRunner::draw(const ScriptStep& step, ScriptDraw what, uint32_t pass, State& state, DiagnosticSink& sink) {
   RenderTarget& target = *state.current;
   const float w = float(target.width()), h = float(target.height());
   const bool flipped = state.frame->viewport.height < 0;
   const VkViewport viewport{0.0f, flipped ? h : 0.0f, w, flipped ? -h : h, 0.0f, 1.0f};
-  target.begin(state.cmd, ClearValues{std::nullopt, std::nullopt, 0});
-  bool ok = binding_->begin(state.cmd, technique_, target.formats(), viewport, target.scissor(), sink);
+  const std::vector<RenderTarget*> more = state.more_targets(step, sink);
+  const std::vector<const RenderTarget*> more_formats(more.begin(), more.end());
+  target.begin(state.cmd, ClearValues{std::nullopt, std::nullopt, 0}, more);
+  bool ok = binding_->begin(state.cmd, technique_, target.formats(more_formats), viewport, target.scissor(), sink);
   if (ok) {
     ok = binding_->apply(pass, state.frame->vertex_layout, sink);
     const auto& drawing = what == ScriptDraw::buffer ? state.frame->draw_quad : state.frame->draw_geometry;
@@ -264,7 +294,7 @@ bool ScriptRunner::draw(ScriptDraw what, uint32_t pass, State& state, Diagnostic
     binding_->end();
   }
   target.end(state.cmd);
-  if (&target != state.frame->target) target.color().transition(state.cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  state.to_shader_read(more);
   return ok;
 }
 

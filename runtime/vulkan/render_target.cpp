@@ -91,10 +91,12 @@ std::optional<RenderTarget> RenderTarget::create(const Context& ctx, const Rende
   return rt;
 }
 
-RenderingFormats RenderTarget::formats() const {
+RenderingFormats RenderTarget::formats(std::span<const RenderTarget* const> more) const {
   RenderingFormats f;
   f.color[0] = color_.format();
   f.color_count = 1;
+  for (const RenderTarget* t : more)
+    if (f.color_count < kMaxColorAttachments) f.color[f.color_count++] = t->color_.format();
   if (depth_) {
     f.depth = depth_.format();
     if (has_stencil(f.depth)) f.stencil = f.depth;
@@ -106,24 +108,31 @@ VkViewport RenderTarget::viewport() const { return {0.0f, 0.0f, float(width_), f
 
 VkRect2D RenderTarget::scissor() const { return {{0, 0}, {width_, height_}}; }
 
-void RenderTarget::begin(VkCommandBuffer cmd, const ClearValues& clear) {
-  // Cleared attachments may discard their old contents (cheaper on tilers).
-  if (clear.color) color_.assume_layout(VK_IMAGE_LAYOUT_UNDEFINED);
-  color_.transition(cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-
-  auto color = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-  color.imageView = color_.view();
-  color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-  color.loadOp = clear.color ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
-  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  if (clear.color)
-    for (int i = 0; i < 4; ++i) color.clearValue.color.float32[i] = (*clear.color)[i];
+void RenderTarget::begin(VkCommandBuffer cmd, const ClearValues& clear, std::span<RenderTarget* const> more) {
+  std::array<VkRenderingAttachmentInfo, kMaxColorAttachments> colors{};
+  uint32_t count = 0;
+  auto attach = [&](GpuImage& image) {
+    // Cleared attachments may discard their old contents (cheaper on tilers).
+    if (clear.color) image.assume_layout(VK_IMAGE_LAYOUT_UNDEFINED);
+    image.transition(cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    VkRenderingAttachmentInfo& color = colors[count++];
+    color = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    color.imageView = image.view();
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = clear.color ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    if (clear.color)
+      for (int i = 0; i < 4; ++i) color.clearValue.color.float32[i] = (*clear.color)[i];
+  };
+  attach(color_);
+  for (RenderTarget* t : more)
+    if (count < kMaxColorAttachments) attach(t->color_);
 
   auto info = structure<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
   info.renderArea = scissor();
   info.layerCount = 1;
-  info.colorAttachmentCount = 1;
-  info.pColorAttachments = &color;
+  info.colorAttachmentCount = count;
+  info.pColorAttachments = colors.data();
 
   auto depth = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
   if (depth_) {

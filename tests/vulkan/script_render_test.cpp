@@ -140,6 +140,57 @@ TEST_F(ScriptRenderTest, ScriptExternalDrawsTheTestSceneThePostEffectProcesses) 
         ASSERT_NEAR(int(inverted->at(x, y)[c]), 255 - int(shown->at(x, y)[c]), 1) << x << "," << y << " channel " << c;
 }
 
+// Multiple render targets (RenderColorTarget1): a geometry pass writes COLOR0 into one target
+// and COLOR1 into another, after a Clear that clears both, as Direct3D 9 clears every bound
+// target; a composite reads both into the frame.
+constexpr const char* kMrtEffect = R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+float4 ClearColor = {0, 0, 1, 1};
+texture Albedo : RENDERCOLORTARGET < float2 ViewportRatio = {1, 1}; >;
+texture Normals : RENDERCOLORTARGET < float2 ViewportRatio = {1, 1}; >;
+sampler AlbedoSamp = sampler_state { Texture = <Albedo>; MinFilter = POINT; MagFilter = POINT; };
+sampler NormalSamp = sampler_state { Texture = <Normals>; MinFilter = POINT; MagFilter = POINT; };
+struct Targets { float4 albedo : COLOR0; float4 normal : COLOR1; };
+float4 SceneVS(float4 p : POSITION) : POSITION { return mul(p, WorldViewProjection); }
+Targets GBufferPS() { Targets t; t.albedo = float4(1, 0, 0, 1); t.normal = float4(0, 1, 0, 1); return t; }
+struct QuadOut { float4 p : POSITION; float2 uv : TEXCOORD0; };
+QuadOut QuadVS(float4 p : POSITION, float2 uv : TEXCOORD0) { QuadOut o; o.p = float4(p.xy, 0, 1); o.uv = uv; return o; }
+float4 CompositePS(float2 uv : TEXCOORD0) : COLOR0 {
+  float4 a = tex2D(AlbedoSamp, uv), n = tex2D(NormalSamp, uv);
+  return float4(a.r, n.g, a.b * n.b, 1);
+}
+technique Deferred < string Script = "RenderColorTarget0=Albedo; RenderColorTarget1=Normals; ClearSetColor=ClearColor; Clear=Color; Clear=Depth; Pass=GBuffer; RenderColorTarget1=; RenderColorTarget0=; Pass=Composite;"; > {
+  pass GBuffer < string Script = "Draw=Geometry;"; > { VertexShader = compile vs_3_0 SceneVS(); PixelShader = compile ps_3_0 GBufferPS(); }
+  pass Composite < string Script = "Draw=Buffer;"; > { ZEnable = false; VertexShader = compile vs_3_0 QuadVS(); PixelShader = compile ps_3_0 CompositePS(); }
+}
+)";
+
+TEST_F(ScriptRenderTest, RenderColorTarget1TakesTheSecondOutputAndIsCleared) {
+  fx::testing::EffectFolder folder("script_mrt");
+  folder.write("mrt.fx", kMrtEffect);
+  constexpr uint32_t kSize = 32;
+  auto e = bind_effect(ctx(), folder.path("mrt.fx"), "Deferred", "sphere", kSize);
+  ASSERT_TRUE(e);
+  DiagnosticSink sink;
+  auto runner =
+      ScriptRunner::create(ctx(), *e->effect->model, *e->binding, *e->effect->params, e->technique, kSize, kSize, sink);
+  ASSERT_TRUE(runner) << describe(sink);
+  ASSERT_TRUE(runner->target("Normals"));
+  set_standard_semantics(*e->effect->params, *e->effect->model, e->preview->scene());
+  const size_t errors = ctx().validation_error_count();
+  auto image = e->preview->render_script(*runner, e->layout, sink);
+  ASSERT_TRUE(image) << describe(sink);
+  EXPECT_FALSE(sink.has_errors()) << describe(sink);
+  EXPECT_EQ(ctx().validation_error_count(), errors) << describe_messages(ctx());
+  const uint8_t* centre = image->at(kSize / 2, kSize / 2);
+  EXPECT_EQ(centre[0], 255);  // COLOR0 went into Albedo
+  EXPECT_EQ(centre[1], 255);  // COLOR1 into Normals
+  EXPECT_EQ(centre[2], 0);
+  const uint8_t* corner = image->at(0, 0);
+  EXPECT_EQ(corner[0], 0);
+  EXPECT_EQ(corner[1], 0);
+  EXPECT_EQ(corner[2], 255);  // both targets cleared blue
+}
+
 // A technique without a Script gets no runner, and says so.
 TEST_F(ScriptRenderTest, TechniqueWithoutScriptHasNoRunner) {
   fx::testing::EffectFolder folder("script_none");

@@ -1,7 +1,7 @@
 // fx::vk::ScriptRunner: runs a technique's DXSAS Script (fx/model/dxsas_script.h) into a
 // command buffer: the render targets its texture parameters declare (RENDERCOLORTARGET with
 // ViewportRatio / Dimensions / Format annotations), bound to the passes that sample them;
-// RenderColorTarget0, Clear / ClearSetColor / ClearSetDepth, Pass=, Draw=Geometry (the host's
+// RenderColorTarget0..3, Clear / ClearSetColor / ClearSetDepth, Pass=, Draw=Geometry (the host's
 // mesh), Draw=Buffer (a full-screen quad), ScriptExternal (the host's scene), LoopByCount and
 // LoopGetIndex. Used by EffectPreview::render_script (`fxkit render`); an engine calls
 // record() with its own frame. docs/dxsas.md says what runs and what does not.
@@ -61,9 +61,10 @@ class ScriptRunner {
       : ctx_(&ctx), model_(&model), binding_(&binding), params_(&params), technique_(technique) {}
   // Runs steps [begin, end) of `steps`; false on a failed apply.
   bool run(const std::vector<ScriptStep>& steps, size_t begin, size_t end, State& state, DiagnosticSink& sink);
-  // Draws pass `pass` (its own script, or Draw=Geometry) into the current target.
-  bool draw_pass(uint32_t pass, State& state, DiagnosticSink& sink);
-  bool draw(ScriptDraw what, uint32_t pass, State& state, DiagnosticSink& sink);
+  // Draws the pass `step` names (its own script, or Draw=Geometry) into the current targets.
+  bool draw_pass(const ScriptStep& step, State& state, DiagnosticSink& sink);
+  // Draws `what` with pass `pass` into the current targets; `step` locates warnings.
+  bool draw(const ScriptStep& step, ScriptDraw what, uint32_t pass, State& state, DiagnosticSink& sink);
 
   const Context* ctx_;
   const EffectModel* model_;

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <optional>
+#include <span>
 
 #include "fx/image.h"
 #include "fx/vulkan/buffer.h"
@@ -51,8 +52,9 @@ class RenderTarget {
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
   VkExtent2D extent() const { return {width_, height_}; }
-  // One colour attachment, and the depth (and stencil) format if the target has depth.
-  RenderingFormats formats() const;
+  // One colour attachment, and the depth (and stencil) format if the target has depth; then
+  // the colour attachment of each of `more` (multiple render targets, as begin() binds them).
+  RenderingFormats formats(std::span<const RenderTarget* const> more = {}) const;
   GpuImage& color() { return color_; }
   const GpuImage& color() const { return color_; }
   // The depth attachment, or null if the target has none.
@@ -62,8 +64,10 @@ class RenderTarget {
   VkViewport viewport() const;
   VkRect2D scissor() const;
 
-  // Transitions the attachments and calls vkCmdBeginRendering.
-  void begin(VkCommandBuffer cmd, const ClearValues& clear = {});
+  // Transitions the attachments and calls vkCmdBeginRendering over this target's area. The
+  // colours of `more` (at least this size; up to kMaxColorAttachments in all) are attachments
+  // 1, 2, ... after this one's, cleared or kept as this one's; the depth is this target's.
+  void begin(VkCommandBuffer cmd, const ClearValues& clear = {}, std::span<RenderTarget* const> more = {});
   // Calls vkCmdEndRendering; the color stays in COLOR_ATTACHMENT_OPTIMAL.
   void end(VkCommandBuffer cmd);
 
