@@ -21,6 +21,33 @@ bool patterned_kind(ScalarKind element) {
 // Whether a stand-in filled as `fill` says holds anything but zeros.
 bool holds_pattern(StandInFill fill) { return fill.pattern && patterned_kind(fill.element); }
 
+// The 32-bit formats of RWTexture and (RW)Buffer elements: what glslang gives each element
+// type, with its channels and their scalar.
+struct StorageFormatRow {
+  const char* element;
+  VkFormat format;
+  uint32_t channels;
+  ScalarKind scalar;
+};
+constexpr StorageFormatRow kStorageFormats[] = {
+    {"float", VK_FORMAT_R32_SFLOAT, 1, ScalarKind::float32},
+    {"float1", VK_FORMAT_R32_SFLOAT, 1, ScalarKind::float32},
+    {"float2", VK_FORMAT_R32G32_SFLOAT, 2, ScalarKind::float32},
+    {"float4", VK_FORMAT_R32G32B32A32_SFLOAT, 4, ScalarKind::float32},
+    {"int", VK_FORMAT_R32_SINT, 1, ScalarKind::int32},
+    {"int2", VK_FORMAT_R32G32_SINT, 2, ScalarKind::int32},
+    {"int4", VK_FORMAT_R32G32B32A32_SINT, 4, ScalarKind::int32},
+    {"uint", VK_FORMAT_R32_UINT, 1, ScalarKind::uint32},
+    {"uint2", VK_FORMAT_R32G32_UINT, 2, ScalarKind::uint32},
+    {"uint4", VK_FORMAT_R32G32B32A32_UINT, 4, ScalarKind::uint32},
+};
+
+const StorageFormatRow* storage_format_row(VkFormat format) {
+  for (const StorageFormatRow& r : kStorageFormats)
+    if (r.format == format) return &r;
+  return nullptr;
+}
+
 }  // namespace
 
 EffectStorage::StorageBuffer& EffectStorage::buffer_entry(std::string_view name) {
@@ -222,46 +249,17 @@ std::optional<StorageImageShape> storage_image_shape(ImageDim dim, bool arrayed,
 }
 
 uint32_t storage_format_channels(VkFormat format) {
-  switch (format) {
-    case VK_FORMAT_R32_SFLOAT:
-    case VK_FORMAT_R32_SINT:
-    case VK_FORMAT_R32_UINT: return 1;
-    case VK_FORMAT_R32G32_SFLOAT:
-    case VK_FORMAT_R32G32_SINT:
-    case VK_FORMAT_R32G32_UINT: return 2;
-    case VK_FORMAT_R32G32B32A32_SFLOAT:
-    case VK_FORMAT_R32G32B32A32_SINT:
-    case VK_FORMAT_R32G32B32A32_UINT: return 4;
-    default: return 0;
-  }
+  const StorageFormatRow* row = storage_format_row(format);
+  return row ? row->channels : 0;
 }
 
 ScalarKind storage_format_scalar(VkFormat format) {
-  switch (format) {
-    case VK_FORMAT_R32_SFLOAT:
-    case VK_FORMAT_R32G32_SFLOAT:
-    case VK_FORMAT_R32G32B32A32_SFLOAT: return ScalarKind::float32;
-    case VK_FORMAT_R32_SINT:
-    case VK_FORMAT_R32G32_SINT:
-    case VK_FORMAT_R32G32B32A32_SINT: return ScalarKind::int32;
-    case VK_FORMAT_R32_UINT:
-    case VK_FORMAT_R32G32_UINT:
-    case VK_FORMAT_R32G32B32A32_UINT: return ScalarKind::uint32;
-    default: return ScalarKind::other;
-  }
+  const StorageFormatRow* row = storage_format_row(format);
+  return row ? row->scalar : ScalarKind::other;
 }
 
 VkFormat storage_image_format(std::string_view element) {
-  struct Row {
-    const char* element;
-    VkFormat format;
-  };
-  static const Row rows[] = {{"float", VK_FORMAT_R32_SFLOAT},       {"float1", VK_FORMAT_R32_SFLOAT},
-                             {"float2", VK_FORMAT_R32G32_SFLOAT},   {"float4", VK_FORMAT_R32G32B32A32_SFLOAT},
-                             {"int", VK_FORMAT_R32_SINT},           {"int2", VK_FORMAT_R32G32_SINT},
-                             {"int4", VK_FORMAT_R32G32B32A32_SINT}, {"uint", VK_FORMAT_R32_UINT},
-                             {"uint2", VK_FORMAT_R32G32_UINT},      {"uint4", VK_FORMAT_R32G32B32A32_UINT}};
-  for (const Row& r : rows)
+  for (const StorageFormatRow& r : kStorageFormats)
     if (element == r.element) return r.format;
   return VK_FORMAT_UNDEFINED;
 }

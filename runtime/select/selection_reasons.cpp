@@ -34,7 +34,12 @@ std::string join(const std::vector<std::string>& items) {
 
 }  // namespace
 
-std::string band_text(float lo, float hi) { return "[" + number(lo) + ", " + number(hi) + ")"; }
+std::string band_text(float lo, float hi) {
+  // Appended, not "[" + ...: g++ 12 warns (-Wrestrict) on operator+ of a literal and a temporary.
+  std::string out = "[";
+  out.append(number(lo)).append(", ").append(number(hi)).append(")");
+  return out;
+}
 
 std::string SelectionPlan::distance_band(uint32_t index) const {
   if (index >= entries_.size()) return {};
