@@ -11,6 +11,7 @@
 #include "fx/emulation/fixed_function.h"
 #include "fx/pass_states.h"
 #include "fx/state_table.h"
+#include "numeric_type.h"
 
 namespace fx {
 
@@ -653,7 +654,10 @@ std::string EffectUnitBuilder::wrapper(const ast::Function& f, const std::vector
     const ast::Variable& p = f.params[i];
     if (i) call += ", ";
     if (takes_argument(p) && bound < args.size()) {
-      call += args[bound++];
+      // As the parameter's type, as fxc converts it: glslang passes `1` to a `uniform bool`
+      // parameter unconverted, and its SPIR-V then branches on an int.
+      const bool convert = p.array_dims.empty() && p.type.template_arg.empty() && numeric_components(p.type.name);
+      call += convert ? "(" + std::string(p.type.name) + ")(" + args[bound++] + ")" : args[bound++];
       continue;
     }
     if (!first_param) text += ", ";

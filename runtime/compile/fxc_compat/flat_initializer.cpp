@@ -1,20 +1,11 @@
 #include "flat_initializer.h"
 
+#include "numeric_type.h"
+
 #include <string_view>
 
 namespace fx::detail {
 namespace {
-
-// Components of a vector type name (float4, half3, int2, uint4, bool2, double3), 1 for a
-// scalar type name; 0 otherwise.
-uint32_t components_of(std::string_view type) {
-  for (std::string_view base : {"float", "half", "int", "uint", "bool", "double", "dword", "min16float", "min16int"}) {
-    if (type == base) return 1;
-    if (type.size() == base.size() + 1 && type.starts_with(base) && type.back() >= '1' && type.back() <= '4')
-      return static_cast<uint32_t>(type.back() - '0');
-  }
-  return 0;
-}
 
 // The value of a decimal integer literal (`3`, `3u`), 0 when it is not one.
 uint32_t literal_size(const Token& t) {
@@ -37,7 +28,7 @@ std::unordered_map<uint32_t, std::string> flat_initializer_spellings(const std::
   const uint32_t n = static_cast<uint32_t>(toks.size());
   for (uint32_t i = 0; i + 6 < n; ++i) {
     // `T name [ N ] ... = {`
-    const uint32_t components = toks[i].is(TokenKind::identifier) ? components_of(toks[i].text()) : 0;
+    const uint32_t components = toks[i].is(TokenKind::identifier) ? numeric_components(toks[i].text()) : 0;
     if (!components || !toks[i + 1].is(TokenKind::identifier) || !toks[i + 2].is(TokenKind::l_square)) continue;
     uint32_t at = i + 2;
     std::vector<uint32_t> dims;  // 0 for an unsized dimension
