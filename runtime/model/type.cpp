@@ -478,6 +478,15 @@ std::shared_ptr<StructType> TypeTable::make_struct(const ast::Struct& decl, Diag
                                                    const ConstantScope* scope) const {
   auto st = std::make_shared<StructType>();
   st->name = decl.name;
+  // A class derived from a class (`class Hemi : Ambient`) holds the base's members first.
+  if (decl.kind == ast::StructKind::class_type)
+    for (const ast::Text& base : decl.bases)
+      if (auto it = structs_.find(base); it != structs_.end() && it->second)
+        for (const StructMember& m : it->second->members) {
+          st->members.push_back(m);
+          st->members.back().component_offset = st->components;
+          st->components += m.type.component_count();
+        }
   for (const ast::Variable& m : decl.members) {
     StructMember member;
     member.name = m.name;

@@ -1111,5 +1111,43 @@ technique11 T {
       << text(effect.messages());
 }
 
+// Classes derived from classes (the DirectX SDK's DynamicShaderLinkage sample: `class
+// cHemiAmbientLight : cAmbientLight`), instances in a constant buffer: an instance holds its
+// base's members first; a call reaches the class's override, else the method it inherits.
+TEST_F(PublicApiTest, ADerivedClassInheritsMembersAndTheMethodsItDoesNotOverride) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  fxkit::Effect effect = r.device->load(write_effect("api_class_inheritance.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+interface iLight { float3 Ambient(); float3 Direct(); };
+class cAmbient : iLight { float3 colour; float3 Ambient() { return colour; } float3 Direct() { return 0; } };
+class cHemi : cAmbient { float3 ground; float3 Ambient(); };
+class cSun : cAmbient { float3 Direct() { return colour * 0.5; } };
+float3 cHemi::Ambient() { return colour + ground; }
+cbuffer Lights { cAmbient g_ambient; cHemi g_hemi; cSun g_sun; };
+iLight g_light;
+struct V { float4 pos : SV_Position; };
+V VS(float4 p : POSITION) { V o; o.pos = mul(p, WorldViewProjection); return o; }
+float4 PS(V i, iLight light) : SV_Target { return float4(light.Ambient() + light.Direct(), 1); }
+technique11 T {
+  pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(BindInterfaces(CompileShader(ps_5_0, PS()), g_light)); }
+}
+)"));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  fxkit::Technique technique = effect.technique("T");
+  ASSERT_TRUE(technique.valid()) << technique.reason();
+  const fxkit::Param light = effect.param("g_light");
+  ASSERT_TRUE(effect.set(effect.param("g_hemi"), {0.5f, 0.0f, 0.0f, 0.0f, 0.5f, 0.0f}));  // colour, then ground
+  ASSERT_TRUE(effect.set(effect.param("g_sun"), {0.0f, 0.4f, 0.0f}));
+  ASSERT_TRUE(effect.set_class_instance(light, "g_hemi"));
+  EXPECT_EQ(draw(*r.device, technique, *r.mesh, *r.image), (std::array<uint8_t, 3>{128, 128, 0}))
+      << "cHemi's Ambient (its base's colour and its ground), cAmbient's Direct (0)";
+  ASSERT_TRUE(effect.set_class_instance(light, "g_sun"));
+  EXPECT_EQ(draw(*r.device, technique, *r.mesh, *r.image), (std::array<uint8_t, 3>{0, 153, 0}))
+      << "cAmbient's Ambient (0.4) and cSun's Direct (0.2)";
+  EXPECT_EQ(ctx().validation_error_count(), 0u) << describe_messages(ctx());
+}
+
 }  // namespace
 }  // namespace fx::vk::testing

@@ -52,9 +52,24 @@ std::optional<uint32_t> type_token(const std::vector<Token>& toks, const ast::Va
   return std::nullopt;
 }
 
-bool has_method(const ast::Struct& s, std::string_view name) {
+// Whether a call of `name` on a value of type `s` reaches a method.
+bool has_method(const ClassLinkage& linkage, const ast::Struct& s, std::string_view name) {
+  if (s.kind == ast::StructKind::class_type) {
+    const std::vector<const ast::Function*> methods = linkage.methods_of(s);
+    return std::any_of(methods.begin(), methods.end(), [&](const ast::Function* m) { return m->name == name; });
+  }
   return std::any_of(s.methods.begin(), s.methods.end(), [&](const ast::Function& m) { return m.name == name; });
 }
+
+// Whether `a` overrides `b` (or is `b`'s other declaration): the same name and parameter types.
+bool same_signature(const ast::Function& a, const ast::Function& b) {
+  if (a.name != b.name || a.params.size() != b.params.size()) return false;
+  for (size_t i = 0; i < a.params.size(); ++i)
+    if (a.params[i].type.name != b.params[i].type.name) return false;
+  return true;
+}
+
+constexpr int kMaxClassDepth = 16;  // a longer chain of bases is a cycle the checker reports
 
 }  // namespace
 
@@ -73,6 +88,34 @@ std::optional<int> ClassLinkage::instance_id(const ast::Struct& iface, std::stri
   return std::nullopt;
 }
 
+std::vector<const ast::Function*> ClassLinkage::methods_of(const ast::Struct& cls) const {
+  std::vector<const ast::Function*> out;
+  const ast::Struct* c = &cls;
+  for (int depth = 0; c && depth < kMaxClassDepth; ++depth) {
+    for (const ast::Function& m : c->methods)
+      if (std::none_of(out.begin(), out.end(), [&](const ast::Function* o) { return same_signature(*o, m); }))
+        out.push_back(&m);
+    const ast::Struct* parent = nullptr;
+    for (const ast::Text& base : c->bases)
+      if ((parent = class_named(base))) break;
+    c = parent;
+  }
+  return out;
+}
+
+std::vector<const ast::Struct*> ClassLinkage::base_classes(const ast::Struct& cls) const {
+  std::vector<const ast::Struct*> out;
+  const ast::Struct* c = &cls;
+  for (int depth = 0; c && depth < kMaxClassDepth; ++depth) {
+    const ast::Struct* parent = nullptr;
+    for (const ast::Text& base : c->bases)
+      if ((parent = class_named(base))) break;
+    if (parent) out.insert(out.begin(), parent);
+    c = parent;
+  }
+  return out;
+}
+
 ClassLinkage class_linkage(const ast::Effect& effect) {
   ClassLinkage out;
   out.effect = &effect;
@@ -82,11 +125,14 @@ ClassLinkage class_linkage(const ast::Effect& effect) {
     else if (d.kind == ast::DeclKind::structure && d.structure->kind == ast::StructKind::class_type)
       out.classes.push_back(d.structure);
   if (out.interfaces.empty()) return out;
-  for (const ast::Decl& d : effect.decls) {
-    if (d.kind != ast::DeclKind::variable) continue;
-    if (out.interface_named(d.variable->type.name)) out.interface_variables.push_back(d.variable);
-    if (out.class_named(d.variable->type.name)) out.instances.push_back(d.variable);
-  }
+  auto add = [&](const ast::Variable& v, bool in_buffer) {
+    if (out.interface_named(v.type.name)) out.interface_variables.push_back(&v);
+    if (out.class_named(v.type.name)) (in_buffer ? out.buffered_instances : out.instances).push_back(&v);
+  };
+  for (const ast::Decl& d : effect.decls)
+    if (d.kind == ast::DeclKind::variable && d.variable) add(*d.variable, false);
+    else if (d.kind == ast::DeclKind::constant_buffer && d.constant_buffer)
+      for (const ast::Variable& m : d.constant_buffer->members) add(m, true);
   return out;
 }
 
@@ -109,12 +155,16 @@ std::unordered_map<uint32_t, std::string> class_linkage_spellings(const std::vec
     globals.emplace(v->name, linkage.interface_named(v->type.name));
     if (std::optional<uint32_t> t = type_token(toks, *v)) out.emplace(*t, "int");
   }
+  for (const ast::Variable* v : linkage.buffered_instances) globals.emplace(v->name, linkage.class_named(v->type.name));
   for (const ast::Variable* v : linkage.instances) {
     const ast::Struct* cls = linkage.class_named(v->type.name);
     globals.emplace(v->name, cls);
     // An instance of a class without data holds nothing to upload: left in the global
     // uniform block, an empty struct could make it a block of zero bytes.
-    std::optional<uint32_t> t = cls->members.empty() ? type_token(toks, *v) : std::nullopt;
+    const std::vector<const ast::Struct*> bases = linkage.base_classes(*cls);
+    const bool data = !cls->members.empty() ||
+                      std::any_of(bases.begin(), bases.end(), [](const ast::Struct* b) { return !b->members.empty(); });
+    std::optional<uint32_t> t = data ? std::nullopt : type_token(toks, *v);
     if (t) out.emplace(*t, "static " + std::string(v->type.name));
   }
   for (const ast::Function* f : functions) {
@@ -132,7 +182,7 @@ std::unordered_map<uint32_t, std::string> class_linkage_spellings(const std::vec
       size_t dot = i + 1;
       if (dot < last && toks[dot].is(TokenKind::l_square)) dot = closing_square(toks, dot, last) + 1;
       if (dot == 1 || dot + 2 >= last || !toks[dot].is(TokenKind::period) || !toks[dot + 1].is(TokenKind::identifier) ||
-          !toks[dot + 2].is(TokenKind::l_paren) || !has_method(*found->second, toks[dot + 1].text()))
+          !toks[dot + 2].is(TokenKind::l_paren) || !has_method(linkage, *found->second, toks[dot + 1].text()))
         continue;
       const ast::Struct& type = *found->second;
       // `g[1].M(a)` -> `I__M__fx(g[1], a)`: the callee goes before the name, the rest blank.
@@ -153,12 +203,13 @@ std::string interface_prototypes(const std::vector<Token>& toks, const ast::Stru
   return text;
 }
 
-std::string class_method_wrappers(const std::vector<Token>& toks, const ast::Struct& cls) {
+std::string class_method_wrappers(const std::vector<Token>& toks, const ast::Struct& cls,
+                                  const std::vector<const ast::Function*>& methods) {
   std::string text;
-  for (const ast::Function& m : cls.methods) {
-    const std::string call = "self." + std::string(m.name) + "(" + forwarded(m) + ");";
-    text += signature(toks, m, dispatcher_name(cls.name, m.name), std::string(cls.name) + " self") + " { " +
-            (m.return_type.name == "void" ? "" : "return ") + call + " }\n";
+  for (const ast::Function* m : methods) {
+    const std::string call = "self." + std::string(m->name) + "(" + forwarded(*m) + ");";
+    text += signature(toks, *m, dispatcher_name(cls.name, m->name), std::string(cls.name) + " self") + " { " +
+            (m->return_type.name == "void" ? "" : "return ") + call + " }\n";
   }
   return text;
 }

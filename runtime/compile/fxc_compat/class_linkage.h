@@ -24,6 +24,7 @@ struct ClassLinkage {
   std::vector<const ast::Struct*> classes;
   std::vector<const ast::Variable*> interface_variables;  // globals of an interface type
   std::vector<const ast::Variable*> instances;            // globals of a class type
+  std::vector<const ast::Variable*> buffered_instances;   // members of a class type of constant buffers
   const ast::Effect* effect = nullptr;
 
   bool empty() const { return interfaces.empty(); }
@@ -35,6 +36,11 @@ struct ClassLinkage {
   // The id of `instance` (a class instance variable or element, spelled `g` or `g[1]`)
   // among those bindable to `iface`, or nullopt.
   std::optional<int> instance_id(const ast::Struct& iface, std::string_view instance) const;
+  // The methods a call on an instance of `cls` reaches: its own, then those it inherits from
+  // the classes it derives from (`class Hemi : Ambient`) and does not override.
+  std::vector<const ast::Function*> methods_of(const ast::Struct& cls) const;
+  // The classes `cls` derives from, the farthest first: their members come first in it.
+  std::vector<const ast::Struct*> base_classes(const ast::Struct& cls) const;
 };
 
 ClassLinkage class_linkage(const ast::Effect& effect);
@@ -56,8 +62,9 @@ std::string dispatcher_name(std::string_view iface, std::string_view method);
 // class instance by interface_dispatchers).
 std::string interface_prototypes(const std::vector<Token>& toks, const ast::Struct& iface);
 // A class's method wrappers, `R C__M__fx(C self, params) { return self.M(args); }`, written
-// after the class.
-std::string class_method_wrappers(const std::vector<Token>& toks, const ast::Struct& cls);
+// after the class, one per method of `methods` (ClassLinkage::methods_of).
+std::string class_method_wrappers(const std::vector<Token>& toks, const ast::Struct& cls,
+                                  const std::vector<const ast::Function*>& methods);
 // The dispatchers' definitions of every interface: a switch over the class-instance id.
 std::string interface_dispatchers(const std::vector<Token>& toks, const ClassLinkage& linkage);
 

@@ -102,6 +102,15 @@ class EffectUnitBuilder {
   void emit_structure(detail::ShaderTextWriter& w, const ast::Struct& s);
   // A class method defined outside the class, in the class's place of its prototype.
   void emit_method_definition(detail::ShaderTextWriter& w, const ast::Function& m);
+  // When a method of `cls` starts at token `i` (its definition, or its prototype in the
+  // class): writes it if `methods` (what the class being written reaches) has it, and returns
+  // the index of its last token; nullopt when none starts there.
+  std::optional<uint32_t> emit_method_at(detail::ShaderTextWriter& w, const ast::Struct& cls, uint32_t i,
+                                         const std::vector<const ast::Function*>& methods);
+  // The body of `base`, a class the class being written derives from: its members, and the
+  // methods of `methods` it defines.
+  void emit_inherited(detail::ShaderTextWriter& w, const ast::Struct& base,
+                      const std::vector<const ast::Function*>& methods);
 
   // The first interface or interface variable a function's tokens name that no class
   // instance implements ("" for none): its calls have nothing to dispatch to.

@@ -139,7 +139,8 @@ void EffectUnitBuilder::emit_hlsl() {
     w.out() += detail::interface_dispatchers(toks_, linkage_);
     end(from, {kDispatchers}, {});
     if (!u_.decls_.empty() && u_.decls_.back().begin == from)
-      for (const ast::Variable* v : linkage_.instances) u_.decls_.back().refs.emplace_back(v->name);
+      for (const auto* list : {&linkage_.instances, &linkage_.buffered_instances})
+        for (const ast::Variable* v : *list) u_.decls_.back().refs.emplace_back(v->name);
   }
   w.end_line();
   u_.hlsl_ = std::move(w.out());
@@ -148,6 +149,7 @@ void EffectUnitBuilder::emit_hlsl() {
 void EffectUnitBuilder::emit_structure(detail::ShaderTextWriter& w, const ast::Struct& s) {
   if (s.kind == ast::StructKind::interface_type) return w.line(detail::interface_prototypes(toks_, s));
   if (s.kind == ast::StructKind::structure) return emit_tokens(w, s.tokens);
+  const std::vector<const ast::Function*> methods = linkage_.methods_of(s);
   bool in_bases = false, body = false;
   for (uint32_t i = s.tokens.first; i < s.tokens.last && i < toks_.size(); ++i) {
     const Token& t = toks_[i];
@@ -155,21 +157,53 @@ void EffectUnitBuilder::emit_structure(detail::ShaderTextWriter& w, const ast::S
       w.token(t, "struct");
       continue;
     }
-    // glslang takes member functions only with their bodies: a prototype whose definition
-    // follows the class (`float3 C::M(...) { }`) becomes that definition, without `C::`.
-    auto defined = std::find_if(s.methods.begin(), s.methods.end(),
-                                [&](const ast::Function& m) { return !m.owner.empty() && m.prototype.first == i; });
-    if (defined != s.methods.end()) {
-      emit_method_definition(w, *defined);
-      i = defined->prototype.last - 1;
+    if (std::optional<uint32_t> last = emit_method_at(w, s, i, methods)) {
+      i = *last;
       continue;
     }
     if (!body && t.is(TokenKind::colon)) in_bases = true;
-    if (t.is(TokenKind::l_brace)) body = true, in_bases = false;
+    if (t.is(TokenKind::l_brace) && !body) {
+      body = true, in_bases = false;
+      put_hlsl(w, i, s.tokens.last);
+      // glslang has no inheritance: the members of the classes it derives from come first,
+      // and the methods it inherits without overriding them.
+      for (const ast::Struct* base : linkage_.base_classes(s)) emit_inherited(w, *base, methods);
+      continue;
+    }
     if (!in_bases) put_hlsl(w, i, s.tokens.last);
   }
   w.end_line();
-  w.line(detail::class_method_wrappers(toks_, s));
+  w.line(detail::class_method_wrappers(toks_, s, methods));
+}
+
+std::optional<uint32_t> EffectUnitBuilder::emit_method_at(detail::ShaderTextWriter& w, const ast::Struct& cls,
+                                                          uint32_t i,
+                                                          const std::vector<const ast::Function*>& methods) {
+  for (const ast::Function& m : cls.methods) {
+    // glslang takes member functions only with their bodies: a prototype whose definition
+    // follows the class (`float3 C::M(...) { }`) becomes that definition, without `C::`.
+    const bool outside = !m.owner.empty();
+    const ast::TokenSpan span = outside ? m.prototype : m.tokens;
+    if (span.first != i || span.last <= i) continue;
+    const bool reached = std::find(methods.begin(), methods.end(), &m) != methods.end();
+    if (reached && outside) emit_method_definition(w, m);
+    else if (reached)
+      for (uint32_t k = span.first; k < span.last && k < toks_.size(); ++k) put_hlsl(w, k, span.last);
+    return span.last - 1;
+  }
+  return std::nullopt;
+}
+
+void EffectUnitBuilder::emit_inherited(detail::ShaderTextWriter& w, const ast::Struct& base,
+                                       const std::vector<const ast::Function*>& methods) {
+  uint32_t open = base.tokens.first, close = base.tokens.last;
+  while (open < close && !toks_[open].is(TokenKind::l_brace)) ++open;
+  while (close > open && !toks_[close - 1].is(TokenKind::r_brace)) --close;
+  for (uint32_t i = open + 1; i + 1 < close && i < toks_.size(); ++i) {
+    if (std::optional<uint32_t> last = emit_method_at(w, base, i, methods)) i = *last;
+    else put_hlsl(w, i, close - 1);
+  }
+  w.end_line();
 }
 
 void EffectUnitBuilder::emit_method_definition(detail::ShaderTextWriter& w, const ast::Function& m) {

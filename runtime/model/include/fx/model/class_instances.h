@@ -16,8 +16,8 @@ struct BindableInstance {
 };
 
 // The class instance variables of `effect` (globals of a class type, elements of arrays
-// sized by a literal) whose class implements the interface named `iface`; the index is the
-// instance's id.
+// sized by a literal) whose class implements the interface named `iface`, itself or through a
+// class it derives from; the index is the instance's id.
 std::vector<BindableInstance> bindable_instances(const ast::Effect& effect, std::string_view iface);
 
 // The interface named `name` declared in `effect`, or null.
