@@ -292,6 +292,22 @@ technique11 T {
   EXPECT_EQ(centre[1], 255);
 }
 
+// vvvv's Softedge.fx form: a bool varying (carried as uint between the stages, as fxc
+// carries it) true on every vertex, and a float1 member written through `.x`, reach the
+// pixel shader: the sphere is (0.75, 1, 0).
+TEST_F(EffectRenderTest, BoolVaryingAndOneComponentSwizzleReachThePixelShader) {
+  const std::array<uint8_t, 4> centre =
+      centre_of("fxkit_bool_varying", R"(float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+struct V { float4 p : SV_Position; float1 u : TEXCOORD0; bool on : TEXCOORD1; };
+V VS(float4 p : POSITION) { V o; o.p = mul(p, WorldViewProjection); o.u.x = 0.75; o.on = p.w > 0; return o; }
+float4 PS(V i) : SV_Target { return i.on ? float4(i.u.x, 1, 0, 1) : float4(0, 0, 1, 1); }
+technique11 T { pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(CompileShader(ps_5_0, PS())); } }
+)");
+  EXPECT_NEAR(centre[0], 191, 1);
+  EXPECT_EQ(centre[1], 255);
+  EXPECT_EQ(centre[2], 0);
+}
+
 // A geometry shader that takes the vertex struct with its SV_ClipDistance member and passes
 // it on (glslang#2392's form, rewritten by the unit) clips: the half of the sphere below the
 // plane y = 0 is not drawn, the half above is.

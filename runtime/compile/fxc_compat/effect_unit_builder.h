@@ -234,6 +234,19 @@ class EffectUnitBuilder {
   // one (scalars, vectors and matrices, each with a semantic); null otherwise.
   const ast::Struct* system_value_struct(const ast::Variable& p) const;
 
+  // The struct a parameter (or a result: its type and semantic) is passed as, when a member
+  // is a bool varying the wrapper carries as uint (see carrier_struct): not nested, not an
+  // array but a geometry shader's input vertices; null otherwise.
+  const ast::Struct* bool_varying_struct(const ast::Variable& p) const;
+  // Whether an entry point takes or returns a bool with a user semantic (or a struct
+  // member so): Vulkan has no bool inputs and outputs, and its wrapper carries them as uint.
+  bool has_bool_varying(const ast::Function& f) const;
+  // `fx_io_S`, a copy of `s` whose bool varyings are uint, with `fx_io_S_in` (to `s`) and
+  // `fx_io_S_out` (from `s`), added to `helpers` once.
+  std::string carrier_struct(const ast::Struct& s, std::string& helpers) const;
+  // A parameter's declaration with its type written as `type`.
+  std::string retyped(const ast::Variable& p, const std::string& type) const;
+
   // Whether a parameter takes a compile-time argument (`uniform`) or a BindInterfaces instance
   // (an interface type).
   bool takes_argument(const ast::Variable& p) const;

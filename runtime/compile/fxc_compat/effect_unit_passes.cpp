@@ -518,7 +518,7 @@ bool EffectUnitBuilder::hlsl(StageUnit& stage, const std::string& profile, const
                             return g->name == name && !g->body.empty();
                           }) > 1;
   if (args.empty() && interfaces == 0 && !overloaded &&
-      !(stage.stage == ShaderStage::fragment && has_d3d9_system_value(*f)))
+      !(stage.stage == ShaderStage::fragment && has_d3d9_system_value(*f)) && !has_bool_varying(*f))
     return true;
   std::vector<const ast::Variable*> uniforms;
   for (const ast::Variable& p : f->params)
@@ -589,6 +589,18 @@ std::pair<std::string, std::string> system_value(std::string_view semantic, cons
   return {"bool " + name + " : SV_IsFrontFace", "(" + type + ")(" + name + " ? 1.0 : -1.0)"};
 }
 
+// A bool scalar or vector with a user semantic: Vulkan has no bool inputs and outputs (a
+// builtin such as SV_IsFrontFace excepted); fxc passes bools between stages as 32-bit
+// integers, and the wrapper carries them as uint.
+bool is_bool_varying(const ast::TypeRef& type, std::string_view semantic) {
+  return type.template_arg.empty() && !type.definition && type.name.starts_with("bool") &&
+         numeric_components(type.name) && !semantic.empty() && !iequals(semantic.substr(0, 3), "SV_");
+}
+bool is_bool_varying(const ast::Variable& v) { return v.array_dims.empty() && is_bool_varying(v.type, v.semantic); }
+
+// `bool3` -> `uint3`.
+std::string carried_type(std::string_view bool_type) { return "uint" + std::string(bool_type.substr(4)); }
+
 std::string safe_name(std::string_view name) {
   std::string safe = detail::glslang_safe_name(name, false);
   return safe.empty() ? std::string(name) : safe;
@@ -618,6 +630,72 @@ bool EffectUnitBuilder::has_d3d9_system_value(const ast::Function& f) const {
   return false;
 }
 
+const ast::Struct* EffectUnitBuilder::bool_varying_struct(const ast::Variable& p) const {
+  const ast::Struct* s = p.type.template_arg.empty() && !p.type.definition ? structure(p.type.name) : nullptr;
+  const bool array_input = p.array_dims.size() == 1 && p.array_dims[0] && !(p.storage & (ast::kOut | ast::kInOut));
+  if (!s || s->kind != ast::StructKind::structure || !(p.array_dims.empty() || array_input)) return nullptr;
+  bool any = false;
+  for (const ast::Variable& m : s->members) {
+    if (m.type.definition || !m.type.template_arg.empty()) return nullptr;
+    any = any || is_bool_varying(m);
+  }
+  return any ? s : nullptr;
+}
+
+bool EffectUnitBuilder::has_bool_varying(const ast::Function& f) const {
+  ast::Variable result;
+  result.type = f.return_type;
+  result.semantic = f.semantic;
+  if (is_bool_varying(result) || bool_varying_struct(result)) return true;
+  for (const ast::Variable& p : f.params)
+    if (!takes_argument(p) && !system_value_struct(p) && (is_bool_varying(p) || bool_varying_struct(p))) return true;
+  return false;
+}
+
+std::string EffectUnitBuilder::carrier_struct(const ast::Struct& s, std::string& helpers) const {
+  const std::string name = safe_name(s.name), carrier = "fx_io_" + std::string(s.name);
+  if (helpers.find("struct " + carrier + " ") != std::string::npos) return carrier;
+  std::string members, in, out;
+  for (const ast::Variable& m : s.members) {
+    const std::string member = safe_name(m.name), type = std::string(m.type.name);
+    const bool converted = is_bool_varying(m);
+    for (auto [bit, word] : {std::pair{ast::kNoInterpolation, "nointerpolation "},
+                             {ast::kLinear, "linear "},
+                             {ast::kCentroid, "centroid "},
+                             {ast::kNoPerspective, "noperspective "},
+                             {ast::kSample, "sample "},
+                             {ast::kRowMajor, "row_major "},
+                             {ast::kColumnMajor, "column_major "}})
+      if (m.storage & bit) members += word;
+    members += (converted ? carried_type(type) : type) + " " + member;
+    for (const ast::ExprPtr dim : m.array_dims) {
+      std::string size;
+      spell(dim, size);
+      members += "[" + size + "]";
+    }
+    if (!m.semantic.empty()) members += " : " + std::string(m.semantic);
+    members += "; ";
+    in += "r." + member + " = " + (converted ? "(" + type + ")" : "") + "v." + member + "; ";
+    out += "r." + member + " = " + (converted ? "(" + carried_type(type) + ")" : "") + "v." + member + "; ";
+  }
+  helpers += "struct " + carrier + " { " + members + "};\n";
+  helpers += name + " " + carrier + "_in(" + carrier + " v) { " + name + " r; " + in + "return r; }\n";
+  helpers += carrier + " " + carrier + "_out(" + name + " v) { " + carrier + " r; " + out + "return r; }\n";
+  return carrier;
+}
+
+std::string EffectUnitBuilder::retyped(const ast::Variable& p, const std::string& type) const {
+  // The whole declaration joined (a modifier's spelling depends on what follows it), then its
+  // first word that is the type name replaced.
+  std::string text = join_tokens(toks_, p.tokens);
+  const std::string_view name = p.type.name;
+  for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1))
+    if ((at == 0 || !is_word_char(text[at - 1])) &&
+        (at + name.size() == text.size() || !is_word_char(text[at + name.size()])))
+      return text.replace(at, name.size(), type);
+  return text;
+}
+
 bool EffectUnitBuilder::takes_argument(const ast::Variable& p) const {
   return (p.storage & ast::kUniform) || is_interface_parameter(linkage_, p);
 }
@@ -640,14 +718,27 @@ bool EffectUnitBuilder::spell_bound_instance(const ast::Expr& e, const ast::Stru
 
 std::string EffectUnitBuilder::wrapper(const ast::Function& f, const std::vector<std::string>& args) const {
   std::string text;
+  std::string helpers;  // the structs that carry bool varyings as uint, and their conversions
   PresumedLocation at = sm_.presumed(f.name_range.begin);
   if (at.valid()) text += detail::line_directive(at.line, at.file) + "\n";
   for (const ast::Text& a : f.attributes) text += "[" + a + "] ";
-  text += f.return_type.name;
-  if (!f.return_type.template_arg.empty()) text += "<" + f.return_type.template_arg + ">";
-  text += " " + f.name + "__fx_args(";
+  std::string result_type(f.return_type.name);
+  if (!f.return_type.template_arg.empty()) result_type += "<" + std::string(f.return_type.template_arg) + ">";
+  ast::Variable result;
+  result.type = f.return_type;
+  result.semantic = f.semantic;
+  std::string result_conversion;
+  if (const ast::Struct* s = bool_varying_struct(result)) {
+    result_type = carrier_struct(*s, helpers);
+    result_conversion = result_type + "_out";
+  } else if (is_bool_varying(result)) {
+    result_type = carried_type(result_type);
+    result_conversion = "(" + result_type + ")";
+  }
+  text += result_type + " " + f.name + "__fx_args(";
   std::string call = f.name + "(";
-  std::string prelude;  // builds the input structs that carry D3D9 system values
+  std::string prelude;   // builds the input structs that carry D3D9 system values, bool varyings
+  std::string postlude;  // writes the outputs that carry bool varyings
   size_t bound = 0;
   bool first_param = true;
   for (size_t i = 0; i < f.params.size(); ++i) {
@@ -685,20 +776,57 @@ std::string EffectUnitBuilder::wrapper(const ast::Function& f, const std::vector
         } else {
           if (member.storage & ast::kNoInterpolation) text += "nointerpolation ";
           if (member.storage & ast::kCentroid) text += "centroid ";
-          text += type + " " + name + " : " + std::string(member.semantic);
+          if (is_bool_varying(member)) value = "(" + type + ")" + name;
+          text +=
+              (is_bool_varying(member) ? carried_type(type) : type) + " " + name + " : " + std::string(member.semantic);
         }
         prelude += param + "." + safe_name(member.name) + " = " + value + "; ";
       }
       call += param;
       continue;
     }
+    const bool in = !(p.storage & ast::kOut), out = p.storage & (ast::kOut | ast::kInOut);
+    const std::string name = safe_name(p.name);
+    if (is_bool_varying(p)) {  // carried as uint, converted as fxc converts
+      const std::string type(p.type.name), carried = carried_type(type);
+      text += retyped(p, carried);
+      if (!out) {
+        call += "(" + type + ")" + name;
+        continue;
+      }
+      prelude += type + " " + param + (in ? " = (" + type + ")" + name : "") + "; ";
+      postlude += name + " = (" + carried + ")" + param + "; ";
+      call += param;
+      continue;
+    }
+    if (const ast::Struct* s = bool_varying_struct(p)) {  // a copy with the bool varyings as uint
+      const std::string carrier = carrier_struct(*s, helpers);
+      text += retyped(p, carrier);
+      if (!p.array_dims.empty()) {  // a geometry shader's input vertices
+        std::string size;
+        spell(p.array_dims[0], size);
+        prelude += safe_name(s->name) + " " + param + "[" + size + "]; for (int fx_k = 0; fx_k < " + size +
+                   "; ++fx_k) " + param + "[fx_k] = " + carrier + "_in(" + name + "[fx_k]); ";
+        call += param;
+      } else if (!out) {
+        call += carrier + "_in(" + name + ")";
+      } else {
+        prelude += safe_name(s->name) + " " + param + (in ? " = " + carrier + "_in(" + name + ")" : "") + "; ";
+        postlude += name + " = " + carrier + "_out(" + param + "); ";
+        call += param;
+      }
+      continue;
+    }
     text += join_tokens(toks_, p.tokens);
-    call += safe_name(p.name);
+    call += name;
   }
   text += ")";
   if (!f.semantic.empty()) text += " : " + f.semantic;
-  text += " { " + prelude + (f.return_type.name == "void" ? "" : "return ") + call + "); }\n";
-  return text;
+  call = result_conversion.empty() ? call + ")" : result_conversion + "(" + call + "))";
+  if (f.return_type.name == "void") text += " { " + prelude + call + "; " + postlude + "}\n";
+  else if (postlude.empty()) text += " { " + prelude + "return " + call + "; }\n";
+  else text += " { " + prelude + result_type + " fx_result = " + call + "; " + postlude + "return fx_result; }\n";
+  return helpers + text;
 }
 
 }  // namespace fx

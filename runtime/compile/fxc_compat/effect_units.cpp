@@ -13,6 +13,7 @@
 #include "fx/ascii_case.h"
 #include "fx/state_table.h"
 #include "multisample_operator.h"
+#include "one_component_swizzle.h"
 #include "texture_noise.h"
 #include "untyped_sampler.h"
 
@@ -186,6 +187,7 @@ void EffectUnitBuilder::build() {
   respelled_.merge(detail::multisample_operator_spellings(toks_));
   respelled_.merge(detail::texture_noise_spellings(toks_, functions_));
   respelled_.merge(detail::untyped_sampler_spellings(toks_));
+  respelled_.merge(detail::one_component_swizzle_spellings(toks_));
   respelled_.merge(detail::class_linkage_spellings(toks_, linkage_, functions_));
   respelled_.merge(detail::clip_distance_input_spellings(
       toks_, functions_, [&](std::string_view name) { return structure(name); }, clip_distance_rewritten_));
