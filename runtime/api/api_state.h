@@ -19,6 +19,8 @@
 
 namespace fxkit::detail {
 
+struct EffectState;
+
 // Diagnostics as public messages (located through `sources` when given).
 Message to_message(const fx::Diagnostic& d, const fx::SourceManager* sources);
 std::vector<Message> to_messages(const std::vector<fx::Diagnostic>& ds, const fx::SourceManager* sources);
@@ -31,6 +33,16 @@ const Annotation* find_annotation(const std::vector<Annotation>& annotations, st
 
 // Why technique `t` of `version` cannot be drawn ("" when it can).
 std::string technique_reason(const fx::EffectVersion& version, uint32_t t);
+
+// The index of the technique `name` in `version` ("" = the effect's selection; kNoIndex
+// when there is none).
+uint32_t technique_index(const EffectState& s, const fx::EffectVersion& version, const std::string& name);
+
+// The live version's binding with the application's resources bound, and the index `t` of
+// the technique `name` (kept in the Technique's fields `serial`, `index`, `passes` while the
+// version stays); null: none.
+fx::vk::EffectBinding* live_binding(EffectState& s, const std::string& name, uint64_t& serial, uint32_t& index,
+                                    uint32_t& passes, uint32_t& t);
 
 // The pass-state facts of a Target (winding, Y convention, attachments).
 fx::vk::RenderingFormats rendering_formats(const Formats& formats);
@@ -52,8 +64,14 @@ struct DeviceState {
   void refresh_stores();
 };
 
+// Technique::run_script's render targets and quad, for one version, technique and frame
+// size (technique_script.cpp).
+struct ScriptRun;
+
 struct EffectState {
   fx::EffectHandle handle;
+  const DeviceState* device = nullptr;  // the device it was loaded through; null once destroyed
+  std::shared_ptr<ScriptRun> script;    // made by the first run_script, remade as it changes
   // The live version's parameter values (null when none): the setters' one indirection,
   // refreshed by the device where versions change (load, begin_frame, destruction).
   fx::ParameterStore* store = nullptr;

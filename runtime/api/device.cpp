@@ -140,6 +140,8 @@ Device::Device(std::unique_ptr<detail::DeviceState> state) : state_(std::move(st
 Device::~Device() {
   if (!state_) return;
   state_->ctx->wait_idle();
+  for (const std::weak_ptr<detail::EffectState>& e : state_->effects)
+    if (auto effect = e.lock()) effect->script.reset(), effect->device = nullptr;  // before the versions they draw
   state_->library.reset();
   state_
       ->refresh_stores();  // handles are inert now: no store  // versions and their bindings before what they draw with
@@ -192,6 +194,7 @@ Effect Device::load(const std::string& path) {
   e.state_->default_attributes = state_->default_attributes.handle();
   e.state_->default_binding = state_->target.default_attribute_binding;
   e.state_->textures = state_->textures.get();
+  e.state_->device = state_.get();
   state_->effects.push_back(e.state_);
   state_->refresh_stores();
   return e;

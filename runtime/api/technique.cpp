@@ -6,15 +6,6 @@
 namespace fxkit {
 namespace {
 
-// The index of the technique `name` in `version` ("" = the effect's selection).
-uint32_t resolve(const detail::EffectState& s, const fx::EffectVersion& version, const std::string& name) {
-  if (name.empty()) return s.handle.technique();
-  const auto& techniques = version.model->techniques;
-  for (uint32_t t = 0; t < techniques.size(); ++t)
-    if (techniques[t].name == name) return t;
-  return fx::kNoIndex;
-}
-
 uint32_t pass_count_of(const fx::EffectVersion& version, uint32_t t) {
   const auto& techniques = version.model->techniques;
   return t < techniques.size() ? uint32_t(techniques[t].passes.size()) : 0;
@@ -25,15 +16,25 @@ uint32_t pass_count_of(const fx::EffectVersion& version, uint32_t t) {
 void remember(const detail::EffectState& s, const fx::EffectVersion& version, const std::string& name, uint64_t& serial,
               uint32_t& index, uint32_t& passes) {
   if (serial == version.serial) return;
-  index = resolve(s, version, name);
+  index = detail::technique_index(s, version, name);
   passes = pass_count_of(version, index);
   serial = version.serial;
 }
 
-// The live version's binding with the application's resources bound, and the index `t` of
-// the technique `name` (kept in the Technique's fields as remember() does); null: none.
-fx::vk::EffectBinding* dispatch_binding(detail::EffectState& s, const std::string& name, uint64_t& serial,
-                                        uint32_t& index, uint32_t& passes, uint32_t& t) {
+}  // namespace
+
+namespace detail {
+
+uint32_t technique_index(const EffectState& s, const fx::EffectVersion& version, const std::string& name) {
+  if (name.empty()) return s.handle.technique();
+  const auto& techniques = version.model->techniques;
+  for (uint32_t t = 0; t < techniques.size(); ++t)
+    if (techniques[t].name == name) return t;
+  return fx::kNoIndex;
+}
+
+fx::vk::EffectBinding* live_binding(EffectState& s, const std::string& name, uint64_t& serial, uint32_t& index,
+                                    uint32_t& passes, uint32_t& t) {
   auto version = s.handle.version();
   fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
   if (!binding) return nullptr;
@@ -42,10 +43,6 @@ fx::vk::EffectBinding* dispatch_binding(detail::EffectState& s, const std::strin
   if (s.textures_serial != version->serial) s.bind_app_textures(*version, *binding);
   return binding;
 }
-
-}  // namespace
-
-namespace detail {
 
 std::string technique_reason(const fx::EffectVersion& version, uint32_t t) {
   if (!version.techniques->valid(t)) {
@@ -92,7 +89,7 @@ uint32_t Technique::pass_count() const {
 std::string Technique::reason() const {
   auto version = effect_ ? effect_->handle.version() : nullptr;
   if (!version) return "the effect has no good version";
-  const uint32_t t = resolve(*effect_, *version, name_);
+  const uint32_t t = detail::technique_index(*effect_, *version, name_);
   if (t >= version->model->techniques.size())
     return name_.empty() ? "selection chose no technique" : "the effect has no technique '" + name_ + "'";
   return detail::technique_reason(*version, t);
@@ -133,19 +130,19 @@ bool Technique::begin(VkCommandBuffer cmd, const VkViewport& viewport, const VkR
 bool Technique::compute_pass(uint32_t pass) const {
   auto version = effect_ ? effect_->handle.version() : nullptr;
   const fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
-  return binding && binding->compute_pass(resolve(*effect_, *version, name_), pass);
+  return binding && binding->compute_pass(detail::technique_index(*effect_, *version, name_), pass);
 }
 
 bool Technique::draw_pass(uint32_t pass) const {
   auto version = effect_ ? effect_->handle.version() : nullptr;
   const fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
-  return binding && binding->draw_pass(resolve(*effect_, *version, name_), pass);
+  return binding && binding->draw_pass(detail::technique_index(*effect_, *version, name_), pass);
 }
 
 bool Technique::dispatch(VkCommandBuffer cmd, uint32_t pass, uint32_t x, uint32_t y, uint32_t z) {
   uint32_t t = 0;
   fx::vk::EffectBinding* binding =
-      effect_ ? dispatch_binding(*effect_, name_, resolved_serial_, resolved_, passes_, t) : nullptr;
+      effect_ ? detail::live_binding(*effect_, name_, resolved_serial_, resolved_, passes_, t) : nullptr;
   if (!binding) return false;
   const bool ok = binding->dispatch(cmd, t, pass, {x, y, z}, effect_->sink);
   if (!effect_->sink.diagnostics().empty()) effect_->keep_problems();
@@ -155,7 +152,7 @@ bool Technique::dispatch(VkCommandBuffer cmd, uint32_t pass, uint32_t x, uint32_
 bool Technique::dispatch_compute_passes(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
   uint32_t t = 0;
   fx::vk::EffectBinding* binding =
-      effect_ ? dispatch_binding(*effect_, name_, resolved_serial_, resolved_, passes_, t) : nullptr;
+      effect_ ? detail::live_binding(*effect_, name_, resolved_serial_, resolved_, passes_, t) : nullptr;
   if (!binding) return false;
   const bool ok = binding->dispatch_compute_passes(cmd, t, width, height, effect_->sink);
   if (!effect_->sink.diagnostics().empty()) effect_->keep_problems();
@@ -165,13 +162,13 @@ bool Technique::dispatch_compute_passes(VkCommandBuffer cmd, uint32_t width, uin
 bool Technique::stream_output_pass(uint32_t pass) const {
   auto version = effect_ ? effect_->handle.version() : nullptr;
   const fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
-  return binding && binding->stream_output_pass(resolve(*effect_, *version, name_), pass);
+  return binding && binding->stream_output_pass(detail::technique_index(*effect_, *version, name_), pass);
 }
 
 bool Technique::begin_capture(VkCommandBuffer cmd, uint32_t pass) {
   uint32_t t = 0;
   fx::vk::EffectBinding* binding =
-      effect_ ? dispatch_binding(*effect_, name_, resolved_serial_, resolved_, passes_, t) : nullptr;
+      effect_ ? detail::live_binding(*effect_, name_, resolved_serial_, resolved_, passes_, t) : nullptr;
   if (!binding) return false;
   const bool ok = binding->begin_capture(cmd, t, pass, 0, effect_->sink);
   if (ok && effect_->default_attributes) {
@@ -200,7 +197,7 @@ StreamOutputBuffer Technique::stream_output_buffer(uint32_t pass, uint32_t slot)
   auto version = effect_ ? effect_->handle.version() : nullptr;
   const fx::vk::EffectBinding* binding = version ? fx::vk::ReloadBackend::binding(*version) : nullptr;
   if (!binding) return {};
-  auto b = binding->stream_output_buffer(resolve(*effect_, *version, name_), pass, slot);
+  auto b = binding->stream_output_buffer(detail::technique_index(*effect_, *version, name_), pass, slot);
   return b ? StreamOutputBuffer{b->buffer, b->counter, b->size, b->stride} : StreamOutputBuffer{};
 }
 

@@ -49,8 +49,8 @@ std::optional<fx::Image> EffectPreview::render_script(ScriptRunner& runner, uint
   };
   bool scene_drawn = true;
   if (test_scene_)
-    frame.draw_scene = [&](VkCommandBuffer cmd, const RenderTarget& target) {
-      scene_drawn = test_scene_->draw(cmd, target, scene(), frame.draw_geometry, sink) && scene_drawn;
+    frame.draw_scene = [&](VkCommandBuffer cmd, const RenderingFormats& formats, const VkRect2D& area) {
+      scene_drawn = test_scene_->draw(cmd, formats, area, scene(), frame.draw_geometry, sink) && scene_drawn;
     };
   frames_->begin_frame();
   bool recorded = true;

@@ -47,12 +47,14 @@ std::unique_ptr<PreviewTestScene> PreviewTestScene::create(const Context& ctx, E
   return s;
 }
 
-bool PreviewTestScene::draw(VkCommandBuffer cmd, const RenderTarget& target, const SceneView& scene,
-                            const std::function<void(VkCommandBuffer)>& draw_mesh, DiagnosticSink& sink) {
+bool PreviewTestScene::draw(VkCommandBuffer cmd, const RenderingFormats& formats, const VkRect2D& area,
+                            const SceneView& scene, const std::function<void(VkCommandBuffer)>& draw_mesh,
+                            DiagnosticSink& sink) {
   set_standard_semantics(*effect_->params, *effect_->model, scene);
-  const float w = float(target.width()), h = float(target.height());
-  const VkViewport viewport{0.0f, h, w, -h, 0.0f, 1.0f};  // the preview's flip (binding_desc)
-  bool ok = binding_->begin(cmd, 0, target.formats(), viewport, target.scissor(), sink);
+  const float x = float(area.offset.x), y = float(area.offset.y);
+  const float w = float(area.extent.width), h = float(area.extent.height);
+  const VkViewport viewport{x, y + h, w, -h, 0.0f, 1.0f};  // the preview's flip (binding_desc)
+  bool ok = binding_->begin(cmd, 0, formats, viewport, area, sink);
   if (ok) {
     ok = binding_->apply(0, layout_, sink);
     if (ok) draw_mesh(cmd);

@@ -19,9 +19,9 @@ class PreviewTestScene {
   // The scene's effect compiled and bound with `preview`'s textures, frames and vertex streams.
   static std::unique_ptr<PreviewTestScene> create(const Context& ctx, EffectPreview& preview, DiagnosticSink& sink);
 
-  // Draws into `target`, which is rendering (between its begin and end), with the camera of
+  // Draws into attachments of `formats` that are rendering over `area`, with the camera of
   // `scene`; `draw_mesh` binds the preview's vertex streams and draws its mesh.
-  bool draw(VkCommandBuffer cmd, const RenderTarget& target, const SceneView& scene,
+  bool draw(VkCommandBuffer cmd, const RenderingFormats& formats, const VkRect2D& area, const SceneView& scene,
             const std::function<void(VkCommandBuffer)>& draw_mesh, DiagnosticSink& sink);
 
  private:

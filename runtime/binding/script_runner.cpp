@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "fx/ascii_case.h"
+#include "fx/vulkan/barrier.h"
+#include "fx/vulkan/vk_check.h"
 
 namespace fx::vk {
 namespace {
@@ -67,12 +69,24 @@ float scalar(const ParameterStore& params, Param p) {
   return params.get(p, i) ? float(i) : 0.0f;
 }
 
+// Orders a rendering on the frame's attachments after the one before it on the same images,
+// and what follows the script after its last.
+void attachment_barrier(VkCommandBuffer cmd) {
+  constexpr VkPipelineStageFlags stages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                          VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                          VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  memory_barrier(cmd, stages, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                 stages,
+                 VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                     VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+}
+
 }  // namespace
 
 struct ScriptRunner::State {
   VkCommandBuffer cmd = VK_NULL_HANDLE;
   const ScriptFrame* frame = nullptr;
-  RenderTarget* current = nullptr;
+  RenderTarget* current = nullptr;  // null: the frame's attachments
   // RenderColorTarget1..3: drawn into beside `current` (multiple render targets).
   std::array<RenderTarget*, kMaxColorAttachments - 1> more{};
   std::array<float, 4> clear_color{0, 0, 0, 0};
@@ -89,7 +103,8 @@ struct ScriptRunner::State {
     std::vector<RenderTarget*> out;
     for (RenderTarget* t : more) {
       if (!t || t == current || std::find(out.begin(), out.end(), t) != out.end()) break;
-      if (t->width() >= current->width() && t->height() >= current->height()) {
+      const VkExtent2D size = area().extent;
+      if (t->width() >= size.width && t->height() >= size.height) {
         out.push_back(t);
         continue;
       }
@@ -97,16 +112,70 @@ struct ScriptRunner::State {
         sink.warning("vk-script-target", step.range,
                      "a render target bound beside RenderColorTarget0 is smaller than it (" +
                          std::to_string(t->width()) + "x" + std::to_string(t->height()) + " against " +
-                         std::to_string(current->width()) + "x" + std::to_string(current->height()) +
+                         std::to_string(area().extent.width) + "x" + std::to_string(area().extent.height) +
                          "): it is not drawn into");
       smaller_target_said = true;
     }
     return out;
   }
 
-  // After rendering into them: the script's targets are sampled by later passes.
-  void to_shader_read(std::span<RenderTarget* const> drawn) {
-    if (current != frame->target) current->color().transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  // What the current target draws into: a render target's whole image, or the frame's area.
+  VkRect2D area() const { return current ? current->scissor() : frame->attachments.area; }
+  RenderingFormats formats(std::span<RenderTarget* const> more) const {
+    const std::vector<const RenderTarget*> more_formats(more.begin(), more.end());
+    if (current) return current->formats(more_formats);
+    RenderingFormats f = frame->attachments.formats;
+    for (const RenderTarget* t : more)
+      if (f.color_count < kMaxColorAttachments) f.color[f.color_count++] = t->color().format();
+    return f;
+  }
+
+  // Begins rendering into the current target and `more`, cleared as `clear` says.
+  void begin(const ClearValues& clear, std::span<RenderTarget* const> more) {
+    if (current) return current->begin(cmd, clear, more);
+    const FrameAttachments& frame_images = frame->attachments;
+    attachment_barrier(cmd);
+    std::array<VkRenderingAttachmentInfo, kMaxColorAttachments> colors{};
+    uint32_t count = 0;
+    auto attach = [&](VkImageView view, VkImageLayout layout) {
+      VkRenderingAttachmentInfo& color = colors[count++];
+      color = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+      color.imageView = view;
+      color.imageLayout = layout;
+      color.loadOp = clear.color ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+      color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+      if (clear.color)
+        for (int i = 0; i < 4; ++i) color.clearValue.color.float32[i] = (*clear.color)[i];
+    };
+    attach(frame_images.color, frame_images.color_layout);
+    for (RenderTarget* t : more)
+      if (count < kMaxColorAttachments) {
+        t->color().transition(cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+        attach(t->color().view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+      }
+    auto info = structure<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+    info.renderArea = frame_images.area;
+    info.layerCount = 1;
+    info.colorAttachmentCount = count;
+    info.pColorAttachments = colors.data();
+    auto depth = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    if (frame_images.depth) {
+      depth.imageView = frame_images.depth;
+      depth.imageLayout = frame_images.depth_layout;
+      depth.loadOp = clear.depth ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+      depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+      depth.clearValue.depthStencil = {clear.depth.value_or(1.0f), clear.stencil};
+      if (frame_images.formats.depth != VK_FORMAT_UNDEFINED) info.pDepthAttachment = &depth;
+      if (frame_images.formats.stencil != VK_FORMAT_UNDEFINED) info.pStencilAttachment = &depth;
+    }
+    vkCmdBeginRendering(cmd, &info);
+  }
+
+  // Ends the rendering begin() started; the script's targets drawn are then sampled by
+  // later passes.
+  void end(std::span<RenderTarget* const> drawn) {
+    vkCmdEndRendering(cmd);
+    if (current && current != frame->target) current->color().transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     for (RenderTarget* t : drawn) t->color().transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   }
 };
@@ -157,6 +226,12 @@ ScriptRunner::~ScriptRunner() {
   if (ctx_ && !targets_.empty()) ctx_->wait_idle();
 }
 
+std::vector<std::pair<std::string, const RenderTarget*>> ScriptRunner::targets() const {
+  std::vector<std::pair<std::string, const RenderTarget*>> out;
+  for (const auto& [param, target] : targets_) out.emplace_back(model_->parameters[param].name, &target);
+  return out;
+}
+
 const RenderTarget* ScriptRunner::target(const std::string& name) const {
   const uint32_t p = model_->find_parameter(name);
   auto it = targets_.find(p);
@@ -186,7 +261,9 @@ bool ScriptRunner::record(VkCommandBuffer cmd, const ScriptFrame& frame, Diagnos
       target.color().transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     }
   const std::vector<ScriptStep>& steps = model_->techniques[technique_].script->steps;
-  return run(steps, 0, steps.size(), state, sink);
+  const bool ok = run(steps, 0, steps.size(), state, sink);
+  if (!frame.target) attachment_barrier(cmd);
+  return ok;
 }
 
 bool ScriptRunner::run(const std::vector<ScriptStep>& steps, size_t begin, size_t end, State& state,
@@ -219,9 +296,8 @@ bool ScriptRunner::run(const std::vector<ScriptStep>& steps, size_t begin, size_
         else clear.depth = state.clear_depth;  // depth and stencil clear together
         // Direct3D 9 clears every bound render target.
         const std::vector<RenderTarget*> more = state.more_targets(step, sink);
-        state.current->begin(state.cmd, clear, more);
-        state.current->end(state.cmd);
-        state.to_shader_read(more);
+        state.begin(clear, more);
+        state.end(more);
         break;
       }
       case ScriptCommand::pass:
@@ -232,10 +308,9 @@ bool ScriptRunner::run(const std::vector<ScriptStep>& steps, size_t begin, size_
         break;
       case ScriptCommand::script_external:
         if (state.frame->draw_scene) {
-          state.current->begin(state.cmd, ClearValues{std::nullopt, std::nullopt, 0});
-          state.frame->draw_scene(state.cmd, *state.current);
-          state.current->end(state.cmd);
-          state.to_shader_read({});
+          state.begin(ClearValues{std::nullopt, std::nullopt, 0}, {});
+          state.frame->draw_scene(state.cmd, state.formats({}), state.area());
+          state.end({});
         }
         break;
       case ScriptCommand::loop_by_count:
@@ -279,22 +354,21 @@ bool ScriptRunner::draw_pass(const ScriptStep& step, State& state, DiagnosticSin
 }
 
 bool ScriptRunner::draw(const ScriptStep& step, ScriptDraw what, uint32_t pass, State& state, DiagnosticSink& sink) {
-  RenderTarget& target = *state.current;
-  const float w = float(target.width()), h = float(target.height());
+  const VkRect2D area = state.area();
+  const float x = float(area.offset.x), y = float(area.offset.y);
+  const float w = float(area.extent.width), h = float(area.extent.height);
   const bool flipped = state.frame->viewport.height < 0;
-  const VkViewport viewport{0.0f, flipped ? h : 0.0f, w, flipped ? -h : h, 0.0f, 1.0f};
+  const VkViewport viewport{x, flipped ? y + h : y, w, flipped ? -h : h, 0.0f, 1.0f};
   const std::vector<RenderTarget*> more = state.more_targets(step, sink);
-  const std::vector<const RenderTarget*> more_formats(more.begin(), more.end());
-  target.begin(state.cmd, ClearValues{std::nullopt, std::nullopt, 0}, more);
-  bool ok = binding_->begin(state.cmd, technique_, target.formats(more_formats), viewport, target.scissor(), sink);
+  state.begin(ClearValues{std::nullopt, std::nullopt, 0}, more);
+  bool ok = binding_->begin(state.cmd, technique_, state.formats(more), viewport, area, sink);
   if (ok) {
     ok = binding_->apply(pass, state.frame->vertex_layout, sink);
     const auto& drawing = what == ScriptDraw::buffer ? state.frame->draw_quad : state.frame->draw_geometry;
     if (ok && drawing) drawing(state.cmd);
     binding_->end();
   }
-  target.end(state.cmd);
-  state.to_shader_read(more);
+  state.end(more);
   return ok;
 }
 

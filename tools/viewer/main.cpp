@@ -88,6 +88,10 @@ float draw_ui(fxkit::Effect& effect, fxkit::Technique& technique, Panels& ui, co
   if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) draw_params(effect, ui);
   if (ImGui::CollapsingHeader("Techniques", ImGuiTreeNodeFlags_DefaultOpen))
     ui.techniques.draw(effect, technique, camera_distance);
+  // ImGui 1.86's Vulkan backend draws no user textures: the script's targets as text.
+  if (technique.has_script() && ImGui::CollapsingHeader("Script render targets", ImGuiTreeNodeFlags_DefaultOpen))
+    for (const fxkit::ScriptTarget& t : technique.script_targets())
+      ImGui::Text("%s: %ux%u", t.name.c_str(), t.extent.width, t.extent.height);
   ImGui::PopTextWrapPos();
   const float width = ImGui::GetWindowWidth();
   ImGui::End();
@@ -188,6 +192,7 @@ int main(int argc, char** argv) {
   OrbitCamera camera(mesh->radius());
   GpuTimer timer(window->device(), options.frames_in_flight, window->timestamp_period_ns());
   bool failed_reload = false, script_failed = false;
+  bool script_said = false;  // a DXSAS script's failure printed once, not every frame
 
   uint64_t stand_ins_serial = 0;  // the version set_preview_defaults last ran on
   for (int frame_no = 0; !glfwWindowShouldClose(window->glfw()) && (opt.frames == 0 || frame_no < opt.frames);) {
@@ -241,7 +246,22 @@ int main(int argc, char** argv) {
     window->begin_scene(frame, clear);
     const VkViewport viewport{
         float(area.offset.x), float(area.extent.height), float(area.extent.width), -float(area.extent.height), 0, 1};
-    if (technique.begin(frame.cmd, viewport, area)) {
+    const bool dxsas = technique.has_script();
+    if (dxsas) {
+      // A DXSAS Script draws its own frame, outside rendering: its render targets, its passes,
+      // the mesh for Draw=Geometry, into the window's images over the scene area.
+      window->end_scene(frame);
+      fxkit::ScriptFrame script_frame;
+      script_frame.color = window->image_view(frame.image);
+      script_frame.depth = window->depth_view();
+      script_frame.depth_layout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+      script_frame.area = area;
+      script_frame.draw_geometry = [&](VkCommandBuffer cmd) { mesh->draw(cmd); };
+      if (!technique.run_script(frame.cmd, script_frame) && !script_said) {
+        print(effect.messages());
+        script_said = true;
+      }
+    } else if (technique.begin(frame.cmd, viewport, area)) {
       uint32_t captured = UINT32_MAX;  // the stream-output pass the passes after it draw (DrawAuto)
       for (uint32_t pass = 0; pass < technique.pass_count(); ++pass) {
         timer.mark(frame.cmd);
@@ -251,8 +271,10 @@ int main(int argc, char** argv) {
         timer.mark(frame.cmd);
       }
     }
-    technique.end();
-    window->end_scene(frame);
+    if (!dxsas) {
+      technique.end();
+      window->end_scene(frame);
+    }
     ++frame_no;
     if ((!opt.screenshot.empty() && frame_no == opt.frames) || (!scripted.screenshot.empty() && !scripted.with_ui))
       window->capture(frame);

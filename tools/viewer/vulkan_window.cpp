@@ -381,6 +381,7 @@ VkFormat VulkanWindow::color_format() const { return impl_->color_format; }
 VkFormat VulkanWindow::depth_format() const { return impl_->depth_format; }
 uint32_t VulkanWindow::image_count() const { return uint32_t(impl_->images.size()); }
 VkImageView VulkanWindow::image_view(uint32_t image) const { return impl_->views.at(image); }
+VkImageView VulkanWindow::depth_view() const { return impl_->depth_view; }
 uint64_t VulkanWindow::swapchain_generation() const { return impl_->generation; }
 float VulkanWindow::timestamp_period_ns() const { return impl_->timestamp_period; }
 uint32_t VulkanWindow::validation_messages() const { return impl_->validation_count; }

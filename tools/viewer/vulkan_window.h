@@ -45,6 +45,8 @@ class VulkanWindow {
   VkFormat depth_format() const;
   uint32_t image_count() const;
   VkImageView image_view(uint32_t image) const;
+  // The depth image's view, in DEPTH_ATTACHMENT_OPTIMAL from begin_scene on.
+  VkImageView depth_view() const;
   // Bumped whenever the swapchain is made again (a resize): image views changed.
   uint64_t swapchain_generation() const;
   float timestamp_period_ns() const;  // 0: the queue has no timestamps

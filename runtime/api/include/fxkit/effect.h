@@ -19,6 +19,7 @@
 #include "fx/vulkan/apply_stats.h"
 #include "fx/vulkan/pass_apply.h"
 #include "fxkit/message.h"
+#include "fxkit/script_frame.h"
 
 namespace fxkit {
 
@@ -208,6 +209,20 @@ class Technique {
   bool draw_stream_output(VkCommandBuffer cmd, uint32_t pass, uint32_t stream_output_pass);
   // Output buffer `slot` of stream-output pass `pass` ({} when it has none).
   StreamOutputBuffer stream_output_buffer(uint32_t pass, uint32_t slot = 0) const;
+
+  // Whether the technique has a DXSAS Script annotation (docs/dxsas.md): it draws its own
+  // frame with run_script(), not with begin() and apply().
+  bool has_script() const;
+  // Records the technique's script into `cmd`, outside the application's rendering and
+  // outside begin()/end(): its render targets (made by fxkit for each loaded version and
+  // frame size), clears, passes, Draw=Geometry (frame.draw_geometry), Draw=Buffer (a quad of
+  // fxkit's over frame.area, in the Target's vertex layout and conventions) and
+  // ScriptExternal (frame.draw_scene), into `frame`'s images. False, with the reason in
+  // messages(), when it has no script or a pass cannot be drawn.
+  bool run_script(VkCommandBuffer cmd, const ScriptFrame& frame);
+  // The render targets the last run_script() drew with (thumbnails); their views stay valid
+  // until the next run_script() after a reload or a frame size change.
+  std::vector<ScriptTarget> script_targets() const;
 
  private:
   friend class Effect;

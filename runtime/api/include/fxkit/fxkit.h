@@ -11,4 +11,5 @@
 #include "fxkit/mesh.h"
 #include "fxkit/message.h"
 #include "fxkit/offscreen.h"
+#include "fxkit/script_frame.h"
 #include "fxkit/target.h"

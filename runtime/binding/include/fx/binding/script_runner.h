@@ -3,23 +3,37 @@
 // ViewportRatio / Dimensions / Format annotations), bound to the passes that sample them;
 // RenderColorTarget0..3, Clear / ClearSetColor / ClearSetDepth, Pass=, Draw=Geometry (the host's
 // mesh), Draw=Buffer (a full-screen quad), ScriptExternal (the host's scene), LoopByCount and
-// LoopGetIndex. Used by EffectPreview::render_script (`fxkit render`); an engine calls
-// record() with its own frame. docs/dxsas.md says what runs and what does not.
+// LoopGetIndex. Used by EffectPreview::render_script (`fxkit render`) and by the public API's
+// Technique::run_script (an application's frame). docs/dxsas.md says what runs and what does not.
 #pragma once
 #include <functional>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "fx/binding/effect_binding.h"
 #include "fx/vulkan/render_target.h"
 
 namespace fx::vk {
 
+// A frame that is no RenderTarget: an application's colour and depth-stencil images, which
+// the runner begins rendering on in the attachment layouts they are in, and leaves so.
+struct FrameAttachments {
+  VkImageView color = VK_NULL_HANDLE;
+  VkImageView depth = VK_NULL_HANDLE;  // null when `formats` has no depth
+  VkImageLayout color_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  VkImageLayout depth_layout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  RenderingFormats formats;  // one colour attachment, depth and stencil as the images
+  VkRect2D area{};           // the part of the images the script draws into
+};
+
 // What the host gives a script for one frame.
 struct ScriptFrame {
-  RenderTarget* target = nullptr;  // the frame's own colour and depth (RenderColorTarget0=)
+  RenderTarget* target = nullptr;  // the frame's own colour and depth (RenderColorTarget0=), or
+  FrameAttachments attachments;    // when `target` is null, the frame's attachments
   uint32_t vertex_layout = 0;      // the binding's layout id for draw_geometry's and draw_quad's vertices
   VkViewport viewport{};           // of the frame's target; scaled to each render target
   // Binds its buffers and draws the application's geometry (Draw=Geometry).
@@ -27,9 +41,9 @@ struct ScriptFrame {
   // Binds its buffers and draws a quad covering the target, positions in clip space (-1..1)
   // and TEXCOORD0 0..1 with v = 0 at the top (Draw=Buffer).
   std::function<void(VkCommandBuffer)> draw_quad;
-  // Draws the host's scene into `target`, the current one, which is rendering
-  // (ScriptExternal); empty leaves the target as the script cleared it.
-  std::function<void(VkCommandBuffer, const RenderTarget& target)> draw_scene;
+  // Draws the host's scene into the current target, which is rendering with `formats` over
+  // `area` (ScriptExternal); empty leaves the target as the script cleared it.
+  std::function<void(VkCommandBuffer, const RenderingFormats& formats, const VkRect2D& area)> draw_scene;
 };
 
 class ScriptRunner {
@@ -44,8 +58,9 @@ class ScriptRunner {
   ~ScriptRunner();
 
   // Records the script into `cmd`, outside any rendering. Leaves the frame's target ended
-  // (its colour in COLOR_ATTACHMENT_OPTIMAL, as RenderTarget::end does). False on a failed
-  // apply (diagnostics in `sink`).
+  // (its colour in COLOR_ATTACHMENT_OPTIMAL, as RenderTarget::end does; the frame's
+  // attachments written and visible to later attachment access). False on a failed apply
+  // (diagnostics in `sink`).
   bool record(VkCommandBuffer cmd, const ScriptFrame& frame, DiagnosticSink& sink);
 
   // True when the technique's script or a pass's has ScriptExternal: it draws the host's scene.
@@ -53,6 +68,8 @@ class ScriptRunner {
 
   // The render target made for texture parameter `name`, or null.
   const RenderTarget* target(const std::string& name) const;
+  // Every render target made, with its texture parameter's name.
+  std::vector<std::pair<std::string, const RenderTarget*>> targets() const;
 
  private:
   struct State;
