@@ -125,8 +125,7 @@ struct ScriptRunner::State {
     const std::vector<const RenderTarget*> more_formats(more.begin(), more.end());
     if (current) return current->formats(more_formats);
     RenderingFormats f = frame->attachments.formats;
-    for (const RenderTarget* t : more)
-      if (f.color_count < kMaxColorAttachments) f.color[f.color_count++] = t->color().format();
+    append_color_formats(f, more_formats);
     return f;
   }
 
@@ -137,34 +136,20 @@ struct ScriptRunner::State {
     attachment_barrier(cmd);
     std::array<VkRenderingAttachmentInfo, kMaxColorAttachments> colors{};
     uint32_t count = 0;
-    auto attach = [&](VkImageView view, VkImageLayout layout) {
-      VkRenderingAttachmentInfo& color = colors[count++];
-      color = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-      color.imageView = view;
-      color.imageLayout = layout;
-      color.loadOp = clear.color ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
-      color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-      if (clear.color)
-        for (int i = 0; i < 4; ++i) color.clearValue.color.float32[i] = (*clear.color)[i];
-    };
-    attach(frame_images.color, frame_images.color_layout);
+    colors[count++] = color_attachment(frame_images.color, frame_images.color_layout, clear);
     for (RenderTarget* t : more)
       if (count < kMaxColorAttachments) {
         t->color().transition(cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-        attach(t->color().view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+        colors[count++] = color_attachment(t->color().view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, clear);
       }
     auto info = structure<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
     info.renderArea = frame_images.area;
     info.layerCount = 1;
     info.colorAttachmentCount = count;
     info.pColorAttachments = colors.data();
-    auto depth = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    VkRenderingAttachmentInfo depth{};
     if (frame_images.depth) {
-      depth.imageView = frame_images.depth;
-      depth.imageLayout = frame_images.depth_layout;
-      depth.loadOp = clear.depth ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
-      depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-      depth.clearValue.depthStencil = {clear.depth.value_or(1.0f), clear.stencil};
+      depth = depth_attachment(frame_images.depth, frame_images.depth_layout, clear);
       if (frame_images.formats.depth != VK_FORMAT_UNDEFINED) info.pDepthAttachment = &depth;
       if (frame_images.formats.stencil != VK_FORMAT_UNDEFINED) info.pStencilAttachment = &depth;
     }

@@ -95,8 +95,7 @@ RenderingFormats RenderTarget::formats(std::span<const RenderTarget* const> more
   RenderingFormats f;
   f.color[0] = color_.format();
   f.color_count = 1;
-  for (const RenderTarget* t : more)
-    if (f.color_count < kMaxColorAttachments) f.color[f.color_count++] = t->color_.format();
+  append_color_formats(f, more);
   if (depth_) {
     f.depth = depth_.format();
     if (has_stencil(f.depth)) f.stencil = f.depth;
@@ -115,14 +114,7 @@ void RenderTarget::begin(VkCommandBuffer cmd, const ClearValues& clear, std::spa
     // Cleared attachments may discard their old contents (cheaper on tilers).
     if (clear.color) image.assume_layout(VK_IMAGE_LAYOUT_UNDEFINED);
     image.transition(cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-    VkRenderingAttachmentInfo& color = colors[count++];
-    color = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-    color.imageView = image.view();
-    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = clear.color ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    if (clear.color)
-      for (int i = 0; i < 4; ++i) color.clearValue.color.float32[i] = (*clear.color)[i];
+    colors[count++] = color_attachment(image.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, clear);
   };
   attach(color_);
   for (RenderTarget* t : more)
@@ -134,15 +126,11 @@ void RenderTarget::begin(VkCommandBuffer cmd, const ClearValues& clear, std::spa
   info.colorAttachmentCount = count;
   info.pColorAttachments = colors.data();
 
-  auto depth = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  VkRenderingAttachmentInfo depth{};
   if (depth_) {
     if (clear.depth) depth_.assume_layout(VK_IMAGE_LAYOUT_UNDEFINED);
     depth_.transition(cmd, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
-    depth.imageView = depth_.view();
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    depth.loadOp = clear.depth ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    depth.clearValue.depthStencil = {clear.depth.value_or(1.0f), clear.stencil};
+    depth = depth_attachment(depth_.view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, clear);
     info.pDepthAttachment = &depth;
     if (has_stencil(depth_.format())) info.pStencilAttachment = &depth;
   }
@@ -150,6 +138,32 @@ void RenderTarget::begin(VkCommandBuffer cmd, const ClearValues& clear, std::spa
 }
 
 void RenderTarget::end(VkCommandBuffer cmd) { vkCmdEndRendering(cmd); }
+
+VkRenderingAttachmentInfo color_attachment(VkImageView view, VkImageLayout layout, const ClearValues& clear) {
+  auto color = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  color.imageView = view;
+  color.imageLayout = layout;
+  color.loadOp = clear.color ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  if (clear.color)
+    for (int i = 0; i < 4; ++i) color.clearValue.color.float32[i] = (*clear.color)[i];
+  return color;
+}
+
+VkRenderingAttachmentInfo depth_attachment(VkImageView view, VkImageLayout layout, const ClearValues& clear) {
+  auto depth = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  depth.imageView = view;
+  depth.imageLayout = layout;
+  depth.loadOp = clear.depth ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+  depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  depth.clearValue.depthStencil = {clear.depth.value_or(1.0f), clear.stencil};
+  return depth;
+}
+
+void append_color_formats(RenderingFormats& formats, std::span<const RenderTarget* const> targets) {
+  for (const RenderTarget* t : targets)
+    if (formats.color_count < kMaxColorAttachments) formats.color[formats.color_count++] = t->color().format();
+}
 
 void RenderTarget::record_readback(VkCommandBuffer cmd) {
   if (!readback_) return;

@@ -90,4 +90,11 @@ class RenderTarget {
   Buffer readback_;
 };
 
+// The attachment infos of a dynamic rendering over `view` in `layout`: cleared to the
+// value `clear` gives (colour; depth and stencil), or loaded when it gives none; stored.
+VkRenderingAttachmentInfo color_attachment(VkImageView view, VkImageLayout layout, const ClearValues& clear);
+VkRenderingAttachmentInfo depth_attachment(VkImageView view, VkImageLayout layout, const ClearValues& clear);
+// Appends the colour format of each of `targets` to `formats` (up to kMaxColorAttachments).
+void append_color_formats(RenderingFormats& formats, std::span<const RenderTarget* const> targets);
+
 }  // namespace fx::vk
