@@ -1,10 +1,22 @@
 // EffectPreview: mesh buffers, an offscreen target and a one-frame render loop.
 #include "fx/binding/effect_preview.h"
 
+#include <cstddef>
+
 #include "fx/vulkan/one_shot.h"
 #include "preview_test_scene.h"
 
 namespace fx::vk {
+namespace {
+
+// The preview's constant attribute buffer (binding 1): what an attribute the mesh lacks reads.
+struct PreviewAttributeData {
+  DefaultAttributeData defaults;
+  float blend_weight[4] = {1, 0, 0, 0};
+  float color[4] = {1, 1, 1, 1};
+};
+
+}  // namespace
 
 std::unique_ptr<EffectPreview> EffectPreview::create(const Context& ctx, const Mesh& mesh,
                                                      const EffectPreviewDesc& desc, DiagnosticSink& sink) {
@@ -20,12 +32,10 @@ std::unique_ptr<EffectPreview> EffectPreview::create(const Context& ctx, const M
       Buffer::create(ctx, {vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "preview vertices"}, sink);
   auto ib =
       Buffer::create(ctx, {ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryUsage::upload, "preview indices"}, sink);
-  // What an attribute the mesh lacks reads (vertex_layout): (0, 0, 0, 1), and BLENDWEIGHT
-  // (1, 0, 0, 0) so that one bone carries the vertex.
-  struct {
-    DefaultAttributeData defaults;
-    float blend_weight[4] = {1, 0, 0, 0};
-  } constant;
+  // What an attribute the mesh lacks reads (vertex_layout): (0, 0, 0, 1), BLENDWEIGHT
+  // (1, 0, 0, 0) so that one bone carries the vertex, and COLOR white, the colour of a mesh
+  // whose vertex colours leave the material as it is.
+  PreviewAttributeData constant;
   auto cb = Buffer::create(
       ctx, {sizeof constant, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryUsage::upload, "preview constant attributes"},
       sink);
@@ -72,10 +82,12 @@ SceneView EffectPreview::scene() const {
 VertexLayout EffectPreview::vertex_layout(std::span<const InterfaceVariable> inputs) const {
   // GLSL inputs (no semantics) read the mesh attribute their name suggests (match_vertex_layout).
   VertexLayout layout = with_default_attributes(to_vertex_layout(mesh_vertex_layout(), 0), inputs, 1);
-  for (VertexAttribute& a : layout.attributes)
-    if (a.binding == 1 && a.format == VK_FORMAT_R32G32B32A32_SFLOAT &&
-        canonical_semantic(a.semantic).starts_with("BLENDWEIGHT"))
-      a.offset = sizeof(DefaultAttributeData);
+  for (VertexAttribute& a : layout.attributes) {
+    if (a.binding != 1 || a.format != VK_FORMAT_R32G32B32A32_SFLOAT) continue;
+    const std::string semantic = canonical_semantic(a.semantic);
+    if (semantic.starts_with("BLENDWEIGHT")) a.offset = offsetof(PreviewAttributeData, blend_weight);
+    if (semantic.starts_with("COLOR")) a.offset = offsetof(PreviewAttributeData, color);
+  }
   return layout;
 }
 

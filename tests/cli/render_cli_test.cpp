@@ -71,6 +71,33 @@ TEST(FxkitRender, AnEngineEffectDrawsWithStandInsAndSaysWhichItGave) {
   EXPECT_GT(centre[0], 60);
 }
 
+// An XNA-style vertex-colour variant (BasicEffect_VertexLighting_VertexColor): the lit colour
+// times the vertex COLOR. The preview's mesh has no vertex colours; COLOR reads white, so the
+// variant shows the lit material as its variant without vertex colours does, not black.
+TEST(FxkitRender, VertexColourReadsWhiteOnThePreviewMesh) {
+  const auto [r, image] = render("vertex_colour", R"(
+float4x4 WorldViewProj;
+float4 DiffuseColor;
+float3 LightDirection;
+struct VSOut { float4 Position : POSITION; float4 Color : COLOR0; };
+VSOut VS(float4 p : POSITION, float3 n : NORMAL, float4 c : COLOR) {
+  VSOut o;
+  o.Position = mul(p, WorldViewProj);
+  o.Color = DiffuseColor * (0.2 + saturate(dot(n, -LightDirection))) * c;
+  return o;
+}
+float4 PS(float4 c : COLOR0) : COLOR0 { return c; }
+technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile ps_2_0 PS(); } }
+)",
+                                 "--validation");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("one flat colour"), std::string::npos) << r.err;
+  ASSERT_TRUE(image);
+  const uint8_t* centre = image->at(image->width / 2, image->height / 2);
+  EXPECT_GT(centre[0], 60);
+  EXPECT_EQ(centre[0], centre[2]);  // the stand-in grey, untinted: white vertex colours
+}
+
 // A DirectX SDK-style lit effect (BasicHLSL's names): g_LightDir is the direction towards the
 // light, an array of them one per light, and no value has a default. The stand-ins follow
 // that convention, so the side of the sphere facing the camera is lit, not black.

@@ -48,8 +48,9 @@ class EffectPreview {
   // TEXCOORD0 from the mesh; GLSL inputs (no semantics) by their names (…position, …normal,
   // …tangent, …binormal/bitangent, …texcoord/uv); any other input reads a constant
   // (0, 0, 0, 1) from a second, zero-stride stream, as Direct3D reads undeclared elements,
-  // except BLENDWEIGHT, (1, 0, 0, 0) so that one bone carries the vertex (integer inputs such
-  // as BLENDINDICES read (0, 0, 0, 1) as integers).
+  // except BLENDWEIGHT, (1, 0, 0, 0) so that one bone carries the vertex, and COLOR, white
+  // (vertex colours that leave the material as it is); integer inputs such as BLENDINDICES
+  // read (0, 0, 0, 1) as integers.
   VertexLayout vertex_layout(std::span<const InterfaceVariable> inputs) const;
 
   // One frame: begin_frame, clear, begin/apply every pass of `technique` with a mesh draw
