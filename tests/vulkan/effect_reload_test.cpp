@@ -129,15 +129,17 @@ TEST_F(EffectReloadTest, BrokenEditKeepsTheImageAndTheFixApplies) {
 }
 
 TEST_F(EffectReloadTest, ReloadsDuringRenderedFramesDropNothingAndLeakNothing) {
+  // A number of edits, not of frames: how many frames a reload takes depends on the machine's
+  // load, and the test waits for each reload's event.
   const char* soak = std::getenv("FXKIT_SOAK");
-  const uint64_t frames = soak && std::string(soak) == "1" ? 1000 : 100;
+  const uint32_t edits = soak && std::string(soak) == "1" ? 300 : 30;
   ReloadHarness h(ctx(), "reload_soak.fx");
   ASSERT_TRUE(h.frame_once());
   const int64_t baseline_objects = EffectBinding::live_vulkan_objects();
   const size_t baseline_textures = h.preview->textures().gpu_count();
   const size_t baseline_versions = EffectVersion::live_count();
   uint64_t reloads = 0, failures = 0;
-  for (uint32_t edit = 0; h.frame < frames; ++edit) {
+  for (uint32_t edit = 0; edit < edits; ++edit) {
     // Good and broken edits alternate with two brightness values; every third is broken.
     const bool broken = edit % 3 == 2;
     h.edit(effect_text(edit % 2 ? 0.5f : 0.7f, broken));
@@ -153,8 +155,8 @@ TEST_F(EffectReloadTest, ReloadsDuringRenderedFramesDropNothingAndLeakNothing) {
   ASSERT_TRUE(h.frame_once());
   ctx().wait_idle();
   h.lib->release_all();
-  EXPECT_GT(reloads, 5u);
-  EXPECT_GT(failures, 2u);
+  EXPECT_EQ(reloads, edits - edits / 3);
+  EXPECT_EQ(failures, edits / 3);
   EXPECT_EQ(ctx().validation_error_count(), 0u) << describe_messages(ctx());
   EXPECT_EQ(EffectBinding::live_vulkan_objects(), baseline_objects);
   EXPECT_EQ(h.preview->textures().gpu_count(), baseline_textures);
