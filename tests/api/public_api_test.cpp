@@ -1149,5 +1149,44 @@ technique11 T {
   EXPECT_EQ(ctx().validation_error_count(), 0u) << describe_messages(ctx());
 }
 
+// A method defined outside its class, after the constant buffer that holds the instances and a
+// global it reads (the DirectX SDK's DynamicShaderLinkage sample reads `g_vEyeDir` so): fxc
+// reads it where it is defined, so it sees that global; it calls a method of its class, and a
+// derived class inherits it with its own members.
+TEST_F(PublicApiTest, AMethodDefinedAfterItsClassSeesTheGlobalsDeclaredBeforeIt) {
+  Rig r = rig();
+  ASSERT_TRUE(r) << text(r.errors);
+  fxkit::Effect effect = r.device->load(write_effect("api_class_method_after.fx", R"(
+float4x4 WorldViewProjection : WORLDVIEWPROJECTION;
+interface iLight { float3 Ambient(); };
+class cAmbient : iLight { float3 colour; float3 Ambient(); float3 Scaled(float k) { return colour * k; } };
+class cHemi : cAmbient { float3 ground; };
+cbuffer Lights { cAmbient g_ambient; cHemi g_hemi; float3 g_boost; };
+iLight g_light;
+float3 cAmbient::Ambient() { float3 half = Scaled(0.5); return half + g_boost; }
+struct V { float4 pos : SV_Position; };
+V VS(float4 p : POSITION) { V o; o.pos = mul(p, WorldViewProjection); return o; }
+float4 PS(V i, iLight light) : SV_Target { return float4(light.Ambient(), 1); }
+technique11 T {
+  pass P { SetVertexShader(CompileShader(vs_5_0, VS())); SetPixelShader(BindInterfaces(CompileShader(ps_5_0, PS()), g_light)); }
+}
+)"));
+  ASSERT_TRUE(effect.ok()) << text(effect.messages());
+  effect.set_scene(fxkit::Scene::framing(r.mesh->radius(), 1.0f));
+  fxkit::Technique technique = effect.technique("T");
+  ASSERT_TRUE(technique.valid()) << technique.reason();
+  const fxkit::Param light = effect.param("g_light");
+  ASSERT_TRUE(effect.set(effect.param("g_ambient"), {1.0f, 0.0f, 0.0f}));
+  ASSERT_TRUE(effect.set(effect.param("g_hemi"), {0.0f, 1.0f, 0.0f, 1.0f, 1.0f, 1.0f}));  // colour, then ground
+  ASSERT_TRUE(effect.set(effect.param("g_boost"), {0.0f, 0.0f, 0.25f}));
+  ASSERT_TRUE(effect.set_class_instance(light, "g_ambient"));
+  EXPECT_EQ(draw(*r.device, technique, *r.mesh, *r.image), (std::array<uint8_t, 3>{128, 0, 64}))
+      << "half of cAmbient's colour, plus the global";
+  ASSERT_TRUE(effect.set_class_instance(light, "g_hemi"));
+  EXPECT_EQ(draw(*r.device, technique, *r.mesh, *r.image), (std::array<uint8_t, 3>{0, 128, 64}))
+      << "the inherited method on cHemi's own colour";
+  EXPECT_EQ(ctx().validation_error_count(), 0u) << describe_messages(ctx());
+}
+
 }  // namespace
 }  // namespace fx::vk::testing

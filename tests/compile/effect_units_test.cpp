@@ -257,10 +257,11 @@ technique11 T {
   EXPECT_TRUE(programs.program("T", "Interface")->find(ShaderStage::vertex)->shader.ok);
 }
 
-// Methods defined after their class (`float3 Ambient::Shade(...) { }`) are written into the
-// class in place of their prototypes, which glslang takes only with a body; the class then
-// compiles where a shader uses it directly, and the interface stage still says why not.
-TEST(EffectUnits, MethodsDefinedOutsideTheirClassCompileInsideIt) {
+// Methods defined after their class (`float3 Ambient::Shade(...) { }`; glslang takes member
+// functions only inside their struct) are written where they are defined, as functions of an
+// instance (`Ambient__Shade__fxm(inout Ambient self, ...)`): overloads, a call of another
+// method, a call on a local instance compile; the interface stage still says why not.
+TEST(EffectUnits, MethodsDefinedOutsideTheirClassCompileAsFunctionsOfAnInstance) {
   fs::path dir = temp_dir("out_of_class");
   write(dir / "methods.fx", R"(interface ILight { float3 Shade(float3 n); float3 Tint(); };
 float3 g_scale = float3(0.5, 0.5, 0.5);

@@ -18,9 +18,9 @@ const ast::Struct* named(const std::vector<const ast::Struct*>& list, std::strin
 // `R name(params)` for a method (its return type and parameters as written).
 std::string signature(const std::vector<Token>& toks, const ast::Function& m, const std::string& name,
                       const std::string& leading) {
-  std::string text = std::string(m.return_type.name);
-  if (!m.return_type.template_arg.empty()) text += "<" + std::string(m.return_type.template_arg) + ">";
-  text += " " + name + "(" + leading;
+  std::string text(m.return_type.name);
+  if (!m.return_type.template_arg.empty()) text.append("<").append(m.return_type.template_arg).append(">");
+  text.append(" ").append(name).append("(").append(leading);
   for (const ast::Variable& p : m.params) {
     if (!leading.empty() || &p != &m.params.front()) text += ", ";
     text += join_tokens(toks, p.tokens);
@@ -148,7 +148,7 @@ std::unordered_map<uint32_t, std::string> class_linkage_spellings(const std::vec
                                                                   const ClassLinkage& linkage,
                                                                   const std::vector<const ast::Function*>& functions) {
   std::unordered_map<uint32_t, std::string> out;
-  if (linkage.empty()) return out;
+  if (linkage.classes.empty()) return out;
   // The type each name that calls go through has: interface variables, class instances.
   std::unordered_map<std::string_view, const ast::Struct*> globals;
   for (const ast::Variable* v : linkage.interface_variables) {
@@ -175,8 +175,33 @@ std::unordered_map<uint32_t, std::string> class_linkage_spellings(const std::vec
         if (std::optional<uint32_t> t = type_token(toks, p)) out.emplace(*t, "int");
       }
     const size_t last = std::min<size_t>(f->tokens.last, toks.size());
+    // Locals and parameters of a class type: a call of a method defined outside the class
+    // calls its function (method_function_name) on them, in place (`inout`).
+    std::unordered_map<std::string_view, const ast::Struct*> locals;
+    for (const ast::Variable& p : f->params)
+      if (const ast::Struct* cls = linkage.class_named(p.type.name)) locals.insert_or_assign(p.name, cls);
+    for (size_t i = f->tokens.first; i + 1 < last; ++i)
+      if (toks[i].is(TokenKind::identifier) && toks[i + 1].is(TokenKind::identifier))
+        if (const ast::Struct* cls = linkage.class_named(toks[i].text()))
+          locals.insert_or_assign(toks[i + 1].text(), cls);
     for (size_t i = f->tokens.first; i < last; ++i) {
       if (!toks[i].is(TokenKind::identifier) || (i > 0 && toks[i - 1].is(TokenKind::period))) continue;
+      if (auto local = locals.find(toks[i].text()); local != locals.end()) {
+        if (i + 3 < last && toks[i + 1].is(TokenKind::period) && toks[i + 2].is(TokenKind::identifier) &&
+            toks[i + 3].is(TokenKind::l_paren)) {
+          const std::vector<const ast::Function*> methods = linkage.methods_of(*local->second);
+          const bool outside = std::any_of(methods.begin(), methods.end(), [&](const ast::Function* m) {
+            return m->name == toks[i + 2].text() && !m->owner.empty();
+          });
+          if (outside) {
+            out[i] = method_function_name(local->second->name, toks[i + 2].text()) + "(" + std::string(toks[i].text());
+            out[i + 1].assign(1, ' ');
+            out[i + 2].assign(1, ' ');
+            out[i + 3].assign(1, i + 4 < last && toks[i + 4].is(TokenKind::r_paren) ? ' ' : ',');
+          }
+        }
+        continue;
+      }
       auto found = names.find(toks[i].text());
       if (found == names.end()) continue;
       size_t dot = i + 1;
@@ -206,12 +231,67 @@ std::string interface_prototypes(const std::vector<Token>& toks, const ast::Stru
 std::string class_method_wrappers(const std::vector<Token>& toks, const ast::Struct& cls,
                                   const std::vector<const ast::Function*>& methods) {
   std::string text;
+  for (const ast::Function* m : methods)
+    if (!m->owner.empty()) text += method_function_signature(toks, cls, *m) + ";\n";
   for (const ast::Function* m : methods) {
-    const std::string call = "self." + std::string(m->name) + "(" + forwarded(*m) + ");";
+    const std::string call = m->owner.empty() ? "self." + std::string(m->name) + "(" + forwarded(*m) + ");"
+                                              : method_function_name(cls.name, m->name) + "(self" +
+                                                    (m->params.empty() ? "" : ", ") + forwarded(*m) + ");";
     text += signature(toks, *m, dispatcher_name(cls.name, m->name), std::string(cls.name) + " self") + " { " +
             (m->return_type.name == "void" ? "" : "return ") + call + " }\n";
   }
   return text;
+}
+
+std::string method_function_name(std::string_view cls, std::string_view method) {
+  return std::string(cls) + "__" + std::string(method) + "__fxm";
+}
+
+std::string method_function_signature(const std::vector<Token>& toks, const ast::Struct& cls, const ast::Function& m) {
+  return signature(toks, m, method_function_name(cls.name, m.name), "inout " + std::string(cls.name) + " self");
+}
+
+std::unordered_map<uint32_t, std::string> method_body_spellings(const std::vector<Token>& toks,
+                                                                const ClassLinkage& linkage, const ast::Struct& cls,
+                                                                const ast::Function& m) {
+  std::unordered_set<std::string_view> members;
+  for (const ast::Struct* base : linkage.base_classes(cls))
+    for (const ast::Variable& v : base->members) members.insert(v.name);
+  for (const ast::Variable& v : cls.members) members.insert(v.name);
+  for (const ast::Variable& p : m.params) members.erase(p.name);
+  const std::vector<const ast::Function*> methods = linkage.methods_of(cls);
+  auto method_named = [&](std::string_view name) -> const ast::Function* {
+    for (const ast::Function* f : methods)
+      if (f->name == name) return f;
+    return nullptr;
+  };
+  const size_t first = m.body.first, last = std::min<size_t>(m.body.last, toks.size());
+  // A local of a member's name (`float3 m_vDir = ...;`) hides the member in the whole body.
+  for (size_t i = first + 1; i + 1 < last; ++i)
+    if (toks[i].is(TokenKind::identifier) && toks[i - 1].is(TokenKind::identifier) && toks[i - 1].text() != "return" &&
+        toks[i - 1].text() != "else" &&
+        (toks[i + 1].is(TokenKind::equal) || toks[i + 1].is(TokenKind::semi) || toks[i + 1].is(TokenKind::comma) ||
+         toks[i + 1].is(TokenKind::l_square)))
+      members.erase(toks[i].text());
+  std::unordered_map<uint32_t, std::string> out;
+  for (size_t i = first; i < last; ++i) {
+    if (!toks[i].is(TokenKind::identifier)) continue;
+    if (i > 0 && (toks[i - 1].is(TokenKind::period) || toks[i - 1].is(TokenKind::coloncolon))) continue;
+    const std::string_view name = toks[i].text();
+    const bool call = i + 1 < last && toks[i + 1].is(TokenKind::l_paren);
+    if (const ast::Function* f = call ? method_named(name) : nullptr) {
+      if (f->owner.empty()) {
+        out.emplace(uint32_t(i), "self." + std::string(name));
+      } else {
+        out.emplace(uint32_t(i), method_function_name(cls.name, name) + "(self");
+        const bool no_arguments = i + 2 < last && toks[i + 2].is(TokenKind::r_paren);
+        out.emplace(uint32_t(i + 1), no_arguments ? " " : ",");
+      }
+    } else if (members.count(name)) {
+      out.emplace(uint32_t(i), "self." + std::string(name));
+    }
+  }
+  return out;
 }
 
 std::string interface_dispatchers(const std::vector<Token>& toks, const ClassLinkage& linkage) {

@@ -62,9 +62,27 @@ std::string dispatcher_name(std::string_view iface, std::string_view method);
 // class instance by interface_dispatchers).
 std::string interface_prototypes(const std::vector<Token>& toks, const ast::Struct& iface);
 // A class's method wrappers, `R C__M__fx(C self, params) { return self.M(args); }`, written
-// after the class, one per method of `methods` (ClassLinkage::methods_of).
+// after the class, one per method of `methods` (ClassLinkage::methods_of). A method defined
+// outside its class is a function of its own (method_function_name), declared here first:
+// the wrapper calls it, `return C__M__fxm(self, args);`.
 std::string class_method_wrappers(const std::vector<Token>& toks, const ast::Struct& cls,
                                   const std::vector<const ast::Function*>& methods);
+
+// A method defined outside its class (`float3 C::M(float3 n) { ... }`) is written where it is
+// defined, as fxc reads it (it sees the globals declared between the class and it), as a
+// function of an instance: `R C__M__fxm(inout C self, params) { ... }`, one per class that
+// reaches it (a derived class gets its own copy). glslang takes member functions only
+// inside their struct.
+std::string method_function_name(std::string_view cls, std::string_view method);
+// That function's signature, `R C__M__fxm(inout C self, params)`.
+std::string method_function_signature(const std::vector<Token>& toks, const ast::Struct& cls, const ast::Function& m);
+// The spellings, by token index, of `m`'s body written for class `cls`: the members of `cls`
+// (and of the classes it derives from) as `self.x`, unless a parameter or local of that name
+// hides them, and calls of its methods as `self.M(...)` or, for one defined outside the class
+// too, `C__M__fxm(self, ...)`.
+std::unordered_map<uint32_t, std::string> method_body_spellings(const std::vector<Token>& toks,
+                                                                const ClassLinkage& linkage, const ast::Struct& cls,
+                                                                const ast::Function& m);
 // The dispatchers' definitions of every interface: a switch over the class-instance id.
 std::string interface_dispatchers(const std::vector<Token>& toks, const ClassLinkage& linkage);
 

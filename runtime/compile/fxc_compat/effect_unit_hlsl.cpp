@@ -87,15 +87,18 @@ void EffectUnitBuilder::emit_hlsl() {
         if (u_.decls_.size() == count) break;
         // An interface's dispatchers are defined after every class instance (see below).
         if (d.structure->kind == ast::StructKind::interface_type) u_.decls_.back().refs.push_back(kDispatchers);
-        // Methods defined outside the class are emitted inside it: what they use comes along.
-        std::vector<std::string>& refs = u_.decls_.back().refs;
-        for (const ast::Function& m : d.structure->methods)
-          if (!m.owner.empty())
-            for (std::string& name : identifiers_in(m.tokens))
-              if (std::find(refs.begin(), refs.end(), name) == refs.end()) refs.push_back(std::move(name));
+        // Methods defined outside the class are functions of their own (emit_method_functions):
+        // what they use comes along with them.
+        if (d.structure->kind == ast::StructKind::class_type)
+          for (const ast::Function* m : linkage_.methods_of(*d.structure))
+            if (!m->owner.empty())
+              u_.decls_.back().refs.push_back(detail::method_function_name(d.structure->name, m->name));
         break;
       }
-      case ast::DeclKind::function: emit_function(w, *d.function); break;
+      case ast::DeclKind::function:
+        emit_method_functions(w, d.function->tokens.first);
+        emit_function(w, *d.function);
+        break;
       case ast::DeclKind::constant_buffer: {
         const ast::ConstantBuffer& cb = *d.constant_buffer;
         std::vector<std::string> names{cb.name};
@@ -134,6 +137,7 @@ void EffectUnitBuilder::emit_hlsl() {
       case ast::DeclKind::glsl_block: break;
     }
   }
+  emit_method_functions(w, UINT32_MAX);
   if (!linkage_.empty()) {
     const size_t from = begin();
     w.out() += detail::interface_dispatchers(toks_, linkage_);
@@ -185,9 +189,9 @@ std::optional<uint32_t> EffectUnitBuilder::emit_method_at(detail::ShaderTextWrit
     const bool outside = !m.owner.empty();
     const ast::TokenSpan span = outside ? m.prototype : m.tokens;
     if (span.first != i || span.last <= i) continue;
+    // One defined outside the class is written where it is defined (emit_method_functions).
     const bool reached = std::find(methods.begin(), methods.end(), &m) != methods.end();
-    if (reached && outside) emit_method_definition(w, m);
-    else if (reached)
+    if (reached && !outside)
       for (uint32_t k = span.first; k < span.last && k < toks_.size(); ++k) put_hlsl(w, k, span.last);
     return span.last - 1;
   }
@@ -206,17 +210,41 @@ void EffectUnitBuilder::emit_inherited(detail::ShaderTextWriter& w, const ast::S
   w.end_line();
 }
 
-void EffectUnitBuilder::emit_method_definition(detail::ShaderTextWriter& w, const ast::Function& m) {
-  uint32_t scope = m.tokens.first;  // the `::` after the class name
-  while (scope + 1 < m.tokens.last &&
-         !(toks_[scope].is(TokenKind::coloncolon) && toks_[scope + 1].is_identifier(m.name)))
-    ++scope;
-  w.end_line();
-  w.desync();
-  if (scope > m.tokens.first) emit_function_tokens(w, {m.tokens.first, scope - 1});
-  emit_function_tokens(w, {scope + 1, m.tokens.last});
-  w.end_line();
-  w.desync();
+void EffectUnitBuilder::emit_method_functions(detail::ShaderTextWriter& w, uint32_t before) {
+  struct Pending {
+    const ast::Struct* cls;
+    const ast::Function* method;
+  };
+  std::vector<Pending> due;
+  for (const ast::Struct* cls : linkage_.classes)
+    for (const ast::Function* m : linkage_.methods_of(*cls))
+      if (!m->owner.empty() && m->tokens.first < before && written_methods_.insert({cls, m}).second)
+        due.push_back({cls, m});
+  std::stable_sort(due.begin(), due.end(),
+                   [](const Pending& a, const Pending& b) { return a.method->tokens.first < b.method->tokens.first; });
+  for (const Pending& p : due) {
+    w.end_line();
+    w.desync();
+    EffectUnits::DeclText text;
+    text.names = {detail::method_function_name(p.cls->name, p.method->name)};
+    text.function = true;
+    text.begin = w.out().size();
+    w.line(detail::method_function_signature(toks_, *p.cls, *p.method));
+    // The body's spellings for this class, beside the effect's (which win where both spell a token).
+    std::vector<uint32_t> added;
+    for (auto& [i, spelling] : detail::method_body_spellings(toks_, linkage_, *p.cls, *p.method))
+      if (respelled_.emplace(i, std::move(spelling)).second) added.push_back(i);
+    emit_function_tokens(w, {p.method->body.first - 1, p.method->tokens.last});
+    for (uint32_t i : added) respelled_.erase(i);
+    w.end_line();
+    w.desync();
+    text.end = w.out().size();
+    text.refs = identifiers_in(p.method->tokens);
+    text.refs.push_back(p.cls->name);  // `self`'s type: an inherited method names its base class only
+    for (const ast::Function* m : linkage_.methods_of(*p.cls))
+      if (!m->owner.empty()) text.refs.push_back(detail::method_function_name(p.cls->name, m->name));
+    u_.decls_.push_back(std::move(text));
+  }
 }
 
 std::string EffectUnitBuilder::dynamic_linkage_in(ast::TokenSpan span) const {
