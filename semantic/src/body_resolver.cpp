@@ -10,7 +10,7 @@ namespace fx::semantic {
 namespace {
 
 // Words of the language itself: never resolved, never counted.
-constexpr std::array<std::string_view, 46> kKeywords = {"if",
+constexpr std::array<std::string_view, 47> kKeywords = {"if",
                                                         "else",
                                                         "for",
                                                         "while",
@@ -55,12 +55,13 @@ constexpr std::array<std::string_view, 46> kKeywords = {"if",
                                                         "stateblock_state",
                                                         "asm",
                                                         "vector",
-                                                        "matrix"};
+                                                        "matrix",
+                                                        "unsigned"};
 
 // Modifiers that may precede a local declaration's type.
-constexpr std::array<std::string_view, 12> kModifiers = {"const",       "static",       "uniform",  "precise",
-                                                         "row_major",   "column_major", "volatile", "extern",
-                                                         "groupshared", "snorm",        "unorm",    "inline"};
+constexpr std::array<std::string_view, 13> kModifiers = {
+    "const",  "static",      "uniform", "precise", "row_major", "column_major", "volatile",
+    "extern", "groupshared", "snorm",   "unorm",   "inline",    "unsigned"};  // `unsigned int`: fxc's uint
 
 // Loop and branch attributes: `[unroll]`, `[loop]`, `[unroll(4)]` before a statement.
 constexpr std::array<std::string_view, 10> kAttributes = {
@@ -318,7 +319,10 @@ uint32_t BodyResolver::array_rank_after(uint32_t i) const {
 bool BodyResolver::try_declaration(uint32_t& i) {
   uint32_t j = i;
   while (j < last_ && tokens_[j].is(TokenKind::identifier) && one_of(kModifiers, tokens_[j].text())) ++j;
-  if (j >= last_ || !tokens_[j].is(TokenKind::identifier) || one_of(kKeywords, tokens_[j].text())) return false;
+  // `vector` and `matrix` are keywords that name types (`matrix m = ...;`).
+  if (j >= last_ || !tokens_[j].is(TokenKind::identifier) ||
+      (one_of(kKeywords, tokens_[j].text()) && tokens_[j].text() != "vector" && tokens_[j].text() != "matrix"))
+    return false;
   const std::string_view type_name = tokens_[j].text();
   // `Name name =` with a Name that is no type the model knows: a type from a dialect or a
   // prelude the compiler adds (pre-release HLSL's vec3). Declared, but the body goes quiet.

@@ -208,7 +208,9 @@ ShaderType SemanticModel::resolve_type_name(std::string_view name) const {
   // Follows typedefs (a bounded number: a cycle of them names no type).
   uint32_t alias_rank = 0;
   for (int depth = 0; depth < 16; ++depth) {
-    if (auto numeric = builtin_numeric_type(name)) {
+    // `matrix` and `vector` alone are HLSL's float4x4 and float4.
+    const std::string_view spelled = name == "matrix" ? "float4x4" : name == "vector" ? "float4" : name;
+    if (auto numeric = builtin_numeric_type(spelled)) {
       numeric->array_rank += alias_rank;
       return *numeric;
     }
@@ -240,9 +242,7 @@ ShaderType SemanticModel::resolve_type(const ast::TypeRef& type, size_t array_ra
     t.kind = TypeClass::structure;
     t.structure = type.definition;
     t.name = type.definition->name.empty() ? std::string("struct") : std::string(type.definition->name);
-  } else if ((type.name == "matrix" || type.name == "vector") && type.template_arg.empty()) {
-    t = *builtin_numeric_type(type.name == "matrix" ? "float4x4" : "float4");  // HLSL's defaults
-  } else if (type.name == "vector" || type.name == "matrix" || !type.template_arg.empty()) {
+  } else if (!type.template_arg.empty()) {
     t.kind = is_object_type_name(type.name) ? TypeClass::object : TypeClass::unknown;
     t.name = type.name + "<" + type.template_arg + ">";
   } else {

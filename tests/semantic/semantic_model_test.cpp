@@ -163,6 +163,33 @@ float4 PS(float2 uv : TEXCOORD0) : SV_Target {
   EXPECT_EQ(m->model->global("tex")->type.kind, TypeClass::object);
 }
 
+// `matrix` and `vector` are keywords that name types (HLSL's float4x4 and float4), and
+// `unsigned int` is fxc's uint: locals declared with them are locals (the DirectX SDK's
+// skinning samples, `matrix m = g_mBoneWorld[iBone];`, and NBodyGravity's loop counter).
+TEST(SemanticModel, LocalsOfMatrixVectorAndUnsignedTypes) {
+  auto m = fxtest::model_of(R"(float4x4 g_bones[4];
+float4 VS(float4 p : POSITION, uint bone : BLENDINDICES) : POSITION {
+  matrix m = g_bones[bone];
+  vector v = mul(p, m);
+  for (unsigned int index = 0; index < 4; index++) v += (float)index;
+  return v;
+}
+)");
+  EXPECT_TRUE(m->model->diagnostics().empty()) << m->model->diagnostics()[0].message;
+  const auto* mat = m->reference("m", 1);  // `mul(p, m)`
+  ASSERT_NE(mat, nullptr);
+  ASSERT_NE(mat->symbol, nullptr);
+  EXPECT_EQ(mat->symbol->kind, SymbolKind::local);
+  EXPECT_EQ(mat->type.name, "float4x4");
+  const auto* v = m->reference("v", 1);
+  ASSERT_NE(v, nullptr);
+  EXPECT_EQ(v->type.name, "float4");
+  const auto* index = m->reference("index", 1);
+  ASSERT_NE(index, nullptr);
+  ASSERT_NE(index->symbol, nullptr);
+  EXPECT_EQ(index->symbol->kind, SymbolKind::local);
+}
+
 TEST(SemanticModel, LocalsWithAnnotationBlocksAreDeclarations) {
   // fxc takes an empty annotation block on a local (vkd3d's effect-annotations tests); the
   // front end reports a non-empty one, and its entries are no identifiers of the code.
