@@ -127,6 +127,11 @@ ShaderBinding shader_from(const ast::Expr& e, PassStage stage, ResolveContext& c
           ctx.class_linkage_types.count(std::string(ctx.model.parameters[named->second].decl->type.name)))
         continue;
       auto v = fold_constant(*a, ctx.scope, ctx.diags, true);
+      // `PS(TwelveKernel)`, a global the application sets, for a `uniform` parameter: fxc
+      // binds the parameter to it (the DirectX SDK's DepthOfField passes its kernel so).
+      if (!v && base->kind == ast::ExprKind::identifier && named != ctx.model.parameter_index.end() &&
+          ctx.model.parameters[named->second].is_uniform())
+        continue;
       if (!v) {
         ctx.diags.error("not-constant", a->range, "compile-time shader argument must be a constant");
         continue;
