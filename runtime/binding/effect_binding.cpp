@@ -464,8 +464,9 @@ bool EffectBinding::bind_pass_resources(Pass& pass, bool preview, DiagnosticSink
   }
   for (const ProgramTexelBuffer& t : pass.shader.texel_buffers()) {
     const uint32_t param = model_->find_parameter(t.name);
-    const VkFormat format =
-        param != kNoIndex ? storage_image_format(model_->parameters[param].type.element) : VK_FORMAT_UNDEFINED;
+    const std::string_view element = param != kNoIndex ? std::string_view(model_->parameters[param].type.element) : "";
+    const VkFormat format = t.kind == DescriptorKind::uniform_texel_buffer ? sampled_texel_buffer_format(element)
+                                                                           : storage_image_format(element);
     const StandInFill fill{preview && !written_by_a_pass(t.name), storage_format_scalar(format)};
     const VkBufferView view = storage_.texel_view(t.name, format, sink, fill);
     if (!view || !pass.resources->bind_texel_buffer(t.name, view, sink)) return false;

@@ -112,7 +112,7 @@ VkBufferView EffectStorage::texel_view(std::string_view name, VkFormat format, D
   if (format == VK_FORMAT_UNDEFINED) {
     sink.error("vk-storage-image-unbound", {},
                "texel buffer '" + t.name + "' has no view: set_texel_buffer() binds one (stand-ins are buffers of " +
-                   "a 32-bit float, int or uint element)");
+                   "1, 2 or 4 32-bit float, int or uint components, or 3 read-only)");
     return VK_NULL_HANDLE;
   }
   std::optional<Buffer> buffer = stand_in_buffer(
@@ -262,6 +262,15 @@ VkFormat storage_image_format(std::string_view element) {
   for (const StorageFormatRow& r : kStorageFormats)
     if (element == r.element) return r.format;
   return VK_FORMAT_UNDEFINED;
+}
+
+VkFormat sampled_texel_buffer_format(std::string_view element) {
+  if (element.size() > 1 && element.back() == '3') {
+    std::string four(element);
+    four.back() = '4';
+    return storage_image_format(four);
+  }
+  return storage_image_format(element);
 }
 
 }  // namespace fx::vk

@@ -98,6 +98,24 @@ technique T { pass P { VertexShader = compile vs_2_0 VS(); PixelShader = compile
   EXPECT_EQ(centre[0], centre[2]);  // the stand-in grey, untinted: white vertex colours
 }
 
+// Rule files whose techniques only a draw shows wrong (Vulkan's validation layers name them):
+// an array varying whose elements the vertex stage writes one by one (TEXCOORD1..3), also
+// the fixed-function one of a pass that sets only a pixel shader, and a Buffer<float3> whose
+// stand-in a texel buffer of three 32-bit components cannot be.
+TEST(FxkitRender, ArrayVaryingsAndThreeComponentBuffersDrawCleanly) {
+  const std::string rules = std::string(FXKIT_SOURCE_DIR) + "/tests/compile/data/fxc_accepts/";
+  const auto dir = std::filesystem::path(::testing::TempDir());
+  for (const auto& [file, technique] : {std::pair{"texcoord_array_varyings.fx", "WithVertexShader"},
+                                        std::pair{"texcoord_array_varyings.fx", "PixelShaderOnly"},
+                                        std::pair{"read_only_buffer_of_three_components.fx", "Render"}}) {
+    const fx::testing::CliRun run =
+        fx::testing::run_fxkit(std::string("render ") + rules + file + " --technique " + technique +
+                                   " --validation --size 32x32 --out " + (dir / "array_varyings.png").string(),
+                               true);
+    EXPECT_EQ(run.status, 0) << file << " " << technique << "\n" << run.err;
+  }
+}
+
 // A DirectX SDK-style lit effect (BasicHLSL's names): g_LightDir is the direction towards the
 // light, an array of them one per light, and no value has a default. The stand-ins follow
 // that convention, so the side of the sphere facing the camera is lit, not black.

@@ -74,6 +74,20 @@ void apply_binding(ShaderReflection& r, const StageResource& res, uint32_t bindi
       if (i.name == res.name && i.set == res.set && i.binding == res.binding) i.set = 0, i.binding = binding;
 }
 
+// The semantics a varying takes, one per location: its own, and for an array of N
+// (`float2 uv[5] : TEXCOORD1`) the next N - 1 too (TEXCOORD2..TEXCOORD5), as Direct3D numbers them.
+std::vector<std::string> spanned_semantics(const InterfaceVariable& v) {
+  const std::string semantic = canonical_semantic(v.semantic);
+  if (v.type.array_size <= 1) return {semantic};
+  size_t digits = semantic.size();
+  while (digits > 0 && std::isdigit(static_cast<unsigned char>(semantic[digits - 1]))) --digits;
+  const uint32_t first = semantic.size() - digits <= 2 ? uint32_t(std::stoul(semantic.substr(digits))) : 0;
+  std::vector<std::string> out;
+  for (uint32_t k = 0; k < v.type.array_size; ++k)
+    out.push_back(semantic.substr(0, digits) + std::to_string(first + k));
+  return out;
+}
+
 // A consumer that skipped legalization loads every input it declares, used or not, and
 // Vulkan rejects a loaded input no stage before writes (D3D code often declares one: the
 // vertex shader's output struct, POSITION included, as the pixel shader's input). When the
@@ -130,7 +144,8 @@ void pad_narrow_outputs(CompiledShader& producer, const CompiledShader& consumer
 void remove_unconsumed_outputs(CompiledShader& producer, const CompiledShader& consumer,
                                std::span<const std::string> captured) {
   std::set<uint32_t> consumed;
-  for (const InterfaceVariable& in : consumer.reflection.inputs) consumed.insert(in.location);
+  for (const InterfaceVariable& in : consumer.reflection.inputs)
+    for (uint32_t k = 0; k < std::max(1u, in.type.array_size); ++k) consumed.insert(in.location + k);
   for (const InterfaceVariable& out : producer.reflection.outputs)  // stream output keeps them
     if (std::find(captured.begin(), captured.end(), canonical_semantic(out.semantic)) != captured.end())
       consumed.insert(out.location);
@@ -152,15 +167,28 @@ void link_varyings(CompiledShader& producer, CompiledShader& consumer, std::span
       !std::all_of(consumer.reflection.inputs.begin(), consumer.reflection.inputs.end(), has_semantic))
     return;
   legalize_if_inputs_unwritten(producer, consumer, sink);
+  // The outputs in the order the consumer reads their semantics (the rest after), numbered
+  // densely: an input array then finds the outputs of its elements' semantics at the
+  // consecutive locations it takes.
+  std::map<std::string, size_t> read_at;
+  for (const InterfaceVariable& v : consumer.reflection.inputs)
+    for (const std::string& semantic : spanned_semantics(v)) read_at.emplace(semantic, read_at.size());
+  auto order = [&](const InterfaceVariable& v) {
+    auto it = read_at.find(canonical_semantic(v.semantic));
+    return it == read_at.end() ? read_at.size() : it->second;
+  };
+  std::stable_sort(producer.reflection.outputs.begin(), producer.reflection.outputs.end(),
+                   [&](const InterfaceVariable& a, const InterfaceVariable& b) { return order(a) < order(b); });
   uint32_t next = 0;
   for (InterfaceVariable& v : producer.reflection.outputs) {
-    location_of[canonical_semantic(v.semantic)] = next;
     out_remap[v.location] = next;
-    v.location = next++;
+    v.location = next;
+    for (const std::string& semantic : spanned_semantics(v)) location_of[semantic] = next++;
   }
   for (InterfaceVariable& v : consumer.reflection.inputs) {
     auto it = location_of.find(canonical_semantic(v.semantic));
-    uint32_t location = it != location_of.end() ? it->second : next++;
+    uint32_t location = it != location_of.end() ? it->second : next;
+    if (it == location_of.end()) next += std::max(1u, v.type.array_size);
     if (it == location_of.end() && !v.unread)
       sink.warning("shader-varying-unwritten", {},
                    std::string(to_string(consumer.reflection.stage)) + " input '" + v.name + "' (" + v.semantic +

@@ -205,16 +205,32 @@ std::optional<FixedFunctionState::PixelShaderInputs> EffectUnitBuilder::pixel_sh
     }
     return false;
   };
+  // A varying and, for an array (`float2 uv[5] : TEXCOORD1`), the semantics its elements
+  // take one by one (TEXCOORD1..TEXCOORD5).
+  auto take_all = [&take](const ast::Variable& v) {
+    if (v.array_dims.empty()) return take(v.semantic);
+    if (v.array_dims.size() != 1 || !v.array_dims[0] || v.array_dims[0]->kind != ast::ExprKind::int_literal)
+      return false;
+    const std::string semantic(v.semantic);
+    size_t digits = semantic.size();
+    while (digits > 0 && std::isdigit(static_cast<unsigned char>(semantic[digits - 1]))) --digits;
+    const std::string base = semantic.substr(0, digits);
+    const int first = digits < semantic.size() && semantic.size() - digits < 3 ? std::stoi(semantic.substr(digits)) : 0;
+    const int64_t count = int64_t(v.array_dims[0]->number);  // past TEXCOORD7 take() refuses
+    for (int64_t k = 0; k < std::min<int64_t>(count, 16); ++k)
+      if (!take(base + std::to_string(first + k))) return false;
+    return true;
+  };
   for (const ast::Variable& p : entry->params) {
     if (p.storage & (ast::kUniform | ast::kOut)) continue;
     if (!p.semantic.empty()) {
-      if (!take(p.semantic)) return std::nullopt;
+      if (!take_all(p)) return std::nullopt;
       continue;
     }
     const ast::Struct* fields = structure(p.type.name);  // an input struct: each member has a semantic
     if (!fields) return std::nullopt;                    // a compile-time argument, or nothing D3D links
     for (const ast::Variable& m : fields->members)
-      if (m.semantic.empty() || !take(m.semantic)) return std::nullopt;
+      if (m.semantic.empty() || !take_all(m)) return std::nullopt;
   }
   return in;
 }

@@ -132,6 +132,10 @@ std::optional<StorageImageShape> storage_image_shape(ImageDim dim, bool arrayed,
 // The format glslang gives an HLSL RWTexture's or (RW)Buffer's element type (float4 -> R32G32B32A32_SFLOAT,
 // uint -> R32_UINT, ...); VK_FORMAT_UNDEFINED for an element it has no 32-bit format for.
 VkFormat storage_image_format(std::string_view element);
+// The stand-in format of a read-only texel buffer (`Buffer<float3>`): storage_image_format's,
+// and for a three-component element the four-component one (R32G32B32 texel buffers are
+// optional in Vulkan; a shader's Load of a samplerBuffer reads any float format).
+VkFormat sampled_texel_buffer_format(std::string_view element);
 // The 32-bit channels of a format storage_image_format() gives (1, 2 or 4); 0 for others.
 uint32_t storage_format_channels(VkFormat format);
 // The scalar of such a format's channels; ScalarKind::other for others.
