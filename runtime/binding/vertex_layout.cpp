@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "fx/compile/program_link.h"  // consecutive_semantics
 #include "fx/mesh.h"
 
 namespace fx::vk {
@@ -63,12 +64,8 @@ std::vector<std::string> input_semantics(const InterfaceVariable& input) {
   const std::string semantic = input.semantic.empty() ? input.name : input.semantic;
   const uint32_t slots = input.type.rows > 1 ? std::max<uint32_t>(1, input.type.columns) : 1;
   if (slots == 1) return {canonical_semantic(semantic)};
-  size_t digits = semantic.size();
-  while (digits > 0 && semantic[digits - 1] >= '0' && semantic[digits - 1] <= '9') --digits;
-  const uint32_t first = digits < semantic.size() ? uint32_t(std::stoul(semantic.substr(digits))) : 0;
-  std::vector<std::string> out;
-  for (uint32_t k = 0; k < slots; ++k)
-    out.push_back(canonical_semantic(semantic.substr(0, digits) + std::to_string(first + k)));
+  std::vector<std::string> out = consecutive_semantics(semantic, slots);
+  for (std::string& s : out) s = canonical_semantic(s);
   return out;
 }
 

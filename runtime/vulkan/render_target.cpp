@@ -35,6 +35,16 @@ VkFormat choose_depth(const Context& ctx, DepthAttachment want) {
   return VK_FORMAT_UNDEFINED;
 }
 
+// An attachment over `view` in `layout`, cleared or loaded, stored.
+VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout, bool cleared) {
+  auto a = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  a.imageView = view;
+  a.imageLayout = layout;
+  a.loadOp = cleared ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  return a;
+}
+
 }  // namespace
 
 std::optional<RenderTarget> RenderTarget::create(const Context& ctx, const RenderTargetDesc& desc,
@@ -140,22 +150,14 @@ void RenderTarget::begin(VkCommandBuffer cmd, const ClearValues& clear, std::spa
 void RenderTarget::end(VkCommandBuffer cmd) { vkCmdEndRendering(cmd); }
 
 VkRenderingAttachmentInfo color_attachment(VkImageView view, VkImageLayout layout, const ClearValues& clear) {
-  auto color = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-  color.imageView = view;
-  color.imageLayout = layout;
-  color.loadOp = clear.color ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
-  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  VkRenderingAttachmentInfo color = attachment(view, layout, clear.color.has_value());
   if (clear.color)
     for (int i = 0; i < 4; ++i) color.clearValue.color.float32[i] = (*clear.color)[i];
   return color;
 }
 
 VkRenderingAttachmentInfo depth_attachment(VkImageView view, VkImageLayout layout, const ClearValues& clear) {
-  auto depth = structure<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-  depth.imageView = view;
-  depth.imageLayout = layout;
-  depth.loadOp = clear.depth ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  VkRenderingAttachmentInfo depth = attachment(view, layout, clear.depth.has_value());
   depth.clearValue.depthStencil = {clear.depth.value_or(1.0f), clear.stencil};
   return depth;
 }

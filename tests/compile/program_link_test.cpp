@@ -159,6 +159,14 @@ float4 PS(P i) : COLOR0 { float4 unused = i.diffuse * i.fog; return i.uv; }
   EXPECT_EQ(read, written);
 }
 
+TEST(ProgramLink, SemanticsAreNumberedOnFromTheirIndex) {
+  EXPECT_EQ(offset_semantic("TEXCOORD1", 2), "TEXCOORD3");
+  EXPECT_EQ(offset_semantic("COLOR", 1), "COLOR1");  // no number: register 0
+  EXPECT_EQ(offset_semantic("NORMALS", 0), "NORMALS0");
+  EXPECT_EQ(consecutive_semantics("TEXCOORD1", 3), (std::vector<std::string>{"TEXCOORD1", "TEXCOORD2", "TEXCOORD3"}));
+  EXPECT_TRUE(consecutive_semantics("TEXCOORD1", 0).empty());
+}
+
 TEST(ProgramLink, ArrayVaryingElementsTakeConsecutiveSemanticIndices) {
   // D3D numbers the elements of an array varying on from its semantic's index
   // (float3 n[3] : NORMALS -> NORMALS0, NORMALS1, NORMALS2); glslang flattens the array into

@@ -9,6 +9,7 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 
 #include "effect_shader_text.h"
+#include "fx/compile/program_link.h"  // offset_semantic
 #include "spirv_words.h"
 
 namespace fx {
@@ -122,11 +123,7 @@ void number_array_elements(std::vector<InterfaceVariable>& vars) {
   for (InterfaceVariable& v : vars) {
     if (v.semantic.empty() || count[v.semantic] < 2) continue;
     const uint32_t element = seen[v.semantic]++;
-    size_t digits = v.semantic.size();
-    while (digits > 0 && std::isdigit(static_cast<unsigned char>(v.semantic[digits - 1]))) --digits;
-    const std::string index = v.semantic.substr(digits);
-    const uint32_t first = !index.empty() && index.size() <= 6 ? static_cast<uint32_t>(std::stoul(index)) : 0;
-    v.semantic = v.semantic.substr(0, index.size() <= 6 ? digits : v.semantic.size()) + std::to_string(first + element);
+    v.semantic = offset_semantic(v.semantic, element);
   }
 }
 

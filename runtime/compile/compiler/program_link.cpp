@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <map>
 #include <optional>
 #include <set>
@@ -77,15 +78,7 @@ void apply_binding(ShaderReflection& r, const StageResource& res, uint32_t bindi
 // The semantics a varying takes, one per location: its own, and for an array of N
 // (`float2 uv[5] : TEXCOORD1`) the next N - 1 too (TEXCOORD2..TEXCOORD5), as Direct3D numbers them.
 std::vector<std::string> spanned_semantics(const InterfaceVariable& v) {
-  const std::string semantic = canonical_semantic(v.semantic);
-  if (v.type.array_size <= 1) return {semantic};
-  size_t digits = semantic.size();
-  while (digits > 0 && std::isdigit(static_cast<unsigned char>(semantic[digits - 1]))) --digits;
-  const uint32_t first = semantic.size() - digits <= 2 ? uint32_t(std::stoul(semantic.substr(digits))) : 0;
-  std::vector<std::string> out;
-  for (uint32_t k = 0; k < v.type.array_size; ++k)
-    out.push_back(semantic.substr(0, digits) + std::to_string(first + k));
-  return out;
+  return consecutive_semantics(canonical_semantic(v.semantic), std::max(1u, v.type.array_size));
 }
 
 // A consumer that skipped legalization loads every input it declares, used or not, and
@@ -213,6 +206,20 @@ std::string canonical_semantic(std::string s) {
   if (s.size() > kCentroid.size() && s.ends_with(kCentroid)) s.resize(s.size() - kCentroid.size());
   if (!s.empty() && !std::isdigit(static_cast<unsigned char>(s.back()))) s += '0';
   return s;
+}
+
+std::string offset_semantic(std::string_view semantic, uint32_t k) {
+  size_t digits = semantic.size();
+  while (digits > 0 && std::isdigit(static_cast<unsigned char>(semantic[digits - 1]))) --digits;
+  uint32_t first = 0;  // stays 0 without a number (or with one past 32 bits)
+  std::from_chars(semantic.data() + digits, semantic.data() + semantic.size(), first);
+  return std::string(semantic.substr(0, digits)) + std::to_string(first + k);
+}
+
+std::vector<std::string> consecutive_semantics(std::string_view semantic, uint32_t count) {
+  std::vector<std::string> out;
+  for (uint32_t k = 0; k < count; ++k) out.push_back(offset_semantic(semantic, k));
+  return out;
 }
 
 const ProgramBinding* ProgramLayout::find(std::string_view name) const {

@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -101,10 +100,15 @@ class EffectUnitBuilder {
   // its dispatchers' prototypes, and a class the struct with methods it otherwise is
   // (`class C : I {` -> `struct C {`) followed by its method wrappers (class_linkage.h).
   void emit_structure(detail::ShaderTextWriter& w, const ast::Struct& s);
-  // The methods defined outside their classes (class_linkage.h, method_function_name) whose
-  // definitions start before token `before` and are not written yet, each as a function of
-  // an instance of every class that reaches it, in the order they are defined.
-  void emit_method_functions(detail::ShaderTextWriter& w, uint32_t before);
+  // A method defined outside its class, as a function of an instance of `cls`, a class that
+  // reaches it (class_linkage.h, method_function_name).
+  struct MethodFunction {
+    const ast::Struct* cls;
+    const ast::Function* method;
+  };
+  // Every such function of the effect, in the order their methods are defined.
+  std::vector<MethodFunction> method_functions() const;
+  void emit_method_function(detail::ShaderTextWriter& w, const MethodFunction& f);
   // When a method of `cls` starts at token `i` (its definition, or its prototype in the
   // class): writes it if `methods` (what the class being written reaches) has it, and returns
   // the index of its last token; nullopt when none starts there.
@@ -268,8 +272,6 @@ class EffectUnitBuilder {
   // Tokens the unit spells otherwise, by index: flat initializer lists (flat_initializer.h)
   // and the `uniform` of helper functions' parameters (respell_helper_uniforms).
   std::unordered_map<uint32_t, std::string> respelled_;
-  // The (class, method) functions emit_method_functions wrote.
-  std::set<std::pair<const ast::Struct*, const ast::Function*>> written_methods_;
   const SourceManager& sm_;
   DiagnosticSink& sink_;
   std::vector<const ast::Function*> functions_;

@@ -49,6 +49,14 @@ void EffectUnitBuilder::emit_hlsl() {
     if (!u_.decls_.empty()) u_.decls_.back().names.push_back(name);
     return true;
   };
+  // Methods defined outside their classes go where they are defined: before the first
+  // function that follows them.
+  const std::vector<MethodFunction> methods = method_functions();
+  size_t next_method = 0;
+  auto methods_before = [&](uint32_t token) {
+    for (; next_method < methods.size() && methods[next_method].method->tokens.first < token; ++next_method)
+      emit_method_function(w, methods[next_method]);
+  };
   if (detail::calls_asuint_of_a_double(toks_)) {
     const size_t from = begin();
     w.out() += detail::asuint_of_a_double();
@@ -87,7 +95,7 @@ void EffectUnitBuilder::emit_hlsl() {
         if (u_.decls_.size() == count) break;
         // An interface's dispatchers are defined after every class instance (see below).
         if (d.structure->kind == ast::StructKind::interface_type) u_.decls_.back().refs.push_back(kDispatchers);
-        // Methods defined outside the class are functions of their own (emit_method_functions):
+        // Methods defined outside the class are functions of their own (emit_method_function):
         // what they use comes along with them.
         if (d.structure->kind == ast::StructKind::class_type)
           for (const ast::Function* m : linkage_.methods_of(*d.structure))
@@ -96,7 +104,7 @@ void EffectUnitBuilder::emit_hlsl() {
         break;
       }
       case ast::DeclKind::function:
-        emit_method_functions(w, d.function->tokens.first);
+        methods_before(d.function->tokens.first);
         emit_function(w, *d.function);
         break;
       case ast::DeclKind::constant_buffer: {
@@ -137,7 +145,7 @@ void EffectUnitBuilder::emit_hlsl() {
       case ast::DeclKind::glsl_block: break;
     }
   }
-  emit_method_functions(w, UINT32_MAX);
+  methods_before(UINT32_MAX);
   if (!linkage_.empty()) {
     const size_t from = begin();
     w.out() += detail::interface_dispatchers(toks_, linkage_);
@@ -189,7 +197,7 @@ std::optional<uint32_t> EffectUnitBuilder::emit_method_at(detail::ShaderTextWrit
     const bool outside = !m.owner.empty();
     const ast::TokenSpan span = outside ? m.prototype : m.tokens;
     if (span.first != i || span.last <= i) continue;
-    // One defined outside the class is written where it is defined (emit_method_functions).
+    // One defined outside the class is written where it is defined (emit_method_function).
     const bool reached = std::find(methods.begin(), methods.end(), &m) != methods.end();
     if (reached && !outside)
       for (uint32_t k = span.first; k < span.last && k < toks_.size(); ++k) put_hlsl(w, k, span.last);
@@ -210,41 +218,39 @@ void EffectUnitBuilder::emit_inherited(detail::ShaderTextWriter& w, const ast::S
   w.end_line();
 }
 
-void EffectUnitBuilder::emit_method_functions(detail::ShaderTextWriter& w, uint32_t before) {
-  struct Pending {
-    const ast::Struct* cls;
-    const ast::Function* method;
-  };
-  std::vector<Pending> due;
+std::vector<EffectUnitBuilder::MethodFunction> EffectUnitBuilder::method_functions() const {
+  std::vector<MethodFunction> out;
   for (const ast::Struct* cls : linkage_.classes)
     for (const ast::Function* m : linkage_.methods_of(*cls))
-      if (!m->owner.empty() && m->tokens.first < before && written_methods_.insert({cls, m}).second)
-        due.push_back({cls, m});
-  std::stable_sort(due.begin(), due.end(),
-                   [](const Pending& a, const Pending& b) { return a.method->tokens.first < b.method->tokens.first; });
-  for (const Pending& p : due) {
-    w.end_line();
-    w.desync();
-    EffectUnits::DeclText text;
-    text.names = {detail::method_function_name(p.cls->name, p.method->name)};
-    text.function = true;
-    text.begin = w.out().size();
-    w.line(detail::method_function_signature(toks_, *p.cls, *p.method));
-    // The body's spellings for this class, beside the effect's (which win where both spell a token).
-    std::vector<uint32_t> added;
-    for (auto& [i, spelling] : detail::method_body_spellings(toks_, linkage_, *p.cls, *p.method))
-      if (respelled_.emplace(i, std::move(spelling)).second) added.push_back(i);
-    emit_function_tokens(w, {p.method->body.first - 1, p.method->tokens.last});
-    for (uint32_t i : added) respelled_.erase(i);
-    w.end_line();
-    w.desync();
-    text.end = w.out().size();
-    text.refs = identifiers_in(p.method->tokens);
-    text.refs.push_back(p.cls->name);  // `self`'s type: an inherited method names its base class only
-    for (const ast::Function* m : linkage_.methods_of(*p.cls))
-      if (!m->owner.empty()) text.refs.push_back(detail::method_function_name(p.cls->name, m->name));
-    u_.decls_.push_back(std::move(text));
-  }
+      if (!m->owner.empty()) out.push_back({cls, m});
+  std::stable_sort(out.begin(), out.end(), [](const MethodFunction& a, const MethodFunction& b) {
+    return a.method->tokens.first < b.method->tokens.first;
+  });
+  return out;
+}
+
+void EffectUnitBuilder::emit_method_function(detail::ShaderTextWriter& w, const MethodFunction& f) {
+  w.end_line();
+  w.desync();
+  EffectUnits::DeclText text;
+  text.names = {detail::method_function_name(f.cls->name, f.method->name)};
+  text.function = true;
+  text.begin = w.out().size();
+  w.line(detail::method_function_signature(toks_, *f.cls, *f.method));
+  // The body's spellings for this class, beside the effect's (which win where both spell a token).
+  std::vector<uint32_t> added;
+  for (auto& [i, spelling] : detail::method_body_spellings(toks_, linkage_, *f.cls, *f.method))
+    if (respelled_.emplace(i, std::move(spelling)).second) added.push_back(i);
+  emit_function_tokens(w, {f.method->body.first - 1, f.method->tokens.last});
+  for (uint32_t i : added) respelled_.erase(i);
+  w.end_line();
+  w.desync();
+  text.end = w.out().size();
+  text.refs = identifiers_in(f.method->tokens);
+  text.refs.push_back(f.cls->name);  // `self`'s type: an inherited method names its base class only
+  for (const ast::Function* m : linkage_.methods_of(*f.cls))
+    if (!m->owner.empty()) text.refs.push_back(detail::method_function_name(f.cls->name, m->name));
+  u_.decls_.push_back(std::move(text));
 }
 
 std::string EffectUnitBuilder::dynamic_linkage_in(ast::TokenSpan span) const {

@@ -7,6 +7,7 @@
 
 #include "effect_unit_builder.h"
 #include "fx/ascii_case.h"
+#include "fx/compile/program_link.h"
 #include "fx/emulation/assembly.h"
 #include "fx/emulation/fixed_function.h"
 #include "fx/pass_states.h"
@@ -211,15 +212,10 @@ std::optional<FixedFunctionState::PixelShaderInputs> EffectUnitBuilder::pixel_sh
     if (v.array_dims.empty()) return take(v.semantic);
     if (v.array_dims.size() != 1 || !v.array_dims[0] || v.array_dims[0]->kind != ast::ExprKind::int_literal)
       return false;
-    const std::string semantic(v.semantic);
-    size_t digits = semantic.size();
-    while (digits > 0 && std::isdigit(static_cast<unsigned char>(semantic[digits - 1]))) --digits;
-    const std::string base = semantic.substr(0, digits);
-    const int first = digits < semantic.size() && semantic.size() - digits < 3 ? std::stoi(semantic.substr(digits)) : 0;
-    const int64_t count = int64_t(v.array_dims[0]->number);  // past TEXCOORD7 take() refuses
-    for (int64_t k = 0; k < std::min<int64_t>(count, 16); ++k)
-      if (!take(base + std::to_string(first + k))) return false;
-    return true;
+    const auto count =
+        uint32_t(std::clamp<int64_t>(int64_t(v.array_dims[0]->number), 0, 16));  // past TEXCOORD7 take() refuses
+    const std::vector<std::string> semantics = consecutive_semantics(v.semantic, count);
+    return std::all_of(semantics.begin(), semantics.end(), take);
   };
   for (const ast::Variable& p : entry->params) {
     if (p.storage & (ast::kUniform | ast::kOut)) continue;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fx/compile/shader_compiler.h"
@@ -56,5 +57,11 @@ ProgramLayout link_program(const std::vector<CompiledShader*>& stages, Diagnosti
 // A semantic as Direct3D links it: upper case, "TEXCOORD" and "TEXCOORD0" the same register,
 // and so D3D9's "TEXCOORD0_centroid" (the same register, interpolated at the centroid).
 std::string canonical_semantic(std::string semantic);
+
+// The semantic `k` registers after `semantic`, as Direct3D numbers the registers of an array or
+// a matrix varying: "TEXCOORD1", 2 -> "TEXCOORD3" ("COLOR", 1 -> "COLOR1": no number is 0).
+std::string offset_semantic(std::string_view semantic, uint32_t k);
+// The `count` semantics from `semantic` on: "TEXCOORD1", 3 -> TEXCOORD1, TEXCOORD2, TEXCOORD3.
+std::vector<std::string> consecutive_semantics(std::string_view semantic, uint32_t count);
 
 }  // namespace fx
